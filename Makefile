@@ -1,0 +1,48 @@
+# Quick start:  make run   (install deps, build, check + render designs/demo.xml into out/)
+#               make test  (install deps, build release and ASan/UBSan trees, run every test)
+JOBS ?= $(shell nproc 2>/dev/null || echo 2)
+BUILD ?= build
+ASAN_BUILD ?= build-asan
+CMAKE_FLAGS ?=
+
+.PHONY: all deps build build-asan run test test-long bench install clean
+
+all: build
+
+deps:
+	@scripts/deps.sh
+
+$(BUILD)/CMakeCache.txt: | deps
+	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS) >/dev/null
+
+build: deps $(BUILD)/CMakeCache.txt
+	@cmake --build $(BUILD) -j $(JOBS)
+
+$(ASAN_BUILD)/CMakeCache.txt: | deps
+	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DTAUT_SANITIZE=ON $(CMAKE_FLAGS) >/dev/null
+
+build-asan: deps $(ASAN_BUILD)/CMakeCache.txt
+	@cmake --build $(ASAN_BUILD) -j $(JOBS)
+
+run: build
+	@mkdir -p out
+	$(BUILD)/tools/taut check designs/demo.xml --json > out/demo.check.json
+	$(BUILD)/tools/taut render designs/demo.xml -o out/demo.svg
+	$(BUILD)/tools/taut stats designs/demo.xml --json > out/demo.stats.json
+	@echo "wrote out/demo.svg, out/demo.check.json, out/demo.stats.json"
+
+test: build build-asan
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE long
+	cd $(ASAN_BUILD) && ctest --output-on-failure -j $(JOBS) -LE long
+
+test-long: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -L long
+
+bench: build
+	$(BUILD)/bench/bench_foundation
+
+install: build
+	cmake --install $(BUILD) --prefix $(or $(PREFIX),/usr/local)
+
+clean:
+	rm -rf $(BUILD) $(ASAN_BUILD) out

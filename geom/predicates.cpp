@@ -1,0 +1,98 @@
+#include "geom/predicates.h"
+
+#include <algorithm>
+
+namespace taut::geom {
+
+bool on_segment(Point p, Point a, Point b) {
+  if (orient(a, b, p) != 0) return false;
+  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) &&
+         std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
+}
+
+SegmentIntersection intersect(Segment s, Segment t) {
+  const int d1 = orientation(s.a, s.b, t.a);
+  const int d2 = orientation(s.a, s.b, t.b);
+  const int d3 = orientation(t.a, t.b, s.a);
+  const int d4 = orientation(t.a, t.b, s.b);
+  if (d1 == 0 && d2 == 0 && d3 == 0 && d4 == 0) {
+    // Collinear (or degenerate): compare projections on the dominant axis.
+    auto key = [&](Point p) {
+      const bool use_x = std::max(s.a.x, s.b.x) - std::min(s.a.x, s.b.x) +
+                             std::max(t.a.x, t.b.x) - std::min(t.a.x, t.b.x) >=
+                         std::max(s.a.y, s.b.y) - std::min(s.a.y, s.b.y) +
+                             std::max(t.a.y, t.b.y) - std::min(t.a.y, t.b.y);
+      return use_x ? i64{p.x} * 2 + 0 : i64{p.y} * 2;
+    };
+    i64 s0 = key(s.a), s1 = key(s.b), t0 = key(t.a), t1 = key(t.b);
+    if (s0 > s1) std::swap(s0, s1);
+    if (t0 > t1) std::swap(t0, t1);
+    const i64 lo = std::max(s0, t0), hi = std::min(s1, t1);
+    if (lo > hi) return SegmentIntersection::None;
+    if (lo == hi) return SegmentIntersection::Touch;
+    return SegmentIntersection::Overlap;
+  }
+  if (d1 * d2 > 0 || d3 * d4 > 0) return SegmentIntersection::None;
+  if (d1 == 0 || d2 == 0 || d3 == 0 || d4 == 0) {
+    // One endpoint lies on the other segment's line; check it really lies on the segment.
+    if ((d1 == 0 && on_segment(t.a, s.a, s.b)) || (d2 == 0 && on_segment(t.b, s.a, s.b)) ||
+        (d3 == 0 && on_segment(s.a, t.a, t.b)) || (d4 == 0 && on_segment(s.b, t.a, t.b)))
+      return SegmentIntersection::Touch;
+    return SegmentIntersection::None;
+  }
+  return SegmentIntersection::Proper;
+}
+
+RationalPoint line_intersection(Segment s, Segment t) {
+  // p = s.a + (s.b - s.a) * u,  u = cross(t.a - s.a, t.b - t.a) / cross(s.b - s.a, t.b - t.a)
+  const i128 rx = i128{s.b.x} - s.a.x, ry = i128{s.b.y} - s.a.y;
+  const i128 qx = i128{t.b.x} - t.a.x, qy = i128{t.b.y} - t.a.y;
+  const i128 wx = i128{t.a.x} - s.a.x, wy = i128{t.a.y} - s.a.y;
+  i128 den = rx * qy - ry * qx;          // < 2^63
+  i128 num = wx * qy - wy * qx;          // < 2^63
+  if (den < 0) { den = -den; num = -num; }
+  RationalPoint r;
+  r.den = den;
+  r.x_num = i128{s.a.x} * den + rx * num;  // < 2^30*2^63 + 2^31*2^63 < 2^95
+  r.y_num = i128{s.a.y} * den + ry * num;
+  return r;
+}
+
+i128 twice_area(std::span<const Point> ring) {
+  i128 sum = 0;
+  const std::size_t n = ring.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point p = ring[i], q = ring[(i + 1) % n];
+    sum += i128{p.x} * q.y - i128{q.x} * p.y;
+  }
+  return sum;
+}
+
+Location locate(Point p, std::span<const Point> ring) {
+  // Crossing number with the half-open rule on y; exact because every test is an orient sign.
+  const std::size_t n = ring.size();
+  bool inside = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point a = ring[i], b = ring[(i + 1) % n];
+    if (on_segment(p, a, b)) return Location::Boundary;
+    if ((a.y > p.y) != (b.y > p.y)) {
+      // Edge straddles the horizontal line through p; is the crossing right of p?
+      const int o = orientation(a, b, p);
+      if ((b.y > a.y) ? (o > 0) : (o < 0)) inside = !inside;
+    }
+  }
+  return inside ? Location::Inside : Location::Outside;
+}
+
+Location locate(Point p, const Polygon& poly) {
+  const Location outer = locate(p, std::span<const Point>(poly.outer));
+  if (outer != Location::Inside) return outer;
+  for (const Ring& h : poly.holes) {
+    const Location l = locate(p, std::span<const Point>(h));
+    if (l == Location::Boundary) return Location::Boundary;
+    if (l == Location::Inside) return Location::Outside;
+  }
+  return Location::Inside;
+}
+
+}  // namespace taut::geom

@@ -1,0 +1,36 @@
+// Seeded, reproducible layout generators for tests and benchmarks (`taut gen`).
+// The same kind, size, nets and seed give the same layout byte for byte on every machine
+// (std::mt19937_64 with hand-written integer range mapping, no std::uniform_*_distribution).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "io/layout.h"
+
+namespace taut::io {
+
+enum class GenKind {
+  Rects,       // "rects": random axis-parallel rectangles, may overlap and touch
+  Polygons,    // "polygons": random simple polygons (star-shaped), may overlap
+  Maze,        // "maze": rectilinear maze walls on a grid (blockages touch along edges)
+  Degenerate,  // "degenerate": coarse-grid rectangles/polygons sharing x, y, collinear edges,
+               // touching at corners and along edges
+};
+std::optional<GenKind> parse_gen_kind(const std::string& name);
+std::string gen_kind_name(GenKind kind);
+std::vector<std::string> gen_kind_names();
+
+struct GenOptions {
+  GenKind kind = GenKind::Rects;
+  std::int64_t size = 1000;   // target number of blockage vertices (up to 10^6 and beyond)
+  int nets = 10;              // two-pin nets with point pins in free space
+  std::uint64_t seed = 1;
+};
+
+// The generated layout is valid: validate_layout() reports no error on it.
+Layout generate_layout(const GenOptions& options);
+
+}  // namespace taut::io
