@@ -1,0 +1,115 @@
+// The taut command as a flow script sees it: exit codes, stdout/stderr, files written or not.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "support/run.h"
+
+namespace taut::test {
+namespace {
+
+const std::string kDemo = std::string(TAUT_SOURCE_DIR) + "/designs/demo.xml";
+
+TEST(Cli, VersionAndHelp) {
+  auto r = run_taut({"--version"});
+  EXPECT_EQ(r.status, 0);
+  EXPECT_NE(r.out.find("taut 0."), std::string::npos) << r.out;
+  r = run_taut({"--help"});
+  EXPECT_EQ(r.status, 0);
+  for (const char* sub : {"check", "render", "stats", "gen"})
+    EXPECT_NE(r.out.find(sub), std::string::npos) << sub;
+  for (const char* sub : {"check", "render", "stats", "gen"}) {
+    r = run_taut({sub, "--help"});
+    EXPECT_EQ(r.status, 0) << sub;
+    EXPECT_NE(r.out.find("--"), std::string::npos) << sub;
+  }
+}
+
+TEST(Cli, UsageErrorsExit2) {
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{}, {"nosuchcommand"}, {"check"}, {"render", kDemo},
+        {"check", kDemo, "--bogus"}, {"gen", "nosuchkind", "-o", "/tmp/x.xml"},
+        {"gen", "rects", "-o", "/tmp/x.xml", "--size", "12abc"}}) {
+    const auto r = run_taut(args);
+    std::string joined;
+    for (const auto& a : args) joined += a + " ";
+    EXPECT_EQ(r.status, 2) << joined << "\n" << r.err;
+    EXPECT_NE(r.err.find("error"), std::string::npos) << joined;
+  }
+}
+
+TEST(Cli, MissingFileIsInvalidInput) {
+  const auto r = run_taut({"check", "/nonexistent/layout.xml"});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("/nonexistent/layout.xml"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("[IO-"), std::string::npos) << r.err;
+}
+
+TEST(Cli, CheckDemo) {
+  auto r = run_taut({"check", kDemo});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("ok"), std::string::npos);
+  r = run_taut({"check", kDemo, "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["valid"].get<bool>());
+  EXPECT_EQ(j["errors"].get<int>(), 0);
+  EXPECT_GT(j["layout"]["blockages"].get<int>(), 0);
+  EXPECT_GT(j["layout"]["nets"].get<int>(), 0);
+}
+
+TEST(Cli, RenderWritesSvgAndKeepsOldFileOnBadInput) {
+  const std::string dir = temp_dir("render");
+  const std::string svg = dir + "/demo.svg";
+  auto r = run_taut({"render", kDemo, "-o", svg});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string pic = read_text(svg);
+  EXPECT_NE(pic.find("<svg"), std::string::npos);
+  EXPECT_NE(pic.find("</svg>"), std::string::npos);
+
+  // A bad input writes nothing and leaves the previous output intact.
+  const std::string bad = dir + "/bad.xml";
+  write_text(bad, "<layout name=\"x\" version=\"1\"><blockage id=\"a\"><rect x0=\"5\" y0=\"0\" "
+                  "x1=\"1\" y1=\"1\"/></blockage></layout>");
+  r = run_taut({"render", bad, "-o", svg});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(read_text(svg), pic);
+  const std::string fresh = dir + "/fresh.svg";
+  r = run_taut({"render", bad, "-o", fresh});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_FALSE(file_exists(fresh));
+}
+
+TEST(Cli, GenIsReproducibleAndValid) {
+  const std::string dir = temp_dir("gen");
+  for (const char* kind : {"rects", "polygons", "maze", "degenerate"}) {
+    SCOPED_TRACE(kind);
+    const std::string a = dir + "/" + kind + "-a.xml", b = dir + "/" + kind + "-b.xml",
+                      c = dir + "/" + kind + "-c.xml";
+    ASSERT_EQ(run_taut({"gen", kind, "-o", a, "--size", "2000", "--nets", "5", "--seed", "7"}).status, 0);
+    ASSERT_EQ(run_taut({"gen", kind, "-o", b, "--size", "2000", "--nets", "5", "--seed", "7"}).status, 0);
+    ASSERT_EQ(run_taut({"gen", kind, "-o", c, "--size", "2000", "--nets", "5", "--seed", "8"}).status, 0);
+    EXPECT_EQ(read_text(a), read_text(b));
+    EXPECT_NE(read_text(a), read_text(c));
+    const auto r = run_taut({"check", a, "--json"});
+    EXPECT_EQ(r.status, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["layout"]["nets"].get<int>(), 5);
+    const int v = j["layout"]["blockage_vertices"].get<int>();
+    EXPECT_GE(v, 1800);
+    EXPECT_LE(v, 2200);
+  }
+}
+
+TEST(Cli, StatsJson) {
+  const std::string dir = temp_dir("stats");
+  const std::string out = dir + "/s.json";
+  const auto r = run_taut({"stats", kDemo, "--json", "-o", out});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(nlohmann::json::parse(read_text(out)), j);
+  EXPECT_GT(j["nets"].get<int>(), 0);
+}
+
+}  // namespace
+}  // namespace taut::test

@@ -1,0 +1,42 @@
+// Shared pieces of the taut subcommands: exit codes (CLI.md), loading a layout with every
+// diagnostic printed, and writing outputs atomically. Only tools/ prints and picks exit codes.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "geom/diagnostic.h"
+#include "io/layout.h"
+
+namespace taut::cli {
+
+enum Exit : int {
+  kOk = 0,          // success
+  kIncomplete = 1,  // ran to the end, but a check failed / a target is unreachable / unrouted
+  kInvalid = 2,     // usage error or invalid input: nothing written
+  kInternal = 3,    // a bug
+  kResource = 4,    // time limit, memory, interrupted
+};
+
+struct LoadOptions {
+  bool lenient = false;
+  bool quiet = false;  // suppress warnings (errors are always printed)
+};
+
+// Prints diagnostics to stderr in the CLI.md format. Returns the number of errors.
+int print_diagnostics(const std::vector<Diagnostic>& diagnostics, bool quiet = false);
+
+// A usage or command-line problem, printed as `taut: error: [CLI-xxxx] message`.
+void print_usage_error(std::string_view code, std::string_view message);
+
+// Reads and validates a layout; prints every diagnostic; nullopt when there is an error.
+// `diagnostics` (if not null) receives everything that was printed.
+std::optional<io::Layout> load_layout(const std::string& path, const LoadOptions& options,
+                                      std::vector<Diagnostic>* diagnostics = nullptr);
+
+// Writes bytes atomically; prints the diagnostic and returns false on failure.
+bool write_output(const std::string& path, std::string_view bytes);
+
+}  // namespace taut::cli
