@@ -11,6 +11,8 @@ namespace taut::io {
 // Exact Euclidean length of a polyline as FORMAT.md writes it: an integer when every segment
 // is axis-parallel, otherwise a decimal with 3 fractional digits.
 std::string format_length(const std::vector<Point>& polyline);
+// The same for the total length of several polylines (the wires of a net), rounded once.
+std::string format_total_length(const std::vector<std::vector<Point>>& polylines);
 // Direction changes inside a polyline (collinear continuations do not count).
 long count_bends(const std::vector<Point>& polyline);
 
