@@ -1,0 +1,358 @@
+#include "geom/normalize.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "geom/predicates.h"
+#include "geom/union_sweep.h"
+
+namespace taut::geom {
+
+namespace {
+
+using detail::RPoint;
+
+struct CleanCounts {
+  std::int64_t repeated = 0;
+  std::int64_t collinear = 0;
+};
+
+bool straight(Point a, Point b, Point c) {  // b continues a -> c without turning
+  return orient(a, b, c) == 0 && dot(a, b, b, c) > 0;
+}
+
+// Drops consecutive repeats and straight vertices (except those in `keep`, sorted).
+Ring clean_ring(const Ring& ring, CleanCounts& counts, const std::vector<Point>* keep) {
+  auto removable = [&](Point a, Point b, Point c) {
+    return straight(a, b, c) && (keep == nullptr || !std::binary_search(keep->begin(), keep->end(), b));
+  };
+  Ring out;
+  out.reserve(ring.size());
+  for (Point p : ring) {
+    if (!out.empty() && out.back() == p) {
+      ++counts.repeated;
+      continue;
+    }
+    while (out.size() >= 2 && removable(out[out.size() - 2], out.back(), p)) {
+      out.pop_back();
+      ++counts.collinear;
+    }
+    out.push_back(p);
+  }
+  while (out.size() >= 2 && out.back() == out.front()) {
+    out.pop_back();
+    ++counts.repeated;
+  }
+  bool changed = true;
+  while (changed && out.size() >= 3) {
+    changed = false;
+    const std::size_t n = out.size();
+    if (removable(out[n - 2], out[n - 1], out[0])) {
+      out.pop_back();
+      ++counts.collinear;
+      changed = true;
+    } else if (removable(out[n - 1], out[0], out[1])) {
+      out.erase(out.begin());
+      ++counts.collinear;
+      changed = true;
+    }
+  }
+  return out;
+}
+
+// Rotates to start at the smallest vertex; when it occurs more than once (a ring touching
+// itself there), at the occurrence giving the lexicographically smallest sequence.
+void rotate_canonical(Ring& ring) {
+  if (ring.empty()) return;
+  const Point m = *std::min_element(ring.begin(), ring.end());
+  const std::size_t n = ring.size();
+  std::size_t best = n;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (ring[i] != m) continue;
+    if (best == n) {
+      best = i;
+      continue;
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+      const Point a = ring[(i + k) % n], b = ring[(best + k) % n];
+      if (a != b) {
+        if (a < b) best = i;
+        break;
+      }
+    }
+  }
+  std::rotate(ring.begin(), ring.begin() + static_cast<std::ptrdiff_t>(best), ring.end());
+}
+
+void orient_ring(Ring& ring, bool ccw) {
+  const i128 a = twice_area(ring);
+  if ((ccw && a < 0) || (!ccw && a > 0)) std::reverse(ring.begin(), ring.end());
+}
+
+Polygon canonical(const Polygon& polygon, CleanCounts& counts, const std::vector<Point>* keep) {
+  Polygon out;
+  out.outer = clean_ring(polygon.outer, counts, keep);
+  orient_ring(out.outer, true);
+  rotate_canonical(out.outer);
+  for (const Ring& h : polygon.holes) {
+    Ring r = clean_ring(h, counts, keep);
+    orient_ring(r, false);
+    rotate_canonical(r);
+    out.holes.push_back(std::move(r));
+  }
+  std::sort(out.holes.begin(), out.holes.end());
+  return out;
+}
+
+bool in_box(Point q, const Box& b) {
+  return b.lo.x <= q.x && q.x <= b.hi.x && b.lo.y <= q.y && q.y <= b.hi.y;
+}
+
+Point direction(const Segment& s) { return {s.b.x - s.a.x, s.b.y - s.a.y}; }
+
+// Replaces every rational vertex of a union ring by an integer point on the free side of both
+// its edges (the rule in normalize.h). Returns the integer ring.
+Ring round_ring(const detail::UnionRing& ring, const Box& domain, std::int64_t& rounded) {
+  // Rational vertices where the ring goes straight on are simply dropped (same line).
+  std::vector<RPoint> cur;
+  std::vector<Segment> lines;
+  const std::size_t n0 = ring.vertices.size();
+  for (std::size_t i = 0; i < n0; ++i) {
+    const Segment& in = ring.lines[(i + n0 - 1) % n0];
+    const Segment& out = ring.lines[i];
+    const Point din = direction(in), dout = direction(out);
+    const bool straight_on = i64{din.x} * dout.y - i64{din.y} * dout.x == 0 &&
+                             i64{din.x} * dout.x + i64{din.y} * dout.y > 0;
+    if (!ring.vertices[i].is_integer() && straight_on) continue;
+    cur.push_back(ring.vertices[i]);
+    lines.push_back(out);  // the edge leaving this vertex lies on `out` until the next kept one
+  }
+  const std::size_t m = cur.size();
+  if (m == 0) return {};
+  std::size_t start = m;
+  for (std::size_t i = 0; i < m && start == m; ++i)
+    if (cur[i].is_integer()) start = i;
+  for (std::size_t i = 0; i < m && start == m; ++i) {
+    const Point din = direction(lines[(i + m - 1) % m]), dout = direction(lines[i]);
+    if (i64{din.x} * dout.y - i64{din.y} * dout.x > 0) start = i;  // convex: domain side
+  }
+  if (start == m) start = 0;
+
+  for (std::size_t k = 0; k < m; ++k) {
+    const std::size_t i = (start + k) % m;
+    if (cur[i].is_integer()) continue;
+    const RPoint p = cur[i];
+    const RPoint prev = cur[(i + m - 1) % m], next = cur[(i + 1) % m];
+    const Segment& lin_prev = lines[(i + m - 1) % m];
+    const Segment& lin_next = lines[i];
+    auto feasible = [&](Point q) {
+      if (!in_box(q, domain)) return false;
+      // orient(prev, p, q) = orient(q, prev, p); orient(p, next, q) = orient(next, q, p).
+      const int sp = prev.is_integer() ? detail::orient_sign(q, prev.floor(), p)
+                                       : orientation(lin_prev.a, lin_prev.b, q);
+      if (sp > 0) return false;
+      const int sn = next.is_integer() ? detail::orient_sign(next.floor(), q, p)
+                                       : orientation(lin_next.a, lin_next.b, q);
+      return sn <= 0;
+    };
+    // Ranking among feasible points only (feasibility above is exact): the added region lies
+    // within max(distance of q to the two edge lines) of the old ring, so minimise that, then
+    // the distance to p. Long double is used for this ranking and nothing else.
+    using ld = long double;
+    const ld px = p.xi + static_cast<ld>(p.xf) / static_cast<ld>(p.d);
+    const ld py = p.yi + static_cast<ld>(p.yf) / static_cast<ld>(p.d);
+    auto line_dist = [&](ld ax, ld ay, ld bx, ld by, Point q) {
+      const ld dx = bx - ax, dy = by - ay, len = std::sqrt(dx * dx + dy * dy);
+      return len == 0 ? ld{0} : std::fabs(dx * (q.y - ay) - dy * (q.x - ax)) / len;
+    };
+    auto score = [&](Point q) {
+      const ld d1 = prev.is_integer()
+                        ? line_dist(prev.xi, prev.yi, px, py, q)
+                        : line_dist(lin_prev.a.x, lin_prev.a.y, lin_prev.b.x, lin_prev.b.y, q);
+      const ld d2 = next.is_integer()
+                        ? line_dist(px, py, next.xi, next.yi, q)
+                        : line_dist(lin_next.a.x, lin_next.a.y, lin_next.b.x, lin_next.b.y, q);
+      const ld dp = std::hypot(q.x - px, q.y - py);
+      return std::max(d1, d2) + dp * ld{1e-3};
+    };
+    auto search = [&](int radius, Point& best) {
+      bool found = false;
+      ld best_s = 0;
+      for (int dx = -radius + 1; dx <= radius; ++dx)
+        for (int dy = -radius + 1; dy <= radius; ++dy) {
+          const i64 x = i64{p.xi} + dx, y = i64{p.yi} + dy;
+          if (!in_range(x) || !in_range(y)) continue;
+          const Point q{static_cast<Coord>(x), static_cast<Coord>(y)};
+          if (!feasible(q)) continue;
+          const ld sc = score(q);
+          if (!found || sc < best_s || (sc == best_s && q < best)) {
+            best = q;
+            best_s = sc;
+            found = true;
+          }
+        }
+      return found;
+    };
+    Point q;
+    bool ok = search(8, q);
+    if (!ok) ok = search(32, q);
+    if (!ok) {
+      // A very thin free wedge: walk along its bisector to the first cell with a valid corner;
+      // the wedge is about one unit wide there, so the growth stays that thin.
+      auto unit_to = [&](ld x, ld y) {
+        const ld dx = x - px, dy = y - py, len = std::hypot(dx, dy);
+        return std::pair<ld, ld>{dx / len, dy / len};
+      };
+      const auto u1 = prev.is_integer() ? unit_to(prev.xi, prev.yi)
+                                        : unit_to(lin_prev.a.x, lin_prev.a.y);
+      const auto u2 = next.is_integer() ? unit_to(next.xi, next.yi)
+                                        : unit_to(lin_next.b.x, lin_next.b.y);
+      ld bx = u1.first + u2.first, by = u1.second + u2.second;
+      const ld bl = std::hypot(bx, by);
+      if (bl > 0) {
+        bx /= bl, by /= bl;
+        for (i64 t = 8; !ok && t < (i64{1} << 22); t += 1 + t / 64) {
+          const ld sx = px + bx * static_cast<ld>(t), sy = py + by * static_cast<ld>(t);
+          if (std::fabs(sx) > kMaxCoord || std::fabs(sy) > kMaxCoord) break;
+          ld best_s = 0;
+          for (int cx = 0; cx <= 1; ++cx)
+            for (int cy = 0; cy <= 1; ++cy) {
+              const Point c{static_cast<Coord>(std::floor(sx)) + cx, static_cast<Coord>(std::floor(sy)) + cy};
+              if (!in_range(c.x) || !in_range(c.y) || !feasible(c)) continue;
+              const ld sc = score(c);
+              if (!ok || sc < best_s) q = c, best_s = sc, ok = true;
+            }
+        }
+      }
+    }
+    if (!ok && prev.is_integer() && feasible(prev.floor())) q = prev.floor(), ok = true;
+    if (!ok && next.is_integer() && feasible(next.floor())) q = next.floor(), ok = true;
+    for (int radius = 64; !ok && radius <= 512; radius *= 2) ok = search(radius, q);
+    if (!ok) throw std::logic_error("normalize_obstacles: no integer point to round a vertex to");
+    cur[i] = detail::to_rpoint(q);
+    ++rounded;
+  }
+  Ring out;
+  for (const RPoint& v : cur)
+    if (out.empty() || out.back() != v.floor()) out.push_back(v.floor());
+  while (out.size() >= 2 && out.back() == out.front()) out.pop_back();
+  return out;
+}
+
+}  // namespace
+
+Polygon normalize_polygon(const Polygon& polygon) {
+  CleanCounts counts;
+  return canonical(polygon, counts, nullptr);
+}
+
+NormalizedObstacles normalize_obstacles(std::span<const Polygon> inputs,
+                                        std::optional<Box> boundary) {
+  NormalizedObstacles result;
+  NormalizeStats& st = result.stats;
+  st.input_polygons = static_cast<std::int64_t>(inputs.size());
+
+  // Inputs as loops with the inside on the left: shells counter-clockwise, holes clockwise.
+  std::vector<detail::Loop> loops;
+  CleanCounts counts;
+  bool any = false;
+  Point lo{kMaxCoord, kMaxCoord}, hi{-kMaxCoord, -kMaxCoord};
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    st.input_vertices += static_cast<std::int64_t>(inputs[i].outer.size());
+    for (const Ring& h : inputs[i].holes) st.input_vertices += static_cast<std::int64_t>(h.size());
+    const Polygon p = canonical(inputs[i], counts, nullptr);
+    if (p.outer.size() < 3 || twice_area(p.outer) == 0) continue;
+    for (Point v : p.outer) {
+      lo = {std::min(lo.x, v.x), std::min(lo.y, v.y)};
+      hi = {std::max(hi.x, v.x), std::max(hi.y, v.y)};
+      any = true;
+    }
+    loops.push_back({p.outer, static_cast<std::int64_t>(i)});
+    for (const Ring& h : p.holes)
+      if (h.size() >= 3) loops.push_back({h, static_cast<std::int64_t>(i)});
+  }
+  st.removed_repeated = counts.repeated;
+  st.removed_collinear = counts.collinear;
+  if (boundary) {
+    result.domain = *boundary;
+  } else if (any) {
+    auto grow = [](Coord v, i64 by) {
+      return static_cast<Coord>(std::clamp<i64>(v + by, -kMaxCoord, kMaxCoord));
+    };
+    result.domain = {{grow(lo.x, -kDomainMargin), grow(lo.y, -kDomainMargin)},
+                     {grow(hi.x, kDomainMargin), grow(hi.y, kDomainMargin)}};
+  }
+
+  // Union passes: round rational vertices outward and union again until none is left.
+  std::vector<std::vector<std::size_t>> src;  // per component of the last pass
+  detail::UnionResult u;
+  for (int pass = 0;; ++pass) {
+    if (pass == 32) throw std::logic_error("normalize_obstacles: rounding did not settle");
+    u = detail::union_loops(loops, result.domain);
+    ++st.passes;
+    if (pass == 0) st.crossings = u.proper_crossings;
+    std::vector<std::vector<std::size_t>> next_src(u.components);
+    for (const auto& [tag, c] : u.tag_components) {
+      if (pass == 0) {
+        next_src[c].push_back(static_cast<std::size_t>(tag));
+      } else {
+        const auto& s = src[static_cast<std::size_t>(tag)];
+        next_src[c].insert(next_src[c].end(), s.begin(), s.end());
+      }
+    }
+    for (auto& s : next_src) {
+      std::sort(s.begin(), s.end());
+      s.erase(std::unique(s.begin(), s.end()), s.end());
+    }
+    src = std::move(next_src);
+    if (u.rational_vertices == 0) break;
+    loops.clear();
+    for (const auto& ring : u.rings) {
+      Ring r = round_ring(ring, result.domain, st.rounded);
+      if (r.size() >= 3) loops.push_back({std::move(r), ring.component});
+    }
+  }
+
+  // Assemble obstacles: one counter-clockwise shell and its clockwise holes per component.
+  std::vector<Polygon> polys(u.components);
+  std::vector<int> shells(u.components, 0);
+  for (const auto& ring : u.rings) {
+    Ring r;
+    r.reserve(ring.vertices.size());
+    for (const RPoint& v : ring.vertices) r.push_back(v.floor());
+    const i128 a = twice_area(r);
+    if (a > 0) {
+      polys[ring.component].outer = std::move(r);
+      ++shells[ring.component];
+    } else {
+      polys[ring.component].holes.push_back(std::move(r));
+    }
+  }
+  std::vector<std::size_t> order;
+  for (int c = 0; c < u.components; ++c) {
+    if (shells[c] != 1) throw std::logic_error("normalize_obstacles: component without one shell");
+    std::vector<Point> all, keep;
+    all.insert(all.end(), polys[c].outer.begin(), polys[c].outer.end());
+    for (const Ring& h : polys[c].holes) all.insert(all.end(), h.begin(), h.end());
+    std::sort(all.begin(), all.end());
+    for (std::size_t i = 0; i + 1 < all.size(); ++i)
+      if (all[i] == all[i + 1] && (keep.empty() || keep.back() != all[i])) keep.push_back(all[i]);
+    CleanCounts ignored;
+    polys[c] = canonical(polys[c], ignored, &keep);
+    order.push_back(static_cast<std::size_t>(c));
+  }
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return polys[a].outer < polys[b].outer; });
+  for (std::size_t c : order) {
+    st.output_vertices += static_cast<std::int64_t>(polys[c].outer.size());
+    for (const Ring& h : polys[c].holes) st.output_vertices += static_cast<std::int64_t>(h.size());
+    if (!src[c].empty()) st.merges += static_cast<std::int64_t>(src[c].size()) - 1;
+    result.obstacles.push_back(std::move(polys[c]));
+    result.sources.push_back(std::move(src[c]));
+  }
+  st.output_obstacles = static_cast<std::int64_t>(result.obstacles.size());
+  return result;
+}
+
+}  // namespace taut::geom

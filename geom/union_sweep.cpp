@@ -1,0 +1,423 @@
+#include "geom/union_sweep.h"
+
+#include <algorithm>
+#include <cassert>
+#include <numeric>
+#include <set>
+#include <stdexcept>
+
+#include <boost/geometry.hpp>
+#include <boost/geometry/index/rtree.hpp>
+
+namespace taut::geom::detail {
+
+namespace {
+
+using u128 = unsigned __int128;
+
+u128 gcd128(u128 a, u128 b) {
+  while (b != 0) {
+    const u128 t = a % b;
+    a = b;
+    b = t;
+  }
+  return a;
+}
+u128 abs128(i128 v) { return v < 0 ? u128(-v) : u128(v); }
+i128 floor_div(i128 a, i128 b) {  // b > 0
+  i128 q = a / b;
+  if (a % b != 0 && a < 0) --q;
+  return q;
+}
+int cmp_frac(std::int64_t f1, std::int64_t d1, std::int64_t f2, std::int64_t d2) {
+  const i128 l = i128{f1} * d2, r = i128{f2} * d1;
+  return (l > r) - (l < r);
+}
+i64 cross(Point d1, Point d2) { return i64{d1.x} * d2.y - i64{d1.y} * d2.x; }
+Point sub(Point a, Point b) { return {a.x - b.x, a.y - b.y}; }  // |diff| < 2^31: fits Coord
+
+struct Seg {
+  Point a, b;  // as directed in its loop
+  int loop = -1;
+  bool box = false;
+};
+
+struct Piece {
+  int u = 0, v = 0, seg = 0;  // u < v: vertex ids in lexicographic order
+};
+
+struct Group {  // merged collinear pieces between vertices u < v
+  int u = 0, v = 0;
+  Point sa, sb;  // supporting integer segment, sa lexicographically before sb
+  int dw = 0, db = 0;  // winding above minus winding below (loops / domain box)
+  int w_below = 0, b_below = 0;
+  int bpred = -1;       // nearest boundary group below at insertion
+  bool boundary = false;
+  bool union_below = false, union_above = false;
+};
+
+bool covered(int w, int b) { return w >= 1 && b >= 1; }
+
+// Order of two groups crossing the sweep line (lexicographic sweep, pieces never cross).
+struct Below {
+  const std::vector<Group>* groups;
+  const std::vector<RPoint>* verts;
+  bool operator()(int a, int b) const {
+    if (a == b) return false;
+    const Group& ga = (*groups)[a];
+    const Group& gb = (*groups)[b];
+    if (ga.u == gb.u) return cross(sub(ga.sb, ga.sa), sub(gb.sb, gb.sa)) > 0;
+    if (ga.u > gb.u) {
+      const int s = orient_sign(gb.sa, gb.sb, (*verts)[ga.u]);
+      if (s != 0) return s < 0;
+    } else {
+      const int s = orient_sign(ga.sa, ga.sb, (*verts)[gb.u]);
+      if (s != 0) return s > 0;
+    }
+    // Only reachable if a piece were still active past its right end; keep a strict order.
+    return cross(sub(ga.sb, ga.sa), sub(gb.sb, gb.sa)) > 0;
+  }
+};
+
+// Angle class of d seen counter-clockwise from ref, in (0, 2*pi]: 0 (0, pi), 1 pi,
+// 2 (pi, 2 pi), 3 exactly 2 pi.
+int angle_class(Point ref, Point d) {
+  const i64 c = cross(ref, d);
+  if (c > 0) return 0;
+  if (c < 0) return 2;
+  return dot({0, 0}, ref, {0, 0}, d) < 0 ? 1 : 3;
+}
+bool ccw_before(Point ref, Point d1, Point d2) {  // angle(ref -> d1) < angle(ref -> d2)
+  const int c1 = angle_class(ref, d1), c2 = angle_class(ref, d2);
+  if (c1 != c2) return c1 < c2;
+  if (c1 == 1 || c1 == 3) return false;
+  return cross(d1, d2) > 0;
+}
+
+struct UnionFind {
+  std::vector<int> parent;
+  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  int find(int x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  }
+  void unite(int a, int b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  }
+};
+
+}  // namespace
+
+RPoint to_rpoint(Point p) { return {p.x, p.y, 0, 0, 1}; }
+
+RPoint to_rpoint(const RationalPoint& r) {
+  i128 x = r.x_num, y = r.y_num, den = r.den;
+  const u128 g = gcd128(gcd128(abs128(x), abs128(y)), abs128(den));
+  x /= i128(g);
+  y /= i128(g);
+  den /= i128(g);
+  const i128 xi = floor_div(x, den), yi = floor_div(y, den);
+  RPoint p;
+  p.xi = static_cast<Coord>(xi);
+  p.yi = static_cast<Coord>(yi);
+  p.xf = static_cast<std::int64_t>(x - xi * den);
+  p.yf = static_cast<std::int64_t>(y - yi * den);
+  p.d = static_cast<std::int64_t>(den);
+  return p;
+}
+
+bool lex_less(const RPoint& a, const RPoint& b) {
+  if (a.xi != b.xi) return a.xi < b.xi;
+  if (a.d != 1 || b.d != 1) {
+    const int c = cmp_frac(a.xf, a.d, b.xf, b.d);
+    if (c != 0) return c < 0;
+  }
+  if (a.yi != b.yi) return a.yi < b.yi;
+  if (a.d != 1 || b.d != 1) return cmp_frac(a.yf, a.d, b.yf, b.d) < 0;
+  return false;
+}
+
+int orient_sign(Point a, Point b, const RPoint& v) {
+  if (v.d == 1) return sign(orient(a, b, v.floor()));
+  // |(v - a) * d| < 2^31 * 2^63 and |b - a| < 2^31: each product < 2^125, difference < 2^126.
+  const i128 dx = i128{b.x} - a.x, dy = i128{b.y} - a.y;
+  const i128 vx = (i128{v.xi} - a.x) * v.d + v.xf;
+  const i128 vy = (i128{v.yi} - a.y) * v.d + v.yf;
+  return sign(dx * vy - dy * vx);
+}
+
+UnionResult union_loops(const std::vector<Loop>& loops, const Box& domain) {
+  UnionResult result;
+
+  // --- Edges of the loops and of the domain box.
+  std::vector<Seg> segs;
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    const auto& pts = loops[l].points;
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      const Point a = pts[i], b = pts[(i + 1) % pts.size()];
+      if (a != b) segs.push_back({a, b, static_cast<int>(l), false});
+    }
+  }
+  if (segs.empty()) return result;
+  {
+    const Point c[4] = {domain.lo, {domain.hi.x, domain.lo.y}, domain.hi, {domain.lo.x, domain.hi.y}};
+    for (int i = 0; i < 4; ++i)
+      if (c[i] != c[(i + 1) % 4]) segs.push_back({c[i], c[(i + 1) % 4], -1, true});
+  }
+  const int ns = static_cast<int>(segs.size());
+
+  // --- Split points from every pair of edges whose boxes overlap.
+  std::vector<std::pair<int, RPoint>> splits;
+  {
+    namespace bg = boost::geometry;
+    namespace bgi = boost::geometry::index;
+    using BPoint = bg::model::point<int, 2, bg::cs::cartesian>;
+    using BBox = bg::model::box<BPoint>;
+    using Value = std::pair<BBox, int>;
+    std::vector<Value> values;
+    values.reserve(segs.size());
+    auto seg_box = [](const Seg& s) {
+      return BBox(BPoint(std::min(s.a.x, s.b.x), std::min(s.a.y, s.b.y)),
+                  BPoint(std::max(s.a.x, s.b.x), std::max(s.a.y, s.b.y)));
+    };
+    for (int i = 0; i < ns; ++i) values.emplace_back(seg_box(segs[i]), i);
+    const bgi::rtree<Value, bgi::rstar<16>> tree(values.begin(), values.end());
+    std::vector<Value> hits;
+    for (int i = 0; i < ns; ++i) {
+      hits.clear();
+      tree.query(bgi::intersects(values[i].first), std::back_inserter(hits));
+      const Seg& s = segs[i];
+      for (const Value& h : hits) {
+        const int j = h.second;
+        if (j <= i) continue;
+        const Seg& t = segs[j];
+        const SegmentIntersection r = intersect({s.a, s.b}, {t.a, t.b});
+        if (r == SegmentIntersection::None) continue;
+        if (r == SegmentIntersection::Proper) {
+          const RPoint p = to_rpoint(line_intersection({s.a, s.b}, {t.a, t.b}));
+          splits.emplace_back(i, p);
+          splits.emplace_back(j, p);
+          if (p.is_integer()) continue;
+          ++result.proper_crossings;
+          continue;
+        }
+        for (Point e : {s.a, s.b})
+          if (e != t.a && e != t.b && on_segment(e, t.a, t.b)) splits.emplace_back(j, to_rpoint(e));
+        for (Point e : {t.a, t.b})
+          if (e != s.a && e != s.b && on_segment(e, s.a, s.b)) splits.emplace_back(i, to_rpoint(e));
+      }
+    }
+  }
+
+  // --- Vertex ids in lexicographic order.
+  std::vector<RPoint> pts;
+  std::vector<int> owner;
+  pts.reserve(2 * segs.size() + splits.size());
+  owner.reserve(pts.capacity());
+  for (int i = 0; i < ns; ++i) {
+    pts.push_back(to_rpoint(segs[i].a));
+    owner.push_back(i);
+    pts.push_back(to_rpoint(segs[i].b));
+    owner.push_back(i);
+  }
+  for (const auto& [i, p] : splits) {
+    pts.push_back(p);
+    owner.push_back(i);
+  }
+  splits.clear();
+  splits.shrink_to_fit();
+  std::vector<int> order(pts.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return lex_less(pts[a], pts[b]); });
+  std::vector<RPoint> verts;
+  std::vector<std::pair<int, int>> seg_vertex;  // (segment, vertex id)
+  seg_vertex.reserve(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    if (k == 0 || !(pts[order[k]] == verts.back())) verts.push_back(pts[order[k]]);
+    seg_vertex.emplace_back(owner[order[k]], static_cast<int>(verts.size()) - 1);
+  }
+  pts = {};
+  owner = {};
+  order = {};
+  std::sort(seg_vertex.begin(), seg_vertex.end());
+  seg_vertex.erase(std::unique(seg_vertex.begin(), seg_vertex.end()), seg_vertex.end());
+  const int nv = static_cast<int>(verts.size());
+
+  // --- Pieces between consecutive vertices of each edge, merged into groups.
+  std::vector<Piece> pieces;
+  pieces.reserve(seg_vertex.size());
+  for (std::size_t k = 0; k + 1 < seg_vertex.size(); ++k)
+    if (seg_vertex[k].first == seg_vertex[k + 1].first)
+      pieces.push_back({seg_vertex[k].second, seg_vertex[k + 1].second, seg_vertex[k].first});
+  seg_vertex = {};
+  std::sort(pieces.begin(), pieces.end(), [](const Piece& a, const Piece& b) {
+    return a.u != b.u ? a.u < b.u : a.v != b.v ? a.v < b.v : a.seg < b.seg;
+  });
+  std::vector<Group> groups;
+  std::vector<int> piece_group(pieces.size());
+  for (std::size_t k = 0; k < pieces.size(); ++k) {
+    const Piece& p = pieces[k];
+    if (groups.empty() || groups.back().u != p.u || groups.back().v != p.v) {
+      Group g;
+      g.u = p.u;
+      g.v = p.v;
+      const Seg& s = segs[p.seg];
+      g.sa = std::min(s.a, s.b);
+      g.sb = std::max(s.a, s.b);
+      groups.push_back(g);
+    }
+    Group& g = groups.back();
+    const Seg& s = segs[p.seg];
+    const int delta = s.a < s.b ? 1 : -1;  // loop direction agrees with lexicographic direction
+    (s.box ? g.db : g.dw) += delta;
+    piece_group[k] = static_cast<int>(groups.size()) - 1;
+  }
+  const int ng = static_cast<int>(groups.size());
+
+  // Groups starting at each vertex, lowest direction first; groups ending at each vertex.
+  std::vector<int> start_order(ng);
+  std::iota(start_order.begin(), start_order.end(), 0);
+  std::sort(start_order.begin(), start_order.end(), [&](int a, int b) {
+    if (groups[a].u != groups[b].u) return groups[a].u < groups[b].u;
+    return cross(sub(groups[a].sb, groups[a].sa), sub(groups[b].sb, groups[b].sa)) > 0;
+  });
+  std::vector<int> end_first(nv + 1, 0), end_list(ng);
+  for (const Group& g : groups) ++end_first[g.v + 1];
+  for (int i = 0; i < nv; ++i) end_first[i + 1] += end_first[i];
+  {
+    std::vector<int> fill(end_first.begin(), end_first.end() - 1);
+    for (int g = 0; g < ng; ++g) end_list[fill[groups[g].v]++] = g;
+  }
+
+  // --- Sweep.
+  const Below below{&groups, &verts};
+  std::set<int, Below> status(below), bstatus(below);
+  std::vector<std::set<int, Below>::iterator> pos(ng), bpos(ng);
+  std::size_t next_start = 0;
+  for (int x = 0; x < nv; ++x) {
+    for (int k = end_first[x]; k < end_first[x + 1]; ++k) {
+      const int g = end_list[k];
+      status.erase(pos[g]);
+      if (groups[g].boundary) bstatus.erase(bpos[g]);
+    }
+    while (next_start < start_order.size() && groups[start_order[next_start]].u == x) {
+      const int gi = start_order[next_start++];
+      Group& g = groups[gi];
+      const auto it = status.insert(gi).first;
+      pos[gi] = it;
+      if (it != status.begin()) {
+        const Group& p = groups[*std::prev(it)];
+        g.w_below = p.w_below + p.dw;
+        g.b_below = p.b_below + p.db;
+      }
+      g.union_below = covered(g.w_below, g.b_below);
+      g.union_above = covered(g.w_below + g.dw, g.b_below + g.db);
+      g.boundary = g.union_below != g.union_above;
+      if (g.boundary) {
+        const auto bit = bstatus.insert(gi).first;
+        bpos[gi] = bit;
+        g.bpred = bit == bstatus.begin() ? -1 : *std::prev(bit);
+      } else if (g.union_below) {
+        const auto bit = bstatus.lower_bound(gi);
+        g.bpred = bit == bstatus.begin() ? -1 : *std::prev(bit);
+      }
+    }
+  }
+  status.clear();
+  bstatus.clear();
+
+  // --- Boundary edges directed with the union on their left, linked into rings.
+  std::vector<int> bedges;
+  for (int g = 0; g < ng; ++g)
+    if (groups[g].boundary) bedges.push_back(g);
+  const int nb = static_cast<int>(bedges.size());
+  std::vector<int> edge_of_group(ng, -1);
+  std::vector<int> from(nb), to(nb);
+  std::vector<Segment> line(nb);
+  for (int e = 0; e < nb; ++e) {
+    const Group& g = groups[bedges[e]];
+    edge_of_group[bedges[e]] = e;
+    const bool fwd = g.union_above;  // above = left of the lexicographic direction
+    from[e] = fwd ? g.u : g.v;
+    to[e] = fwd ? g.v : g.u;
+    line[e] = fwd ? Segment{g.sa, g.sb} : Segment{g.sb, g.sa};
+  }
+  std::vector<int> out_first(nv + 1, 0), out_list(nb);
+  for (int e = 0; e < nb; ++e) ++out_first[from[e] + 1];
+  for (int i = 0; i < nv; ++i) out_first[i + 1] += out_first[i];
+  {
+    std::vector<int> fill(out_first.begin(), out_first.end() - 1);
+    for (int e = 0; e < nb; ++e) out_list[fill[from[e]]++] = e;
+  }
+  std::vector<int> next(nb, -1);
+  for (int e = 0; e < nb; ++e) {
+    const int v = to[e];
+    const int b = out_first[v], n = out_first[v + 1] - b;
+    if (n == 1) {
+      next[e] = out_list[b];
+      continue;
+    }
+    if (n == 0) throw std::logic_error("union_loops: boundary edge without successor");
+    const Point ref = sub(line[e].a, line[e].b);  // from v back along e
+    int best = -1;
+    for (int k = b; k < b + n; ++k) {
+      const int o = out_list[k];
+      if (best < 0 || ccw_before(ref, sub(line[o].b, line[o].a), sub(line[best].b, line[best].a)))
+        best = o;
+    }
+    next[e] = best;
+  }
+  std::vector<int> ring_of(nb, -1);
+  for (int e0 = 0; e0 < nb; ++e0) {
+    if (ring_of[e0] >= 0) continue;
+    const int r = static_cast<int>(result.rings.size());
+    UnionRing ring;
+    for (int e = e0; ring_of[e] < 0; e = next[e]) {
+      ring_of[e] = r;
+      ring.vertices.push_back(verts[from[e]]);
+      ring.lines.push_back(line[e]);
+      if (!verts[from[e]].is_integer()) ++result.rational_vertices;
+    }
+    result.rings.push_back(std::move(ring));
+  }
+
+  // --- Connected obstacles.
+  const int nr = static_cast<int>(result.rings.size());
+  UnionFind uf(nr);
+  for (int v = 0; v < nv; ++v)
+    for (int k = out_first[v] + 1; k < out_first[v + 1]; ++k)
+      uf.unite(ring_of[out_list[out_first[v]]], ring_of[out_list[k]]);
+  for (int e = 0; e < nb; ++e) {
+    const Group& g = groups[bedges[e]];
+    if (g.union_below && g.bpred >= 0) uf.unite(ring_of[e], ring_of[edge_of_group[g.bpred]]);
+  }
+  std::vector<int> comp_id(nr, -1);
+  for (int r = 0; r < nr; ++r) {
+    const int root = uf.find(r);
+    if (comp_id[root] < 0) comp_id[root] = result.components++;
+    result.rings[r].component = comp_id[root];
+  }
+
+  // --- Which obstacle each loop ended in.
+  for (std::size_t k = 0; k < pieces.size(); ++k) {
+    const Seg& s = segs[pieces[k].seg];
+    if (s.box) continue;
+    const Group& g = groups[piece_group[k]];
+    int e = -1;
+    if (g.boundary)
+      e = edge_of_group[piece_group[k]];
+    else if (g.union_below && g.bpred >= 0)
+      e = edge_of_group[g.bpred];
+    if (e < 0) continue;
+    result.tag_components.emplace_back(loops[s.loop].tag, result.rings[ring_of[e]].component);
+  }
+  std::sort(result.tag_components.begin(), result.tag_components.end());
+  result.tag_components.erase(
+      std::unique(result.tag_components.begin(), result.tag_components.end()),
+      result.tag_components.end());
+  return result;
+}
+
+}  // namespace taut::geom::detail

@@ -1,0 +1,131 @@
+// normalize_polygon(): canonical form; io/movingai: the .map reader and its diagnostics.
+#include "geom/normalize.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "geom/predicates.h"
+#include "io/movingai.h"
+
+namespace {
+
+using taut::geom::Point;
+using taut::geom::Polygon;
+using taut::geom::Ring;
+
+TEST(NormalizePolygon, HandWritten) {
+  //  (0,4) +-----+ (4,4)     written clockwise, with a repeat and two collinear vertices
+  //        |     |
+  //  (0,0) +--+--+ (4,0)
+  Polygon p{{{4, 4}, {4, 0}, {2, 0}, {2, 0}, {0, 0}, {0, 2}, {0, 4}}, {}};
+  const Polygon n = taut::geom::normalize_polygon(p);
+  EXPECT_EQ(n.outer, (Ring{{0, 0}, {4, 0}, {4, 4}, {0, 4}}));
+  // A hole written counter-clockwise becomes clockwise, starting at its smallest vertex.
+  Polygon h{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{{3, 3}, {6, 3}, {6, 6}, {3, 6}}, {{7, 7}, {8, 7}, {8, 8}}}};
+  const Polygon nh = taut::geom::normalize_polygon(h);
+  EXPECT_EQ(nh.holes[0], (Ring{{3, 3}, {3, 6}, {6, 6}, {6, 3}}));
+  EXPECT_EQ(nh.holes[1], (Ring{{7, 7}, {8, 8}, {8, 7}}));
+}
+
+// Rotating, reversing, repeating vertices and adding collinear points never changes the
+// canonical form; the form starts at the minimum, is counter-clockwise, has no straight vertex.
+TEST(NormalizePolygon, RandomEquivalentWritings) {
+  const unsigned base = 20240601;
+  for (unsigned it = 0; it < 400; ++it) {
+    const unsigned seed = base + it;
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    std::mt19937 rng(seed);
+    // Star polygon around (0,0) with even coordinates (so midpoints are integer).
+    const int k = 3 + static_cast<int>(rng() % 10);
+    std::vector<double> ang;
+    for (int i = 0; i < k; ++i) ang.push_back(std::uniform_real_distribution<double>(0, 6.283)(rng));
+    std::sort(ang.begin(), ang.end());
+    Ring r;
+    for (double a : ang) {
+      const double rad = 20 + static_cast<int>(rng() % 200);
+      const Point p{2 * static_cast<int>(std::lround(rad * std::cos(a))), 2 * static_cast<int>(std::lround(rad * std::sin(a)))};
+      if (r.empty() || r.back() != p) r.push_back(p);
+    }
+    if (r.size() < 3 || taut::geom::twice_area(r) <= 0) continue;
+    const Polygon ref = taut::geom::normalize_polygon({r, {}});
+    ASSERT_GE(ref.outer.size(), 3u);
+    EXPECT_EQ(ref.outer.front(), *std::min_element(ref.outer.begin(), ref.outer.end()));
+    EXPECT_GT(taut::geom::twice_area(ref.outer), 0);
+    EXPECT_EQ(taut::geom::twice_area(ref.outer), taut::geom::twice_area(r));
+    for (std::size_t i = 0; i < ref.outer.size(); ++i) {
+      const std::size_t n = ref.outer.size();
+      EXPECT_NE(taut::geom::orient(ref.outer[(i + n - 1) % n], ref.outer[i], ref.outer[(i + 1) % n]), 0);
+    }
+    Ring w;
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      const Point a = r[i], b = r[(i + 1) % r.size()];
+      w.push_back(a);
+      if (rng() % 2) w.push_back(a);
+      if (rng() % 2) w.push_back({(a.x + b.x) / 2, (a.y + b.y) / 2});
+    }
+    std::rotate(w.begin(), w.begin() + static_cast<long>(rng() % w.size()), w.end());
+    if (rng() % 2) std::reverse(w.begin(), w.end());
+    EXPECT_EQ(taut::geom::normalize_polygon({w, {}}), ref);
+  }
+}
+
+TEST(MovingAi, ParsesRunsAndBoundary) {
+  // Row 0 is the top: cells (c, r) -> [c*s, (c+1)*s] x [(H-1-r)*s, (H-r)*s].
+  const std::string text = "type octile\nheight 2\nwidth 4\nmap\n@@.T\r\n.G@S\n";
+  const auto r = taut::io::parse_movingai_map(text, "t.map", 10);
+  ASSERT_TRUE(r.layout) << (r.diagnostics.empty() ? "" : taut::format(r.diagnostics[0]));
+  const auto& L = *r.layout;
+  ASSERT_TRUE(L.boundary);
+  EXPECT_EQ(L.boundary->box, (taut::geom::Box{{0, 0}, {40, 20}}));
+  ASSERT_EQ(L.blockages.size(), 3u);
+  EXPECT_EQ(L.blockages[0].id, "r0c0");
+  EXPECT_EQ(L.blockages[0].shapes[0].rect, (taut::geom::Box{{0, 10}, {20, 20}}));
+  EXPECT_EQ(L.blockages[1].id, "r0c3");
+  EXPECT_EQ(L.blockages[1].shapes[0].rect, (taut::geom::Box{{30, 10}, {40, 20}}));
+  EXPECT_EQ(L.blockages[2].id, "r1c2");
+  EXPECT_EQ(L.blockages[2].shapes[0].rect, (taut::geom::Box{{20, 0}, {30, 10}}));
+  EXPECT_EQ(L.blockages[2].line, 6);
+}
+
+TEST(MovingAi, MalformedFilesGiveDiagnostics) {
+  struct Case {
+    std::string text, code;
+    int line;
+  };
+  const std::vector<Case> cases = {
+      {"", "IO-0091", 0},
+      {"type octile\nheight 2\nwidth x\nmap\n..\n..\n", "IO-0091", 3},
+      {"type octile\nheight 2\nmap\n..\n..\n", "IO-0091", 3},
+      {"type octile\nheight 2\nwidth 2\nfoo\nmap\n", "IO-0091", 4},
+      {"height 2\nwidth 2\nmap\n..\n..\n", "IO-0091", 3},
+      {"type octile\nheight 3\nwidth 2\nmap\n..\n..\n", "IO-0092", 6},
+      {"type octile\nheight 2\nwidth 2\nmap\n..\n...\n", "IO-0092", 6},
+      {"type octile\nheight 2\nwidth 2\nmap\n..\n..\nxx\n", "IO-0094", 7},
+      {"type octile\nheight 2\nwidth 200000000\nmap\n", "IO-0093", 4},
+      {"type octile\nheight -1\nwidth 2\nmap\n", "IO-0091", 2},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.text);
+    const auto r = taut::io::parse_movingai_map(c.text, "bad.map", 10);
+    EXPECT_FALSE(r.layout);
+    ASSERT_EQ(r.diagnostics.size(), 1u);
+    EXPECT_EQ(r.diagnostics[0].code, c.code);
+    EXPECT_EQ(r.diagnostics[0].line, c.line);
+    EXPECT_EQ(r.diagnostics[0].file, "bad.map");
+  }
+  const auto missing = taut::io::load_movingai_map("/nonexistent/x.map");
+  ASSERT_EQ(missing.diagnostics.size(), 1u);
+  EXPECT_EQ(missing.diagnostics[0].code, "IO-0090");
+}
+
+TEST(MovingAi, LoadsSharedArena) {
+  const auto r = taut::io::load_movingai_map(std::string(TAUT_SHARED_DATA) + "/movingai/arena.map", 10);
+  ASSERT_TRUE(r.layout);
+  EXPECT_EQ(r.layout->boundary->box, (taut::geom::Box{{0, 0}, {490, 490}}));
+  EXPECT_FALSE(r.layout->blockages.empty());
+}
+
+}  // namespace

@@ -1,0 +1,467 @@
+// normalize_obstacles() against brute-force references (tests/oracle/union_oracle.h): exact
+// rasterization for axis-parallel inputs and Moving AI maps, containment and a 2 DBU growth
+// bound for arbitrary polygons, nesting and clipping cases, and the output invariants.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <random>
+#include <set>
+#include <sstream>
+
+#include "geom/normalize.h"
+#include "geom/predicates.h"
+#include "io/movingai.h"
+#include "oracle/union_oracle.h"
+
+namespace {
+
+using taut::geom::Box;
+using taut::geom::Coord;
+using taut::geom::i128;
+using taut::geom::Point;
+using taut::geom::Polygon;
+using taut::geom::Ring;
+namespace oracle = taut::oracle;
+
+Polygon rect(Coord x0, Coord y0, Coord x1, Coord y1) {
+  return {{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, {}};
+}
+
+std::string join(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& e : v) s += e + "\n";
+  return s;
+}
+
+// --- Axis-parallel inputs: exact comparison on every vertex, edge midpoint and cell centre of
+// the grid of input coordinates (in doubled coordinates so midpoints are integer).
+void check_rectilinear(const std::vector<Polygon>& inputs, std::optional<Box> boundary) {
+  const auto r = taut::geom::normalize_obstacles(inputs, boundary);
+  EXPECT_EQ(r.stats.rounded, 0);
+  EXPECT_EQ(r.stats.passes, 1);
+  ASSERT_EQ(join(oracle::check_obstacles(r.obstacles, r.domain)), "");
+  // Reference: each input clipped to the domain with positive area (closed set).
+  std::vector<Polygon> clipped2;
+  std::vector<std::size_t> clipped_index;
+  std::vector<std::pair<std::size_t, Box>> degenerate;  // an input touching the domain from outside
+  std::set<Coord> xs{r.domain.lo.x, r.domain.hi.x}, ys{r.domain.lo.y, r.domain.hi.y};
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    const Ring& o = inputs[i].outer;
+    Coord x0 = o[0].x, x1 = o[0].x, y0 = o[0].y, y1 = o[0].y;
+    for (Point p : o) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+    xs.insert(x0), xs.insert(x1), ys.insert(y0), ys.insert(y1);
+    x0 = std::max(x0, r.domain.lo.x), x1 = std::min(x1, r.domain.hi.x);
+    y0 = std::max(y0, r.domain.lo.y), y1 = std::min(y1, r.domain.hi.y);
+    if (x0 < x1 && y0 < y1) {
+      clipped2.push_back(rect(2 * x0, 2 * y0, 2 * x1, 2 * y1));
+      clipped_index.push_back(i);
+    } else if ((x0 == x1 && y0 < y1) || (x0 < x1 && y0 == y1)) {
+      degenerate.push_back({i, Box{{2 * x0, 2 * y0}, {2 * x1, 2 * y1}}});
+    }
+  }
+  std::vector<Polygon> obst2;
+  for (const Polygon& p : r.obstacles) obst2.push_back(oracle::scaled(p, 2));
+  const Box big{{-(1 << 29), -(1 << 29)}, {1 << 29, 1 << 29}};
+  std::vector<Coord> sx, sy;
+  for (auto it = xs.begin(); it != xs.end(); ++it) {
+    sx.push_back(2 * *it);
+    if (std::next(it) != xs.end()) sx.push_back(*it + *std::next(it));
+  }
+  for (auto it = ys.begin(); it != ys.end(); ++it) {
+    sy.push_back(2 * *it);
+    if (std::next(it) != ys.end()) sy.push_back(*it + *std::next(it));
+  }
+  sx.push_back(sx.front() - 1), sx.push_back(sx.back() + 1);
+  sy.push_back(sy.front() - 1), sy.push_back(sy.back() + 1);
+  i128 area8 = 0;  // 8 x area from cell centres (cell of doubled size 2dx x 2dy)
+  int mismatches = 0;
+  for (Coord x : sx)
+    for (Coord y : sy) {
+      const bool want = oracle::in_inputs({x, y}, clipped2, big);
+      const bool got = oracle::in_obstacles({x, y}, obst2);
+      if (want != got && ++mismatches <= 5)
+        ADD_FAILURE() << "point (" << x / 2.0 << "," << y / 2.0 << ") expected " << want;
+    }
+  for (auto ix = xs.begin(); std::next(ix) != xs.end(); ++ix)
+    for (auto iy = ys.begin(); std::next(iy) != ys.end(); ++iy) {
+      const Point c{*ix + *std::next(ix), *iy + *std::next(iy)};
+      if (oracle::in_inputs(c, clipped2, big))
+        area8 += i128{*std::next(ix) - *ix} * (*std::next(iy) - *iy) * 2;
+    }
+  EXPECT_TRUE(oracle::twice_area(r.obstacles) == area8) << "area differs";
+  // Sources: the obstacle at the centre of each clipped input lists it, and nothing else.
+  std::vector<std::set<std::size_t>> want_src(r.obstacles.size());
+  for (std::size_t k = 0; k < clipped2.size(); ++k) {
+    const Ring& o = clipped2[k].outer;
+    const int at = oracle::obstacle_at({(o[0].x + o[2].x) / 2, (o[0].y + o[2].y) / 2}, obst2);
+    ASSERT_GE(at, 0);
+    want_src[at].insert(clipped_index[k]);
+  }
+  // An input meeting the domain only along a segment of its side is a source of every
+  // obstacle that the segment's relative interior touches (a zero-area part alone is not an
+  // obstacle, and a contact at its end point only is not counted).
+  for (const auto& [i, b] : degenerate)
+    for (Coord x : sx)
+      for (Coord y : sy)
+        if (b.lo.x <= x && x <= b.hi.x && b.lo.y <= y && y <= b.hi.y && Point{x, y} != b.lo &&
+            Point{x, y} != b.hi) {
+          const int at = oracle::obstacle_at({x, y}, obst2);
+          if (at >= 0) want_src[at].insert(i);
+        }
+  for (std::size_t o = 0; o < r.obstacles.size(); ++o)
+    EXPECT_EQ(std::vector<std::size_t>(want_src[o].begin(), want_src[o].end()), r.sources[o]) << "obstacle " << o;
+}
+
+TEST(UnionRectilinear, RandomRectanglesOnCoarseGrid) {
+  const unsigned base = 777000;
+  for (unsigned it = 0; it < 600; ++it) {
+    const unsigned seed = base + it;
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    std::mt19937 rng(seed);
+    const int n = 1 + static_cast<int>(rng() % 12);
+    const int g = 1 + static_cast<int>(rng() % 4);  // coarse: shared edges and corners
+    std::vector<Polygon> in;
+    for (int i = 0; i < n; ++i) {
+      const Coord x0 = g * static_cast<Coord>(rng() % 10), y0 = g * static_cast<Coord>(rng() % 10);
+      const Coord x1 = x0 + g * (1 + static_cast<Coord>(rng() % 5)), y1 = y0 + g * (1 + static_cast<Coord>(rng() % 5));
+      Polygon p = rect(x0, y0, x1, y1);
+      if (rng() % 2) std::reverse(p.outer.begin(), p.outer.end());  // either orientation
+      if (rng() % 4 == 0) {                                          // a rectilinear polygon with a hole
+        p = {{{x0, y0}, {x1 + 2 * g, y0}, {x1 + 2 * g, y1 + 2 * g}, {x0, y1 + 2 * g}},
+             {{{x0 + g, y0 + g}, {x1 + g, y0 + g}, {x1 + g, y1 + g}, {x0 + g, y1 + g}}}};
+      }
+      in.push_back(p);
+    }
+    std::optional<Box> boundary;
+    if (rng() % 2) {
+      const Coord a = g * static_cast<Coord>(rng() % 6), b = g * static_cast<Coord>(rng() % 6);
+      boundary = Box{{a, b}, {a + g * (3 + static_cast<Coord>(rng() % 8)), b + g * (3 + static_cast<Coord>(rng() % 8))}};
+    }
+    // Inputs with holes: the reference of check_rectilinear handles rectangles only.
+    bool holes = false;
+    for (const auto& p : in) holes |= !p.holes.empty();
+    if (!holes) {
+      check_rectilinear(in, boundary);
+    } else {
+      const auto r = taut::geom::normalize_obstacles(in, boundary);
+      EXPECT_EQ(r.stats.rounded, 0);
+      ASSERT_EQ(join(oracle::check_obstacles(r.obstacles, r.domain)), "");
+      std::vector<Polygon> in2, ob2;
+      for (const auto& p : in) in2.push_back(oracle::scaled(p, 2));
+      for (const auto& p : r.obstacles) ob2.push_back(oracle::scaled(p, 2));
+      const Box d2{{2 * r.domain.lo.x, 2 * r.domain.lo.y}, {2 * r.domain.hi.x, 2 * r.domain.hi.y}};
+      // Cell centres of the doubled unit grid: open cells, so clipping degeneracies do not matter.
+      for (const auto& o : r.obstacles)
+        for (Point v : o.outer) ASSERT_TRUE(v.x >= 0 && v.y >= 0 && v.x <= 89 && v.y <= 89);
+      // Only near the inputs (g <= 4, inputs within [0, 64]); everything else is empty.
+      for (Coord x = std::max(2 * r.domain.lo.x, -4) + 1; x < std::min(2 * r.domain.hi.x, 180); x += 2)
+        for (Coord y = std::max(2 * r.domain.lo.y, -4) + 1; y < std::min(2 * r.domain.hi.y, 180); y += 2)
+          ASSERT_EQ(oracle::in_inputs({x, y}, in2, d2), oracle::in_obstacles({x, y}, ob2)) << x << "," << y;
+    }
+  }
+}
+
+// --- Moving AI maps: cell raster from the map itself vs winding numbers of the output.
+struct MapCase {
+  std::string text;
+  std::string name;
+};
+std::string read_file(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+std::string crop(const std::string& text, int r0, int c0, int h, int w) {
+  std::istringstream in(text);
+  std::string line, out = "type octile\nheight " + std::to_string(h) + "\nwidth " + std::to_string(w) + "\nmap\n";
+  while (std::getline(in, line) && line != "map") {
+  }
+  for (int r = 0; std::getline(in, line); ++r)
+    if (r >= r0 && r < r0 + h) out += line.substr(c0, w) + "\n";
+  return out;
+}
+
+void check_map(const std::string& text, const std::string& name) {
+  SCOPED_TRACE(name);
+  const Coord s = 10;
+  const auto lr = taut::io::parse_movingai_map(text, name, s);
+  ASSERT_TRUE(lr.layout);
+  const auto& L = *lr.layout;
+  std::vector<Polygon> in;
+  for (const auto& b : L.blockages) {
+    const Box& q = b.shapes[0].rect;
+    in.push_back(rect(q.lo.x, q.lo.y, q.hi.x, q.hi.y));
+  }
+  const auto r = taut::geom::normalize_obstacles(in, L.boundary->box);
+  EXPECT_EQ(r.stats.rounded, 0);
+  ASSERT_EQ(join(oracle::check_obstacles(r.obstacles, r.domain)), "");
+  // Blocked cells straight from the text.
+  std::istringstream is(text);
+  std::string line;
+  while (std::getline(is, line) && line != "map") {
+  }
+  std::vector<std::string> rows;
+  while (std::getline(is, line)) rows.push_back(line);
+  const int H = static_cast<int>(L.boundary->box.hi.y / s), W = static_cast<int>(L.boundary->box.hi.x / s);
+  auto blocked = [&](int c, int row) {
+    const char ch = rows[row][c];
+    return !(ch == '.' || ch == 'G' || ch == 'S');
+  };
+  // Output raster: winding number at each cell centre from the vertical edges to its right.
+  std::vector<std::vector<std::pair<Coord, int>>> by_row(H);
+  for (const auto& p : r.obstacles)
+    for (int k = -1; k < static_cast<int>(p.holes.size()); ++k) {
+      const Ring& ring = k < 0 ? p.outer : p.holes[k];
+      for (std::size_t i = 0; i < ring.size(); ++i) {
+        const Point a = ring[i], b = ring[(i + 1) % ring.size()];
+        ASSERT_TRUE(a.x == b.x || a.y == b.y);
+        if (a.x != b.x) continue;
+        for (Coord y = std::min(a.y, b.y); y < std::max(a.y, b.y); y += s)
+          by_row[H - 1 - y / s].push_back({a.x, b.y > a.y ? 1 : -1});
+      }
+    }
+  i128 cells = 0;
+  for (int row = 0; row < H; ++row) {
+    auto& ev = by_row[row];
+    std::sort(ev.begin(), ev.end());
+    int total = 0;
+    for (auto& e : ev) total += e.second;
+    std::size_t k = 0;
+    int w = total;  // winding at x = -inf is the sum of everything to the right
+    for (int c = 0; c < W; ++c) {
+      while (k < ev.size() && ev[k].first <= c * s) w -= ev[k++].second;
+      EXPECT_EQ(w == 1, blocked(c, row)) << "cell " << c << "," << row;
+      EXPECT_TRUE(w == 0 || w == 1);
+      cells += blocked(c, row);
+    }
+  }
+  EXPECT_TRUE(oracle::twice_area(r.obstacles) == cells * 2 * s * s);
+  // Obstacles = 8-connected components of blocked cells (corner contact merges).
+  std::vector<int> comp(static_cast<std::size_t>(H) * W, -1);
+  int ncomp = 0;
+  for (int row = 0; row < H; ++row)
+    for (int c = 0; c < W; ++c) {
+      if (!blocked(c, row) || comp[row * W + c] >= 0) continue;
+      std::vector<std::pair<int, int>> st{{c, row}};
+      comp[row * W + c] = ncomp;
+      while (!st.empty()) {
+        auto [x, y] = st.back();
+        st.pop_back();
+        for (int dx = -1; dx <= 1; ++dx)
+          for (int dy = -1; dy <= 1; ++dy) {
+            const int nx = x + dx, ny = y + dy;
+            if (nx < 0 || ny < 0 || nx >= W || ny >= H || !blocked(nx, ny) || comp[ny * W + nx] >= 0) continue;
+            comp[ny * W + nx] = ncomp;
+            st.push_back({nx, ny});
+          }
+      }
+      ++ncomp;
+    }
+  EXPECT_EQ(static_cast<int>(r.obstacles.size()), ncomp);
+  // Each obstacle's sources are exactly the runs of one component.
+  std::set<int> seen;
+  for (const auto& src : r.sources) {
+    ASSERT_FALSE(src.empty());
+    std::set<int> cs;
+    for (std::size_t i : src) {
+      const Box& q = L.blockages[i].shapes[0].rect;
+      cs.insert(comp[(H - 1 - q.lo.y / s) * W + q.lo.x / s]);
+    }
+    EXPECT_EQ(cs.size(), 1u);
+    EXPECT_TRUE(seen.insert(*cs.begin()).second);
+  }
+}
+
+TEST(UnionRectilinear, MovingAiMaps) {
+  const std::string dir = std::string(TAUT_SHARED_DATA) + "/movingai/";
+  check_map(read_file(dir + "arena.map"), "arena");
+  check_map(read_file(dir + "maze-100-1.map"), "maze-100-1");
+  check_map(crop(read_file(dir + "brc202d.map"), 150, 150, 100, 120), "brc202d crop");
+  check_map(crop(read_file(dir + "random512-10-0.map"), 0, 0, 48, 64), "random512 crop");
+}
+
+// --- Arbitrary polygons: union covers the inputs, grows by at most 2 DBU, invariants hold.
+Ring star(std::mt19937& rng, Point c, int k, int rmax) {
+  std::vector<double> ang;
+  for (int i = 0; i < k; ++i) ang.push_back(std::uniform_real_distribution<double>(0, 6.2831)(rng));
+  std::sort(ang.begin(), ang.end());
+  Ring r;
+  for (double a : ang) {
+    const double rad = 2 + static_cast<int>(rng() % static_cast<unsigned>(rmax));
+    const Point p{c.x + static_cast<Coord>(std::lround(rad * std::cos(a))), c.y + static_cast<Coord>(std::lround(rad * std::sin(a)))};
+    if (r.empty() || r.back() != p) r.push_back(p);
+  }
+  return r;
+}
+bool valid_single(const Polygon& p) {
+  if (p.outer.size() < 3 || taut::geom::twice_area(p.outer) == 0) return false;
+  Polygon q = taut::geom::normalize_polygon(p);
+  std::vector<Polygon> one{q};
+  return oracle::check_obstacles(one, {{-(1 << 29), -(1 << 29)}, {1 << 29, 1 << 29}}).empty();
+}
+
+void check_general(const std::vector<Polygon>& in, std::optional<Box> boundary, std::mt19937& rng) {
+  const auto r = taut::geom::normalize_obstacles(in, boundary);
+  ASSERT_EQ(join(oracle::check_obstacles(r.obstacles, r.domain)), "");
+  auto in_domain = [&](Point p) {
+    return r.domain.lo.x <= p.x && p.x <= r.domain.hi.x && r.domain.lo.y <= p.y && p.y <= r.domain.hi.y;
+  };
+  auto strictly_in_domain = [&](Point p) {
+    return r.domain.lo.x < p.x && p.x < r.domain.hi.x && r.domain.lo.y < p.y && p.y < r.domain.hi.y;
+  };
+  // Every input vertex and many points of the inputs (strictly inside the domain) are covered.
+  Coord x0 = r.domain.lo.x, x1 = r.domain.hi.x, y0 = r.domain.lo.y, y1 = r.domain.hi.y;
+  for (const Polygon& p : in)
+    for (Point v : p.outer)
+      if (strictly_in_domain(v)) {
+        ASSERT_TRUE(oracle::in_obstacles(v, r.obstacles)) << v.x << "," << v.y;
+      }
+  auto grown_ok = [&](Point p) {  // in the union but in no input: within 2 DBU of an input
+    if (!in_domain(p) || !oracle::in_obstacles(p, r.obstacles)) return true;
+    for (const Polygon& q : in)
+      if (oracle::within(p, q, 4)) return true;
+    return false;
+  };
+  for (int k = 0; k < 300; ++k) {
+    const Point p{x0 + static_cast<Coord>(rng() % static_cast<unsigned>(x1 - x0 + 1)),
+                  y0 + static_cast<Coord>(rng() % static_cast<unsigned>(y1 - y0 + 1))};
+    const bool inside = oracle::in_inputs(p, in, r.domain);
+    if (inside && strictly_in_domain(p)) {
+      ASSERT_TRUE(oracle::in_obstacles(p, r.obstacles)) << p.x << "," << p.y;
+    }
+    ASSERT_TRUE(grown_ok(p)) << "grown too far at " << p.x << "," << p.y;
+  }
+  for (const Polygon& o : r.obstacles)
+    for (int h = -1; h < static_cast<int>(o.holes.size()); ++h)
+      for (Point v : h < 0 ? o.outer : o.holes[h])
+        for (int dx = -2; dx <= 2; ++dx)
+          for (int dy = -2; dy <= 2; ++dy) ASSERT_TRUE(grown_ok({v.x + dx, v.y + dy})) << v.x + dx << "," << v.y + dy;
+}
+
+TEST(UnionGeneral, RandomStarPolygonsAndTriangles) {
+  const unsigned base = 4242000;
+  for (unsigned it = 0; it < 700; ++it) {
+    const unsigned seed = base + it;
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    std::mt19937 rng(seed);
+    std::vector<Polygon> in;
+    const int n = 1 + static_cast<int>(rng() % 6);
+    while (static_cast<int>(in.size()) < n) {
+      Polygon p;
+      const Point c{static_cast<Coord>(rng() % 120), static_cast<Coord>(rng() % 120)};
+      if (rng() % 2)
+        p.outer = star(rng, c, 3 + static_cast<int>(rng() % 9), 60);
+      else
+        p.outer = star(rng, c, 3, 80);  // triangles with long crossing edges
+      if (valid_single(p)) in.push_back(p);
+    }
+    std::optional<Box> boundary;
+    if (rng() % 3 == 0) boundary = Box{{20, 20}, {100, 110}};
+    check_general(in, boundary, rng);
+  }
+}
+
+TEST(UnionGeneral, NearlyParallelEdges) {
+  const unsigned base = 99000;
+  for (unsigned it = 0; it < 300; ++it) {
+    const unsigned seed = base + it;
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    std::mt19937 rng(seed);
+    // Long thin triangles whose long edges cross at tiny angles.
+    std::vector<Polygon> in;
+    const int n = 2 + static_cast<int>(rng() % 3);
+    for (int i = 0; i < n; ++i) {
+      const Coord L = 200 + static_cast<Coord>(rng() % 800);
+      const Coord a = static_cast<Coord>(rng() % 7), b = static_cast<Coord>(rng() % 7);
+      Polygon p{{{0, a}, {L, b}, {L / 2, static_cast<Coord>((rng() % 2 ? 1 : -1) * (3 + static_cast<int>(rng() % 20)))}}, {}};
+      if (valid_single(p)) in.push_back(p);
+    }
+    if (!in.empty()) check_general(in, std::nullopt, rng);
+  }
+}
+
+// --- Nesting, touching and clipping, drawn.
+TEST(UnionCases, Nested) {
+  //  +--------------+   a ring 0..30 with hole 10..20; a square 12..18 inside the hole
+  //  |   +------+   |   stays a separate obstacle
+  //  |   | [  ] |   |
+  //  |   +------+   |
+  //  +--------------+
+  const Polygon ring{{{0, 0}, {30, 0}, {30, 30}, {0, 30}}, {{{10, 10}, {20, 10}, {20, 20}, {10, 20}}}};
+  {
+    const std::vector<Polygon> in{ring, rect(12, 12, 18, 18)};
+    const auto r = taut::geom::normalize_obstacles(in, std::nullopt);
+    ASSERT_EQ(r.obstacles.size(), 2u);
+    EXPECT_EQ(r.obstacles[0].holes.size(), 1u);
+    EXPECT_EQ(r.sources, (std::vector<std::vector<std::size_t>>{{0}, {1}}));
+  }
+  {  // touching the hole's edge at one vertex: merged, the hole stays (pinched)
+    const std::vector<Polygon> in{ring, Polygon{{{15, 10}, {18, 14}, {12, 14}}, {}}};
+    const auto r = taut::geom::normalize_obstacles(in, std::nullopt);
+    ASSERT_EQ(r.obstacles.size(), 1u);
+    EXPECT_EQ(r.obstacles[0].holes.size(), 1u);
+    EXPECT_EQ(r.sources[0], (std::vector<std::size_t>{0, 1}));
+    EXPECT_EQ(join(oracle::check_obstacles(r.obstacles, r.domain)), "");
+  }
+  {  // filling the hole exactly: one square, no hole
+    const std::vector<Polygon> in{ring, rect(10, 10, 20, 20)};
+    const auto r = taut::geom::normalize_obstacles(in, std::nullopt);
+    ASSERT_EQ(r.obstacles.size(), 1u);
+    EXPECT_EQ(r.obstacles[0], rect(0, 0, 30, 30));
+  }
+}
+
+TEST(UnionCases, TouchingAtCornerAndEdgeMiddle) {
+  //        +--+          two squares meeting at (1,1) form one obstacle whose outer ring
+  //        |  |          passes through (1,1) twice
+  //     +--+--+
+  //     |  |
+  //     +--+
+  const std::vector<Polygon> in{rect(0, 0, 1, 1), rect(1, 1, 2, 2)};
+  const auto r = taut::geom::normalize_obstacles(in, std::nullopt);
+  ASSERT_EQ(r.obstacles.size(), 1u);
+  EXPECT_EQ(r.obstacles[0].outer, (Ring{{0, 0}, {1, 0}, {1, 1}, {2, 1}, {2, 2}, {1, 2}, {1, 1}, {0, 1}}));
+  EXPECT_EQ(r.stats.merges, 1);
+  // A corner touching the middle of an edge: the touch point stays a vertex of both passes.
+  const std::vector<Polygon> in2{rect(0, 0, 4, 2), Polygon{{{2, 2}, {3, 4}, {1, 4}}, {}}};
+  const auto r2 = taut::geom::normalize_obstacles(in2, std::nullopt);
+  ASSERT_EQ(r2.obstacles.size(), 1u);
+  EXPECT_EQ(r2.obstacles[0].outer, (Ring{{0, 0}, {4, 0}, {4, 2}, {2, 2}, {3, 4}, {1, 4}, {2, 2}, {0, 2}}));
+  EXPECT_EQ(join(oracle::check_obstacles(r2.obstacles, r2.domain)), "");
+}
+
+TEST(UnionCases, BoundaryClipsAndRoundsOutward) {
+  // A triangle crossing the boundary x = 10 at y = 10/3 (non-integer): the clipped vertex moves
+  // outward along the boundary, to y = 3, the lattice point below the edge y = x/3.
+  //   (0,10) +-------+ (10,10)
+  //          |   .-' + (10,3)
+  //   (0,0)  +-'
+  const std::vector<Polygon> in{Polygon{{{0, 0}, {30, 10}, {0, 10}}, {}}};
+  const auto r = taut::geom::normalize_obstacles(in, Box{{0, 0}, {10, 10}});
+  ASSERT_EQ(r.obstacles.size(), 1u);
+  EXPECT_EQ(join(oracle::check_obstacles(r.obstacles, r.domain)), "");
+  EXPECT_EQ(r.obstacles[0].outer, (Ring{{0, 0}, {10, 3}, {10, 10}, {0, 10}}));
+  EXPECT_EQ(r.stats.rounded, 1);
+  // Entirely outside: nothing.
+  const std::vector<Polygon> out{rect(20, 20, 30, 30)};
+  EXPECT_TRUE(taut::geom::normalize_obstacles(out, Box{{0, 0}, {10, 10}}).obstacles.empty());
+}
+
+// 10^6 input vertices: run by hand in Release with --gtest_also_run_disabled_tests.
+TEST(UnionScale, DISABLED_MillionVerticesOfRandomRectangles) {
+  std::mt19937 rng(5);
+  std::vector<Polygon> in;
+  for (int i = 0; i < 250000; ++i) {
+    const Coord x = static_cast<Coord>(rng() % 1000000), y = static_cast<Coord>(rng() % 1000000);
+    in.push_back(rect(x, y, x + 1 + static_cast<Coord>(rng() % 3000), y + 1 + static_cast<Coord>(rng() % 3000)));
+  }
+  const auto r = taut::geom::normalize_obstacles(in, std::nullopt);
+  std::printf("obstacles %lld output vertices %lld passes %d\n", (long long)r.stats.output_obstacles,
+              (long long)r.stats.output_vertices, r.stats.passes);
+  EXPECT_GT(r.stats.output_obstacles, 0);
+}
+
+}  // namespace
