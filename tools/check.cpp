@@ -5,6 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "geom/normalize.h"
+#include "geom/triangulation.h"
 #include "io/layout_geometry.h"
 #include "tools/cli.h"
 #include "tools/commands.h"
@@ -60,13 +62,56 @@ void add_check(CLI::App& app, int& status) {
                      {"routes", layout->routes ? layout->routes->routes.size() : 0}};
     }
     status = layout ? kOk : kInvalid;
+    if (layout) {
+      // The geometry pipeline every router runs: union of the blockages, then free space.
+      using Clock = std::chrono::steady_clock;
+      auto t0 = Clock::now();
+      std::optional<geom::Box> boundary;
+      if (layout->boundary) boundary = layout->boundary->box;
+      const auto polys = io::blockage_polygons(*layout);
+      const geom::NormalizedObstacles norm = geom::normalize_obstacles(polys, boundary);
+      auto t1 = Clock::now();
+      std::size_t obstacle_vertices = 0, holes = 0;
+      for (const auto& o : norm.obstacles) {
+        obstacle_vertices += o.outer.size();
+        holes += o.holes.size();
+        for (const auto& h : o.holes) obstacle_vertices += h.size();
+      }
+      j["obstacles"] = {{"count", norm.obstacles.size()},
+                        {"vertices", obstacle_vertices},
+                        {"holes", holes},
+                        {"merged", norm.stats.merges},
+                        {"crossings", norm.stats.crossings},
+                        {"rounded", norm.stats.rounded},
+                        {"removed_repeated", norm.stats.removed_repeated},
+                        {"removed_collinear", norm.stats.removed_collinear},
+                        {"domain", {norm.domain.lo.x, norm.domain.lo.y, norm.domain.hi.x, norm.domain.hi.y}}};
+      const bool has_area = norm.domain.lo.x < norm.domain.hi.x && norm.domain.lo.y < norm.domain.hi.y;
+      std::size_t triangles = 0;
+      if (has_area) {
+        const geom::FreeSpaceTriangulation tri = geom::triangulate_free_space(norm.domain, norm.obstacles);
+        if (!tri.ok()) {
+          // The union's output always meets the triangulation's contract: this is a bug.
+          for (const auto& d : tri.diagnostics()) std::cerr << args->file << ": internal error: " << format(d) << '\n';
+          status = kInternal;
+          return;
+        }
+        triangles = tri.triangles().size();
+      }
+      auto t2 = Clock::now();
+      j["free_space"] = {{"triangles", triangles}};
+      j["seconds"] = {{"normalize", std::chrono::duration<double>(t1 - t0).count()},
+                      {"triangulate", std::chrono::duration<double>(t2 - t1).count()}};
+    }
     if (args->json) {
       std::cout << j.dump(2) << '\n';
     } else if (layout && !args->quiet) {
       const auto& l = j["layout"];
       std::cout << args->file << ": ok: " << l["blockages"] << " blockages ("
                 << l["blockage_vertices"] << " vertices), " << l["nets"] << " nets, "
-                << l["pins"] << " pins";
+                << l["pins"] << " pins; " << j["obstacles"]["count"] << " obstacles after union ("
+                << j["obstacles"]["merged"] << " merged, " << j["obstacles"]["rounded"]
+                << " rounded crossings), " << j["free_space"]["triangles"] << " free-space triangles";
       if (warnings) std::cout << ", " << warnings << " warning(s)";
       std::cout << '\n';
     }
