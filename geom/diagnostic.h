@@ -2,7 +2,8 @@
 //
 // Format when printed (CLI.md): "file:line[:col]: error|warning: [CODE] message".
 // Codes are stable: IO-xxxx (reading/writing files), GEOM-xxxx (geometry of the input),
-// LAYOUT-xxxx (meaning of the layout: names, pins), CLI-xxxx (command line). Every code used
+// LAYOUT-xxxx (meaning of the layout: names, pins), CHECK-xxxx (routes that fail a check),
+// CLI-xxxx (command line). Every code used
 // in the sources is listed in the README (a test checks it).
 #pragma once
 

@@ -8,6 +8,7 @@
 #include "geom/normalize.h"
 #include "geom/triangulation.h"
 #include "io/layout_geometry.h"
+#include "io/stats_json.h"
 #include "tools/cli.h"
 #include "tools/commands.h"
 
@@ -99,6 +100,38 @@ void add_check(CLI::App& app, int& status) {
         triangles = tri.triangles().size();
       }
       auto t2 = Clock::now();
+      if (layout->routes) {
+        // What can be checked today: the length and bends written for each routed net equal
+        // those recomputed from its wires. Connectivity and clearance come with the
+        // independent checker (router/check, issue #7) and are not claimed here.
+        int mismatches = 0;
+        for (const io::Route& r : layout->routes->routes) {
+          if (r.status != "routed") continue;
+          std::vector<std::vector<geom::Point>> wires;
+          long bends = 0;
+          for (const io::Wire& w : r.wires) {
+            wires.push_back(w.points);
+            bends += io::count_bends(w.points);
+          }
+          const std::string length = io::format_total_length(wires);
+          auto mismatch = [&](const std::string& what, const std::string& written, const std::string& actual) {
+            ++mismatches;
+            Diagnostic d{Severity::Error, "CHECK-0001", args->file, r.line, 0,
+                         "route \"" + r.net + "\": " + what + " is written as " + written +
+                             " but the wires give " + actual};
+            diags.push_back(d);
+            std::cerr << format(d) << '\n';
+          };
+          if (r.length && *r.length != length) mismatch("length", *r.length, length);
+          if (r.bends && *r.bends != bends) mismatch("bends", std::to_string(*r.bends), std::to_string(bends));
+        }
+        j["routes_check"] = {{"lengths_and_bends", mismatches == 0 ? "ok" : "failed"},
+                             {"mismatches", mismatches},
+                             {"connectivity_and_clearance", "not checked yet"}};
+        j["diagnostics"] = diagnostics_json(diags);
+        j["errors"] = errors + mismatches;
+        if (mismatches) status = kIncomplete;
+      }
       j["free_space"] = {{"triangles", triangles}};
       j["seconds"] = {{"normalize", std::chrono::duration<double>(t1 - t0).count()},
                       {"triangulate", std::chrono::duration<double>(t2 - t1).count()}};
@@ -107,13 +140,17 @@ void add_check(CLI::App& app, int& status) {
       std::cout << j.dump(2) << '\n';
     } else if (layout && !args->quiet) {
       const auto& l = j["layout"];
-      std::cout << args->file << ": ok: " << l["blockages"] << " blockages ("
+      std::cout << args->file << (status == kOk ? ": ok: " : ": FAILED: ") << l["blockages"] << " blockages ("
                 << l["blockage_vertices"] << " vertices), " << l["nets"] << " nets, "
                 << l["pins"] << " pins; " << j["obstacles"]["count"] << " obstacles after union ("
                 << j["obstacles"]["merged"] << " merged, " << j["obstacles"]["rounded"]
                 << " rounded crossings), " << j["free_space"]["triangles"] << " free-space triangles";
       if (warnings) std::cout << ", " << warnings << " warning(s)";
       std::cout << '\n';
+      if (j.contains("routes_check"))
+        std::cout << args->file << ": routes: lengths and bends "
+                  << j["routes_check"]["lengths_and_bends"].get<std::string>()
+                  << "; connectivity and clearance are not checked yet\n";
     }
   });
 }

@@ -113,3 +113,37 @@ TEST(Cli, StatsJson) {
 
 }  // namespace
 }  // namespace taut::test
+
+namespace taut::test {
+namespace {
+
+// A routed layout whose written length/bends agree with its wires passes; one that lies fails
+// with exit status 1 and a CHECK-0001 naming the route.
+TEST(Cli, CheckRoutesLengthsAndBends) {
+  const std::string dir = temp_dir("routes");
+  auto layout = [](const std::string& length, const std::string& bends) {
+    return "<layout name=\"r\" version=\"1\">\n"
+           "  <net name=\"a\"><pin name=\"p\" x=\"0\" y=\"0\"/><pin name=\"q\" x=\"30\" y=\"40\"/></net>\n"
+           "  <net name=\"b\"><pin name=\"p\" x=\"0\" y=\"100\"/><pin name=\"q\" x=\"30\" y=\"140\"/></net>\n"
+           "  <routes tool=\"test\">\n"
+           "    <route net=\"a\" status=\"routed\" length=\"70\" bends=\"1\"><wire points=\"0,0 30,0 30,40\"/></route>\n"
+           "    <route net=\"b\" status=\"routed\" length=\"" + length + "\" bends=\"" + bends +
+           "\"><wire points=\"0,100 30,140\"/></route>\n"
+           "  </routes>\n</layout>\n";
+  };
+  write_text(dir + "/good.xml", layout("50.000", "0"));
+  auto r = run_taut({"check", dir + "/good.xml"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("lengths and bends ok"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("not checked yet"), std::string::npos) << r.out;
+
+  write_text(dir + "/bad.xml", layout("49.000", "2"));
+  r = run_taut({"check", dir + "/bad.xml"});
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find(dir + "/bad.xml:6: error: [CHECK-0001] route \"b\": length"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("route \"b\": bends is written as 2 but the wires give 0"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("route \"a\""), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace taut::test
