@@ -16,18 +16,18 @@ SegmentIntersection intersect(Segment s, Segment t) {
   const int d3 = orientation(t.a, t.b, s.a);
   const int d4 = orientation(t.a, t.b, s.b);
   if (d1 == 0 && d2 == 0 && d3 == 0 && d4 == 0) {
-    // Collinear (or degenerate): compare projections on the dominant axis.
-    auto key = [&](Point p) {
-      const bool use_x = std::max(s.a.x, s.b.x) - std::min(s.a.x, s.b.x) +
-                             std::max(t.a.x, t.b.x) - std::min(t.a.x, t.b.x) >=
-                         std::max(s.a.y, s.b.y) - std::min(s.a.y, s.b.y) +
-                             std::max(t.a.y, t.b.y) - std::min(t.a.y, t.b.y);
-      return use_x ? i64{p.x} * 2 + 0 : i64{p.y} * 2;
-    };
-    i64 s0 = key(s.a), s1 = key(s.b), t0 = key(t.a), t1 = key(t.b);
-    if (s0 > s1) std::swap(s0, s1);
-    if (t0 > t1) std::swap(t0, t1);
-    const i64 lo = std::max(s0, t0), hi = std::min(s1, t1);
+    // All four points on one line, or at least one segment is a single point. Two single
+    // points are not necessarily on one line (every orient is 0 trivially): compare them.
+    const bool s_point = s.a == s.b, t_point = t.a == t.b;
+    if (s_point && t_point)
+      return s.a == t.a ? SegmentIntersection::Touch : SegmentIntersection::None;
+    // Otherwise the points are collinear on a non-degenerate line, and projecting on one
+    // axis the line is not perpendicular to is injective: x unless the line is vertical.
+    const bool vertical = (s_point ? t.a.x == t.b.x : s.a.x == s.b.x);
+    auto key = [vertical](Point p) { return vertical ? p.y : p.x; };
+    const Coord s0 = std::min(key(s.a), key(s.b)), s1 = std::max(key(s.a), key(s.b));
+    const Coord t0 = std::min(key(t.a), key(t.b)), t1 = std::max(key(t.a), key(t.b));
+    const Coord lo = std::max(s0, t0), hi = std::min(s1, t1);
     if (lo > hi) return SegmentIntersection::None;
     if (lo == hi) return SegmentIntersection::Touch;
     return SegmentIntersection::Overlap;
@@ -87,12 +87,15 @@ Location locate(Point p, std::span<const Point> ring) {
 Location locate(Point p, const Polygon& poly) {
   const Location outer = locate(p, std::span<const Point>(poly.outer));
   if (outer != Location::Inside) return outer;
+  // Boundary wins over Outside so the answer does not depend on the order of the holes (it
+  // only matters for invalid polygons whose holes overlap).
+  Location result = Location::Inside;
   for (const Ring& h : poly.holes) {
     const Location l = locate(p, std::span<const Point>(h));
     if (l == Location::Boundary) return Location::Boundary;
-    if (l == Location::Inside) return Location::Outside;
+    if (l == Location::Inside) result = Location::Outside;
   }
-  return Location::Inside;
+  return result;
 }
 
 }  // namespace taut::geom

@@ -34,7 +34,8 @@ inline constexpr i64 dot(Point a, Point b, Point c, Point d) {
 // True when p lies on the closed segment ab (ab may be degenerate).
 bool on_segment(Point p, Point a, Point b);
 
-// How two closed segments meet.
+// How two closed segments meet. Either segment may be a single point (a == b): a point on the
+// other segment is a Touch, two equal points are a Touch, otherwise None.
 enum class SegmentIntersection {
   None,       // disjoint
   Proper,     // cross at a single point interior to both
@@ -59,7 +60,8 @@ RationalPoint line_intersection(Segment s, Segment t);
 enum class Location { Outside, Boundary, Inside };
 // Location of p relative to the region bounded by a simple ring (either orientation).
 Location locate(Point p, std::span<const Point> ring);
-// Location of p relative to a polygon with holes (inside the outer ring, outside every hole).
+// Location of p relative to a polygon with holes (inside the outer ring, outside every hole;
+// on the outer ring or on a hole ring inside the outer ring is Boundary).
 Location locate(Point p, const Polygon& poly);
 
 // Twice the signed area of a ring (> 0 when counter-clockwise). Exact: the sum of at most
