@@ -33,17 +33,16 @@ nlohmann::ordered_json diagnostics_json(const std::vector<Diagnostic>& ds) {
 void add_check(CLI::App& app, int& status) {
   struct Args {
     std::string file;
-    bool json = false, lenient = false, quiet = false;
+    bool json = false;
+    LoadOptions load;
   };
   auto args = std::make_shared<Args>();
   CLI::App* sub = app.add_subcommand("check", "Validate a layout (and check its routes)");
-  sub->add_option("FILE", args->file, "layout file")->required();
   sub->add_flag("--json", args->json, "print one JSON document on stdout");
-  sub->add_flag("--lenient", args->lenient, "unknown elements/attributes are warnings");
-  sub->add_flag("-q,--quiet", args->quiet, "do not print warnings or the summary");
+  add_input_options(sub, args->file, args->load, "do not print warnings or the summary");
   sub->callback([args, &status] {
     std::vector<Diagnostic> diags;
-    auto layout = load_layout(args->file, {args->lenient, args->quiet}, &diags);
+    auto layout = load_layout(args->file, args->load, &diags);
     int errors = 0, warnings = 0;
     for (const auto& d : diags) (d.severity == Severity::Error ? errors : warnings)++;
     nlohmann::ordered_json j;
@@ -138,7 +137,7 @@ void add_check(CLI::App& app, int& status) {
     }
     if (args->json) {
       std::cout << j.dump(2) << '\n';
-    } else if (layout && !args->quiet) {
+    } else if (layout && !args->load.quiet) {
       const auto& l = j["layout"];
       std::cout << args->file << (status == kOk ? ": ok: " : ": FAILED: ") << l["blockages"] << " blockages ("
                 << l["blockage_vertices"] << " vertices), " << l["nets"] << " nets, "

@@ -1,5 +1,7 @@
 #include "tools/cli.h"
 
+#include "tools/commands.h"
+
 #include <iostream>
 
 #include "io/atomic_file.h"
@@ -37,6 +39,13 @@ std::optional<io::Layout> load_layout(const std::string& path, const LoadOptions
   if (diagnostics) *diagnostics = std::move(all);
   if (!ok) return std::nullopt;
   return std::move(r.layout);
+}
+
+void add_input_options(CLI::App* sub, std::string& file, LoadOptions& options,
+                       const std::string& quiet_help) {
+  sub->add_option("FILE", file, "layout file")->required();
+  sub->add_flag("--lenient", options.lenient, "unknown elements/attributes are warnings");
+  sub->add_flag("-q,--quiet", options.quiet, quiet_help);
 }
 
 bool write_output(const std::string& path, std::string_view bytes) {

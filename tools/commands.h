@@ -4,7 +4,13 @@
 
 #include <CLI/CLI.hpp>
 
+#include "tools/cli.h"
+
 namespace taut::cli {
+
+// Registers the input options every layout-reading subcommand shares: FILE, --lenient, -q.
+void add_input_options(CLI::App* sub, std::string& file, LoadOptions& options,
+                       const std::string& quiet_help = "do not print warnings");
 
 void add_check(CLI::App& app, int& status);
 void add_render(CLI::App& app, int& status);

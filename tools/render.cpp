@@ -9,18 +9,17 @@ void add_render(CLI::App& app, int& status) {
   struct Args {
     std::string file, out;
     int width = 1200;
-    bool lenient = false, quiet = false, no_labels = false;
+    bool no_labels = false;
+    LoadOptions load;
   };
   auto args = std::make_shared<Args>();
   CLI::App* sub = app.add_subcommand("render", "Draw a layout (and its routes) as SVG");
-  sub->add_option("FILE", args->file, "layout file")->required();
   sub->add_option("-o,--output", args->out, "SVG file to write")->required();
   sub->add_option("--width", args->width, "longest side in pixels")->check(CLI::Range(100, 20000));
   sub->add_flag("--no-labels", args->no_labels, "omit names of blockages, nets and pins");
-  sub->add_flag("--lenient", args->lenient, "unknown elements/attributes are warnings");
-  sub->add_flag("-q,--quiet", args->quiet, "do not print warnings");
+  add_input_options(sub, args->file, args->load, "do not print warnings");
   sub->callback([args, &status] {
-    auto layout = load_layout(args->file, {args->lenient, args->quiet});
+    auto layout = load_layout(args->file, args->load);
     if (!layout) {
       status = kInvalid;
       return;

@@ -12,17 +12,16 @@ namespace taut::cli {
 void add_stats(CLI::App& app, int& status) {
   struct Args {
     std::string file, out;
-    bool json = false, lenient = false, quiet = false;
+    bool json = false;
+    LoadOptions load;
   };
   auto args = std::make_shared<Args>();
   CLI::App* sub = app.add_subcommand("stats", "Wirelength and bend statistics, per net and total");
-  sub->add_option("FILE", args->file, "layout file (routed or not)")->required();
   sub->add_flag("--json", args->json, "print one JSON document on stdout");
   sub->add_option("-o,--output", args->out, "also write the JSON document to this file");
-  sub->add_flag("--lenient", args->lenient, "unknown elements/attributes are warnings");
-  sub->add_flag("-q,--quiet", args->quiet, "do not print warnings");
+  add_input_options(sub, args->file, args->load, "do not print warnings");
   sub->callback([args, &status] {
-    auto layout = load_layout(args->file, {args->lenient, args->quiet});
+    auto layout = load_layout(args->file, args->load);
     if (!layout) {
       status = kInvalid;
       return;
