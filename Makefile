@@ -16,19 +16,19 @@ $(BUILD)/CMakeCache.txt: | deps
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS) >/dev/null
 
 build: deps $(BUILD)/CMakeCache.txt
-	@cmake --build $(BUILD) -j $(JOBS)
+	@cmake --build $(BUILD) -j $(JOBS) -- --no-print-directory
 
 $(ASAN_BUILD)/CMakeCache.txt: | deps
 	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DTAUT_SANITIZE=ON $(CMAKE_FLAGS) >/dev/null
 
 build-asan: deps $(ASAN_BUILD)/CMakeCache.txt
-	@cmake --build $(ASAN_BUILD) -j $(JOBS)
+	@cmake --build $(ASAN_BUILD) -j $(JOBS) -- --no-print-directory
 
 run: build
 	@mkdir -p out
 	$(BUILD)/tools/taut check designs/demo.xml --json > out/demo.check.json
 	$(BUILD)/tools/taut render designs/demo.xml -o out/demo.svg
-	$(BUILD)/tools/taut stats designs/demo.xml --json > out/demo.stats.json
+	$(BUILD)/tools/taut stats designs/demo.xml -o out/demo.stats.json
 	@echo "wrote out/demo.svg, out/demo.check.json, out/demo.stats.json"
 
 test: build build-asan
