@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/run.h"
+
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -122,6 +124,7 @@ TEST(MovingAi, MalformedFilesGiveDiagnostics) {
 }
 
 TEST(MovingAi, LoadsSharedArena) {
+  TAUT_REQUIRE_SHARED_DATA();
   const auto r = taut::io::load_movingai_map(std::string(TAUT_SHARED_DATA) + "/movingai/arena.map", 10);
   ASSERT_TRUE(r.layout);
   EXPECT_EQ(r.layout->boundary->box, (taut::geom::Box{{0, 0}, {490, 490}}));

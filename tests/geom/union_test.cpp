@@ -3,6 +3,8 @@
 // bound for arbitrary polygons, nesting and clipping cases, and the output invariants.
 #include <gtest/gtest.h>
 
+#include "support/run.h"
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -276,6 +278,7 @@ void check_map(const std::string& text, const std::string& name) {
 }
 
 TEST(UnionRectilinear, MovingAiMaps) {
+  TAUT_REQUIRE_SHARED_DATA();
   const std::string dir = std::string(TAUT_SHARED_DATA) + "/movingai/";
   check_map(read_file(dir + "arena.map"), "arena");
   check_map(read_file(dir + "maze-100-1.map"), "maze-100-1");

@@ -85,4 +85,8 @@ void write_text(const std::string& path, const std::string& text) {
 
 bool file_exists(const std::string& path) { return fs::exists(path); }
 
+std::string shared_data_dir() {
+  return fs::is_directory(fs::path(TAUT_SHARED_DATA) / "movingai") ? std::string(TAUT_SHARED_DATA) : "";
+}
+
 }  // namespace taut::test

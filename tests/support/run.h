@@ -1,6 +1,7 @@
 // Test support: run the taut executable and capture what it says.
 #pragma once
 
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -21,5 +22,18 @@ std::string temp_dir(const std::string& name);
 std::string read_text(const std::string& path);
 void write_text(const std::string& path, const std::string& text);
 bool file_exists(const std::string& path);
+
+// The public benchmark data folder (../shared/data beside the checkout, or -DTAUT_SHARED_DATA=),
+// or "" when it is absent. Tests that need it skip with a message when it is absent, except
+// under CI (environment variable CI set), where its absence is a failure.
+std::string shared_data_dir();
+
+#define TAUT_REQUIRE_SHARED_DATA()                                                          \
+  do {                                                                                      \
+    if (::taut::test::shared_data_dir().empty()) {                                          \
+      if (std::getenv("CI")) FAIL() << "shared data not found at " TAUT_SHARED_DATA;        \
+      GTEST_SKIP() << "shared data not found at " TAUT_SHARED_DATA " (set -DTAUT_SHARED_DATA)"; \
+    }                                                                                       \
+  } while (0)
 
 }  // namespace taut::test
