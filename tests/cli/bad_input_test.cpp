@@ -74,11 +74,14 @@ TEST_P(BadInput, AnsweredAsDocumented) {
   ASSERT_FALSE(first.empty()) << r.err;
   const std::string where = row.line > 0 ? path + ":" + std::to_string(row.line) + ":" : path + ":";
   EXPECT_EQ(first.rfind(where, 0), 0u) << "expected to start with " << where << "\n" << first;
-  if (row.code == "GEOM-*")
+  if (row.code == "GEOM-*") {
     EXPECT_NE(first.find("[GEOM-"), std::string::npos) << first;
-  else
+  } else {
     EXPECT_NE(first.find("[" + row.code + "]"), std::string::npos) << first;
-  if (row.object != "-") EXPECT_NE(first.find(row.object), std::string::npos) << first;
+  }
+  if (row.object != "-") {
+    EXPECT_NE(first.find(row.object), std::string::npos) << first;
+  }
 
   // No output file for invalid input; the output is written when the input is only warned about.
   const std::string dir = temp_dir("bad-" + std::to_string(std::hash<std::string>{}(row.file)));
@@ -91,8 +94,9 @@ TEST_P(BadInput, AnsweredAsDocumented) {
   if (row.lenient_ok == "yes" || row.lenient_ok == "no") {
     const RunResult rl = run_taut({"check", "--lenient", path}, 10.0);
     EXPECT_EQ(rl.status, row.lenient_ok == "yes" ? 0 : 2) << rl.err;
-    if (row.lenient_ok == "yes")
+    if (row.lenient_ok == "yes") {
       EXPECT_NE(first_line_with(rl.err, ": warning: [" + row.code + "]"), "") << rl.err;
+    }
     expect_no_sanitizer_report(rl);
   }
 }

@@ -95,12 +95,15 @@ TEST(FormatLength, RandomAgainstGmpAndLongDouble) {
     }
     const std::string ref = reference_length(pls);
     EXPECT_EQ(format_total_length(pls), ref);
-    if (pls.size() == 1) EXPECT_EQ(format_length(pls[0]), ref);
+    if (pls.size() == 1) {
+      EXPECT_EQ(format_length(pls[0]), ref);
+    }
     // Cross-check the reference itself against long double, away from rounding boundaries.
     if (ref.find('.') != std::string::npos) {
       const long double frac = ld * 1000 - std::floor(ld * 1000);
-      if (std::fabs(frac - 0.5L) > 1e-3L)
+      if (std::fabs(frac - 0.5L) > 1e-3L) {
         EXPECT_NEAR(std::stold(ref), std::round(ld * 1000) / 1000, 1e-3L * (1 + ld * 1e-12L));
+      }
     }
   }
 }

@@ -226,7 +226,7 @@ TEST(Writer, RandomRoutesRoundTrip) {
 // Bytes no XML document can hold (possible only in a layout built in memory) still give a
 // well-formed file; they are replaced, so the document is not the same.
 TEST(Writer, UnrepresentableBytesStayWellFormed) {
-  for (const std::string bad : {std::string("\x01"), std::string("\xC3"), std::string("\xFF"),
+  for (const std::string& bad : {std::string("\x01"), std::string("\xC3"), std::string("\xFF"),
                                 std::string("\xED\xA0\x80"), std::string("\xC0\xAF"),
                                 std::string("\xEF\xBF\xBF"), std::string("a\0b", 3)}) {
     Layout l;
