@@ -7,40 +7,15 @@
 #include <fstream>
 #include <sstream>
 
+#include "support/corpus.h"
 #include "support/run.h"
 
 namespace taut::test {
 namespace {
 
-struct Row {
-  std::string file, code;
-  int line = 0;
-  std::string object, lenient_ok, severity;
-};
+using Row = BadCase;
 
-std::vector<Row> load_rows() {
-  std::vector<Row> rows;
-  std::ifstream in(std::string(TAUT_TEST_DATA) + "/bad/EXPECTED.tsv");
-  std::string line;
-  bool header = true;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) {  // column names
-      header = false;
-      continue;
-    }
-    std::vector<std::string> f;
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, '\t')) f.push_back(cell);
-    if (f.size() != 6) {
-      rows.push_back({"<malformed EXPECTED.tsv row: " + line + ">", "", 0, "", "", "error"});
-      continue;
-    }
-    rows.push_back({f[0], f[1], std::stoi(f[2]), f[3], f[4], f[5]});
-  }
-  return rows;
-}
+std::vector<Row> load_rows() { return load_bad_cases(); }
 
 std::string first_line_with(const std::string& text, const std::string& what) {
   std::stringstream ss(text);

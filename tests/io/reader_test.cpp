@@ -3,6 +3,8 @@
 // numbers, size caps, thread safety and speed.
 #include <gtest/gtest.h>
 
+#include "support/corpus.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -47,35 +49,7 @@ std::vector<Diagnostic> check_file(const std::string& path, const ReadOptions& o
   return r.diagnostics;
 }
 
-struct Row {
-  std::string file, code;
-  int line = 0;
-  std::string object, lenient_ok, severity;
-};
 
-std::vector<Row> expected_rows() {
-  std::ifstream in(data("bad/EXPECTED.tsv"));
-  std::vector<Row> rows;
-  std::string line;
-  bool header = true;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) {
-      header = false;
-      continue;
-    }
-    std::vector<std::string> f;
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, '\t')) f.push_back(cell);
-    if (f.size() != 6) {
-      ADD_FAILURE() << "bad EXPECTED.tsv line: " << line;
-      continue;
-    }
-    rows.push_back({f[0], f[1], std::stoi(f[2]), f[3], f[4], f[5]});
-  }
-  return rows;
-}
 
 bool code_matches(const std::string& expected, const std::string& actual) {
   if (!expected.empty() && expected.back() == '*')
@@ -94,11 +68,12 @@ bool polygon_validation_available() {
 // The corpus.
 
 TEST(ReaderCorpus, EveryBadFileGivesItsExpectedDiagnostic) {
-  const auto rows = expected_rows();
+  const auto rows = taut::test::load_bad_cases();
+  for (const auto& r : rows) EXPECT_EQ(r.file.find("<malformed"), std::string::npos) << r.file;
   ASSERT_GE(rows.size(), 60u);
   const bool geom_ready = polygon_validation_available();
   int skipped = 0;
-  for (const Row& row : rows) {
+  for (const taut::test::BadCase& row : rows) {
     SCOPED_TRACE("file " + row.file);
     if (row.code.rfind("GEOM-*", 0) == 0 && !geom_ready) {
       ++skipped;
@@ -140,11 +115,12 @@ TEST(ReaderCorpus, EveryBadFileGivesItsExpectedDiagnostic) {
 }
 
 TEST(ReaderCorpus, EveryFileInTheFolderIsListed) {
-  const auto rows = expected_rows();
+  const auto rows = taut::test::load_bad_cases();
+  for (const auto& r : rows) EXPECT_EQ(r.file.find("<malformed"), std::string::npos) << r.file;
   for (const auto& e : fs::directory_iterator(data("bad"))) {
     const std::string name = e.path().filename().string();
     if (name == "EXPECTED.tsv" || name == "make_corpus.py") continue;
-    EXPECT_TRUE(std::any_of(rows.begin(), rows.end(), [&](const Row& r) { return r.file == name; }))
+    EXPECT_TRUE(std::any_of(rows.begin(), rows.end(), [&](const taut::test::BadCase& r) { return r.file == name; }))
         << name << " is not in EXPECTED.tsv";
   }
 }
@@ -313,15 +289,7 @@ TEST(ReaderGood, DefaultsWhenOptionalPartsAreAbsent) {
 namespace {
 
 // -1: syntax error, 0: out of range, 1: accepted.
-int reference_int(const std::string& s) {
-  static const std::regex re("-?[0-9]+");
-  if (!std::regex_match(s, re)) return -1;
-  std::string digits = s[0] == '-' ? s.substr(1) : s;
-  digits.erase(0, std::min(digits.find_first_not_of('0'), digits.size() - 1));
-  const std::string max = "1073741823";
-  if (digits.size() != max.size()) return digits.size() < max.size() ? 1 : 0;
-  return digits <= max ? 1 : 0;
-}
+using taut::test::reference_int;
 
 std::string xml_escape(const std::string& s) {
   std::string o;
@@ -548,7 +516,8 @@ TEST(ReaderSecurity, NothingIsEverLoaded) {
 // Concurrency and speed.
 
 TEST(ReaderThreads, ConcurrentParsesGiveTheSameDiagnostics) {
-  const auto rows = expected_rows();
+  const auto rows = taut::test::load_bad_cases();
+  for (const auto& r : rows) EXPECT_EQ(r.file.find("<malformed"), std::string::npos) << r.file;
   std::vector<std::string> files;
   for (const auto& r : rows) files.push_back(data("bad/" + r.file));
   files.push_back(data("good/full.xml"));

@@ -3,6 +3,8 @@
 // an independent reference (and with the reader) on numbers, points and orientations.
 #include <gtest/gtest.h>
 
+#include "support/corpus.h"
+
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -65,16 +67,7 @@ std::vector<std::string> xml_files(const std::string& dir) {
   return v;
 }
 
-// -1 syntax error, 0 out of range, 1 accepted; regex + decimal string comparison.
-int reference_int(const std::string& s) {
-  static const std::regex re("-?[0-9]+");
-  if (!std::regex_match(s, re)) return -1;
-  std::string digits = s[0] == '-' ? s.substr(1) : s;
-  digits.erase(0, std::min(digits.find_first_not_of('0'), digits.size() - 1));
-  const std::string max = "1073741823";
-  if (digits.size() != max.size()) return digits.size() < max.size() ? 1 : 0;
-  return digits <= max ? 1 : 0;
-}
+using taut::test::reference_int;
 
 }  // namespace
 
