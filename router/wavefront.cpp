@@ -1,0 +1,1085 @@
+// Continuous Dijkstra for L1 (Mitchell 1992, §3-§5). See wavefront.h for the model, the
+// symbolic shear that removes degeneracies and the rules used at each event.
+#include "router/wavefront.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <array>
+#include <cassert>
+#include <limits>
+#include <queue>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "geom/index.h"
+#include "geom/normalize.h"
+#include "geom/predicates.h"
+
+namespace taut::router {
+namespace {
+
+using geom::Box;
+using geom::i128;
+using geom::i64;
+using geom::Point;
+using geom::Polygon;
+using std::uint32_t;
+using std::uint64_t;
+using std::uint8_t;
+
+constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
+
+// A number c0 + c1*e + c2*e^2 for an infinitesimal e > 0, compared lexicographically.
+struct T3 {
+  i64 a = 0, b = 0, c = 0;
+  friend bool operator==(const T3&, const T3&) = default;
+  friend auto operator<=>(const T3& x, const T3& y) {
+    if (x.a != y.a) return x.a <=> y.a;
+    if (x.b != y.b) return x.b <=> y.b;
+    return x.c <=> y.c;
+  }
+  T3 operator+(const T3& o) const { return {a + o.a, b + o.b, c + o.c}; }
+  T3 operator-(const T3& o) const { return {a - o.a, b - o.b, c - o.c}; }
+};
+
+// Direction frames: the wave moves "north-east" in local coordinates u = sx*X, v = sy*Y.
+constexpr int kSx[4] = {1, -1, -1, 1};  // NE, NW, SW, SE
+constexpr int kSy[4] = {1, 1, -1, -1};
+
+// Sheared local coordinates of a world point (X = x + e*y, Y = y + e^2*x).
+inline T3 U(int d, Point p) { return {i64{kSx[d]} * p.x, i64{kSx[d]} * p.y, 0}; }
+inline T3 V(int d, Point p) { return {i64{kSy[d]} * p.y, 0, i64{kSy[d]} * p.x}; }
+inline T3 level(int d, Point p) { return U(d, p) + V(d, p); }
+
+// A symbolic world direction: each component a polynomial in e (coefficients of 1, e, e^2).
+struct Dir {
+  std::array<i64, 3> x{}, y{};
+};
+inline Dir int_dir(i64 dx, i64 dy) { return Dir{{dx, 0, 0}, {dy, 0, 0}}; }
+// The world direction of the sheared local vector (a, b) of frame d.
+inline Dir local_dir(int d, int a, int b) {
+  const i64 sx = kSx[d], sy = kSy[d];
+  // M^-1 (sx a, sy b) ~ (sx a - e sy b, sy b - e^2 sx a)
+  return Dir{{sx * a, -sy * b, 0}, {sy * b, 0, -sx * a}};
+}
+inline int poly_sign(const std::array<i128, 5>& p) {
+  for (i128 v : p)
+    if (v != 0) return v > 0 ? 1 : -1;
+  return 0;
+}
+inline int cross_sign(const Dir& p, const Dir& q) {
+  std::array<i128, 5> r{};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) r[i + j] += i128{p.x[i]} * q.y[j] - i128{p.y[i]} * q.x[j];
+  return poly_sign(r);
+}
+inline int dot_sign(const Dir& p, const Dir& q) {
+  std::array<i128, 5> r{};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) r[i + j] += i128{p.x[i]} * q.x[j] + i128{p.y[i]} * q.y[j];
+  return poly_sign(r);
+}
+// x strictly before y going counter-clockwise from base (base itself is first).
+inline bool ccw_less(const Dir& base, const Dir& x, const Dir& y) {
+  auto half = [&](const Dir& v) {
+    const int c = cross_sign(base, v);
+    return (c > 0 || (c == 0 && dot_sign(base, v) > 0)) ? 0 : 1;
+  };
+  const int hx = half(x), hy = half(y);
+  if (hx != hy) return hx < hy;
+  return cross_sign(x, y) > 0;
+}
+inline bool same_dir(const Dir& x, const Dir& y) {
+  return cross_sign(x, y) == 0 && dot_sign(x, y) > 0;
+}
+// x strictly inside the counter-clockwise arc from a to b.
+inline bool in_ccw(const Dir& a, const Dir& b, const Dir& x) {
+  return !same_dir(x, a) && ccw_less(a, x, b);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Static k-d tree over points: the segment-dragging query "smallest diagonal coordinate inside a
+// convex region". Implicit layout, leaves of up to 8 points.
+struct Region {
+  int d = 0;
+  T3 start;                 // level must be > start
+  int nlex = 0;             // lexicographic half-planes on U or V
+  struct Lex {
+    bool on_u;              // U(q) vs value, else V(q)
+    bool greater;           // require > value, else <
+    T3 value;
+  } lex[2];
+  int nedges = 0;           // orient(a, b, q) <= 0
+  Point ea[4], eb[4];
+};
+
+inline bool satisfies(const Region& r, Point q) {
+  if (!(level(r.d, q) > r.start)) return false;
+  for (int i = 0; i < r.nlex; ++i) {
+    const auto& l = r.lex[i];
+    const T3 v = l.on_u ? U(r.d, q) : V(r.d, q);
+    if (l.greater ? !(v > l.value) : !(v < l.value)) return false;
+  }
+  for (int i = 0; i < r.nedges; ++i)
+    if (geom::orient(r.ea[i], r.eb[i], q) > 0) return false;
+  return true;
+}
+
+class KdTree {
+ public:
+  KdTree() = default;
+  explicit KdTree(std::vector<std::pair<Point, uint32_t>> items) : items_(std::move(items)) {
+    if (!items_.empty()) build(0, static_cast<uint32_t>(items_.size()), 0);
+  }
+  bool empty() const { return items_.empty(); }
+  std::size_t memory_bytes() const {
+    return items_.capacity() * sizeof(items_[0]) + nodes_.capacity() * sizeof(Node);
+  }
+
+  // The id of the satisfying point with the smallest level (nullopt = none).
+  bool query(const Region& r, uint32_t& best_id, T3& best_level) const {
+    if (items_.empty()) return false;
+    bool found = false;
+    visit(0, r, found, best_id, best_level);
+    return found;
+  }
+
+ private:
+  struct Node {
+    Point lo, hi;
+    uint32_t begin, end;
+    uint32_t left = kNone, right = kNone;
+  };
+  uint32_t build(uint32_t begin, uint32_t end, int depth) {
+    const uint32_t id = static_cast<uint32_t>(nodes_.size());
+    nodes_.push_back({});
+    Point lo{std::numeric_limits<geom::Coord>::max(), std::numeric_limits<geom::Coord>::max()};
+    Point hi{std::numeric_limits<geom::Coord>::min(), std::numeric_limits<geom::Coord>::min()};
+    for (uint32_t i = begin; i < end; ++i) {
+      lo.x = std::min(lo.x, items_[i].first.x);
+      lo.y = std::min(lo.y, items_[i].first.y);
+      hi.x = std::max(hi.x, items_[i].first.x);
+      hi.y = std::max(hi.y, items_[i].first.y);
+    }
+    nodes_[id].lo = lo;
+    nodes_[id].hi = hi;
+    nodes_[id].begin = begin;
+    nodes_[id].end = end;
+    if (end - begin > 8) {
+      const uint32_t mid = begin + (end - begin) / 2;
+      const bool by_x = (i64{hi.x} - lo.x) >= (i64{hi.y} - lo.y);
+      (void)depth;
+      std::nth_element(items_.begin() + begin, items_.begin() + mid, items_.begin() + end,
+                       [by_x](const auto& a, const auto& b) {
+                         return by_x ? a.first.x < b.first.x : a.first.y < b.first.y;
+                       });
+      const uint32_t l = build(begin, mid, depth + 1);
+      const uint32_t rr = build(mid, end, depth + 1);
+      nodes_[id].left = l;
+      nodes_[id].right = rr;
+    }
+    return id;
+  }
+  // Lower bound of the level's constant term over the box.
+  static i64 box_min_level(const Node& n, int d) {
+    return (kSx[d] > 0 ? i64{n.lo.x} : -i64{n.hi.x}) + (kSy[d] > 0 ? i64{n.lo.y} : -i64{n.hi.y});
+  }
+  static bool box_may_satisfy(const Node& n, const Region& r) {
+    const int d = r.d;
+    const i64 umax = kSx[d] > 0 ? n.hi.x : -i64{n.lo.x};
+    const i64 umin = kSx[d] > 0 ? n.lo.x : -i64{n.hi.x};
+    const i64 vmax = kSy[d] > 0 ? n.hi.y : -i64{n.lo.y};
+    const i64 vmin = kSy[d] > 0 ? n.lo.y : -i64{n.hi.y};
+    if (umax + vmax < r.start.a) return false;
+    for (int i = 0; i < r.nlex; ++i) {
+      const auto& l = r.lex[i];
+      const i64 mx = l.on_u ? umax : vmax;
+      const i64 mn = l.on_u ? umin : vmin;
+      if (l.greater ? mx < l.value.a : mn > l.value.a) return false;
+    }
+    for (int i = 0; i < r.nedges; ++i) {
+      const Point c[4] = {n.lo, {n.hi.x, n.lo.y}, n.hi, {n.lo.x, n.hi.y}};
+      bool any = false;
+      for (const Point& p : c)
+        if (geom::orient(r.ea[i], r.eb[i], p) <= 0) {
+          any = true;
+          break;
+        }
+      if (!any) return false;
+    }
+    return true;
+  }
+  void visit(uint32_t id, const Region& r, bool& found, uint32_t& best_id, T3& best) const {
+    const Node& n = nodes_[id];
+    if (found && box_min_level(n, r.d) > best.a) return;
+    if (!box_may_satisfy(n, r)) return;
+    if (n.left == kNone) {
+      for (uint32_t i = n.begin; i < n.end; ++i) {
+        const Point q = items_[i].first;
+        const T3 lv = level(r.d, q);
+        if (found && !(lv < best)) continue;
+        if (!satisfies(r, q)) continue;
+        found = true;
+        best = lv;
+        best_id = items_[i].second;
+      }
+      return;
+    }
+    const i64 bl = box_min_level(nodes_[n.left], r.d);
+    const i64 br = box_min_level(nodes_[n.right], r.d);
+    if (bl <= br) {
+      visit(n.left, r, found, best_id, best);
+      visit(n.right, r, found, best_id, best);
+    } else {
+      visit(n.right, r, found, best_id, best);
+      visit(n.left, r, found, best_id, best);
+    }
+  }
+
+  std::vector<std::pair<Point, uint32_t>> items_;
+  std::vector<Node> nodes_;
+};
+
+// ---------------------------------------------------------------------------------------------
+
+// A track of a wavelet. V: the sheared vertical line through `origin` (local north), H: the
+// sheared horizontal (local east); both carry the stop edge their ray runs into (ea -> eb, a
+// ring edge with free space on its right), if any. O: the track is the ring edge ea -> eb.
+// `far` is the edge end with the larger level: where the sliding end leaves the edge.
+struct Bound {
+  uint8_t kind = 0;  // 0 V, 1 H, 2 O
+  uint32_t origin = kNone;
+  uint32_t ea = kNone, eb = kNone, far = kNone;
+};
+enum : uint8_t { kV = 0, kH = 1, kO = 2 };
+
+struct Wave {
+  T3 key;
+  uint64_t seq = 0;
+  uint32_t root = kNone;   // entity
+  uint32_t start = kNone;  // point: the region lies beyond its level
+  uint32_t event = kNone;  // point hit next
+  uint8_t dir = 0;
+  uint8_t event_is_target = 0;
+  Bound left, right;       // left: upper-left track (region on its right); right: lower-right
+};
+struct WaveLater {
+  bool operator()(const Wave& a, const Wave& b) const {
+    if (a.key != b.key) return a.key > b.key;
+    return a.seq > b.seq;
+  }
+};
+
+struct Entity {
+  uint32_t point = kNone;
+  uint32_t lo = kNone, hi = kNone;  // world ring neighbours: free wedge ccw from dir(lo) to dir(hi)
+  bool full = false;                // every direction free (lo/hi unused)
+  bool labelled = false;
+  T3 d;
+  uint32_t parent = kNone;  // entity
+  uint32_t source = kNone;  // index into run's sources
+  uint32_t hit_u[4] = {kNone, kNone, kNone, kNone};  // hitter roots (points) with least U
+  uint32_t hit_v[4] = {kNone, kNone, kNone, kNone};  // ... least V
+  i64 hit_u_key[4] = {0, 0, 0, 0};                   // distance (constant term) of that hit
+  i64 hit_v_key[4] = {0, 0, 0, 0};
+};
+
+}  // namespace
+
+struct L1Wavefront::Impl {
+  Box domain;
+  std::vector<Polygon> polys;  // obstacles after merging the domain frame
+  std::vector<Box> poly_boxes;
+  std::unique_ptr<geom::ObstacleIndex> index;
+  std::vector<std::pair<uint32_t, uint32_t>> edge_pts;  // index edge id -> (a, b) point ids
+
+  std::vector<Point> pts;  // vertex points [0, nvert), then run-time points
+  uint32_t nvert = 0;
+  std::unordered_map<uint64_t, uint32_t> point_id;  // vertex points only
+  std::vector<uint32_t> ent_begin;                  // per vertex point: entities [begin, begin+1..)
+  std::vector<Entity> ents;                         // vertex entities [0, nvent), run-time after
+  uint32_t nvent = 0;
+  KdTree vertex_tree;
+
+  // run state
+  std::vector<Entity> base_ents;  // pristine vertex entities
+  KdTree target_tree;
+  std::vector<std::vector<uint32_t>> target_ents;  // per target: its entities
+  std::vector<Point> target_pts;
+  std::vector<uint32_t> point_target_entity;  // run-time point -> entity
+  std::priority_queue<Wave, std::vector<Wave>, WaveLater> queue;
+  uint64_t seq = 0;
+  WavefrontStats stats;
+
+  static uint64_t key_of(Point p) {
+    return (uint64_t{static_cast<uint32_t>(p.x)} << 32) | static_cast<uint32_t>(p.y);
+  }
+
+  Impl(const Box& dom, std::span<const Polygon> obstacles) : domain(dom) {
+    merge_frame(obstacles);
+    index = std::make_unique<geom::ObstacleIndex>(polys);
+    if (std::getenv("TAUT_WF_DUMP"))
+      for (auto& p : polys) {
+        std::fprintf(stderr, "poly:");
+        for (auto q : p.outer) std::fprintf(stderr, " %d,%d", q.x, q.y);
+        for (auto& h : p.holes) {
+          std::fprintf(stderr, " | hole:");
+          for (auto q : h) std::fprintf(stderr, " %d,%d", q.x, q.y);
+        }
+        std::fprintf(stderr, "\n");
+      }
+    for (const Polygon& p : polys) {
+      Box b{{std::numeric_limits<geom::Coord>::max(), std::numeric_limits<geom::Coord>::max()},
+            {std::numeric_limits<geom::Coord>::min(), std::numeric_limits<geom::Coord>::min()}};
+      for (Point q : p.outer) {
+        b.lo.x = std::min(b.lo.x, q.x);
+        b.lo.y = std::min(b.lo.y, q.y);
+        b.hi.x = std::max(b.hi.x, q.x);
+        b.hi.y = std::max(b.hi.y, q.y);
+      }
+      poly_boxes.push_back(b);
+    }
+    // Vertex points and their occurrences (prev, next) on rings.
+    std::vector<std::vector<std::pair<uint32_t, uint32_t>>> occ;
+    auto id_of = [&](Point p) {
+      auto [it, fresh] = point_id.try_emplace(key_of(p), static_cast<uint32_t>(pts.size()));
+      if (fresh) {
+        pts.push_back(p);
+        occ.emplace_back();
+      }
+      return it->second;
+    };
+    auto add_ring = [&](const geom::Ring& ring) {
+      const std::size_t n = ring.size();
+      std::vector<uint32_t> ids(n);
+      for (std::size_t i = 0; i < n; ++i) ids[i] = id_of(ring[i]);
+      for (std::size_t i = 0; i < n; ++i)
+        occ[ids[i]].push_back({ids[(i + n - 1) % n], ids[(i + 1) % n]});
+    };
+    for (const Polygon& p : polys) {
+      add_ring(p.outer);
+      for (const auto& h : p.holes) add_ring(h);
+    }
+    nvert = static_cast<uint32_t>(pts.size());
+    // Free wedges: sort occurrences by the direction of `next`; the free wedge after
+    // occurrence i runs from dir(prev_i) to dir(next_{i+1}).
+    ent_begin.assign(nvert + 1, 0);
+    for (uint32_t v = 0; v < nvert; ++v) {
+      ent_begin[v] = static_cast<uint32_t>(ents.size());
+      auto& o = occ[v];
+      const Point p = pts[v];
+      auto dirto = [&](uint32_t q) { return int_dir(i64{pts[q].x} - p.x, i64{pts[q].y} - p.y); };
+      if (o.size() == 1) {
+        Entity e;
+        e.point = v;
+        e.lo = o[0].first;
+        e.hi = o[0].second;
+        ents.push_back(e);
+        continue;
+      }
+      // A pinch: the ring's own pairing of in/out edges need not match the obstacle wedges
+      // (a weakly simple ring may enter from one lobe and leave into another). Sort every edge
+      // direction around p: the free wedges run from a "prev" direction (obstacle just
+      // clockwise of it) counter-clockwise to the following "next" direction.
+      std::vector<std::pair<uint32_t, bool>> dirs;  // (neighbour, is_next)
+      for (const auto& [pr, nx] : o) {
+        dirs.push_back({pr, false});
+        dirs.push_back({nx, true});
+      }
+      const Dir base = dirto(dirs[0].first);
+      std::sort(dirs.begin(), dirs.end(), [&](const auto& a, const auto& b) {
+        return ccw_less(base, dirto(a.first), dirto(b.first));
+      });
+      for (std::size_t i = 0; i < dirs.size(); ++i) {
+        if (dirs[i].second) continue;
+        const auto& nx = dirs[(i + 1) % dirs.size()];
+        Entity e;
+        e.point = v;
+        e.lo = dirs[i].first;
+        e.hi = nx.first;
+        ents.push_back(e);
+      }
+    }
+    ent_begin[nvert] = static_cast<uint32_t>(ents.size());
+    nvent = static_cast<uint32_t>(ents.size());
+    base_ents = ents;
+    stats.vertices = nvert;
+    stats.entities = nvent;
+    // Edge id -> point ids.
+    edge_pts.resize(index->edge_count());
+    for (uint32_t e = 0; e < index->edge_count(); ++e) {
+      const geom::Segment& s = index->edge(e);
+      edge_pts[e] = {point_id.at(key_of(s.a)), point_id.at(key_of(s.b))};
+    }
+    std::vector<std::pair<Point, uint32_t>> items;
+    items.reserve(nvert);
+    for (uint32_t v = 0; v < nvert; ++v) {
+      const Point q = pts[v];
+      // the frame's outer ring lies outside the domain: never reached
+      if (q.x < domain.lo.x || q.x > domain.hi.x || q.y < domain.lo.y || q.y > domain.hi.y)
+        continue;
+      items.push_back({q, v});
+    }
+    vertex_tree = KdTree(std::move(items));
+  }
+
+  // The domain side is a wall: a frame obstacle around the domain, merged with every obstacle
+  // that touches the side, so a vertex touching it is a pinch.
+  void merge_frame(std::span<const Polygon> obstacles) {
+    const Box g{{domain.lo.x - 1, domain.lo.y - 1}, {domain.hi.x + 1, domain.hi.y + 1}};
+    Polygon frame;
+    frame.outer = {g.lo, {g.hi.x, g.lo.y}, g.hi, {g.lo.x, g.hi.y}};
+    frame.holes.push_back({domain.lo, {domain.lo.x, domain.hi.y}, domain.hi, {domain.hi.x, domain.lo.y}});
+    std::vector<Polygon> touching{frame};
+    for (const Polygon& p : obstacles) {
+      bool t = false;
+      for (Point q : p.outer)
+        if (q.x == domain.lo.x || q.x == domain.hi.x || q.y == domain.lo.y || q.y == domain.hi.y)
+          t = true;
+      if (t)
+        touching.push_back(p);
+      else
+        polys.push_back(p);
+    }
+    geom::NormalizedObstacles merged = geom::normalize_obstacles(touching, g);
+    for (Polygon& p : merged.obstacles) polys.push_back(std::move(p));
+  }
+
+  // ------------------------------------------------------------------------------------------
+  // Entities and wedges.
+  Dir lo_dir(const Entity& e) const {
+    const Point p = pts[e.point], q = pts[e.lo];
+    return int_dir(i64{q.x} - p.x, i64{q.y} - p.y);
+  }
+  Dir hi_dir(const Entity& e) const {
+    const Point p = pts[e.point], q = pts[e.hi];
+    return int_dir(i64{q.x} - p.x, i64{q.y} - p.y);
+  }
+  bool wedge_contains(const Entity& e, const Dir& x) const {
+    if (e.full) return true;
+    return in_ccw(lo_dir(e), hi_dir(e), x);
+  }
+
+  // Where p is: a vertex point (its id), on an edge interior (edge a->b), inside an obstacle,
+  // or in open free space.
+  enum class Where { Vertex, Edge, Inside, Free };
+  Where locate(Point p, uint32_t& vid, uint32_t& ea, uint32_t& eb) const {
+    if (p.x < domain.lo.x || p.x > domain.hi.x || p.y < domain.lo.y || p.y > domain.hi.y)
+      return Where::Inside;  // (the frame's outer corners are vertices, but not free)
+    if (auto it = point_id.find(key_of(p)); it != point_id.end()) {
+      vid = it->second;
+      return Where::Vertex;
+    }
+    for (uint32_t e : index->edges_in_box(Box{p, p})) {
+      const geom::Segment& s = index->edge(e);
+      if (geom::on_segment(p, s.a, s.b)) {
+        ea = edge_pts[e].first;
+        eb = edge_pts[e].second;
+        return Where::Edge;
+      }
+    }
+    for (std::size_t i = 0; i < polys.size(); ++i) {
+      const Box& b = poly_boxes[i];
+      if (p.x < b.lo.x || p.x > b.hi.x || p.y < b.lo.y || p.y > b.hi.y) continue;
+      if (geom::locate(p, polys[i]) != geom::Location::Outside) return Where::Inside;
+    }
+    return Where::Free;
+  }
+
+  bool is_free(Point p) const {
+    uint32_t v, a, b;
+    const Where w = locate(p, v, a, b);
+    return w == Where::Vertex || w == Where::Edge || w == Where::Free;
+  }
+
+  // Entities of a query point (adds a run-time point/entity when it is not a vertex).
+  std::vector<uint32_t> query_entities(Point p) {
+    uint32_t v = kNone, a = kNone, b = kNone;
+    switch (locate(p, v, a, b)) {
+      case Where::Vertex: {
+        std::vector<uint32_t> out;
+        for (uint32_t e = ent_begin[v]; e < ent_begin[v + 1]; ++e) out.push_back(e);
+        return out;
+      }
+      case Where::Inside:
+        return {};
+      case Where::Edge:
+      case Where::Free: {
+        const uint32_t pid = static_cast<uint32_t>(pts.size());
+        pts.push_back(p);
+        Entity e;
+        e.point = pid;
+        if (a != kNone) {
+          e.lo = a;
+          e.hi = b;
+        } else {
+          e.full = true;
+        }
+        ents.push_back(e);
+        return {static_cast<uint32_t>(ents.size() - 1)};
+      }
+    }
+    return {};
+  }
+
+  // ------------------------------------------------------------------------------------------
+  // Track rays: the first ring edge crossed by the sheared vertical (local north of frame d) or
+  // horizontal (local east) ray from point o. Exact: crossings compared as rationals on the
+  // exact axis line, ties (edges through one point of it) by slope, which is the order the
+  // sheared ray meets them in (see header).
+  bool shoot(int d, bool vertical, uint32_t o, uint32_t& ea, uint32_t& eb) {
+    ++stats.ray_queries;
+    const Point p = pts[o];
+    const int s = vertical ? kSy[d] : kSx[d];  // +1: towards larger world y (x)
+    // Work in coordinates where the ray is along +/- the "t" axis and "w" is the other one.
+    auto tc = [&](Point q) -> i64 { return vertical ? q.y : q.x; };
+    auto wc = [&](Point q) -> i64 { return vertical ? q.x : q.y; };
+    // side of q relative to the sheared line through p: lexicographic (w, t) for vertical
+    // (X = x + e y), (w, t) likewise for horizontal (Y = y + e^2 x).
+    auto side = [&](Point q) {
+      const i64 dw = wc(q) - wc(p);
+      if (dw != 0) return dw > 0 ? 1 : -1;
+      const i64 dt = tc(q) - tc(p);
+      return dt > 0 ? 1 : (dt < 0 ? -1 : 0);
+    };
+    const i64 lim_lo = vertical ? domain.lo.y - 1 : domain.lo.x - 1;
+    const i64 lim_hi = vertical ? domain.hi.y + 1 : domain.hi.x + 1;
+    i64 len = 64;
+    while (true) {
+      const i64 t0 = tc(p);
+      const i64 t1 = s > 0 ? std::min<i64>(t0 + len, lim_hi) : std::max<i64>(t0 - len, lim_lo);
+      Box box;
+      if (vertical)
+        box = Box{{p.x, static_cast<geom::Coord>(std::min(t0, t1))},
+                  {p.x, static_cast<geom::Coord>(std::max(t0, t1))}};
+      else
+        box = Box{{static_cast<geom::Coord>(std::min(t0, t1)), p.y},
+                  {static_cast<geom::Coord>(std::max(t0, t1)), p.y}};
+      // Edges crossing the sheared line near the exact line x = p.x touch the exact segment
+      // (the sheared line is within an infinitesimal of it).
+      bool found = false;
+      i128 bn = 0, bd = 1;  // best crossing t = bn / bd
+      i64 bsn = 0, bsd = 1;  // its slope dt/dw
+      uint32_t best = kNone;
+      for (uint32_t e : index->edges_in_box(box)) {
+        const auto [ia, ib] = edge_pts[e];
+        if (ia == o || ib == o) continue;
+        const Point a = pts[ia], b = pts[ib];
+        const int sa = side(a), sb = side(b);
+        if (sa == 0 || sb == 0 || sa == sb) continue;
+        // exact crossing of the line w = wc(p): t = ta + (wp - wa) (tb - ta) / (wb - wa)
+        i64 dw = wc(b) - wc(a), dt = tc(b) - tc(a);
+        i128 num = i128{tc(a)} * dw + i128{wc(p) - wc(a)} * dt;
+        i128 den = dw;
+        if (den < 0) {
+          num = -num;
+          den = -den;
+        }
+        // beyond p in direction s
+        const i128 rel = num - i128{tc(p)} * den;
+        if (rel == 0) continue;  // through p: p lies on this edge
+        if ((rel > 0 ? 1 : -1) != s) continue;
+        // slope dt/dw with dw > 0
+        i64 sn = dt, sd = dw;
+        if (sd < 0) {
+          sn = -sn;
+          sd = -sd;
+        }
+        bool better;
+        if (!found) {
+          better = true;
+        } else {
+          const i128 c = num * bd - bn * den;  // sign of (this t - best t)
+          if (c != 0) {
+            better = s > 0 ? c < 0 : c > 0;
+          } else {
+            better = i128{sn} * bsd > i128{bsn} * sd;  // larger slope is met first
+          }
+        }
+        if (better) {
+          found = true;
+          bn = num;
+          bd = den;
+          bsn = sn;
+          bsd = sd;
+          best = e;
+        }
+      }
+      if (found) {
+        // The crossing must lie inside the window [t0, t1] (it does: the edge met the box).
+        ea = edge_pts[best].first;
+        eb = edge_pts[best].second;
+        return true;
+      }
+      if (t1 == lim_hi || t1 == lim_lo) return false;
+      len *= 4;
+    }
+  }
+
+  uint32_t far_end(int d, uint32_t a, uint32_t b) const {
+    return level(d, pts[a]) > level(d, pts[b]) ? a : b;
+  }
+  Bound axis_bound(int d, bool vertical, uint32_t origin) {
+    Bound bd;
+    bd.kind = vertical ? kV : kH;
+    bd.origin = origin;
+    uint32_t a, b;
+    if (shoot(d, vertical, origin, a, b)) {
+      bd.ea = a;
+      bd.eb = b;
+      bd.far = far_end(d, a, b);
+    }
+    return bd;
+  }
+  // O track along the ring edge at the lo (prev -> p) or hi (p -> next) end of an entity.
+  Bound edge_bound(int d, const Entity& e, bool lo_end) const {
+    Bound bd;
+    bd.kind = kO;
+    if (lo_end) {
+      bd.ea = e.lo;
+      bd.eb = e.point;
+    } else {
+      bd.ea = e.point;
+      bd.eb = e.hi;
+    }
+    if (e.point >= nvert) {  // a query point inside a ring edge: track along the whole edge
+      bd.ea = e.lo;
+      bd.eb = e.hi;
+    }
+    bd.far = far_end(d, bd.ea, bd.eb);
+    return bd;
+  }
+
+  void add_constraints(Region& r, const Bound& b, bool is_left) const {
+    const int d = r.d;
+    if (b.kind == kO) {
+      r.ea[r.nedges] = pts[b.ea];
+      r.eb[r.nedges] = pts[b.eb];
+      ++r.nedges;
+      return;
+    }
+    Region::Lex l;
+    const Point o = pts[b.origin];
+    if (b.kind == kV) {
+      l.on_u = true;
+      l.value = U(d, o);
+      l.greater = is_left;  // left track: region to its right (u > u_o)
+    } else {
+      l.on_u = false;
+      l.value = V(d, o);
+      l.greater = !is_left;  // left track (east ray): region below (v < v_o)
+    }
+    r.lex[r.nlex++] = l;
+    // The stop edge bounds the region only when the track end slides along it into the region
+    // (its far end on the region side). Otherwise its near end lies in the region and is hit
+    // before the stop point; the pieces made there get their own tracks.
+    bool slides_in = false;
+    if (b.ea != kNone) {
+      const Point f = pts[b.far];
+      const T3 fv = l.on_u ? U(d, f) : V(d, f);
+      slides_in = l.greater ? fv > l.value : fv < l.value;
+    }
+    if (slides_in) {
+      r.ea[r.nedges] = pts[b.ea];
+      r.eb[r.nedges] = pts[b.eb];
+      ++r.nedges;
+    }
+  }
+
+  // Finds the wave's next event and queues it (or drops the wave when it hits nothing).
+  void insert(Wave w) {
+    ++stats.wavelets;
+    Region r;
+    r.d = w.dir;
+    r.start = level(w.dir, pts[w.start]);
+    add_constraints(r, w.left, true);
+    add_constraints(r, w.right, false);
+    ++stats.drag_queries;
+    uint32_t vid = kNone, tid = kNone;
+    T3 vl, tl;
+    const bool hv = vertex_tree.query(r, vid, vl);
+    const bool ht = !target_tree.empty() && target_tree.query(r, tid, tl);
+    if (!hv && !ht) return;
+    const Point root = pts[ents[w.root].point];
+    if (ht && (!hv || tl < vl)) {
+      w.event = tid;
+      w.event_is_target = 1;
+      w.key = ents[w.root].d + tl - level(w.dir, root);
+    } else {
+      w.event = vid;
+      w.event_is_target = 0;
+      w.key = ents[w.root].d + vl - level(w.dir, root);
+    }
+    w.seq = seq++;
+    queue.push(w);
+  }
+
+  void label(uint32_t ent, const T3& d, uint32_t parent) {
+    Entity& e = ents[ent];
+    e.labelled = true;
+    e.d = d;
+    e.parent = parent;
+    e.source = parent == kNone ? e.source : ents[parent].source;
+    ++stats.labelled;
+  }
+
+  // The wavelets of a newly labelled root entity in every frame, except arcs inside `covered`
+  // (world ccw arc from c0 to c1; has_cover false = none).
+  void spawn(uint32_t ent, bool has_cover, const Dir& c0, const Dir& c1) {
+    const Entity e = ents[ent];
+    const uint32_t p = e.point;
+    for (int d = 0; d < 4; ++d) {
+      const int sigma = kSx[d] * kSy[d];
+      const Dir E = local_dir(d, 1, 0), N = local_dir(d, 0, 1);
+      auto emit = [&](const Dir& a0, const Dir& a1, Bound right, Bound left) {
+        if (has_cover && !e.full) {
+          // local arc a0 -> a1 as a world arc
+          const Dir w0 = sigma > 0 ? a0 : a1, w1 = sigma > 0 ? a1 : a0;
+          const Dir base = lo_dir(e);
+          const bool inside = !ccw_less(base, w0, c0) && !ccw_less(base, c1, w1);
+          if (inside) return;
+        }
+        Wave w;
+        w.root = ent;
+        w.start = p;
+        w.dir = static_cast<uint8_t>(d);
+        w.left = left;
+        w.right = right;
+        insert(w);
+      };
+      if (e.full) {
+        emit(E, N, axis_bound(d, false, p), axis_bound(d, true, p));
+        continue;
+      }
+      // local wedge ends
+      const Dir L0 = sigma > 0 ? lo_dir(e) : hi_dir(e);
+      const Dir L1 = sigma > 0 ? hi_dir(e) : lo_dir(e);
+      const bool L0_is_lo = sigma > 0;
+      auto local_in = [&](const Dir& a, const Dir& b, const Dir& x) {
+        return sigma > 0 ? in_ccw(a, b, x) : in_ccw(b, a, x);
+      };
+      const bool a = local_in(L0, L1, E), b = local_in(L0, L1, N);
+      const bool c = local_in(E, N, L0), dd = local_in(E, N, L1);
+      if (a && b && !c && !dd) {
+        emit(E, N, axis_bound(d, false, p), axis_bound(d, true, p));
+      } else if (a && b && c && dd) {
+        emit(E, L1, axis_bound(d, false, p), edge_bound(d, e, !L0_is_lo));
+        emit(L0, N, edge_bound(d, e, L0_is_lo), axis_bound(d, true, p));
+      } else if (a && !b) {
+        emit(E, L1, axis_bound(d, false, p), edge_bound(d, e, !L0_is_lo));
+      } else if (!a && b) {
+        emit(L0, N, edge_bound(d, e, L0_is_lo), axis_bound(d, true, p));
+      } else if (!a && !b && c && dd) {
+        emit(L0, L1, edge_bound(d, e, L0_is_lo), edge_bound(d, e, !L0_is_lo));
+      }
+    }
+  }
+
+  uint32_t entity_at(uint32_t p, uint32_t lo, uint32_t hi, const Dir* contains) const {
+    for (uint32_t i = ent_begin[p]; i < ent_begin[p + 1]; ++i) {
+      const Entity& e = ents[i];
+      if (lo != kNone && e.lo == lo) return i;
+      if (hi != kNone && e.hi == hi) return i;
+      if (contains && wedge_contains(e, *contains)) return i;
+    }
+    return kNone;
+  }
+
+  void debug_wave(const char* what, const Wave& w) const {
+    auto bd = [&](const Bound& b) {
+      std::fprintf(stderr, " [%c", "VHO"[b.kind]);
+      if (b.origin != kNone) std::fprintf(stderr, " o=(%d,%d)", pts[b.origin].x, pts[b.origin].y);
+      if (b.ea != kNone)
+        std::fprintf(stderr, " e=(%d,%d)->(%d,%d)", pts[b.ea].x, pts[b.ea].y, pts[b.eb].x,
+                     pts[b.eb].y);
+      std::fprintf(stderr, "]");
+    };
+    std::fprintf(stderr, "%s dir=%d root=(%d,%d) start=(%d,%d) key=%lld", what, w.dir,
+                 pts[ents[w.root].point].x, pts[ents[w.root].point].y, pts[w.start].x,
+                 pts[w.start].y, (long long)w.key.a);
+    if (w.event != kNone) std::fprintf(stderr, " event=(%d,%d)", pts[w.event].x, pts[w.event].y);
+    bd(w.left);
+    bd(w.right);
+    std::fprintf(stderr, "\n");
+  }
+  bool debug = std::getenv("TAUT_WF_DEBUG") != nullptr;
+
+  void process(const Wave& w) {
+    ++stats.events;
+    if (debug) debug_wave("pop", w);
+    const int d = w.dir;
+    const int sigma = kSx[d] * kSy[d];
+    const uint32_t p = w.event;
+    if (w.event_is_target) {
+      const uint32_t te = point_target_entity[p - nvert];
+      if (!ents[te].labelled) label(te, w.key, w.root);
+      Wave c = w;
+      c.start = p;
+      insert(c);
+      return;
+    }
+    const bool left_end = w.left.far == p && (w.left.kind == kO || w.left.ea != kNone);
+    const bool right_end = w.right.far == p && (w.right.kind == kO || w.right.ea != kNone);
+    uint32_t ent = kNone;
+    // p on the exact axis line of a track (the sheared track passes infinitesimally beside it):
+    // the wave reaches p only from the sector between that line and the front.
+    const Point pp = pts[p];
+    auto on_line = [&](const Bound& b) {
+      if (b.kind == kO) return false;
+      const Point o = pts[b.origin];
+      return b.kind == kV ? U(d, pp).a == U(d, o).a : V(d, pp).a == V(d, o).a;
+    };
+    const bool on_left = !left_end && !right_end && on_line(w.left);
+    const bool on_right = !left_end && !right_end && !on_left && on_line(w.right);
+    Dir arrive = local_dir(d, -1, -1);  // SW
+    if (on_left && w.left.kind == kV) arrive = int_dir(kSx[d] * 1, kSy[d] * -2);
+    if (on_right && w.right.kind == kH) arrive = int_dir(kSx[d] * -2, kSy[d] * 1);
+    auto arriving_edge_entity = [&](const Bound& b) {
+      // ring edge ea -> eb ends here: at eb it is the entity's lo edge, at ea its hi edge
+      return b.eb == p ? entity_at(p, b.ea, kNone, nullptr) : entity_at(p, kNone, b.eb, nullptr);
+    };
+    if (left_end)
+      ent = arriving_edge_entity(w.left);
+    else if (right_end)
+      ent = arriving_edge_entity(w.right);
+    else
+      ent = entity_at(p, kNone, kNone, &arrive);
+    if (ent == kNone) {
+      char buf[256];
+      std::snprintf(buf, sizeof buf, "wavefront: no wedge at (%d,%d) dir %d ends %d%d root (%d,%d) L %d %u %u R %d %u %u",
+                    pts[p].x, pts[p].y, d, int(left_end), int(right_end),
+                    pts[ents[w.root].point].x, pts[ents[w.root].point].y, w.left.kind, w.left.ea, w.left.eb, w.right.kind, w.right.ea, w.right.eb);
+      for (uint32_t i = ent_begin[p]; i < ent_begin[p + 1]; ++i) std::fprintf(stderr, "ent lo %u (%d,%d) hi %u (%d,%d)\n", ents[i].lo, pts[ents[i].lo].x, pts[ents[i].lo].y, ents[i].hi, pts[ents[i].hi].x, pts[ents[i].hi].y);
+      if (w.left.ea != kNone) std::fprintf(stderr, "left edge (%d,%d)->(%d,%d)\n", pts[w.left.ea].x, pts[w.left.ea].y, pts[w.left.eb].x, pts[w.left.eb].y);
+      if (w.right.ea != kNone) std::fprintf(stderr, "right edge (%d,%d)->(%d,%d)\n", pts[w.right.ea].x, pts[w.right.ea].y, pts[w.right.eb].x, pts[w.right.eb].y);
+      throw std::logic_error(buf);
+    }
+    Entity& e = ents[ent];
+    const Point rp = pts[ents[w.root].point];
+
+    // Mitchell §4 case 4: earlier hitters from the same direction.
+    // A part is dropped only when an earlier hitter reached p strictly sooner: with equal
+    // distances two roots could each leave a region to the other and both drop it.
+    bool keep_left = true, keep_right = true;
+    if (e.hit_u[d] != kNone) {
+      keep_left = U(d, rp) < U(d, pts[e.hit_u[d]]) || e.hit_u_key[d] >= w.key.a;
+      keep_right = V(d, rp) < V(d, pts[e.hit_v[d]]) || e.hit_v_key[d] >= w.key.a;
+    }
+    if (e.hit_u[d] == kNone || U(d, rp) < U(d, pts[e.hit_u[d]])) {
+      e.hit_u[d] = ents[w.root].point;
+      e.hit_u_key[d] = w.key.a;
+    }
+    if (e.hit_v[d] == kNone || V(d, rp) < V(d, pts[e.hit_v[d]])) {
+      e.hit_v[d] = ents[w.root].point;
+      e.hit_v_key[d] = w.key.a;
+    }
+
+    // Local wedge ends and the continuation tracks at p.
+    const Dir L0 = sigma > 0 ? lo_dir(e) : hi_dir(e);  // local cw end
+    const Dir L1 = sigma > 0 ? hi_dir(e) : lo_dir(e);  // local ccw end
+    const bool L0_is_lo = sigma > 0;
+    auto local_in = [&](const Dir& a, const Dir& b, const Dir& x) {
+      return sigma > 0 ? in_ccw(a, b, x) : in_ccw(b, a, x);
+    };
+    const Dir E = local_dir(d, 1, 0), N = local_dir(d, 0, 1);
+    const Dir NW = local_dir(d, -1, 1), SE = local_dir(d, 1, -1);
+    // Right piece's left track: p's edge when it points into (SE, E), else the east ray.
+    const bool right_by_edge = !e.full && local_in(SE, E, L1);
+    const bool left_by_edge = !e.full && local_in(N, NW, L0);
+
+    if (!e.labelled) {
+      label(ent, w.key, w.root);
+      // Covered near p: from the left piece's right track through the back half-plane to the
+      // right piece's left track (local ccw), or the arriving track's back direction.
+      Dir c0 = left_by_edge ? L0 : N;
+      Dir c1 = right_by_edge ? L1 : E;
+      if (left_end) c0 = L0;
+      if (right_end) c1 = L1;
+      // exact local south / west: the back direction of a track line p lies on
+      if (on_left) c0 = w.left.kind == kV ? int_dir(0, -kSy[d]) : int_dir(-kSx[d], 0);
+      if (on_right) c1 = w.right.kind == kV ? int_dir(0, -kSy[d]) : int_dir(-kSx[d], 0);
+      // as a world arc
+      const Dir w0 = sigma > 0 ? c0 : c1, w1 = sigma > 0 ? c1 : c0;
+      spawn(ent, true, w0, w1);
+    }
+
+    // The continuation: the part left of p (bounded by p's vertical or p's edge) and the part
+    // right of p. An endpoint collision ends the side whose track arrived at p.
+    if (keep_left && !left_end && !on_left) {
+      Wave c;
+      c.root = w.root;
+      c.start = p;
+      c.dir = w.dir;
+      c.left = w.left;
+      c.right = left_by_edge ? edge_bound(d, e, L0_is_lo) : axis_bound(d, true, p);
+      insert(c);
+    } else if (!left_end && !on_left) {
+      ++stats.died;
+    }
+    if (keep_right && !right_end && !on_right) {
+      Wave c;
+      c.root = w.root;
+      c.start = p;
+      c.dir = w.dir;
+      c.left = right_by_edge ? edge_bound(d, e, !L0_is_lo) : axis_bound(d, false, p);
+      c.right = w.right;
+      insert(c);
+    } else if (!right_end && !on_right) {
+      ++stats.died;
+    }
+  }
+
+  std::size_t remaining_targets = 0;
+  std::vector<uint32_t> run_sources_ents;
+
+  void run(std::span<const Point> sources, std::span<const Point> targets, bool stop_early) {
+    // reset
+    pts.resize(nvert);
+    ents = base_ents;
+    queue = {};
+    seq = 0;
+    stats = WavefrontStats{};
+    stats.vertices = nvert;
+    stats.entities = nvent;
+    target_ents.clear();
+    target_pts.assign(targets.begin(), targets.end());
+    point_target_entity.clear();
+    // targets
+    std::vector<std::pair<Point, uint32_t>> titems;
+    std::unordered_map<uint64_t, uint32_t> runtime_point;
+    for (Point t : targets) {
+      if (auto it = runtime_point.find(key_of(t)); it != runtime_point.end()) {
+        target_ents.push_back({point_target_entity[it->second - nvert]});
+        continue;
+      }
+      const std::size_t before = pts.size();
+      auto es = query_entities(t);
+      if (pts.size() > before) {
+        const uint32_t pid = static_cast<uint32_t>(pts.size() - 1);
+        runtime_point[key_of(t)] = pid;
+        point_target_entity.resize(pid - nvert + 1, kNone);
+        point_target_entity[pid - nvert] = es[0];
+        titems.push_back({t, pid});
+      }
+      target_ents.push_back(es);
+    }
+    target_tree = KdTree(std::move(titems));
+    // sources
+    for (std::size_t i = 0; i < sources.size(); ++i) {
+      std::vector<uint32_t> es;
+      if (auto it = runtime_point.find(key_of(sources[i])); it != runtime_point.end())
+        es = {point_target_entity[it->second - nvert]};
+      else
+        es = query_entities(sources[i]);
+      for (uint32_t e : es) {
+        if (ents[e].labelled) continue;
+        ents[e].source = static_cast<uint32_t>(i);
+        label(e, T3{}, kNone);
+      }
+    }
+    stats.entities = static_cast<std::int64_t>(ents.size());  // with the query points'
+    for (std::size_t i = 0; i < ents.size(); ++i)
+      if (ents[i].labelled && ents[i].parent == kNone) spawn(static_cast<uint32_t>(i), false, {}, {});
+    auto all_targets_done = [&] {
+      for (const auto& es : target_ents) {
+        if (es.empty()) continue;
+        bool any = false;
+        for (uint32_t e : es) any = any || ents[e].labelled;
+        if (!any) return false;
+      }
+      return true;
+    };
+    std::size_t check_every = 0;
+    while (!queue.empty()) {
+      if (stop_early && !targets.empty() && (++check_every & 63) == 0 && all_targets_done()) {
+        // Every target has a label; labels are final (Dijkstra order) once popped keys pass them.
+        // Targets are labelled when their event is popped, so they are final here.
+        break;
+      }
+      Wave w = queue.top();
+      queue.pop();
+      process(w);
+    }
+  }
+
+  std::optional<uint32_t> best_target_entity(std::size_t i) const {
+    std::optional<uint32_t> best;
+    for (uint32_t e : target_ents.at(i))
+      if (ents[e].labelled && (!best || ents[e].d < ents[*best].d)) best = e;
+    return best;
+  }
+};
+
+L1Wavefront::L1Wavefront(const Box& domain, std::span<const Polygon> obstacles)
+    : impl_(std::make_unique<Impl>(domain, obstacles)) {}
+L1Wavefront::~L1Wavefront() = default;
+L1Wavefront::L1Wavefront(L1Wavefront&&) noexcept = default;
+L1Wavefront& L1Wavefront::operator=(L1Wavefront&&) noexcept = default;
+
+bool L1Wavefront::is_free(Point p) const { return impl_->is_free(p); }
+
+void L1Wavefront::run(std::span<const Point> sources, std::span<const Point> targets,
+                      bool stop_early) {
+  impl_->run(sources, targets, stop_early);
+}
+
+std::optional<std::int64_t> L1Wavefront::target_distance(std::size_t i) const {
+  auto e = impl_->best_target_entity(i);
+  if (!e) return std::nullopt;
+  return impl_->ents[*e].d.a;
+}
+
+std::optional<std::size_t> L1Wavefront::target_source(std::size_t i) const {
+  auto e = impl_->best_target_entity(i);
+  if (!e) return std::nullopt;
+  return impl_->ents[*e].source;
+}
+
+std::vector<Point> L1Wavefront::target_path(std::size_t i) const {
+  std::vector<Point> out;
+  auto e = impl_->best_target_entity(i);
+  if (!e) return out;
+  for (uint32_t x = *e; x != kNone; x = impl_->ents[x].parent) {
+    const Point p = impl_->pts[impl_->ents[x].point];
+    if (out.empty() || out.back() != p) out.push_back(p);
+  }
+  std::reverse(out.begin(), out.end());
+  return out;
+}
+
+std::optional<std::int64_t> L1Wavefront::vertex_distance(Point p) const {
+  auto it = impl_->point_id.find(Impl::key_of(p));
+  if (it == impl_->point_id.end()) return std::nullopt;
+  std::optional<std::int64_t> best;
+  const uint32_t v = it->second;
+  for (uint32_t e = impl_->ent_begin[v]; e < impl_->ent_begin[v + 1]; ++e)
+    if (impl_->ents[e].labelled && (!best || impl_->ents[e].d.a < *best))
+      best = impl_->ents[e].d.a;
+  return best;
+}
+
+const WavefrontStats& L1Wavefront::stats() const { return impl_->stats; }
+
+std::size_t L1Wavefront::memory_bytes() const {
+  const Impl& m = *impl_;
+  std::size_t b = m.pts.capacity() * sizeof(Point) + m.ents.capacity() * sizeof(Entity) +
+                  m.base_ents.capacity() * sizeof(Entity) +
+                  m.ent_begin.capacity() * sizeof(uint32_t) +
+                  m.edge_pts.capacity() * sizeof(m.edge_pts[0]) + m.vertex_tree.memory_bytes() +
+                  m.point_id.size() * 32;
+  for (const Polygon& p : m.polys) {
+    b += p.outer.capacity() * sizeof(Point);
+    for (const auto& h : p.holes) b += h.capacity() * sizeof(Point);
+  }
+  return b;
+}
+
+std::optional<std::int64_t> l1_distance(const Box& domain, std::span<const Polygon> obstacles,
+                                        Point s, Point t) {
+  L1Wavefront wf(domain, obstacles);
+  wf.run({&s, 1}, {&t, 1});
+  return wf.target_distance(0);
+}
+
+}  // namespace taut::router

@@ -1,0 +1,131 @@
+// Exact L1 shortest paths among polygonal obstacles by continuous Dijkstra (Mitchell,
+// "L1 shortest paths among polygonal obstacles in the plane", Algorithmica 1992, §2-§5).
+//
+//   L1Wavefront wf(normalized.domain, normalized.obstacles);
+//   Point s{0, 0}, t{900, 40};
+//   wf.run({&s, 1}, {&t, 1});
+//   if (auto d = wf.target_distance(0)) { auto path = wf.target_path(0); }
+//
+// What it computes. From one or more free source points a signal spreads through free space;
+// every obstacle vertex (more exactly: every (vertex, free wedge) pair, see below) gets its
+// exact L1 distance d(v) (an integer) and its parent in the shortest path tree, and every
+// target point gets its distance and a polygonal shortest path: source, bends at obstacle
+// vertices, target. With several sources the distances are to the nearest source.
+//
+// How (Mitchell §4). The wavefront is kept as "wavelets": ±45° segments dragged in one of the
+// four diagonal directions, each with a root r (a source or an obstacle vertex) and two track
+// rays (a horizontal ray, a vertical ray, or an obstacle edge the end slides along). Wavelets
+// sit in a priority queue keyed by the distance at which they next hit something; popping one
+// is an event:
+//   - hitting a vertex p inside the segment (Type II) or at an end (Type III) splits the wavelet
+//     into the part left of p (bounded by the vertical ray up from p, or by p's obstacle edge)
+//     and the part right of p; p, when reached for the first time, is labelled and becomes a
+//     root, its own wavelets covering the quadrants around it that the obstacle leaves free;
+//   - stop points (a track ray running into an obstacle edge, Type I) are not separate events
+//     here: the edge a track ray hits is found when the wavelet is made (ray shooting), and the
+//     wavelet's swept region is the intersection of the half-planes of its tracks and of those
+//     stop edges, which is exactly the region Mitchell's Type I event would produce;
+//   - clipping (§4 Propagate, case 4): when a vertex has already been hit from the same
+//     direction, the new wavelet keeps its left part only if its root lies left of every earlier
+//     hitter's root, and its right part only if its root lies below all of them (else that part
+//     is covered at least as cheaply by an earlier root). Mitchell also narrows the surviving
+//     part to the earlier root's vertical/horizontal; taut does not (it costs events, not
+//     correctness).
+//
+// Segment-dragging queries (§3): "which vertex does this wavelet hit first" is the vertex with
+// the smallest diagonal coordinate inside the wavelet's region, a convex region given by at most
+// five half-planes. A static k-d tree over the vertices answers it by branch and bound on the
+// diagonal coordinate (cost: proportional to the nodes whose boxes meet the region near the
+// answer; O(log n) when the region is wide, up to O(sqrt n) for thin regions). Track rays
+// (vertical or horizontal, up to 4 per wavelet) use the R-tree of obstacle edges with exact
+// rational hit points (geom/index.h windows; O(log n) per window).
+//
+// Degeneracy rule: symbolic shear. Real layouts put vertices on common horizontals, verticals
+// and diagonals; Mitchell assumes they do not (his GPA). taut runs the algorithm on the sheared
+// plane X = x + e*y, Y = y + e^2*x for an infinitesimal e > 0. The shear is linear, so it keeps
+// every incidence, touching point and visibility of the layout, and orientation signs; but no
+// two distinct points share X, Y, X+Y or X-Y, and no edge is parallel to an axis or a diagonal.
+// Every comparison of a coordinate or a distance is a lexicographic comparison of the integer
+// coefficients of 1, e, e^2 (e.g. "q is right of p's vertical" is (q.x, q.y) > (p.x, p.y)).
+// Distances carry the same three coefficients; the constant term is the exact L1 length, which
+// is what every interface returns (the shortest sheared path is a shortest path: both metrics
+// are continuous in e over the same finite set of visibility paths). Ties that remain (two
+// roots reaching a vertex at identical symbolic distance) go to the earlier-made wavelet.
+//
+// Free space and pinches: as in tests/oracle/l1_oracle.h. Obstacles are closed and the domain
+// side is a wall (the domain is merged into a frame obstacle so an obstacle vertex touching it
+// is a pinch); a path passes through a vertex only within one free wedge ("a wire may not pass
+// through a point where two blockages touch"), so the algorithm labels (vertex, wedge) pairs; a
+// query point at a pinch may start or end in any of its wedges.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "geom/types.h"
+
+namespace taut::router {
+
+struct WavefrontStats {
+  std::int64_t vertices = 0;      // distinct obstacle vertex points (frame included)
+  std::int64_t entities = 0;      // (vertex, free wedge) pairs, plus the run's query points
+  std::int64_t events = 0;        // wavelets popped from the queue
+  std::int64_t wavelets = 0;      // wavelets made
+  std::int64_t labelled = 0;      // entities reached
+  std::int64_t died = 0;          // wavelet parts dropped by clipping
+  std::int64_t drag_queries = 0;  // segment-dragging (k-d tree) queries
+  std::int64_t ray_queries = 0;   // track ray shots
+};
+
+class L1Wavefront {
+ public:
+  // Obstacles as geom::normalize_obstacles() returns them (integer vertices, outer rings
+  // counter-clockwise, holes clockwise, pairwise disjoint closed sets, weakly simple rings,
+  // inside the closed domain).
+  L1Wavefront(const geom::Box& domain, std::span<const geom::Polygon> obstacles);
+  ~L1Wavefront();
+  L1Wavefront(L1Wavefront&&) noexcept;
+  L1Wavefront& operator=(L1Wavefront&&) noexcept;
+
+  // A point is free when some piece of open free space touches it (same rule as the oracle):
+  // inside the domain, not inside an obstacle, not on an obstacle edge that lies flush on the
+  // domain side.
+  bool is_free(geom::Point p) const;
+
+  // One run: propagates from every free source (distance 0) until every free target is
+  // reached (stop_early) or the wavefront dies out (the whole distance field). Sources and
+  // targets that are not free are ignored (unreachable). A new run forgets the previous one.
+  void run(std::span<const geom::Point> sources, std::span<const geom::Point> targets,
+           bool stop_early = true);
+
+  // After run(): exact L1 distance of target i to the nearest source; nullopt = unreachable.
+  std::optional<std::int64_t> target_distance(std::size_t i) const;
+  // Index (into run's sources) of the source target i was reached from.
+  std::optional<std::size_t> target_source(std::size_t i) const;
+  // A shortest path source -> bends (obstacle vertices) -> target i, consecutive points
+  // distinct; {p} when the target equals its source; empty when unreachable.
+  std::vector<geom::Point> target_path(std::size_t i) const;
+  // Distance of obstacle vertex p (minimum over its wedges); nullopt when p is not an obstacle
+  // vertex or was not reached.
+  std::optional<std::int64_t> vertex_distance(geom::Point p) const;
+
+  const WavefrontStats& stats() const;
+  // Bytes held by the structures (for the benchmark's bytes-per-vertex figure).
+  std::size_t memory_bytes() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Convenience: the exact L1 distance between two points among the obstacles (nullopt when
+// either is not free or t is unreachable).
+std::optional<std::int64_t> l1_distance(const geom::Box& domain,
+                                        std::span<const geom::Polygon> obstacles, geom::Point s,
+                                        geom::Point t);
+
+}  // namespace taut::router
