@@ -25,12 +25,13 @@
 //     here: the edge a track ray hits is found when the wavelet is made (ray shooting), and the
 //     wavelet's swept region is the intersection of the half-planes of its tracks and of those
 //     stop edges, which is exactly the region Mitchell's Type I event would produce;
-//   - clipping (§4 Propagate, case 4): when a vertex has already been hit from the same
-//     direction, the new wavelet keeps its left part only if its root lies left of every earlier
-//     hitter's root, and its right part only if its root lies below all of them (else that part
-//     is covered at least as cheaply by an earlier root). Mitchell also narrows the surviving
-//     part to the earlier root's vertical/horizontal; taut does not (it costs events, not
-//     correctness).
+//   - clipping (§4 Propagate, case 4) is NOT applied yet: every part of a split wavelet goes
+//     on even when an earlier root reached the vertex from the same direction. That is always
+//     correct (a part only ever gives upper bounds that are real path lengths) but costs
+//     events. A first rule (drop the left part unless the root lies left of every earlier
+//     hitter, the right part unless below) was wrong when the earlier hitter had slid along an
+//     obstacle edge into the vertex (random seed 1003015); it stays in the code, switched off,
+//     until it is restated with a proof.
 //
 // Segment-dragging queries (§3): "which vertex does this wavelet hit first" is the vertex with
 // the smallest diagonal coordinate inside the wavelet's region, a convex region given by at most
