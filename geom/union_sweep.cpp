@@ -173,7 +173,9 @@ UnionResult union_loops(const std::vector<Loop>& loops, const Box& domain) {
   {
     namespace bg = boost::geometry;
     namespace bgi = boost::geometry::index;
-    using BPoint = bg::model::point<int, 2, bg::cs::cartesian>;
+    // int64 like index.cpp: the R*-tree sums coordinates (centroids), which overflows int at
+    // the wavefront's frame (domain +- 1, up to 2^30).
+    using BPoint = bg::model::point<std::int64_t, 2, bg::cs::cartesian>;
     using BBox = bg::model::box<BPoint>;
     using Value = std::pair<BBox, int>;
     std::vector<Value> values;
