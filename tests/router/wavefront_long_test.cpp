@@ -26,6 +26,7 @@ void sweep(std::uint64_t first, std::int64_t count) {
       list += " " + std::to_string(sw.failed_seeds[i]);
     ADD_FAILURE() << sw.failed_seeds.size() << " failing seed(s):" << list;
   }
+  EXPECT_EQ(sw.tally.invalid_inputs, 0) << "the generator made invalid polygons";
   EXPECT_EQ(sw.tally.stats_issue_seeds, 0) << "implausible WavefrontStats, first:\n"
                                            << sw.tally.first_stats_issue;
   EXPECT_EQ(sw.tally.instances, count);

@@ -2,6 +2,17 @@
 
 #include <unistd.h>
 
+#if defined(__SANITIZE_ADDRESS__)
+#define TAUT_WAVEFRONT_SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define TAUT_WAVEFRONT_SANITIZED 1
+#endif
+#endif
+#ifndef TAUT_WAVEFRONT_SANITIZED
+#define TAUT_WAVEFRONT_SANITIZED 0
+#endif
+
 #include <algorithm>
 #include <chrono>
 #include <csignal>
@@ -14,6 +25,7 @@
 #include <random>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include "geom/normalize.h"
 #include "geom/predicates.h"
@@ -72,6 +84,11 @@ std::string points_str(const std::vector<Point>& v) {
 }
 std::string dist_str(Dist d) { return d ? std::to_string(*d) : std::string("unreachable"); }
 std::string box_str(const Box& b) { return "{" + pt(b.lo) + ", " + pt(b.hi) + "}"; }
+std::string polygon_cpp(const Polygon& p) {
+  std::string s = "{" + ring_str(p.outer) + ", {";
+  for (std::size_t i = 0; i < p.holes.size(); ++i) s += (i ? ", " : "") + ring_str(p.holes[i]);
+  return s + "}}";
+}
 
 // ---- shapes -------------------------------------------------------------------------------
 
@@ -162,12 +179,13 @@ void fam_grid_rects(Rand& r, Draft& d, int scale) {
       const i64 x = g10(r, -1, 6), y = g10(r, -1, 6), t = g10(r, 1, 2);
       const i64 W = 2 * t + g10(r, 3, 4), H = 2 * t + g10(r, 3, 4);  // hole >= 30 wide
       b = {P(x, y), P(x + W, y + H)};
-      Polygon ring{rect_ring(x, y, x + W, y + H), {cw(rect_ring(x + t, y + t, x + W - t, y + H - t))}};
+      Polygon ring{rect_ring(x, y, x + W, y + H),
+                   {cw(rect_ring(x + t, y + t, x + W - t, y + H - t))}};
       d.inputs.push_back(ring);
       placed.push_back(b);
       d.special.push_back(P(x + W / 2, y + H / 2));
       if (r.chance(50)) {
-        const i64 hx = x + t, hy = y + t;  // hole lower-left
+        const i64 hx = x + t, hy = y + t;                         // hole lower-left
         d.inputs.push_back(rect(hx, hy + 10, hx + 10, hy + 20));  // touches the hole's left side
         d.special.push_back(P(hx + 15, hy + 5));
       }
@@ -188,14 +206,17 @@ void fam_grid_diagonal(Rand& r, Draft& d, int scale) {
     const i64 x = g10(r, 0, 9), y = g10(r, 0, 9);
     switch (r.range(0, 9)) {
       case 0: d.inputs.push_back(diamond(x, y, g10(r, 1, 3))); break;
-      case 1: d.inputs.push_back(tri45(x - 10, y - 10, g10(r, 1, 4), static_cast<int>(r.range(0, 3)))); break;
+      case 1:
+        d.inputs.push_back(tri45(x - 10, y - 10, g10(r, 1, 4), static_cast<int>(r.range(0, 3))));
+        break;
       case 2: {
         const i64 W = g10(r, 3, 5), H = g10(r, 3, 5);
         d.inputs.push_back({octagon_ring(x - 20, y - 20, x - 20 + W, y - 20 + H, 10), {}});
         break;
       }
       case 3: {  // sloped triangle on the grid
-        Ring t{P(x, y), P(x + g10(r, -4, 4), y + g10(r, -4, 4)), P(x + g10(r, -4, 4), y + g10(r, -4, 4))};
+        Ring t{P(x, y), P(x + g10(r, -4, 4), y + g10(r, -4, 4)),
+               P(x + g10(r, -4, 4), y + g10(r, -4, 4))};
         if (geom::twice_area(t) != 0) d.inputs.push_back({ccw(t), {}});
         break;
       }
@@ -228,10 +249,21 @@ void fam_grid_diagonal(Rand& r, Draft& d, int scale) {
       }
       case 8: {  // tip or 45-degree edge on the domain side
         const i64 rr = g10(r, 1, 2);
-        switch (r.range(0, 3)) {
+        switch (r.range(0, 4)) {
+          case 4: {  // a triangle touching a domain corner with one vertex: a pinch there
+            const Point c0 = r.chance(50) ? D.lo : D.hi;
+            const i64 sx = c0 == D.lo ? 1 : -1;
+            d.inputs.push_back({ccw({c0, P(c0.x + sx * 2 * rr, c0.y + sx * rr),
+                                     P(c0.x + sx * rr, c0.y + sx * 2 * rr)}),
+                                {}});
+            d.special.push_back(c0);
+            break;
+          }
           case 0: d.inputs.push_back(diamond(D.lo.x + rr, y, rr)); break;
           case 1: d.inputs.push_back(diamond(x, D.hi.y - rr, rr)); break;
-          case 2: d.inputs.push_back(tri45(D.hi.x - rr, y, rr, static_cast<int>(r.range(0, 3)))); break;
+          case 2:
+            d.inputs.push_back(tri45(D.hi.x - rr, y, rr, static_cast<int>(r.range(0, 3))));
+            break;
           default: d.inputs.push_back(tri45(x, D.lo.y, rr, static_cast<int>(r.range(0, 3)))); break;
         }
         break;
@@ -252,13 +284,32 @@ void fam_rings(Rand& r, Draft& d, int scale) {
   const int n = static_cast<int>(r.range(1, 2)) * scale;
   for (int i = 0; i < n; ++i) {
     const i64 x = g10(r, 0, 5), y = g10(r, 0, 5);
-    switch (r.range(0, 4)) {
+    switch (r.range(0, 6)) {
+      case 5: {  // a hole touching the shell at one point: a pinch between inside and outside
+        const i64 W = g10(r, 6, 8), R0 = g10(r, 1, 2);
+        const i64 cx = x + 10 * r.range(3, W / 10 - 3);
+        d.inputs.push_back({rect_ring(x, y, x + W, y + W), {cw(diamond_ring(cx, y + R0, R0))}});
+        d.special.push_back(P(cx, y + R0));
+        d.special.push_back(P(cx, y));  // the pinch
+        break;
+      }
+      case 6: {  // two holes touching each other at a point (tips of two diamonds)
+        const i64 W = g10(r, 6, 8);
+        const i64 cy = y + W / 2 - (W / 2) % 10;
+        d.inputs.push_back({rect_ring(x, y, x + W, y + W),
+                            {cw(diamond_ring(x + 20, cy, 10)), cw(diamond_ring(x + 40, cy, 10))}});
+        d.special.push_back(P(x + 20, cy));
+        d.special.push_back(P(x + 40, cy));
+        d.special.push_back(P(x + 30, cy));  // the pinch
+        break;
+      }
       case 0: {  // rect ring with contents
         const i64 t = g10(r, 1, 2), W = 2 * t + g10(r, 3, 4), H = 2 * t + g10(r, 3, 4);
-        d.inputs.push_back({rect_ring(x, y, x + W, y + H), {cw(rect_ring(x + t, y + t, x + W - t, y + H - t))}});
+        d.inputs.push_back(
+            {rect_ring(x, y, x + W, y + H), {cw(rect_ring(x + t, y + t, x + W - t, y + H - t))}});
         d.special.push_back(P(x + W / 2, y + H / 2));
         d.special.push_back(P(x + t, y + t));  // hole corner
-        if (r.chance(50)) {  // a rect in the hole touching the hole's bottom side
+        if (r.chance(50)) {                    // a rect in the hole touching the hole's bottom side
           d.inputs.push_back(rect(x + t + 10, y + t, x + t + 20, y + t + 10));
         } else if (r.chance(50)) {  // a diamond floating in the hole
           d.inputs.push_back(diamond(x + W / 2 - 5, y + H / 2 - 5, 5));
@@ -267,16 +318,17 @@ void fam_rings(Rand& r, Draft& d, int scale) {
       }
       case 1: {  // a single pin walled in by a tight ring
         const i64 cx = x + 15, cy = y + 15;
-        d.inputs.push_back({rect_ring(cx - 15, cy - 15, cx + 15, cy + 15), {cw(rect_ring(cx - 5, cy - 5, cx + 5, cy + 5))}});
+        d.inputs.push_back({rect_ring(cx - 15, cy - 15, cx + 15, cy + 15),
+                            {cw(rect_ring(cx - 5, cy - 5, cx + 5, cy + 5))}});
         d.special.push_back(P(cx, cy));
         break;
       }
       case 2: {  // C ring from four walls: gap 0 (closed, walls touch) or 10 (open)
         const i64 W = g10(r, 4, 6), H = g10(r, 4, 6);
         const i64 gap = r.chance(50) ? 0 : 10;
-        d.inputs.push_back(rect(x, y, x + W, y + 10));               // bottom
-        d.inputs.push_back(rect(x, y + H - 10, x + W, y + H));       // top
-        d.inputs.push_back(rect(x, y + 10, x + 10, y + H - 10));     // left
+        d.inputs.push_back(rect(x, y, x + W, y + 10));                          // bottom
+        d.inputs.push_back(rect(x, y + H - 10, x + W, y + H));                  // top
+        d.inputs.push_back(rect(x, y + 10, x + 10, y + H - 10));                // left
         d.inputs.push_back(rect(x + W - 10, y + 10 + gap, x + W, y + H - 10));  // right, gap below
         d.special.push_back(P(x + W / 2, y + H / 2));
         d.special.push_back(P(x + W - 5, y + 10));
@@ -284,17 +336,21 @@ void fam_rings(Rand& r, Draft& d, int scale) {
       }
       case 3: {  // ring closed by two L shapes touching at corners only: pinches, no way in
         const i64 W = g10(r, 4, 6), H = g10(r, 4, 6);
-        d.inputs.push_back({ccw({P(x, y), P(x + W - 10, y), P(x + W - 10, y + 10), P(x + 10, y + 10),
-                                 P(x + 10, y + H - 10), P(x, y + H - 10)}), {}});
-        d.inputs.push_back({ccw({P(x + W - 10, y + 10), P(x + W, y + 10), P(x + W, y + H), P(x + 10, y + H),
-                                 P(x + 10, y + H - 10), P(x + W - 10, y + H - 10)}), {}});
+        d.inputs.push_back({ccw({P(x, y), P(x + W - 10, y), P(x + W - 10, y + 10),
+                                 P(x + 10, y + 10), P(x + 10, y + H - 10), P(x, y + H - 10)}),
+                            {}});
+        d.inputs.push_back(
+            {ccw({P(x + W - 10, y + 10), P(x + W, y + 10), P(x + W, y + H), P(x + 10, y + H),
+                  P(x + 10, y + H - 10), P(x + W - 10, y + H - 10)}),
+             {}});
         d.special.push_back(P(x + W / 2, y + H / 2));
         break;
       }
       default: {  // diamond ring with a diamond inside the hole touching it at a tip
         const i64 R = g10(r, 3, 4);
-        d.inputs.push_back({diamond_ring(x + 40, y + 40, R), {cw(diamond_ring(x + 40, y + 40, R - 10))}});
-        const i64 h = R - 10;  // hole radius
+        d.inputs.push_back(
+            {diamond_ring(x + 40, y + 40, R), {cw(diamond_ring(x + 40, y + 40, R - 10))}});
+        const i64 h = R - 10;                                    // hole radius
         d.inputs.push_back(diamond(x + 40 + h - 5, y + 40, 5));  // tip on the hole's right tip
         d.special.push_back(P(x + 40 - 5, y + 40));
         break;
@@ -391,10 +447,22 @@ void fam_gen(Rand& r, Draft& d, io::GenKind kind, int scale) {
   o.nets = 3;
   o.seed = r.next() % 1000000007ULL;
   switch (kind) {
-    case io::GenKind::Rects: o.size = r.range(3, 40) * scale; d.grid = 50; break;
-    case io::GenKind::Polygons: o.size = r.range(3, 40) * scale; d.grid = 1; break;
-    case io::GenKind::Maze: o.size = r.range(32, 72) * scale; d.grid = 50; break;
-    case io::GenKind::Degenerate: o.size = r.range(3, 40) * scale; d.grid = 50; break;
+    case io::GenKind::Rects:
+      o.size = r.range(3, 40) * scale;
+      d.grid = 50;
+      break;
+    case io::GenKind::Polygons:
+      o.size = r.range(3, 40) * scale;
+      d.grid = 1;
+      break;
+    case io::GenKind::Maze:
+      o.size = r.range(32, 72) * scale;
+      d.grid = 50;
+      break;
+    case io::GenKind::Degenerate:
+      o.size = r.range(3, 40) * scale;
+      d.grid = 50;
+      break;
   }
   const io::Layout layout = io::generate_layout(o);
   d.inputs = io::blockage_polygons(layout);
@@ -436,8 +504,9 @@ std::vector<Point> make_candidates(Rand& r, const Box& dom, const std::vector<Po
     }
   }
   auto in = [&](const Box& b, i64 margin, i64 step) {
-    return P(snap(r.range(b.lo.x - margin, b.hi.x + margin), step),
-             snap(r.range(b.lo.y - margin, b.hi.y + margin), step));
+    auto clamp = [](i64 v) { return std::clamp<i64>(v, -geom::kMaxCoord, geom::kMaxCoord); };
+    return P(clamp(snap(r.range(b.lo.x - margin, b.hi.x + margin), step)),
+             clamp(snap(r.range(b.lo.y - margin, b.hi.y + margin), step)));
   };
   for (int k = 0; k < 7; ++k) out.push_back(in(r.chance(70) ? content : dom, g, g));
   for (int k = 0; k < 3; ++k) out.push_back(in(content, 0, std::max<i64>(1, g / 2)));
@@ -448,7 +517,8 @@ std::vector<Point> make_candidates(Rand& r, const Box& dom, const std::vector<Po
   std::vector<std::pair<Point, Point>> edges;
   for (const Polygon& p : obs) {
     auto add = [&](const Ring& ring) {
-      for (std::size_t i = 0; i < ring.size(); ++i) edges.push_back({ring[i], ring[(i + 1) % ring.size()]});
+      for (std::size_t i = 0; i < ring.size(); ++i)
+        edges.push_back({ring[i], ring[(i + 1) % ring.size()]});
     };
     add(p.outer);
     for (const Ring& h : p.holes) add(h);
@@ -480,8 +550,8 @@ std::vector<Point> make_candidates(Rand& r, const Box& dom, const std::vector<Po
 struct Scene {
   Box domain;
   std::vector<Polygon> obstacles;
-  std::set<Point> vertices;     // distinct obstacle vertices
-  std::int64_t wedge_sum = 0;   // sum over vertices of the reference's wedge count
+  std::set<Point> vertices;    // distinct obstacle vertices
+  std::int64_t wedge_sum = 0;  // sum over vertices of the reference's wedge count
   bool is_vertex(Point p) const { return vertices.count(p) != 0; }
   bool is_domain_corner(Point p) const {
     return (p.x == domain.lo.x || p.x == domain.hi.x) && (p.y == domain.lo.y || p.y == domain.hi.y);
@@ -502,11 +572,7 @@ std::string scene_cpp(const Scene& sc) {
   os << "  const Box domain" << box_str(sc.domain) << ";\n";
   os << "  const std::vector<Polygon> obstacles{  // " << sc.obstacles.size() << " obstacles, "
      << sc.vertices.size() << " distinct vertices\n";
-  for (const Polygon& p : sc.obstacles) {
-    os << "      {" << ring_str(p.outer) << ", {";
-    for (std::size_t i = 0; i < p.holes.size(); ++i) os << (i ? ", " : "") << ring_str(p.holes[i]);
-    os << "}},\n";
-  }
+  for (const Polygon& p : sc.obstacles) os << "      " << polygon_cpp(p) << ",\n";
   os << "  };\n";
   return os.str();
 }
@@ -525,8 +591,10 @@ std::string query_cpp(const Query& q) {
   if (q.run) {
     os << "  const std::vector<Point> sources" << points_str(q.sources) << ";\n";
     os << "  const std::vector<Point> targets" << points_str(q.targets) << ";\n";
-    os << "  wf.run(sources, targets, /*stop_early=*/" << (q.stop_early ? "true" : "false") << ");\n";
-    if (!q.vertex_points.empty()) os << "  vertex_distance at " << points_str(q.vertex_points) << "\n";
+    os << "  wf.run(sources, targets, /*stop_early=*/" << (q.stop_early ? "true" : "false")
+       << ");\n";
+    if (!q.vertex_points.empty())
+      os << "  vertex_distance at " << points_str(q.vertex_points) << "\n";
   }
   return os.str();
 }
@@ -553,7 +621,8 @@ std::string check_query(const Scene& sc, const L1Reference& ref, L1Wavefront& wf
       ++tally->free_checks;
       tally->not_free += !want;
     }
-    if (log) *log << "  is_free " << pt(p) << ": reference " << want << ", wavefront " << got << "\n";
+    if (log)
+      *log << "  is_free " << pt(p) << ": reference " << want << ", wavefront " << got << "\n";
     if (want != got)
       bad << "is_free" << pt(p) << ": reference " << want << " (" << wedges_str(ref, p)
           << "), wavefront " << got << "\n";
@@ -591,6 +660,13 @@ std::string check_query(const Scene& sc, const L1Reference& ref, L1Wavefront& wf
   if (tally) {
     ++tally->runs;
     tally->multi_source_runs += q.sources.size() > 1;
+    for (const Point s : q.sources) {
+      const auto ws = ref.wedges_at(s);
+      if (ws.size() >= 2)
+        ++tally->pinch_sources;
+      else if (ws.size() == 1 && !ws[0].full)
+        ++tally->boundary_sources;
+    }
   }
   bool split = false;
   for (std::size_t k = 0; k < q.targets.size(); ++k) {
@@ -606,9 +682,14 @@ std::string check_query(const Scene& sc, const L1Reference& ref, L1Wavefront& wf
       ++tally->comparisons;
       const auto ws = ref.wedges_at(t);
       if (!ws.empty()) {
-        if (best[k]) ++tally->reachable; else ++tally->unreachable;
-        if (ws.size() >= 2) ++tally->pinch_points;
-        else if (!ws[0].full) ++tally->boundary_points;
+        if (best[k])
+          ++tally->reachable;
+        else
+          ++tally->unreachable;
+        if (ws.size() >= 2)
+          ++tally->pinch_points;
+        else if (!ws[0].full)
+          ++tally->boundary_points;
         split |= !best[k];
       }
       for (const Point s : q.sources) tally->source_is_target += s == t && ws.size() > 0;
@@ -622,15 +703,18 @@ std::string check_query(const Scene& sc, const L1Reference& ref, L1Wavefront& wf
             << ", a shortest path " << (rp ? points_str(*rp) : std::string("(none?)"));
       }
       bad << "\n    wavefront: distance " << dist_str(got) << " from source "
-          << (src ? std::to_string(*src) : std::string("-")) << ", path " << points_str(path) << "\n";
+          << (src ? std::to_string(*src) : std::string("-")) << ", path " << points_str(path)
+          << "\n";
     };
     if (got != best[k]) {
       fail("distance differs");
       continue;
     }
     if (!best[k]) {
-      if (src) fail("unreachable, but target_source is set");
-      else if (!path.empty()) fail("unreachable, but the path is not empty");
+      if (src)
+        fail("unreachable, but target_source is set");
+      else if (!path.empty())
+        fail("unreachable, but the path is not empty");
       continue;
     }
     if (!src || *src >= q.sources.size()) {
@@ -638,8 +722,8 @@ std::string check_query(const Scene& sc, const L1Reference& ref, L1Wavefront& wf
       continue;
     }
     if ((*per_source[*src])[k] != best[k]) {
-      fail("target_source " + std::to_string(*src) + " does not achieve the distance (from it: " +
-           dist_str((*per_source[*src])[k]) + ")");
+      fail("target_source " + std::to_string(*src) +
+           " does not achieve the distance (from it: " + dist_str((*per_source[*src])[k]) + ")");
       continue;
     }
     if (path.empty()) {
@@ -677,13 +761,14 @@ std::string check_query(const Scene& sc, const L1Reference& ref, L1Wavefront& wf
     const Dist checked = ref.check_path(path);
     if (checked != best[k])
       fail("L1Reference::check_path gives " +
-           (checked ? std::to_string(*checked) : std::string("nullopt (a segment or bend is not allowed)")));
+           (checked ? std::to_string(*checked)
+                    : std::string("nullopt (a segment or bend is not allowed)")));
   }
   if (tally && split && any_free_source) ++tally->split_runs;
 
   // vertex_distance: exact after a full run; after an early stop a reported value is never
   // below the true distance.
-  i64 reached_vertices = 0;
+  std::set<Point> reached_vertices;
   for (std::size_t i = 0; i < q.vertex_points.size(); ++i) {
     const Point v = q.vertex_points[i];
     const std::size_t k = q.targets.size() + i;
@@ -692,10 +777,10 @@ std::string check_query(const Scene& sc, const L1Reference& ref, L1Wavefront& wf
       *log << "  vertex " << pt(v) << " (" << wedges_str(ref, v) << "): reference "
            << dist_str(best[k]) << ", wavefront " << dist_str(got) << "\n";
     if (tally) ++tally->vertex_checks;
-    const std::string head = "vertex_distance" + pt(v) + " (" + wedges_str(ref, v) + ", stop_early " +
-                             (q.stop_early ? "true" : "false") + "): ";
+    const std::string head = "vertex_distance" + pt(v) + " (" + wedges_str(ref, v) +
+                             ", stop_early " + (q.stop_early ? "true" : "false") + "): ";
     if (sc.is_vertex(v)) {
-      reached_vertices += best[k].has_value();
+      if (best[k]) reached_vertices.insert(v);
       if (!q.stop_early && got != best[k])
         bad << head << "reference " << dist_str(best[k]) << ", wavefront " << dist_str(got) << "\n";
       if (q.stop_early && got && (!best[k] || *got < *best[k]))
@@ -721,12 +806,12 @@ std::string check_query(const Scene& sc, const L1Reference& ref, L1Wavefront& wf
   if (st.labelled > st.entities) stats_bad << "stats: labelled > entities: " << stats_str() << "\n";
   if (st.entities < sc.wedge_sum)
     stats_bad << "stats: entities below the " << sc.wedge_sum
-        << " (vertex, wedge) pairs of the obstacle vertices: " << stats_str() << "\n";
+              << " (vertex, wedge) pairs of the obstacle vertices: " << stats_str() << "\n";
   if (!q.stop_early && any_free_source && !sc.obstacles.empty() && st.events == 0)
     stats_bad << "stats: no event in a full run among obstacles: " << stats_str() << "\n";
-  if (!q.stop_early && st.labelled < reached_vertices)
-    stats_bad << "stats: labelled below the " << reached_vertices << " reachable vertices checked: "
-        << stats_str() << "\n";
+  if (!q.stop_early && st.labelled < static_cast<i64>(reached_vertices.size()))
+    stats_bad << "stats: labelled below the " << reached_vertices.size()
+              << " reachable vertices checked: " << stats_str() << "\n";
   if (soft && !stats_bad.str().empty()) *soft += stats_bad.str();
   return bad.str();
 }
@@ -764,8 +849,9 @@ std::string shrink(const Scene& original, const Query& original_q, bool soft) {
   std::vector<Polygon> obs = original.obstacles;
   Query q = original_q;
   std::string failure = failure_on(original.domain, obs, q, soft);
-  if (failure.empty()) return "  (the failure does not reproduce on fresh engines: it depends on "
-                              "earlier runs on the same L1Wavefront object)\n";
+  if (failure.empty())
+    return "  (the failure does not reproduce on fresh engines: it depends on "
+           "earlier runs on the same L1Wavefront object)\n";
   int budget = 800, attempts = 0;
   auto attempt = [&](const std::vector<Polygon>& o, const Query& qq) {
     if (budget-- <= 0) return false;
@@ -799,8 +885,10 @@ std::string shrink(const Scene& original, const Query& original_q, bool soft) {
     for (std::size_t i = 0; i < obs.size();) {
       std::vector<Polygon> o = obs;
       o.erase(o.begin() + static_cast<std::ptrdiff_t>(i));
-      if (attempt(o, q)) changed = true;
-      else ++i;
+      if (attempt(o, q))
+        changed = true;
+      else
+        ++i;
     }
     // A hole can go when nothing else lies in it.
     for (std::size_t i = 0; i < obs.size(); ++i)
@@ -812,8 +900,10 @@ std::string shrink(const Scene& original, const Query& original_q, bool soft) {
               if (geom::locate(v, obs[i].holes[h]) != geom::Location::Outside) empty = false;
         std::vector<Polygon> o = obs;
         o[i].holes.erase(o[i].holes.begin() + static_cast<std::ptrdiff_t>(h));
-        if (empty && attempt(o, q)) changed = true;
-        else ++h;
+        if (empty && attempt(o, q))
+          changed = true;
+        else
+          ++h;
       }
   }
   reduce_query();
@@ -822,7 +912,8 @@ std::string shrink(const Scene& original, const Query& original_q, bool soft) {
   std::ostringstream os;
   os << "  shrunk (" << attempts << " attempts) to:\n"
      << scene_cpp(sc) << "  L1Wavefront wf(domain, obstacles);\n"
-     << query_cpp(q) << "  failure:\n" << failure;
+     << query_cpp(q) << "  failure:\n"
+     << failure;
   return os.str();
 }
 
@@ -830,7 +921,9 @@ std::string instance_report(const WavefrontCase& c, const Scene& sc, const Query
                             const std::string& failure, bool do_shrink, bool soft = false) {
   std::ostringstream os;
   os << "seed " << c.seed << " (family " << c.family << "): wavefront and reference disagree\n"
-     << failure << "  instance:\n" << scene_cpp(sc) << "  query:\n" << query_cpp(q);
+     << failure << "  instance:\n"
+     << scene_cpp(sc) << "  query:\n"
+     << query_cpp(q);
   if (do_shrink) os << shrink(sc, q, soft);
   os << "  rerun alone: TAUT_WAVEFRONT_SEED=" << c.seed << "\n";
   return os.str();
@@ -841,11 +934,15 @@ std::string instance_report(const WavefrontCase& c, const Scene& sc, const Query
 char g_crash_message[200];
 volatile std::size_t g_crash_length = 0;
 
-extern "C" void on_crash_signal(int sig) {
+void write_crash_message() {
   if (g_crash_length > 0) {
     const ssize_t ignored = ::write(2, g_crash_message, g_crash_length);
     (void)ignored;
   }
+}
+
+extern "C" void on_crash_signal(int sig) {
+  write_crash_message();
   std::signal(sig, SIG_DFL);
   std::raise(sig);
 }
@@ -855,6 +952,12 @@ void install_crash_handler() {
   if (installed) return;
   installed = true;
   for (int sig : {SIGSEGV, SIGABRT, SIGFPE, SIGBUS, SIGILL}) std::signal(sig, on_crash_signal);
+  // AddressSanitizer and UBSan (-fno-sanitize-recover) end the process without a signal (and
+  // without calling a death callback for UBSan), so say how to find the seed.
+  if (TAUT_WAVEFRONT_SANITIZED && !std::getenv("TAUT_WAVEFRONT_TRACE"))
+    std::fprintf(stderr,
+                 "(sanitizer build: if a sanitizer report ends this run, rerun with "
+                 "TAUT_WAVEFRONT_TRACE=1 to see the seed it died on)\n");
 }
 
 void set_crash_seed(std::optional<u64> seed) {
@@ -862,11 +965,11 @@ void set_crash_seed(std::optional<u64> seed) {
     g_crash_length = 0;
     return;
   }
-  const int n = std::snprintf(g_crash_message, sizeof g_crash_message,
-                              "\n*** crashed while checking wavefront seed %llu (rerun alone: "
-                              "TAUT_WAVEFRONT_SEED=%llu)\n",
-                              static_cast<unsigned long long>(*seed),
-                              static_cast<unsigned long long>(*seed));
+  const int n =
+      std::snprintf(g_crash_message, sizeof g_crash_message,
+                    "\n*** crashed while checking wavefront seed %llu (rerun alone: "
+                    "TAUT_WAVEFRONT_SEED=%llu)\n",
+                    static_cast<unsigned long long>(*seed), static_cast<unsigned long long>(*seed));
   g_crash_length = n > 0 ? static_cast<std::size_t>(n) : 0;
 }
 
@@ -893,6 +996,12 @@ void WavefrontTally::add(const WavefrontTally& o) {
   source_is_target += o.source_is_target;
   split_runs += o.split_runs;
   domain_corner_bends += o.domain_corner_bends;
+  pinch_sources += o.pinch_sources;
+  boundary_sources += o.boundary_sources;
+  transformed += o.transformed;
+  invalid_inputs += o.invalid_inputs;
+  generator_errors += o.generator_errors;
+  huge += o.huge;
   stats_issue_seeds += o.stats_issue_seeds;
   if (first_stats_issue.empty()) first_stats_issue = o.first_stats_issue;
   reference_seconds += o.reference_seconds;
@@ -909,6 +1018,9 @@ std::string WavefrontTally::summary() const {
      << " at pinches, " << boundary_points << " on walls, " << source_is_target
      << " equal to a source), " << paths << " paths (" << bends << " bends), " << vertex_checks
      << " vertex distances, " << free_checks << " is_free (" << not_free << " not free); "
+     << pinch_sources << " sources at pinches, " << boundary_sources << " on walls; " << transformed
+     << " instances turned or mirrored, " << huge << " with huge coordinates; " << invalid_inputs
+     << " invalid generated polygons dropped, " << generator_errors << " generator errors; "
      << domain_corner_bends << " path bends at a domain corner; " << stats_issue_seeds
      << " seeds with implausible stats; time in runs: reference " << reference_seconds
      << " s, wavefront " << wavefront_seconds << " s; families:";
@@ -923,21 +1035,101 @@ WavefrontCase make_wavefront_case(std::uint64_t seed) {
   WavefrontCase c;
   c.seed = seed;
   switch (seed % 9) {
-    case 0: c.family = "gen-rects"; fam_gen(r, d, io::GenKind::Rects, scale); break;
-    case 1: c.family = "gen-polygons"; fam_gen(r, d, io::GenKind::Polygons, scale); break;
-    case 2: c.family = "gen-maze"; fam_gen(r, d, io::GenKind::Maze, scale); break;
-    case 3: c.family = "gen-degenerate"; fam_gen(r, d, io::GenKind::Degenerate, scale); break;
-    case 4: c.family = "grid-rects"; fam_grid_rects(r, d, scale); break;
-    case 5: c.family = "grid-diagonal"; fam_grid_diagonal(r, d, scale); break;
-    case 6: c.family = "rings"; fam_rings(r, d, scale); break;
-    case 7: c.family = "pinches"; fam_pinches(r, d, scale); break;
-    default: c.family = "fine"; fam_fine(r, d, scale); break;
+    case 0:
+      c.family = "gen-rects";
+      fam_gen(r, d, io::GenKind::Rects, scale);
+      break;
+    case 1:
+      c.family = "gen-polygons";
+      fam_gen(r, d, io::GenKind::Polygons, scale);
+      break;
+    case 2:
+      c.family = "gen-maze";
+      fam_gen(r, d, io::GenKind::Maze, scale);
+      break;
+    case 3:
+      c.family = "gen-degenerate";
+      fam_gen(r, d, io::GenKind::Degenerate, scale);
+      break;
+    case 4:
+      c.family = "grid-rects";
+      fam_grid_rects(r, d, scale);
+      break;
+    case 5:
+      c.family = "grid-diagonal";
+      fam_grid_diagonal(r, d, scale);
+      break;
+    case 6:
+      c.family = "rings";
+      fam_rings(r, d, scale);
+      break;
+    case 7:
+      c.family = "pinches";
+      fam_pinches(r, d, scale);
+      break;
+    default:
+      c.family = "fine";
+      fam_fine(r, d, scale);
+      break;
+  }
+  // One of the eight symmetries of the square (the families have preferred directions; the
+  // wavefront has four diagonal directions to get right), and now and then coordinates scaled
+  // up towards the limit 2^30 - 1 and moved off the origin.
+  auto map_all = [&](auto&& f) {
+    for (Polygon& p : d.inputs) {
+      for (Point& v : p.outer) v = f(v);
+      for (Ring& h : p.holes)
+        for (Point& v : h) v = f(v);
+    }
+    for (Point& v : d.special) v = f(v);
+    const Point a = f(d.domain.lo), b = f(d.domain.hi);
+    d.domain = {P(std::min(a.x, b.x), std::min(a.y, b.y)),
+                P(std::max(a.x, b.x), std::max(a.y, b.y))};
+  };
+  const int sym = static_cast<int>(r.range(0, 7));
+  if (sym != 0) {
+    map_all([&](Point p) {
+      i64 x = p.x, y = p.y;
+      if (sym & 1) x = -x;
+      if (sym & 2) y = -y;
+      if (sym & 4) std::swap(x, y);
+      return P(x, y);
+    });
+    c.transformed = true;
+  }
+  if (r.chance(10)) {
+    i64 m = 1;
+    map_all([&](Point p) {
+      m = std::max<i64>({m, std::abs(i64{p.x}), std::abs(i64{p.y})});
+      return p;
+    });
+    const i64 f = std::max<i64>(1, geom::kMaxCoord / (2 * m));
+    const i64 room = geom::kMaxCoord - f * m;  // |coordinate| <= f * m before the shift
+    const i64 tx = r.chance(50) ? room : r.range(-room, room), ty = r.range(-room, room);
+    map_all([&](Point p) { return P(f * p.x + tx, f * p.y + ty); });
+    d.grid *= f;
+    c.huge = true;
   }
   // Every family makes valid polygons; this only guards the contract of normalize_obstacles.
   std::vector<Polygon> valid;
-  for (const Polygon& p : d.inputs)
-    if (geom::validate_polygon(p).empty()) valid.push_back(p);
-  const geom::NormalizedObstacles n = geom::normalize_obstacles(valid, d.domain);
+  for (const Polygon& p : d.inputs) {
+    if (geom::validate_polygon(p).empty())
+      valid.push_back(p);
+    else
+      ++c.invalid_inputs;
+  }
+  geom::NormalizedObstacles n;
+  try {
+    n = geom::normalize_obstacles(valid, d.domain);
+  } catch (const std::exception& e) {
+    std::ostringstream os;
+    os << "normalize_obstacles threw \"" << e.what() << "\" on the generated input (not a "
+       << "wavefront bug):\n  const Box domain" << box_str(d.domain) << ";\n"
+       << "  const std::vector<Polygon> inputs{\n";
+    for (const Polygon& p : valid) os << "      " << polygon_cpp(p) << ",\n";
+    os << "  };\n";
+    throw std::runtime_error(os.str());
+  }
   c.domain = n.domain;
   c.obstacles = n.obstacles;
   c.candidates = make_candidates(r, c.domain, c.obstacles, d.special, d.grid);
@@ -947,12 +1139,19 @@ WavefrontCase make_wavefront_case(std::uint64_t seed) {
 
 std::string check_wavefront_seed(std::uint64_t seed, WavefrontTally& tally, bool verbose,
                                  bool shrink_failures) {
-  const WavefrontCase c = make_wavefront_case(seed);
+  WavefrontCase c;
+  try {
+    c = make_wavefront_case(seed);
+  } catch (const std::exception& e) {
+    ++tally.generator_errors;
+    return "seed " + std::to_string(seed) + ": " + e.what();
+  }
   std::ostream* log = verbose ? &std::cout : nullptr;
   const std::vector<std::string> problems = oracle::check_obstacles(c.obstacles, c.domain);
   if (!problems.empty())
     return "seed " + std::to_string(seed) + " (family " + c.family +
-           "): normalize_obstacles broke its invariants (not a wavefront bug): " + problems[0] + "\n";
+           "): normalize_obstacles broke its invariants (not a wavefront bug): " + problems[0] +
+           "\n";
   const L1Reference ref(c.domain, c.obstacles);
   if (!ref.problems().empty())
     return "seed " + std::to_string(seed) + " (family " + c.family +
@@ -960,11 +1159,16 @@ std::string check_wavefront_seed(std::uint64_t seed, WavefrontTally& tally, bool
            ref.problems()[0] + "\n";
   const Scene sc = make_scene(c.domain, c.obstacles, ref);
   ++tally.instances;
+  tally.transformed += c.transformed;
+  tally.invalid_inputs += c.invalid_inputs;
+  tally.huge += c.huge;
   ++tally.families[c.family];
   tally.obstacle_vertices += static_cast<i64>(sc.vertices.size());
   tally.max_vertices = std::max<i64>(tally.max_vertices, static_cast<i64>(sc.vertices.size()));
   if (log) {
-    *log << "seed " << seed << " family " << c.family << "\n" << scene_cpp(sc);
+    *log << "seed " << seed << " family " << c.family << (c.transformed ? " (turned/mirrored)" : "")
+         << (c.huge ? " (huge coordinates)" : "") << "\n"
+         << scene_cpp(sc);
     *log << "  candidates " << points_str(c.candidates) << " (first " << c.special << " special)\n";
     log->flush();
   }
@@ -975,9 +1179,9 @@ std::string check_wavefront_seed(std::uint64_t seed, WavefrontTally& tally, bool
   } catch (const std::exception& e) {
     Query none;
     none.run = false;
-    return instance_report(c, sc, none,
-                           std::string("exception from the L1Wavefront constructor: ") + e.what() + "\n",
-                           false);
+    return instance_report(
+        c, sc, none, std::string("exception from the L1Wavefront constructor: ") + e.what() + "\n",
+        false);
   }
   Rand r(seed ^ 0x5deece66dULL);
   bool stats_noted = false;
@@ -999,8 +1203,10 @@ std::string check_wavefront_seed(std::uint64_t seed, WavefrontTally& tally, bool
   Query q0;
   q0.run = false;
   q0.free_points = c.candidates;
-  q0.free_points.push_back(P(c.domain.lo.x - 1, c.domain.lo.y));  // just outside the domain
-  q0.free_points.push_back(P(c.domain.hi.x, c.domain.hi.y + 1));
+  if (c.domain.lo.x > -geom::kMaxCoord)  // just outside the domain
+    q0.free_points.push_back(P(c.domain.lo.x - 1, c.domain.lo.y));
+  if (c.domain.hi.y < geom::kMaxCoord)
+    q0.free_points.push_back(P(c.domain.hi.x, c.domain.hi.y + 1));
   if (auto f = check(q0); !f.empty()) return f;
   std::vector<Point> free_pts, blocked, special_free;
   for (std::size_t i = 0; i < c.candidates.size(); ++i) {
@@ -1047,7 +1253,8 @@ std::string check_wavefront_seed(std::uint64_t seed, WavefrontTally& tally, bool
   add_targets(b, 3, 7);
   b.stop_early = r.chance(60);
   if (!b.stop_early)
-    for (int k = 0; k < 8 && !all_vertices.empty(); ++k) b.vertex_points.push_back(r.pick(all_vertices));
+    for (int k = 0; k < 8 && !all_vertices.empty(); ++k)
+      b.vertex_points.push_back(r.pick(all_vertices));
   if (auto f = check(b); !f.empty()) return f;
 
   // C (now and then): nothing can start (no free source) or nothing is asked.
@@ -1077,15 +1284,17 @@ std::string check_wavefront_seed(std::uint64_t seed, WavefrontTally& tally, bool
     } catch (const std::exception& e) {
       err = e.what();
     }
-    if (log) *log << "l1_distance" << pt(s) << pt(t) << ": reference " << dist_str(want)
-                  << ", wavefront " << dist_str(got) << "\n";
+    if (log)
+      *log << "l1_distance" << pt(s) << pt(t) << ": reference " << dist_str(want) << ", wavefront "
+           << dist_str(got) << "\n";
     if (got != want || !err.empty()) {
       Query q;
       q.sources = {s};
       q.targets = {t};
       return instance_report(c, sc, q,
-                             "router::l1_distance" + pt(s) + pt(t) + ": reference " + dist_str(want) +
-                                 ", l1_distance " + dist_str(got) + (err.empty() ? "" : " exception " + err) + "\n",
+                             "router::l1_distance" + pt(s) + pt(t) + ": reference " +
+                                 dist_str(want) + ", l1_distance " + dist_str(got) +
+                                 (err.empty() ? "" : " exception " + err) + "\n",
                              shrink_failures);
     }
   }
@@ -1093,7 +1302,8 @@ std::string check_wavefront_seed(std::uint64_t seed, WavefrontTally& tally, bool
   return "";
 }
 
-WavefrontSweep run_wavefront_seeds(const std::vector<std::uint64_t>& seeds, std::size_t max_reports) {
+WavefrontSweep run_wavefront_seeds(const std::vector<std::uint64_t>& seeds,
+                                   std::size_t max_reports) {
   install_crash_handler();
   const bool trace = std::getenv("TAUT_WAVEFRONT_TRACE") != nullptr;
   WavefrontSweep out;
@@ -1101,7 +1311,8 @@ WavefrontSweep run_wavefront_seeds(const std::vector<std::uint64_t>& seeds, std:
   for (const u64 seed : seeds) {
     set_crash_seed(seed);
     if (trace) std::fprintf(stderr, "wavefront seed %llu\n", static_cast<unsigned long long>(seed));
-    const std::string f = check_wavefront_seed(seed, out.tally, false, out.reports.size() < max_reports);
+    const std::string f =
+        check_wavefront_seed(seed, out.tally, false, out.reports.size() < max_reports);
     if (!f.empty()) {
       out.failed_seeds.push_back(seed);
       if (out.reports.size() < max_reports) out.reports.push_back(f);
@@ -1112,7 +1323,8 @@ WavefrontSweep run_wavefront_seeds(const std::vector<std::uint64_t>& seeds, std:
   return out;
 }
 
-WavefrontSweep run_wavefront_sweep(std::uint64_t first, std::int64_t count, std::size_t max_reports) {
+WavefrontSweep run_wavefront_sweep(std::uint64_t first, std::int64_t count,
+                                   std::size_t max_reports) {
   std::vector<u64> seeds;
   for (i64 i = 0; i < count; ++i) seeds.push_back(first + static_cast<u64>(i));
   return run_wavefront_seeds(seeds, max_reports);

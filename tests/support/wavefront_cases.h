@@ -10,19 +10,24 @@
 // queries on it and compares everything the wavefront promises (wavefront.h) with the reference:
 // is_free, target distances (exactly), target_source, target paths (valid in free space per
 // L1Reference::check_path, of the reported length, from the reported source to the target,
-// bending only at obstacle vertices), vertex_distance, and plausible WavefrontStats.
+// bending only at obstacle vertices; a bend at a domain corner is allowed and counted),
+// vertex_distance, and plausible WavefrontStats (reported apart, so they never hide a wrong
+// distance).
 //
 // Families (seed % 9): the four `taut gen` kinds at small sizes (rects, polygons, maze,
 // degenerate; sometimes with the domain cut down so obstacles are clipped by or flush with the
 // domain side), and five hand-made ones on a coarse grid (multiples of 10 in a ~0..100 box) with
 // heavy degeneracy: grid-rects (rectangles touching at corners, along edges, flush with the
 // domain side, rings), grid-diagonal (diamonds, 45-degree triangles, octagons, sloped triangles
-// and parallelograms, tips touching vertices and the domain side), rings (sources and targets
-// walled in, C-shaped rings with and without a gap, things nested in holes), pinches
-// (checkerboards, corner-touching walls and diamond chains across the domain: unreachable
-// halves) and fine (arbitrary small integer coordinates, sloped crossings that normalize
-// rounds). Seeds >= kLargeSeedBase draw the same families with about three times as many
-// shapes.
+// and parallelograms, tips touching vertices, the domain side and a domain corner), rings
+// (sources and targets walled in, C-shaped rings with and without a gap, rings closed only by
+// pinches, a hole touching its shell or another hole at one point, things nested in holes),
+// pinches (checkerboards, corner-touching walls and diamond chains across the domain:
+// unreachable halves) and fine (arbitrary small integer coordinates, sloped crossings that
+// normalize rounds). Each instance is then turned or mirrored by one of the eight symmetries of
+// the square (7 in 8), and one in ten is scaled up towards the coordinate limit 2^30 - 1 and
+// moved off the origin. Seeds >= kLargeSeedBase draw the same families with about three times as
+// many shapes.
 //
 // On a mismatch the report names the seed, the family, the instance (domain and obstacle rings
 // as C++ initializers), the query and both answers, then the same mismatch on an instance shrunk
@@ -30,7 +35,7 @@
 // hand-written test, or add the seed to the regression table of wavefront_test.cpp.
 // TAUT_WAVEFRONT_SEED=N runs only seed N and prints every query and answer
 // (wavefront_seed_from_env); TAUT_WAVEFRONT_TRACE=1 prints each seed before it runs. A crash
-// (signal) prints the seed being checked.
+// (signal) prints the seed being checked; a sanitizer report does not (use the trace).
 #pragma once
 
 #include <cstdint>
@@ -51,8 +56,11 @@ struct WavefrontCase {
   geom::Box domain;
   std::vector<geom::Polygon> obstacles;  // as geom::normalize_obstacles() returns them
   std::vector<geom::Point> candidates;   // query candidates, free or not
-  std::size_t special = 0;  // the first `special` candidates are points of interest (inside
-                            // holes, pins of generated layouts), preferred as sources
+  std::size_t special = 0;   // the first `special` candidates are points of interest (inside
+                             // holes, pins of generated layouts), preferred as sources
+  bool transformed = false;  // turned and/or mirrored
+  bool huge = false;         // scaled up towards the coordinate limit
+  int invalid_inputs = 0;    // generated polygons geom::validate_polygon rejected (dropped)
 };
 
 WavefrontCase make_wavefront_case(std::uint64_t seed);
@@ -66,21 +74,27 @@ struct WavefrontTally {
   std::int64_t not_free = 0;           // ... of points that are not free
   std::int64_t runs = 0;
   std::int64_t multi_source_runs = 0;
-  std::int64_t comparisons = 0;        // target distances compared
+  std::int64_t comparisons = 0;  // target distances compared
   std::int64_t reachable = 0;
-  std::int64_t unreachable = 0;        // free target, no path
-  std::int64_t paths = 0;              // target paths checked
-  std::int64_t bends = 0;              // interior path points
-  std::int64_t vertex_checks = 0;      // vertex_distance comparisons
-  std::int64_t pinch_points = 0;       // free query points with >= 2 wedges
-  std::int64_t boundary_points = 0;    // free query points on a wall (one partial wedge)
+  std::int64_t unreachable = 0;      // free target, no path
+  std::int64_t paths = 0;            // target paths checked
+  std::int64_t bends = 0;            // interior path points
+  std::int64_t vertex_checks = 0;    // vertex_distance comparisons
+  std::int64_t pinch_points = 0;     // free query points with >= 2 wedges
+  std::int64_t boundary_points = 0;  // free query points on a wall (one partial wedge)
   std::int64_t source_is_target = 0;
-  std::int64_t split_runs = 0;         // runs from a free source with a free unreachable target
+  std::int64_t split_runs = 0;           // runs from a free source with a free unreachable target
   std::int64_t domain_corner_bends = 0;  // path points at a domain corner (allowed, counted)
-  std::int64_t stats_issue_seeds = 0;  // seeds where WavefrontStats were implausible
-  std::string first_stats_issue;       // the report of the first one
+  std::int64_t pinch_sources = 0;        // sources at a pinch (>= 2 wedges)
+  std::int64_t boundary_sources = 0;     // sources on a wall
+  std::int64_t transformed = 0;          // instances turned or mirrored
+  std::int64_t huge = 0;                 // instances with coordinates near the limit
+  std::int64_t invalid_inputs = 0;       // generator slips (should stay 0)
+  std::int64_t generator_errors = 0;     // seeds whose layout could not be made (normalize threw)
+  std::int64_t stats_issue_seeds = 0;    // seeds where WavefrontStats were implausible
+  std::string first_stats_issue;         // the report of the first one
   double reference_seconds = 0, wavefront_seconds = 0;  // in distance queries and runs
-  std::map<std::string, std::int64_t> families;  // instances per family
+  std::map<std::string, std::int64_t> families;         // instances per family
   void add(const WavefrontTally& o);
   std::string summary() const;
 };
