@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <cstdlib>
 #include <array>
 #include <cassert>
 #include <limits>
@@ -130,7 +129,7 @@ class KdTree {
  public:
   KdTree() = default;
   explicit KdTree(std::vector<std::pair<Point, uint32_t>> items) : items_(std::move(items)) {
-    if (!items_.empty()) build(0, static_cast<uint32_t>(items_.size()), 0);
+    if (!items_.empty()) build(0, static_cast<uint32_t>(items_.size()));
   }
   bool empty() const { return items_.empty(); }
   std::size_t memory_bytes() const {
@@ -151,7 +150,7 @@ class KdTree {
     uint32_t begin, end;
     uint32_t left = kNone, right = kNone;
   };
-  uint32_t build(uint32_t begin, uint32_t end, int depth) {
+  uint32_t build(uint32_t begin, uint32_t end) {
     const uint32_t id = static_cast<uint32_t>(nodes_.size());
     nodes_.push_back({});
     Point lo{std::numeric_limits<geom::Coord>::max(), std::numeric_limits<geom::Coord>::max()};
@@ -169,13 +168,12 @@ class KdTree {
     if (end - begin > 8) {
       const uint32_t mid = begin + (end - begin) / 2;
       const bool by_x = (i64{hi.x} - lo.x) >= (i64{hi.y} - lo.y);
-      (void)depth;
       std::nth_element(items_.begin() + begin, items_.begin() + mid, items_.begin() + end,
                        [by_x](const auto& a, const auto& b) {
                          return by_x ? a.first.x < b.first.x : a.first.y < b.first.y;
                        });
-      const uint32_t l = build(begin, mid, depth + 1);
-      const uint32_t rr = build(mid, end, depth + 1);
+      const uint32_t l = build(begin, mid);
+      const uint32_t rr = build(mid, end);
       nodes_[id].left = l;
       nodes_[id].right = rr;
     }
@@ -279,10 +277,6 @@ struct Entity {
   T3 d;
   uint32_t parent = kNone;  // entity
   uint32_t source = kNone;  // index into run's sources
-  uint32_t hit_u[4] = {kNone, kNone, kNone, kNone};  // hitter roots (points) with least U
-  uint32_t hit_v[4] = {kNone, kNone, kNone, kNone};  // ... least V
-  i64 hit_u_key[4] = {0, 0, 0, 0};                   // distance (constant term) of that hit
-  i64 hit_v_key[4] = {0, 0, 0, 0};
 };
 
 }  // namespace
@@ -319,16 +313,6 @@ struct L1Wavefront::Impl {
   Impl(const Box& dom, std::span<const Polygon> obstacles) : domain(dom) {
     merge_frame(obstacles);
     index = std::make_unique<geom::ObstacleIndex>(polys);
-    if (std::getenv("TAUT_WF_DUMP"))
-      for (auto& p : polys) {
-        std::fprintf(stderr, "poly:");
-        for (auto q : p.outer) std::fprintf(stderr, " %d,%d", q.x, q.y);
-        for (auto& h : p.holes) {
-          std::fprintf(stderr, " | hole:");
-          for (auto q : h) std::fprintf(stderr, " %d,%d", q.x, q.y);
-        }
-        std::fprintf(stderr, "\n");
-      }
     for (const Polygon& p : polys) {
       Box b{{std::numeric_limits<geom::Coord>::max(), std::numeric_limits<geom::Coord>::max()},
             {std::numeric_limits<geom::Coord>::min(), std::numeric_limits<geom::Coord>::min()}};
@@ -786,28 +770,8 @@ struct L1Wavefront::Impl {
     return kNone;
   }
 
-  void debug_wave(const char* what, const Wave& w) const {
-    auto bd = [&](const Bound& b) {
-      std::fprintf(stderr, " [%c", "VHO"[b.kind]);
-      if (b.origin != kNone) std::fprintf(stderr, " o=(%d,%d)", pts[b.origin].x, pts[b.origin].y);
-      if (b.ea != kNone)
-        std::fprintf(stderr, " e=(%d,%d)->(%d,%d)", pts[b.ea].x, pts[b.ea].y, pts[b.eb].x,
-                     pts[b.eb].y);
-      std::fprintf(stderr, "]");
-    };
-    std::fprintf(stderr, "%s dir=%d root=(%d,%d) start=(%d,%d) key=%lld", what, w.dir,
-                 pts[ents[w.root].point].x, pts[ents[w.root].point].y, pts[w.start].x,
-                 pts[w.start].y, (long long)w.key.a);
-    if (w.event != kNone) std::fprintf(stderr, " event=(%d,%d)", pts[w.event].x, pts[w.event].y);
-    bd(w.left);
-    bd(w.right);
-    std::fprintf(stderr, "\n");
-  }
-  bool debug = std::getenv("TAUT_WF_DEBUG") != nullptr;
-
   void process(const Wave& w) {
     ++stats.events;
-    if (debug) debug_wave("pop", w);
     const int d = w.dir;
     const int sigma = kSx[d] * kSy[d];
     const uint32_t p = w.event;
@@ -845,43 +809,16 @@ struct L1Wavefront::Impl {
       ent = arriving_edge_entity(w.right);
     else
       ent = entity_at(p, kNone, kNone, &arrive);
-    if (ent == kNone) {
-      char buf[256];
-      std::snprintf(buf, sizeof buf, "wavefront: no wedge at (%d,%d) dir %d ends %d%d root (%d,%d) L %d %u %u R %d %u %u",
-                    pts[p].x, pts[p].y, d, int(left_end), int(right_end),
-                    pts[ents[w.root].point].x, pts[ents[w.root].point].y, w.left.kind, w.left.ea, w.left.eb, w.right.kind, w.right.ea, w.right.eb);
-      for (uint32_t i = ent_begin[p]; i < ent_begin[p + 1]; ++i) std::fprintf(stderr, "ent lo %u (%d,%d) hi %u (%d,%d)\n", ents[i].lo, pts[ents[i].lo].x, pts[ents[i].lo].y, ents[i].hi, pts[ents[i].hi].x, pts[ents[i].hi].y);
-      if (w.left.ea != kNone) std::fprintf(stderr, "left edge (%d,%d)->(%d,%d)\n", pts[w.left.ea].x, pts[w.left.ea].y, pts[w.left.eb].x, pts[w.left.eb].y);
-      if (w.right.ea != kNone) std::fprintf(stderr, "right edge (%d,%d)->(%d,%d)\n", pts[w.right.ea].x, pts[w.right.ea].y, pts[w.right.eb].x, pts[w.right.eb].y);
+    if (ent == kNone) {  // contradicts the free-space invariants: a bug, not bad input
+      char buf[160];
+      std::snprintf(buf, sizeof buf, "wavefront: no free wedge of (%d,%d) holds the wave (dir %d)",
+                    pts[p].x, pts[p].y, d);
       throw std::logic_error(buf);
     }
     Entity& e = ents[ent];
-    const Point rp = pts[ents[w.root].point];
 
-    // Mitchell §4 case 4: earlier hitters from the same direction.
-    // A part is dropped only when an earlier hitter reached p strictly sooner: with equal
-    // distances two roots could each leave a region to the other and both drop it.
-    //
-    // DISABLED (kClip = false): the long random test found a layout where an earlier hitter
-    // that reached p by sliding along an obstacle edge cannot reach the region it was assumed
-    // to cover (seed 1003015), so a part was dropped wrongly. Until the rule is restated with
-    // a proof (Mitchell clips against the hitter's ray and the dragged segment's end, not the
-    // root), every part goes on: always correct, more events.
-    constexpr bool kClip = false;
-    bool keep_left = true, keep_right = true;
-    if (kClip && e.hit_u[d] != kNone) {
-      keep_left = U(d, rp) < U(d, pts[e.hit_u[d]]) || e.hit_u_key[d] >= w.key.a;
-      keep_right = V(d, rp) < V(d, pts[e.hit_v[d]]) || e.hit_v_key[d] >= w.key.a;
-    }
-    if (e.hit_u[d] == kNone || U(d, rp) < U(d, pts[e.hit_u[d]])) {
-      e.hit_u[d] = ents[w.root].point;
-      e.hit_u_key[d] = w.key.a;
-    }
-    if (e.hit_v[d] == kNone || V(d, rp) < V(d, pts[e.hit_v[d]])) {
-      e.hit_v[d] = ents[w.root].point;
-      e.hit_v_key[d] = w.key.a;
-    }
-
+    // Mitchell §4 case 4 (clipping against earlier hitters from the same direction) is not
+    // applied: see wavefront.h. Every part of the wave goes on.
     // Local wedge ends and the continuation tracks at p.
     const Dir L0 = sigma > 0 ? lo_dir(e) : hi_dir(e);  // local cw end
     const Dir L1 = sigma > 0 ? hi_dir(e) : lo_dir(e);  // local ccw end
@@ -913,7 +850,7 @@ struct L1Wavefront::Impl {
 
     // The continuation: the part left of p (bounded by p's vertical or p's edge) and the part
     // right of p. An endpoint collision ends the side whose track arrived at p.
-    if (keep_left && !left_end && !on_left) {
+    if (!left_end && !on_left) {
       Wave c;
       c.root = w.root;
       c.start = p;
@@ -921,10 +858,8 @@ struct L1Wavefront::Impl {
       c.left = w.left;
       c.right = left_by_edge ? edge_bound(d, e, L0_is_lo) : axis_bound(d, true, p);
       insert(c);
-    } else if (!left_end && !on_left) {
-      ++stats.died;
     }
-    if (keep_right && !right_end && !on_right) {
+    if (!right_end && !on_right) {
       Wave c;
       c.root = w.root;
       c.start = p;
@@ -932,13 +867,9 @@ struct L1Wavefront::Impl {
       c.left = right_by_edge ? edge_bound(d, e, !L0_is_lo) : axis_bound(d, false, p);
       c.right = w.right;
       insert(c);
-    } else if (!right_end && !on_right) {
-      ++stats.died;
     }
   }
 
-  std::size_t remaining_targets = 0;
-  std::vector<uint32_t> run_sources_ents;
 
   void run(std::span<const Point> sources, std::span<const Point> targets, bool stop_early) {
     // reset

@@ -30,8 +30,8 @@
 //     correct (a part only ever gives upper bounds that are real path lengths) but costs
 //     events. A first rule (drop the left part unless the root lies left of every earlier
 //     hitter, the right part unless below) was wrong when the earlier hitter had slid along an
-//     obstacle edge into the vertex (random seed 1003015); it stays in the code, switched off,
-//     until it is restated with a proof.
+//     obstacle edge into the vertex (random seed 1003015, kept as a regression seed); it was
+//     removed until it is restated with a proof (git history: commit d6deb71).
 //
 // Segment-dragging queries (§3): "which vertex does this wavelet hit first" is the vertex with
 // the smallest diagonal coordinate inside the wavelet's region, a convex region given by at most
@@ -77,7 +77,6 @@ struct WavefrontStats {
   std::int64_t events = 0;        // wavelets popped from the queue
   std::int64_t wavelets = 0;      // wavelets made
   std::int64_t labelled = 0;      // entities reached
-  std::int64_t died = 0;          // wavelet parts dropped by clipping
   std::int64_t drag_queries = 0;  // segment-dragging (k-d tree) queries
   std::int64_t ray_queries = 0;   // track ray shots
 };

@@ -19,16 +19,7 @@ void sweep(std::uint64_t first, std::int64_t count) {
   std::printf("seeds %llu..%llu: %s\n%.2f s\n", static_cast<unsigned long long>(first),
               static_cast<unsigned long long>(first + static_cast<std::uint64_t>(count) - 1),
               sw.tally.summary().c_str(), sw.seconds);
-  for (const std::string& r : sw.reports) ADD_FAILURE() << r;
-  if (!sw.failed_seeds.empty()) {
-    std::string list;
-    for (std::size_t i = 0; i < sw.failed_seeds.size() && i < 200; ++i)
-      list += " " + std::to_string(sw.failed_seeds[i]);
-    ADD_FAILURE() << sw.failed_seeds.size() << " failing seed(s):" << list;
-  }
-  EXPECT_EQ(sw.tally.invalid_inputs, 0) << "the generator made invalid polygons";
-  EXPECT_EQ(sw.tally.stats_issue_seeds, 0) << "implausible WavefrontStats, first:\n"
-                                           << sw.tally.first_stats_issue;
+  taut::test::expect_clean_sweep(sw);
   EXPECT_EQ(sw.tally.instances, count);
 }
 

@@ -35,21 +35,12 @@ using Dist = std::optional<std::int64_t>;
 
 // Seeds that failed once, each with a comment saying what was wrong; they run in every build.
 const std::vector<std::uint64_t> kRegressionSeeds = {
-    // 1234,  // (example) target distance too long at a pinch; fixed in ...
+    1003015,  // hit-list clipping dropped the part of a wavelet that alone reached the target
+              // (the earlier hitter had slid into the vertex along an edge); clipping now off
+    1003651,  // stats check counted repeated vertex queries (pinch at a corner source)
+    1008215,  // same, obstacle in the domain corner
+    1019004,  // same, ring family
 };
-
-void expect_clean(const WavefrontSweep& sw) {
-  for (const std::string& r : sw.reports) ADD_FAILURE() << r;
-  if (!sw.failed_seeds.empty()) {
-    std::string list;
-    for (std::size_t i = 0; i < sw.failed_seeds.size() && i < 200; ++i)
-      list += " " + std::to_string(sw.failed_seeds[i]);
-    ADD_FAILURE() << sw.failed_seeds.size() << " failing seed(s):" << list;
-  }
-  EXPECT_EQ(sw.tally.invalid_inputs, 0) << "the generator made invalid polygons";
-  EXPECT_EQ(sw.tally.stats_issue_seeds, 0) << "implausible WavefrontStats, first:\n"
-                                           << sw.tally.first_stats_issue;
-}
 
 TEST(Wavefront, RandomInstancesMatchReference) {
   if (const auto seed = taut::test::wavefront_seed_from_env()) {
@@ -60,7 +51,7 @@ TEST(Wavefront, RandomInstancesMatchReference) {
   }
   const WavefrontSweep sw = taut::test::run_wavefront_sweep(1, 2000);
   std::printf("%s\n%.2f s\n", sw.tally.summary().c_str(), sw.seconds);
-  expect_clean(sw);
+  taut::test::expect_clean_sweep(sw);
   // The generator exercises what it is meant to.
   const WavefrontTally& t = sw.tally;
   EXPECT_EQ(t.instances, 2000);
@@ -82,7 +73,7 @@ TEST(Wavefront, RandomInstancesMatchReference) {
 
 TEST(Wavefront, RegressionSeeds) {
   const WavefrontSweep sw = taut::test::run_wavefront_seeds(kRegressionSeeds, 50);
-  expect_clean(sw);
+  taut::test::expect_clean_sweep(sw);
   EXPECT_EQ(sw.tally.instances, static_cast<std::int64_t>(kRegressionSeeds.size()));
 }
 
@@ -334,7 +325,6 @@ TEST(Wavefront, StatsArePlausible) {
   EXPECT_GT(st.wavelets, 0);
   EXPECT_GE(st.labelled, wedges);  // everything is reachable from (5,5)
   EXPECT_LE(st.labelled, st.entities);
-  EXPECT_GE(st.died, 0);
   EXPECT_GT(st.drag_queries + st.ray_queries, 0);
   EXPECT_GT(wf.memory_bytes(), 0u);
   for (const Polygon& p : sc.obstacles)

@@ -27,6 +27,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <gtest/gtest.h>
+
 #include "geom/normalize.h"
 #include "geom/predicates.h"
 #include "geom/validate.h"
@@ -795,13 +797,13 @@ std::string check_query(const Scene& sc, const L1Reference& ref, L1Wavefront& wf
   auto stats_str = [&] {
     std::ostringstream os;
     os << "vertices " << st.vertices << " entities " << st.entities << " events " << st.events
-       << " wavelets " << st.wavelets << " labelled " << st.labelled << " died " << st.died
+       << " wavelets " << st.wavelets << " labelled " << st.labelled
        << " drag_queries " << st.drag_queries << " ray_queries " << st.ray_queries;
     return os.str();
   };
   if (log) *log << "  stats: " << stats_str() << "\n";
   if (st.vertices < 0 || st.entities < 0 || st.events < 0 || st.wavelets < 0 || st.labelled < 0 ||
-      st.died < 0 || st.drag_queries < 0 || st.ray_queries < 0)
+      st.drag_queries < 0 || st.ray_queries < 0)
     stats_bad << "stats: a negative counter: " << stats_str() << "\n";
   if (st.labelled > st.entities) stats_bad << "stats: labelled > entities: " << stats_str() << "\n";
   if (st.entities < sc.wedge_sum)
@@ -1337,6 +1339,19 @@ std::optional<std::uint64_t> wavefront_seed_from_env() {
   const unsigned long long v = std::strtoull(s, &end, 10);
   if (end == s || *end != '\0') return std::nullopt;
   return v;
+}
+
+void expect_clean_sweep(const WavefrontSweep& sw) {
+  for (const std::string& r : sw.reports) ADD_FAILURE() << r;
+  if (!sw.failed_seeds.empty()) {
+    std::string list;
+    for (std::size_t i = 0; i < sw.failed_seeds.size() && i < 200; ++i)
+      list += " " + std::to_string(sw.failed_seeds[i]);
+    ADD_FAILURE() << sw.failed_seeds.size() << " failing seed(s):" << list;
+  }
+  EXPECT_EQ(sw.tally.invalid_inputs, 0) << "the generator made invalid polygons";
+  EXPECT_EQ(sw.tally.stats_issue_seeds, 0) << "implausible WavefrontStats, first:\n"
+                                           << sw.tally.first_stats_issue;
 }
 
 }  // namespace taut::test

@@ -114,6 +114,10 @@ struct WavefrontSweep {
 };
 
 // Seeds first, first + 1, ..., first + count - 1.
+// Reports every failure of a sweep as a gtest failure: the per-seed reports, the failing seed
+// list, invalid generated inputs and implausible stats.
+void expect_clean_sweep(const WavefrontSweep& sw);
+
 WavefrontSweep run_wavefront_sweep(std::uint64_t first, std::int64_t count,
                                    std::size_t max_reports = 3);
 // Any list of seeds (the regression table).
