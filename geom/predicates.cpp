@@ -98,4 +98,24 @@ Location locate(Point p, const Polygon& poly) {
   return result;
 }
 
+std::int64_t count_bends(std::span<const Point> polyline) {
+  std::int64_t bends = 0;
+  bool have_prev = false;
+  i64 px = 0, py = 0;
+  for (std::size_t i = 1; i < polyline.size(); ++i) {
+    const i64 dx = i64{polyline[i].x} - polyline[i - 1].x;
+    const i64 dy = i64{polyline[i].y} - polyline[i - 1].y;
+    if (dx == 0 && dy == 0) continue;  // zero-length segment: no direction
+    if (have_prev) {
+      const i64 cross = px * dy - py * dx;  // |.| < 2^63 (see the top of predicates.h)
+      const i64 dotp = px * dx + py * dy;
+      if (cross != 0 || dotp < 0) ++bends;  // turn, or 180-degree reversal
+    }
+    px = dx;
+    py = dy;
+    have_prev = true;
+  }
+  return bends;
+}
+
 }  // namespace taut::geom

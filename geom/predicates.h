@@ -68,4 +68,8 @@ Location locate(Point p, const Polygon& poly);
 // 2^31 terms each below 2^63 could overflow int64, so it is accumulated in __int128.
 i128 twice_area(std::span<const Point> ring);
 
+// Direction changes inside a polyline: a turn or a 180-degree reversal counts one, a collinear
+// continuation or a zero-length segment none. Exact (int64 cross and dot products).
+std::int64_t count_bends(std::span<const Point> polyline);
+
 }  // namespace taut::geom

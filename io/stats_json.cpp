@@ -107,23 +107,7 @@ std::string format_total_length(const std::vector<std::vector<Point>>& polylines
 }
 
 long count_bends(const std::vector<Point>& polyline) {
-  long bends = 0;
-  bool have_prev = false;
-  i64 px = 0, py = 0;
-  for (std::size_t i = 1; i < polyline.size(); ++i) {
-    const i64 dx = i64{polyline[i].x} - polyline[i - 1].x;
-    const i64 dy = i64{polyline[i].y} - polyline[i - 1].y;
-    if (dx == 0 && dy == 0) continue;  // zero-length segment: no direction
-    if (have_prev) {
-      const i64 cross = px * dy - py * dx;  // |.| < 2^63 (see predicates.h)
-      const i64 dotp = px * dx + py * dy;
-      if (cross != 0 || dotp < 0) ++bends;  // turn, or 180-degree reversal
-    }
-    px = dx;
-    py = dy;
-    have_prev = true;
-  }
-  return bends;
+  return static_cast<long>(geom::count_bends(polyline));
 }
 
 std::string layout_stats_json(const Layout& layout, int indent) {
