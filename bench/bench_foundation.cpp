@@ -25,26 +25,12 @@
 #include "io/layout_reader.h"
 #include "io/layout_writer.h"
 #include "io/validate_layout.h"
+#include "bench/bench_util.h"
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double seconds_of(const std::function<void()>& f, int reps) {
-  double best = 1e300;
-  for (int r = 0; r < reps; ++r) {
-    const auto t0 = Clock::now();
-    f();
-    best = std::min(best, std::chrono::duration<double>(Clock::now() - t0).count());
-  }
-  return best;
-}
-
-double peak_rss_mib() {
-  rusage ru{};
-  getrusage(RUSAGE_SELF, &ru);
-  return static_cast<double>(ru.ru_maxrss) / 1024.0;
-}
+using taut::bench::peak_rss_mib;
+using taut::bench::seconds_of;
 
 struct Row {
   std::int64_t n = 0;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <boost/geometry.hpp>
 #include <boost/geometry/index/rtree.hpp>
+#include <boost/iterator/function_output_iterator.hpp>
 #include <numeric>
 #include <utility>
 
@@ -171,14 +172,18 @@ RayHit ObstacleIndex::shoot(Point p, Direction dir, RayOptions options) const {
 
 std::vector<std::uint32_t> ObstacleIndex::edges_in_box(const Box& box) const {
   std::vector<std::uint32_t> out;
-  if (edges_.empty() || box.lo.x > box.hi.x || box.lo.y > box.hi.y) return out;
-  std::vector<Value> found;
-  trees_->axis.query(bgi::intersects(make_box(box.lo.x, box.lo.y, box.hi.x, box.hi.y)),
-                     std::back_inserter(found));
-  for (const Value& v : found)
-    if (segment_meets_box(edges_[v.second], box)) out.push_back(v.second);
+  edges_in_box(box, out);
   std::sort(out.begin(), out.end());
   return out;
+}
+
+void ObstacleIndex::edges_in_box(const Box& box, std::vector<std::uint32_t>& out) const {
+  out.clear();
+  if (edges_.empty() || box.lo.x > box.hi.x || box.lo.y > box.hi.y) return;
+  trees_->axis.query(bgi::intersects(make_box(box.lo.x, box.lo.y, box.hi.x, box.hi.y)),
+                     boost::make_function_output_iterator([&](const Value& v) {
+                       if (segment_meets_box(edges_[v.second], box)) out.push_back(v.second);
+                     }));
 }
 
 }  // namespace taut::geom

@@ -94,6 +94,9 @@ class ObstacleIndex {
   RayHit shoot(Point p, Direction dir, RayOptions options = {}) const;
   // Ids (ascending) of the edges whose closed segment meets the closed box.
   std::vector<std::uint32_t> edges_in_box(const Box& box) const;
+  // The same ids, unsorted, into `out` (cleared first; its capacity is reused, so a caller in
+  // a hot loop allocates nothing).
+  void edges_in_box(const Box& box, std::vector<std::uint32_t>& out) const;
 
  private:
   struct Trees;

@@ -3,11 +3,12 @@
 #include "router/wavefront.h"
 
 #include <algorithm>
-#include <cstdio>
+#include <cmath>
 #include <array>
 #include <cassert>
 #include <limits>
 #include <queue>
+#include <set>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -62,22 +63,26 @@ inline Dir local_dir(int d, int a, int b) {
   // M^-1 (sx a, sy b) ~ (sx a - e sy b, sy b - e^2 sx a)
   return Dir{{sx * a, -sy * b, 0}, {sy * b, 0, -sx * a}};
 }
-inline int poly_sign(const std::array<i128, 5>& p) {
-  for (i128 v : p)
-    if (v != 0) return v > 0 ? 1 : -1;
+// Signs of cross(p, q) and dot(p, q) as polynomials in e, compared lexicographically: the
+// coefficient of e^k only matters when every lower one is zero, so it is computed only then
+// (most directions differ already in their constant terms).
+inline int cross_sign(const Dir& p, const Dir& q) {
+  for (int k = 0; k <= 4; ++k) {
+    i128 r = 0;
+    for (int i = std::max(0, k - 2); i <= std::min(2, k); ++i)
+      r += i128{p.x[i]} * q.y[k - i] - i128{p.y[i]} * q.x[k - i];
+    if (r != 0) return r > 0 ? 1 : -1;
+  }
   return 0;
 }
-inline int cross_sign(const Dir& p, const Dir& q) {
-  std::array<i128, 5> r{};
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) r[i + j] += i128{p.x[i]} * q.y[j] - i128{p.y[i]} * q.x[j];
-  return poly_sign(r);
-}
 inline int dot_sign(const Dir& p, const Dir& q) {
-  std::array<i128, 5> r{};
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) r[i + j] += i128{p.x[i]} * q.x[j] + i128{p.y[i]} * q.y[j];
-  return poly_sign(r);
+  for (int k = 0; k <= 4; ++k) {
+    i128 r = 0;
+    for (int i = std::max(0, k - 2); i <= std::min(2, k); ++i)
+      r += i128{p.x[i]} * q.x[k - i] + i128{p.y[i]} * q.y[k - i];
+    if (r != 0) return r > 0 ? 1 : -1;
+  }
+  return 0;
 }
 // x strictly before y going counter-clockwise from base (base itself is first).
 inline bool ccw_less(const Dir& base, const Dir& x, const Dir& y) {
@@ -99,7 +104,7 @@ inline bool in_ccw(const Dir& a, const Dir& b, const Dir& x) {
 
 // ---------------------------------------------------------------------------------------------
 // Static k-d tree over points: the segment-dragging query "smallest diagonal coordinate inside a
-// convex region". Implicit layout, leaves of up to 8 points.
+// convex region". Nodes in depth-first order, leaves of up to 16 points.
 struct Region {
   int d = 0;
   T3 start;                 // level must be > start
@@ -137,10 +142,21 @@ class KdTree {
   }
 
   // The id of the satisfying point with the smallest level (nullopt = none).
-  bool query(const Region& r, uint32_t& best_id, T3& best_level) const {
+  // `seeds`: points known to be among the items (may or may not satisfy the region); the
+  // best satisfying one bounds the search from the start. The answer does not depend on them
+  // (levels of distinct points differ, so the minimum is unique).
+  bool query(const Region& r, uint32_t& best_id, T3& best_level, std::int64_t& nodes,
+             std::span<const std::pair<Point, uint32_t>> seeds = {}) const {
     if (items_.empty()) return false;
     bool found = false;
-    visit(0, r, found, best_id, best_level);
+    for (const auto& [q, id] : seeds) {
+      const T3 lv = level(r.d, q);
+      if ((found && !(lv < best_level)) || !satisfies(r, q)) continue;
+      found = true;
+      best_level = lv;
+      best_id = id;
+    }
+    visit(0, r, found, best_id, best_level, nodes);
     return found;
   }
 
@@ -165,7 +181,7 @@ class KdTree {
     nodes_[id].hi = hi;
     nodes_[id].begin = begin;
     nodes_[id].end = end;
-    if (end - begin > 8) {
+    if (end - begin > 16) {
       const uint32_t mid = begin + (end - begin) / 2;
       const bool by_x = (i64{hi.x} - lo.x) >= (i64{hi.y} - lo.y);
       std::nth_element(items_.begin() + begin, items_.begin() + mid, items_.begin() + end,
@@ -179,9 +195,19 @@ class KdTree {
     }
     return id;
   }
-  // Lower bound of the level's constant term over the box.
-  static i64 box_min_level(const Node& n, int d) {
-    return (kSx[d] > 0 ? i64{n.lo.x} : -i64{n.hi.x}) + (kSy[d] > 0 ? i64{n.lo.y} : -i64{n.hi.y});
+  // Lower bound of the level's constant term over the part of the box the region's lower
+  // bounds on U, V and the level leave (a box left of a vertical track counts from the track).
+  static i64 box_min_level(const Node& n, const Region& r) {
+    const int d = r.d;
+    i64 umin = kSx[d] > 0 ? i64{n.lo.x} : -i64{n.hi.x};
+    i64 vmin = kSy[d] > 0 ? i64{n.lo.y} : -i64{n.hi.y};
+    for (int i = 0; i < r.nlex; ++i) {
+      const auto& l = r.lex[i];
+      if (!l.greater) continue;
+      i64& m = l.on_u ? umin : vmin;
+      m = std::max(m, l.value.a);
+    }
+    return std::max(umin + vmin, r.start.a);
   }
   static bool box_may_satisfy(const Node& n, const Region& r) {
     const int d = r.d;
@@ -208,9 +234,11 @@ class KdTree {
     }
     return true;
   }
-  void visit(uint32_t id, const Region& r, bool& found, uint32_t& best_id, T3& best) const {
+  void visit(uint32_t id, const Region& r, bool& found, uint32_t& best_id, T3& best,
+             std::int64_t& nodes) const {
+    ++nodes;
     const Node& n = nodes_[id];
-    if (found && box_min_level(n, r.d) > best.a) return;
+    if (found && box_min_level(n, r) > best.a) return;
     if (!box_may_satisfy(n, r)) return;
     if (n.left == kNone) {
       for (uint32_t i = n.begin; i < n.end; ++i) {
@@ -224,14 +252,14 @@ class KdTree {
       }
       return;
     }
-    const i64 bl = box_min_level(nodes_[n.left], r.d);
-    const i64 br = box_min_level(nodes_[n.right], r.d);
+    const i64 bl = box_min_level(nodes_[n.left], r);
+    const i64 br = box_min_level(nodes_[n.right], r);
     if (bl <= br) {
-      visit(n.left, r, found, best_id, best);
-      visit(n.right, r, found, best_id, best);
+      visit(n.left, r, found, best_id, best, nodes);
+      visit(n.right, r, found, best_id, best, nodes);
     } else {
-      visit(n.right, r, found, best_id, best);
-      visit(n.left, r, found, best_id, best);
+      visit(n.right, r, found, best_id, best, nodes);
+      visit(n.left, r, found, best_id, best, nodes);
     }
   }
 
@@ -295,6 +323,11 @@ struct L1Wavefront::Impl {
   std::vector<Entity> ents;                         // vertex entities [0, nvent), run-time after
   uint32_t nvent = 0;
   KdTree vertex_tree;
+  // Track-ray answers per vertex point and world direction (N, S, E, W): the edge id hit, or
+  // kNone (sweep_rays()). Query points shoot on the R-tree instead (shoot_uncached()).
+  std::vector<uint32_t> ray_cache;
+  std::vector<uint32_t> box_edges;  // scratch for edges_in_box
+  i64 ray_window = 64;              // first window length of a track ray (set in the constructor)
 
   // run state
   std::vector<Entity> base_ents;  // pristine vertex entities
@@ -306,6 +339,9 @@ struct L1Wavefront::Impl {
   uint64_t seq = 0;
   WavefrontStats stats;
 
+  bool in_domain(Point q) const {
+    return q.x >= domain.lo.x && q.x <= domain.hi.x && q.y >= domain.lo.y && q.y <= domain.hi.y;
+  }
   static uint64_t key_of(Point p) {
     return (uint64_t{static_cast<uint32_t>(p.x)} << 32) | static_cast<uint32_t>(p.y);
   }
@@ -313,6 +349,11 @@ struct L1Wavefront::Impl {
   Impl(const Box& dom, std::span<const Polygon> obstacles) : domain(dom) {
     merge_frame(obstacles);
     index = std::make_unique<geom::ObstacleIndex>(polys);
+    {
+      const double extent = std::max<double>(i64{domain.hi.x} - domain.lo.x, i64{domain.hi.y} - domain.lo.y);
+      const double gap = extent / std::sqrt(static_cast<double>(std::max<std::size_t>(1, index->edge_count())));
+      ray_window = std::max<i64>(16, static_cast<i64>(2 * gap));  // a speed heuristic only
+    }
     for (const Polygon& p : polys) {
       Box b{{std::numeric_limits<geom::Coord>::max(), std::numeric_limits<geom::Coord>::max()},
             {std::numeric_limits<geom::Coord>::min(), std::numeric_limits<geom::Coord>::min()}};
@@ -406,6 +447,95 @@ struct L1Wavefront::Impl {
       items.push_back({q, v});
     }
     vertex_tree = KdTree(std::move(items));
+    ray_cache.assign(std::size_t{4} * nvert, kNone);
+    sweep_rays(true);
+    sweep_rays(false);
+  }
+
+  // Track rays of every vertex point at once, by two plane sweeps (O(n log n) in all, against
+  // one R-tree probe sequence per ray): for the sheared vertical (horizontal) line through each
+  // vertex point q, the first ring edge above and below (east and west of) q. The sweep runs
+  // in the sheared order of X = x + e*y, which is lexicographic (x, y); for horizontal rays the
+  // same code runs on the mirrored points (y, x) (lexicographic (y, x) is the order of
+  // Y = y + e^2*x). In the sheared plane no edge is vertical and no two points share X, so the
+  // edges crossing the sweep line at q are exactly those with left end < q < right end, and
+  // rings only touch at vertices, so two of them never cross and their order along the line is
+  // the order of an orientation test at the later left end. Edges ending at q are removed
+  // before the lookup and edges starting at q inserted after it, so edges through q (its own)
+  // are never the answer, as in shoot_uncached().
+  void sweep_rays(bool vertical) {
+    struct MP {
+      i64 x, y;
+    };
+    auto mp = [&](uint32_t v) {
+      const Point p = pts[v];
+      return vertical ? MP{p.x, p.y} : MP{p.y, p.x};
+    };
+    auto lex_less = [](MP a, MP b) { return a.x < b.x || (a.x == b.x && a.y < b.y); };
+    auto orient = [](MP a, MP b, MP c) {
+      const i128 v = i128{b.x - a.x} * (c.y - a.y) - i128{b.y - a.y} * (c.x - a.x);
+      return v > 0 ? 1 : (v < 0 ? -1 : 0);
+    };
+    const uint32_t m = static_cast<uint32_t>(edge_pts.size());
+    std::vector<std::array<uint32_t, 2>> lr(m);  // (left end, right end) in sweep order
+    std::vector<uint32_t> starts(nvert + 1, 0), ends(nvert + 1, 0);
+    for (uint32_t e = 0; e < m; ++e) {
+      auto [a, b] = edge_pts[e];
+      if (lex_less(mp(b), mp(a))) std::swap(a, b);
+      lr[e] = {a, b};
+      ++starts[a + 1];
+      ++ends[b + 1];
+    }
+    for (uint32_t v = 0; v < nvert; ++v) {
+      starts[v + 1] += starts[v];
+      ends[v + 1] += ends[v];
+    }
+    std::vector<uint32_t> start_list(m), end_list(m);
+    {
+      std::vector<uint32_t> fs(starts.begin(), starts.end() - 1), fe(ends.begin(), ends.end() - 1);
+      for (uint32_t e = 0; e < m; ++e) {
+        start_list[fs[lr[e][0]]++] = e;
+        end_list[fe[lr[e][1]]++] = e;
+      }
+    }
+    struct Key {
+      MP q;
+    };
+    struct Below {  // bottom-to-top order of the edges crossing the sweep line
+      using is_transparent = void;
+      const std::vector<std::array<uint32_t, 2>>* lr;
+      const decltype(mp)* to;
+      decltype(lex_less) less;
+      decltype(orient) ori;
+      bool operator()(uint32_t e, uint32_t f) const {
+        if (e == f) return false;
+        const MP le = (*to)((*lr)[e][0]), re = (*to)((*lr)[e][1]);
+        const MP lf = (*to)((*lr)[f][0]), rf = (*to)((*lr)[f][1]);
+        if ((*lr)[e][0] == (*lr)[f][0]) return ori(le, re, rf) > 0;  // common left end: slopes
+        if (less(lf, le)) return ori(lf, rf, le) < 0;                 // e starts below f
+        return ori(le, re, lf) > 0;                                   // f starts above e
+      }
+      bool operator()(uint32_t e, const Key& k) const {  // edge below the point
+        return ori((*to)((*lr)[e][0]), (*to)((*lr)[e][1]), k.q) > 0;
+      }
+      bool operator()(const Key& k, uint32_t e) const {  // point below the edge
+        return ori((*to)((*lr)[e][0]), (*to)((*lr)[e][1]), k.q) < 0;
+      }
+    };
+    std::set<uint32_t, Below> active(Below{&lr, &mp, lex_less, orient});
+    std::vector<std::set<uint32_t, Below>::iterator> where(m, active.end());
+    std::vector<uint32_t> order(nvert);
+    for (uint32_t v = 0; v < nvert; ++v) order[v] = v;
+    std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return lex_less(mp(a), mp(b)); });
+    const std::size_t up = vertical ? 0 : 2, down = up + 1;  // ray_cache slots (see shoot())
+    for (const uint32_t q : order) {
+      for (uint32_t i = ends[q]; i < ends[q + 1]; ++i) active.erase(where[end_list[i]]);
+      auto it = active.lower_bound(Key{mp(q)});
+      ray_cache[std::size_t{4} * q + up] = it == active.end() ? kNone : *it;
+      ray_cache[std::size_t{4} * q + down] = it == active.begin() ? kNone : *std::prev(it);
+      for (uint32_t i = starts[q]; i < starts[q + 1]; ++i)
+        where[start_list[i]] = active.insert(start_list[i]).first;
+    }
   }
 
   // The domain side is a wall: a frame obstacle around the domain, merged with every obstacle
@@ -513,9 +643,17 @@ struct L1Wavefront::Impl {
   // exact axis line, ties (edges through one point of it) by slope, which is the order the
   // sheared ray meets them in (see header).
   bool shoot(int d, bool vertical, uint32_t o, uint32_t& ea, uint32_t& eb) {
+    const int s = vertical ? kSy[d] : kSx[d];  // +1: towards larger world y (x)
+    const uint32_t hit = o < nvert ? ray_cache[std::size_t{4} * o + (vertical ? 0 : 2) + (s > 0 ? 0 : 1)]
+                                   : shoot_uncached(s, vertical, o);
+    if (hit == kNone) return false;
+    ea = edge_pts[hit].first;
+    eb = edge_pts[hit].second;
+    return true;
+  }
+  uint32_t shoot_uncached(int s, bool vertical, uint32_t o) {
     ++stats.ray_queries;
     const Point p = pts[o];
-    const int s = vertical ? kSy[d] : kSx[d];  // +1: towards larger world y (x)
     // Work in coordinates where the ray is along +/- the "t" axis and "w" is the other one.
     auto tc = [&](Point q) -> i64 { return vertical ? q.y : q.x; };
     auto wc = [&](Point q) -> i64 { return vertical ? q.x : q.y; };
@@ -529,7 +667,8 @@ struct L1Wavefront::Impl {
     };
     const i64 lim_lo = vertical ? domain.lo.y - 1 : domain.lo.x - 1;
     const i64 lim_hi = vertical ? domain.hi.y + 1 : domain.hi.x + 1;
-    i64 len = 64;
+    // First window: about two typical gaps between edges (extent / sqrt(edges)); it grows 4x.
+    i64 len = ray_window;
     while (true) {
       const i64 t0 = tc(p);
       const i64 t1 = s > 0 ? std::min<i64>(t0 + len, lim_hi) : std::max<i64>(t0 - len, lim_lo);
@@ -546,7 +685,8 @@ struct L1Wavefront::Impl {
       i128 bn = 0, bd = 1;  // best crossing t = bn / bd
       i64 bsn = 0, bsd = 1;  // its slope dt/dw
       uint32_t best = kNone;
-      for (uint32_t e : index->edges_in_box(box)) {
+      index->edges_in_box(box, box_edges);
+      for (uint32_t e : box_edges) {
         const auto [ia, ib] = edge_pts[e];
         if (ia == o || ib == o) continue;
         const Point a = pts[ia], b = pts[ib];
@@ -590,13 +730,10 @@ struct L1Wavefront::Impl {
           best = e;
         }
       }
-      if (found) {
-        // The crossing must lie inside the window [t0, t1] (it does: the edge met the box).
-        ea = edge_pts[best].first;
-        eb = edge_pts[best].second;
-        return true;
-      }
-      if (t1 == lim_hi || t1 == lim_lo) return false;
+      // The crossing lies inside the window [t0, t1] (the edge met the box), and every edge
+      // crossing the ray nearer meets the window too.
+      if (found) return best;
+      if (t1 == lim_hi || t1 == lim_lo) return kNone;
       len *= 4;
     }
   }
@@ -682,8 +819,14 @@ struct L1Wavefront::Impl {
     ++stats.drag_queries;
     uint32_t vid = kNone, tid = kNone;
     T3 vl, tl;
-    const bool hv = vertex_tree.query(r, vid, vl);
-    const bool ht = !target_tree.empty() && target_tree.query(r, tid, tl);
+    // Seeds: the ends of the track edges and stop edges, often the next event themselves.
+    std::array<std::pair<Point, uint32_t>, 4> seeds;
+    std::size_t nseeds = 0;
+    for (const Bound* b : {&w.left, &w.right})
+      for (const uint32_t q : {b->ea, b->eb})
+        if (q != kNone && q < nvert && in_domain(pts[q])) seeds[nseeds++] = {pts[q], q};
+    const bool hv = vertex_tree.query(r, vid, vl, stats.drag_nodes, std::span(seeds.data(), nseeds));
+    const bool ht = !target_tree.empty() && target_tree.query(r, tid, tl, stats.drag_nodes);
     if (!hv && !ht) return;
     const Point root = pts[ents[w.root].point];
     if (ht && (!hv || tl < vl)) {
@@ -1005,6 +1148,7 @@ std::size_t L1Wavefront::memory_bytes() const {
                   m.base_ents.capacity() * sizeof(Entity) +
                   m.ent_begin.capacity() * sizeof(uint32_t) +
                   m.edge_pts.capacity() * sizeof(m.edge_pts[0]) + m.vertex_tree.memory_bytes() +
+                  m.ray_cache.capacity() * sizeof(uint32_t) +
                   m.point_id.size() * 32;
   for (const Polygon& p : m.polys) {
     b += p.outer.capacity() * sizeof(Point);

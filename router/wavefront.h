@@ -37,9 +37,13 @@
 // the smallest diagonal coordinate inside the wavelet's region, a convex region given by at most
 // five half-planes. A static k-d tree over the vertices answers it by branch and bound on the
 // diagonal coordinate (cost: proportional to the nodes whose boxes meet the region near the
-// answer; O(log n) when the region is wide, up to O(sqrt n) for thin regions). Track rays
-// (vertical or horizontal, up to 4 per wavelet) use the R-tree of obstacle edges with exact
-// rational hit points (geom/index.h windows; O(log n) per window).
+// answer; O(log n) when the region is wide, up to O(sqrt n) for thin regions; measured: about
+// 45 nodes per query at 10^5 vertices, stats().drag_nodes). The tracks' ends, the edges met
+// by the vertical and horizontal rays of every obstacle vertex, are found once at construction
+// by two plane sweeps (O(n log n) in all, a balanced tree of the edges crossing the sweep
+// line, exact orientation tests in the sheared order); rays from query points (sources,
+// targets) probe the R-tree of obstacle edges with exact rational crossings (geom/index.h
+// windows; O(log n) per window).
 //
 // Degeneracy rule: symbolic shear. Real layouts put vertices on common horizontals, verticals
 // and diagonals; Mitchell assumes they do not (his GPA). taut runs the algorithm on the sheared
@@ -78,7 +82,9 @@ struct WavefrontStats {
   std::int64_t wavelets = 0;      // wavelets made
   std::int64_t labelled = 0;      // entities reached
   std::int64_t drag_queries = 0;  // segment-dragging (k-d tree) queries
-  std::int64_t ray_queries = 0;   // track ray shots
+  std::int64_t drag_nodes = 0;    // k-d tree nodes those queries visited
+  std::int64_t ray_queries = 0;   // track rays shot on the R-tree (from query points; the
+                                  // rays of obstacle vertices come from the construction's sweep)
 };
 
 class L1Wavefront {
