@@ -1,5 +1,10 @@
 #include "io/layout_geometry.h"
 
+#include <algorithm>
+#include <cstdint>
+
+#include "geom/normalize.h"
+
 namespace taut::io {
 
 geom::Polygon shape_polygon(const Shape& shape) {
@@ -19,6 +24,41 @@ std::vector<geom::Polygon> blockage_polygons(const Layout& layout,
     }
   }
   return out;
+}
+
+geom::Box routing_domain(const Layout& layout, std::span<const geom::Point> extra) {
+  if (layout.boundary) return layout.boundary->box;
+  bool any = false;
+  std::int64_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  auto add = [&](geom::Point p) {
+    if (!any) {
+      x0 = x1 = p.x;
+      y0 = y1 = p.y;
+      any = true;
+      return;
+    }
+    x0 = std::min<std::int64_t>(x0, p.x);
+    y0 = std::min<std::int64_t>(y0, p.y);
+    x1 = std::max<std::int64_t>(x1, p.x);
+    y1 = std::max<std::int64_t>(y1, p.y);
+  };
+  auto add_polygon = [&](const geom::Polygon& poly) {
+    for (geom::Point p : poly.outer) add(p);  // holes lie inside the outer ring
+  };
+  for (const Blockage& b : layout.blockages)
+    for (const Shape& s : b.shapes) add_polygon(shape_polygon(s));
+  for (const Net& n : layout.nets)
+    for (const Pin& pin : n.pins) {
+      if (pin.point) add(*pin.point);
+      if (pin.shape) add_polygon(shape_polygon(*pin.shape));
+    }
+  for (geom::Point p : extra) add(p);
+  if (!any) return geom::Box{{0, 0}, {0, 0}};
+  auto clamp = [](std::int64_t v) {
+    return static_cast<geom::Coord>(std::clamp<std::int64_t>(v, -geom::kMaxCoord, geom::kMaxCoord));
+  };
+  const std::int64_t m = geom::kDomainMargin;
+  return geom::Box{{clamp(x0 - m), clamp(y0 - m)}, {clamp(x1 + m), clamp(y1 + m)}};
 }
 
 std::size_t blockage_vertex_count(const Layout& layout) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include "geom/types.h"
@@ -17,6 +18,14 @@ geom::Polygon shape_polygon(const Shape& shape);
 // polygon i belongs to (when owner is not null).
 std::vector<geom::Polygon> blockage_polygons(const Layout& layout,
                                              std::vector<std::size_t>* owner = nullptr);
+
+// The area routing happens in: the <boundary> when there is one; otherwise the bounding box of
+// every blockage vertex, every point pin and shape-pin vertex and the `extra` points, grown by
+// geom::kDomainMargin on each side and clamped to the coordinate limit. Without a boundary the
+// plane is unbounded, and a shortest L1 path never needs to leave that box: clamping a path
+// into a box that holds every obstacle with a margin and both ends keeps it free and never
+// lengthens it. An empty box at the origin when there is nothing at all.
+geom::Box routing_domain(const Layout& layout, std::span<const geom::Point> extra = {});
 
 // Number of vertices written in blockage shapes (a rect counts 4).
 std::size_t blockage_vertex_count(const Layout& layout);

@@ -330,7 +330,7 @@ struct L1Wavefront::Impl {
   i64 ray_window = 64;              // first window length of a track ray (set in the constructor)
 
   // run state
-  std::vector<Entity> base_ents;  // pristine vertex entities
+  std::vector<uint32_t> touched;  // vertex entities this run labelled or gave a source (reset)
   KdTree target_tree;
   std::vector<std::vector<uint32_t>> target_ents;  // per target: its entities
   std::vector<Point> target_pts;
@@ -341,6 +341,20 @@ struct L1Wavefront::Impl {
 
   bool in_domain(Point q) const {
     return q.x >= domain.lo.x && q.x <= domain.hi.x && q.y >= domain.lo.y && q.y <= domain.hi.y;
+  }
+  // Z-order (Morton) key: the bits of x and y (offset to unsigned) interleaved.
+  static uint64_t morton(Point p) {
+    auto spread = [](uint64_t v) {
+      v &= 0xFFFFFFFFull;
+      v = (v | (v << 16)) & 0x0000FFFF0000FFFFull;
+      v = (v | (v << 8)) & 0x00FF00FF00FF00FFull;
+      v = (v | (v << 4)) & 0x0F0F0F0F0F0F0F0Full;
+      v = (v | (v << 2)) & 0x3333333333333333ull;
+      v = (v | (v << 1)) & 0x5555555555555555ull;
+      return v;
+    };
+    const uint64_t x = static_cast<uint32_t>(p.x) ^ 0x80000000u, y = static_cast<uint32_t>(p.y) ^ 0x80000000u;
+    return spread(x) | (spread(y) << 1);
   }
   static uint64_t key_of(Point p) {
     return (uint64_t{static_cast<uint32_t>(p.x)} << 32) | static_cast<uint32_t>(p.y);
@@ -365,16 +379,35 @@ struct L1Wavefront::Impl {
       }
       poly_boxes.push_back(b);
     }
-    // Vertex points and their occurrences (prev, next) on rings.
+    // Vertex points, numbered along a Z-order curve so that points near each other in the
+    // plane are near each other in memory (the wavefront sweeps the plane as a front: this
+    // keeps its entity, point and ray-cache accesses local), and their occurrences
+    // (prev, next) on rings.
     std::vector<std::vector<std::pair<uint32_t, uint32_t>>> occ;
-    auto id_of = [&](Point p) {
-      auto [it, fresh] = point_id.try_emplace(key_of(p), static_cast<uint32_t>(pts.size()));
-      if (fresh) {
-        pts.push_back(p);
-        occ.emplace_back();
+    {
+      std::vector<std::pair<uint64_t, Point>> order;
+      auto add_points = [&](const geom::Ring& ring) {
+        for (Point q : ring) order.push_back({morton(q), q});
+      };
+      for (const Polygon& p : polys) {
+        add_points(p.outer);
+        for (const geom::Ring& h : p.holes) add_points(h);
       }
-      return it->second;
-    };
+      std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
+        return a.first != b.first ? a.first < b.first : a.second < b.second;
+      });
+      order.erase(std::unique(order.begin(), order.end(),
+                              [](const auto& a, const auto& b) { return a.second == b.second; }),
+                  order.end());
+      pts.reserve(order.size());
+      point_id.reserve(order.size());
+      for (const auto& [k, q] : order) {
+        point_id.emplace(key_of(q), static_cast<uint32_t>(pts.size()));
+        pts.push_back(q);
+      }
+      occ.resize(pts.size());
+    }
+    auto id_of = [&](Point p) { return point_id.at(key_of(p)); };
     auto add_ring = [&](const geom::Ring& ring) {
       const std::size_t n = ring.size();
       std::vector<uint32_t> ids(n);
@@ -428,7 +461,6 @@ struct L1Wavefront::Impl {
     }
     ent_begin[nvert] = static_cast<uint32_t>(ents.size());
     nvent = static_cast<uint32_t>(ents.size());
-    base_ents = ents;
     stats.vertices = nvert;
     stats.entities = nvent;
     // Edge id -> point ids.
@@ -848,6 +880,7 @@ struct L1Wavefront::Impl {
     e.d = d;
     e.parent = parent;
     e.source = parent == kNone ? e.source : ents[parent].source;
+    if (ent < nvent) touched.push_back(ent);
     ++stats.labelled;
   }
 
@@ -1017,7 +1050,14 @@ struct L1Wavefront::Impl {
   void run(std::span<const Point> sources, std::span<const Point> targets, bool stop_early) {
     // reset
     pts.resize(nvert);
-    ents = base_ents;
+    ents.resize(nvent);  // run-time entities go; vertex entities of the last run are reset
+    for (const uint32_t e : touched) {
+      ents[e].labelled = false;
+      ents[e].d = T3{};
+      ents[e].parent = kNone;
+      ents[e].source = kNone;
+    }
+    touched.clear();
     queue = {};
     seq = 0;
     stats = WavefrontStats{};
@@ -1056,6 +1096,7 @@ struct L1Wavefront::Impl {
       for (uint32_t e : es) {
         if (ents[e].labelled) continue;
         ents[e].source = static_cast<uint32_t>(i);
+        if (e < nvent) touched.push_back(e);
         label(e, T3{}, kNone);
       }
     }
@@ -1145,7 +1186,7 @@ const WavefrontStats& L1Wavefront::stats() const { return impl_->stats; }
 std::size_t L1Wavefront::memory_bytes() const {
   const Impl& m = *impl_;
   std::size_t b = m.pts.capacity() * sizeof(Point) + m.ents.capacity() * sizeof(Entity) +
-                  m.base_ents.capacity() * sizeof(Entity) +
+                  m.touched.capacity() * sizeof(uint32_t) +
                   m.ent_begin.capacity() * sizeof(uint32_t) +
                   m.edge_pts.capacity() * sizeof(m.edge_pts[0]) + m.vertex_tree.memory_bytes() +
                   m.ray_cache.capacity() * sizeof(uint32_t) +

@@ -3,6 +3,7 @@
 #include "tools/commands.h"
 
 #include <iostream>
+#include <regex>
 
 #include "io/atomic_file.h"
 #include "io/layout_reader.h"
@@ -46,6 +47,57 @@ void add_input_options(CLI::App* sub, std::string& file, LoadOptions& options,
   sub->add_option("FILE", file, "layout file")->required();
   sub->add_flag("--lenient", options.lenient, "unknown elements/attributes are warnings");
   sub->add_flag("-q,--quiet", options.quiet, quiet_help);
+}
+
+std::optional<geom::Point> parse_point(const std::string& text) {
+  static const std::regex kPoint(R"((-?[0-9]{1,10}),(-?[0-9]{1,10}))");
+  std::smatch m;
+  if (!std::regex_match(text, m, kPoint)) return std::nullopt;
+  const long long x = std::stoll(m[1].str()), y = std::stoll(m[2].str());
+  if (!geom::in_range(x) || !geom::in_range(y)) return std::nullopt;
+  return geom::Point{static_cast<geom::Coord>(x), static_cast<geom::Coord>(y)};
+}
+
+void add_routing_options(CLI::App* sub, RoutingOptions& options) {
+  sub->add_option("--metric", options.metric, "l1 (default); combined and link are not available yet");
+  sub->add_option("--orientations", options.orientations,
+                  "wire directions; default: orientations of <rules>, else rectilinear (only "
+                  "rectilinear is available yet)");
+  sub->add_option("--bend-cost", options.bend_cost, "C of the combined metric (not available yet)");
+}
+
+bool check_routing_options(const RoutingOptions& options, const io::Layout& layout, bool quiet) {
+  if (options.metric != "l1") {
+    print_usage_error("CLI-0020", "--metric " + options.metric +
+                                      ": only the l1 metric is available in this version "
+                                      "(combined and link come with bend-aware routing)");
+    return false;
+  }
+  if (options.bend_cost) {
+    print_usage_error("CLI-0020", "--bend-cost applies to the combined metric, which is not "
+                                  "available in this version");
+    return false;
+  }
+  if (!options.orientations.empty() && options.orientations != "rectilinear") {
+    print_usage_error("CLI-0021", "--orientations " + options.orientations +
+                                      ": only rectilinear wires are available in this version");
+    return false;
+  }
+  if (options.orientations.empty() && layout.rules && layout.rules->orientations != "rectilinear") {
+    print_diagnostics({Diagnostic{Severity::Error, "CLI-0021", layout.file, layout.rules->line, 0,
+                                  "<rules> orientations=\"" + layout.rules->orientations +
+                                      "\": only rectilinear wires are available in this version; "
+                                      "pass --orientations rectilinear to route rectilinear "
+                                      "wires anyway"}});
+    return false;
+  }
+  if (layout.rules && layout.rules->bend_cost > 0)
+    print_diagnostics({Diagnostic{Severity::Warning, "CLI-0024", layout.file, layout.rules->line, 0,
+                                  "<rules> bend-cost=" + std::to_string(layout.rules->bend_cost) +
+                                      " is not honoured yet: wires are shortest in L1 and bends "
+                                      "are not weighed against length"}},
+                      quiet);
+  return true;
 }
 
 bool write_output(const std::string& path, std::string_view bytes) {

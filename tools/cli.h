@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "geom/diagnostic.h"
+#include "geom/types.h"
 #include "io/layout.h"
 
 namespace taut::cli {
@@ -35,6 +36,22 @@ void print_usage_error(std::string_view code, std::string_view message);
 // `diagnostics` (if not null) receives everything that was printed.
 std::optional<io::Layout> load_layout(const std::string& path, const LoadOptions& options,
                                       std::vector<Diagnostic>* diagnostics = nullptr);
+
+// "X,Y" with integers as FORMAT.md writes them (-?[0-9]+, |v| <= 2^30 - 1); nullopt otherwise.
+std::optional<geom::Point> parse_point(const std::string& text);
+
+// The routing options of `path` and `route` (CLI.md). This version routes the l1 metric with
+// rectilinear output; any other request is refused with a message naming what is missing
+// (never silently routed another way).
+struct RoutingOptions {
+  std::string metric = "l1";
+  std::string orientations;  // empty: from <rules> (default rectilinear)
+  std::optional<std::int64_t> bend_cost;
+};
+// Checks the options against what is implemented and the layout's <rules>; prints and returns
+// false when routing must not start (exit status 2). A bend cost in <rules> is reported as a
+// warning (it only matters to the combined metric).
+bool check_routing_options(const RoutingOptions& options, const io::Layout& layout, bool quiet);
 
 // Writes bytes atomically; prints the diagnostic and returns false on failure.
 bool write_output(const std::string& path, std::string_view bytes);

@@ -12,7 +12,12 @@ namespace taut::cli {
 void add_input_options(CLI::App* sub, std::string& file, LoadOptions& options,
                        const std::string& quiet_help = "do not print warnings");
 
+// Registers --metric, --orientations and --bend-cost.
+void add_routing_options(CLI::App* sub, RoutingOptions& options);
+
 void add_check(CLI::App& app, int& status);
+void add_path(CLI::App& app, int& status);
+void add_route(CLI::App& app, int& status);
 void add_render(CLI::App& app, int& status);
 void add_stats(CLI::App& app, int& status);
 void add_gen(CLI::App& app, int& status);

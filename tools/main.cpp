@@ -18,6 +18,8 @@ int main(int argc, char** argv) {
       "Run 'taut SUBCOMMAND --help' for the options of a subcommand.");
   int status = kOk;
   add_check(app, status);
+  add_route(app, status);
+  add_path(app, status);
   add_render(app, status);
   add_stats(app, status);
   add_gen(app, status);

@@ -1,0 +1,278 @@
+// `taut path` and `taut route` as a flow script sees them: exit codes, JSON, reasons, files
+// written or not; and every wire they return checked against the brute-force reference
+// (tests/oracle/l1_oracle.h): it starts and ends at the pins, is rectilinear with integer
+// vertices, stays in free space, and its length is the exact shortest L1 distance.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "geom/normalize.h"
+#include "io/layout_geometry.h"
+#include "io/layout_reader.h"
+#include "oracle/l1_oracle.h"
+#include "support/run.h"
+
+namespace taut::test {
+namespace {
+
+using geom::Point;
+const std::string kDesigns = std::string(TAUT_SOURCE_DIR) + "/designs/";
+const std::string kDemo = kDesigns + "demo.xml";
+
+// The reference on the layout's obstacles (the same domain rule the commands document).
+struct Reference {
+  geom::NormalizedObstacles norm;
+  std::unique_ptr<oracle::L1Reference> ref;
+};
+Reference reference_for(const std::string& file, std::vector<Point> extra = {}) {
+  io::ReadResult rr = io::read_layout(file);
+  EXPECT_TRUE(rr.layout.has_value()) << file;
+  Reference r;
+  r.norm = geom::normalize_obstacles(io::blockage_polygons(*rr.layout), io::routing_domain(*rr.layout, extra));
+  r.ref = std::make_unique<oracle::L1Reference>(r.norm.domain, r.norm.obstacles);
+  return r;
+}
+
+std::vector<Point> points_of(const nlohmann::json& pts) {
+  std::vector<Point> out;
+  for (const auto& p : pts) out.push_back({p[0].get<int>(), p[1].get<int>()});
+  return out;
+}
+
+// A wire as the contract promises it; returns its L1 length.
+std::int64_t expect_wire(const oracle::L1Reference& ref, const std::vector<Point>& w, Point a, Point b) {
+  EXPECT_GE(w.size(), 2u);
+  if (w.empty()) return -1;
+  EXPECT_EQ(w.front(), a);
+  EXPECT_EQ(w.back(), b);
+  std::int64_t len = 0;
+  for (std::size_t i = 1; i < w.size(); ++i) {
+    EXPECT_TRUE(w[i - 1].x == w[i].x || w[i - 1].y == w[i].y) << "segment " << i << " is not axis-parallel";
+    len += std::abs(std::int64_t{w[i].x} - w[i - 1].x) + std::abs(std::int64_t{w[i].y} - w[i - 1].y);
+  }
+  const auto checked = ref.check_path(w);
+  EXPECT_TRUE(checked.has_value()) << "the wire leaves free space";
+  if (checked) {
+    EXPECT_EQ(*checked, len);
+  }
+  return len;
+}
+
+TEST(Path, DemoJsonIsShortestRectilinearAndFree) {
+  const Reference r = reference_for(kDemo);
+  const std::vector<std::pair<Point, Point>> cases = {
+      {{500, 500}, {10000, 10000}},   // past the corner where ram1 and io touch
+      {{9500, 3000}, {14500, 3000}},  // over the triangle's apex
+      {{1000, 13000}, {23000, 7000}},
+      {{0, 0}, {24000, 14000}},       // boundary corners
+      {{8000, 4000}, {12000, 4500}},  // from the pinch between ram1 and io to the apex
+      {{700, 700}, {700, 700}}};
+  for (const auto& [a, b] : cases) {
+    SCOPED_TRACE(std::to_string(a.x) + "," + std::to_string(a.y) + " -> " + std::to_string(b.x) + "," + std::to_string(b.y));
+    const auto run = run_taut({"path", kDemo, "--from", std::to_string(a.x) + "," + std::to_string(a.y), "--to",
+                               std::to_string(b.x) + "," + std::to_string(b.y), "--json"});
+    ASSERT_EQ(run.status, 0) << run.err;
+    const auto j = nlohmann::json::parse(run.out);
+    EXPECT_EQ(j["metric"], "l1");
+    const auto want = r.ref->distance(a, b);
+    ASSERT_TRUE(want.has_value());
+    EXPECT_EQ(j["cost"].get<std::int64_t>(), *want);
+    EXPECT_EQ(j["length"].get<std::int64_t>(), *want);
+    const auto w = points_of(j["points"]);
+    if (a == b) {
+      EXPECT_EQ(w, std::vector<Point>{a});
+      continue;
+    }
+    EXPECT_EQ(expect_wire(*r.ref, w, a, b), *want);
+    EXPECT_EQ(j["bends"].get<long>(), static_cast<long>(w.size()) - 2);  // bends only: no collinear points
+  }
+}
+
+TEST(Path, UnreachableAndBlockedEndsExit1WithNullCost) {
+  struct Case {
+    std::string file, from, to, reason;
+  };
+  io::ReadResult demo = io::read_layout(kDemo);
+  ASSERT_TRUE(demo.layout && demo.layout->boundary);
+  const std::string ram0_line = std::to_string(demo.layout->blockages.at(0).shapes.at(0).line);
+  const std::string boundary_line = std::to_string(demo.layout->boundary->line);
+  const std::vector<Case> cases = {
+      {kDesigns + "enclosed.xml", "4500,4000", "9000,4000", "cannot be reached"},
+      {kDemo, "3000,3000", "1,1", "inside blockage \"ram0\" (" + kDemo + ":" + ram0_line + ")"},
+      {kDemo, "1,1", "17500,8500", "inside blockage \"island\""},
+      {kDemo, "30000,3000", "1,1", "outside the boundary (" + kDemo + ":" + boundary_line + ")"},
+      {kDemo, "1,1", "6000,3000", "not in free space"},  // on the edge where ram0 and ram1 touch
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.from + " -> " + c.to);
+    const auto r = run_taut({"path", c.file, "--from", c.from, "--to", c.to, "--json"});
+    EXPECT_EQ(r.status, 1) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_TRUE(j["cost"].is_null());
+    EXPECT_TRUE(j["length"].is_null());
+    EXPECT_TRUE(j["points"].empty());
+    EXPECT_NE(j["reason"].get<std::string>().find(c.reason), std::string::npos) << j["reason"];
+    EXPECT_NE(r.err.find("[ROUTE-000"), std::string::npos) << r.err;
+  }
+}
+
+TEST(Path, WithoutBoundaryTheEndsMayLieFarFromEveryBlockage) {
+  const std::string dir = temp_dir("path_unbounded");
+  const std::string file = dir + "/u.xml";
+  write_text(file,
+             "<layout name=\"u\" version=\"1\">\n"
+             "  <blockage id=\"w\"><rect x0=\"0\" y0=\"-100\" x1=\"10\" y1=\"100\"/></blockage>\n"
+             "</layout>\n");
+  const Point a{-1000000, 5}, b{1000000, 7};
+  const auto r = run_taut({"path", file, "--from", "-1000000,5", "--to", "1000000,7", "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const Reference ref = reference_for(file, {a, b});
+  EXPECT_EQ(j["cost"].get<std::int64_t>(), ref.ref->distance(a, b).value_or(-1));
+  EXPECT_EQ(j["cost"].get<std::int64_t>(), 2000000 + 2 + 2 * 93);  // around the wall's top end
+  expect_wire(*ref.ref, points_of(j["points"]), a, b);
+}
+
+TEST(Path, RequestsThisVersionCannotServeExit2AndPrintNothing) {
+  const std::string dir = temp_dir("path_usage");
+  const std::string oct = dir + "/oct.xml";
+  write_text(oct,
+             "<layout name=\"o\" version=\"1\">\n"
+             "  <rules orientations=\"octilinear\"/>\n"
+             "</layout>\n");
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"path", kDemo, "--from", "1.5,3", "--to", "1,1"}, "CLI-0022"},
+      {{"path", kDemo, "--from", "1,1", "--to", "1073741824,0"}, "CLI-0022"},
+      {{"path", kDemo, "--from", "1,1", "--to", "5,5", "--metric", "link"}, "CLI-0020"},
+      {{"path", kDemo, "--from", "1,1", "--to", "5,5", "--bend-cost", "3"}, "CLI-0020"},
+      {{"path", kDemo, "--from", "1,1", "--to", "5,5", "--orientations", "octilinear"}, "CLI-0021"},
+      {{"path", oct, "--from", "1,1", "--to", "5,5", "--json"}, oct + ":2: error: [CLI-0021]"},
+      {{"path", kDemo, "--from", "1,1"}, "CLI-0001"},
+      {{"route", kDemo, "-o", dir + "/x.xml", "--metric", "combined"}, "CLI-0020"},
+      {{"route", oct, "-o", dir + "/x.xml"}, "CLI-0021"},
+  };
+  for (const auto& [args, code] : cases) {
+    const auto r = run_taut(args);
+    EXPECT_EQ(r.status, 2) << args[args.size() - 1];
+    EXPECT_TRUE(r.out.empty()) << r.out;
+    EXPECT_NE(r.err.find(code), std::string::npos) << r.err;
+  }
+  EXPECT_FALSE(file_exists(dir + "/x.xml"));
+  // With an explicit --orientations rectilinear the octilinear rules are overridden.
+  EXPECT_EQ(run_taut({"path", oct, "--from", "1,1", "--to", "5,5", "--orientations", "rectilinear"}).status, 0);
+}
+
+TEST(Route, DemoRoutesTwoPinNetsAndNamesTheRest) {
+  const std::string dir = temp_dir("route_demo");
+  int clk_line = 0;
+  if (io::ReadResult d = io::read_layout(kDemo); d.layout)
+    for (const io::Net& n : d.layout->nets)
+      if (n.name == "clk") clk_line = n.line;
+  const auto r = run_taut({"route", kDemo, "-o", dir + "/r.xml", "--svg", dir + "/r.svg", "--stats", dir + "/s.json"});
+  EXPECT_EQ(r.status, 1) << r.err;  // clk (3 pins) and bump (shape pins) are not routed yet
+  EXPECT_NE(r.err.find("demo.xml:" + std::to_string(clk_line) + ": warning: [ROUTE-0004] net \"clk\""),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("[ROUTE-0005] net \"bump\""), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("routed 3 of 5 nets"), std::string::npos) << r.err;
+  ASSERT_TRUE(file_exists(dir + "/r.svg"));
+  EXPECT_NE(read_text(dir + "/r.svg").find("<svg"), std::string::npos);
+
+  // The routed file is the input plus <routes>: it reads back, and taut check agrees with the
+  // lengths and bends it states.
+  const auto check = run_taut({"check", dir + "/r.xml"});
+  EXPECT_EQ(check.status, 0) << check.err;
+  io::ReadResult rr = io::read_layout(dir + "/r.xml");
+  ASSERT_TRUE(rr.layout && rr.layout->routes);
+  io::ReadResult in = io::read_layout(kDemo);
+  ASSERT_TRUE(in.layout);
+  io::Layout without_routes = *rr.layout;
+  without_routes.routes.reset();
+  EXPECT_TRUE(io::same_document(without_routes, *in.layout));
+  const Reference ref = reference_for(kDemo);
+  std::map<std::string, std::string> status;
+  for (const io::Route& route : rr.layout->routes->routes) {
+    status[route.net] = route.status;
+    if (route.status != "routed") {
+      EXPECT_TRUE(route.reason.has_value());
+      continue;
+    }
+    const io::Net* net = nullptr;
+    for (const io::Net& n : rr.layout->nets)
+      if (n.name == route.net) net = &n;
+    ASSERT_NE(net, nullptr);
+    ASSERT_EQ(route.wires.size(), 1u);
+    const Point a = *net->pins[0].point, b = *net->pins[1].point;
+    EXPECT_EQ(expect_wire(*ref.ref, route.wires[0].points, a, b), ref.ref->distance(a, b).value_or(-1)) << route.net;
+  }
+  EXPECT_EQ(status, (std::map<std::string, std::string>{
+                        {"clk", "failed"}, {"en", "routed"}, {"sda", "routed"}, {"rst", "routed"}, {"bump", "failed"}}));
+  const auto stats = nlohmann::json::parse(read_text(dir + "/s.json"));
+  EXPECT_TRUE(stats.contains("route_seconds"));
+  EXPECT_EQ(stats["routes"]["sda"]["status"], "routed") << stats.dump();
+}
+
+// Generated layouts of every kind: each two-pin net is routed with exactly the reference's
+// shortest length, or reported unreachable exactly when the reference finds no path; a net
+// left without a wire for lack of an integer staircase must still be reachable.
+TEST(Route, GeneratedLayoutsMatchTheReference) {
+  const std::string dir = temp_dir("route_gen");
+  int routed = 0, unreachable = 0, no_staircase = 0;
+  for (const char* kind : {"rects", "polygons", "maze", "degenerate"}) {
+    for (int seed = 1; seed <= 4; ++seed) {
+      SCOPED_TRACE(std::string(kind) + " seed " + std::to_string(seed));
+      const std::string in = dir + "/" + kind + std::to_string(seed) + ".xml";
+      const std::string out = dir + "/" + kind + std::to_string(seed) + ".routed.xml";
+      ASSERT_EQ(run_taut({"gen", kind, "-o", in, "--size", "300", "--nets", "8", "--seed", std::to_string(seed)}).status, 0);
+      const auto r = run_taut({"route", in, "-o", out, "-q"});
+      ASSERT_TRUE(r.status == 0 || r.status == 1) << r.err;
+      io::ReadResult rr = io::read_layout(out);
+      ASSERT_TRUE(rr.layout && rr.layout->routes);
+      const Reference ref = reference_for(in);
+      ASSERT_EQ(rr.layout->routes->routes.size(), rr.layout->nets.size());
+      bool any_failed = false;
+      for (std::size_t i = 0; i < rr.layout->nets.size(); ++i) {
+        const io::Net& net = rr.layout->nets[i];
+        const io::Route& route = rr.layout->routes->routes[i];
+        ASSERT_EQ(route.net, net.name);
+        ASSERT_EQ(net.pins.size(), 2u);
+        const Point a = *net.pins[0].point, b = *net.pins[1].point;
+        const auto want = ref.ref->distance(a, b);
+        if (route.status == "routed") {
+          ++routed;
+          ASSERT_EQ(route.wires.size(), 1u);
+          EXPECT_EQ(expect_wire(*ref.ref, route.wires[0].points, a, b), want.value_or(-1)) << net.name;
+          continue;
+        }
+        any_failed = true;
+        const std::string reason = route.reason.value_or("");
+        if (reason.find("integer vertices") != std::string::npos) {
+          ++no_staircase;
+          EXPECT_TRUE(want.has_value()) << net.name << ": " << reason;
+          EXPECT_NE(reason.find("is " + std::to_string(want.value_or(-1))), std::string::npos) << reason;
+        } else {
+          ++unreachable;
+          EXPECT_FALSE(want.has_value()) << net.name << ": " << reason;
+        }
+      }
+      EXPECT_EQ(r.status, any_failed ? 1 : 0);
+    }
+  }
+  std::printf("generated nets: %d routed, %d unreachable, %d without an integer staircase\n", routed, unreachable,
+              no_staircase);
+  EXPECT_GT(routed, 80);
+}
+
+TEST(Route, InvalidInputWritesNothingAndKeepsTheOldOutput) {
+  const std::string dir = temp_dir("route_bad");
+  write_text(dir + "/bad.xml", "<layout name=\"b\" version=\"1\"><blockage id=\"x\"/></layout>\n");
+  write_text(dir + "/old.xml", "previous");
+  const auto r = run_taut({"route", dir + "/bad.xml", "-o", dir + "/old.xml", "--svg", dir + "/p.svg"});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("IO-0020"), std::string::npos) << r.err;
+  EXPECT_EQ(read_text(dir + "/old.xml"), "previous");
+  EXPECT_FALSE(file_exists(dir + "/p.svg"));
+}
+
+}  // namespace
+}  // namespace taut::test

@@ -1,0 +1,109 @@
+// taut path FILE --from X,Y --to X,Y [--json]: one exact shortest wire among the layout's
+// blockages (L1 length, rectilinear with integer vertices), its cost, length, bends, points.
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "geom/predicates.h"
+#include "router/l1_router.h"
+#include "tools/cli.h"
+#include "tools/commands.h"
+#include "tools/route_common.h"
+
+namespace taut::cli {
+
+void add_path(CLI::App& app, int& status) {
+  struct Args {
+    std::string file, from, to;
+    bool json = false;
+    RoutingOptions routing;
+    LoadOptions load;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* sub = app.add_subcommand("path", "One shortest wire between two points among the blockages");
+  sub->add_option("--from", args->from, "start point X,Y")->required();
+  sub->add_option("--to", args->to, "end point X,Y")->required();
+  sub->add_flag("--json", args->json, "print one JSON document on stdout");
+  add_routing_options(sub, args->routing);
+  add_input_options(sub, args->file, args->load, "do not print warnings");
+  sub->callback([args, &status] {
+    const auto from = parse_point(args->from), to = parse_point(args->to);
+    for (const auto& [name, text, p] : {std::tuple{"--from", args->from, from}, std::tuple{"--to", args->to, to}})
+      if (!p) {
+        print_usage_error("CLI-0022", std::string(name) + " \"" + text +
+                                          "\": expected X,Y with integers of at most 2^30 - 1 "
+                                          "in absolute value");
+        status = kInvalid;
+        return;
+      }
+    auto layout = load_layout(args->file, args->load);
+    if (!layout) {
+      status = kInvalid;
+      return;
+    }
+    if (!check_routing_options(args->routing, *layout, args->load.quiet)) {
+      status = kInvalid;
+      return;
+    }
+    const geom::Point ends[2] = {*from, *to};
+    const geom::NormalizedObstacles norm = routing_obstacles(*layout, ends);
+    router::L1Router router(norm.domain, norm.obstacles);
+    const router::L1Wire w = router.shortest(*from, *to);
+
+    nlohmann::ordered_json j;
+    j["metric"] = "l1";
+    std::string code, reason;
+    switch (w.status) {
+      case router::WireStatus::Ok: break;
+      case router::WireStatus::SourceNotFree:
+        code = "ROUTE-0001", reason = "--from " + point_text(*from) + " " + why_not_free(*layout, *from);
+        break;
+      case router::WireStatus::TargetNotFree:
+        code = "ROUTE-0001", reason = "--to " + point_text(*to) + " " + why_not_free(*layout, *to);
+        break;
+      case router::WireStatus::Unreachable:
+        code = "ROUTE-0002", reason = point_text(*to) + " cannot be reached from " + point_text(*from) +
+                                      ": blockages wall one of them in";
+        break;
+      case router::WireStatus::NoIntegerStaircase:
+        code = "ROUTE-0003",
+        reason = "the shortest L1 length is " + std::to_string(*w.length) +
+                 ", but no rectilinear wire with integer vertices has that length here (sloped "
+                 "blockages pinch every lattice staircase of the shortest path)";
+        break;
+    }
+    if (w.status == router::WireStatus::Ok) {
+      const long bends = geom::count_bends(w.points);
+      j["cost"] = *w.length;
+      j["length"] = *w.length;
+      j["bends"] = bends;
+      auto pts = nlohmann::ordered_json::array();
+      for (const geom::Point p : w.points) pts.push_back({p.x, p.y});
+      j["points"] = pts;
+      status = kOk;
+      if (!args->json) {
+        std::cout << "cost " << *w.length << " (l1), length " << *w.length << ", " << bends
+                  << (bends == 1 ? " bend:" : " bends:");
+        for (const geom::Point p : w.points) std::cout << ' ' << point_text(p);
+        std::cout << '\n';
+      }
+    } else {
+      j["cost"] = nullptr;
+      j["length"] = nullptr;
+      j["bends"] = nullptr;
+      j["points"] = nlohmann::ordered_json::array();
+      j["reason"] = reason;
+      if (w.status == router::WireStatus::NoIntegerStaircase) {
+        j["l1_distance"] = *w.length;
+        auto poly = nlohmann::ordered_json::array();
+        for (const geom::Point p : w.polygonal) poly.push_back({p.x, p.y});
+        j["polygonal"] = poly;
+      }
+      print_usage_error(code, reason);
+      status = kIncomplete;
+    }
+    if (args->json) std::cout << j.dump() << '\n';
+  });
+}
+
+}  // namespace taut::cli

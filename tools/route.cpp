@@ -1,0 +1,154 @@
+// taut route FILE -o OUT [--svg PIC] [--stats S.json]: routes every two-pin net with point pins
+// by an exact shortest L1 wire (rectilinear, integer vertices), each net on its own (wires of
+// different nets do not see each other yet), and writes the layout with <routes>. Nets this
+// version cannot route are written as failed with a reason and reported on stderr; the exit
+// status is then 1.
+#include <chrono>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "geom/predicates.h"
+#include "io/layout_writer.h"
+#include "io/stats_json.h"
+#include "io/svg.h"
+#include "router/l1_router.h"
+#include "router/version.h"
+#include "tools/cli.h"
+#include "tools/commands.h"
+#include "tools/route_common.h"
+
+namespace taut::cli {
+namespace {
+
+struct NetResult {
+  io::Route route;
+  std::string code;  // ROUTE-xxxx when failed
+};
+
+NetResult route_net(const io::Layout& layout, const io::Net& net, router::L1Router& router) {
+  NetResult r;
+  r.route.net = net.name;
+  auto fail = [&](const char* code, std::string reason) {
+    r.route.status = "failed";
+    r.route.reason = std::move(reason);
+    r.code = code;
+    return r;
+  };
+  if (net.pins.size() < 2)
+    return fail("ROUTE-0006", "the net has " + std::to_string(net.pins.size()) + " pin(s); a wire needs two");
+  if (net.pins.size() > 2)
+    return fail("ROUTE-0004", "the net has " + std::to_string(net.pins.size()) +
+                                  " pins; nets with more than two pins are not routed yet (they "
+                                  "come with the net router)");
+  for (const io::Pin& pin : net.pins)
+    if (!pin.point)
+      return fail("ROUTE-0005", "pin \"" + pin.name +
+                                    "\" is a shape; shape pins are not routed yet (they come "
+                                    "with the net router)");
+  const io::Pin& a = net.pins[0];
+  const io::Pin& b = net.pins[1];
+  const router::L1Wire w = router.shortest(*a.point, *b.point);
+  switch (w.status) {
+    case router::WireStatus::Ok: break;
+    case router::WireStatus::SourceNotFree:
+      return fail("ROUTE-0001", "pin \"" + a.name + "\" at " + point_text(*a.point) + " " +
+                                    why_not_free(layout, *a.point));
+    case router::WireStatus::TargetNotFree:
+      return fail("ROUTE-0001", "pin \"" + b.name + "\" at " + point_text(*b.point) + " " +
+                                    why_not_free(layout, *b.point));
+    case router::WireStatus::Unreachable:
+      return fail("ROUTE-0002", "pins \"" + a.name + "\" and \"" + b.name +
+                                    "\" are in different parts of free space: blockages wall one "
+                                    "of them in");
+    case router::WireStatus::NoIntegerStaircase:
+      return fail("ROUTE-0003", "the shortest L1 length is " + std::to_string(*w.length) +
+                                    ", but no rectilinear wire with integer vertices has that "
+                                    "length (sloped blockages pinch every lattice staircase)");
+  }
+  io::Wire wire;
+  wire.points = w.points;
+  if (wire.points.size() == 1) wire.points.push_back(wire.points[0]);  // both pins at one point
+  r.route.status = "routed";
+  r.route.length = io::format_length(wire.points);
+  r.route.bends = geom::count_bends(wire.points);
+  r.route.wires.push_back(std::move(wire));
+  return r;
+}
+
+}  // namespace
+
+void add_route(CLI::App& app, int& status) {
+  struct Args {
+    std::string file, out, svg, stats;
+    RoutingOptions routing;
+    LoadOptions load;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* sub = app.add_subcommand("route", "Route every two-pin net and write the routed layout");
+  sub->add_option("-o,--output", args->out, "routed layout to write (the input with <routes>)")->required();
+  sub->add_option("--svg", args->svg, "also draw the routed layout as SVG");
+  sub->add_option("--stats", args->stats, "also write statistics as JSON");
+  add_routing_options(sub, args->routing);
+  add_input_options(sub, args->file, args->load, "do not print warnings or the summary");
+  sub->callback([args, &status] {
+    using Clock = std::chrono::steady_clock;
+    const auto t0 = Clock::now();
+    auto layout = load_layout(args->file, args->load);
+    if (!layout) {
+      status = kInvalid;
+      return;
+    }
+    if (!check_routing_options(args->routing, *layout, args->load.quiet)) {
+      status = kInvalid;
+      return;
+    }
+    const geom::NormalizedObstacles norm = routing_obstacles(*layout);
+    router::L1Router router(norm.domain, norm.obstacles);
+    const auto t1 = Clock::now();
+
+    io::Routes routes;
+    routes.tool = "taut " + std::string(router::version());
+    routes.metric = "l1";
+    routes.orientations = "rectilinear";
+    std::size_t routed = 0;
+    for (const io::Net& net : layout->nets) {
+      NetResult r = route_net(*layout, net, router);
+      if (r.route.status == "routed") {
+        ++routed;
+      } else {
+        print_diagnostics({Diagnostic{Severity::Warning, r.code, layout->file, net.line, 0,
+                                      "net \"" + net.name + "\" not routed: " + *r.route.reason}},
+                          args->load.quiet);
+      }
+      routes.routes.push_back(std::move(r.route));
+    }
+    const auto t2 = Clock::now();
+    io::Layout out = *layout;
+    out.routes = std::move(routes);
+
+    // Every output is made before any is written, so a failure leaves nothing half done.
+    const std::string xml = io::layout_to_xml(out);
+    std::string svg, stats;
+    if (!args->svg.empty()) svg = io::layout_to_svg(out);
+    if (!args->stats.empty()) {
+      auto j = nlohmann::ordered_json::parse(io::layout_stats_json(out));
+      j["route_seconds"] = {{"prepare", std::chrono::duration<double>(t1 - t0).count()},
+                            {"route", std::chrono::duration<double>(t2 - t1).count()}};
+      stats = j.dump(2) + "\n";
+    }
+    if (!write_output(args->out, xml) || (!args->svg.empty() && !write_output(args->svg, svg)) ||
+        (!args->stats.empty() && !write_output(args->stats, stats))) {
+      status = kInvalid;
+      return;
+    }
+    const std::size_t failed = layout->nets.size() - routed;
+    if (!args->load.quiet)
+      std::cerr << args->file << ": routed " << routed << " of " << layout->nets.size() << " nets"
+                << (failed ? " (" + std::to_string(failed) + " not routed, see above)" : std::string())
+                << "; wrote " << args->out << '\n';
+    status = failed ? kIncomplete : kOk;
+  });
+}
+
+}  // namespace taut::cli
