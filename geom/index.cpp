@@ -4,6 +4,7 @@
 #include <boost/geometry.hpp>
 #include <boost/geometry/index/rtree.hpp>
 #include <boost/iterator/function_output_iterator.hpp>
+#include <mutex>
 #include <numeric>
 #include <utility>
 
@@ -70,7 +71,8 @@ bool segment_meets_box(const Segment& s, const Box& b) {
 
 struct ObstacleIndex::Trees {
   Tree axis;                  // edge boxes in (x, y)
-  Tree diag;                  // edge boxes in (u, v) = (x + y, y - x)
+  Tree diag;                  // edge boxes in (u, v) = (x + y, y - x); built by the first
+  std::once_flag diag_built;  // diagonal ray (many users never shoot one)
   B64 axis_bounds, diag_bounds;
   i64 first_window = 1;       // initial probe length along a ray
 };
@@ -89,23 +91,18 @@ ObstacleIndex::ObstacleIndex(std::span<const Polygon> obstacles) : trees_(std::m
     for (std::size_t h = 0; h < obstacles[k].holes.size(); ++h)
       add_ring(obstacles[k].holes[h], static_cast<std::uint32_t>(k), static_cast<std::int32_t>(h));
   }
-  std::vector<Value> axis, diag;
+  std::vector<Value> axis;
   axis.reserve(edges_.size());
-  diag.reserve(edges_.size());
   i64 total = 0;
   for (std::uint32_t i = 0; i < edges_.size(); ++i) {
     const Segment& s = edges_[i];
     axis.emplace_back(make_box(s.a.x, s.a.y, s.b.x, s.b.y), i);
-    const P64 ra = rotate(s.a), rb = rotate(s.b);
-    diag.emplace_back(make_box(ra.get<0>(), ra.get<1>(), rb.get<0>(), rb.get<1>()), i);
     total += std::max(std::abs(i64{s.a.x} - s.b.x), std::abs(i64{s.a.y} - s.b.y));
   }
   // The range constructor uses the packing (bulk loading) algorithm.
   trees_->axis = Tree(axis.begin(), axis.end());
-  trees_->diag = Tree(diag.begin(), diag.end());
   if (!edges_.empty()) {
     trees_->axis_bounds = trees_->axis.bounds();
-    trees_->diag_bounds = trees_->diag.bounds();
     trees_->first_window = std::max<i64>(1, total / static_cast<i64>(edges_.size()));
   }
 }
@@ -119,6 +116,17 @@ RayHit ObstacleIndex::shoot(Point p, Direction dir, RayOptions options) const {
   if (edges_.empty()) return result;
   const Point d = step(dir);
   const bool diagonal = d.x != 0 && d.y != 0;
+  if (diagonal)
+    std::call_once(trees_->diag_built, [this] {
+      std::vector<Value> diag;
+      diag.reserve(edges_.size());
+      for (std::uint32_t i = 0; i < edges_.size(); ++i) {
+        const P64 ra = rotate(edges_[i].a), rb = rotate(edges_[i].b);
+        diag.emplace_back(make_box(ra.get<0>(), ra.get<1>(), rb.get<0>(), rb.get<1>()), i);
+      }
+      trees_->diag = Tree(diag.begin(), diag.end());
+      trees_->diag_bounds = trees_->diag.bounds();
+    });
   // In the chosen frame the ray is q + t e with e axis-parallel (|e| = 1 or 2).
   const Tree& tree = diagonal ? trees_->diag : trees_->axis;
   const B64& bounds = diagonal ? trees_->diag_bounds : trees_->axis_bounds;

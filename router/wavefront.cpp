@@ -318,7 +318,12 @@ struct L1Wavefront::Impl {
 
   std::vector<Point> pts;  // vertex points [0, nvert), then run-time points
   uint32_t nvert = 0;
-  std::unordered_map<uint64_t, uint32_t> point_id;  // vertex points only
+  std::vector<std::pair<uint64_t, uint32_t>> point_ids;  // (key_of, id) of vertex points, sorted
+  uint32_t point_id(Point p) const {  // kNone when p is not a vertex point
+    const uint64_t k = key_of(p);
+    auto it = std::lower_bound(point_ids.begin(), point_ids.end(), std::pair<uint64_t, uint32_t>{k, 0});
+    return it != point_ids.end() && it->first == k ? it->second : kNone;
+  }
   std::vector<uint32_t> ent_begin;                  // per vertex point: entities [begin, begin+1..)
   std::vector<Entity> ents;                         // vertex entities [0, nvent), run-time after
   uint32_t nvent = 0;
@@ -383,7 +388,8 @@ struct L1Wavefront::Impl {
     // plane are near each other in memory (the wavefront sweeps the plane as a front: this
     // keeps its entity, point and ray-cache accesses local), and their occurrences
     // (prev, next) on rings.
-    std::vector<std::vector<std::pair<uint32_t, uint32_t>>> occ;
+    std::vector<uint32_t> occ_begin;                       // per point: [begin, next begin)
+    std::vector<std::pair<uint32_t, uint32_t>> occ_list;  // (prev, next) ids, flat
     {
       std::vector<std::pair<uint64_t, Point>> order;
       auto add_points = [&](const geom::Ring& ring) {
@@ -400,24 +406,39 @@ struct L1Wavefront::Impl {
                               [](const auto& a, const auto& b) { return a.second == b.second; }),
                   order.end());
       pts.reserve(order.size());
-      point_id.reserve(order.size());
+      point_ids.reserve(order.size());
       for (const auto& [k, q] : order) {
-        point_id.emplace(key_of(q), static_cast<uint32_t>(pts.size()));
+        point_ids.push_back({key_of(q), static_cast<uint32_t>(pts.size())});
         pts.push_back(q);
       }
-      occ.resize(pts.size());
     }
-    auto id_of = [&](Point p) { return point_id.at(key_of(p)); };
-    auto add_ring = [&](const geom::Ring& ring) {
-      const std::size_t n = ring.size();
-      std::vector<uint32_t> ids(n);
-      for (std::size_t i = 0; i < n; ++i) ids[i] = id_of(ring[i]);
-      for (std::size_t i = 0; i < n; ++i)
-        occ[ids[i]].push_back({ids[(i + n - 1) % n], ids[(i + 1) % n]});
-    };
-    for (const Polygon& p : polys) {
-      add_ring(p.outer);
-      for (const auto& h : p.holes) add_ring(h);
+    std::sort(point_ids.begin(), point_ids.end());
+    auto id_of = [&](Point p) { return point_id(p); };
+    occ_begin.assign(pts.size() + 1, 0);
+    std::vector<uint32_t> ids;
+    for (int pass = 0; pass < 2; ++pass) {  // count, then fill
+      auto add_ring = [&](const geom::Ring& ring) {
+        const std::size_t n = ring.size();
+        ids.resize(n);
+        for (std::size_t i = 0; i < n; ++i) ids[i] = id_of(ring[i]);
+        for (std::size_t i = 0; i < n; ++i) {
+          if (pass == 0)
+            ++occ_begin[ids[i] + 1];
+          else
+            occ_list[occ_begin[ids[i]]++] = {ids[(i + n - 1) % n], ids[(i + 1) % n]};
+        }
+      };
+      for (const Polygon& p : polys) {
+        add_ring(p.outer);
+        for (const auto& h : p.holes) add_ring(h);
+      }
+      if (pass == 0) {
+        for (std::size_t v = 0; v < pts.size(); ++v) occ_begin[v + 1] += occ_begin[v];
+        occ_list.resize(occ_begin.back());
+      } else {  // the fill advanced every begin to the next one's: shift back
+        for (std::size_t v = pts.size(); v > 0; --v) occ_begin[v] = occ_begin[v - 1];
+        occ_begin[0] = 0;
+      }
     }
     nvert = static_cast<uint32_t>(pts.size());
     // Free wedges: sort occurrences by the direction of `next`; the free wedge after
@@ -425,7 +446,8 @@ struct L1Wavefront::Impl {
     ent_begin.assign(nvert + 1, 0);
     for (uint32_t v = 0; v < nvert; ++v) {
       ent_begin[v] = static_cast<uint32_t>(ents.size());
-      auto& o = occ[v];
+      const std::span<const std::pair<uint32_t, uint32_t>> o(occ_list.data() + occ_begin[v],
+                                                           occ_begin[v + 1] - occ_begin[v]);
       const Point p = pts[v];
       auto dirto = [&](uint32_t q) { return int_dir(i64{pts[q].x} - p.x, i64{pts[q].y} - p.y); };
       if (o.size() == 1) {
@@ -467,7 +489,7 @@ struct L1Wavefront::Impl {
     edge_pts.resize(index->edge_count());
     for (uint32_t e = 0; e < index->edge_count(); ++e) {
       const geom::Segment& s = index->edge(e);
-      edge_pts[e] = {point_id.at(key_of(s.a)), point_id.at(key_of(s.b))};
+      edge_pts[e] = {point_id(s.a), point_id(s.b)};
     }
     std::vector<std::pair<Point, uint32_t>> items;
     items.reserve(nvert);
@@ -613,8 +635,8 @@ struct L1Wavefront::Impl {
   Where locate(Point p, uint32_t& vid, uint32_t& ea, uint32_t& eb) const {
     if (p.x < domain.lo.x || p.x > domain.hi.x || p.y < domain.lo.y || p.y > domain.hi.y)
       return Where::Inside;  // (the frame's outer corners are vertices, but not free)
-    if (auto it = point_id.find(key_of(p)); it != point_id.end()) {
-      vid = it->second;
+    if (const uint32_t id = point_id(p); id != kNone) {
+      vid = id;
       return Where::Vertex;
     }
     for (uint32_t e : index->edges_in_box(Box{p, p})) {
@@ -1171,10 +1193,9 @@ std::vector<Point> L1Wavefront::target_path(std::size_t i) const {
 }
 
 std::optional<std::int64_t> L1Wavefront::vertex_distance(Point p) const {
-  auto it = impl_->point_id.find(Impl::key_of(p));
-  if (it == impl_->point_id.end()) return std::nullopt;
+  const uint32_t v = impl_->point_id(p);
+  if (v == kNone) return std::nullopt;
   std::optional<std::int64_t> best;
-  const uint32_t v = it->second;
   for (uint32_t e = impl_->ent_begin[v]; e < impl_->ent_begin[v + 1]; ++e)
     if (impl_->ents[e].labelled && (!best || impl_->ents[e].d.a < *best))
       best = impl_->ents[e].d.a;
@@ -1190,7 +1211,7 @@ std::size_t L1Wavefront::memory_bytes() const {
                   m.ent_begin.capacity() * sizeof(uint32_t) +
                   m.edge_pts.capacity() * sizeof(m.edge_pts[0]) + m.vertex_tree.memory_bytes() +
                   m.ray_cache.capacity() * sizeof(uint32_t) +
-                  m.point_id.size() * 32;
+                  m.point_ids.capacity() * sizeof(m.point_ids[0]);
   for (const Polygon& p : m.polys) {
     b += p.outer.capacity() * sizeof(Point);
     for (const auto& h : p.holes) b += h.capacity() * sizeof(Point);
