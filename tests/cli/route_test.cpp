@@ -133,6 +133,49 @@ TEST(Path, WithoutBoundaryTheEndsMayLieFarFromEveryBlockage) {
   expect_wire(*ref.ref, points_of(j["points"]), a, b);
 }
 
+// Two sloped triangles leave a corridor of vertical width 2/3 between (0,0) and (3,1): the L1
+// distance is 4, but every monotone lattice staircase must step up at an integer x where the
+// corridor holds no integer y (worked out in router/staircase.h). The wire is reported with its
+// exact length, not replaced by a longer one.
+TEST(Path, NoIntegerStaircaseIsReportedWithTheExactLength) {
+  const std::string dir = temp_dir("path_pinch");
+  const std::string file = dir + "/p.xml";
+  write_text(file,
+             "<layout name=\"p\" version=\"1\">\n"
+             "  <boundary x0=\"-3\" y0=\"-3\" x1=\"6\" y1=\"4\"/>\n"
+             "  <blockage id=\"a\"><polygon points=\"-1,0 2,1 -1,1\"/></blockage>\n"
+             "  <blockage id=\"b\"><polygon points=\"1,0 4,0 4,1\"/></blockage>\n"
+             "</layout>\n");
+  const auto r = run_taut({"path", file, "--from", "0,0", "--to", "3,1", "--json"});
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("[ROUTE-0003]"), std::string::npos) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["cost"].is_null());
+  EXPECT_EQ(j["l1_distance"].get<std::int64_t>(), 4);
+  const Reference ref = reference_for(file);
+  EXPECT_EQ(ref.ref->distance({0, 0}, {3, 1}), 4);
+  const auto poly = points_of(j["polygonal"]);
+  ASSERT_GE(poly.size(), 2u);
+  EXPECT_EQ(poly.front(), (Point{0, 0}));
+  EXPECT_EQ(poly.back(), (Point{3, 1}));
+  EXPECT_EQ(ref.ref->check_path(poly), 4);  // the polygonal path is free and shortest
+}
+
+TEST(Path, NegativeCoordinates) {
+  const std::string dir = temp_dir("path_negative");
+  const std::string file = dir + "/n.xml";
+  write_text(file,
+             "<layout name=\"n\" version=\"1\">\n"
+             "  <blockage id=\"w\"><rect x0=\"-10\" y0=\"-100\" x1=\"10\" y1=\"100\"/></blockage>\n"
+             "</layout>\n");
+  const auto r = run_taut({"path", file, "--from", "-50,3", "--to", "50,-7", "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["cost"].get<std::int64_t>(), 103 + 100 + 93);  // under the wall's bottom end
+  const Reference ref = reference_for(file, {{-50, 3}, {50, -7}});
+  expect_wire(*ref.ref, points_of(j["points"]), {-50, 3}, {50, -7});
+}
+
 TEST(Path, RequestsThisVersionCannotServeExit2AndPrintNothing) {
   const std::string dir = temp_dir("path_usage");
   const std::string oct = dir + "/oct.xml";
