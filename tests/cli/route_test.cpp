@@ -33,6 +33,13 @@ Reference reference_for(const std::string& file, std::vector<Point> extra = {}) 
   return r;
 }
 
+// A layout file in a fresh folder: <layout name="t" version="1"> + body + </layout>.
+std::string layout_file(const std::string& folder, const std::string& body) {
+  const std::string file = temp_dir(folder) + "/t.xml";
+  write_text(file, "<layout name=\"t\" version=\"1\">\n" + body + "</layout>\n");
+  return file;
+}
+
 std::vector<Point> points_of(const nlohmann::json& pts) {
   std::vector<Point> out;
   for (const auto& p : pts) out.push_back({p[0].get<int>(), p[1].get<int>()});
@@ -117,12 +124,8 @@ TEST(Path, UnreachableAndBlockedEndsExit1WithNullCost) {
 }
 
 TEST(Path, WithoutBoundaryTheEndsMayLieFarFromEveryBlockage) {
-  const std::string dir = temp_dir("path_unbounded");
-  const std::string file = dir + "/u.xml";
-  write_text(file,
-             "<layout name=\"u\" version=\"1\">\n"
-             "  <blockage id=\"w\"><rect x0=\"0\" y0=\"-100\" x1=\"10\" y1=\"100\"/></blockage>\n"
-             "</layout>\n");
+  const std::string file =
+      layout_file("path_unbounded", "  <blockage id=\"w\"><rect x0=\"0\" y0=\"-100\" x1=\"10\" y1=\"100\"/></blockage>\n");
   const Point a{-1000000, 5}, b{1000000, 7};
   const auto r = run_taut({"path", file, "--from", "-1000000,5", "--to", "1000000,7", "--json"});
   ASSERT_EQ(r.status, 0) << r.err;
@@ -138,14 +141,10 @@ TEST(Path, WithoutBoundaryTheEndsMayLieFarFromEveryBlockage) {
 // corridor holds no integer y (worked out in router/staircase.h). The wire is reported with its
 // exact length, not replaced by a longer one.
 TEST(Path, NoIntegerStaircaseIsReportedWithTheExactLength) {
-  const std::string dir = temp_dir("path_pinch");
-  const std::string file = dir + "/p.xml";
-  write_text(file,
-             "<layout name=\"p\" version=\"1\">\n"
-             "  <boundary x0=\"-3\" y0=\"-3\" x1=\"6\" y1=\"4\"/>\n"
-             "  <blockage id=\"a\"><polygon points=\"-1,0 2,1 -1,1\"/></blockage>\n"
-             "  <blockage id=\"b\"><polygon points=\"1,0 4,0 4,1\"/></blockage>\n"
-             "</layout>\n");
+  const std::string file = layout_file("path_pinch",
+                                      "  <boundary x0=\"-3\" y0=\"-3\" x1=\"6\" y1=\"4\"/>\n"
+                                      "  <blockage id=\"a\"><polygon points=\"-1,0 2,1 -1,1\"/></blockage>\n"
+                                      "  <blockage id=\"b\"><polygon points=\"1,0 4,0 4,1\"/></blockage>\n");
   const auto r = run_taut({"path", file, "--from", "0,0", "--to", "3,1", "--json"});
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_NE(r.err.find("[ROUTE-0003]"), std::string::npos) << r.err;
@@ -162,12 +161,8 @@ TEST(Path, NoIntegerStaircaseIsReportedWithTheExactLength) {
 }
 
 TEST(Path, NegativeCoordinates) {
-  const std::string dir = temp_dir("path_negative");
-  const std::string file = dir + "/n.xml";
-  write_text(file,
-             "<layout name=\"n\" version=\"1\">\n"
-             "  <blockage id=\"w\"><rect x0=\"-10\" y0=\"-100\" x1=\"10\" y1=\"100\"/></blockage>\n"
-             "</layout>\n");
+  const std::string file =
+      layout_file("path_negative", "  <blockage id=\"w\"><rect x0=\"-10\" y0=\"-100\" x1=\"10\" y1=\"100\"/></blockage>\n");
   const auto r = run_taut({"path", file, "--from", "-50,3", "--to", "50,-7", "--json"});
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
