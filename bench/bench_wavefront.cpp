@@ -39,7 +39,7 @@ using taut::geom::Point;
 struct Row {
   std::int64_t n = 0;  // obstacle vertices after the union (frame excluded)
   double sort = 0, build = 0, field = 0, ref = -1;
-  std::int64_t events = 0, wavelets = 0, labelled = 0, entities = 0;
+  std::int64_t events = 0, labelled = 0;
   std::size_t bytes = 0, own_bytes = 0;
   double rss = 0;
   int checked = 0;
@@ -73,9 +73,9 @@ int main(int argc, char** argv) {
   }
   std::printf("taut wavefront benchmark: kind=%s, one source, whole distance field, one thread, best of %d\n",
               kind_name.c_str(), reps);
-  std::printf("%9s %9s | %8s %8s %8s | %7s %8s | %8s %9s %7s | %6s %8s | %8s\n", "vertices", "sort(s)",
+  std::printf("%9s %9s | %8s %8s %8s | %7s %8s | %8s %9s %7s %7s | %6s %8s | %8s\n", "vertices", "sort(s)",
               "build(s)", "field(s)", "ref(s)", "field/s", "ref/field", "events", "events/n",
-              "B/vert", "rss", "labelled", "checked");
+              "B/vert", "own B/v", "rss", "labelled", "checked");
   std::vector<Row> rows;
   bool all_ok = true;
   if (sizes.empty())
@@ -118,9 +118,7 @@ int main(int argc, char** argv) {
     row.field = seconds_of([&] { wf->run({&source, 1}, targets, /*stop_early=*/false); }, reps);
     const auto& st = wf->stats();
     row.events = st.events;
-    row.wavelets = st.wavelets;
     row.labelled = st.labelled;
-    row.entities = st.entities;
     row.bytes = taut::bench::heap_in_use() - heap0;  // everything the wavefront holds after the run
     row.own_bytes = wf->memory_bytes();
     if (row.n <= ref_max) {
@@ -147,10 +145,11 @@ int main(int argc, char** argv) {
       std::snprintf(refbuf, sizeof refbuf, "%.3f", row.ref);
       std::snprintf(ratiobuf, sizeof ratiobuf, "%.0fx", row.ref / (row.build + row.field));
     }
-    std::printf("%9lld %9.4f | %8.3f %8.3f %8s | %7.1f %8s | %8lld %9.2f %7.0f | %6.0f %8lld | %8d\n",
+    std::printf("%9lld %9.4f | %8.3f %8.3f %8s | %7.1f %8s | %8lld %9.2f %7.0f %7.0f | %6.0f %8lld | %8d\n",
                 static_cast<long long>(row.n), row.sort, row.build, row.field, refbuf,
                 (row.build + row.field) / row.sort, ratiobuf, static_cast<long long>(row.events),
-                double(row.events) / double(row.n), double(row.bytes) / double(row.n), row.rss,
+                double(row.events) / double(row.n), double(row.bytes) / double(row.n),
+                double(row.own_bytes) / double(row.n), row.rss,
                 static_cast<long long>(row.labelled), row.checked);
     std::fflush(stdout);
     rows.push_back(row);
@@ -158,6 +157,7 @@ int main(int argc, char** argv) {
   std::printf("\ncolumns: build = index construction, field = run(); ref = reference build + one Dijkstra;\n"
               "field/s = (build + field) / sort; ref/field = ref / (build + field);\n"
               "B/vert = heap bytes the wavefront holds after the run (indexes, entities, queue, caches) / n;\n"
+              "own B/v = what L1Wavefront::memory_bytes() accounts for (its own arrays; not the R-tree) / n;\n"
               "rss = peak resident MiB of the whole process so far. The reference is O(n^3)-ish (about 20 min\n"
               "at 10^4), so it runs up to --ref-max (default 5000) and the ratio is read at the largest size.\n");
   std::printf("\ngrowth exponents log(t2/t1)/log(n2/n1) of build + field (sort for comparison):\n");

@@ -930,4 +930,10 @@ ReadResult read_layout(const std::string& path, const ReadOptions& options) {
   return parse_layout(bytes, path, options);
 }
 
+std::optional<std::int64_t> parse_coordinate(std::string_view text) {
+  std::int64_t v = 0;
+  if (parse_int(text, v) != IntError::None) return std::nullopt;
+  return v;
+}
+
 }  // namespace taut::io

@@ -40,4 +40,8 @@ ReadResult read_layout(const std::string& path, const ReadOptions& options = {})
 ReadResult parse_layout(std::string_view bytes, const std::string& name,
                         const ReadOptions& options = {});
 
+// A coordinate as FORMAT.md writes it: the whole text is -?[0-9]+ with |value| <= 2^30 - 1
+// (the reader's own rule, for numbers given on a command line); nullopt otherwise.
+std::optional<std::int64_t> parse_coordinate(std::string_view text);
+
 }  // namespace taut::io

@@ -141,21 +141,11 @@ class KdTree {
     return items_.capacity() * sizeof(items_[0]) + nodes_.capacity() * sizeof(Node);
   }
 
-  // The id of the satisfying point with the smallest level (nullopt = none).
-  // `seeds`: points known to be among the items (may or may not satisfy the region); the
-  // best satisfying one bounds the search from the start. The answer does not depend on them
-  // (levels of distinct points differ, so the minimum is unique).
-  bool query(const Region& r, uint32_t& best_id, T3& best_level, std::int64_t& nodes,
-             std::span<const std::pair<Point, uint32_t>> seeds = {}) const {
+  // The id of the satisfying point with the smallest level (false = none); `nodes` counts the
+  // nodes visited.
+  bool query(const Region& r, uint32_t& best_id, T3& best_level, std::int64_t& nodes) const {
     if (items_.empty()) return false;
     bool found = false;
-    for (const auto& [q, id] : seeds) {
-      const T3 lv = level(r.d, q);
-      if ((found && !(lv < best_level)) || !satisfies(r, q)) continue;
-      found = true;
-      best_level = lv;
-      best_id = id;
-    }
     visit(0, r, found, best_id, best_level, nodes);
     return found;
   }
@@ -495,9 +485,7 @@ struct L1Wavefront::Impl {
     items.reserve(nvert);
     for (uint32_t v = 0; v < nvert; ++v) {
       const Point q = pts[v];
-      // the frame's outer ring lies outside the domain: never reached
-      if (q.x < domain.lo.x || q.x > domain.hi.x || q.y < domain.lo.y || q.y > domain.hi.y)
-        continue;
+      if (!in_domain(q)) continue;  // the frame's outer ring lies outside the domain: never reached
       items.push_back({q, v});
     }
     vertex_tree = KdTree(std::move(items));
@@ -633,8 +621,7 @@ struct L1Wavefront::Impl {
   // or in open free space.
   enum class Where { Vertex, Edge, Inside, Free };
   Where locate(Point p, uint32_t& vid, uint32_t& ea, uint32_t& eb) const {
-    if (p.x < domain.lo.x || p.x > domain.hi.x || p.y < domain.lo.y || p.y > domain.hi.y)
-      return Where::Inside;  // (the frame's outer corners are vertices, but not free)
+    if (!in_domain(p)) return Where::Inside;  // (the frame's outer corners are vertices, but not free)
     if (const uint32_t id = point_id(p); id != kNone) {
       vid = id;
       return Where::Vertex;
@@ -873,13 +860,7 @@ struct L1Wavefront::Impl {
     ++stats.drag_queries;
     uint32_t vid = kNone, tid = kNone;
     T3 vl, tl;
-    // Seeds: the ends of the track edges and stop edges, often the next event themselves.
-    std::array<std::pair<Point, uint32_t>, 4> seeds;
-    std::size_t nseeds = 0;
-    for (const Bound* b : {&w.left, &w.right})
-      for (const uint32_t q : {b->ea, b->eb})
-        if (q != kNone && q < nvert && in_domain(pts[q])) seeds[nseeds++] = {pts[q], q};
-    const bool hv = vertex_tree.query(r, vid, vl, stats.drag_nodes, std::span(seeds.data(), nseeds));
+    const bool hv = vertex_tree.query(r, vid, vl, stats.drag_nodes);
     const bool ht = !target_tree.empty() && target_tree.query(r, tid, tl, stats.drag_nodes);
     if (!hv && !ht) return;
     const Point root = pts[ents[w.root].point];

@@ -120,7 +120,8 @@ class L1Wavefront {
   std::optional<std::int64_t> vertex_distance(geom::Point p) const;
 
   const WavefrontStats& stats() const;
-  // Bytes held by the structures (for the benchmark's bytes-per-vertex figure).
+  // Bytes held by its own arrays (points, entities, k-d tree, ray answers, ...); the R-tree of
+  // obstacle edges and the queue are not counted (bench_wavefront measures those by heap use).
   std::size_t memory_bytes() const;
 
  private:

@@ -3,7 +3,6 @@
 #include "tools/commands.h"
 
 #include <iostream>
-#include <regex>
 
 #include "io/atomic_file.h"
 #include "io/layout_reader.h"
@@ -50,12 +49,12 @@ void add_input_options(CLI::App* sub, std::string& file, LoadOptions& options,
 }
 
 std::optional<geom::Point> parse_point(const std::string& text) {
-  static const std::regex kPoint(R"((-?[0-9]{1,10}),(-?[0-9]{1,10}))");
-  std::smatch m;
-  if (!std::regex_match(text, m, kPoint)) return std::nullopt;
-  const long long x = std::stoll(m[1].str()), y = std::stoll(m[2].str());
-  if (!geom::in_range(x) || !geom::in_range(y)) return std::nullopt;
-  return geom::Point{static_cast<geom::Coord>(x), static_cast<geom::Coord>(y)};
+  const std::size_t comma = text.find(',');
+  if (comma == std::string::npos) return std::nullopt;
+  const auto x = io::parse_coordinate(std::string_view(text).substr(0, comma));
+  const auto y = io::parse_coordinate(std::string_view(text).substr(comma + 1));
+  if (!x || !y) return std::nullopt;
+  return geom::Point{static_cast<geom::Coord>(*x), static_cast<geom::Coord>(*y)};
 }
 
 void add_routing_options(CLI::App* sub, RoutingOptions& options) {
@@ -98,6 +97,13 @@ bool check_routing_options(const RoutingOptions& options, const io::Layout& layo
                                       "are not weighed against length"}},
                       quiet);
   return true;
+}
+
+std::optional<io::Layout> load_routing_layout(const std::string& path, const LoadOptions& load,
+                                              const RoutingOptions& routing) {
+  auto layout = load_layout(path, load);
+  if (!layout || !check_routing_options(routing, *layout, load.quiet)) return std::nullopt;
+  return layout;
 }
 
 bool write_output(const std::string& path, std::string_view bytes) {

@@ -53,6 +53,11 @@ struct RoutingOptions {
 // warning (it only matters to the combined metric).
 bool check_routing_options(const RoutingOptions& options, const io::Layout& layout, bool quiet);
 
+// load_layout(), then check_routing_options(): the layout when routing may start, otherwise
+// nullopt after everything was printed (exit status 2).
+std::optional<io::Layout> load_routing_layout(const std::string& path, const LoadOptions& load,
+                                              const RoutingOptions& routing);
+
 // Writes bytes atomically; prints the diagnostic and returns false on failure.
 bool write_output(const std::string& path, std::string_view bytes);
 

@@ -36,12 +36,8 @@ void add_path(CLI::App& app, int& status) {
         status = kInvalid;
         return;
       }
-    auto layout = load_layout(args->file, args->load);
+    const auto layout = load_routing_layout(args->file, args->load, args->routing);
     if (!layout) {
-      status = kInvalid;
-      return;
-    }
-    if (!check_routing_options(args->routing, *layout, args->load.quiet)) {
       status = kInvalid;
       return;
     }

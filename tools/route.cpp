@@ -94,12 +94,8 @@ void add_route(CLI::App& app, int& status) {
   sub->callback([args, &status] {
     using Clock = std::chrono::steady_clock;
     const auto t0 = Clock::now();
-    auto layout = load_layout(args->file, args->load);
+    const auto layout = load_routing_layout(args->file, args->load, args->routing);
     if (!layout) {
-      status = kInvalid;
-      return;
-    }
-    if (!check_routing_options(args->routing, *layout, args->load.quiet)) {
       status = kInvalid;
       return;
     }
