@@ -116,7 +116,125 @@ struct Region {
   } lex[2];
   int nedges = 0;           // orient(a, b, q) <= 0
   Point ea[4], eb[4];
+  Box hull;                 // world box holding every point of the region (region_hull())
 };
+
+// The world bounding box of a wavelet's region, rounded out to integers; false when the region
+// is empty. The region is relaxed to a closed convex polygon (U > c becomes u >= c.a, the level
+// bound u + v >= start.a; stop edges exactly) and clipped from the box `frame` by
+// Sutherland-Hodgman. Every vertex is kept as the pair of input lines it lies on and computed
+// exactly from them: lines are a*x + b*y <= c with |a|, |b| < 2^31 and |c| < 2^62, so a vertex
+// is (xn / den, yn / den) with |den| < 2^63 and |xn|, |yn| < 2^94, and the side test
+// a*xn + b*yn - c*den stays below 2^127 in __int128.
+// Used only to bound k-d tree searches (KdTree::query_near()), never to decide a hit.
+inline bool region_hull(const Region& r, const Box& frame, Box& out) {
+  struct Line {
+    i64 a, b, c;
+  };
+  // World box bounds from the frame, the lexicographic half-planes and axis-parallel stop edges
+  // (the common case: those need no clipping).
+  i64 xlo = frame.lo.x, xhi = frame.hi.x, ylo = frame.lo.y, yhi = frame.hi.y;
+  const i64 sx = kSx[r.d], sy = kSy[r.d];
+  for (int i = 0; i < r.nlex; ++i) {
+    const auto& l = r.lex[i];
+    const i64 s = l.on_u ? sx : sy;  // local = s * world: local > c is world > c (s = 1) or < -c
+    i64& lo = l.on_u ? xlo : ylo;
+    i64& hi = l.on_u ? xhi : yhi;
+    if (l.greater == (s > 0))
+      lo = std::max(lo, s * l.value.a);
+    else
+      hi = std::min(hi, s * l.value.a);
+  }
+  std::array<Line, 8> slanted;
+  int ns = 0;
+  for (int i = 0; i < r.nedges; ++i) {  // (B-A) x (q-A) <= 0
+    const i64 dx = i64{r.eb[i].x} - r.ea[i].x, dy = i64{r.eb[i].y} - r.ea[i].y;
+    if (dy == 0) {  // dx * (y - A.y) <= 0
+      if (dx > 0) yhi = std::min(yhi, i64{r.ea[i].y});
+      else ylo = std::max(ylo, i64{r.ea[i].y});
+    } else if (dx == 0) {  // -dy * (x - A.x) <= 0
+      if (dy > 0) xlo = std::max(xlo, i64{r.ea[i].x});
+      else xhi = std::min(xhi, i64{r.ea[i].x});
+    } else {
+      slanted[ns++] = {-dy, dx, dx * r.ea[i].y - dy * r.ea[i].x};
+    }
+  }
+  // the level: sx*x + sy*y >= start
+  auto level_ok_box = [&] {
+    const i64 best = (sx > 0 ? xhi : -xlo) + (sy > 0 ? yhi : -ylo);
+    return best >= r.start.a;
+  };
+  if (xlo > xhi || ylo > yhi || !level_ok_box()) return false;
+  if (ns == 0) {
+    // tighten by the level: local u >= start - vmax, v >= start - umax
+    const i64 umax = sx > 0 ? xhi : -xlo, vmax = sy > 0 ? yhi : -ylo;
+    if (sx > 0) xlo = std::max(xlo, r.start.a - vmax); else xhi = std::min(xhi, vmax - r.start.a);
+    if (sy > 0) ylo = std::max(ylo, r.start.a - umax); else yhi = std::min(yhi, umax - r.start.a);
+    out = Box{{static_cast<geom::Coord>(xlo), static_cast<geom::Coord>(ylo)},
+              {static_cast<geom::Coord>(xhi), static_cast<geom::Coord>(yhi)}};
+    return true;
+  }
+  std::array<Line, 13> lines;
+  int nl = 0;
+  lines[nl++] = {0, -1, -ylo};  // y >= ylo
+  lines[nl++] = {1, 0, xhi};    // x <= xhi
+  lines[nl++] = {0, 1, yhi};    // y <= yhi
+  lines[nl++] = {-1, 0, -xlo};  // x >= xlo
+  lines[nl++] = {-sx, -sy, -r.start.a};
+  for (int i = 0; i < ns; ++i) lines[nl++] = slanted[i];
+  struct V {
+    uint8_t in, out;  // lines before and after the vertex (counter-clockwise)
+    i128 xn, yn, den;
+  };
+  auto make = [&](uint8_t i, uint8_t j) {
+    const Line& p = lines[i];
+    const Line& q = lines[j];
+    V v{i, j, i128{p.c} * q.b - i128{q.c} * p.b, i128{p.a} * q.c - i128{q.a} * p.c,
+        i128{p.a} * q.b - i128{q.a} * p.b};
+    if (v.den < 0) {
+      v.xn = -v.xn;
+      v.yn = -v.yn;
+      v.den = -v.den;
+    }
+    return v;
+  };
+  std::array<V, 16> poly, next;  // a convex polygon cut from 4 + 1 + 4 lines: <= 9 vertices
+  int np = 4;
+  for (int i = 0; i < 4; ++i) poly[i] = make(static_cast<uint8_t>(i), static_cast<uint8_t>((i + 1) % 4));
+  for (int h = 4; h < nl && np > 0; ++h) {
+    const Line& L = lines[h];
+    auto inside = [&](const V& v) { return L.a * v.xn + L.b * v.yn - i128{L.c} * v.den <= 0; };
+    int nn = 0;
+    for (int i = 0; i < np; ++i) {
+      const V& P = poly[(i + np - 1) % np];
+      const V& Q = poly[i];  // edge P -> Q lies on line Q.in
+      const bool pin = inside(P), qin = inside(Q);
+      if (pin && qin) {
+        next[nn++] = Q;
+      } else if (pin) {
+        next[nn++] = make(Q.in, static_cast<uint8_t>(h));
+      } else if (qin) {
+        next[nn++] = make(static_cast<uint8_t>(h), Q.in);
+        next[nn++] = Q;
+      }
+    }
+    poly = next;
+    np = nn;
+  }
+  if (np == 0) return false;
+  auto floor_div = [](i128 n, i128 d) { return n >= 0 ? n / d : -((-n + d - 1) / d); };
+  auto ceil_div = [&](i128 n, i128 d) { return -floor_div(-n, d); };
+  i128 bxlo = xhi, bxhi = xlo, bylo = yhi, byhi = ylo;
+  for (int i = 0; i < np; ++i) {
+    bxlo = std::min(bxlo, floor_div(poly[i].xn, poly[i].den));
+    bxhi = std::max(bxhi, ceil_div(poly[i].xn, poly[i].den));
+    bylo = std::min(bylo, floor_div(poly[i].yn, poly[i].den));
+    byhi = std::max(byhi, ceil_div(poly[i].yn, poly[i].den));
+  }
+  out = Box{{static_cast<geom::Coord>(bxlo), static_cast<geom::Coord>(bylo)},
+            {static_cast<geom::Coord>(bxhi), static_cast<geom::Coord>(byhi)}};
+  return true;
+}
 
 inline bool satisfies(const Region& r, Point q) {
   if (!(level(r.d, q) > r.start)) return false;
@@ -133,12 +251,44 @@ inline bool satisfies(const Region& r, Point q) {
 class KdTree {
  public:
   KdTree() = default;
-  explicit KdTree(std::vector<std::pair<Point, uint32_t>> items) : items_(std::move(items)) {
-    if (!items_.empty()) build(0, static_cast<uint32_t>(items_.size()));
+  // `id_bound` > every item id: the tree then records each item's leaf (query_near()).
+  explicit KdTree(std::vector<std::pair<Point, uint32_t>> items, uint32_t id_bound = 0)
+      : items_(std::move(items)) {
+    if (!items_.empty()) build(0, static_cast<uint32_t>(items_.size()), kNone);
+    if (id_bound > 0) {
+      leaf_of_.assign(id_bound, kNone);
+      for (uint32_t n = 0; n < nodes_.size(); ++n)
+        if (nodes_[n].left == kNone)
+          for (uint32_t i = nodes_[n].begin; i < nodes_[n].end; ++i) leaf_of_[items_[i].second] = n;
+    }
   }
   bool empty() const { return items_.empty(); }
   std::size_t memory_bytes() const {
-    return items_.capacity() * sizeof(items_[0]) + nodes_.capacity() * sizeof(Node);
+    return items_.capacity() * sizeof(items_[0]) + nodes_.capacity() * sizeof(Node) +
+           leaf_of_.capacity() * sizeof(uint32_t);
+  }
+  // The leaf holding item `id` (kNone: not an item, or the tree was built without id_bound).
+  uint32_t leaf_of(uint32_t id) const { return id < leaf_of_.size() ? leaf_of_[id] : kNone; }
+
+  // Same answer as query(), searched bottom-up from `leaf` (the leaf of the region's apex, where
+  // the answer usually is): the leaf, then the sibling subtree of each ancestor in turn, until
+  // no point of the region outside the current subtree's box can beat the best found
+  // (outside_bound()). A wavelet's region mostly ends a few neighbours away from its apex, so
+  // this visits the few nodes around the answer instead of a path from the root and the
+  // bounding tests on both sides of it (measured in bench_wavefront: stats().drag_nodes).
+  bool query_near(uint32_t leaf, const Region& r, uint32_t& best_id, T3& best_level,
+                  std::int64_t& nodes) const {
+    bool found = false;
+    visit(leaf, r, found, best_id, best_level, nodes);
+    for (uint32_t cur = leaf; cur != 0;) {
+      const i64 outside = outside_bound(nodes_[cur], r);
+      if (outside == kNoPoint || (found && outside > best_level.a)) break;
+      const uint32_t par = nodes_[cur].parent;
+      const uint32_t sib = nodes_[par].left == cur ? nodes_[par].right : nodes_[par].left;
+      visit(sib, r, found, best_id, best_level, nodes);
+      cur = par;
+    }
+    return found;
   }
 
   // The id of the satisfying point with the smallest level (false = none); `nodes` counts the
@@ -155,10 +305,53 @@ class KdTree {
     Point lo, hi;
     uint32_t begin, end;
     uint32_t left = kNone, right = kNone;
+    uint32_t parent = kNone;
   };
-  uint32_t build(uint32_t begin, uint32_t end) {
+  static constexpr i64 kNoPoint = std::numeric_limits<i64>::max();
+  // A lower bound of the level's constant term over the points of region r that lie outside
+  // node n's box, or kNoPoint when there can be none. The region's lexicographic bounds and
+  // its level bound give ranges of the constant terms u.a, v.a of its points (an open bound
+  // U > c gives u.a >= c.a; u + v > start gives u.a >= start.a - vmax); a point outside the box
+  // has u.a or v.a beyond the box's range on some side. Stop edges are ignored (the region
+  // only shrinks with them), so the bound is conservative.
+  static i64 outside_bound(const Node& n, const Region& r) {
+    const int d = r.d;
+    constexpr i64 kInf = std::numeric_limits<i64>::max() / 4;
+    i64 umin = -kInf, umax = kInf, vmin = -kInf, vmax = kInf;
+    for (int i = 0; i < r.nlex; ++i) {
+      const auto& l = r.lex[i];
+      if (l.greater)
+        (l.on_u ? umin : vmin) = std::max(l.on_u ? umin : vmin, l.value.a);
+      else
+        (l.on_u ? umax : vmax) = std::min(l.on_u ? umax : vmax, l.value.a);
+    }
+    {  // the hull box in local coordinates
+      const i64 hu_lo = kSx[d] > 0 ? i64{r.hull.lo.x} : -i64{r.hull.hi.x};
+      const i64 hu_hi = kSx[d] > 0 ? i64{r.hull.hi.x} : -i64{r.hull.lo.x};
+      const i64 hv_lo = kSy[d] > 0 ? i64{r.hull.lo.y} : -i64{r.hull.hi.y};
+      const i64 hv_hi = kSy[d] > 0 ? i64{r.hull.hi.y} : -i64{r.hull.lo.y};
+      umin = std::max(umin, hu_lo);
+      umax = std::min(umax, hu_hi);
+      vmin = std::max(vmin, hv_lo);
+      vmax = std::min(vmax, hv_hi);
+    }
+    umin = std::max(umin, r.start.a - vmax);
+    vmin = std::max(vmin, r.start.a - umax);
+    const i64 bu_lo = kSx[d] > 0 ? i64{n.lo.x} : -i64{n.hi.x};
+    const i64 bu_hi = kSx[d] > 0 ? i64{n.hi.x} : -i64{n.lo.x};
+    const i64 bv_lo = kSy[d] > 0 ? i64{n.lo.y} : -i64{n.hi.y};
+    const i64 bv_hi = kSy[d] > 0 ? i64{n.hi.y} : -i64{n.lo.y};
+    // below the box on u or v: the level is only bounded by start
+    if (umin < bu_lo || vmin < bv_lo) return r.start.a;
+    i64 bound = kNoPoint;
+    if (umax > bu_hi) bound = std::min(bound, std::max(r.start.a, bu_hi + 1 + vmin));
+    if (vmax > bv_hi) bound = std::min(bound, std::max(r.start.a, umin + bv_hi + 1));
+    return bound;
+  }
+  uint32_t build(uint32_t begin, uint32_t end, uint32_t parent) {
     const uint32_t id = static_cast<uint32_t>(nodes_.size());
     nodes_.push_back({});
+    nodes_[id].parent = parent;
     Point lo{std::numeric_limits<geom::Coord>::max(), std::numeric_limits<geom::Coord>::max()};
     Point hi{std::numeric_limits<geom::Coord>::min(), std::numeric_limits<geom::Coord>::min()};
     for (uint32_t i = begin; i < end; ++i) {
@@ -172,14 +365,29 @@ class KdTree {
     nodes_[id].begin = begin;
     nodes_[id].end = end;
     if (end - begin > 16) {
-      const uint32_t mid = begin + (end - begin) / 2;
-      const bool by_x = (i64{hi.x} - lo.x) >= (i64{hi.y} - lo.y);
+      // Split at the median of the wider side, with no coordinate value on both sides (points
+      // equal to the median go to the side that keeps both non-empty): the left subtree's
+      // points are then strictly below the split value and the right's at or above it, so a
+      // point outside a subtree lies strictly outside the subtree's box on some side, which
+      // query_near()'s stopping bound relies on. The points are distinct, so when every point
+      // shares the wider side's value the other side splits.
+      bool by_x = (i64{hi.x} - lo.x) >= (i64{hi.y} - lo.y);
+      if ((by_x ? hi.x == lo.x : hi.y == lo.y)) by_x = !by_x;
+      auto key = [by_x](const std::pair<Point, uint32_t>& a) { return by_x ? a.first.x : a.first.y; };
+      uint32_t mid = begin + (end - begin) / 2;
       std::nth_element(items_.begin() + begin, items_.begin() + mid, items_.begin() + end,
-                       [by_x](const auto& a, const auto& b) {
-                         return by_x ? a.first.x < b.first.x : a.first.y < b.first.y;
-                       });
-      const uint32_t l = build(begin, mid);
-      const uint32_t rr = build(mid, end);
+                       [&](const auto& a, const auto& b) { return key(a) < key(b); });
+      const geom::Coord m = key(items_[mid]);
+      // [begin, mid) <= m <= [mid, end): move the values equal to m out of the left part ...
+      mid = static_cast<uint32_t>(
+          std::partition(items_.begin() + begin, items_.begin() + mid, [&](const auto& a) { return key(a) < m; }) -
+          items_.begin());
+      if (mid == begin)  // ... or, when nothing is below m, the values equal to m into it
+        mid = static_cast<uint32_t>(
+            std::partition(items_.begin() + begin, items_.begin() + end, [&](const auto& a) { return key(a) == m; }) -
+            items_.begin());
+      const uint32_t l = build(begin, mid, id);
+      const uint32_t rr = build(mid, end, id);
       nodes_[id].left = l;
       nodes_[id].right = rr;
     }
@@ -201,6 +409,8 @@ class KdTree {
   }
   static bool box_may_satisfy(const Node& n, const Region& r) {
     const int d = r.d;
+    if (n.hi.x < r.hull.lo.x || n.lo.x > r.hull.hi.x || n.hi.y < r.hull.lo.y || n.lo.y > r.hull.hi.y)
+      return false;
     const i64 umax = kSx[d] > 0 ? n.hi.x : -i64{n.lo.x};
     const i64 umin = kSx[d] > 0 ? n.lo.x : -i64{n.hi.x};
     const i64 vmax = kSy[d] > 0 ? n.hi.y : -i64{n.lo.y};
@@ -212,15 +422,12 @@ class KdTree {
       const i64 mn = l.on_u ? umin : vmin;
       if (l.greater ? mx < l.value.a : mn > l.value.a) return false;
     }
+    // orient(a, b, q) is linear in q, (b - a) x (q - a): its minimum over the box is at the
+    // corner picked by the signs of its gradient (a.y - b.y, b.x - a.x) (exact, one test).
     for (int i = 0; i < r.nedges; ++i) {
-      const Point c[4] = {n.lo, {n.hi.x, n.lo.y}, n.hi, {n.lo.x, n.hi.y}};
-      bool any = false;
-      for (const Point& p : c)
-        if (geom::orient(r.ea[i], r.eb[i], p) <= 0) {
-          any = true;
-          break;
-        }
-      if (!any) return false;
+      const Point a = r.ea[i], b = r.eb[i];
+      const Point c{a.y > b.y ? n.lo.x : n.hi.x, b.x > a.x ? n.lo.y : n.hi.y};
+      if (geom::orient(a, b, c) > 0) return false;
     }
     return true;
   }
@@ -255,6 +462,7 @@ class KdTree {
 
   std::vector<std::pair<Point, uint32_t>> items_;
   std::vector<Node> nodes_;
+  std::vector<uint32_t> leaf_of_;  // item id -> its leaf (when built with id_bound)
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -488,7 +696,7 @@ struct L1Wavefront::Impl {
       if (!in_domain(q)) continue;  // the frame's outer ring lies outside the domain: never reached
       items.push_back({q, v});
     }
-    vertex_tree = KdTree(std::move(items));
+    vertex_tree = KdTree(std::move(items), nvert);
     ray_cache.assign(std::size_t{4} * nvert, kNone);
     sweep_rays(true);
     sweep_rays(false);
@@ -858,9 +1066,13 @@ struct L1Wavefront::Impl {
     add_constraints(r, w.left, true);
     add_constraints(r, w.right, false);
     ++stats.drag_queries;
+    const Box frame{{domain.lo.x - 1, domain.lo.y - 1}, {domain.hi.x + 1, domain.hi.y + 1}};
+    if (!region_hull(r, frame, r.hull)) return;
     uint32_t vid = kNone, tid = kNone;
     T3 vl, tl;
-    const bool hv = vertex_tree.query(r, vid, vl, stats.drag_nodes);
+    const uint32_t leaf = vertex_tree.leaf_of(w.start);
+    const bool hv = leaf != kNone ? vertex_tree.query_near(leaf, r, vid, vl, stats.drag_nodes)
+                                  : vertex_tree.query(r, vid, vl, stats.drag_nodes);
     const bool ht = !target_tree.empty() && target_tree.query(r, tid, tl, stats.drag_nodes);
     if (!hv && !ht) return;
     const Point root = pts[ents[w.root].point];
