@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/dijkstra_shortest_paths.hpp>
-#include <limits>
+#include <functional>
 
 #include "geom/predicates.h"
 
@@ -15,12 +15,15 @@ using geom::Location;
 using geom::Point;
 using geom::Polygon;
 using geom::Ring;
+using geom::Root2;
 using geom::Segment;
 using geom::SegmentIntersection;
 
 namespace {
 
-constexpr i64 kInf = std::numeric_limits<i64>::max();
+// Beyond every path length (below 2^55: geom/root2.h) and inside the range where Root2 compares
+// exactly (|a|, |b| < 2^62).
+constexpr Root2 kInf{(i64{1} << 62) - 1, 0};
 
 // Direction vectors are differences of integer points: |component| < 2^32, so cross and dot
 // products fit in __int128 with room to spare.
@@ -51,10 +54,6 @@ bool angle_at_most(Dir from, Dir d, Dir to) {
   if (cd != ct) return cd < ct;
   if (cd == 0 || cd == 2) return true;
   return cross(d, to) >= 0;
-}
-
-i64 l1(Point a, Point b) {
-  return std::abs(i64{a.x} - b.x) + std::abs(i64{a.y} - b.y);
 }
 
 // Crossing-number location of the point (mx/2, my/2) with respect to a ring, on doubled
@@ -99,8 +98,15 @@ bool Wedge::contains(i64 dx, i64 dy) const {
   return angle_at_most({from_x, from_y}, {dx, dy}, {to_x, to_y});
 }
 
-L1Reference::L1Reference(const geom::Box& domain, std::span<const Polygon> obstacles)
-    : domain_(domain), obstacles_(obstacles.begin(), obstacles.end()) {
+Root2 segment_length(Metric metric, Point a, Point b) {
+  const i64 dx = i64{b.x} - a.x, dy = i64{b.y} - a.y;
+  if (metric == Metric::Octilinear) return geom::octilinear_length(dx, dy);
+  return {std::abs(dx) + std::abs(dy), 0};
+}
+
+VisibilityGraph::VisibilityGraph(const geom::Box& domain, std::span<const Polygon> obstacles,
+                                 Metric metric)
+    : domain_(domain), metric_(metric), obstacles_(obstacles.begin(), obstacles.end()) {
   for (const Polygon& poly : obstacles_) {
     auto add_ring = [&](const Ring& r) {
       for (std::size_t i = 0; i < r.size(); ++i) {
@@ -122,16 +128,16 @@ L1Reference::L1Reference(const geom::Box& domain, std::span<const Polygon> obsta
       if (u.p == v.p) continue;  // two wedges of one pinch: never connected
       if (allowed(u.p, std::span<const Wedge>(&u.wedge, 1), v.p,
                   std::span<const Wedge>(&v.wedge, 1)))
-        graph_edges_.push_back({i, j, l1(u.p, v.p)});
+        graph_edges_.push_back({i, j, length(u.p, v.p)});
     }
 }
 
-bool L1Reference::inside_domain(Point p) const {
+bool VisibilityGraph::inside_domain(Point p) const {
   return domain_.lo.x <= p.x && p.x <= domain_.hi.x && domain_.lo.y <= p.y &&
          p.y <= domain_.hi.y;
 }
 
-std::vector<Wedge> L1Reference::wedges_at(Point p) const {
+std::vector<Wedge> VisibilityGraph::wedges_at(Point p) const {
   if (!inside_domain(p)) return {};
   for (const Polygon& poly : obstacles_)
     if (geom::locate(p, poly) == Location::Inside) return {};
@@ -207,7 +213,7 @@ std::vector<Wedge> L1Reference::wedges_at(Point p) const {
   return out;
 }
 
-bool L1Reference::segment_clear(Point a, Point b) const {
+bool VisibilityGraph::segment_clear(Point a, Point b) const {
   if (!inside_domain(a) || !inside_domain(b)) return false;  // the box is convex
   std::vector<Point> cuts = {a, b};
   for (const Edge& e : edges_) {
@@ -253,26 +259,26 @@ bool L1Reference::segment_clear(Point a, Point b) const {
   return true;
 }
 
-bool L1Reference::allowed(Point a, std::span<const Wedge> wa, Point b,
-                          std::span<const Wedge> wb) const {
+bool VisibilityGraph::allowed(Point a, std::span<const Wedge> wa, Point b,
+                              std::span<const Wedge> wb) const {
   if (a == b) return false;
   return any_contains(wa, dir(a, b)) && any_contains(wb, dir(b, a)) && segment_clear(a, b);
 }
 
-bool L1Reference::visible(Point a, Point b) const {
+bool VisibilityGraph::visible(Point a, Point b) const {
   const std::vector<Wedge> wa = wedges_at(a), wb = wedges_at(b);
   return allowed(a, wa, b, wb);
 }
 
-std::optional<i64> L1Reference::check_path(std::span<const Point> path) const {
+std::optional<Root2> VisibilityGraph::check_path(std::span<const Point> path) const {
   std::vector<Point> p;
   for (const Point q : path)
     if (p.empty() || p.back() != q) p.push_back(q);
-  if (p.empty() || !is_free(p.front())) return std::nullopt;
-  i64 total = 0;
+  if (p.empty() || wedges_at(p.front()).empty()) return std::nullopt;
+  Root2 total;
   for (std::size_t i = 0; i + 1 < p.size(); ++i) {
     if (!visible(p[i], p[i + 1])) return std::nullopt;
-    total += l1(p[i], p[i + 1]);
+    total += length(p[i], p[i + 1]);
   }
   for (std::size_t i = 1; i + 1 < p.size(); ++i) {
     const Dir da = dir(p[i], p[i - 1]), db = dir(p[i], p[i + 1]);
@@ -285,15 +291,15 @@ std::optional<i64> L1Reference::check_path(std::span<const Point> path) const {
   return total;
 }
 
-struct L1Reference::Search {
+struct VisibilityGraph::Search {
   bool ok = false;  // s is free
   Point s;
   std::vector<Wedge> s_wedges;
-  std::vector<i64> dist;           // per node, kInf when unreachable
+  std::vector<Root2> dist;         // per node, kInf when unreachable
   std::vector<std::size_t> pred;   // per node; nodes_.size() is s
 };
 
-L1Reference::Search L1Reference::search_from(Point s) const {
+VisibilityGraph::Search VisibilityGraph::search_from(Point s) const {
   Search r;
   r.s = s;
   r.s_wedges = wedges_at(s);
@@ -301,7 +307,7 @@ L1Reference::Search L1Reference::search_from(Point s) const {
   r.ok = true;
   using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS,
                                       boost::no_property,
-                                      boost::property<boost::edge_weight_t, i64>>;
+                                      boost::property<boost::edge_weight_t, Root2>>;
   const std::size_t n = nodes_.size();
   Graph g(n + 1);
   for (const GraphEdge& e : graph_edges_) boost::add_edge(e.u, e.v, e.w, g);
@@ -309,73 +315,79 @@ L1Reference::Search L1Reference::search_from(Point s) const {
     const Node& u = nodes_[i];
     // (s at a vertex needs no link to that vertex's nodes: s itself may leave into any wedge.)
     if (allowed(s, r.s_wedges, u.p, std::span<const Wedge>(&u.wedge, 1)))
-      boost::add_edge(n, i, l1(s, u.p), g);
+      boost::add_edge(n, i, length(s, u.p), g);
   }
-  std::vector<i64> dist(n + 1);
+  std::vector<Root2> dist(n + 1);
   std::vector<Graph::vertex_descriptor> pred(n + 1);
-  boost::dijkstra_shortest_paths(
-      g, n, boost::predecessor_map(pred.data()).distance_map(dist.data()).distance_inf(kInf));
+  // Root2 as the distance type: exact order (operator<=>), and a sum that stays at kInf
+  // (Boost only adds to settled, finite distances, but the guard keeps kInf out of overflow).
+  const auto combine = [](Root2 x, Root2 y) { return x == kInf || y == kInf ? kInf : x + y; };
+  boost::dijkstra_shortest_paths(g, n,
+                                 boost::predecessor_map(pred.data())
+                                     .distance_map(dist.data())
+                                     .distance_compare(std::less<Root2>())
+                                     .distance_combine(combine)
+                                     .distance_inf(kInf)
+                                     .distance_zero(Root2{}));
   r.dist.assign(dist.begin(), dist.begin() + static_cast<std::ptrdiff_t>(n));
   r.pred.assign(pred.begin(), pred.begin() + static_cast<std::ptrdiff_t>(n));
   return r;
 }
 
-namespace {
-// The best way to reach t: the node it is reached through (nodes.size() = straight from s)
-// and the length; length kInf when unreachable.
-struct Arrival {
+// The best way to reach t: the node it is reached through (nodes_.size() = straight from s)
+// and the length; kInf when unreachable.
+struct VisibilityGraph::Arrival {
   std::size_t via = 0;
-  i64 length = kInf;
+  Root2 total = kInf;
 };
-}  // namespace
 
-std::vector<std::optional<i64>> L1Reference::distances(Point s,
-                                                       std::span<const Point> targets) const {
-  std::vector<std::optional<i64>> out(targets.size());
+VisibilityGraph::Arrival VisibilityGraph::arrive(const Search& sr, Point t,
+                                                 std::span<const Wedge> wt) const {
+  const std::size_t n = nodes_.size();
+  Arrival best;
+  if (allowed(sr.s, sr.s_wedges, t, wt)) best = {n, length(sr.s, t)};
+  for (std::size_t i = 0; i < n; ++i) {
+    if (sr.dist[i] == kInf || sr.dist[i] >= best.total) continue;
+    const Node& u = nodes_[i];
+    const Root2 len = sr.dist[i] + length(u.p, t);
+    if (len < best.total && allowed(u.p, std::span<const Wedge>(&u.wedge, 1), t, wt))
+      best = {i, len};
+  }
+  return best;
+}
+
+std::vector<std::optional<Root2>> VisibilityGraph::distances(
+    Point s, std::span<const Point> targets) const {
+  std::vector<std::optional<Root2>> out(targets.size());
   const Search sr = search_from(s);
   if (!sr.ok) return out;
   for (std::size_t k = 0; k < targets.size(); ++k) {
     const Point t = targets[k];
     if (t == s) {
-      out[k] = 0;
+      out[k] = Root2{};
       continue;
     }
     const std::vector<Wedge> wt = wedges_at(t);
     if (wt.empty()) continue;
-    i64 best = allowed(s, sr.s_wedges, t, wt) ? l1(s, t) : kInf;
-    for (std::size_t i = 0; i < nodes_.size(); ++i) {
-      if (sr.dist[i] == kInf || sr.dist[i] >= best) continue;
-      const Node& u = nodes_[i];
-      if (sr.dist[i] + l1(u.p, t) < best &&
-          allowed(u.p, std::span<const Wedge>(&u.wedge, 1), t, wt))
-        best = sr.dist[i] + l1(u.p, t);
-    }
-    if (best != kInf) out[k] = best;
+    const Arrival best = arrive(sr, t, wt);
+    if (best.total != kInf) out[k] = best.total;
   }
   return out;
 }
 
-std::optional<i64> L1Reference::distance(Point s, Point t) const {
+std::optional<Root2> VisibilityGraph::distance(Point s, Point t) const {
   return distances(s, std::span<const Point>(&t, 1))[0];
 }
 
-std::optional<std::vector<Point>> L1Reference::path(Point s, Point t) const {
+std::optional<std::vector<Point>> VisibilityGraph::path(Point s, Point t) const {
   const Search sr = search_from(s);
   if (!sr.ok) return std::nullopt;
   if (s == t) return std::vector<Point>{s};
   const std::vector<Wedge> wt = wedges_at(t);
   if (wt.empty()) return std::nullopt;
   const std::size_t n = nodes_.size();
-  Arrival best;
-  if (allowed(s, sr.s_wedges, t, wt)) best = {n, l1(s, t)};
-  for (std::size_t i = 0; i < n; ++i) {
-    if (sr.dist[i] == kInf) continue;
-    const Node& u = nodes_[i];
-    const i64 len = sr.dist[i] + l1(u.p, t);
-    if (len < best.length && allowed(u.p, std::span<const Wedge>(&u.wedge, 1), t, wt))
-      best = {i, len};
-  }
-  if (best.length == kInf) return std::nullopt;
+  const Arrival best = arrive(sr, t, wt);
+  if (best.total == kInf) return std::nullopt;
   std::vector<Point> rev = {t};
   for (std::size_t v = best.via; v != n; v = sr.pred[v]) rev.push_back(nodes_[v].p);
   rev.push_back(s);
@@ -383,6 +395,30 @@ std::optional<std::vector<Point>> L1Reference::path(Point s, Point t) const {
   for (auto it = rev.rbegin(); it != rev.rend(); ++it)
     if (out.empty() || out.back() != *it) out.push_back(*it);
   return out;
+}
+
+// L1: every length is a Root2 with b == 0 (segment_length), so sums keep b == 0.
+namespace {
+std::optional<i64> as_l1(const std::optional<Root2>& d) {
+  if (!d) return std::nullopt;
+  return d->a;
+}
+}  // namespace
+
+std::vector<std::optional<i64>> L1Reference::distances(Point s,
+                                                       std::span<const Point> targets) const {
+  const std::vector<std::optional<Root2>> d = VisibilityGraph::distances(s, targets);
+  std::vector<std::optional<i64>> out(d.size());
+  std::transform(d.begin(), d.end(), out.begin(), as_l1);
+  return out;
+}
+
+std::optional<i64> L1Reference::distance(Point s, Point t) const {
+  return as_l1(VisibilityGraph::distance(s, t));
+}
+
+std::optional<i64> L1Reference::check_path(std::span<const Point> path) const {
+  return as_l1(VisibilityGraph::check_path(path));
 }
 
 }  // namespace taut::oracle

@@ -1,6 +1,8 @@
 // Brute-force exact L1 shortest paths among obstacles: the reference the wavefront
 // (router/wavefront) is checked against. Visibility graph + Dijkstra (Boost.Graph); shares only
-// geom/predicates.h with the code under test. O(n^3) to build, for n up to a few hundred.
+// geom/predicates.h and geom/root2.h (exact a + b*sqrt(2): the distance type of the Dijkstra,
+// shared with the octilinear reference, oct_oracle.h; b == 0 throughout for L1) with the code
+// under test. O(n^3) to build, for n up to a few hundred.
 //
 // Free space. O = interior of the domain minus the closed obstacles (an open set); the free
 // space is its closure F. At a point p of F the "wedges" are the local pieces of O around p:
@@ -24,6 +26,8 @@
 // wedge); domain corners are convex. So it is a walk in the graph whose nodes are (obstacle
 // vertex, wedge) plus s and t, with an edge wherever the straight segment is allowed, weighted
 // |dx| + |dy|; Dijkstra on that graph gives the exact distance (every graph walk is a path).
+// The same holds for every norm, with the norm's length of a segment as the weight: class
+// VisibilityGraph below builds the graph once for either Metric.
 //
 // Segment ab (a != b) is allowed iff: a and b lie in the closed domain; it properly crosses no
 // obstacle edge; cutting ab at every obstacle vertex on it, no piece's midpoint (exact, doubled
@@ -42,6 +46,7 @@
 #include <string>
 #include <vector>
 
+#include "geom/root2.h"
 #include "geom/types.h"
 
 namespace taut::oracle {
@@ -55,17 +60,30 @@ struct Wedge {
   bool contains(std::int64_t dx, std::int64_t dy) const;
 };
 
-class L1Reference {
+// How a reference measures a straight segment ab: L1 is |dx| + |dy|; Octilinear is the length
+// of the shortest path from a to b in the four orientations 0, 45, 90 and 135 degrees,
+// (max - min) + min * sqrt(2) of |dx| and |dy| (geom/root2.h). Both are norms, so the argument
+// above holds for each; an L1 length is a Root2 with b == 0.
+enum class Metric { L1, Octilinear };
+geom::Root2 segment_length(Metric metric, geom::Point a, geom::Point b);
+
+// The visibility graph of the comment above and Dijkstra on it, in either metric: the nodes and
+// the allowed edges (the free-space, wedge and pinch rules) do not depend on the metric, only
+// the edge weights do. The base of L1Reference (below, answers in int64) and of
+// OctilinearReference (oct_oracle.h, answers as they are here). Lengths are exact Root2 numbers:
+// the Dijkstra of Boost.Graph runs with Root2 as its distance type, compared exactly.
+class VisibilityGraph {
  public:
   // Obstacles as geom::normalize_obstacles() makes them: integer vertices, outer rings
   // counter-clockwise, holes clockwise, closed sets pairwise disjoint, weakly simple rings,
   // inside the closed domain.
-  L1Reference(const geom::Box& domain, std::span<const geom::Polygon> obstacles);
+  VisibilityGraph(const geom::Box& domain, std::span<const geom::Polygon> obstacles,
+                  Metric metric);
 
-  // Shortest L1 length; nullopt when s or t is not free or t is unreachable from s.
-  std::optional<std::int64_t> distance(geom::Point s, geom::Point t) const;
-  std::vector<std::optional<std::int64_t>> distances(geom::Point s,
-                                                     std::span<const geom::Point> targets) const;
+  // Shortest length; nullopt when s or t is not free or t is unreachable from s.
+  std::optional<geom::Root2> distance(geom::Point s, geom::Point t) const;
+  std::vector<std::optional<geom::Root2>> distances(geom::Point s,
+                                                    std::span<const geom::Point> targets) const;
   // A shortest path s, bends (obstacle vertices)..., t; {s} when s == t is free.
   std::optional<std::vector<geom::Point>> path(geom::Point s, geom::Point t) const;
 
@@ -74,10 +92,10 @@ class L1Reference {
   bool is_free(geom::Point p) const { return !wedges_at(p).empty(); }
   // Segment ab allowed between two query points (each end may use any of its wedges).
   bool visible(geom::Point a, geom::Point b) const;
-  // Total L1 length of a polygonal path if every segment is allowed (intermediate points must
+  // Total length of a polygonal path if every segment is allowed (intermediate points must
   // stay in one wedge: checked with the wedge of each point), else nullopt. For checking
   // paths produced by other code.
-  std::optional<std::int64_t> check_path(std::span<const geom::Point> path) const;
+  std::optional<geom::Root2> check_path(std::span<const geom::Point> path) const;
 
   // Inconsistencies seen in the input (a sector both inside and outside an obstacle,...);
   // empty for input that meets the contract above.
@@ -95,9 +113,10 @@ class L1Reference {
   };
   struct GraphEdge {
     std::size_t u, v;
-    std::int64_t w;
+    geom::Root2 w;
   };
-  struct Search;  // one Dijkstra run from a source (l1_oracle.cpp)
+  struct Search;   // one Dijkstra run from a source (l1_oracle.cpp)
+  struct Arrival;  // the best way from a Search to a target
 
   bool inside_domain(geom::Point p) const;
   // The conditions above except the end wedges.
@@ -106,14 +125,42 @@ class L1Reference {
   bool allowed(geom::Point a, std::span<const Wedge> wa, geom::Point b,
                std::span<const Wedge> wb) const;
   Search search_from(geom::Point s) const;
+  Arrival arrive(const Search& sr, geom::Point t, std::span<const Wedge> wt) const;
+  geom::Root2 length(geom::Point a, geom::Point b) const { return segment_length(metric_, a, b); }
 
   geom::Box domain_;
+  Metric metric_;
   std::vector<geom::Polygon> obstacles_;
   std::vector<Edge> edges_;
   std::map<geom::Point, std::vector<Wedge>> vertex_wedges_;  // every obstacle vertex
   std::vector<Node> nodes_;
   std::vector<GraphEdge> graph_edges_;
   mutable std::vector<std::string> problems_;
+};
+
+// The L1 reference: VisibilityGraph with Metric::L1, lengths as int64 (the Root2 lengths of L1
+// have b == 0).
+class L1Reference : private VisibilityGraph {
+ public:
+  // Obstacles as for VisibilityGraph.
+  L1Reference(const geom::Box& domain, std::span<const geom::Polygon> obstacles)
+      : VisibilityGraph(domain, obstacles, Metric::L1) {}
+
+  // Shortest L1 length; nullopt when s or t is not free or t is unreachable from s.
+  std::optional<std::int64_t> distance(geom::Point s, geom::Point t) const;
+  std::vector<std::optional<std::int64_t>> distances(geom::Point s,
+                                                     std::span<const geom::Point> targets) const;
+  // Total L1 length of a polygonal path if every segment is allowed, else nullopt.
+  std::optional<std::int64_t> check_path(std::span<const geom::Point> path) const;
+
+  // As in VisibilityGraph.
+  using VisibilityGraph::edge_count;
+  using VisibilityGraph::is_free;
+  using VisibilityGraph::node_count;
+  using VisibilityGraph::path;
+  using VisibilityGraph::problems;
+  using VisibilityGraph::visible;
+  using VisibilityGraph::wedges_at;
 };
 
 }  // namespace taut::oracle
