@@ -46,16 +46,54 @@ class L1Router {
   // The shortest rectilinear wire from `from` to `to` (points {from} when they are equal).
   L1Wire shortest(geom::Point from, geom::Point to);
 
+  // The shortest rectilinear wire between two pins, each a point (an outer ring of one point,
+  // no holes) or a closed polygon with holes (integer vertices, rings in either orientation,
+  // every edge horizontal, vertical or at 45 degrees: pin_shape_supported()). The wire starts
+  // anywhere on `from` and ends anywhere on `to` (pins that share a point get a wire of one
+  // point); SourceNotFree / TargetNotFree mean that no point of that pin is free. Exact: see
+  // pin_candidates().
+  L1Wire shortest(const geom::Polygon& from, const geom::Polygon& to);
+
+  // The points of pin `pin` a shortest wire from it may be taken to start at: its vertices, and
+  // the horizontal and vertical projections onto its edges of every obstacle vertex and of every
+  // vertex of `other` (the other pin). Why that suffices: a shortest path leaves the pin at s
+  // straight towards its first bend r (an obstacle vertex, or a point of the other pin when it
+  // runs straight there), so s minimises |s - r|_1 over the part of an edge that r sees; along
+  // an edge that is a convex piecewise-linear function whose breakpoints are the projections of
+  // r, so its minimum is at a projection, at an edge end, or where the sight of r ends at an
+  // obstacle vertex v on the segment r-s (the path through v is as short, and v takes r's
+  // place). When r is a point of the other pin the pair (s, r) minimises |s - r|_1 over two
+  // edges, which is attained with s or r a vertex, the other its projection or a vertex too. For
+  // edges at 0, 45 or 90 degrees every candidate is an integer point. Sorted, distinct.
+  std::vector<geom::Point> pin_candidates(const geom::Polygon& pin, const geom::Polygon& other) const;
+
+  // The first obstacle (index into the constructor's obstacles) whose interior meets the
+  // interior of a shape pin, exactly; nullopt for a point pin or a shape that at most touches
+  // obstacles. shortest() needs shapes that do not: a shape partly under a blockage may be left
+  // through the blockage's edges, which pin_candidates() does not cover.
+  std::optional<std::size_t> pin_meets_obstacle(const geom::Polygon& pin) const;
+
   bool is_free(geom::Point p) const { return wavefront_.is_free(p); }
   const L1Wavefront& wavefront() const { return wavefront_; }
   const StaircaseStats& staircase_stats() const { return staircase_stats_; }
 
  private:
+  // The wire to target `target` of the last run (Unreachable when none).
+  L1Wire finish(std::optional<std::size_t> target);
+
   L1Wavefront wavefront_;
+  std::vector<geom::Point> by_y_, by_x_;  // every obstacle vertex, sorted by (y, x) and (x, y)
+  std::vector<geom::Polygon> obstacles_;
+  std::vector<geom::Box> obstacle_boxes_;
   StaircaseBuilder staircase_;
   StaircaseStats staircase_stats_;
 };
 
 const char* to_string(WireStatus status);
+
+// A pin the router takes: a point (one vertex, no holes), or rings of at least 3 vertices whose
+// every edge (closing ones included) has non-zero length and is horizontal, vertical or at 45
+// degrees.
+bool pin_shape_supported(const geom::Polygon& pin);
 
 }  // namespace taut::router

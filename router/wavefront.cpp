@@ -1295,7 +1295,7 @@ struct L1Wavefront::Impl {
   }
 
 
-  void run(std::span<const Point> sources, std::span<const Point> targets, bool stop_early) {
+  void run(std::span<const Point> sources, std::span<const Point> targets, L1Wavefront::Stop stop) {
     // reset
     pts.resize(nvert);
     ents.resize(nvent);  // run-time entities go; vertex entities of the last run are reset
@@ -1361,13 +1361,20 @@ struct L1Wavefront::Impl {
       }
       return true;
     };
+    auto any_target_done = [&] {
+      for (const auto& es : target_ents)
+        for (uint32_t e : es)
+          if (ents[e].labelled) return true;
+      return false;
+    };
     std::size_t check_every = 0;
     while (!queue.empty()) {
-      if (stop_early && !targets.empty() && (++check_every & 63) == 0 && all_targets_done()) {
-        // Every target has a label; labels are final (Dijkstra order) once popped keys pass them.
-        // Targets are labelled when their event is popped, so they are final here.
+      // Labels are final when made (Dijkstra order: a target or vertex is labelled when its
+      // event is popped, and later keys are no smaller), so stopping between pops is exact; the
+      // first target labelled is a nearest one.
+      if (stop != L1Wavefront::Stop::Never && !targets.empty() && (++check_every & 63) == 0 &&
+          (stop == L1Wavefront::Stop::AllTargets ? all_targets_done() : any_target_done()))
         break;
-      }
       Wave w = queue.top();
       queue.pop();
       process(w);
@@ -1392,7 +1399,11 @@ bool L1Wavefront::is_free(Point p) const { return impl_->is_free(p); }
 
 void L1Wavefront::run(std::span<const Point> sources, std::span<const Point> targets,
                       bool stop_early) {
-  impl_->run(sources, targets, stop_early);
+  impl_->run(sources, targets, stop_early ? Stop::AllTargets : Stop::Never);
+}
+
+void L1Wavefront::run(std::span<const Point> sources, std::span<const Point> targets, Stop stop) {
+  impl_->run(sources, targets, stop);
 }
 
 std::optional<std::int64_t> L1Wavefront::target_distance(std::size_t i) const {

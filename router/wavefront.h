@@ -111,6 +111,11 @@ class L1Wavefront {
   // targets that are not free are ignored (unreachable). A new run forgets the previous one.
   void run(std::span<const geom::Point> sources, std::span<const geom::Point> targets,
            bool stop_early = true);
+  // When a run may stop: once every free target is reached (as stop_early = true), once the
+  // first one is (a nearest target to the sources: compare target_distance() over the reached
+  // targets; others may be reached too, never nearer), or never (the whole distance field).
+  enum class Stop { AllTargets, FirstTarget, Never };
+  void run(std::span<const geom::Point> sources, std::span<const geom::Point> targets, Stop stop);
 
   // After run(): exact L1 distance of target i to the nearest source; nullopt = unreachable.
   std::optional<std::int64_t> target_distance(std::size_t i) const;

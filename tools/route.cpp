@@ -1,5 +1,5 @@
-// taut route FILE -o OUT [--svg PIC] [--stats S.json]: routes every two-pin net with point pins
-// by an exact shortest L1 wire (rectilinear, integer vertices), each net on its own (wires of
+// taut route FILE -o OUT [--svg PIC] [--stats S.json]: routes every two-pin net (point pins, and
+// shape pins whose edges are horizontal, vertical or at 45 degrees) by an exact shortest L1 wire (rectilinear, integer vertices), each net on its own (wires of
 // different nets do not see each other yet), and writes the layout with <routes>. Nets this
 // version cannot route are written as failed with a reason and reported on stderr; the exit
 // status is then 1.
@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "geom/predicates.h"
+#include "io/layout_geometry.h"
 #include "io/layout_writer.h"
 #include "io/stats_json.h"
 #include "io/svg.h"
@@ -41,22 +42,38 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, router::L1Rout
     return fail("ROUTE-0004", "the net has " + std::to_string(net.pins.size()) +
                                   " pins; nets with more than two pins are not routed yet (they "
                                   "come with the net router)");
-  for (const io::Pin& pin : net.pins)
-    if (!pin.point)
-      return fail("ROUTE-0005", "pin \"" + pin.name +
-                                    "\" is a shape; shape pins are not routed yet (they come "
-                                    "with the net router)");
   const io::Pin& a = net.pins[0];
   const io::Pin& b = net.pins[1];
-  const router::L1Wire w = router.shortest(*a.point, *b.point);
+  auto pin_geometry = [](const io::Pin& pin) {
+    geom::Polygon g;
+    if (pin.point)
+      g.outer = {*pin.point};
+    else
+      g = io::shape_polygon(*pin.shape);
+    return g;
+  };
+  const geom::Polygon ga = pin_geometry(a), gb = pin_geometry(b);
+  for (const auto* pin : {&a, &b})
+    if (!router::pin_shape_supported(pin == &a ? ga : gb))
+      return fail("ROUTE-0005", "pin \"" + pin->name +
+                                    "\" has a shape edge that is not horizontal, vertical or at 45 "
+                                    "degrees; such shape pins are not routed yet");
+  for (const auto* pin : {&a, &b})
+    if (router.pin_meets_obstacle(pin == &a ? ga : gb))
+      return fail("ROUTE-0005", "pin \"" + pin->name +
+                                    "\" lies partly under a blockage; shape pins that overlap "
+                                    "blockages are not routed yet (ones that touch them are)");
+  auto where = [&](const io::Pin& pin) {
+    return pin.point ? "at " + point_text(*pin.point) + " " + why_not_free(layout, *pin.point)
+                     : std::string("has no free point (its shape lies in blockages or outside the boundary)");
+  };
+  const router::L1Wire w = router.shortest(ga, gb);
   switch (w.status) {
     case router::WireStatus::Ok: break;
     case router::WireStatus::SourceNotFree:
-      return fail("ROUTE-0001", "pin \"" + a.name + "\" at " + point_text(*a.point) + " " +
-                                    why_not_free(layout, *a.point));
+      return fail("ROUTE-0001", "pin \"" + a.name + "\" " + where(a));
     case router::WireStatus::TargetNotFree:
-      return fail("ROUTE-0001", "pin \"" + b.name + "\" at " + point_text(*b.point) + " " +
-                                    why_not_free(layout, *b.point));
+      return fail("ROUTE-0001", "pin \"" + b.name + "\" " + where(b));
     case router::WireStatus::Unreachable:
       return fail("ROUTE-0002", "pins \"" + a.name + "\" and \"" + b.name +
                                     "\" are in different parts of free space: blockages wall one "
@@ -112,6 +129,12 @@ void add_route(CLI::App& app, int& status) {
       NetResult r = route_net(*layout, net, router);
       if (r.route.status == "routed") {
         ++routed;
+        if (net.sketch)  // said, not dropped silently
+          print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0007", layout->file, net.sketch->line, 0,
+                                        "net \"" + net.name + "\": the wire is the shortest of any "
+                                        "homotopy class and does not follow the <sketch> (a sketch "
+                                        "fixes the class for tightening, which is not implemented yet)"}},
+                            args->load.quiet);
       } else {
         print_diagnostics({Diagnostic{Severity::Warning, r.code, layout->file, net.line, 0,
                                       "net \"" + net.name + "\" not routed: " + *r.route.reason}},

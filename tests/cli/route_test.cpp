@@ -207,12 +207,19 @@ TEST(Route, DemoRoutesTwoPinNetsAndNamesTheRest) {
     for (const io::Net& n : d.layout->nets)
       if (n.name == "clk") clk_line = n.line;
   const auto r = run_taut({"route", kDemo, "-o", dir + "/r.xml", "--svg", dir + "/r.svg", "--stats", dir + "/s.json"});
-  EXPECT_EQ(r.status, 1) << r.err;  // clk (3 pins) and bump (shape pins) are not routed yet
+  EXPECT_EQ(r.status, 1) << r.err;  // clk (3 pins) is not routed yet
   EXPECT_NE(r.err.find("demo.xml:" + std::to_string(clk_line) + ": warning: [ROUTE-0004] net \"clk\""),
             std::string::npos)
       << r.err;
-  EXPECT_NE(r.err.find("[ROUTE-0005] net \"bump\""), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("routed 3 of 5 nets"), std::string::npos) << r.err;
+  // bump's sketch is said not to be followed, with the sketch's line
+  int sketch_line = 0;
+  if (io::ReadResult d = io::read_layout(kDemo); d.layout)
+    for (const io::Net& n : d.layout->nets)
+      if (n.name == "bump" && n.sketch) sketch_line = n.sketch->line;
+  EXPECT_NE(r.err.find("demo.xml:" + std::to_string(sketch_line) + ": warning: [ROUTE-0007] net \"bump\""),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("routed 4 of 5 nets"), std::string::npos) << r.err;
   ASSERT_TRUE(file_exists(dir + "/r.svg"));
   EXPECT_NE(read_text(dir + "/r.svg").find("<svg"), std::string::npos);
 
@@ -240,11 +247,24 @@ TEST(Route, DemoRoutesTwoPinNetsAndNamesTheRest) {
       if (n.name == route.net) net = &n;
     ASSERT_NE(net, nullptr);
     ASSERT_EQ(route.wires.size(), 1u);
+    const auto& pts = route.wires[0].points;
+    if (route.net == "bump") {
+      // From the pad [100, 600] x [12500, 13500] to the diamond around (22500, 2500): every pad
+      // point has x - y <= 600 - 12500 and every diamond point x - y >= 22000 - 2500, so no
+      // wire is shorter than 19500 + 11900 = 31400, the free-space bound, which the blockages
+      // leave open (the reference's distance between the wire's ends says the same).
+      ASSERT_GE(pts.size(), 2u);
+      EXPECT_TRUE(pts.front().x >= 100 && pts.front().x <= 600 && pts.front().y >= 12500 && pts.front().y <= 13500);
+      EXPECT_EQ(std::abs(pts.back().x - 22500) + std::abs(pts.back().y - 2500) <= 500, true);
+      EXPECT_EQ(expect_wire(*ref.ref, pts, pts.front(), pts.back()), 31400);
+      EXPECT_EQ(ref.ref->distance(pts.front(), pts.back()), 31400);
+      continue;
+    }
     const Point a = *net->pins[0].point, b = *net->pins[1].point;
-    EXPECT_EQ(expect_wire(*ref.ref, route.wires[0].points, a, b), ref.ref->distance(a, b).value_or(-1)) << route.net;
+    EXPECT_EQ(expect_wire(*ref.ref, pts, a, b), ref.ref->distance(a, b).value_or(-1)) << route.net;
   }
   EXPECT_EQ(status, (std::map<std::string, std::string>{
-                        {"clk", "failed"}, {"en", "routed"}, {"sda", "routed"}, {"rst", "routed"}, {"bump", "failed"}}));
+                        {"clk", "failed"}, {"en", "routed"}, {"sda", "routed"}, {"rst", "routed"}, {"bump", "routed"}}));
   const auto stats = nlohmann::json::parse(read_text(dir + "/s.json"));
   EXPECT_TRUE(stats.contains("route_seconds"));
   EXPECT_EQ(stats["routes"]["sda"]["status"], "routed") << stats.dump();
@@ -299,6 +319,53 @@ TEST(Route, GeneratedLayoutsMatchTheReference) {
   std::printf("generated nets: %d routed, %d unreachable, %d without an integer staircase\n", routed, unreachable,
               no_staircase);
   EXPECT_GT(routed, 80);
+}
+
+// Shape pins: routed from anywhere on the shape (here a projection, not a vertex), and the two
+// kinds this version refuses, each named with its reason (ROUTE-0005).
+TEST(Route, ShapePins) {
+  const std::string file = layout_file("route_shapes", R"(  <boundary x0="0" y0="0" x1="100" y1="60"/>
+  <blockage id="wall"><rect x0="40" y0="0" x1="44" y1="40"/></blockage>
+  <net name="pad_to_point">
+    <pin name="pad"><rect x0="10" y0="50" x1="30" y1="55"/></pin>
+    <pin name="p" x="20" y="10"/>
+  </net>
+  <net name="over">
+    <pin name="pad"><rect x0="36" y0="10" x1="42" y1="14"/></pin>
+    <pin name="p" x="80" y="10"/>
+  </net>
+  <net name="sloped">
+    <pin name="tri"><polygon points="60,50 70,50 60,55"/></pin>
+    <pin name="p" x="80" y="10"/>
+  </net>
+  <net name="diamonds">
+    <pin name="a"><polygon points="10,30 15,25 20,30 15,35"/></pin>
+    <pin name="b"><polygon points="70,30 75,25 80,30 75,35"/></pin>
+  </net>
+)");
+  const std::string out = temp_dir("route_shapes_out") + "/r.xml";
+  const auto r = run_taut({"route", file, "-o", out});
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("[ROUTE-0005] net \"over\" not routed: pin \"pad\" lies partly under a blockage"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("[ROUTE-0005] net \"sloped\" not routed: pin \"tri\" has a shape edge"), std::string::npos)
+      << r.err;
+  io::ReadResult rr = io::read_layout(out);
+  ASSERT_TRUE(rr.layout && rr.layout->routes);
+  std::map<std::string, std::vector<Point>> wires;
+  for (const io::Route& route : rr.layout->routes->routes)
+    if (route.status == "routed") wires[route.net] = route.wires.at(0).points;
+  ASSERT_EQ(wires.size(), 2u);
+  // Straight down from the pad's bottom edge: (20, 50) -> (20, 10), 40.
+  EXPECT_EQ(wires["pad_to_point"], (std::vector<Point>{{20, 50}, {20, 10}}));
+  // Diamond to diamond over the wall (top at y = 40): from s in a to t in b the length is
+  // (t.x - s.x) + (40 - s.y) + (40 - t.y) = (t.x - t.y) - (s.x + s.y) + 80, where s.x + s.y is
+  // at most 50 (a's upper-right edge) and t.x - t.y at least 40 (b's upper-left edge): 70.
+  const Reference ref = reference_for(file);
+  const auto& w = wires["diamonds"];
+  ASSERT_GE(w.size(), 2u);
+  EXPECT_EQ(expect_wire(*ref.ref, w, w.front(), w.back()), 70);
 }
 
 TEST(Route, InvalidInputWritesNothingAndKeepsTheOldOutput) {
