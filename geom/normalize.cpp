@@ -146,8 +146,9 @@ Ring round_ring(const detail::UnionRing& ring, const Box& domain, std::int64_t& 
     const RPoint prev = cur[(i + m - 1) % m], next = cur[(i + 1) % m];
     const Segment& lin_prev = lines[(i + m - 1) % m];
     const Segment& lin_next = lines[i];
+    bool outside_ok = false;  // the last resort below: q may leave the domain
     auto feasible = [&](Point q) {
-      if (!in_box(q, domain)) return false;
+      if (!outside_ok && !in_box(q, domain)) return false;
       // orient(prev, p, q) = orient(q, prev, p); orient(p, next, q) = orient(next, q, p).
       const int sp = prev.is_integer() ? detail::orient_sign(q, prev.floor(), p)
                                        : orientation(lin_prev.a, lin_prev.b, q);
@@ -229,6 +230,16 @@ Ring round_ring(const detail::UnionRing& ring, const Box& domain, std::int64_t& 
     if (!ok && prev.is_integer() && feasible(prev.floor())) q = prev.floor(), ok = true;
     if (!ok && next.is_integer() && feasible(next.floor())) q = next.floor(), ok = true;
     for (int radius = 64; !ok && radius <= 512; radius *= 2) ok = search(radius, q);
+    // Last resort: a vertex so near the domain side that the free wedge beyond it leaves the
+    // domain before it holds a lattice point (a sharp spike tip pointing at the side). q may
+    // then lie outside the domain: the next union pass clips the grown ring to the domain box,
+    // and the vertices that leaves on the side are rounded along the side (their wedge holds
+    // the side's lattice points), so the ring still only grows and ends inside the domain.
+    if (!ok) {
+      outside_ok = true;
+      ok = search(8, q) || search(32, q);
+      for (int radius = 64; !ok && radius <= 512; radius *= 2) ok = search(radius, q);
+    }
     if (!ok) throw std::logic_error("normalize_obstacles: no integer point to round a vertex to");
     cur[i] = detail::to_rpoint(q);
     ++rounded;

@@ -25,7 +25,9 @@
 // satisfy this exactly, q is the one closest to the two edge lines (the growth lies within that
 // distance of the old ring; floating point only ranks points already proven valid); if none
 // (an extremely thin free wedge), q is the previous or next ring vertex when that is integer
-// (the thin triangle prev, p, next is filled), else a wider search. Vertices are rounded one
+// (the thin triangle prev, p, next is filled), else a wider search, else (a spike tip whose wedge
+// leaves the domain before it meets a lattice point) the same search outside the domain, which
+// the next union pass clips back to the domain box. Vertices are rounded one
 // after the other, each against its already rounded neighbour. The rounded rings are then unioned again (the growth
 // may create new contacts or crossings), repeating until no vertex is rational; with only
 // axis-parallel edges every crossing is integer and the union is exact in one pass, no rounding.

@@ -453,6 +453,20 @@ TEST(UnionCases, BoundaryClipsAndRoundsOutward) {
   EXPECT_TRUE(taut::geom::normalize_obstacles(out, Box{{0, 0}, {10, 10}}).obstacles.empty());
 }
 
+TEST(UnionCases, SpikeTipPointingAtTheDomainSide) {
+  // From wavefront seeds 3053357 and 3081455: the union has a sharp spike whose tip, at the
+  // crossing (5 + 23/37, -9 + 1/37) of two triangles, is about 5 units from the side x = 11;
+  // its free wedge (about 2.6 degrees) leaves the domain before it holds a lattice point, which
+  // made the rounding throw. The tip now rounds outside the domain and the next union pass clips
+  // it back to the side.
+  std::vector<Polygon> in{Polygon{{{5, -8}, {7, 0}, {0, -13}}, {}}, Polygon{{{9, -11}, {8, -2}, {4, -8}}, {}},
+                          Polygon{{{1, -10}, {1, -11}, {10, -8}}, {}}};
+  for (Polygon& p : in)
+    if (taut::geom::twice_area(p.outer) < 0) std::reverse(p.outer.begin(), p.outer.end());
+  std::mt19937 rng(3053357);
+  check_general(in, Box{{0, -18}, {11, 0}}, rng);
+}
+
 // 10^6 input vertices: run by hand in Release with --gtest_also_run_disabled_tests.
 TEST(UnionScale, DISABLED_MillionVerticesOfRandomRectangles) {
   std::mt19937 rng(5);

@@ -40,6 +40,8 @@ const std::vector<std::uint64_t> kRegressionSeeds = {
     1003651,  // stats check counted repeated vertex queries (pinch at a corner source)
     1008215,  // same, obstacle in the domain corner
     1019004,  // same, ring family
+    3053357,  // normalize_obstacles threw: a spike tip whose wedge leaves the domain before it
+    3081455,  // holds a lattice point (now rounded outside and clipped back; union_test too)
 };
 
 TEST(Wavefront, RandomInstancesMatchReference) {
