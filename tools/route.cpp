@@ -1,8 +1,8 @@
 // taut route FILE -o OUT [--svg PIC] [--stats S.json]: routes every two-pin net (point pins, and
-// shape pins whose edges are horizontal, vertical or at 45 degrees) by an exact shortest L1 wire (rectilinear, integer vertices), each net on its own (wires of
-// different nets do not see each other yet), and writes the layout with <routes>. Nets this
-// version cannot route are written as failed with a reason and reported on stderr; the exit
-// status is then 1.
+// shape pins whose edges are horizontal, vertical or at 45 degrees) by an exact shortest L1 wire
+// (rectilinear, integer vertices), each net on its own (wires of different nets do not see each
+// other yet), and writes the layout with <routes>. Nets this version cannot route are written
+// as failed with a reason and reported on stderr; the exit status is then 1.
 #include <chrono>
 #include <iostream>
 
