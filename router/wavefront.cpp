@@ -43,14 +43,49 @@ struct T3 {
   T3 operator-(const T3& o) const { return {a - o.a, b - o.b, c - o.c}; }
 };
 
-// Direction frames: the wave moves "north-east" in local coordinates u = sx*X, v = sy*Y.
-constexpr int kSx[4] = {1, -1, -1, 1};  // NE, NW, SW, SE
-constexpr int kSy[4] = {1, 1, -1, -1};
+// Direction frames: the wave moves "north-east" in local coordinates (u, v) = M (X, Y) of the
+// sheared plane, M an integer matrix with determinant +-1 (so lattice points stay lattice
+// points and lines stay lines); the local axes u (east) and v (north) are the frame's two track
+// directions. L1: M = diag(sx, sy), one frame per quadrant (NE, NW, SW, SE). A fixed-orientation
+// metric would add frames whose axes are two neighbouring orientations (E and NE, ...).
+struct Frame {
+  i64 a, b, c, d;          // u = a*X + b*Y, v = c*X + d*Y
+  i64 ia, ib, ic, id;      // the inverse: X = ia*u + ib*v, Y = ic*u + id*v
+  int sigma;               // det M: +1 keeps orientation, -1 mirrors it
+};
+constexpr Frame kFrames[4] = {
+    {1, 0, 0, 1, 1, 0, 0, 1, 1},      // NE
+    {-1, 0, 0, 1, -1, 0, 0, 1, -1},   // NW
+    {-1, 0, 0, -1, -1, 0, 0, -1, 1},  // SW
+    {1, 0, 0, -1, 1, 0, 0, -1, -1},   // SE
+};
+// Range [lo, hi] of a*x + b*y over the box [blo, bhi] (exact in int64: |a|, |b| <= 1 here).
+struct Range {
+  i64 lo, hi;
+};
+inline Range linear_range(i64 a, i64 b, Point blo, Point bhi) {
+  const i64 x0 = a * blo.x, x1 = a * bhi.x, y0 = b * blo.y, y1 = b * bhi.y;
+  return {std::min(x0, x1) + std::min(y0, y1), std::max(x0, x1) + std::max(y0, y1)};
+}
+inline Range u_range(int d, Point blo, Point bhi) { return linear_range(kFrames[d].a, kFrames[d].b, blo, bhi); }
+inline Range v_range(int d, Point blo, Point bhi) { return linear_range(kFrames[d].c, kFrames[d].d, blo, bhi); }
 
-// Sheared local coordinates of a world point (X = x + e*y, Y = y + e^2*x).
-inline T3 U(int d, Point p) { return {i64{kSx[d]} * p.x, i64{kSx[d]} * p.y, 0}; }
-inline T3 V(int d, Point p) { return {i64{kSy[d]} * p.y, 0, i64{kSy[d]} * p.x}; }
+// Sheared local coordinates of a world point: with X = (x, y, 0) and Y = (y, 0, x) as
+// coefficients of 1, e, e^2 (X = x + e*y, Y = y + e^2*x), u = a*X + b*Y, v = c*X + d*Y.
+inline T3 U(int d, Point p) {
+  const Frame& f = kFrames[d];
+  return {f.a * p.x + f.b * p.y, f.a * p.y, f.b * p.x};
+}
+inline T3 V(int d, Point p) {
+  const Frame& f = kFrames[d];
+  return {f.c * p.x + f.d * p.y, f.c * p.y, f.d * p.x};
+}
 inline T3 level(int d, Point p) { return U(d, p) + V(d, p); }
+// The world vector (unsheared, exact integers) of the local vector (u, v): M^-1 (u, v).
+inline Point local_int(int d, i64 u, i64 v) {
+  const Frame& f = kFrames[d];
+  return {static_cast<geom::Coord>(f.ia * u + f.ib * v), static_cast<geom::Coord>(f.ic * u + f.id * v)};
+}
 
 // A symbolic world direction: each component a polynomial in e (coefficients of 1, e, e^2).
 struct Dir {
@@ -59,9 +94,10 @@ struct Dir {
 inline Dir int_dir(i64 dx, i64 dy) { return Dir{{dx, 0, 0}, {dy, 0, 0}}; }
 // The world direction of the sheared local vector (a, b) of frame d.
 inline Dir local_dir(int d, int a, int b) {
-  const i64 sx = kSx[d], sy = kSy[d];
-  // M^-1 (sx a, sy b) ~ (sx a - e sy b, sy b - e^2 sx a)
-  return Dir{{sx * a, -sy * b, 0}, {sy * b, 0, -sx * a}};
+  // (wx, wy) = M^-1 (a, b) in the sheared plane; unsheared: x = X - e*Y + ..., y = Y - e^2*X
+  // + ..., which to the orders that decide a sign is (wx - e wy, wy - e^2 wx).
+  const Point w = local_int(d, a, b);
+  return Dir{{w.x, -i64{w.y}, 0}, {w.y, 0, -i64{w.x}}};
 }
 // Signs of cross(p, q) and dot(p, q) as polynomials in e, compared lexicographically: the
 // coefficient of e^k only matters when every lower one is zero, so it is computed only then
@@ -134,19 +170,29 @@ inline bool region_hull(const Region& r, const Box& frame, Box& out) {
   // World box bounds from the frame, the lexicographic half-planes and axis-parallel stop edges
   // (the common case: those need no clipping).
   i64 xlo = frame.lo.x, xhi = frame.hi.x, ylo = frame.lo.y, yhi = frame.hi.y;
-  const i64 sx = kSx[r.d], sy = kSy[r.d];
-  for (int i = 0; i < r.nlex; ++i) {
-    const auto& l = r.lex[i];
-    const i64 s = l.on_u ? sx : sy;  // local = s * world: local > c is world > c (s = 1) or < -c
-    i64& lo = l.on_u ? xlo : ylo;
-    i64& hi = l.on_u ? xhi : yhi;
-    if (l.greater == (s > 0))
-      lo = std::max(lo, s * l.value.a);
-    else
-      hi = std::min(hi, s * l.value.a);
-  }
   std::array<Line, 8> slanted;
   int ns = 0;
+  // a*x + b*y <= c: a bound on x or y when the line is axis-parallel, else a line to clip by
+  auto add = [&](i64 a, i64 b, i64 c) {
+    if (b == 0 && (a == 1 || a == -1)) {
+      if (a > 0) xhi = std::min(xhi, c);
+      else xlo = std::max(xlo, -c);
+    } else if (a == 0 && (b == 1 || b == -1)) {
+      if (b > 0) yhi = std::min(yhi, c);
+      else ylo = std::max(ylo, -c);
+    } else {
+      slanted[ns++] = {a, b, c};
+    }
+  };
+  const Frame& fr = kFrames[r.d];
+  for (int i = 0; i < r.nlex; ++i) {  // U > c gives u.a >= c.a, U < c gives u.a <= c.a
+    const auto& l = r.lex[i];
+    const i64 a = l.on_u ? fr.a : fr.c, b = l.on_u ? fr.b : fr.d;
+    if (l.greater)
+      add(-a, -b, -l.value.a);
+    else
+      add(a, b, l.value.a);
+  }
   for (int i = 0; i < r.nedges; ++i) {  // (B-A) x (q-A) <= 0
     const i64 dx = i64{r.eb[i].x} - r.ea[i].x, dy = i64{r.eb[i].y} - r.ea[i].y;
     if (dy == 0) {  // dx * (y - A.y) <= 0
@@ -159,7 +205,8 @@ inline bool region_hull(const Region& r, const Box& frame, Box& out) {
       slanted[ns++] = {-dy, dx, dx * r.ea[i].y - dy * r.ea[i].x};
     }
   }
-  // the level: sx*x + sy*y >= start
+  // the level: sx*x + sy*y >= start, with the level's coefficients (L1: sx, sy = +-1)
+  const i64 sx = fr.a + fr.c, sy = fr.b + fr.d;
   auto level_ok_box = [&] {
     const i64 best = (sx > 0 ? xhi : -xlo) + (sy > 0 ? yhi : -ylo);
     return best >= r.start.a;
@@ -309,43 +356,25 @@ class KdTree {
   };
   static constexpr i64 kNoPoint = std::numeric_limits<i64>::max();
   // A lower bound of the level's constant term over the points of region r that lie outside
-  // node n's box, or kNoPoint when there can be none. The region's lexicographic bounds and
-  // its level bound give ranges of the constant terms u.a, v.a of its points (an open bound
-  // U > c gives u.a >= c.a; u + v > start gives u.a >= start.a - vmax); a point outside the box
-  // has u.a or v.a beyond the box's range on some side. Stop edges are ignored (the region
-  // only shrinks with them), so the bound is conservative.
+  // node n's box, or kNoPoint when there can be none. Such a point lies in the region's hull
+  // box (region_hull()) and strictly beyond the node's box on some side (the splits leave no
+  // coordinate value on both sides), i.e. in one of four boxes; over each the level is at least
+  // start and at least its minimum over that box. Stop edges only shrink the region, so the
+  // bound is conservative.
   static i64 outside_bound(const Node& n, const Region& r) {
-    const int d = r.d;
-    constexpr i64 kInf = std::numeric_limits<i64>::max() / 4;
-    i64 umin = -kInf, umax = kInf, vmin = -kInf, vmax = kInf;
-    for (int i = 0; i < r.nlex; ++i) {
-      const auto& l = r.lex[i];
-      if (l.greater)
-        (l.on_u ? umin : vmin) = std::max(l.on_u ? umin : vmin, l.value.a);
-      else
-        (l.on_u ? umax : vmax) = std::min(l.on_u ? umax : vmax, l.value.a);
-    }
-    {  // the hull box in local coordinates
-      const i64 hu_lo = kSx[d] > 0 ? i64{r.hull.lo.x} : -i64{r.hull.hi.x};
-      const i64 hu_hi = kSx[d] > 0 ? i64{r.hull.hi.x} : -i64{r.hull.lo.x};
-      const i64 hv_lo = kSy[d] > 0 ? i64{r.hull.lo.y} : -i64{r.hull.hi.y};
-      const i64 hv_hi = kSy[d] > 0 ? i64{r.hull.hi.y} : -i64{r.hull.lo.y};
-      umin = std::max(umin, hu_lo);
-      umax = std::min(umax, hu_hi);
-      vmin = std::max(vmin, hv_lo);
-      vmax = std::min(vmax, hv_hi);
-    }
-    umin = std::max(umin, r.start.a - vmax);
-    vmin = std::max(vmin, r.start.a - umax);
-    const i64 bu_lo = kSx[d] > 0 ? i64{n.lo.x} : -i64{n.hi.x};
-    const i64 bu_hi = kSx[d] > 0 ? i64{n.hi.x} : -i64{n.lo.x};
-    const i64 bv_lo = kSy[d] > 0 ? i64{n.lo.y} : -i64{n.hi.y};
-    const i64 bv_hi = kSy[d] > 0 ? i64{n.hi.y} : -i64{n.lo.y};
-    // below the box on u or v: the level is only bounded by start
-    if (umin < bu_lo || vmin < bv_lo) return r.start.a;
+    const Frame& f = kFrames[r.d];
+    const i64 la = f.a + f.c, lb = f.b + f.d;  // level = la*x + lb*y (constant term)
+    const Box& h = r.hull;
     i64 bound = kNoPoint;
-    if (umax > bu_hi) bound = std::min(bound, std::max(r.start.a, bu_hi + 1 + vmin));
-    if (vmax > bv_hi) bound = std::min(bound, std::max(r.start.a, umin + bv_hi + 1));
+    auto side = [&](i64 xlo, i64 ylo, i64 xhi, i64 yhi) {
+      if (xlo > xhi || ylo > yhi) return;
+      const i64 x0 = la * xlo, x1 = la * xhi, y0 = lb * ylo, y1 = lb * yhi;
+      bound = std::min(bound, std::max(r.start.a, std::min(x0, x1) + std::min(y0, y1)));
+    };
+    side(h.lo.x, h.lo.y, i64{n.lo.x} - 1, h.hi.y);  // left of the box
+    side(i64{n.hi.x} + 1, h.lo.y, h.hi.x, h.hi.y);  // right
+    side(h.lo.x, h.lo.y, h.hi.x, i64{n.lo.y} - 1);  // below
+    side(h.lo.x, i64{n.hi.y} + 1, h.hi.x, h.hi.y);  // above
     return bound;
   }
   uint32_t build(uint32_t begin, uint32_t end, uint32_t parent) {
@@ -396,9 +425,8 @@ class KdTree {
   // Lower bound of the level's constant term over the part of the box the region's lower
   // bounds on U, V and the level leave (a box left of a vertical track counts from the track).
   static i64 box_min_level(const Node& n, const Region& r) {
-    const int d = r.d;
-    i64 umin = kSx[d] > 0 ? i64{n.lo.x} : -i64{n.hi.x};
-    i64 vmin = kSy[d] > 0 ? i64{n.lo.y} : -i64{n.hi.y};
+    i64 umin = u_range(r.d, n.lo, n.hi).lo;
+    i64 vmin = v_range(r.d, n.lo, n.hi).lo;
     for (int i = 0; i < r.nlex; ++i) {
       const auto& l = r.lex[i];
       if (!l.greater) continue;
@@ -408,13 +436,10 @@ class KdTree {
     return std::max(umin + vmin, r.start.a);
   }
   static bool box_may_satisfy(const Node& n, const Region& r) {
-    const int d = r.d;
     if (n.hi.x < r.hull.lo.x || n.lo.x > r.hull.hi.x || n.hi.y < r.hull.lo.y || n.lo.y > r.hull.hi.y)
       return false;
-    const i64 umax = kSx[d] > 0 ? n.hi.x : -i64{n.lo.x};
-    const i64 umin = kSx[d] > 0 ? n.lo.x : -i64{n.hi.x};
-    const i64 vmax = kSy[d] > 0 ? n.hi.y : -i64{n.lo.y};
-    const i64 vmin = kSy[d] > 0 ? n.lo.y : -i64{n.hi.y};
+    const Range ur = u_range(r.d, n.lo, n.hi), vr = v_range(r.d, n.lo, n.hi);
+    const i64 umax = ur.hi, umin = ur.lo, vmax = vr.hi, vmin = vr.lo;
     if (umax + vmax < r.start.a) return false;
     for (int i = 0; i < r.nlex; ++i) {
       const auto& l = r.lex[i];
@@ -836,7 +861,7 @@ struct L1Wavefront::Impl {
     if (e.full) return 0;
     uint32_t bits = 0;
     for (int d = 0; d < 4; ++d) {
-      const int sigma = kSx[d] * kSy[d];
+      const int sigma = kFrames[d].sigma;
       const Dir L0 = sigma > 0 ? lo_dir(e) : hi_dir(e);
       const Dir L1 = sigma > 0 ? hi_dir(e) : lo_dir(e);
       auto local_in = [&](const Dir& a, const Dir& b, const Dir& x) {
@@ -930,9 +955,13 @@ struct L1Wavefront::Impl {
   // exact axis line, ties (edges through one point of it) by slope, which is the order the
   // sheared ray meets them in (see header).
   bool shoot(int d, bool vertical, uint32_t o, uint32_t& ea, uint32_t& eb) {
-    const int s = vertical ? kSy[d] : kSx[d];  // +1: towards larger world y (x)
-    const uint32_t hit = o < nvert ? ray_cache[std::size_t{4} * o + (vertical ? 0 : 2) + (s > 0 ? 0 : 1)]
-                                   : shoot_uncached(s, vertical, o);
+    // The track's world direction: local north (V track) or east (H track). In the L1 frames a
+    // world axis direction (the ones the sweeps answer and shoot_uncached() shoots).
+    const Point w = vertical ? local_int(d, 0, 1) : local_int(d, 1, 0);
+    const bool world_vertical = w.x == 0;
+    const int s = world_vertical ? w.y : w.x;  // +1: towards larger world y (x)
+    const uint32_t hit = o < nvert ? ray_cache[std::size_t{4} * o + (world_vertical ? 0 : 2) + (s > 0 ? 0 : 1)]
+                                   : shoot_uncached(s, world_vertical, o);
     if (hit == kNone) return false;
     ea = edge_pts[hit].first;
     eb = edge_pts[hit].second;
@@ -1143,7 +1172,7 @@ struct L1Wavefront::Impl {
     const Entity e = ents[ent];
     const uint32_t p = e.point;
     for (int d = 0; d < 4; ++d) {
-      const int sigma = kSx[d] * kSy[d];
+      const int sigma = kFrames[d].sigma;
       const Dir E = local_dir(d, 1, 0), N = local_dir(d, 0, 1);
       auto emit = [&](const Dir& a0, const Dir& a1, Bound right, Bound left) {
         if (has_cover && !e.full) {
@@ -1200,7 +1229,7 @@ struct L1Wavefront::Impl {
   void process(const Wave& w) {
     ++stats.events;
     const int d = w.dir;
-    const int sigma = kSx[d] * kSy[d];
+    const int sigma = kFrames[d].sigma;
     const uint32_t p = w.event;
     if (w.event_is_target) {
       const uint32_t te = point_target_entity[p - nvert];
@@ -1224,8 +1253,12 @@ struct L1Wavefront::Impl {
     const bool on_left = !left_end && !right_end && on_line(w.left);
     const bool on_right = !left_end && !right_end && !on_left && on_line(w.right);
     Dir arrive = local_dir(d, -1, -1);  // SW
-    if (on_left && w.left.kind == kV) arrive = int_dir(kSx[d] * 1, kSy[d] * -2);
-    if (on_right && w.right.kind == kH) arrive = int_dir(kSx[d] * -2, kSy[d] * 1);
+    auto world_int = [&](i64 u, i64 v) {
+      const Point w = local_int(d, u, v);
+      return int_dir(w.x, w.y);
+    };
+    if (on_left && w.left.kind == kV) arrive = world_int(1, -2);
+    if (on_right && w.right.kind == kH) arrive = world_int(-2, 1);
     auto arriving_edge_entity = [&](const Bound& b) {
       // ring edge ea -> eb ends here: at eb it is the entity's lo edge, at ea its hi edge
       return b.eb == p ? entity_at(p, b.ea, kNone, nullptr) : entity_at(p, kNone, b.eb, nullptr);
@@ -1265,8 +1298,8 @@ struct L1Wavefront::Impl {
       if (left_end) c0 = L0;
       if (right_end) c1 = L1;
       // exact local south / west: the back direction of a track line p lies on
-      if (on_left) c0 = w.left.kind == kV ? int_dir(0, -kSy[d]) : int_dir(-kSx[d], 0);
-      if (on_right) c1 = w.right.kind == kV ? int_dir(0, -kSy[d]) : int_dir(-kSx[d], 0);
+      if (on_left) c0 = w.left.kind == kV ? world_int(0, -1) : world_int(-1, 0);
+      if (on_right) c1 = w.right.kind == kV ? world_int(0, -1) : world_int(-1, 0);
       // as a world arc
       const Dir w0 = sigma > 0 ? c0 : c1, w1 = sigma > 0 ? c1 : c0;
       spawn(ent, true, w0, w1);
