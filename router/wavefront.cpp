@@ -34,7 +34,7 @@ constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
 struct T3 {
   i64 a = 0, b = 0, c = 0;
   friend bool operator==(const T3&, const T3&) = default;
-  friend auto operator<=>(const T3& x, const T3& y) {
+  [[gnu::always_inline]] friend auto operator<=>(const T3& x, const T3& y) {
     if (x.a != y.a) return x.a <=> y.a;
     if (x.b != y.b) return x.b <=> y.b;
     return x.c <=> y.c;
@@ -63,24 +63,24 @@ constexpr Frame kFrames[4] = {
 struct Range {
   i64 lo, hi;
 };
-inline Range linear_range(i64 a, i64 b, Point blo, Point bhi) {
+[[gnu::always_inline]] inline Range linear_range(i64 a, i64 b, Point blo, Point bhi) {
   const i64 x0 = a * blo.x, x1 = a * bhi.x, y0 = b * blo.y, y1 = b * bhi.y;
   return {std::min(x0, x1) + std::min(y0, y1), std::max(x0, x1) + std::max(y0, y1)};
 }
-inline Range u_range(int d, Point blo, Point bhi) { return linear_range(kFrames[d].a, kFrames[d].b, blo, bhi); }
-inline Range v_range(int d, Point blo, Point bhi) { return linear_range(kFrames[d].c, kFrames[d].d, blo, bhi); }
+[[gnu::always_inline]] inline Range u_range(int d, Point blo, Point bhi) { return linear_range(kFrames[d].a, kFrames[d].b, blo, bhi); }
+[[gnu::always_inline]] inline Range v_range(int d, Point blo, Point bhi) { return linear_range(kFrames[d].c, kFrames[d].d, blo, bhi); }
 
 // Sheared local coordinates of a world point: with X = (x, y, 0) and Y = (y, 0, x) as
 // coefficients of 1, e, e^2 (X = x + e*y, Y = y + e^2*x), u = a*X + b*Y, v = c*X + d*Y.
-inline T3 U(int d, Point p) {
+[[gnu::always_inline]] inline T3 U(int d, Point p) {
   const Frame& f = kFrames[d];
   return {f.a * p.x + f.b * p.y, f.a * p.y, f.b * p.x};
 }
-inline T3 V(int d, Point p) {
+[[gnu::always_inline]] inline T3 V(int d, Point p) {
   const Frame& f = kFrames[d];
   return {f.c * p.x + f.d * p.y, f.c * p.y, f.d * p.x};
 }
-inline T3 level(int d, Point p) { return U(d, p) + V(d, p); }
+[[gnu::always_inline]] inline T3 level(int d, Point p) { return U(d, p) + V(d, p); }
 // The world vector (unsheared, exact integers) of the local vector (u, v): M^-1 (u, v).
 inline Point local_int(int d, i64 u, i64 v) {
   const Frame& f = kFrames[d];
@@ -283,11 +283,14 @@ inline bool region_hull(const Region& r, const Box& frame, Box& out) {
   return true;
 }
 
+// D == r.d: the frame as a template argument, so its matrix folds into the arithmetic (the k-d
+// search below is instantiated per frame).
+template <int D>
 inline bool satisfies(const Region& r, Point q) {
-  if (!(level(r.d, q) > r.start)) return false;
+  if (!(level(D, q) > r.start)) return false;
   for (int i = 0; i < r.nlex; ++i) {
     const auto& l = r.lex[i];
-    const T3 v = l.on_u ? U(r.d, q) : V(r.d, q);
+    const T3 v = l.on_u ? U(D, q) : V(D, q);
     if (l.greater ? !(v > l.value) : !(v < l.value)) return false;
   }
   for (int i = 0; i < r.nedges; ++i)
@@ -325,17 +328,12 @@ class KdTree {
   // bounding tests on both sides of it (measured in bench_wavefront: stats().drag_nodes).
   bool query_near(uint32_t leaf, const Region& r, uint32_t& best_id, T3& best_level,
                   std::int64_t& nodes) const {
-    bool found = false;
-    visit(leaf, r, found, best_id, best_level, nodes);
-    for (uint32_t cur = leaf; cur != 0;) {
-      const i64 outside = outside_bound(nodes_[cur], r);
-      if (outside == kNoPoint || (found && outside > best_level.a)) break;
-      const uint32_t par = nodes_[cur].parent;
-      const uint32_t sib = nodes_[par].left == cur ? nodes_[par].right : nodes_[par].left;
-      visit(sib, r, found, best_id, best_level, nodes);
-      cur = par;
+    switch (r.d) {
+      case 0: return query_near_t<0>(leaf, r, best_id, best_level, nodes);
+      case 1: return query_near_t<1>(leaf, r, best_id, best_level, nodes);
+      case 2: return query_near_t<2>(leaf, r, best_id, best_level, nodes);
+      default: return query_near_t<3>(leaf, r, best_id, best_level, nodes);
     }
-    return found;
   }
 
   // The id of the satisfying point with the smallest level (false = none); `nodes` counts the
@@ -343,11 +341,32 @@ class KdTree {
   bool query(const Region& r, uint32_t& best_id, T3& best_level, std::int64_t& nodes) const {
     if (items_.empty()) return false;
     bool found = false;
-    visit(0, r, found, best_id, best_level, nodes);
+    switch (r.d) {
+      case 0: visit<0>(0, r, found, best_id, best_level, nodes); break;
+      case 1: visit<1>(0, r, found, best_id, best_level, nodes); break;
+      case 2: visit<2>(0, r, found, best_id, best_level, nodes); break;
+      default: visit<3>(0, r, found, best_id, best_level, nodes); break;
+    }
     return found;
   }
 
  private:
+  template <int D>
+  bool query_near_t(uint32_t leaf, const Region& r, uint32_t& best_id, T3& best_level,
+                    std::int64_t& nodes) const {
+    bool found = false;
+    visit<D>(leaf, r, found, best_id, best_level, nodes);
+    for (uint32_t cur = leaf; cur != 0;) {
+      const i64 outside = outside_bound<D>(nodes_[cur], r);
+      if (outside == kNoPoint || (found && outside > best_level.a)) break;
+      const uint32_t par = nodes_[cur].parent;
+      const uint32_t sib = nodes_[par].left == cur ? nodes_[par].right : nodes_[par].left;
+      visit<D>(sib, r, found, best_id, best_level, nodes);
+      cur = par;
+    }
+    return found;
+  }
+
   struct Node {
     Point lo, hi;
     uint32_t begin, end;
@@ -361,8 +380,9 @@ class KdTree {
   // coordinate value on both sides), i.e. in one of four boxes; over each the level is at least
   // start and at least its minimum over that box. Stop edges only shrink the region, so the
   // bound is conservative.
+  template <int D>
   static i64 outside_bound(const Node& n, const Region& r) {
-    const Frame& f = kFrames[r.d];
+    constexpr Frame f = kFrames[D];
     const i64 la = f.a + f.c, lb = f.b + f.d;  // level = la*x + lb*y (constant term)
     const Box& h = r.hull;
     i64 bound = kNoPoint;
@@ -424,9 +444,10 @@ class KdTree {
   }
   // Lower bound of the level's constant term over the part of the box the region's lower
   // bounds on U, V and the level leave (a box left of a vertical track counts from the track).
+  template <int D>
   static i64 box_min_level(const Node& n, const Region& r) {
-    i64 umin = u_range(r.d, n.lo, n.hi).lo;
-    i64 vmin = v_range(r.d, n.lo, n.hi).lo;
+    i64 umin = u_range(D, n.lo, n.hi).lo;
+    i64 vmin = v_range(D, n.lo, n.hi).lo;
     for (int i = 0; i < r.nlex; ++i) {
       const auto& l = r.lex[i];
       if (!l.greater) continue;
@@ -435,10 +456,11 @@ class KdTree {
     }
     return std::max(umin + vmin, r.start.a);
   }
+  template <int D>
   static bool box_may_satisfy(const Node& n, const Region& r) {
     if (n.hi.x < r.hull.lo.x || n.lo.x > r.hull.hi.x || n.hi.y < r.hull.lo.y || n.lo.y > r.hull.hi.y)
       return false;
-    const Range ur = u_range(r.d, n.lo, n.hi), vr = v_range(r.d, n.lo, n.hi);
+    const Range ur = u_range(D, n.lo, n.hi), vr = v_range(D, n.lo, n.hi);
     const i64 umax = ur.hi, umin = ur.lo, vmax = vr.hi, vmin = vr.lo;
     if (umax + vmax < r.start.a) return false;
     for (int i = 0; i < r.nlex; ++i) {
@@ -456,32 +478,33 @@ class KdTree {
     }
     return true;
   }
+  template <int D>
   void visit(uint32_t id, const Region& r, bool& found, uint32_t& best_id, T3& best,
              std::int64_t& nodes) const {
     ++nodes;
     const Node& n = nodes_[id];
-    if (found && box_min_level(n, r) > best.a) return;
-    if (!box_may_satisfy(n, r)) return;
+    if (found && box_min_level<D>(n, r) > best.a) return;
+    if (!box_may_satisfy<D>(n, r)) return;
     if (n.left == kNone) {
       for (uint32_t i = n.begin; i < n.end; ++i) {
         const Point q = items_[i].first;
-        const T3 lv = level(r.d, q);
+        const T3 lv = level(D, q);
         if (found && !(lv < best)) continue;
-        if (!satisfies(r, q)) continue;
+        if (!satisfies<D>(r, q)) continue;
         found = true;
         best = lv;
         best_id = items_[i].second;
       }
       return;
     }
-    const i64 bl = box_min_level(nodes_[n.left], r);
-    const i64 br = box_min_level(nodes_[n.right], r);
+    const i64 bl = box_min_level<D>(nodes_[n.left], r);
+    const i64 br = box_min_level<D>(nodes_[n.right], r);
     if (bl <= br) {
-      visit(n.left, r, found, best_id, best, nodes);
-      visit(n.right, r, found, best_id, best, nodes);
+      visit<D>(n.left, r, found, best_id, best, nodes);
+      visit<D>(n.right, r, found, best_id, best, nodes);
     } else {
-      visit(n.right, r, found, best_id, best, nodes);
-      visit(n.left, r, found, best_id, best, nodes);
+      visit<D>(n.right, r, found, best_id, best, nodes);
+      visit<D>(n.left, r, found, best_id, best, nodes);
     }
   }
 
