@@ -103,7 +103,8 @@ inline Dir local_dir(int d, int a, int b) {
 // coefficient of e^k only matters when every lower one is zero, so it is computed only then
 // (most directions differ already in their constant terms).
 inline int cross_sign(const Dir& p, const Dir& q) {
-  for (int k = 0; k <= 4; ++k) {
+  if (const i128 r0 = i128{p.x[0]} * q.y[0] - i128{p.y[0]} * q.x[0]; r0 != 0) return r0 > 0 ? 1 : -1;
+  for (int k = 1; k <= 4; ++k) {
     i128 r = 0;
     for (int i = std::max(0, k - 2); i <= std::min(2, k); ++i)
       r += i128{p.x[i]} * q.y[k - i] - i128{p.y[i]} * q.x[k - i];
@@ -112,7 +113,8 @@ inline int cross_sign(const Dir& p, const Dir& q) {
   return 0;
 }
 inline int dot_sign(const Dir& p, const Dir& q) {
-  for (int k = 0; k <= 4; ++k) {
+  if (const i128 r0 = i128{p.x[0]} * q.x[0] + i128{p.y[0]} * q.y[0]; r0 != 0) return r0 > 0 ? 1 : -1;
+  for (int k = 1; k <= 4; ++k) {
     i128 r = 0;
     for (int i = std::max(0, k - 2); i <= std::min(2, k); ++i)
       r += i128{p.x[i]} * q.x[k - i] + i128{p.y[i]} * q.y[k - i];
