@@ -137,7 +137,15 @@ inline bool same_dir(const Dir& x, const Dir& y) {
 }
 // x strictly inside the counter-clockwise arc from a to b.
 inline bool in_ccw(const Dir& a, const Dir& b, const Dir& x) {
-  return !same_dir(x, a) && ccw_less(a, x, b);
+  // = !same_dir(x, a) && ccw_less(a, x, b), with cross(a, x) computed once: once x is not a's
+  // direction, x is in a's half (half 0) exactly when cross(a, x) > 0.
+  const int cax = cross_sign(a, x);
+  if (cax == 0 && dot_sign(a, x) > 0) return false;
+  const int hx = cax > 0 ? 0 : 1;
+  const int cab = cross_sign(a, b);
+  const int hb = (cab > 0 || (cab == 0 && dot_sign(a, b) > 0)) ? 0 : 1;
+  if (hx != hb) return hx < hb;
+  return cross_sign(x, b) > 0;
 }
 
 // ---------------------------------------------------------------------------------------------
