@@ -53,16 +53,16 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, router::L1Rout
     return g;
   };
   const geom::Polygon ga = pin_geometry(a), gb = pin_geometry(b);
-  for (const auto* pin : {&a, &b})
-    if (!router::pin_shape_supported(pin == &a ? ga : gb))
+  for (const auto& [pin, g] : {std::pair{&a, &ga}, std::pair{&b, &gb}}) {
+    if (!router::pin_shape_supported(*g))
       return fail("ROUTE-0005", "pin \"" + pin->name +
                                     "\" has a shape edge that is not horizontal, vertical or at 45 "
                                     "degrees; such shape pins are not routed yet");
-  for (const auto* pin : {&a, &b})
-    if (router.pin_meets_obstacle(pin == &a ? ga : gb))
+    if (router.pin_meets_obstacle(*g))
       return fail("ROUTE-0005", "pin \"" + pin->name +
                                     "\" lies partly under a blockage; shape pins that overlap "
                                     "blockages are not routed yet (ones that touch them are)");
+  }
   auto where = [&](const io::Pin& pin) {
     return pin.point ? "at " + point_text(*pin.point) + " " + why_not_free(layout, *pin.point)
                      : std::string("has no free point (its shape lies in blockages or outside the boundary)");

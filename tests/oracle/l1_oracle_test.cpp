@@ -6,6 +6,7 @@
 // edges, sloped obstacles) with answers worked out in the comments, and metamorphic checks on
 // random sloped layouts.
 #include "oracle/l1_oracle.h"
+#include "support/random_shapes.h"
 
 #include <gtest/gtest.h>
 
@@ -516,21 +517,6 @@ TEST(L1Oracle, DiamondTouchingTheDomainSide) {
 // pinch), paths that check, and scaling the scene by 2 and turning it by 90 degrees doubles
 // every distance.
 
-std::vector<Polygon> random_sloped(std::mt19937& rng, const Box& domain) {
-  auto uni = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
-  std::vector<Polygon> out;
-  const int n = uni(1, 5);
-  for (int i = 0; i < n; ++i) {
-    Ring r;
-    for (int k = 0; k < 3; ++k)
-      r.push_back({uni(domain.lo.x, domain.hi.x), uni(domain.lo.y, domain.hi.y)});
-    const auto a = taut::geom::twice_area(r);
-    if (a == 0) continue;
-    if (a < 0) std::reverse(r.begin(), r.end());
-    out.push_back({r, {}});
-  }
-  return out;
-}
 
 TEST(L1Oracle, MetamorphicOnRandomSlopedLayouts) {
   const unsigned base = 9100;
@@ -541,7 +527,7 @@ TEST(L1Oracle, MetamorphicOnRandomSlopedLayouts) {
     std::mt19937 rng(seed);
     auto uni = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
     const Box domain{{0, 0}, {uni(6, 16), uni(6, 16)}};
-    const std::vector<Polygon> in = random_sloped(rng, domain);
+    const std::vector<Polygon> in = taut::test::random_triangles(rng, domain, 5);
     const auto nr = taut::geom::normalize_obstacles(in, domain);
     if (nr.stats.rounded != 0) continue;  // keep scaling exact: integer crossings only
     const L1Reference ref(nr.domain, nr.obstacles);

@@ -41,6 +41,7 @@
 // same length: the distances are equal, exactly (both are sums of 1 and sqrt(2), compared as
 // Root2).
 #include "oracle/oct_oracle.h"
+#include "support/random_shapes.h"
 
 #include <gtest/gtest.h>
 
@@ -664,15 +665,7 @@ TEST(OctOracle, MetamorphicOnSlopedTriangles) {
     std::mt19937 rng(seed);
     auto uni = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
     const Box domain{{0, 0}, {uni(6, 14), uni(6, 14)}};
-    std::vector<Polygon> in;
-    for (int k = uni(1, 4); k > 0; --k) {
-      Ring r;
-      for (int v = 0; v < 3; ++v) r.push_back({uni(0, domain.hi.x), uni(0, domain.hi.y)});
-      const auto a = taut::geom::twice_area(r);
-      if (a == 0) continue;
-      if (a < 0) std::swap(r[1], r[2]);
-      in.push_back({r, {}});
-    }
+    const std::vector<Polygon> in = taut::test::random_triangles(rng, domain, 4);
     // (Vertices rounded by normalization are integers too: the mirrored scene stays exact.)
     const auto nr = taut::geom::normalize_obstacles(in, domain);
     const OctilinearReference ref(nr.domain, nr.obstacles);
