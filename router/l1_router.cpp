@@ -22,16 +22,22 @@ geom::Box ring_box(const geom::Ring& r) {
 
 L1Router::L1Router(const geom::Box& domain, std::span<const geom::Polygon> obstacles)
     : wavefront_(domain, obstacles), staircase_(domain, obstacles) {
+  auto add = [&](const geom::Ring& r) {
+    for (const Point v : r) {
+      xs_.push_back(v.x);
+      ys_.push_back(v.y);
+    }
+  };
   for (const geom::Polygon& p : obstacles) {
-    by_y_.insert(by_y_.end(), p.outer.begin(), p.outer.end());
-    for (const geom::Ring& h : p.holes) by_y_.insert(by_y_.end(), h.begin(), h.end());
+    add(p.outer);
+    for (const geom::Ring& h : p.holes) add(h);
   }
-  std::sort(by_y_.begin(), by_y_.end(), [](Point a, Point b) { return a.y != b.y ? a.y < b.y : a.x < b.x; });
-  by_y_.erase(std::unique(by_y_.begin(), by_y_.end()), by_y_.end());
-  by_x_ = by_y_;
+  for (auto* v : {&xs_, &ys_}) {
+    std::sort(v->begin(), v->end());
+    v->erase(std::unique(v->begin(), v->end()), v->end());
+  }
   obstacles_.assign(obstacles.begin(), obstacles.end());
   for (const geom::Polygon& p : obstacles_) obstacle_boxes_.push_back(ring_box(p.outer));
-  std::sort(by_x_.begin(), by_x_.end());  // Point orders by (x, y)
 }
 
 L1Wire L1Router::shortest(geom::Point from, geom::Point to) {
@@ -203,16 +209,14 @@ std::vector<Point> L1Router::pin_candidates(const geom::Polygon& pin, const geom
     const i64 ylo = std::min(a.y, b.y), yhi = std::max(a.y, b.y);
     const i64 xlo = std::min(a.x, b.x), xhi = std::max(a.x, b.x);
     if (dy != 0) {  // horizontal projections: one per row of obstacle vertices in the edge's range
-      auto it = std::lower_bound(by_y_.begin(), by_y_.end(), ylo, [](Point p, i64 y) { return p.y < y; });
-      for (; it != by_y_.end() && it->y <= yhi; ++it)
-        if (it == by_y_.begin() || std::prev(it)->y != it->y) out.push_back(at_y(it->y));
+      for (auto it = std::lower_bound(ys_.begin(), ys_.end(), ylo); it != ys_.end() && *it <= yhi; ++it)
+        out.push_back(at_y(*it));
       for (const Point o : others)
         if (o.y >= ylo && o.y <= yhi) out.push_back(at_y(o.y));
     }
     if (dx != 0) {  // vertical projections: one per column
-      auto it = std::lower_bound(by_x_.begin(), by_x_.end(), xlo, [](Point p, i64 x) { return p.x < x; });
-      for (; it != by_x_.end() && it->x <= xhi; ++it)
-        if (it == by_x_.begin() || std::prev(it)->x != it->x) out.push_back(at_x(it->x));
+      for (auto it = std::lower_bound(xs_.begin(), xs_.end(), xlo); it != xs_.end() && *it <= xhi; ++it)
+        out.push_back(at_x(*it));
       for (const Point o : others)
         if (o.x >= xlo && o.x <= xhi) out.push_back(at_x(o.x));
     }

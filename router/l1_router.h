@@ -82,7 +82,7 @@ class L1Router {
   L1Wire finish(std::optional<std::size_t> target);
 
   L1Wavefront wavefront_;
-  std::vector<geom::Point> by_y_, by_x_;  // every obstacle vertex, sorted by (y, x) and (x, y)
+  std::vector<geom::Coord> xs_, ys_;  // the distinct x and y of obstacle vertices, ascending
   std::vector<geom::Polygon> obstacles_;
   std::vector<geom::Box> obstacle_boxes_;
   StaircaseBuilder staircase_;
