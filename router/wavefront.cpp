@@ -46,19 +46,45 @@ struct T3 {
 // Direction frames: the wave moves "north-east" in local coordinates (u, v) = M (X, Y) of the
 // sheared plane, M an integer matrix with determinant +-1 (so lattice points stay lattice
 // points and lines stay lines); the local axes u (east) and v (north) are the frame's two track
-// directions. L1: M = diag(sx, sy), one frame per quadrant (NE, NW, SW, SE). A fixed-orientation
-// metric would add frames whose axes are two neighbouring orientations (E and NE, ...).
+// directions. L1 (frames 0-3): M = diag(sx, sy), one frame per quadrant (NE, NW, SW, SE), level
+// u + v. Octilinear (frames 4-11): one frame per cone between two neighbouring orientations, its
+// local east the axis direction and its local north the diagonal, level u + sqrt2 v (a distance
+// t*east + s*north, t, s >= 0, has octilinear length t + sqrt2 s).
 struct Frame {
   i64 a, b, c, d;          // u = a*X + b*Y, v = c*X + d*Y
   i64 ia, ib, ic, id;      // the inverse: X = ia*u + ib*v, Y = ic*u + id*v
   int sigma;               // det M: +1 keeps orientation, -1 mirrors it
 };
-constexpr Frame kFrames[4] = {
-    {1, 0, 0, 1, 1, 0, 0, 1, 1},      // NE
-    {-1, 0, 0, 1, -1, 0, 0, 1, -1},   // NW
-    {-1, 0, 0, -1, -1, 0, 0, -1, 1},  // SW
-    {1, 0, 0, -1, 1, 0, 0, -1, -1},   // SE
+constexpr Frame kFrames[12] = {
+    {1, 0, 0, 1, 1, 0, 0, 1, 1},      // L1 NE
+    {-1, 0, 0, 1, -1, 0, 0, 1, -1},   // L1 NW
+    {-1, 0, 0, -1, -1, 0, 0, -1, 1},  // L1 SW
+    {1, 0, 0, -1, 1, 0, 0, -1, -1},   // L1 SE
+    // octilinear, inverse columns (east, north):
+    {1, -1, 0, 1, 1, 1, 0, 1, 1},        // E, NE
+    {-1, 1, 1, 0, 0, 1, 1, 1, -1},       // N, NE
+    {1, 1, -1, 0, 0, -1, 1, 1, 1},       // N, NW
+    {-1, -1, 0, 1, -1, -1, 0, 1, -1},    // W, NW
+    {-1, 1, 0, -1, -1, -1, 0, -1, 1},    // W, SW
+    {1, -1, -1, 0, 0, -1, -1, -1, -1},   // S, SW
+    {-1, -1, 1, 0, 0, 1, -1, -1, 1},     // S, SE
+    {1, 1, 0, -1, 1, 1, 0, -1, -1},      // E, SE
 };
+constexpr bool frames_consistent() {
+  for (const Frame& f : kFrames) {
+    if (f.a * f.ia + f.b * f.ic != 1 || f.a * f.ib + f.b * f.id != 0) return false;
+    if (f.c * f.ia + f.d * f.ic != 0 || f.c * f.ib + f.d * f.id != 1) return false;
+    if (f.a * f.d - f.b * f.c != f.sigma) return false;
+  }
+  // octilinear: local east an axis, local north a diagonal; consecutive cones share an axis
+  for (int d = 4; d < 12; ++d) {
+    const Frame& f = kFrames[d];
+    if ((f.ia == 0) == (f.ic == 0)) return false;   // east = (ia, ic) has one zero
+    if (f.ib == 0 || f.id == 0) return false;       // north = (ib, id) has none
+  }
+  return true;
+}
+static_assert(frames_consistent());
 // Range [lo, hi] of a*x + b*y over the box [blo, bhi] (exact in int64: |a|, |b| <= 1 here).
 struct Range {
   i64 lo, hi;
@@ -80,7 +106,69 @@ struct Range {
   const Frame& f = kFrames[d];
   return {f.c * p.x + f.d * p.y, f.c * p.y, f.d * p.x};
 }
-[[gnu::always_inline]] inline T3 level(int d, Point p) { return U(d, p) + V(d, p); }
+
+// A number x + sqrt2*y with x, y in T3, compared one order of e at a time in Z[sqrt2] (exact:
+// geom::Root2::sign_of). Octilinear levels and distances.
+struct R3 {
+  T3 u, v;
+  friend bool operator==(const R3&, const R3&) = default;
+  friend std::strong_ordering operator<=>(const R3& x, const R3& y) {
+    int s = geom::Root2::sign_of(i128{x.u.a} - y.u.a, i128{x.v.a} - y.v.a);
+    if (s == 0) s = geom::Root2::sign_of(i128{x.u.b} - y.u.b, i128{x.v.b} - y.v.b);
+    if (s == 0) s = geom::Root2::sign_of(i128{x.u.c} - y.u.c, i128{x.v.c} - y.v.c);
+    return s <=> 0;
+  }
+  R3 operator+(const R3& o) const { return {u + o.u, v + o.v}; }
+  R3 operator-(const R3& o) const { return {u - o.u, v - o.v}; }
+};
+
+// What differs between the metrics: the frames, the level's type (T3 for L1: u + v; R3 for the
+// octilinear metric: u + sqrt2 v) and its constant term's type (what distances and the k-d
+// tree's bounds are), the track rays cached per vertex (the four axis directions, and the four
+// diagonals for octilinear) and the width of the per-entity wedge bits (6 per frame).
+struct L1Metric {
+  static constexpr int kFirst = 0, kCount = 4, kRaySlots = 4;
+  using Lv = T3;
+  using C = i64;
+  using Bits = uint32_t;
+  [[gnu::always_inline]] static Lv level(int d, Point p) { return U(d, p) + V(d, p); }
+  [[gnu::always_inline]] static C constant(const Lv& l) { return l.a; }
+  [[gnu::always_inline]] static C combine(i64 u, i64 v) { return u + v; }
+};
+struct OctMetric {
+  static constexpr int kFirst = 4, kCount = 8, kRaySlots = 8;
+  using Lv = R3;
+  using C = geom::Root2;
+  using Bits = uint64_t;
+  [[gnu::always_inline]] static Lv level(int d, Point p) { return {U(d, p), V(d, p)}; }
+  [[gnu::always_inline]] static C constant(const Lv& l) { return {l.u.a, l.v.a}; }
+  [[gnu::always_inline]] static C combine(i64 u, i64 v) { return {u, v}; }
+};
+// f(std::integral_constant<int, d>) for the runtime frame d of metric M: lets the k-d search be
+// instantiated per frame, so each frame's matrix folds into its arithmetic.
+template <class M, class F>
+[[gnu::always_inline]] inline decltype(auto) with_frame(int d, F&& f) {
+  using std::integral_constant;
+  if constexpr (M::kCount == 4) {
+    switch (d) {
+      case 0: return f(integral_constant<int, 0>{});
+      case 1: return f(integral_constant<int, 1>{});
+      case 2: return f(integral_constant<int, 2>{});
+      default: return f(integral_constant<int, 3>{});
+    }
+  } else {
+    switch (d) {
+      case 4: return f(integral_constant<int, 4>{});
+      case 5: return f(integral_constant<int, 5>{});
+      case 6: return f(integral_constant<int, 6>{});
+      case 7: return f(integral_constant<int, 7>{});
+      case 8: return f(integral_constant<int, 8>{});
+      case 9: return f(integral_constant<int, 9>{});
+      case 10: return f(integral_constant<int, 10>{});
+      default: return f(integral_constant<int, 11>{});
+    }
+  }
+}
 // The world vector (unsheared, exact integers) of the local vector (u, v): M^-1 (u, v).
 inline Point local_int(int d, i64 u, i64 v) {
   const Frame& f = kFrames[d];
@@ -151,9 +239,10 @@ inline bool in_ccw(const Dir& a, const Dir& b, const Dir& x) {
 // ---------------------------------------------------------------------------------------------
 // Static k-d tree over points: the segment-dragging query "smallest diagonal coordinate inside a
 // convex region". Nodes in depth-first order, leaves of up to 16 points.
-struct Region {
+template <class M>
+struct RegionT {
   int d = 0;
-  T3 start;                 // level must be > start
+  typename M::Lv start;     // level must be > start
   int nlex = 0;             // lexicographic half-planes on U or V
   struct Lex {
     bool on_u;              // U(q) vs value, else V(q)
@@ -173,7 +262,8 @@ struct Region {
 // is (xn / den, yn / den) with |den| < 2^63 and |xn|, |yn| < 2^94, and the side test
 // a*xn + b*yn - c*den stays below 2^127 in __int128.
 // Used only to bound k-d tree searches (KdTree::query_near()), never to decide a hit.
-inline bool region_hull(const Region& r, const Box& frame, Box& out) {
+template <class M>
+inline bool region_hull(const RegionT<M>& r, const Box& frame, Box& out) {
   struct Line {
     i64 a, b, c;
   };
@@ -215,29 +305,45 @@ inline bool region_hull(const Region& r, const Box& frame, Box& out) {
       slanted[ns++] = {-dy, dx, dx * r.ea[i].y - dy * r.ea[i].x};
     }
   }
+  if constexpr (M::kCount != 4) {
+    // Octilinear: the level line u + sqrt2 v >= start is irrational and is left out (the box is
+    // then only larger, still a bound); the box must reach the start level.
+    if (xlo > xhi || ylo > yhi) return false;
+    const Point blo{static_cast<geom::Coord>(xlo), static_cast<geom::Coord>(ylo)};
+    const Point bhi{static_cast<geom::Coord>(xhi), static_cast<geom::Coord>(yhi)};
+    if (M::combine(u_range(r.d, blo, bhi).hi, v_range(r.d, blo, bhi).hi) < M::constant(r.start))
+      return false;
+  }
   // the level: sx*x + sy*y >= start, with the level's coefficients (L1: sx, sy = +-1)
   const i64 sx = fr.a + fr.c, sy = fr.b + fr.d;
   auto level_ok_box = [&] {
-    const i64 best = (sx > 0 ? xhi : -xlo) + (sy > 0 ? yhi : -ylo);
-    return best >= r.start.a;
+    if constexpr (M::kCount != 4) {
+      return true;
+    } else {
+      const i64 best = (sx > 0 ? xhi : -xlo) + (sy > 0 ? yhi : -ylo);
+      return best >= M::constant(r.start);
+    }
   };
   if (xlo > xhi || ylo > yhi || !level_ok_box()) return false;
   if (ns == 0) {
-    // tighten by the level: local u >= start - vmax, v >= start - umax
-    const i64 umax = sx > 0 ? xhi : -xlo, vmax = sy > 0 ? yhi : -ylo;
-    if (sx > 0) xlo = std::max(xlo, r.start.a - vmax); else xhi = std::min(xhi, vmax - r.start.a);
-    if (sy > 0) ylo = std::max(ylo, r.start.a - umax); else yhi = std::min(yhi, umax - r.start.a);
+    if constexpr (M::kCount == 4) {
+      // tighten by the level: local u >= start - vmax, v >= start - umax
+      const i64 st = M::constant(r.start);
+      const i64 umax = sx > 0 ? xhi : -xlo, vmax = sy > 0 ? yhi : -ylo;
+      if (sx > 0) xlo = std::max(xlo, st - vmax); else xhi = std::min(xhi, vmax - st);
+      if (sy > 0) ylo = std::max(ylo, st - umax); else yhi = std::min(yhi, umax - st);
+    }
     out = Box{{static_cast<geom::Coord>(xlo), static_cast<geom::Coord>(ylo)},
               {static_cast<geom::Coord>(xhi), static_cast<geom::Coord>(yhi)}};
     return true;
   }
-  std::array<Line, 13> lines;
+  std::array<Line, 13> lines;  // (the level line: L1 only)
   int nl = 0;
   lines[nl++] = {0, -1, -ylo};  // y >= ylo
   lines[nl++] = {1, 0, xhi};    // x <= xhi
   lines[nl++] = {0, 1, yhi};    // y <= yhi
   lines[nl++] = {-1, 0, -xlo};  // x >= xlo
-  lines[nl++] = {-sx, -sy, -r.start.a};
+  if constexpr (M::kCount == 4) lines[nl++] = {-sx, -sy, -M::constant(r.start)};
   for (int i = 0; i < ns; ++i) lines[nl++] = slanted[i];
   struct V {
     uint8_t in, out;  // lines before and after the vertex (counter-clockwise)
@@ -295,9 +401,9 @@ inline bool region_hull(const Region& r, const Box& frame, Box& out) {
 
 // D == r.d: the frame as a template argument, so its matrix folds into the arithmetic (the k-d
 // search below is instantiated per frame).
-template <int D>
-inline bool satisfies(const Region& r, Point q) {
-  if (!(level(D, q) > r.start)) return false;
+template <class M, int D>
+inline bool satisfies(const RegionT<M>& r, Point q) {
+  if (!(M::level(D, q) > r.start)) return false;
   for (int i = 0; i < r.nlex; ++i) {
     const auto& l = r.lex[i];
     const T3 v = l.on_u ? U(D, q) : V(D, q);
@@ -308,7 +414,12 @@ inline bool satisfies(const Region& r, Point q) {
   return true;
 }
 
+template <class M>
 class KdTree {
+  using Lv = typename M::Lv;
+  using C = typename M::C;
+  using Region = RegionT<M>;
+
  public:
   KdTree() = default;
   // `id_bound` > every item id: the tree then records each item's leaf (query_near()).
@@ -336,39 +447,35 @@ class KdTree {
   // (outside_bound()). A wavelet's region mostly ends a few neighbours away from its apex, so
   // this visits the few nodes around the answer instead of a path from the root and the
   // bounding tests on both sides of it (measured in bench_wavefront: stats().drag_nodes).
-  bool query_near(uint32_t leaf, const Region& r, uint32_t& best_id, T3& best_level,
+  bool query_near(uint32_t leaf, const Region& r, uint32_t& best_id, Lv& best_level,
                   std::int64_t& nodes) const {
-    switch (r.d) {
-      case 0: return query_near_t<0>(leaf, r, best_id, best_level, nodes);
-      case 1: return query_near_t<1>(leaf, r, best_id, best_level, nodes);
-      case 2: return query_near_t<2>(leaf, r, best_id, best_level, nodes);
-      default: return query_near_t<3>(leaf, r, best_id, best_level, nodes);
-    }
+    return with_frame<M>(r.d, [&](auto dc) {
+      return query_near_t<decltype(dc)::value>(leaf, r, best_id, best_level, nodes);
+    });
   }
 
   // The id of the satisfying point with the smallest level (false = none); `nodes` counts the
   // nodes visited.
-  bool query(const Region& r, uint32_t& best_id, T3& best_level, std::int64_t& nodes) const {
+  bool query(const Region& r, uint32_t& best_id, Lv& best_level, std::int64_t& nodes) const {
     if (items_.empty()) return false;
     bool found = false;
-    switch (r.d) {
-      case 0: visit<0>(0, r, found, best_id, best_level, nodes); break;
-      case 1: visit<1>(0, r, found, best_id, best_level, nodes); break;
-      case 2: visit<2>(0, r, found, best_id, best_level, nodes); break;
-      default: visit<3>(0, r, found, best_id, best_level, nodes); break;
-    }
+    with_frame<M>(r.d, [&](auto dc) {
+      visit<decltype(dc)::value>(0, r, found, best_id, best_level, nodes);
+    });
     return found;
   }
 
  private:
   template <int D>
-  bool query_near_t(uint32_t leaf, const Region& r, uint32_t& best_id, T3& best_level,
+  bool query_near_t(uint32_t leaf, const Region& r, uint32_t& best_id, Lv& best_level,
                     std::int64_t& nodes) const {
     bool found = false;
     visit<D>(leaf, r, found, best_id, best_level, nodes);
     for (uint32_t cur = leaf; cur != 0;) {
-      const i64 outside = outside_bound<D>(nodes_[cur], r);
-      if (outside == kNoPoint || (found && outside > best_level.a)) break;
+      C outside;
+      if (!outside_bound<D>(nodes_[cur], r, outside) ||
+          (found && outside > M::constant(best_level)))
+        break;
       const uint32_t par = nodes_[cur].parent;
       const uint32_t sib = nodes_[par].left == cur ? nodes_[par].right : nodes_[par].left;
       visit<D>(sib, r, found, best_id, best_level, nodes);
@@ -383,29 +490,41 @@ class KdTree {
     uint32_t left = kNone, right = kNone;
     uint32_t parent = kNone;
   };
-  static constexpr i64 kNoPoint = std::numeric_limits<i64>::max();
-  // A lower bound of the level's constant term over the points of region r that lie outside
-  // node n's box, or kNoPoint when there can be none. Such a point lies in the region's hull
+  // A lower bound (`bound`) of the level's constant term over the points of region r that lie
+  // outside node n's box; false when there can be none. Such a point lies in the region's hull
   // box (region_hull()) and strictly beyond the node's box on some side (the splits leave no
   // coordinate value on both sides), i.e. in one of four boxes; over each the level is at least
-  // start and at least its minimum over that box. Stop edges only shrink the region, so the
-  // bound is conservative.
+  // start and at least its minimum over that box (L1: exact; octilinear: min u + sqrt2 min v).
+  // Stop edges only shrink the region, so the bound is conservative.
   template <int D>
-  static i64 outside_bound(const Node& n, const Region& r) {
+  static bool outside_bound(const Node& n, const Region& r, C& bound) {
     constexpr Frame f = kFrames[D];
-    const i64 la = f.a + f.c, lb = f.b + f.d;  // level = la*x + lb*y (constant term)
     const Box& h = r.hull;
-    i64 bound = kNoPoint;
+    bool any = false;
+    const C st = M::constant(r.start);
     auto side = [&](i64 xlo, i64 ylo, i64 xhi, i64 yhi) {
       if (xlo > xhi || ylo > yhi) return;
-      const i64 x0 = la * xlo, x1 = la * xhi, y0 = lb * ylo, y1 = lb * yhi;
-      bound = std::min(bound, std::max(r.start.a, std::min(x0, x1) + std::min(y0, y1)));
+      C b;
+      if constexpr (M::kCount == 4) {
+        const i64 la = f.a + f.c, lb = f.b + f.d;  // level = la*x + lb*y (constant term)
+        const i64 x0 = la * xlo, x1 = la * xhi, y0 = lb * ylo, y1 = lb * yhi;
+        b = std::min(x0, x1) + std::min(y0, y1);
+      } else {
+        const Range ur = linear_range(f.a, f.b, {static_cast<geom::Coord>(xlo), static_cast<geom::Coord>(ylo)},
+                                      {static_cast<geom::Coord>(xhi), static_cast<geom::Coord>(yhi)});
+        const Range vr = linear_range(f.c, f.d, {static_cast<geom::Coord>(xlo), static_cast<geom::Coord>(ylo)},
+                                      {static_cast<geom::Coord>(xhi), static_cast<geom::Coord>(yhi)});
+        b = M::combine(ur.lo, vr.lo);
+      }
+      b = std::max(b, st);
+      bound = any ? std::min(bound, b) : b;
+      any = true;
     };
     side(h.lo.x, h.lo.y, i64{n.lo.x} - 1, h.hi.y);  // left of the box
     side(i64{n.hi.x} + 1, h.lo.y, h.hi.x, h.hi.y);  // right
     side(h.lo.x, h.lo.y, h.hi.x, i64{n.lo.y} - 1);  // below
     side(h.lo.x, i64{n.hi.y} + 1, h.hi.x, h.hi.y);  // above
-    return bound;
+    return any;
   }
   uint32_t build(uint32_t begin, uint32_t end, uint32_t parent) {
     const uint32_t id = static_cast<uint32_t>(nodes_.size());
@@ -455,7 +574,7 @@ class KdTree {
   // Lower bound of the level's constant term over the part of the box the region's lower
   // bounds on U, V and the level leave (a box left of a vertical track counts from the track).
   template <int D>
-  static i64 box_min_level(const Node& n, const Region& r) {
+  static C box_min_level(const Node& n, const Region& r) {
     i64 umin = u_range(D, n.lo, n.hi).lo;
     i64 vmin = v_range(D, n.lo, n.hi).lo;
     for (int i = 0; i < r.nlex; ++i) {
@@ -464,7 +583,7 @@ class KdTree {
       i64& m = l.on_u ? umin : vmin;
       m = std::max(m, l.value.a);
     }
-    return std::max(umin + vmin, r.start.a);
+    return std::max(M::combine(umin, vmin), M::constant(r.start));
   }
   template <int D>
   static bool box_may_satisfy(const Node& n, const Region& r) {
@@ -472,7 +591,7 @@ class KdTree {
       return false;
     const Range ur = u_range(D, n.lo, n.hi), vr = v_range(D, n.lo, n.hi);
     const i64 umax = ur.hi, umin = ur.lo, vmax = vr.hi, vmin = vr.lo;
-    if (umax + vmax < r.start.a) return false;
+    if (M::combine(umax, vmax) < M::constant(r.start)) return false;
     for (int i = 0; i < r.nlex; ++i) {
       const auto& l = r.lex[i];
       const i64 mx = l.on_u ? umax : vmax;
@@ -489,26 +608,26 @@ class KdTree {
     return true;
   }
   template <int D>
-  void visit(uint32_t id, const Region& r, bool& found, uint32_t& best_id, T3& best,
+  void visit(uint32_t id, const Region& r, bool& found, uint32_t& best_id, Lv& best,
              std::int64_t& nodes) const {
     ++nodes;
     const Node& n = nodes_[id];
-    if (found && box_min_level<D>(n, r) > best.a) return;
+    if (found && box_min_level<D>(n, r) > M::constant(best)) return;
     if (!box_may_satisfy<D>(n, r)) return;
     if (n.left == kNone) {
       for (uint32_t i = n.begin; i < n.end; ++i) {
         const Point q = items_[i].first;
-        const T3 lv = level(D, q);
+        const Lv lv = M::level(D, q);
         if (found && !(lv < best)) continue;
-        if (!satisfies<D>(r, q)) continue;
+        if (!satisfies<M, D>(r, q)) continue;
         found = true;
         best = lv;
         best_id = items_[i].second;
       }
       return;
     }
-    const i64 bl = box_min_level<D>(nodes_[n.left], r);
-    const i64 br = box_min_level<D>(nodes_[n.right], r);
+    const C bl = box_min_level<D>(nodes_[n.left], r);
+    const C br = box_min_level<D>(nodes_[n.right], r);
     if (bl <= br) {
       visit<D>(n.left, r, found, best_id, best, nodes);
       visit<D>(n.right, r, found, best_id, best, nodes);
@@ -536,8 +655,9 @@ struct Bound {
 };
 enum : uint8_t { kV = 0, kH = 1, kO = 2 };
 
-struct Wave {
-  T3 key;
+template <class M>
+struct WaveT {
+  typename M::Lv key;
   uint64_t seq = 0;
   uint32_t root = kNone;   // entity
   uint32_t start = kNone;  // point: the region lies beyond its level
@@ -546,26 +666,33 @@ struct Wave {
   uint8_t event_is_target = 0;
   Bound left, right;       // left: upper-left track (region on its right); right: lower-right
 };
+template <class M>
 struct WaveLater {
-  bool operator()(const Wave& a, const Wave& b) const {
+  bool operator()(const WaveT<M>& a, const WaveT<M>& b) const {
     if (a.key != b.key) return a.key > b.key;
     return a.seq > b.seq;
   }
 };
 
-struct Entity {
+template <class M>
+struct EntityT {
   uint32_t point = kNone;
   uint32_t lo = kNone, hi = kNone;  // world ring neighbours: free wedge ccw from dir(lo) to dir(hi)
   bool full = false;                // every direction free (lo/hi unused)
   bool labelled = false;
-  T3 d;
+  typename M::Lv d;
   uint32_t parent = kNone;  // entity
   uint32_t source = kNone;  // index into run's sources
 };
 
-}  // namespace
+template <class M>
+struct WaveCore {
+  using Lv = typename M::Lv;
+  using Wave = WaveT<M>;
+  using Entity = EntityT<M>;
+  using Region = RegionT<M>;
+  [[gnu::always_inline]] static Lv level(int d, Point p) { return M::level(d, p); }
 
-struct L1Wavefront::Impl {
   Box domain;
   std::vector<Polygon> polys;  // obstacles after merging the domain frame
   std::vector<Box> poly_boxes;
@@ -582,9 +709,9 @@ struct L1Wavefront::Impl {
   }
   std::vector<uint32_t> ent_begin;                  // per vertex point: entities [begin, begin+1..)
   std::vector<Entity> ents;                         // vertex entities [0, nvent), run-time after
-  std::vector<uint32_t> ent_bits;                   // per entity: compute_wedge_bits()
+  std::vector<typename M::Bits> ent_bits;           // per entity: compute_wedge_bits()
   uint32_t nvent = 0;
-  KdTree vertex_tree;
+  KdTree<M> vertex_tree;
   // Track-ray answers per vertex point and world direction (N, S, E, W): the edge id hit, or
   // kNone (sweep_rays()). Query points shoot on the R-tree instead (shoot_uncached()).
   std::vector<uint32_t> ray_cache;
@@ -593,11 +720,11 @@ struct L1Wavefront::Impl {
 
   // run state
   std::vector<uint32_t> touched;  // vertex entities this run labelled or gave a source (reset)
-  KdTree target_tree;
+  KdTree<M> target_tree;
   std::vector<std::vector<uint32_t>> target_ents;  // per target: its entities
   std::vector<Point> target_pts;
   std::vector<uint32_t> point_target_entity;  // run-time point -> entity
-  std::priority_queue<Wave, std::vector<Wave>, WaveLater> queue;
+  std::priority_queue<Wave, std::vector<Wave>, WaveLater<M>> queue;
   uint64_t seq = 0;
   WavefrontStats stats;
 
@@ -622,7 +749,7 @@ struct L1Wavefront::Impl {
     return (uint64_t{static_cast<uint32_t>(p.x)} << 32) | static_cast<uint32_t>(p.y);
   }
 
-  Impl(const Box& dom, std::span<const Polygon> obstacles) : domain(dom) {
+  WaveCore(const Box& dom, std::span<const Polygon> obstacles) : domain(dom) {
     merge_frame(obstacles);
     index = std::make_unique<geom::ObstacleIndex>(polys);
     {
@@ -757,10 +884,9 @@ struct L1Wavefront::Impl {
       if (!in_domain(q)) continue;  // the frame's outer ring lies outside the domain: never reached
       items.push_back({q, v});
     }
-    vertex_tree = KdTree(std::move(items), nvert);
-    ray_cache.assign(std::size_t{4} * nvert, kNone);
-    sweep_rays(true);
-    sweep_rays(false);
+    vertex_tree = KdTree<M>(std::move(items), nvert);
+    ray_cache.assign(std::size_t{M::kRaySlots} * nvert, kNone);
+    for (int mode = 0; mode < M::kRaySlots / 2; ++mode) sweep_rays(mode);
   }
 
   // Track rays of every vertex point at once, by two plane sweeps (O(n log n) in all, against
@@ -774,13 +900,24 @@ struct L1Wavefront::Impl {
   // the order of an orientation test at the later left end. Edges ending at q are removed
   // before the lookup and edges starting at q inserted after it, so edges through q (its own)
   // are never the answer, as in shoot_uncached().
-  void sweep_rays(bool vertical) {
+  // Diagonal rays (octilinear) use the same sweep on points mapped by a unimodular T that makes
+  // the diagonal vertical: (x - y, y) for NE/SW, (x + y, y) for NW/SE. A diagonal track is a line
+  // U = const of a frame whose u is -+(X - Y) (or -+(X + Y)), and the sign of U(q) - U(p) is
+  // lexicographic (x - y, y) (or (x + y, y)), the sheared order of the mapped points; T keeps
+  // orientations and incidences, so the sweep's argument holds verbatim.
+  // mode: 0 vertical (slots N, S), 1 horizontal (E, W), 2 NE/SW diagonal, 3 NW/SE diagonal.
+  void sweep_rays(int mode) {
     struct MP {
       i64 x, y;
     };
     auto mp = [&](uint32_t v) {
       const Point p = pts[v];
-      return vertical ? MP{p.x, p.y} : MP{p.y, p.x};
+      switch (mode) {
+        case 0: return MP{p.x, p.y};
+        case 1: return MP{p.y, p.x};
+        case 2: return MP{i64{p.x} - p.y, p.y};
+        default: return MP{i64{p.x} + p.y, p.y};
+      }
     };
     auto lex_less = [](MP a, MP b) { return a.x < b.x || (a.x == b.x && a.y < b.y); };
     auto orient = [](MP a, MP b, MP c) {
@@ -834,16 +971,16 @@ struct L1Wavefront::Impl {
       }
     };
     std::set<uint32_t, Below> active(Below{&lr, &mp, lex_less, orient});
-    std::vector<std::set<uint32_t, Below>::iterator> where(m, active.end());
+    std::vector<typename std::set<uint32_t, Below>::iterator> where(m, active.end());
     std::vector<uint32_t> order(nvert);
     for (uint32_t v = 0; v < nvert; ++v) order[v] = v;
     std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return lex_less(mp(a), mp(b)); });
-    const std::size_t up = vertical ? 0 : 2, down = up + 1;  // ray_cache slots (see shoot())
+    const std::size_t up = 2 * static_cast<std::size_t>(mode), down = up + 1;  // slots (shoot())
     for (const uint32_t q : order) {
       for (uint32_t i = ends[q]; i < ends[q + 1]; ++i) active.erase(where[end_list[i]]);
       auto it = active.lower_bound(Key{mp(q)});
-      ray_cache[std::size_t{4} * q + up] = it == active.end() ? kNone : *it;
-      ray_cache[std::size_t{4} * q + down] = it == active.begin() ? kNone : *std::prev(it);
+      ray_cache[std::size_t{M::kRaySlots} * q + up] = it == active.end() ? kNone : *it;
+      ray_cache[std::size_t{M::kRaySlots} * q + down] = it == active.begin() ? kNone : *std::prev(it);
       for (uint32_t i = starts[q]; i < starts[q + 1]; ++i)
         where[start_list[i]] = active.insert(start_list[i]).first;
     }
@@ -890,10 +1027,10 @@ struct L1Wavefront::Impl {
   // (arcs counter-clockwise in local coordinates). A full entity has no bits.
   enum : uint32_t { kEInWedge = 1, kNInWedge = 2, kL0InQuad = 4, kL1InQuad = 8, kRightByEdge = 16,
                     kLeftByEdge = 32 };
-  uint32_t compute_wedge_bits(const Entity& e) const {
+  typename M::Bits compute_wedge_bits(const Entity& e) const {
     if (e.full) return 0;
-    uint32_t bits = 0;
-    for (int d = 0; d < 4; ++d) {
+    typename M::Bits bits = 0;
+    for (int d = M::kFirst; d < M::kFirst + M::kCount; ++d) {
       const int sigma = kFrames[d].sigma;
       const Dir L0 = sigma > 0 ? lo_dir(e) : hi_dir(e);
       const Dir L1 = sigma > 0 ? hi_dir(e) : lo_dir(e);
@@ -907,13 +1044,36 @@ struct L1Wavefront::Impl {
       if (local_in(L0, L1, N)) b |= kNInWedge;
       if (local_in(E, N, L0)) b |= kL0InQuad;
       if (local_in(E, N, L1)) b |= kL1InQuad;
-      if (local_in(SE, E, L1)) b |= kRightByEdge;
-      if (local_in(N, NW, L0)) b |= kLeftByEdge;
-      bits |= b << (6 * d);
+      if constexpr (M::kCount == 4) {
+        // the front's directions are the lattice directions SE and NW
+        if (local_in(SE, E, L1)) b |= kRightByEdge;
+        if (local_in(N, NW, L0)) b |= kLeftByEdge;
+      } else {
+        // The front u + sqrt2 v = const runs along (sqrt2, -1): L1 lies in the arc from it to E
+        // iff it points below E (v < 0) and ahead of the front (level > 0); L0 in the arc from N
+        // to (-sqrt2, 1) iff u < 0 and level > 0 (open arcs; the sheared edge directions are
+        // never parallel to an axis, a diagonal or the irrational front).
+        const Entity& ee = e;
+        const uint32_t l0 = sigma > 0 ? ee.lo : ee.hi, l1 = sigma > 0 ? ee.hi : ee.lo;
+        auto uv = [&](uint32_t q, T3& u, T3& v) {
+          const i64 dx = i64{pts[q].x} - pts[ee.point].x, dy = i64{pts[q].y} - pts[ee.point].y;
+          const Frame& f = kFrames[d];
+          u = {f.a * dx + f.b * dy, f.a * dy, f.b * dx};
+          v = {f.c * dx + f.d * dy, f.c * dy, f.d * dx};
+        };
+        T3 u, v;
+        uv(l1, u, v);
+        if (v < T3{} && R3{u, v} > R3{}) b |= kRightByEdge;
+        uv(l0, u, v);
+        if (u < T3{} && R3{u, v} > R3{}) b |= kLeftByEdge;
+      }
+      bits |= static_cast<typename M::Bits>(b) << (6 * (d - M::kFirst));
     }
     return bits;
   }
-  uint32_t wedge_bits(uint32_t ent, int d) const { return (ent_bits[ent] >> (6 * d)) & 63u; }
+  uint32_t wedge_bits(uint32_t ent, int d) const {
+    return static_cast<uint32_t>(ent_bits[ent] >> (6 * (d - M::kFirst))) & 63u;
+  }
 
   bool wedge_contains(const Entity& e, const Dir& x) const {
     if (e.full) return true;
@@ -988,26 +1148,35 @@ struct L1Wavefront::Impl {
   // exact axis line, ties (edges through one point of it) by slope, which is the order the
   // sheared ray meets them in (see header).
   bool shoot(int d, bool vertical, uint32_t o, uint32_t& ea, uint32_t& eb) {
-    // The track's world direction: local north (V track) or east (H track). In the L1 frames a
-    // world axis direction (the ones the sweeps answer and shoot_uncached() shoots).
+    // The track's world direction: local north (V track) or east (H track): a world axis
+    // direction, or (octilinear) a diagonal; sweep_rays()' mode and slot for it.
     const Point w = vertical ? local_int(d, 0, 1) : local_int(d, 1, 0);
-    const bool world_vertical = w.x == 0;
-    const int s = world_vertical ? w.y : w.x;  // +1: towards larger world y (x)
-    const uint32_t hit = o < nvert ? ray_cache[std::size_t{4} * o + (world_vertical ? 0 : 2) + (s > 0 ? 0 : 1)]
-                                   : shoot_uncached(s, world_vertical, o);
+    const int mode = w.x == 0 ? 0 : w.y == 0 ? 1 : w.x == w.y ? 2 : 3;
+    const int s = mode == 1 ? w.x : w.y;  // +1: towards larger world y (x for mode 1)
+    const uint32_t hit = o < nvert ? ray_cache[std::size_t{M::kRaySlots} * o + 2 * mode + (s > 0 ? 0 : 1)]
+                                   : shoot_uncached(s, mode, o);
     if (hit == kNone) return false;
     ea = edge_pts[hit].first;
     eb = edge_pts[hit].second;
     return true;
   }
-  uint32_t shoot_uncached(int s, bool vertical, uint32_t o) {
+  uint32_t shoot_uncached(int s, int mode, uint32_t o) {
     ++stats.ray_queries;
     const Point p = pts[o];
-    // Work in coordinates where the ray is along +/- the "t" axis and "w" is the other one.
+    const bool vertical = mode != 1;
+    // Work in coordinates where the ray is along +/- the "t" axis and "w" is the other one
+    // (sweep_rays()' mapped coordinates: diagonals mapped to vertical by a unimodular T).
     auto tc = [&](Point q) -> i64 { return vertical ? q.y : q.x; };
-    auto wc = [&](Point q) -> i64 { return vertical ? q.x : q.y; };
+    auto wc = [&](Point q) -> i64 {
+      switch (mode) {
+        case 0: return q.x;
+        case 1: return q.y;
+        case 2: return i64{q.x} - q.y;
+        default: return i64{q.x} + q.y;
+      }
+    };
     // side of q relative to the sheared line through p: lexicographic (w, t) for vertical
-    // (X = x + e y), (w, t) likewise for horizontal (Y = y + e^2 x).
+    // (X = x + e y), (w, t) likewise for horizontal (Y = y + e^2 x) and the diagonals.
     auto side = [&](Point q) {
       const i64 dw = wc(q) - wc(p);
       if (dw != 0) return dw > 0 ? 1 : -1;
@@ -1022,7 +1191,13 @@ struct L1Wavefront::Impl {
       const i64 t0 = tc(p);
       const i64 t1 = s > 0 ? std::min<i64>(t0 + len, lim_hi) : std::max<i64>(t0 - len, lim_lo);
       Box box;
-      if (vertical)
+      if (mode >= 2) {  // the diagonal segment's box, cut to the frame (no edges outside it)
+        const i64 x1 = mode == 2 ? p.x + (t1 - t0) : p.x - (t1 - t0);
+        const i64 xlo = std::max<i64>(std::min<i64>(p.x, x1), domain.lo.x - 1);
+        const i64 xhi = std::min<i64>(std::max<i64>(p.x, x1), domain.hi.x + 1);
+        box = Box{{static_cast<geom::Coord>(xlo), static_cast<geom::Coord>(std::min(t0, t1))},
+                  {static_cast<geom::Coord>(xhi), static_cast<geom::Coord>(std::max(t0, t1))}};
+      } else if (vertical)
         box = Box{{p.x, static_cast<geom::Coord>(std::min(t0, t1))},
                   {p.x, static_cast<geom::Coord>(std::max(t0, t1))}};
       else
@@ -1129,7 +1304,7 @@ struct L1Wavefront::Impl {
       ++r.nedges;
       return;
     }
-    Region::Lex l;
+    typename Region::Lex l;
     const Point o = pts[b.origin];
     if (b.kind == kV) {
       l.on_u = true;
@@ -1169,7 +1344,7 @@ struct L1Wavefront::Impl {
     const Box frame{{domain.lo.x - 1, domain.lo.y - 1}, {domain.hi.x + 1, domain.hi.y + 1}};
     if (!region_hull(r, frame, r.hull)) return;
     uint32_t vid = kNone, tid = kNone;
-    T3 vl, tl;
+    Lv vl, tl;
     const uint32_t leaf = vertex_tree.leaf_of(w.start);
     const bool hv = leaf != kNone ? vertex_tree.query_near(leaf, r, vid, vl, stats.drag_nodes)
                                   : vertex_tree.query(r, vid, vl, stats.drag_nodes);
@@ -1189,7 +1364,7 @@ struct L1Wavefront::Impl {
     queue.push(w);
   }
 
-  void label(uint32_t ent, const T3& d, uint32_t parent) {
+  void label(uint32_t ent, const Lv& d, uint32_t parent) {
     Entity& e = ents[ent];
     e.labelled = true;
     e.d = d;
@@ -1204,7 +1379,7 @@ struct L1Wavefront::Impl {
   void spawn(uint32_t ent, bool has_cover, const Dir& c0, const Dir& c1) {
     const Entity e = ents[ent];
     const uint32_t p = e.point;
-    for (int d = 0; d < 4; ++d) {
+    for (int d = M::kFirst; d < M::kFirst + M::kCount; ++d) {
       const int sigma = kFrames[d].sigma;
       const Dir E = local_dir(d, 1, 0), N = local_dir(d, 0, 1);
       auto emit = [&](const Dir& a0, const Dir& a1, Bound right, Bound left) {
@@ -1361,14 +1536,14 @@ struct L1Wavefront::Impl {
   }
 
 
-  void run(std::span<const Point> sources, std::span<const Point> targets, L1Wavefront::Stop stop) {
+  void run(std::span<const Point> sources, std::span<const Point> targets, WavefrontStop stop) {
     // reset
     pts.resize(nvert);
     ents.resize(nvent);  // run-time entities go; vertex entities of the last run are reset
     ent_bits.resize(nvent);
     for (const uint32_t e : touched) {
       ents[e].labelled = false;
-      ents[e].d = T3{};
+      ents[e].d = Lv{};
       ents[e].parent = kNone;
       ents[e].source = kNone;
     }
@@ -1400,7 +1575,7 @@ struct L1Wavefront::Impl {
       }
       target_ents.push_back(es);
     }
-    target_tree = KdTree(std::move(titems));
+    target_tree = KdTree<M>(std::move(titems));
     // sources
     for (std::size_t i = 0; i < sources.size(); ++i) {
       std::vector<uint32_t> es;
@@ -1412,7 +1587,7 @@ struct L1Wavefront::Impl {
         if (ents[e].labelled) continue;
         ents[e].source = static_cast<uint32_t>(i);
         if (e < nvent) touched.push_back(e);
-        label(e, T3{}, kNone);
+        label(e, Lv{}, kNone);
       }
     }
     stats.entities = static_cast<std::int64_t>(ents.size());  // with the query points'
@@ -1438,8 +1613,8 @@ struct L1Wavefront::Impl {
       // Labels are final when made (Dijkstra order: a target or vertex is labelled when its
       // event is popped, and later keys are no smaller), so stopping between pops is exact; the
       // first target labelled is a nearest one.
-      if (stop != L1Wavefront::Stop::Never && !targets.empty() && (++check_every & 63) == 0 &&
-          (stop == L1Wavefront::Stop::AllTargets ? all_targets_done() : any_target_done()))
+      if (stop != WavefrontStop::Never && !targets.empty() && (++check_every & 63) == 0 &&
+          (stop == WavefrontStop::AllTargets ? all_targets_done() : any_target_done()))
         break;
       Wave w = queue.top();
       queue.pop();
@@ -1454,6 +1629,58 @@ struct L1Wavefront::Impl {
     return best;
   }
 };
+
+}  // namespace
+
+struct L1Wavefront::Impl : WaveCore<L1Metric> {
+  using WaveCore::WaveCore;
+};
+struct OctWavefront::Impl : WaveCore<OctMetric> {
+  using WaveCore::WaveCore;
+};
+
+namespace {
+// The public classes' queries, shared (Core = WaveCore<M>).
+template <class Core>
+std::vector<Point> path_of(const Core& c, std::size_t i) {
+  std::vector<Point> out;
+  auto e = c.best_target_entity(i);
+  if (!e) return out;
+  for (uint32_t x = *e; x != kNone; x = c.ents[x].parent) {
+    const Point p = c.pts[c.ents[x].point];
+    if (out.empty() || out.back() != p) out.push_back(p);
+  }
+  std::reverse(out.begin(), out.end());
+  return out;
+}
+template <class M, class Core>
+std::optional<typename M::C> vertex_distance_of(const Core& c, Point p) {
+  const uint32_t v = c.point_id(p);
+  if (v == kNone) return std::nullopt;
+  std::optional<typename M::C> best;
+  for (uint32_t e = c.ent_begin[v]; e < c.ent_begin[v + 1]; ++e)
+    if (c.ents[e].labelled) {
+      const typename M::C d = M::constant(c.ents[e].d);
+      if (!best || d < *best) best = d;
+    }
+  return best;
+}
+template <class Core>
+std::size_t memory_of(const Core& m) {
+  std::size_t b = m.pts.capacity() * sizeof(Point) + m.ents.capacity() * sizeof(m.ents[0]) +
+                  m.touched.capacity() * sizeof(uint32_t) +
+                  m.ent_begin.capacity() * sizeof(uint32_t) +
+                  m.ent_bits.capacity() * sizeof(m.ent_bits[0]) +
+                  m.edge_pts.capacity() * sizeof(m.edge_pts[0]) + m.vertex_tree.memory_bytes() +
+                  m.ray_cache.capacity() * sizeof(uint32_t) +
+                  m.point_ids.capacity() * sizeof(m.point_ids[0]);
+  for (const Polygon& p : m.polys) {
+    b += p.outer.capacity() * sizeof(Point);
+    for (const auto& h : p.holes) b += h.capacity() * sizeof(Point);
+  }
+  return b;
+}
+}  // namespace
 
 L1Wavefront::L1Wavefront(const Box& domain, std::span<const Polygon> obstacles)
     : impl_(std::make_unique<Impl>(domain, obstacles)) {}
@@ -1484,44 +1711,49 @@ std::optional<std::size_t> L1Wavefront::target_source(std::size_t i) const {
   return impl_->ents[*e].source;
 }
 
-std::vector<Point> L1Wavefront::target_path(std::size_t i) const {
-  std::vector<Point> out;
-  auto e = impl_->best_target_entity(i);
-  if (!e) return out;
-  for (uint32_t x = *e; x != kNone; x = impl_->ents[x].parent) {
-    const Point p = impl_->pts[impl_->ents[x].point];
-    if (out.empty() || out.back() != p) out.push_back(p);
-  }
-  std::reverse(out.begin(), out.end());
-  return out;
-}
+std::vector<Point> L1Wavefront::target_path(std::size_t i) const { return path_of(*impl_, i); }
 
 std::optional<std::int64_t> L1Wavefront::vertex_distance(Point p) const {
-  const uint32_t v = impl_->point_id(p);
-  if (v == kNone) return std::nullopt;
-  std::optional<std::int64_t> best;
-  for (uint32_t e = impl_->ent_begin[v]; e < impl_->ent_begin[v + 1]; ++e)
-    if (impl_->ents[e].labelled && (!best || impl_->ents[e].d.a < *best))
-      best = impl_->ents[e].d.a;
-  return best;
+  return vertex_distance_of<L1Metric>(*impl_, p);
 }
 
 const WavefrontStats& L1Wavefront::stats() const { return impl_->stats; }
 
-std::size_t L1Wavefront::memory_bytes() const {
-  const Impl& m = *impl_;
-  std::size_t b = m.pts.capacity() * sizeof(Point) + m.ents.capacity() * sizeof(Entity) +
-                  m.touched.capacity() * sizeof(uint32_t) +
-                  m.ent_begin.capacity() * sizeof(uint32_t) +
-                  m.edge_pts.capacity() * sizeof(m.edge_pts[0]) + m.vertex_tree.memory_bytes() +
-                  m.ray_cache.capacity() * sizeof(uint32_t) +
-                  m.point_ids.capacity() * sizeof(m.point_ids[0]);
-  for (const Polygon& p : m.polys) {
-    b += p.outer.capacity() * sizeof(Point);
-    for (const auto& h : p.holes) b += h.capacity() * sizeof(Point);
-  }
-  return b;
+std::size_t L1Wavefront::memory_bytes() const { return memory_of(*impl_); }
+
+OctWavefront::OctWavefront(const Box& domain, std::span<const Polygon> obstacles)
+    : impl_(std::make_unique<Impl>(domain, obstacles)) {}
+OctWavefront::~OctWavefront() = default;
+OctWavefront::OctWavefront(OctWavefront&&) noexcept = default;
+OctWavefront& OctWavefront::operator=(OctWavefront&&) noexcept = default;
+
+bool OctWavefront::is_free(Point p) const { return impl_->is_free(p); }
+
+void OctWavefront::run(std::span<const Point> sources, std::span<const Point> targets, Stop stop) {
+  impl_->run(sources, targets, stop);
 }
+
+std::optional<geom::Root2> OctWavefront::target_distance(std::size_t i) const {
+  auto e = impl_->best_target_entity(i);
+  if (!e) return std::nullopt;
+  return OctMetric::constant(impl_->ents[*e].d);
+}
+
+std::optional<std::size_t> OctWavefront::target_source(std::size_t i) const {
+  auto e = impl_->best_target_entity(i);
+  if (!e) return std::nullopt;
+  return impl_->ents[*e].source;
+}
+
+std::vector<Point> OctWavefront::target_path(std::size_t i) const { return path_of(*impl_, i); }
+
+std::optional<geom::Root2> OctWavefront::vertex_distance(Point p) const {
+  return vertex_distance_of<OctMetric>(*impl_, p);
+}
+
+const WavefrontStats& OctWavefront::stats() const { return impl_->stats; }
+
+std::size_t OctWavefront::memory_bytes() const { return memory_of(*impl_); }
 
 std::optional<std::int64_t> l1_distance(const Box& domain, std::span<const Polygon> obstacles,
                                         Point s, Point t) {

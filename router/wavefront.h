@@ -75,9 +75,15 @@
 #include <span>
 #include <vector>
 
+#include "geom/root2.h"
 #include "geom/types.h"
 
 namespace taut::router {
+
+// When a run may stop: once every free target is reached, once the first one is (a nearest
+// target to the sources: compare target_distance() over the reached targets; others may be
+// reached too, never nearer), or never (the whole distance field).
+enum class WavefrontStop { AllTargets, FirstTarget, Never };
 
 struct WavefrontStats {
   std::int64_t vertices = 0;      // distinct obstacle vertex points (frame included)
@@ -111,10 +117,8 @@ class L1Wavefront {
   // targets that are not free are ignored (unreachable). A new run forgets the previous one.
   void run(std::span<const geom::Point> sources, std::span<const geom::Point> targets,
            bool stop_early = true);
-  // When a run may stop: once every free target is reached (as stop_early = true), once the
-  // first one is (a nearest target to the sources: compare target_distance() over the reached
-  // targets; others may be reached too, never nearer), or never (the whole distance field).
-  enum class Stop { AllTargets, FirstTarget, Never };
+  // stop_early = true is Stop::AllTargets, false is Stop::Never.
+  using Stop = WavefrontStop;
   void run(std::span<const geom::Point> sources, std::span<const geom::Point> targets, Stop stop);
 
   // After run(): exact L1 distance of target i to the nearest source; nullopt = unreachable.
@@ -131,6 +135,46 @@ class L1Wavefront {
   const WavefrontStats& stats() const;
   // Bytes held by its own arrays (points, entities, k-d tree, ray answers, ...); the R-tree of
   // obstacle edges and the queue are not counted (bench_wavefront measures those by heap use).
+  std::size_t memory_bytes() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// The same continuous Dijkstra in the OCTILINEAR metric (Mitchell §6, Theorem 3: fixed
+// orientations 0, 45, 90 and 135 degrees): the length of a vector (dx, dy) is
+// d8 = max(|dx|, |dy|) + (sqrt2 - 1) min(|dx|, |dy|), the length of the shortest path from 0 to
+// (dx, dy) that uses only the four orientations, so distances are the least lengths of
+// octilinear paths among the obstacles. They are exact numbers a + b*sqrt2 (geom/root2.h).
+//
+// How it differs from L1Wavefront: eight frames instead of four, one per cone between two
+// neighbouring orientations (E..NE, NE..N, ...). A frame's local axes are its cone's two
+// orientations, its local east an axis direction (weight 1) and its local north a diagonal
+// (weight sqrt2), as the integer unimodular map (u, v) = M (x, y), e.g. u = x - y, v = y for
+// the cone E..NE; a wavelet is a segment of the line u + sqrt2 v = const (an edge of the unit
+// octagon) dragged across its cone, with track rays along the two orientations (diagonal rays
+// included). Levels and distances are pairs of the sheared T3 numbers compared in Z[sqrt2] one
+// order of the shear at a time; everything else (events, wedges, pinches, the degeneracy rule,
+// free space) is as in L1Wavefront. target_path() is the polygonal path (bends at obstacle
+// vertices, links of any direction, each measured by d8); router/staircase.h turns it into an
+// octilinear wire.
+class OctWavefront {
+ public:
+  OctWavefront(const geom::Box& domain, std::span<const geom::Polygon> obstacles);
+  ~OctWavefront();
+  OctWavefront(OctWavefront&&) noexcept;
+  OctWavefront& operator=(OctWavefront&&) noexcept;
+
+  bool is_free(geom::Point p) const;
+  using Stop = WavefrontStop;
+  void run(std::span<const geom::Point> sources, std::span<const geom::Point> targets,
+           Stop stop = Stop::AllTargets);
+  std::optional<geom::Root2> target_distance(std::size_t i) const;
+  std::optional<std::size_t> target_source(std::size_t i) const;
+  std::vector<geom::Point> target_path(std::size_t i) const;
+  std::optional<geom::Root2> vertex_distance(geom::Point p) const;
+  const WavefrontStats& stats() const;
   std::size_t memory_bytes() const;
 
  private:

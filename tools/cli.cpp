@@ -60,8 +60,8 @@ std::optional<geom::Point> parse_point(const std::string& text) {
 void add_routing_options(CLI::App* sub, RoutingOptions& options) {
   sub->add_option("--metric", options.metric, "l1 (default); combined and link are not available yet");
   sub->add_option("--orientations", options.orientations,
-                  "wire directions; default: orientations of <rules>, else rectilinear (only "
-                  "rectilinear is available yet)");
+                  "wire directions: rectilinear or octilinear; default: orientations of <rules>, "
+                  "else rectilinear (any and c: sets are not available yet)");
   sub->add_option("--bend-cost", options.bend_cost, "C of the combined metric (not available yet)");
 }
 
@@ -77,17 +77,19 @@ bool check_routing_options(const RoutingOptions& options, const io::Layout& layo
                                   "available in this version");
     return false;
   }
-  if (!options.orientations.empty() && options.orientations != "rectilinear") {
+  auto available = [](const std::string& o) { return o == "rectilinear" || o == "octilinear"; };
+  if (!options.orientations.empty() && !available(options.orientations)) {
     print_usage_error("CLI-0021", "--orientations " + options.orientations +
-                                      ": only rectilinear wires are available in this version");
+                                      ": only rectilinear and octilinear wires are available in "
+                                      "this version");
     return false;
   }
-  if (options.orientations.empty() && layout.rules && layout.rules->orientations != "rectilinear") {
+  if (options.orientations.empty() && layout.rules && !available(layout.rules->orientations)) {
     print_diagnostics({Diagnostic{Severity::Error, "CLI-0021", layout.file, layout.rules->line, 0,
                                   "<rules> orientations=\"" + layout.rules->orientations +
-                                      "\": only rectilinear wires are available in this version; "
-                                      "pass --orientations rectilinear to route rectilinear "
-                                      "wires anyway"}});
+                                      "\": only rectilinear and octilinear wires are available "
+                                      "in this version; pass --orientations rectilinear or "
+                                      "--orientations octilinear to route anyway"}});
     return false;
   }
   if (layout.rules && layout.rules->bend_cost > 0)
@@ -97,6 +99,11 @@ bool check_routing_options(const RoutingOptions& options, const io::Layout& layo
                                       "are not weighed against length"}},
                       quiet);
   return true;
+}
+
+std::string routing_orientations(const RoutingOptions& options, const io::Layout& layout) {
+  if (!options.orientations.empty()) return options.orientations;
+  return layout.rules ? layout.rules->orientations : std::string("rectilinear");
 }
 
 std::optional<io::Layout> load_routing_layout(const std::string& path, const LoadOptions& load,

@@ -53,6 +53,10 @@ struct RoutingOptions {
 // warning (it only matters to the combined metric).
 bool check_routing_options(const RoutingOptions& options, const io::Layout& layout, bool quiet);
 
+// The orientations to route in after check_routing_options() accepted them: --orientations,
+// else <rules>, else "rectilinear"; "rectilinear" or "octilinear".
+std::string routing_orientations(const RoutingOptions& options, const io::Layout& layout);
+
 // load_layout(), then check_routing_options(): the layout when routing may start, otherwise
 // nullopt after everything was printed (exit status 2).
 std::optional<io::Layout> load_routing_layout(const std::string& path, const LoadOptions& load,

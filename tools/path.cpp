@@ -1,11 +1,14 @@
-// taut path FILE --from X,Y --to X,Y [--json]: one exact shortest wire among the layout's
-// blockages (L1 length, rectilinear with integer vertices), its cost, length, bends, points.
+// taut path FILE --from X,Y --to X,Y [--orientations rectilinear|octilinear] [--json]: one exact
+// shortest wire among the layout's blockages (rectilinear: L1 length; octilinear: the length
+// a + b*sqrt2 of the shortest path in 0/45/90/135 degrees), with integer vertices; its cost,
+// length, bends, points.
 #include <iostream>
 
 #include <nlohmann/json.hpp>
 
 #include "geom/predicates.h"
 #include "router/l1_router.h"
+#include "router/oct_router.h"
 #include "tools/cli.h"
 #include "tools/commands.h"
 #include "tools/route_common.h"
@@ -43,11 +46,34 @@ void add_path(CLI::App& app, int& status) {
     }
     const geom::Point ends[2] = {*from, *to};
     const geom::NormalizedObstacles norm = routing_obstacles(*layout, ends);
-    router::L1Router router(norm.domain, norm.obstacles);
-    const router::L1Wire w = router.shortest(*from, *to);
+    const bool oct = routing_orientations(args->routing, *layout) == "octilinear";
+    // One wire record for both orientations: the length exactly as a + b*sqrt2 (b = 0 for L1).
+    struct {
+      router::WireStatus status;
+      std::optional<geom::Root2> length;
+      std::vector<geom::Point> polygonal, points;
+    } w;
+    if (oct) {
+      router::OctRouter router(norm.domain, norm.obstacles);
+      router::OctWire o = router.shortest(*from, *to);
+      w = {o.status, o.length, std::move(o.polygonal), std::move(o.points)};
+    } else {
+      router::L1Router router(norm.domain, norm.obstacles);
+      router::L1Wire l = router.shortest(*from, *to);
+      std::optional<geom::Root2> len;
+      if (l.length) len = geom::Root2{*l.length, 0};
+      w = {l.status, len, std::move(l.polygonal), std::move(l.points)};
+    }
+    const char* metric_word = oct ? "octilinear" : "L1";
+    // JSON: an integer when b = 0, else a number with 17 significant digits (CLI.md: at least 9)
+    auto length_json = [](const geom::Root2& r) -> nlohmann::ordered_json {
+      if (r.b == 0) return r.a;
+      return r.to_double();
+    };
 
     nlohmann::ordered_json j;
     j["metric"] = "l1";
+    if (oct) j["orientations"] = "octilinear";
     std::string code, reason;
     switch (w.status) {
       case router::WireStatus::Ok: break;
@@ -63,22 +89,25 @@ void add_path(CLI::App& app, int& status) {
         break;
       case router::WireStatus::NoIntegerStaircase:
         code = "ROUTE-0003",
-        reason = "the shortest L1 length is " + std::to_string(*w.length) +
-                 ", but no rectilinear wire with integer vertices has that length here (sloped "
-                 "blockages pinch every lattice staircase of the shortest path)";
+        reason = std::string("the shortest ") + metric_word + " length is " + length_text(*w.length) +
+                 ", but no " + (oct ? "octilinear" : "rectilinear") +
+                 " wire with integer vertices has that length here (sloped blockages pinch every "
+                 "lattice staircase of the shortest path)";
         break;
     }
     if (w.status == router::WireStatus::Ok) {
       const long bends = geom::count_bends(w.points);
-      j["cost"] = *w.length;
-      j["length"] = *w.length;
+      j["cost"] = length_json(*w.length);
+      j["length"] = length_json(*w.length);
+      if (oct) j["length_exact"] = {w.length->a, w.length->b};
       j["bends"] = bends;
       auto pts = nlohmann::ordered_json::array();
       for (const geom::Point p : w.points) pts.push_back({p.x, p.y});
       j["points"] = pts;
       status = kOk;
       if (!args->json) {
-        std::cout << "cost " << *w.length << " (l1), length " << *w.length << ", " << bends
+        std::cout << "cost " << length_text(*w.length) << (oct ? " (octilinear)" : " (l1)")
+                  << ", length " << length_text(*w.length) << ", " << bends
                   << (bends == 1 ? " bend:" : " bends:");
         for (const geom::Point p : w.points) std::cout << ' ' << point_text(p);
         std::cout << '\n';
@@ -90,7 +119,8 @@ void add_path(CLI::App& app, int& status) {
       j["points"] = nlohmann::ordered_json::array();
       j["reason"] = reason;
       if (w.status == router::WireStatus::NoIntegerStaircase) {
-        j["l1_distance"] = *w.length;
+        j[oct ? "octilinear_distance" : "l1_distance"] = length_json(*w.length);
+        if (oct) j["length_exact"] = {w.length->a, w.length->b};
         auto poly = nlohmann::ordered_json::array();
         for (const geom::Point p : w.polygonal) poly.push_back({p.x, p.y});
         j["polygonal"] = poly;

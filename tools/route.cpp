@@ -1,8 +1,10 @@
-// taut route FILE -o OUT [--svg PIC] [--stats S.json]: routes every two-pin net (point pins, and
-// shape pins whose edges are horizontal, vertical or at 45 degrees) by an exact shortest L1 wire
-// (rectilinear, integer vertices), each net on its own (wires of different nets do not see each
-// other yet), and writes the layout with <routes>. Nets this version cannot route are written
-// as failed with a reason and reported on stderr; the exit status is then 1.
+// taut route FILE -o OUT [--svg PIC] [--stats S.json] [--orientations rectilinear|octilinear]:
+// routes every two-pin net by an exact shortest wire with integer vertices, each net on its own
+// (wires of different nets do not see each other yet), and writes the layout with <routes>.
+// Rectilinear: the shortest L1 wire between point pins and shape pins whose edges are
+// horizontal, vertical or at 45 degrees. Octilinear: the shortest wire in 0/45/90/135 degrees
+// between point pins (shape pins are reported, ROUTE-0005). Nets this version cannot route are
+// written as failed with a reason and reported on stderr; the exit status is then 1.
 #include <chrono>
 #include <iostream>
 
@@ -14,6 +16,7 @@
 #include "io/stats_json.h"
 #include "io/svg.h"
 #include "router/l1_router.h"
+#include "router/oct_router.h"
 #include "router/version.h"
 #include "tools/cli.h"
 #include "tools/commands.h"
@@ -27,7 +30,9 @@ struct NetResult {
   std::string code;  // ROUTE-xxxx when failed
 };
 
-NetResult route_net(const io::Layout& layout, const io::Net& net, router::L1Router& router) {
+// Routes with `router` (rectilinear) or, when it is null, with `oct` (octilinear).
+NetResult route_net(const io::Layout& layout, const io::Net& net, router::L1Router* router,
+                    router::OctRouter* oct) {
   NetResult r;
   r.route.net = net.name;
   auto fail = [&](const char* code, std::string reason) {
@@ -53,12 +58,21 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, router::L1Rout
     return g;
   };
   const geom::Polygon ga = pin_geometry(a), gb = pin_geometry(b);
+  if (oct) {
+    for (const io::Pin* pin : {&a, &b})
+      if (!pin->point)
+        return fail("ROUTE-0005", "pin \"" + pin->name +
+                                      "\" is a shape; octilinear wires are routed between point "
+                                      "pins only in this version (rectilinear wires take shape "
+                                      "pins)");
+  }
   for (const auto& [pin, g] : {std::pair{&a, &ga}, std::pair{&b, &gb}}) {
+    if (oct) break;
     if (!router::pin_shape_supported(*g))
       return fail("ROUTE-0005", "pin \"" + pin->name +
                                     "\" has a shape edge that is not horizontal, vertical or at 45 "
                                     "degrees; such shape pins are not routed yet");
-    if (router.pin_meets_obstacle(*g))
+    if (router->pin_meets_obstacle(*g))
       return fail("ROUTE-0005", "pin \"" + pin->name +
                                     "\" lies partly under a blockage; shape pins that overlap "
                                     "blockages are not routed yet (ones that touch them are)");
@@ -67,7 +81,18 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, router::L1Rout
     return pin.point ? "at " + point_text(*pin.point) + " " + why_not_free(layout, *pin.point)
                      : std::string("has no free point (its shape lies in blockages or outside the boundary)");
   };
-  const router::L1Wire w = router.shortest(ga, gb);
+  struct {
+    router::WireStatus status;
+    std::string length;  // for ROUTE-0003
+    std::vector<geom::Point> points;
+  } w;
+  if (oct) {
+    router::OctWire o = oct->shortest(*a.point, *b.point);
+    w = {o.status, o.length ? length_text(*o.length) : "", std::move(o.points)};
+  } else {
+    router::L1Wire l = router->shortest(ga, gb);
+    w = {l.status, l.length ? std::to_string(*l.length) : "", std::move(l.points)};
+  }
   switch (w.status) {
     case router::WireStatus::Ok: break;
     case router::WireStatus::SourceNotFree:
@@ -79,9 +104,11 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, router::L1Rout
                                     "\" are in different parts of free space: blockages wall one "
                                     "of them in");
     case router::WireStatus::NoIntegerStaircase:
-      return fail("ROUTE-0003", "the shortest L1 length is " + std::to_string(*w.length) +
-                                    ", but no rectilinear wire with integer vertices has that "
-                                    "length (sloped blockages pinch every lattice staircase)");
+      return fail("ROUTE-0003", std::string("the shortest ") + (oct ? "octilinear" : "L1") +
+                                    " length is " + w.length + ", but no " +
+                                    (oct ? "octilinear" : "rectilinear") +
+                                    " wire with integer vertices has that length (sloped "
+                                    "blockages pinch every lattice staircase)");
   }
   io::Wire wire;
   wire.points = w.points;
@@ -117,16 +144,22 @@ void add_route(CLI::App& app, int& status) {
       return;
     }
     const geom::NormalizedObstacles norm = routing_obstacles(*layout);
-    router::L1Router router(norm.domain, norm.obstacles);
+    const bool octilinear = routing_orientations(args->routing, *layout) == "octilinear";
+    std::optional<router::L1Router> l1;
+    std::optional<router::OctRouter> oct;
+    if (octilinear)
+      oct.emplace(norm.domain, norm.obstacles);
+    else
+      l1.emplace(norm.domain, norm.obstacles);
     const auto t1 = Clock::now();
 
     io::Routes routes;
     routes.tool = "taut " + std::string(router::version());
     routes.metric = "l1";
-    routes.orientations = "rectilinear";
+    routes.orientations = octilinear ? "octilinear" : "rectilinear";
     std::size_t routed = 0;
     for (const io::Net& net : layout->nets) {
-      NetResult r = route_net(*layout, net, router);
+      NetResult r = route_net(*layout, net, l1 ? &*l1 : nullptr, oct ? &*oct : nullptr);
       if (r.route.status == "routed") {
         ++routed;
         if (net.sketch)  // said, not dropped silently

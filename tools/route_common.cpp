@@ -1,5 +1,7 @@
 #include "tools/route_common.h"
 
+#include <cstdio>
+
 #include "geom/predicates.h"
 #include "io/layout_geometry.h"
 
@@ -12,6 +14,14 @@ geom::NormalizedObstacles routing_obstacles(const io::Layout& layout,
 }
 
 std::string point_text(geom::Point p) { return std::to_string(p.x) + "," + std::to_string(p.y); }
+
+std::string length_text(const geom::Root2& length) {
+  if (length.b == 0) return std::to_string(length.a);
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.12g", length.to_double());
+  return std::string(buf) + " (" + std::to_string(length.a) + (length.b < 0 ? "-" : "+") +
+         std::to_string(length.b < 0 ? -length.b : length.b) + "*sqrt2)";
+}
 
 std::string why_not_free(const io::Layout& layout, geom::Point p) {
   const std::string where = " (" + layout.file + ":";

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "geom/normalize.h"
+#include "geom/root2.h"
 #include "io/layout.h"
 #include "router/l1_router.h"
 
@@ -23,5 +24,9 @@ std::string why_not_free(const io::Layout& layout, geom::Point p);
 
 // "x,y" of a point.
 std::string point_text(geom::Point p);
+
+// A length a + b*sqrt2 for people: "23000" when b = 0, else "16.4852814 (6+7*sqrt2)" (the
+// value to 12 significant digits, then the exact form).
+std::string length_text(const geom::Root2& length);
 
 }  // namespace taut::cli

@@ -33,19 +33,6 @@ Reference reference_for(const std::string& file, std::vector<Point> extra = {}) 
   return r;
 }
 
-// A layout file in a fresh folder: <layout name="t" version="1"> + body + </layout>.
-std::string layout_file(const std::string& folder, const std::string& body) {
-  const std::string file = temp_dir(folder) + "/t.xml";
-  write_text(file, "<layout name=\"t\" version=\"1\">\n" + body + "</layout>\n");
-  return file;
-}
-
-std::vector<Point> points_of(const nlohmann::json& pts) {
-  std::vector<Point> out;
-  for (const auto& p : pts) out.push_back({p[0].get<int>(), p[1].get<int>()});
-  return out;
-}
-
 // A wire as the contract promises it; returns its L1 length.
 std::int64_t expect_wire(const oracle::L1Reference& ref, const std::vector<Point>& w, Point a, Point b) {
   EXPECT_GE(w.size(), 2u);
@@ -173,17 +160,18 @@ TEST(Path, NegativeCoordinates) {
 
 TEST(Path, RequestsThisVersionCannotServeExit2AndPrintNothing) {
   const std::string dir = temp_dir("path_usage");
-  const std::string oct = dir + "/oct.xml";
+  const std::string oct = dir + "/any.xml";  // orientations this version cannot route in
   write_text(oct,
              "<layout name=\"o\" version=\"1\">\n"
-             "  <rules orientations=\"octilinear\"/>\n"
+             "  <rules orientations=\"c:0,60,120\"/>\n"
              "</layout>\n");
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
       {{"path", kDemo, "--from", "1.5,3", "--to", "1,1"}, "CLI-0022"},
       {{"path", kDemo, "--from", "1,1", "--to", "1073741824,0"}, "CLI-0022"},
       {{"path", kDemo, "--from", "1,1", "--to", "5,5", "--metric", "link"}, "CLI-0020"},
       {{"path", kDemo, "--from", "1,1", "--to", "5,5", "--bend-cost", "3"}, "CLI-0020"},
-      {{"path", kDemo, "--from", "1,1", "--to", "5,5", "--orientations", "octilinear"}, "CLI-0021"},
+      {{"path", kDemo, "--from", "1,1", "--to", "5,5", "--orientations", "any"}, "CLI-0021"},
+      {{"path", kDemo, "--from", "1,1", "--to", "5,5", "--orientations", "c:0,45,90,135"}, "CLI-0021"},
       {{"path", oct, "--from", "1,1", "--to", "5,5", "--json"}, oct + ":2: error: [CLI-0021]"},
       {{"path", kDemo, "--from", "1,1"}, "CLI-0001"},
       {{"route", kDemo, "-o", dir + "/x.xml", "--metric", "combined"}, "CLI-0020"},
@@ -196,7 +184,7 @@ TEST(Path, RequestsThisVersionCannotServeExit2AndPrintNothing) {
     EXPECT_NE(r.err.find(code), std::string::npos) << r.err;
   }
   EXPECT_FALSE(file_exists(dir + "/x.xml"));
-  // With an explicit --orientations rectilinear the octilinear rules are overridden.
+  // With an explicit --orientations rectilinear the rules' orientations are overridden.
   EXPECT_EQ(run_taut({"path", oct, "--from", "1,1", "--to", "5,5", "--orientations", "rectilinear"}).status, 0);
 }
 

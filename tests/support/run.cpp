@@ -78,6 +78,18 @@ std::string read_text(const std::string& path) {
   return ss.str();
 }
 
+std::string layout_file(const std::string& folder, const std::string& body) {
+  const std::string file = temp_dir(folder) + "/t.xml";
+  write_text(file, "<layout name=\"t\" version=\"1\">\n" + body + "</layout>\n");
+  return file;
+}
+
+std::vector<geom::Point> points_of(const nlohmann::json& pts) {
+  std::vector<geom::Point> out;
+  for (const auto& p : pts) out.push_back({p[0].get<int>(), p[1].get<int>()});
+  return out;
+}
+
 void write_text(const std::string& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);
   out << text;

@@ -5,6 +5,10 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
+#include "geom/types.h"
+
 namespace taut::test {
 
 struct RunResult {
@@ -22,6 +26,10 @@ std::string temp_dir(const std::string& name);
 std::string read_text(const std::string& path);
 void write_text(const std::string& path, const std::string& text);
 bool file_exists(const std::string& path);
+// A layout file t.xml in a fresh folder: <layout name="t" version="1"> + body + </layout>.
+std::string layout_file(const std::string& folder, const std::string& body);
+// The points of a JSON array of [x, y] pairs (the "points" of `taut path --json`).
+std::vector<geom::Point> points_of(const nlohmann::json& pts);
 
 // The public benchmark data folder (../shared/data beside the checkout, or -DTAUT_SHARED_DATA=),
 // or "" when it is absent. Tests that need it skip with a message when it is absent, except

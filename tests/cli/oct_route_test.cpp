@@ -1,0 +1,193 @@
+// `taut path` and `taut route` with --orientations octilinear (or <rules orientations=
+// "octilinear">): every wire they return is checked against the brute-force octilinear
+// reference (tests/oracle/oct_oracle.h): it starts and ends at the pins, every segment is
+// horizontal, vertical or at 45 degrees, its vertices are integers, it stays in free space, and
+// its length is exactly the shortest octilinear distance a + b*sqrt2 (JSON "length_exact").
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "geom/normalize.h"
+#include "io/layout_geometry.h"
+#include "io/layout_reader.h"
+#include "oracle/oct_oracle.h"
+#include "support/run.h"
+
+namespace taut::test {
+namespace {
+
+using geom::Point;
+using geom::Root2;
+const std::string kDemo = std::string(TAUT_SOURCE_DIR) + "/designs/demo.xml";
+
+struct Reference {
+  geom::NormalizedObstacles norm;
+  std::unique_ptr<oracle::OctilinearReference> ref;
+};
+Reference reference_for(const std::string& file, std::vector<Point> extra = {}) {
+  io::ReadResult rr = io::read_layout(file);
+  EXPECT_TRUE(rr.layout.has_value()) << file;
+  Reference r;
+  r.norm = geom::normalize_obstacles(io::blockage_polygons(*rr.layout), io::routing_domain(*rr.layout, extra));
+  r.ref = std::make_unique<oracle::OctilinearReference>(r.norm.domain, r.norm.obstacles);
+  return r;
+}
+
+// A wire as the contract promises it; returns its exact octilinear length.
+std::optional<Root2> expect_oct_wire(const oracle::OctilinearReference& ref, const std::vector<Point>& w, Point a,
+                                     Point b) {
+  EXPECT_GE(w.size(), 2u);
+  if (w.empty()) return std::nullopt;
+  EXPECT_EQ(w.front(), a);
+  EXPECT_EQ(w.back(), b);
+  for (std::size_t i = 1; i < w.size(); ++i)
+    EXPECT_TRUE(oracle::is_octilinear(w[i - 1], w[i])) << "segment " << i << " is not at 0/45/90/135 degrees";
+  const auto len = ref.check_octilinear_path(w);
+  EXPECT_TRUE(len.has_value()) << "the wire leaves free space or is not octilinear";
+  return len;
+}
+
+Root2 exact_of(const nlohmann::json& j) { return {j[0].get<std::int64_t>(), j[1].get<std::int64_t>()}; }
+
+TEST(OctPath, DemoJsonIsShortestOctilinearAndFree) {
+  const Point a{500, 500}, b{18000, 11500};
+  const auto r = run_taut({"path", kDemo, "--from", "500,500", "--to", "18000,11500", "--orientations", "octilinear",
+                           "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["metric"], "l1");
+  EXPECT_EQ(j["orientations"], "octilinear");
+  const Reference ref = reference_for(kDemo, {a, b});
+  const auto want = ref.ref->distance(a, b);
+  ASSERT_TRUE(want.has_value());
+  EXPECT_GT(want->b, 0);  // the demo's shortest octilinear wire does use diagonals
+  const Root2 exact = exact_of(j["length_exact"]);
+  EXPECT_EQ(exact, *want);
+  // cost and length: the same number to double precision (CLI.md: at least 9 digits)
+  EXPECT_NEAR(j["cost"].get<double>(), want->to_double(), 1e-6 * want->to_double());
+  EXPECT_EQ(j["cost"], j["length"]);
+  const auto pts = points_of(j["points"]);
+  EXPECT_EQ(expect_oct_wire(*ref.ref, pts, a, b), *want);
+  long bends = 0;
+  for (std::size_t i = 2; i < pts.size(); ++i) {
+    const std::int64_t ux = pts[i - 1].x - pts[i - 2].x, uy = pts[i - 1].y - pts[i - 2].y;
+    const std::int64_t vx = pts[i].x - pts[i - 1].x, vy = pts[i].y - pts[i - 1].y;
+    if (ux * vy - uy * vx != 0 || ux * vx + uy * vy < 0) ++bends;
+  }
+  EXPECT_EQ(j["bends"].get<long>(), bends);
+  // and it is shorter than the rectilinear wire between the same points
+  const auto rl = run_taut({"path", kDemo, "--from", "500,500", "--to", "18000,11500", "--json"});
+  ASSERT_EQ(rl.status, 0);
+  EXPECT_LT(want->to_double(), nlohmann::json::parse(rl.out)["cost"].get<double>());
+  // The text form names the exact length.
+  const auto t = run_taut({"path", kDemo, "--from", "500,500", "--to", "18000,11500", "--orientations", "octilinear"});
+  ASSERT_EQ(t.status, 0);
+  EXPECT_NE(t.out.find("(" + std::to_string(want->a) + "+" + std::to_string(want->b) + "*sqrt2) (octilinear)"),
+            std::string::npos)
+      << t.out;
+}
+
+TEST(OctPath, RulesChooseOctilinearAndTheOptionOverrides) {
+  const std::string file = layout_file("oct_rules", R"(  <rules orientations="octilinear"/>
+  <blockage id="b"><rect x0="10" y0="-5" x1="20" y1="5"/></blockage>
+)");
+  const auto r = run_taut({"path", file, "--from", "0,0", "--to", "30,0", "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["orientations"], "octilinear");
+  // over the block's top corner (10,5): (10,5) is 5 diagonal + 5 straight, then 10 along the
+  // top, then the same down to (30,0): 20 + 10*sqrt2 (rectilinear: 5 + 30 + 5 = 40)
+  EXPECT_EQ(exact_of(j["length_exact"]), (Root2{20, 10}));
+  const auto rl = run_taut({"path", file, "--from", "0,0", "--to", "30,0", "--orientations", "rectilinear", "--json"});
+  ASSERT_EQ(rl.status, 0) << rl.err;
+  const auto jl = nlohmann::json::parse(rl.out);
+  EXPECT_FALSE(jl.contains("orientations"));
+  EXPECT_EQ(jl["cost"].get<std::int64_t>(), 40);
+}
+
+TEST(OctPath, UnreachableAndBlockedEndsExit1WithNullCost) {
+  const std::string file = layout_file("oct_unreach", R"(  <boundary x0="0" y0="0" x1="100" y1="100"/>
+  <blockage id="ring"><polygon points="40,40 60,40 60,60 40,60"><hole points="45,45 55,45 55,55 45,55"/></polygon></blockage>
+)");
+  auto r = run_taut({"path", file, "--from", "10,10", "--to", "50,50", "--orientations", "octilinear", "--json"});
+  EXPECT_EQ(r.status, 1);
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["cost"].is_null());
+  EXPECT_NE(r.err.find("ROUTE-0002"), std::string::npos) << r.err;
+  r = run_taut({"path", file, "--from", "10,10", "--to", "42,42", "--orientations", "octilinear", "--json"});
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("ROUTE-0001"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("ring"), std::string::npos) << r.err;
+}
+
+// Every two-pin net of generated layouts, routed octilinear, against the reference.
+TEST(OctRoute, GeneratedLayoutsMatchTheReference) {
+  const std::string dir = temp_dir("oct_route_gen");
+  int routed = 0, unreachable = 0, no_staircase = 0, diagonal = 0;
+  for (const char* kind : {"rects", "polygons", "maze", "degenerate"}) {
+    for (int seed = 1; seed <= 3; ++seed) {
+      SCOPED_TRACE(std::string(kind) + " seed " + std::to_string(seed));
+      const std::string in = dir + "/" + kind + std::to_string(seed) + ".xml";
+      const std::string out = dir + "/" + kind + std::to_string(seed) + ".routed.xml";
+      ASSERT_EQ(run_taut({"gen", kind, "-o", in, "--size", "300", "--nets", "8", "--seed", std::to_string(seed)}).status, 0);
+      const auto r = run_taut({"route", in, "-o", out, "-q", "--orientations", "octilinear"});
+      ASSERT_TRUE(r.status == 0 || r.status == 1) << r.err;
+      io::ReadResult rr = io::read_layout(out);
+      ASSERT_TRUE(rr.layout && rr.layout->routes);
+      EXPECT_EQ(rr.layout->routes->orientations, "octilinear");
+      EXPECT_EQ(run_taut({"check", out, "-q"}).status, 0);
+      const Reference ref = reference_for(in);
+      ASSERT_EQ(rr.layout->routes->routes.size(), rr.layout->nets.size());
+      bool any_failed = false;
+      for (std::size_t i = 0; i < rr.layout->nets.size(); ++i) {
+        const io::Net& net = rr.layout->nets[i];
+        const io::Route& route = rr.layout->routes->routes[i];
+        ASSERT_EQ(net.pins.size(), 2u);
+        const Point a = *net.pins[0].point, b = *net.pins[1].point;
+        const auto want = ref.ref->distance(a, b);
+        if (route.status == "routed") {
+          ++routed;
+          ASSERT_EQ(route.wires.size(), 1u);
+          EXPECT_EQ(expect_oct_wire(*ref.ref, route.wires[0].points, a, b), want) << net.name;
+          if (want && want->b > 0) ++diagonal;
+          continue;
+        }
+        any_failed = true;
+        const std::string reason = route.reason.value_or("");
+        if (reason.find("integer vertices") != std::string::npos) {
+          ++no_staircase;
+          ASSERT_TRUE(want.has_value()) << net.name << ": " << reason;
+          EXPECT_NE(reason.find(std::to_string(want->a) + "+" + std::to_string(want->b) + "*sqrt2"), std::string::npos)
+              << reason;
+        } else {
+          ++unreachable;
+          EXPECT_FALSE(want.has_value()) << net.name << ": " << reason;
+        }
+      }
+      EXPECT_EQ(r.status, any_failed ? 1 : 0);
+    }
+  }
+  std::printf("generated nets: %d routed (%d with diagonals), %d unreachable, %d without an integer staircase\n",
+              routed, diagonal, unreachable, no_staircase);
+  EXPECT_GT(routed, 60);
+  EXPECT_GT(diagonal, 30);
+}
+
+TEST(OctRoute, DemoRoutesPointPinNetsAndNamesShapePins) {
+  const std::string dir = temp_dir("oct_route_demo");
+  const auto r = run_taut({"route", kDemo, "-o", dir + "/r.xml", "--orientations", "octilinear", "--svg",
+                           dir + "/r.svg"});
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("[ROUTE-0005] net \"bump\""), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("point pins only"), std::string::npos) << r.err;
+  io::ReadResult rr = io::read_layout(dir + "/r.xml");
+  ASSERT_TRUE(rr.layout && rr.layout->routes);
+  EXPECT_EQ(rr.layout->routes->orientations, "octilinear");
+  int routed = 0;
+  for (const io::Route& route : rr.layout->routes->routes) routed += route.status == "routed";
+  EXPECT_EQ(routed, 3);  // en, sda, rst; clk has 3 pins, bump has shape pins
+  EXPECT_TRUE(file_exists(dir + "/r.svg"));
+}
+
+}  // namespace
+}  // namespace taut::test
