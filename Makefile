@@ -41,6 +41,7 @@ test-long: build
 bench: build
 	$(BUILD)/bench/bench_foundation
 	$(BUILD)/bench/bench_wavefront
+	$(BUILD)/bench/bench_oct_wavefront
 
 install: build
 	cmake --install $(BUILD) --prefix $(or $(PREFIX),/usr/local)

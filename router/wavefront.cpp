@@ -306,13 +306,25 @@ inline bool region_hull(const RegionT<M>& r, const Box& frame, Box& out) {
     }
   }
   if constexpr (M::kCount != 4) {
-    // Octilinear: the level line u + sqrt2 v >= start is irrational and is left out (the box is
-    // then only larger, still a bound); the box must reach the start level.
+    // Octilinear: the level line u + sqrt2 v >= S is irrational; it is replaced by a rational
+    // line every point of the region satisfies. With v0 the least v over the current box (so
+    // v >= v0 there) and 99/70 > sqrt2: u + (99/70)(v - v0) >= u + sqrt2 (v - v0) >= S - sqrt2 v0,
+    // i.e. 70 u + 99 v >= 70 S + (99 - 70 sqrt2) v0, relaxed to the floor of the right side
+    // (exact in Z[sqrt2]). It is off the true line by (99/70 - sqrt2)(v - v0) < 10^-4 (v - v0).
     if (xlo > xhi || ylo > yhi) return false;
     const Point blo{static_cast<geom::Coord>(xlo), static_cast<geom::Coord>(ylo)};
     const Point bhi{static_cast<geom::Coord>(xhi), static_cast<geom::Coord>(yhi)};
-    if (M::combine(u_range(r.d, blo, bhi).hi, v_range(r.d, blo, bhi).hi) < M::constant(r.start))
-      return false;
+    const i64 v0 = v_range(r.d, blo, bhi).lo;
+    const geom::Root2 st = M::constant(r.start);
+    if (M::combine(u_range(r.d, blo, bhi).hi, v_range(r.d, blo, bhi).hi) < st) return false;
+    const i128 ra = i128{70} * st.a + i128{99} * v0, rb = i128{70} * st.b - i128{70} * v0;
+    // floor(ra + rb sqrt2): estimate, then correct with exact signs
+    i128 f = static_cast<i128>(std::floor(static_cast<long double>(ra) +
+                                          static_cast<long double>(rb) * 1.41421356237309504880L));
+    while (geom::Root2::sign_of(ra - f, rb) < 0) --f;
+    while (geom::Root2::sign_of(ra - (f + 1), rb) >= 0) ++f;
+    // -(70 u + 99 v) <= -f with u = fr.a x + fr.b y, v = fr.c x + fr.d y
+    slanted[ns++] = {-(70 * fr.a + 99 * fr.c), -(70 * fr.b + 99 * fr.d), static_cast<i64>(-f)};
   }
   // the level: sx*x + sy*y >= start, with the level's coefficients (L1: sx, sy = +-1)
   const i64 sx = fr.a + fr.c, sy = fr.b + fr.d;
@@ -510,11 +522,7 @@ class KdTree {
         const i64 x0 = la * xlo, x1 = la * xhi, y0 = lb * ylo, y1 = lb * yhi;
         b = std::min(x0, x1) + std::min(y0, y1);
       } else {
-        const Range ur = linear_range(f.a, f.b, {static_cast<geom::Coord>(xlo), static_cast<geom::Coord>(ylo)},
-                                      {static_cast<geom::Coord>(xhi), static_cast<geom::Coord>(yhi)});
-        const Range vr = linear_range(f.c, f.d, {static_cast<geom::Coord>(xlo), static_cast<geom::Coord>(ylo)},
-                                      {static_cast<geom::Coord>(xhi), static_cast<geom::Coord>(yhi)});
-        b = M::combine(ur.lo, vr.lo);
+        b = oct_box_min<D>(xlo, ylo, xhi, yhi);
       }
       b = std::max(b, st);
       bound = any ? std::min(bound, b) : b;
@@ -573,6 +581,15 @@ class KdTree {
   }
   // Lower bound of the level's constant term over the part of the box the region's lower
   // bounds on U, V and the level leave (a box left of a vertical track counts from the track).
+  // Octilinear: the exact least constant term of the level (a + sqrt2 c) x + (b + sqrt2 d) y
+  // over a box, at the corner its coefficients' signs pick (fixed per frame).
+  template <int D>
+  static geom::Root2 oct_box_min(i64 xlo, i64 ylo, i64 xhi, i64 yhi) {
+    constexpr Frame f = kFrames[D];
+    constexpr bool x_lo = geom::Root2::sign_of(f.a, f.c) > 0, y_lo = geom::Root2::sign_of(f.b, f.d) > 0;
+    const i64 x = x_lo ? xlo : xhi, y = y_lo ? ylo : yhi;
+    return {f.a * x + f.b * y, f.c * x + f.d * y};
+  }
   template <int D>
   static C box_min_level(const Node& n, const Region& r) {
     i64 umin = u_range(D, n.lo, n.hi).lo;
@@ -583,7 +600,11 @@ class KdTree {
       i64& m = l.on_u ? umin : vmin;
       m = std::max(m, l.value.a);
     }
-    return std::max(M::combine(umin, vmin), M::constant(r.start));
+    if constexpr (M::kCount != 4)
+      return std::max({M::combine(umin, vmin), M::constant(r.start),
+                       oct_box_min<D>(n.lo.x, n.lo.y, n.hi.x, n.hi.y)});
+    else
+      return std::max(M::combine(umin, vmin), M::constant(r.start));
   }
   template <int D>
   static bool box_may_satisfy(const Node& n, const Region& r) {
