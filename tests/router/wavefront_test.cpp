@@ -45,32 +45,7 @@ const std::vector<std::uint64_t> kRegressionSeeds = {
 };
 
 TEST(Wavefront, RandomInstancesMatchReference) {
-  if (const auto seed = taut::test::wavefront_seed_from_env()) {
-    WavefrontTally tally;
-    EXPECT_EQ(taut::test::check_wavefront_seed(*seed, tally, /*verbose=*/true), "");
-    std::printf("%s\n", tally.summary().c_str());
-    return;
-  }
-  const WavefrontSweep sw = taut::test::run_wavefront_sweep(1, 2000);
-  std::printf("%s\n%.2f s\n", sw.tally.summary().c_str(), sw.seconds);
-  taut::test::expect_clean_sweep(sw);
-  // The generator exercises what it is meant to.
-  const WavefrontTally& t = sw.tally;
-  EXPECT_EQ(t.instances, 2000);
-  for (const char* f : {"gen-rects", "gen-polygons", "gen-maze", "gen-degenerate", "grid-rects",
-                        "grid-diagonal", "rings", "pinches", "fine"}) {
-    EXPECT_GE(t.families.count(f) ? t.families.at(f) : 0, 200) << f;
-  }
-  EXPECT_GE(t.comparisons, 20000);
-  EXPECT_GE(t.multi_source_runs, 1500);
-  EXPECT_GE(t.unreachable, 500);
-  EXPECT_GE(t.split_runs, 200);
-  EXPECT_GE(t.pinch_points, 300);
-  EXPECT_GE(t.boundary_points, 3000);
-  EXPECT_GE(t.source_is_target, 300);
-  EXPECT_GE(t.vertex_checks, 20000);
-  EXPECT_GE(t.not_free, 5000);
-  EXPECT_GE(t.bends, 5000);
+  taut::test::run_random_wavefront_test(taut::test::WaveMetric::L1);
 }
 
 TEST(Wavefront, RegressionSeeds) {

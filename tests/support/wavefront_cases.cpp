@@ -31,10 +31,12 @@
 
 #include "geom/normalize.h"
 #include "geom/predicates.h"
+#include "geom/root2.h"
 #include "geom/validate.h"
 #include "io/generate.h"
 #include "io/layout_geometry.h"
 #include "oracle/l1_oracle.h"
+#include "oracle/oct_oracle.h"
 #include "oracle/union_oracle.h"
 #include "router/wavefront.h"
 
@@ -45,8 +47,7 @@ using geom::Box;
 using geom::Point;
 using geom::Polygon;
 using geom::Ring;
-using oracle::L1Reference;
-using router::L1Wavefront;
+using geom::Root2;
 using Dist = std::optional<std::int64_t>;
 using i64 = std::int64_t;
 using u64 = std::uint64_t;
@@ -84,7 +85,22 @@ std::string points_str(const std::vector<Point>& v) {
   for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + pt(v[i]);
   return s + "}";
 }
-std::string dist_str(Dist d) { return d ? std::to_string(*d) : std::string("unreachable"); }
+std::string value_str(i64 v) { return std::to_string(v); }
+// a + b*sqrt2 as "a+b*sqrt2 (~value)"; "a" when b == 0, "b*sqrt2 (~value)" when a == 0.
+std::string value_str(Root2 v) {
+  if (v.b == 0) return std::to_string(v.a);
+  std::ostringstream os;
+  if (v.a != 0)
+    os << v.a << (v.b < 0 ? "-" : "+") << (v.b < 0 ? -v.b : v.b);
+  else
+    os << v.b;
+  os << "*sqrt2 (~" << v.to_double() << ")";
+  return os.str();
+}
+template <class T>
+std::string dist_str(const std::optional<T>& d) {
+  return d ? value_str(*d) : std::string("unreachable");
+}
 std::string box_str(const Box& b) { return "{" + pt(b.lo) + ", " + pt(b.hi) + "}"; }
 std::string polygon_cpp(const Polygon& p) {
   std::string s = "{" + ring_str(p.outer) + ", {";
@@ -549,6 +565,46 @@ std::vector<Point> make_candidates(Rand& r, const Box& dom, const std::vector<Po
 
 // ---- checking -----------------------------------------------------------------------------
 
+// What differs between the metrics: the engine under test, its reference, the distance type
+// (an L1 distance is an int64, an octilinear one a Root2; both compared exactly), and names in
+// the reports. Everything below is written once over M, one of these two.
+struct L1Metric {
+  using Wavefront = router::L1Wavefront;
+  using Reference = oracle::L1Reference;
+  using Dist = std::optional<std::int64_t>;
+  static constexpr WaveMetric kMetric = WaveMetric::L1;
+  static constexpr const char* kWavefront = "L1Wavefront";
+  static constexpr const char* kReference = "L1Reference";
+  static constexpr const char* kSeedVariable = "TAUT_WAVEFRONT_SEED";
+  static constexpr const char* kFamilyNote = "";  // after the family name in a report
+  static void run(Wavefront& wf, const std::vector<Point>& sources,
+                  const std::vector<Point>& targets, bool stop_early) {
+    wf.run(sources, targets, stop_early);
+  }
+  // The run's last argument as C++ (for reports).
+  static std::string stop_cpp(bool stop_early) {
+    return std::string("/*stop_early=*/") + (stop_early ? "true" : "false");
+  }
+};
+
+struct OctMetric {
+  using Wavefront = router::OctWavefront;
+  using Reference = oracle::OctilinearReference;
+  using Dist = std::optional<Root2>;
+  static constexpr WaveMetric kMetric = WaveMetric::Octilinear;
+  static constexpr const char* kWavefront = "OctWavefront";
+  static constexpr const char* kReference = "OctilinearReference";
+  static constexpr const char* kSeedVariable = "TAUT_OCT_SEED";
+  static constexpr const char* kFamilyNote = ", octilinear metric";
+  static void run(Wavefront& wf, const std::vector<Point>& sources,
+                  const std::vector<Point>& targets, bool stop_early) {
+    wf.run(sources, targets, stop_early ? Wavefront::Stop::AllTargets : Wavefront::Stop::Never);
+  }
+  static std::string stop_cpp(bool stop_early) {
+    return stop_early ? "OctWavefront::Stop::AllTargets" : "OctWavefront::Stop::Never";
+  }
+};
+
 struct Scene {
   Box domain;
   std::vector<Polygon> obstacles;
@@ -560,7 +616,8 @@ struct Scene {
   }
 };
 
-Scene make_scene(const Box& domain, std::vector<Polygon> obstacles, const L1Reference& ref) {
+template <class Reference>
+Scene make_scene(const Box& domain, std::vector<Polygon> obstacles, const Reference& ref) {
   Scene sc;
   sc.domain = domain;
   sc.obstacles = std::move(obstacles);
@@ -587,21 +644,22 @@ struct Query {
   bool run = true;                   // false: is_free comparisons only
 };
 
+template <class M>
 std::string query_cpp(const Query& q) {
   std::ostringstream os;
   if (!q.free_points.empty()) os << "  is_free points " << points_str(q.free_points) << "\n";
   if (q.run) {
     os << "  const std::vector<Point> sources" << points_str(q.sources) << ";\n";
     os << "  const std::vector<Point> targets" << points_str(q.targets) << ";\n";
-    os << "  wf.run(sources, targets, /*stop_early=*/" << (q.stop_early ? "true" : "false")
-       << ");\n";
+    os << "  wf.run(sources, targets, " << M::stop_cpp(q.stop_early) << ");\n";
     if (!q.vertex_points.empty())
       os << "  vertex_distance at " << points_str(q.vertex_points) << "\n";
   }
   return os.str();
 }
 
-std::string wedges_str(const L1Reference& ref, Point p) {
+template <class Reference>
+std::string wedges_str(const Reference& ref, Point p) {
   const auto ws = ref.wedges_at(p);
   if (ws.empty()) return "no wedge";
   if (ws.size() == 1 && ws[0].full) return "open";
@@ -614,8 +672,11 @@ std::string wedges_str(const L1Reference& ref, Point p) {
 
 // Every comparison of one query; "" when all agree. Implausible WavefrontStats go to `soft`
 // (they do not hide wrong answers).
-std::string check_query(const Scene& sc, const L1Reference& ref, L1Wavefront& wf, const Query& q,
-                        WavefrontTally* tally, std::ostream* log, std::string* soft) {
+template <class M>
+std::string check_query(const Scene& sc, const typename M::Reference& ref,
+                        typename M::Wavefront& wf, const Query& q, WavefrontTally* tally,
+                        std::ostream* log, std::string* soft) {
+  using Dist = typename M::Dist;
   std::ostringstream bad, stats_bad;
   for (const Point p : q.free_points) {
     const bool want = ref.is_free(p), got = wf.is_free(p);
@@ -651,7 +712,7 @@ std::string check_query(const Scene& sc, const L1Reference& ref, L1Wavefront& wf
       if (v && (!best[k] || *v < *best[k])) best[k] = v, best_source[k] = j;
     }
 
-  wf.run(q.sources, q.targets, q.stop_early);
+  M::run(wf, q.sources, q.targets, q.stop_early);
   const auto t2 = std::chrono::steady_clock::now();
   if (tally) {
     tally->reference_seconds += std::chrono::duration<double>(t1 - t0).count();
@@ -762,8 +823,8 @@ std::string check_query(const Scene& sc, const L1Reference& ref, L1Wavefront& wf
     if (!ok) continue;
     const Dist checked = ref.check_path(path);
     if (checked != best[k])
-      fail("L1Reference::check_path gives " +
-           (checked ? std::to_string(*checked)
+      fail(std::string(M::kReference) + "::check_path gives " +
+           (checked ? value_str(*checked)
                     : std::string("nullopt (a segment or bend is not allowed)")));
   }
   if (tally && split && any_free_source) ++tally->split_runs;
@@ -789,7 +850,7 @@ std::string check_query(const Scene& sc, const L1Reference& ref, L1Wavefront& wf
         bad << head << "wavefront " << dist_str(got) << " is below the reference "
             << dist_str(best[k]) << "\n";
     } else if (!sc.is_domain_corner(v) && got) {
-      bad << head << "not an obstacle vertex, but the wavefront gives " << *got << "\n";
+      bad << head << "not an obstacle vertex, but the wavefront gives " << value_str(*got) << "\n";
     }
   }
 
@@ -818,47 +879,53 @@ std::string check_query(const Scene& sc, const L1Reference& ref, L1Wavefront& wf
   return bad.str();
 }
 
-std::string guarded_check(const Scene& sc, const L1Reference& ref, L1Wavefront& wf, const Query& q,
-                          WavefrontTally* tally, std::ostream* log, std::string* soft) {
+template <class M>
+std::string guarded_check(const Scene& sc, const typename M::Reference& ref,
+                          typename M::Wavefront& wf, const Query& q, WavefrontTally* tally,
+                          std::ostream* log, std::string* soft) {
   try {
-    return check_query(sc, ref, wf, q, tally, log, soft);
+    return check_query<M>(sc, ref, wf, q, tally, log, soft);
   } catch (const std::exception& e) {
-    return std::string("exception from L1Wavefront: ") + e.what() + "\n";
+    return std::string("exception from ") + M::kWavefront + ": " + e.what() + "\n";
   }
 }
 
 // The failure of q on a fresh pair of engines over `obstacles`; "" when everything agrees.
 // soft: implausible stats count as a failure too.
+template <class M>
 std::string failure_on(const Box& domain, const std::vector<Polygon>& obstacles, const Query& q,
                        bool soft, Scene* scene_out = nullptr) {
-  const L1Reference ref(domain, obstacles);
+  const typename M::Reference ref(domain, obstacles);
   Scene sc = make_scene(domain, obstacles, ref);
   std::string f;
   try {
-    L1Wavefront wf(sc.domain, sc.obstacles);
+    typename M::Wavefront wf(sc.domain, sc.obstacles);
     std::string stats_bad;
-    f = guarded_check(sc, ref, wf, q, nullptr, nullptr, &stats_bad);
+    f = guarded_check<M>(sc, ref, wf, q, nullptr, nullptr, &stats_bad);
     if (soft) f += stats_bad;
   } catch (const std::exception& e) {
-    f = std::string("exception from the L1Wavefront constructor: ") + e.what() + "\n";
+    f = std::string("exception from the ") + M::kWavefront + " constructor: " + e.what() + "\n";
   }
   if (scene_out) *scene_out = std::move(sc);
   return f;
 }
 
 // Drops query points, sources, targets, obstacles and holes while the query still fails.
+template <class M>
 std::string shrink(const Scene& original, const Query& original_q, bool soft) {
   std::vector<Polygon> obs = original.obstacles;
   Query q = original_q;
-  std::string failure = failure_on(original.domain, obs, q, soft);
+  std::string failure = failure_on<M>(original.domain, obs, q, soft);
   if (failure.empty())
-    return "  (the failure does not reproduce on fresh engines: it depends on "
-           "earlier runs on the same L1Wavefront object)\n";
+    return std::string(
+               "  (the failure does not reproduce on fresh engines: it depends on "
+               "earlier runs on the same ") +
+           M::kWavefront + " object)\n";
   int budget = 800, attempts = 0;
   auto attempt = [&](const std::vector<Polygon>& o, const Query& qq) {
     if (budget-- <= 0) return false;
     ++attempts;
-    const std::string f = failure_on(original.domain, o, qq, soft);
+    const std::string f = failure_on<M>(original.domain, o, qq, soft);
     if (f.empty()) return false;
     obs = o, q = qq, failure = f;
     return true;
@@ -910,24 +977,26 @@ std::string shrink(const Scene& original, const Query& original_q, bool soft) {
   }
   reduce_query();
   Scene sc;
-  failure = failure_on(original.domain, obs, q, soft, &sc);
+  failure = failure_on<M>(original.domain, obs, q, soft, &sc);
   std::ostringstream os;
   os << "  shrunk (" << attempts << " attempts) to:\n"
-     << scene_cpp(sc) << "  L1Wavefront wf(domain, obstacles);\n"
-     << query_cpp(q) << "  failure:\n"
+     << scene_cpp(sc) << "  " << M::kWavefront << " wf(domain, obstacles);\n"
+     << query_cpp<M>(q) << "  failure:\n"
      << failure;
   return os.str();
 }
 
+template <class M>
 std::string instance_report(const WavefrontCase& c, const Scene& sc, const Query& q,
                             const std::string& failure, bool do_shrink, bool soft = false) {
   std::ostringstream os;
-  os << "seed " << c.seed << " (family " << c.family << "): wavefront and reference disagree\n"
+  os << "seed " << c.seed << " (family " << c.family << M::kFamilyNote
+     << "): wavefront and reference disagree\n"
      << failure << "  instance:\n"
      << scene_cpp(sc) << "  query:\n"
-     << query_cpp(q);
-  if (do_shrink) os << shrink(sc, q, soft);
-  os << "  rerun alone: TAUT_WAVEFRONT_SEED=" << c.seed << "\n";
+     << query_cpp<M>(q);
+  if (do_shrink) os << shrink<M>(sc, q, soft);
+  os << "  rerun alone: " << M::kSeedVariable << "=" << c.seed << "\n";
   return os.str();
 }
 
@@ -962,16 +1031,18 @@ void install_crash_handler() {
                  "TAUT_WAVEFRONT_TRACE=1 to see the seed it died on)\n");
 }
 
-void set_crash_seed(std::optional<u64> seed) {
+void set_crash_seed(std::optional<u64> seed, WaveMetric metric = WaveMetric::L1) {
   if (!seed) {
     g_crash_length = 0;
     return;
   }
-  const int n =
-      std::snprintf(g_crash_message, sizeof g_crash_message,
-                    "\n*** crashed while checking wavefront seed %llu (rerun alone: "
-                    "TAUT_WAVEFRONT_SEED=%llu)\n",
-                    static_cast<unsigned long long>(*seed), static_cast<unsigned long long>(*seed));
+  const bool oct = metric == WaveMetric::Octilinear;
+  const int n = std::snprintf(g_crash_message, sizeof g_crash_message,
+                              "\n*** crashed while checking %swavefront seed %llu (rerun alone: "
+                              "%s=%llu)\n",
+                              oct ? "octilinear " : "", static_cast<unsigned long long>(*seed),
+                              oct ? OctMetric::kSeedVariable : L1Metric::kSeedVariable,
+                              static_cast<unsigned long long>(*seed));
   g_crash_length = n > 0 ? static_cast<std::size_t>(n) : 0;
 }
 
@@ -1139,8 +1210,13 @@ WavefrontCase make_wavefront_case(std::uint64_t seed) {
   return c;
 }
 
-std::string check_wavefront_seed(std::uint64_t seed, WavefrontTally& tally, bool verbose,
-                                 bool shrink_failures) {
+namespace {
+
+template <class M>
+std::string check_seed(std::uint64_t seed, WavefrontTally& tally, bool verbose,
+                       bool shrink_failures) {
+  using Reference = typename M::Reference;
+  using Wavefront = typename M::Wavefront;
   WavefrontCase c;
   try {
     c = make_wavefront_case(seed);
@@ -1154,7 +1230,7 @@ std::string check_wavefront_seed(std::uint64_t seed, WavefrontTally& tally, bool
     return "seed " + std::to_string(seed) + " (family " + c.family +
            "): normalize_obstacles broke its invariants (not a wavefront bug): " + problems[0] +
            "\n";
-  const L1Reference ref(c.domain, c.obstacles);
+  const Reference ref(c.domain, c.obstacles);
   if (!ref.problems().empty())
     return "seed " + std::to_string(seed) + " (family " + c.family +
            "): the reference found the input inconsistent (not a wavefront bug): " +
@@ -1168,37 +1244,39 @@ std::string check_wavefront_seed(std::uint64_t seed, WavefrontTally& tally, bool
   tally.obstacle_vertices += static_cast<i64>(sc.vertices.size());
   tally.max_vertices = std::max<i64>(tally.max_vertices, static_cast<i64>(sc.vertices.size()));
   if (log) {
-    *log << "seed " << seed << " family " << c.family << (c.transformed ? " (turned/mirrored)" : "")
-         << (c.huge ? " (huge coordinates)" : "") << "\n"
+    *log << "seed " << seed << " family " << c.family << M::kFamilyNote
+         << (c.transformed ? " (turned/mirrored)" : "") << (c.huge ? " (huge coordinates)" : "")
+         << "\n"
          << scene_cpp(sc);
     *log << "  candidates " << points_str(c.candidates) << " (first " << c.special << " special)\n";
     log->flush();
   }
 
-  std::optional<L1Wavefront> wf;
+  std::optional<Wavefront> wf;
   try {
     wf.emplace(sc.domain, sc.obstacles);
   } catch (const std::exception& e) {
     Query none;
     none.run = false;
-    return instance_report(
-        c, sc, none, std::string("exception from the L1Wavefront constructor: ") + e.what() + "\n",
+    return instance_report<M>(
+        c, sc, none,
+        std::string("exception from the ") + M::kWavefront + " constructor: " + e.what() + "\n",
         false);
   }
   Rand r(seed ^ 0x5deece66dULL);
   bool stats_noted = false;
   auto check = [&](const Query& q) -> std::string {
-    if (log) *log << "query:\n" << query_cpp(q);
+    if (log) *log << "query:\n" << query_cpp<M>(q);
     std::string stats_bad;
-    const std::string f = guarded_check(sc, ref, *wf, q, &tally, log, &stats_bad);
+    const std::string f = guarded_check<M>(sc, ref, *wf, q, &tally, log, &stats_bad);
     if (log) log->flush();
     if (!stats_bad.empty() && !stats_noted) {
       stats_noted = true;
       ++tally.stats_issue_seeds;
       if (tally.first_stats_issue.empty() || log)
-        tally.first_stats_issue = instance_report(c, sc, q, stats_bad, shrink_failures, true);
+        tally.first_stats_issue = instance_report<M>(c, sc, q, stats_bad, shrink_failures, true);
     }
-    return f.empty() ? f : instance_report(c, sc, q, f, shrink_failures);
+    return f.empty() ? f : instance_report<M>(c, sc, q, f, shrink_failures);
   };
 
   // is_free on every candidate, free or not.
@@ -1243,7 +1321,7 @@ std::string check_wavefront_seed(std::uint64_t seed, WavefrontTally& tally, bool
 
   // The object survives being moved (and keeps answering).
   {
-    L1Wavefront moved(std::move(*wf));
+    Wavefront moved(std::move(*wf));
     *wf = std::move(moved);
   }
 
@@ -1275,8 +1353,8 @@ std::string check_wavefront_seed(std::uint64_t seed, WavefrontTally& tally, bool
     if (auto f = check(q); !f.empty()) return f;
   }
 
-  // The convenience function.
-  {
+  // The convenience function (L1 only: there is no octilinear one).
+  if constexpr (M::kMetric == WaveMetric::L1) {
     const Point s = pick_source(), t = r.pick(free_pts);
     const Dist want = ref.distance(s, t);
     Dist got;
@@ -1293,28 +1371,40 @@ std::string check_wavefront_seed(std::uint64_t seed, WavefrontTally& tally, bool
       Query q;
       q.sources = {s};
       q.targets = {t};
-      return instance_report(c, sc, q,
-                             "router::l1_distance" + pt(s) + pt(t) + ": reference " +
-                                 dist_str(want) + ", l1_distance " + dist_str(got) +
-                                 (err.empty() ? "" : " exception " + err) + "\n",
-                             shrink_failures);
+      return instance_report<M>(c, sc, q,
+                                "router::l1_distance" + pt(s) + pt(t) + ": reference " +
+                                    dist_str(want) + ", l1_distance " + dist_str(got) +
+                                    (err.empty() ? "" : " exception " + err) + "\n",
+                                shrink_failures);
     }
   }
   (void)wf->memory_bytes();
   return "";
 }
 
-WavefrontSweep run_wavefront_seeds(const std::vector<std::uint64_t>& seeds,
-                                   std::size_t max_reports) {
+}  // namespace
+
+std::string check_wavefront_seed(std::uint64_t seed, WavefrontTally& tally, bool verbose,
+                                 bool shrink_failures, WaveMetric metric) {
+  return metric == WaveMetric::Octilinear
+             ? check_seed<OctMetric>(seed, tally, verbose, shrink_failures)
+             : check_seed<L1Metric>(seed, tally, verbose, shrink_failures);
+}
+
+WavefrontSweep run_wavefront_seeds(const std::vector<std::uint64_t>& seeds, std::size_t max_reports,
+                                   WaveMetric metric) {
   install_crash_handler();
   const bool trace = std::getenv("TAUT_WAVEFRONT_TRACE") != nullptr;
   WavefrontSweep out;
   const auto start = std::chrono::steady_clock::now();
   for (const u64 seed : seeds) {
-    set_crash_seed(seed);
-    if (trace) std::fprintf(stderr, "wavefront seed %llu\n", static_cast<unsigned long long>(seed));
+    set_crash_seed(seed, metric);
+    if (trace)
+      std::fprintf(stderr, "%swavefront seed %llu\n",
+                   metric == WaveMetric::Octilinear ? "octilinear " : "",
+                   static_cast<unsigned long long>(seed));
     const std::string f =
-        check_wavefront_seed(seed, out.tally, false, out.reports.size() < max_reports);
+        check_wavefront_seed(seed, out.tally, false, out.reports.size() < max_reports, metric);
     if (!f.empty()) {
       out.failed_seeds.push_back(seed);
       if (out.reports.size() < max_reports) out.reports.push_back(f);
@@ -1325,15 +1415,16 @@ WavefrontSweep run_wavefront_seeds(const std::vector<std::uint64_t>& seeds,
   return out;
 }
 
-WavefrontSweep run_wavefront_sweep(std::uint64_t first, std::int64_t count,
-                                   std::size_t max_reports) {
+WavefrontSweep run_wavefront_sweep(std::uint64_t first, std::int64_t count, std::size_t max_reports,
+                                   WaveMetric metric) {
   std::vector<u64> seeds;
   for (i64 i = 0; i < count; ++i) seeds.push_back(first + static_cast<u64>(i));
-  return run_wavefront_seeds(seeds, max_reports);
+  return run_wavefront_seeds(seeds, max_reports, metric);
 }
 
-std::optional<std::uint64_t> wavefront_seed_from_env() {
-  const char* s = std::getenv("TAUT_WAVEFRONT_SEED");
+std::optional<std::uint64_t> wavefront_seed_from_env(WaveMetric metric) {
+  const char* s = std::getenv(metric == WaveMetric::Octilinear ? OctMetric::kSeedVariable
+                                                               : L1Metric::kSeedVariable);
   if (!s || !*s) return std::nullopt;
   char* end = nullptr;
   const unsigned long long v = std::strtoull(s, &end, 10);
@@ -1352,6 +1443,36 @@ void expect_clean_sweep(const WavefrontSweep& sw) {
   EXPECT_EQ(sw.tally.invalid_inputs, 0) << "the generator made invalid polygons";
   EXPECT_EQ(sw.tally.stats_issue_seeds, 0) << "implausible WavefrontStats, first:\n"
                                            << sw.tally.first_stats_issue;
+}
+
+void run_random_wavefront_test(WaveMetric metric) {
+  if (const auto seed = wavefront_seed_from_env(metric)) {
+    WavefrontTally tally;
+    EXPECT_EQ(check_wavefront_seed(*seed, tally, /*verbose=*/true, /*shrink_failures=*/true, metric), "");
+    std::printf("%s\n", tally.summary().c_str());
+    return;
+  }
+  const WavefrontSweep sw = run_wavefront_sweep(1, 2000, 3, metric);
+  std::printf("%s\n%.2f s\n", sw.tally.summary().c_str(), sw.seconds);
+  expect_clean_sweep(sw);
+  // The generator exercises what it is meant to (the counts that depend on the wavefront's
+  // answers, paths and bends, only count agreeing targets; the others are the reference's).
+  const WavefrontTally& t = sw.tally;
+  EXPECT_EQ(t.instances, 2000);
+  for (const char* f : {"gen-rects", "gen-polygons", "gen-maze", "gen-degenerate", "grid-rects",
+                        "grid-diagonal", "rings", "pinches", "fine"}) {
+    EXPECT_GE(t.families.count(f) ? t.families.at(f) : 0, 200) << f;
+  }
+  EXPECT_GE(t.comparisons, 20000);
+  EXPECT_GE(t.multi_source_runs, 1500);
+  EXPECT_GE(t.unreachable, 500);
+  EXPECT_GE(t.split_runs, 200);
+  EXPECT_GE(t.pinch_points, 300);
+  EXPECT_GE(t.boundary_points, 3000);
+  EXPECT_GE(t.source_is_target, 300);
+  EXPECT_GE(t.vertex_checks, 20000);
+  EXPECT_GE(t.not_free, 5000);
+  EXPECT_GE(t.bends, 5000);
 }
 
 }  // namespace taut::test

@@ -1,7 +1,18 @@
 // Seeded random instances for checking router::L1Wavefront against the brute-force reference
 // oracle::L1Reference (tests/oracle/l1_oracle.h), shared by tests/router/wavefront_test.cpp
 // (a few thousand instances, runs in make test) and tests/router/wavefront_long_test.cpp
-// (tens of thousands, label "long").
+// (tens of thousands, label "long"); and, with WaveMetric::Octilinear, router::OctWavefront
+// against oracle::OctilinearReference (tests/oracle/oct_oracle.h), by
+// tests/router/oct_wavefront_test.cpp and tests/router/oct_wavefront_long_test.cpp.
+//
+// Both metrics run the same generator, the same queries (a seed means the same instance and the
+// same queries in either metric) and the same checks, written once over a small metric-traits
+// struct in wavefront_cases.cpp. Only these differ: distances are int64 for L1 and exact
+// geom::Root2 numbers a + b*sqrt2 for the octilinear metric (compared exactly, printed as
+// "a+b*sqrt2 (~value)"); target paths are measured by the reference's check_path in its metric
+// (the octilinear paths have links of any direction, each measured by d8); a stop_early run is
+// Stop::AllTargets for OctWavefront, a full run Stop::Never; and the check of
+// router::l1_distance is L1 only.
 //
 // One seed is one instance: make_wavefront_case(seed) draws a layout from one of the families
 // below with std::mt19937_64(seed) (hand-written range mapping, no std distributions, so a seed
@@ -32,10 +43,12 @@
 // On a mismatch the report names the seed, the family, the instance (domain and obstacle rings
 // as C++ initializers), the query and both answers, then the same mismatch on an instance shrunk
 // by dropping obstacles, holes, sources and targets while it still fails: paste it into a
-// hand-written test, or add the seed to the regression table of wavefront_test.cpp.
-// TAUT_WAVEFRONT_SEED=N runs only seed N and prints every query and answer
-// (wavefront_seed_from_env); TAUT_WAVEFRONT_TRACE=1 prints each seed before it runs. A crash
-// (signal) prints the seed being checked; a sanitizer report does not (use the trace).
+// hand-written test, or add the seed to the regression table of wavefront_test.cpp
+// (oct_wavefront_test.cpp for the octilinear metric).
+// TAUT_WAVEFRONT_SEED=N runs only seed N of the L1 test and TAUT_OCT_SEED=N only seed N of the
+// octilinear test, printing every query and answer (wavefront_seed_from_env(metric));
+// TAUT_WAVEFRONT_TRACE=1 prints each seed before it runs (either metric). A crash (signal)
+// prints the seed being checked; a sanitizer report does not (use the trace).
 #pragma once
 
 #include <cstdint>
@@ -49,6 +62,10 @@
 namespace taut::test {
 
 inline constexpr std::uint64_t kLargeSeedBase = 1'000'000'000'000ULL;
+
+// Which engine and reference the checks compare: L1Wavefront with L1Reference, or OctWavefront
+// with OctilinearReference.
+enum class WaveMetric { L1, Octilinear };
 
 struct WavefrontCase {
   std::uint64_t seed = 0;
@@ -104,7 +121,7 @@ struct WavefrontTally {
 // fails). Implausible stats do not count here: they go to tally.stats_issue_seeds and
 // tally.first_stats_issue. verbose: print the instance and every answer to stdout.
 std::string check_wavefront_seed(std::uint64_t seed, WavefrontTally& tally, bool verbose = false,
-                                 bool shrink_failures = true);
+                                 bool shrink_failures = true, WaveMetric metric = WaveMetric::L1);
 
 struct WavefrontSweep {
   WavefrontTally tally;
@@ -113,18 +130,25 @@ struct WavefrontSweep {
   double seconds = 0;
 };
 
-// Seeds first, first + 1, ..., first + count - 1.
 // Reports every failure of a sweep as a gtest failure: the per-seed reports, the failing seed
 // list, invalid generated inputs and implausible stats.
 void expect_clean_sweep(const WavefrontSweep& sw);
 
+// Seeds first, first + 1, ..., first + count - 1.
 WavefrontSweep run_wavefront_sweep(std::uint64_t first, std::int64_t count,
-                                   std::size_t max_reports = 3);
+                                   std::size_t max_reports = 3, WaveMetric metric = WaveMetric::L1);
 // Any list of seeds (the regression table).
 WavefrontSweep run_wavefront_seeds(const std::vector<std::uint64_t>& seeds,
-                                   std::size_t max_reports = 3);
+                                   std::size_t max_reports = 3, WaveMetric metric = WaveMetric::L1);
 
-// TAUT_WAVEFRONT_SEED, when set to a number.
-std::optional<std::uint64_t> wavefront_seed_from_env();
+// TAUT_WAVEFRONT_SEED (L1) or TAUT_OCT_SEED (Octilinear), when set to a number.
+std::optional<std::uint64_t> wavefront_seed_from_env(WaveMetric metric = WaveMetric::L1);
+
+// The body of the random tests of wavefront_test.cpp and oct_wavefront_test.cpp: with the
+// metric's seed variable set (wavefront_seed_from_env), that one seed verbosely; otherwise seeds
+// 1..2000 (the same instances and queries for both metrics), every failure reported, and the
+// generator's coverage (families, multi-source runs, unreachable targets, pinches, walls, ...)
+// required to reach fixed floors.
+void run_random_wavefront_test(WaveMetric metric);
 
 }  // namespace taut::test
