@@ -29,7 +29,8 @@ run: build
 	@# exit status 1 = some nets are not routed (each is named on stderr, with its reason)
 	$(BUILD)/tools/taut route designs/demo.xml -o out/demo.routed.xml --svg out/demo.svg --stats out/demo.stats.json || test $$? -eq 1
 	$(BUILD)/tools/taut check out/demo.routed.xml --json > out/demo.check.json
-	@echo "wrote out/demo.routed.xml, out/demo.svg, out/demo.stats.json, out/demo.check.json"
+	$(BUILD)/tools/taut route designs/demo.xml --orientations octilinear -q -o out/demo.oct.routed.xml --svg out/demo.oct.svg || test $$? -eq 1
+	@echo "wrote out/demo.routed.xml, out/demo.svg, out/demo.stats.json, out/demo.check.json, and octilinear wires in out/demo.oct.routed.xml, out/demo.oct.svg"
 
 test: build build-asan
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE long

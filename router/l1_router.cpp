@@ -20,7 +20,8 @@ geom::Box ring_box(const geom::Ring& r) {
 }
 }  // namespace
 
-L1Router::L1Router(const geom::Box& domain, std::span<const geom::Polygon> obstacles)
+template <class W>
+BasicRouter<W>::BasicRouter(const geom::Box& domain, std::span<const geom::Polygon> obstacles)
     : wavefront_(domain, obstacles), staircase_(domain, obstacles) {
   auto add = [&](const geom::Ring& r) {
     for (const Point v : r) {
@@ -32,16 +33,19 @@ L1Router::L1Router(const geom::Box& domain, std::span<const geom::Polygon> obsta
     add(p.outer);
     for (const geom::Ring& h : p.holes) add(h);
   }
-  for (auto* v : {&xs_, &ys_}) {
-    std::sort(v->begin(), v->end());
-    v->erase(std::unique(v->begin(), v->end()), v->end());
-  }
+  auto distinct = [](auto& v) {
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+  };
+  distinct(xs_);
+  distinct(ys_);
   obstacles_.assign(obstacles.begin(), obstacles.end());
   for (const geom::Polygon& p : obstacles_) obstacle_boxes_.push_back(ring_box(p.outer));
 }
 
-L1Wire L1Router::shortest(geom::Point from, geom::Point to) {
-  L1Wire w;
+template <class W>
+typename BasicRouter<W>::Wire BasicRouter<W>::shortest(geom::Point from, geom::Point to) {
+  Wire w;
   if (!wavefront_.is_free(from)) {
     w.status = WireStatus::SourceNotFree;
     return w;
@@ -50,19 +54,21 @@ L1Wire L1Router::shortest(geom::Point from, geom::Point to) {
     w.status = WireStatus::TargetNotFree;
     return w;
   }
-  wavefront_.run({&from, 1}, {&to, 1}, /*stop_early=*/true);
+  wavefront_.run({&from, 1}, {&to, 1}, W::Stop::AllTargets);
   return finish(0);
 }
 
-L1Wire L1Router::finish(std::optional<std::size_t> target) {
-  L1Wire w;
+template <class W>
+typename BasicRouter<W>::Wire BasicRouter<W>::finish(std::optional<std::size_t> target) {
+  Wire w;
   if (target) w.length = wavefront_.target_distance(*target);
   if (!w.length) {
     w.status = WireStatus::Unreachable;
     return w;
   }
   w.polygonal = wavefront_.target_path(*target);
-  auto stairs = staircase_.rectilinear(w.polygonal, &staircase_stats_);
+  auto stairs = kOctilinear ? staircase_.octilinear(w.polygonal, &staircase_stats_)
+                            : staircase_.rectilinear(w.polygonal, &staircase_stats_);
   if (!stairs) {
     w.status = WireStatus::NoIntegerStaircase;
     return w;
@@ -161,7 +167,8 @@ bool interiors_meet(const geom::Polygon& p, const geom::Polygon& q) {
 }
 }  // namespace
 
-std::optional<std::size_t> L1Router::pin_meets_obstacle(const geom::Polygon& pin) const {
+template <class W>
+std::optional<std::size_t> BasicRouter<W>::pin_meets_obstacle(const geom::Polygon& pin) const {
   if (is_point(pin)) return std::nullopt;
   geom::Polygon p = pin;  // interior on the left of every edge
   if (geom::twice_area(p.outer) < 0) std::reverse(p.outer.begin(), p.outer.end());
@@ -190,7 +197,17 @@ bool pin_shape_supported(const geom::Polygon& pin) {
   return ok;
 }
 
-std::vector<Point> L1Router::pin_candidates(const geom::Polygon& pin, const geom::Polygon& other) const {
+template <class W>
+bool BasicRouter<W>::supports_pin(const geom::Polygon& pin) {
+  if (!pin_shape_supported(pin)) return false;
+  bool ok = true;
+  if (kOctilinear)
+    for_each_edge(pin, [&](Point a, Point b) { ok = ok && (a.x == b.x || a.y == b.y); });
+  return ok;
+}
+
+template <class W>
+std::vector<Point> BasicRouter<W>::pin_candidates(const geom::Polygon& pin, const geom::Polygon& other) const {
   std::vector<Point> out(pin.outer.begin(), pin.outer.end());
   for (const geom::Ring& h : pin.holes) out.insert(out.end(), h.begin(), h.end());
   if (is_point(pin)) return out;
@@ -226,9 +243,10 @@ std::vector<Point> L1Router::pin_candidates(const geom::Polygon& pin, const geom
   return out;
 }
 
-L1Wire L1Router::shortest(const geom::Polygon& from, const geom::Polygon& to) {
+template <class W>
+typename BasicRouter<W>::Wire BasicRouter<W>::shortest(const geom::Polygon& from, const geom::Polygon& to) {
   if (is_point(from) && is_point(to)) return shortest(from.outer[0], to.outer[0]);
-  L1Wire w;
+  Wire w;
   std::vector<Point> sources = pin_candidates(from, to), targets = pin_candidates(to, from);
   auto keep_free = [&](std::vector<Point>& v) {
     v.erase(std::remove_if(v.begin(), v.end(), [&](Point p) { return !wavefront_.is_free(p); }), v.end());
@@ -256,13 +274,13 @@ L1Wire L1Router::shortest(const geom::Polygon& from, const geom::Polygon& to) {
     return std::nullopt;
   };
   if (const auto p = touching()) {
-    w.length = 0;
+    w.length = Len{};
     w.polygonal = {*p};
     w.points = {*p};
     w.status = WireStatus::Ok;
     return w;
   }
-  wavefront_.run(sources, targets, L1Wavefront::Stop::FirstTarget);
+  wavefront_.run(sources, targets, W::Stop::FirstTarget);
   std::optional<std::size_t> best;
   for (std::size_t i = 0; i < targets.size(); ++i) {
     const auto d = wavefront_.target_distance(i);
@@ -270,6 +288,9 @@ L1Wire L1Router::shortest(const geom::Polygon& from, const geom::Polygon& to) {
   }
   return finish(best);
 }
+
+template class BasicRouter<L1Wavefront>;
+template class BasicRouter<OctWavefront>;
 
 const char* to_string(WireStatus status) {
   switch (status) {

@@ -16,13 +16,19 @@
 //     path's bends, e.g. when sloped blockages pinch every lattice staircase (staircase.h,
 //     Limitation). Returning a longer wire would break "provably shortest" silently, so the
 //     caller reports it instead (a wire of another route of equal length is not searched).
+//
+// The same class serves the octilinear metric (router/oct_router.h: OctRouter = BasicRouter<
+// OctWavefront>, lengths a + b*sqrt2): the wavefront and the staircase style differ, and shape
+// pins must have horizontal and vertical edges only (pin_candidates(), supports_pin()).
 #pragma once
 
 #include <cstdint>
 #include <optional>
+#include <type_traits>
 #include <span>
 #include <vector>
 
+#include "geom/root2.h"
 #include "geom/types.h"
 #include "router/staircase.h"
 #include "router/wavefront.h"
@@ -31,28 +37,37 @@ namespace taut::router {
 
 enum class WireStatus { Ok, SourceNotFree, TargetNotFree, Unreachable, NoIntegerStaircase };
 
-struct L1Wire {
+// Len: std::int64_t (L1) or geom::Root2 (octilinear).
+template <class Len>
+struct BasicWire {
   WireStatus status = WireStatus::Unreachable;
-  std::optional<std::int64_t> length;  // exact L1 distance (Ok, NoIntegerStaircase)
+  std::optional<Len> length;           // exact distance (Ok, NoIntegerStaircase)
   std::vector<geom::Point> polygonal;  // the wavefront's shortest path (Ok, NoIntegerStaircase)
-  std::vector<geom::Point> points;     // the rectilinear wire: bends only, integer (Ok)
+  std::vector<geom::Point> points;     // the rectilinear (octilinear) wire: bends only, integer (Ok)
 };
+using L1Wire = BasicWire<std::int64_t>;
 
-class L1Router {
+// Wavefront: L1Wavefront or OctWavefront (instantiated for those two in l1_router.cpp).
+template <class Wavefront>
+class BasicRouter {
  public:
-  // Obstacles as geom::normalize_obstacles() returns them.
-  L1Router(const geom::Box& domain, std::span<const geom::Polygon> obstacles);
+  static constexpr bool kOctilinear = std::is_same_v<Wavefront, OctWavefront>;
+  using Len = std::conditional_t<kOctilinear, geom::Root2, std::int64_t>;
+  using Wire = BasicWire<Len>;
 
-  // The shortest rectilinear wire from `from` to `to` (points {from} when they are equal).
-  L1Wire shortest(geom::Point from, geom::Point to);
+  // Obstacles as geom::normalize_obstacles() returns them.
+  BasicRouter(const geom::Box& domain, std::span<const geom::Polygon> obstacles);
+
+  // The shortest rectilinear (octilinear) wire from `from` to `to` ({from} when they are equal).
+  Wire shortest(geom::Point from, geom::Point to);
 
   // The shortest rectilinear wire between two pins, each a point (an outer ring of one point,
   // no holes) or a closed polygon with holes (integer vertices, rings in either orientation,
   // every edge horizontal, vertical or at 45 degrees: pin_shape_supported()). The wire starts
   // anywhere on `from` and ends anywhere on `to` (pins that share a point get a wire of one
   // point); SourceNotFree / TargetNotFree mean that no point of that pin is free. Exact: see
-  // pin_candidates().
-  L1Wire shortest(const geom::Polygon& from, const geom::Polygon& to);
+  // pin_candidates(). Octilinear: pin edges horizontal or vertical only (supports_pin()).
+  Wire shortest(const geom::Polygon& from, const geom::Polygon& to);
 
   // The points of pin `pin` a shortest wire from it may be taken to start at: its vertices, and
   // the horizontal and vertical projections onto its edges of every obstacle vertex and of every
@@ -65,7 +80,19 @@ class L1Router {
   // place). When r is a point of the other pin the pair (s, r) minimises |s - r|_1 over two
   // edges, which is attained with s or r a vertex, the other its projection or a vertex too. For
   // edges at 0, 45 or 90 degrees every candidate is an integer point. Sorted, distinct.
+  // Octilinear: the same candidates, for horizontal and vertical edges. Along a horizontal edge
+  // the octilinear length of s - r, max(|dx|, |dy|) + (sqrt2 - 1) min(|dx|, |dy|) with |dy|
+  // fixed, is convex and least where dx = 0, at r's vertical projection (likewise for vertical
+  // edges), so the argument above holds as it is; for two pins, (s, r) is least with one at an
+  // edge end and the other at its projection, or where they meet. Along a 45-degree edge the
+  // least point is r's projection along the other diagonal, which can be a half-integer point:
+  // an integer wire end then cannot reach the infimum and the candidates above do not cover
+  // the best integer end, which is why such pins are not taken (supports_pin()).
   std::vector<geom::Point> pin_candidates(const geom::Polygon& pin, const geom::Polygon& other) const;
+
+  // Whether shortest(pin, pin) takes this pin: pin_shape_supported(), and for the octilinear
+  // router only horizontal and vertical edges.
+  static bool supports_pin(const geom::Polygon& pin);
 
   // The first obstacle (index into the constructor's obstacles) whose interior meets the
   // interior of a shape pin, exactly; nullopt for a point pin or a shape that at most touches
@@ -74,20 +101,24 @@ class L1Router {
   std::optional<std::size_t> pin_meets_obstacle(const geom::Polygon& pin) const;
 
   bool is_free(geom::Point p) const { return wavefront_.is_free(p); }
-  const L1Wavefront& wavefront() const { return wavefront_; }
+  const Wavefront& wavefront() const { return wavefront_; }
   const StaircaseStats& staircase_stats() const { return staircase_stats_; }
 
  private:
   // The wire to target `target` of the last run (Unreachable when none).
-  L1Wire finish(std::optional<std::size_t> target);
+  Wire finish(std::optional<std::size_t> target);
 
-  L1Wavefront wavefront_;
+  Wavefront wavefront_;
   std::vector<geom::Coord> xs_, ys_;  // the distinct x and y of obstacle vertices, ascending
   std::vector<geom::Polygon> obstacles_;
   std::vector<geom::Box> obstacle_boxes_;
   StaircaseBuilder staircase_;
   StaircaseStats staircase_stats_;
 };
+
+using L1Router = BasicRouter<L1Wavefront>;
+extern template class BasicRouter<L1Wavefront>;
+extern template class BasicRouter<OctWavefront>;
 
 const char* to_string(WireStatus status);
 

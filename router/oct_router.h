@@ -1,9 +1,10 @@
-// Shortest OCTILINEAR wires between two points among obstacles: the octilinear wavefront
-// (router/wavefront.h, OctWavefront) finds the exact length a + b*sqrt2 and a polygonal shortest
-// path, the staircase builder (router/staircase.h, octilinear()) turns each link into a staircase
-// of the two orientations that bracket it (0, 45, 90, 135 degrees), with integer vertices, of
-// the same octilinear length. The octilinear counterpart of L1Router (router/l1_router.h), with
-// the same statuses; point pins only (shape pins: L1Router).
+// Shortest OCTILINEAR wires among obstacles: OctRouter is the router of router/l1_router.h
+// (BasicRouter) run with the octilinear wavefront (router/wavefront.h, OctWavefront), which finds
+// the exact length a + b*sqrt2 and a polygonal shortest path; the staircase builder
+// (router/staircase.h, octilinear()) turns each link into a staircase of the two orientations
+// that bracket it (0, 45, 90, 135 degrees), with integer vertices, of the same octilinear length.
+// Same statuses, same shape-pin rules except that shape pins must have horizontal and vertical
+// edges only (OctRouter::supports_pin(); why: BasicRouter::pin_candidates()).
 //
 //   OctRouter router(normalized.domain, normalized.obstacles);
 //   OctWire w = router.shortest({500, 500}, {8000, 9000});
@@ -20,40 +21,12 @@
 // it; a longer wire is never returned silently.
 #pragma once
 
-#include <optional>
-#include <vector>
-
 #include "geom/root2.h"
-#include "geom/types.h"
 #include "router/l1_router.h"
-#include "router/staircase.h"
-#include "router/wavefront.h"
 
 namespace taut::router {
 
-struct OctWire {
-  WireStatus status = WireStatus::Unreachable;
-  std::optional<geom::Root2> length;   // exact octilinear distance (Ok, NoIntegerStaircase)
-  std::vector<geom::Point> polygonal;  // the wavefront's shortest path (Ok, NoIntegerStaircase)
-  std::vector<geom::Point> points;     // the octilinear wire: bends only, integer (Ok)
-};
-
-class OctRouter {
- public:
-  // Obstacles as geom::normalize_obstacles() returns them.
-  OctRouter(const geom::Box& domain, std::span<const geom::Polygon> obstacles);
-
-  // The shortest octilinear wire from `from` to `to` (points {from} when they are equal).
-  OctWire shortest(geom::Point from, geom::Point to);
-
-  bool is_free(geom::Point p) const { return wavefront_.is_free(p); }
-  const OctWavefront& wavefront() const { return wavefront_; }
-  const StaircaseStats& staircase_stats() const { return staircase_stats_; }
-
- private:
-  OctWavefront wavefront_;
-  StaircaseBuilder staircase_;
-  StaircaseStats staircase_stats_;
-};
+using OctRouter = BasicRouter<OctWavefront>;
+using OctWire = BasicWire<geom::Root2>;
 
 }  // namespace taut::router

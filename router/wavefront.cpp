@@ -256,7 +256,8 @@ struct RegionT {
 
 // The world bounding box of a wavelet's region, rounded out to integers; false when the region
 // is empty. The region is relaxed to a closed convex polygon (U > c becomes u >= c.a, the level
-// bound u + v >= start.a; stop edges exactly) and clipped from the box `frame` by
+// bound u + v >= start.a for L1, a rational line below the octilinear level bound (see the code);
+// stop edges exactly) and clipped from the box `frame` by
 // Sutherland-Hodgman. Every vertex is kept as the pair of input lines it lies on and computed
 // exactly from them: lines are a*x + b*y <= c with |a|, |b| < 2^31 and |c| < 2^62, so a vertex
 // is (xn / den, yn / den) with |den| < 2^63 and |xn|, |yn| < 2^94, and the side test
@@ -733,7 +734,8 @@ struct WaveCore {
   std::vector<typename M::Bits> ent_bits;           // per entity: compute_wedge_bits()
   uint32_t nvent = 0;
   KdTree<M> vertex_tree;
-  // Track-ray answers per vertex point and world direction (N, S, E, W): the edge id hit, or
+  // Track-ray answers per vertex point and world direction (N, S, E, W, and for octilinear NE,
+  // SW, NW, SE; M::kRaySlots per point): the edge id hit, or
   // kNone (sweep_rays()). Query points shoot on the R-tree instead (shoot_uncached()).
   std::vector<uint32_t> ray_cache;
   std::vector<uint32_t> box_edges;  // scratch for edges_in_box
@@ -910,7 +912,8 @@ struct WaveCore {
     for (int mode = 0; mode < M::kRaySlots / 2; ++mode) sweep_rays(mode);
   }
 
-  // Track rays of every vertex point at once, by two plane sweeps (O(n log n) in all, against
+  // Track rays of every vertex point at once, by two plane sweeps (four for octilinear; O(n log n)
+  // in all, against
   // one R-tree probe sequence per ray): for the sheared vertical (horizontal) line through each
   // vertex point q, the first ring edge above and below (east and west of) q. The sweep runs
   // in the sheared order of X = x + e*y, which is lexicographic (x, y); for horizontal rays the
@@ -1249,6 +1252,11 @@ struct WaveCore {
         const i128 rel = num - i128{tc(p)} * den;
         if (rel == 0) continue;  // through p: p lies on this edge
         if ((rel > 0 ? 1 : -1) != s) continue;
+        // Within the window: the diagonal modes' box is the square around the ray's segment, so
+        // an edge may meet it and cross the ray beyond t1, past a nearer edge that misses the
+        // box; it is taken only by a wider window. (For the axis modes the box is the segment
+        // itself and every edge meeting it crosses within [t0, t1].)
+        if (s > 0 ? num > i128{t1} * den : num < i128{t1} * den) continue;
         // slope dt/dw with dw > 0
         i64 sn = dt, sd = dw;
         if (sd < 0) {

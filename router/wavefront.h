@@ -47,7 +47,8 @@
 // by two plane sweeps (O(n log n) in all, a balanced tree of the edges crossing the sweep
 // line, exact orientation tests in the sheared order); rays from query points (sources,
 // targets) probe the R-tree of obstacle edges with exact rational crossings (geom/index.h
-// windows; O(log n) per window).
+// windows; O(log n) per window; a crossing beyond the window is not taken, since a nearer edge
+// may miss the window's box, which for diagonal rays is the square around the segment).
 //
 // Degeneracy rule: symbolic shear. Real layouts put vertices on common horizontals, verticals
 // and diagonals; Mitchell assumes they do not (his GPA). taut runs the algorithm on the sheared

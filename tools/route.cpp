@@ -3,8 +3,9 @@
 // (wires of different nets do not see each other yet), and writes the layout with <routes>.
 // Rectilinear: the shortest L1 wire between point pins and shape pins whose edges are
 // horizontal, vertical or at 45 degrees. Octilinear: the shortest wire in 0/45/90/135 degrees
-// between point pins (shape pins are reported, ROUTE-0005). Nets this version cannot route are
-// written as failed with a reason and reported on stderr; the exit status is then 1.
+// between point pins and shape pins whose edges are horizontal or vertical. Nets this version
+// cannot route are written as failed with a reason and reported on stderr; the exit status is
+// then 1.
 #include <chrono>
 #include <iostream>
 
@@ -30,9 +31,10 @@ struct NetResult {
   std::string code;  // ROUTE-xxxx when failed
 };
 
-// Routes with `router` (rectilinear) or, when it is null, with `oct` (octilinear).
-NetResult route_net(const io::Layout& layout, const io::Net& net, router::L1Router* router,
-                    router::OctRouter* oct) {
+// Router: router::L1Router (rectilinear wires) or router::OctRouter (octilinear).
+template <class Router>
+NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router) {
+  constexpr bool oct = Router::kOctilinear;
   NetResult r;
   r.route.net = net.name;
   auto fail = [&](const char* code, std::string reason) {
@@ -58,21 +60,17 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, router::L1Rout
     return g;
   };
   const geom::Polygon ga = pin_geometry(a), gb = pin_geometry(b);
-  if (oct) {
-    for (const io::Pin* pin : {&a, &b})
-      if (!pin->point)
-        return fail("ROUTE-0005", "pin \"" + pin->name +
-                                      "\" is a shape; octilinear wires are routed between point "
-                                      "pins only in this version (rectilinear wires take shape "
-                                      "pins)");
-  }
   for (const auto& [pin, g] : {std::pair{&a, &ga}, std::pair{&b, &gb}}) {
-    if (oct) break;
     if (!router::pin_shape_supported(*g))
       return fail("ROUTE-0005", "pin \"" + pin->name +
                                     "\" has a shape edge that is not horizontal, vertical or at 45 "
                                     "degrees; such shape pins are not routed yet");
-    if (router->pin_meets_obstacle(*g))
+    if (!Router::supports_pin(*g))
+      return fail("ROUTE-0005", "pin \"" + pin->name +
+                                    "\" has a shape edge at 45 degrees; octilinear wires are routed "
+                                    "to shapes with horizontal and vertical edges only in this "
+                                    "version (rectilinear wires take 45-degree edges)");
+    if (router.pin_meets_obstacle(*g))
       return fail("ROUTE-0005", "pin \"" + pin->name +
                                     "\" lies partly under a blockage; shape pins that overlap "
                                     "blockages are not routed yet (ones that touch them are)");
@@ -81,18 +79,10 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, router::L1Rout
     return pin.point ? "at " + point_text(*pin.point) + " " + why_not_free(layout, *pin.point)
                      : std::string("has no free point (its shape lies in blockages or outside the boundary)");
   };
-  struct {
-    router::WireStatus status;
-    std::string length;  // for ROUTE-0003
-    std::vector<geom::Point> points;
-  } w;
-  if (oct) {
-    router::OctWire o = oct->shortest(*a.point, *b.point);
-    w = {o.status, o.length ? length_text(*o.length) : "", std::move(o.points)};
-  } else {
-    router::L1Wire l = router->shortest(ga, gb);
-    w = {l.status, l.length ? std::to_string(*l.length) : "", std::move(l.points)};
-  }
+  const typename Router::Wire w = router.shortest(ga, gb);
+  auto text = [](const auto& len) {
+    if constexpr (oct) return length_text(len); else return std::to_string(len);
+  };
   switch (w.status) {
     case router::WireStatus::Ok: break;
     case router::WireStatus::SourceNotFree:
@@ -105,7 +95,7 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, router::L1Rout
                                     "of them in");
     case router::WireStatus::NoIntegerStaircase:
       return fail("ROUTE-0003", std::string("the shortest ") + (oct ? "octilinear" : "L1") +
-                                    " length is " + w.length + ", but no " +
+                                    " length is " + text(*w.length) + ", but no " +
                                     (oct ? "octilinear" : "rectilinear") +
                                     " wire with integer vertices has that length (sloped "
                                     "blockages pinch every lattice staircase)");
@@ -159,7 +149,7 @@ void add_route(CLI::App& app, int& status) {
     routes.orientations = octilinear ? "octilinear" : "rectilinear";
     std::size_t routed = 0;
     for (const io::Net& net : layout->nets) {
-      NetResult r = route_net(*layout, net, l1 ? &*l1 : nullptr, oct ? &*oct : nullptr);
+      NetResult r = l1 ? route_net(*layout, net, *l1) : route_net(*layout, net, *oct);
       if (r.route.status == "routed") {
         ++routed;
         if (net.sketch)  // said, not dropped silently

@@ -25,7 +25,7 @@ std::string why_not_free(const io::Layout& layout, geom::Point p);
 // "x,y" of a point.
 std::string point_text(geom::Point p);
 
-// A length a + b*sqrt2 for people: "23000" when b = 0, else "16.4852814 (6+7*sqrt2)" (the
+// A length a + b*sqrt2 for people: "23000" when b = 0, else "15.8994949366 (6+7*sqrt2)" (the
 // value to 12 significant digits, then the exact form).
 std::string length_text(const geom::Root2& length);
 

@@ -173,20 +173,70 @@ TEST(OctRoute, GeneratedLayoutsMatchTheReference) {
   EXPECT_GT(diagonal, 30);
 }
 
-TEST(OctRoute, DemoRoutesPointPinNetsAndNamesShapePins) {
+TEST(OctRoute, DemoRoutesAndNamesTheDiamondPin) {
   const std::string dir = temp_dir("oct_route_demo");
   const auto r = run_taut({"route", kDemo, "-o", dir + "/r.xml", "--orientations", "octilinear", "--svg",
                            dir + "/r.svg"});
   EXPECT_EQ(r.status, 1) << r.err;
-  EXPECT_NE(r.err.find("[ROUTE-0005] net \"bump\""), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("point pins only"), std::string::npos) << r.err;
+  // bump's ball is a diamond: 45-degree shape edges are not taken for octilinear wires
+  EXPECT_NE(r.err.find("[ROUTE-0005] net \"bump\" not routed: pin \"ball\" has a shape edge at 45 degrees"),
+            std::string::npos)
+      << r.err;
   io::ReadResult rr = io::read_layout(dir + "/r.xml");
   ASSERT_TRUE(rr.layout && rr.layout->routes);
   EXPECT_EQ(rr.layout->routes->orientations, "octilinear");
   int routed = 0;
   for (const io::Route& route : rr.layout->routes->routes) routed += route.status == "routed";
-  EXPECT_EQ(routed, 3);  // en, sda, rst; clk has 3 pins, bump has shape pins
+  EXPECT_EQ(routed, 3);  // en, sda, rst; clk has 3 pins, bump a diamond pin
   EXPECT_TRUE(file_exists(dir + "/r.svg"));
+}
+
+// Shape pins with horizontal and vertical edges: the wire may end anywhere on them.
+TEST(OctRoute, RectangularShapePins) {
+  const std::string file = layout_file("oct_route_shapes", R"(  <boundary x0="0" y0="0" x1="100" y1="60"/>
+  <blockage id="wall"><rect x0="40" y0="0" x1="44" y1="40"/></blockage>
+  <net name="pads">
+    <pin name="a"><rect x0="10" y0="50" x1="30" y1="55"/></pin>
+    <pin name="b"><rect x0="60" y0="5" x1="70" y1="10"/></pin>
+  </net>
+  <net name="pad_to_point">
+    <pin name="c"><rect x0="10" y0="5" x1="20" y1="10"/></pin>
+    <pin name="d" x="35" y="30"/>
+  </net>
+)");
+  const std::string dir = temp_dir("oct_route_shapes_out");
+  const auto r = run_taut({"route", file, "-o", dir + "/r.xml", "--orientations", "octilinear"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  io::ReadResult rr = io::read_layout(dir + "/r.xml");
+  ASSERT_TRUE(rr.layout && rr.layout->routes);
+  const Reference ref = reference_for(file);
+  // pads: from a's corner (30,50) round the wall's top corner (44,40)... the reference's least
+  // length over every pair of integer points of the two pads
+  auto best = [&](const geom::Box& p, const geom::Box& q) {
+    std::optional<Root2> b;
+    for (int x = p.lo.x; x <= p.hi.x; ++x)
+      for (int y = p.lo.y; y <= p.hi.y; ++y) {
+        std::vector<Point> ts;
+        for (int u = q.lo.x; u <= q.hi.x; ++u)
+          for (int v = q.lo.y; v <= q.hi.y; ++v) ts.push_back({u, v});
+        for (const auto& d : ref.ref->distances({x, y}, ts))
+          if (d && (!b || *d < *b)) b = d;
+      }
+    return b;
+  };
+  const auto want_pads = best({{10, 50}, {30, 55}}, {{60, 5}, {70, 10}});
+  const auto want_pt = best({{10, 5}, {20, 10}}, {{35, 30}, {35, 30}});
+  ASSERT_EQ(rr.layout->routes->routes.size(), 2u);
+  for (int i = 0; i < 2; ++i) {
+    const io::Route& route = rr.layout->routes->routes[static_cast<std::size_t>(i)];
+    ASSERT_EQ(route.status, "routed") << route.reason.value_or("");
+    ASSERT_EQ(route.wires.size(), 1u);
+    const auto& w = route.wires[0].points;
+    const auto len = ref.ref->check_octilinear_path(w);
+    EXPECT_EQ(len, i == 0 ? want_pads : want_pt) << route.net;
+  }
+  // the point pin's wire: from (20,10), the pad corner nearest (35,30): 5 + 15 sqrt2
+  EXPECT_EQ(want_pt, (Root2{5, 15}));
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <optional>
 #include <set>
@@ -358,6 +359,39 @@ TEST(OctWavefront, StatsArePlausible) {
       EXPECT_TRUE(wf.vertex_distance(v).has_value());
       EXPECT_EQ(wf.vertex_distance(v), ref.distance({5, 5}, v));
     }
+}
+
+// A diagonal track ray from a query point (not an obstacle vertex) is shot on the R-tree in
+// growing windows: square boxes around the ray's segment, the first 16 DBU long here. The long
+// edge (15,0)-(39,48) meets the first box but crosses the NE ray from (0,0) only at (30,30),
+// beyond the window; the diamond around (20,20) crosses it at (19.5,19.5) and misses the box.
+// Found in review: the ray stopped at the far edge, the source's wavelet ran through the
+// diamond, and the run threw ("no free wedge of (20,21) holds the wave"). The 20 small squares
+// far away only make the index's typical edge gap, and so the first window, small.
+TEST(OctWavefront, DiagonalRayFromAQueryPointPastALongEdgeInItsWindow) {
+  std::vector<Polygon> in = {{{{15, 0}, {39, 48}, {41, 49}}, {}},
+                             {{{20, 19}, {21, 20}, {20, 21}, {19, 20}}, {}}};
+  for (int i = 0; i < 20; ++i) {
+    const int x = 45 + (i % 5) * 3, y = 2 + (i / 5) * 3;
+    in.push_back(rect(x, y, x + 1, y + 1));
+  }
+  const Scene sc = normalized({{-2, -2}, {60, 60}}, in);
+  const OctilinearReference ref(sc.domain, sc.obstacles);
+  OctWavefront wf(sc.domain, sc.obstacles);
+  const Point s{0, 0};
+  std::vector<Point> targets;  // every free lattice point around and behind the diamond
+  for (int x = 18; x <= 35; ++x)
+    for (int y = 18; y <= 35; ++y)
+      if (ref.is_free({x, y})) targets.push_back({x, y});
+  ASSERT_NO_THROW(wf.run({&s, 1}, targets, Stop::AllTargets));
+  EXPECT_GT(wf.stats().ray_queries, 0);
+  for (std::size_t t = 0; t < targets.size(); ++t)
+    EXPECT_EQ(wf.target_distance(t), ref.distance(s, targets[t])) << str({targets[t]});
+  // Straight behind the diamond, (24,24) is reached round a corner: (0,0)-(19,20)-(20,21)-(24,24)
+  // is (1 + 19 sqrt2) + sqrt2 + (1 + 3 sqrt2).
+  EXPECT_EQ(wf.target_distance(static_cast<std::size_t>(
+                std::find(targets.begin(), targets.end(), Point{24, 24}) - targets.begin())),
+            R(2, 23));
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 // straddle pinches. Shapes whose interior meets a blockage are refused by the router
 // (pin_meets_obstacle); they are checked against a quarter-lattice probe and skipped.
 #include "router/l1_router.h"
+#include "router/oct_router.h"
 
 #include <gtest/gtest.h>
 
@@ -21,6 +22,7 @@
 
 #include "geom/predicates.h"
 #include "oracle/l1_oracle.h"
+#include "oracle/oct_oracle.h"
 #include "support/wavefront_cases.h"
 
 namespace {
@@ -30,7 +32,9 @@ using taut::geom::Location;
 using taut::geom::Point;
 using taut::geom::Polygon;
 using taut::oracle::L1Reference;
+using taut::oracle::OctilinearReference;
 using taut::router::L1Router;
+using taut::router::OctRouter;
 using taut::router::WireStatus;
 
 bool in_pin(Point p, const Polygon& pin) {
@@ -104,8 +108,15 @@ bool probe_meets(const Polygon& pin, const std::vector<Polygon>& obstacles) {
   return false;
 }
 
-TEST(Pins, ShapePinsMatchBruteForce) {
-  int compared = 0, routed = 0, refused = 0, unreachable = 0, touching = 0, shapes = 0;
+// Router L1Router with L1Reference (rectilinear wires), or OctRouter with OctilinearReference
+// (octilinear wires; pins with 45-degree edges are not taken by OctRouter and are skipped).
+struct Counts {
+  int compared = 0, routed = 0, refused = 0, unreachable = 0, touching = 0, shapes = 0, unsupported = 0;
+};
+template <class Router, class Reference>
+Counts shape_pins_match_brute_force() {
+  int compared = 0, routed = 0, refused = 0, unreachable = 0, touching = 0, shapes = 0, unsupported = 0;
+  constexpr bool oct = Router::kOctilinear;
   for (std::uint64_t seed = 1; compared < 600 && seed < 6000; ++seed) {
     const taut::test::WavefrontCase wc = taut::test::make_wavefront_case(seed);
     if (wc.huge || wc.candidates.empty()) continue;
@@ -113,8 +124,8 @@ TEST(Pins, ShapePinsMatchBruteForce) {
     if (std::int64_t{d.hi.x} - d.lo.x > 160 || std::int64_t{d.hi.y} - d.lo.y > 160) continue;
     SCOPED_TRACE("seed " + std::to_string(seed) + " family " + wc.family);
     std::mt19937_64 rng(seed * 7919);
-    const L1Reference ref(wc.domain, wc.obstacles);
-    L1Router router(wc.domain, wc.obstacles);
+    const Reference ref(wc.domain, wc.obstacles);
+    Router router(wc.domain, wc.obstacles);
     for (int q = 0; q < 3; ++q) {
       const Polygon a = random_pin(rng, wc.candidates[rng() % wc.candidates.size()]);
       const Polygon b = random_pin(rng, wc.candidates[rng() % wc.candidates.size()]);
@@ -123,7 +134,12 @@ TEST(Pins, ShapePinsMatchBruteForce) {
         for (const Point v : p->outer)
           inside_domain = inside_domain && v.x >= d.lo.x && v.x <= d.hi.x && v.y >= d.lo.y && v.y <= d.hi.y;
       if (!inside_domain) continue;
-      ASSERT_TRUE(taut::router::pin_shape_supported(a));
+      EXPECT_TRUE(taut::router::pin_shape_supported(a));
+      if (!Router::supports_pin(a) || !Router::supports_pin(b)) {
+        EXPECT_TRUE(oct);
+        ++unsupported;
+        continue;
+      }
       bool refuse = false;
       for (const Polygon* p : {&a, &b}) {
         const bool meets = router.pin_meets_obstacle(*p).has_value();
@@ -143,7 +159,7 @@ TEST(Pins, ShapePinsMatchBruteForce) {
         if (ref.is_free(p)) pa.push_back(p);
       for (const Point p : integer_points(b))
         if (ref.is_free(p)) pb.push_back(p);
-      std::optional<std::int64_t> best;
+      std::optional<typename Router::Len> best;
       for (const Point p : pa)
         for (const auto& dist : ref.distances(p, pb))
           if (dist && (!best || *dist < *best)) best = dist;
@@ -166,27 +182,61 @@ TEST(Pins, ShapePinsMatchBruteForce) {
         ++unreachable;
         continue;
       }
-      ASSERT_TRUE(w.length.has_value()) << what << " status " << taut::router::to_string(w.status);
+      if (!w.length.has_value()) {
+        ADD_FAILURE() << what << " status " << taut::router::to_string(w.status);
+        continue;
+      }
       EXPECT_EQ(*w.length, *best) << what;
       if (w.status != WireStatus::Ok) continue;  // NoIntegerStaircase: the length is still exact
       ++routed;
-      touching += *best == 0;
-      ASSERT_FALSE(w.points.empty());
+      touching += *best == typename Router::Len{};
+      if (w.points.empty()) {
+        ADD_FAILURE() << what << ": no points";
+        continue;
+      }
       EXPECT_TRUE(in_pin(w.points.front(), a)) << what;
       EXPECT_TRUE(in_pin(w.points.back(), b)) << what;
-      for (std::size_t i = 0; i + 1 < w.points.size(); ++i)
-        EXPECT_TRUE(w.points[i].x == w.points[i + 1].x || w.points[i].y == w.points[i + 1].y) << what;
+      for (std::size_t i = 0; i + 1 < w.points.size(); ++i) {
+        if constexpr (oct)
+          EXPECT_TRUE(taut::oracle::is_octilinear(w.points[i], w.points[i + 1])) << what;
+        else
+          EXPECT_TRUE(w.points[i].x == w.points[i + 1].x || w.points[i].y == w.points[i + 1].y) << what;
+      }
       if (w.points.size() > 1) {
-        EXPECT_EQ(ref.check_path(w.points), best) << what;
+        if constexpr (oct)
+          EXPECT_EQ(ref.check_octilinear_path(w.points), best) << what;
+        else
+          EXPECT_EQ(ref.check_path(w.points), best) << what;
       }
     }
   }
-  std::printf("compared %d (routed %d, unreachable %d, touching pins %d, shapes %d), refused %d\n", compared,
-              routed, unreachable, touching, shapes, refused);
-  EXPECT_GE(compared, 600);
-  EXPECT_GE(routed, 300);
-  EXPECT_GE(refused, 20);
-  EXPECT_GE(touching, 5);
+  std::printf("compared %d (routed %d, unreachable %d, touching pins %d, shapes %d), refused %d, %d with a "
+              "shape the router does not take\n",
+              compared, routed, unreachable, touching, shapes, refused, unsupported);
+  return {compared, routed, refused, unreachable, touching, shapes, unsupported};
+}
+
+TEST(Pins, ShapePinsMatchBruteForce) {
+  const Counts c = shape_pins_match_brute_force<L1Router, L1Reference>();
+  EXPECT_GE(c.compared, 600);
+  EXPECT_GE(c.routed, 300);
+  EXPECT_GE(c.refused, 20);
+  EXPECT_GE(c.touching, 5);
+  EXPECT_EQ(c.unsupported, 0);
+}
+
+// The same for octilinear wires: the candidates add the diagonal projections, and every wire
+// is checked octilinear, free, from pin to pin, of the least octilinear length over every pair
+// of free integer points of the two shapes. Diamonds and 45-degree triangles are skipped
+// (OctRouter::supports_pin: their diagonal projections can be half-integers).
+TEST(Pins, OctilinearShapePinsMatchBruteForce) {
+  const Counts c = shape_pins_match_brute_force<OctRouter, OctilinearReference>();
+  EXPECT_GE(c.compared, 600);
+  EXPECT_GE(c.routed, 250);
+  EXPECT_GE(c.refused, 10);
+  EXPECT_GE(c.touching, 5);
+  EXPECT_GE(c.shapes, 300);
+  EXPECT_GT(c.unsupported, 100);
 }
 
 // Hand cases with the answers worked out.
