@@ -974,7 +974,7 @@ struct WaveCore {
       MP q;
     };
     struct Below {  // bottom-to-top order of the edges crossing the sweep line
-      using is_transparent = void;
+      struct is_transparent {};  // lower_bound(Key) (a type, not a typedef GCC calls unused)
       const std::vector<std::array<uint32_t, 2>>* lr;
       const decltype(mp)* to;
       decltype(lex_less) less;

@@ -101,9 +101,13 @@ void add_check(CLI::App& app, int& status) {
       auto t2 = Clock::now();
       if (layout->routes) {
         // What can be checked today: the length and bends written for each routed net equal
-        // those recomputed from its wires. Connectivity and clearance come with the
+        // those recomputed from its wires, and with <routes orientations="rectilinear"> or
+        // "octilinear" every wire segment runs in those directions (CHECK-0002, the first
+        // offending segment of each route). Connectivity and clearance come with the
         // independent checker (router/check, issue #7) and are not claimed here.
-        int mismatches = 0;
+        int mismatches = 0, off_orientation = 0;
+        const std::string& orientations = layout->routes->orientations;
+        const bool check_directions = orientations == "rectilinear" || orientations == "octilinear";
         for (const io::Route& r : layout->routes->routes) {
           if (r.status != "routed") continue;
           std::vector<std::vector<geom::Point>> wires;
@@ -123,13 +127,35 @@ void add_check(CLI::App& app, int& status) {
           };
           if (r.length && *r.length != length) mismatch("length", *r.length, length);
           if (r.bends && *r.bends != bends) mismatch("bends", std::to_string(*r.bends), std::to_string(bends));
+          if (!check_directions) continue;
+          bool reported = false;
+          for (const io::Wire& w : r.wires)
+            for (std::size_t i = 1; i < w.points.size() && !reported; ++i) {
+              const geom::Point a = w.points[i - 1], b = w.points[i];
+              const std::int64_t dx = std::int64_t{b.x} - a.x, dy = std::int64_t{b.y} - a.y;
+              const bool ok = dx == 0 || dy == 0 || (orientations == "octilinear" && (dx == dy || dx == -dy));
+              if (ok) continue;
+              reported = true;
+              ++off_orientation;
+              Diagnostic d{Severity::Error, "CHECK-0002", args->file, r.line, 0,
+                           "route \"" + r.net + "\": the wire segment " + std::to_string(a.x) + "," +
+                               std::to_string(a.y) + " " + std::to_string(b.x) + "," + std::to_string(b.y) +
+                               " is not " + (orientations == "octilinear" ? "at 0, 45, 90 or 135 degrees"
+                                                                            : "horizontal or vertical") +
+                               " (<routes orientations=\"" + orientations + "\">)"};
+              diags.push_back(d);
+              std::cerr << format(d) << '\n';
+            }
         }
         j["routes_check"] = {{"lengths_and_bends", mismatches == 0 ? "ok" : "failed"},
                              {"mismatches", mismatches},
+                             {"orientations", !check_directions        ? "not checked"
+                                              : off_orientation == 0 ? "ok"
+                                                                     : "failed"},
                              {"connectivity_and_clearance", "not checked yet"}};
         j["diagnostics"] = diagnostics_json(diags);
-        j["errors"] = errors + mismatches;
-        if (mismatches) status = kIncomplete;
+        j["errors"] = errors + mismatches + off_orientation;
+        if (mismatches || off_orientation) status = kIncomplete;
       }
       j["free_space"] = {{"triangles", triangles}};
       j["seconds"] = {{"normalize", std::chrono::duration<double>(t1 - t0).count()},
@@ -148,7 +174,11 @@ void add_check(CLI::App& app, int& status) {
       std::cout << '\n';
       if (j.contains("routes_check"))
         std::cout << args->file << ": routes: lengths and bends "
-                  << j["routes_check"]["lengths_and_bends"].get<std::string>()
+                  << j["routes_check"]["lengths_and_bends"].get<std::string>() << "; "
+                  << (j["routes_check"]["orientations"] == "not checked"
+                          ? std::string("orientations not checked")
+                          : layout->routes->orientations + " orientations " +
+                                j["routes_check"]["orientations"].get<std::string>())
                   << "; connectivity and clearance are not checked yet\n";
     }
   });

@@ -145,5 +145,37 @@ TEST(Cli, CheckRoutesLengthsAndBends) {
   EXPECT_EQ(r.err.find("route \"a\""), std::string::npos) << r.err;
 }
 
+// With <routes orientations="rectilinear"> (or "octilinear") every wire segment must run in
+// those directions: the first offending segment of a route is named (CHECK-0002, exit 1).
+TEST(Cli, CheckRoutesOrientations) {
+  const std::string dir = temp_dir("routes_orientations");
+  auto layout = [](const std::string& orientations) {
+    return "<layout name=\"r\" version=\"1\">\n"
+           "  <net name=\"a\"><pin name=\"p\" x=\"0\" y=\"0\"/><pin name=\"q\" x=\"30\" y=\"40\"/></net>\n"
+           "  <routes tool=\"test\" orientations=\"" + orientations + "\">\n"
+           "    <route net=\"a\" status=\"routed\" length=\"52.426\" bends=\"1\"><wire points=\"0,0 30,30 30,40\"/></route>\n"
+           "  </routes>\n</layout>\n";
+  };
+  write_text(dir + "/oct.xml", layout("octilinear"));
+  auto r = run_taut({"check", dir + "/oct.xml"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("octilinear orientations ok"), std::string::npos) << r.out;
+  write_text(dir + "/rect.xml", layout("rectilinear"));
+  r = run_taut({"check", dir + "/rect.xml"});
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find(dir + "/rect.xml:4: error: [CHECK-0002] route \"a\": the wire segment 0,0 30,30 is not "
+                                          "horizontal or vertical"),
+            std::string::npos)
+      << r.err;
+  r = run_taut({"check", dir + "/rect.xml", "--json"});
+  EXPECT_EQ(r.status, 1);
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["routes_check"]["orientations"], "failed");
+  write_text(dir + "/any.xml", layout("any"));
+  r = run_taut({"check", dir + "/any.xml", "--json"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["routes_check"]["orientations"], "not checked");
+}
+
 }  // namespace
 }  // namespace taut::test
