@@ -57,6 +57,14 @@ std::optional<geom::Point> parse_point(const std::string& text) {
   return geom::Point{static_cast<geom::Coord>(*x), static_cast<geom::Coord>(*y)};
 }
 
+std::optional<geom::Point> parse_point_option(const std::string& name, const std::string& text) {
+  auto p = parse_point(text);
+  if (!p)
+    print_usage_error("CLI-0022", name + " \"" + text +
+                                      "\": expected X,Y with integers of at most 2^30 - 1 in absolute value");
+  return p;
+}
+
 void add_routing_options(CLI::App* sub, RoutingOptions& options) {
   sub->add_option("--metric", options.metric, "l1 (default); combined and link are not available yet");
   sub->add_option("--orientations", options.orientations,

@@ -39,6 +39,8 @@ std::optional<io::Layout> load_layout(const std::string& path, const LoadOptions
 
 // "X,Y" with integers as FORMAT.md writes them (-?[0-9]+, |v| <= 2^30 - 1); nullopt otherwise.
 std::optional<geom::Point> parse_point(const std::string& text);
+// parse_point() of the value of option `name`; on failure prints CLI-0022 naming the option.
+std::optional<geom::Point> parse_point_option(const std::string& name, const std::string& text);
 
 // The routing options of `path` and `route` (CLI.md). This version routes the l1 metric with
 // rectilinear output; any other request is refused with a message naming what is missing

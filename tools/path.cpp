@@ -30,15 +30,12 @@ void add_path(CLI::App& app, int& status) {
   add_routing_options(sub, args->routing);
   add_input_options(sub, args->file, args->load, "do not print warnings");
   sub->callback([args, &status] {
-    const auto from = parse_point(args->from), to = parse_point(args->to);
-    for (const auto& [name, text, p] : {std::tuple{"--from", args->from, from}, std::tuple{"--to", args->to, to}})
-      if (!p) {
-        print_usage_error("CLI-0022", std::string(name) + " \"" + text +
-                                          "\": expected X,Y with integers of at most 2^30 - 1 "
-                                          "in absolute value");
-        status = kInvalid;
-        return;
-      }
+    const auto from = parse_point_option("--from", args->from);
+    const auto to = from ? parse_point_option("--to", args->to) : std::nullopt;
+    if (!from || !to) {
+      status = kInvalid;
+      return;
+    }
     const auto layout = load_routing_layout(args->file, args->load, args->routing);
     if (!layout) {
       status = kInvalid;

@@ -1,0 +1,153 @@
+// `taut spm`: for several sources and query points, each query's distance to the nearest source,
+// which source and a shortest path, checked against the brute-force references
+// (tests/oracle/l1_oracle.h, oct_oracle.h): the distance is the least reference distance over
+// the sources, the named source is at that distance, the path runs from it to the query with
+// exactly that length in free space; unreachable or blocked queries get null and exit status 1.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <random>
+
+#include "geom/normalize.h"
+#include "io/layout_geometry.h"
+#include "io/layout_reader.h"
+#include "oracle/l1_oracle.h"
+#include "oracle/oct_oracle.h"
+#include "support/run.h"
+
+namespace taut::test {
+namespace {
+
+using geom::Point;
+using geom::Root2;
+
+// Returns how many queries were reachable (and so had their distance, source and path checked).
+template <class Reference>
+int check_spm_on(const std::string& file, const std::vector<Point>& sources, const std::vector<Point>& queries,
+                  bool oct) {
+  std::vector<std::string> args = {"spm", file, "--json", "-q"};
+  for (const Point s : sources) args.insert(args.end(), {"--source", std::to_string(s.x) + "," + std::to_string(s.y)});
+  for (const Point q : queries) args.insert(args.end(), {"--query", std::to_string(q.x) + "," + std::to_string(q.y)});
+  if (oct) args.insert(args.end(), {"--orientations", "octilinear"});
+  const auto r = run_taut(args);
+  EXPECT_TRUE(r.status == 0 || r.status == 1) << r.err;
+  if (r.status != 0 && r.status != 1) return 0;
+  const auto j = nlohmann::json::parse(r.out);
+  io::ReadResult rr = io::read_layout(file);
+  if (!rr.layout) return 0;
+  std::vector<Point> extra = sources;
+  extra.insert(extra.end(), queries.begin(), queries.end());
+  const auto norm = geom::normalize_obstacles(io::blockage_polygons(*rr.layout), io::routing_domain(*rr.layout, extra));
+  const Reference ref(norm.domain, norm.obstacles);
+  EXPECT_EQ(j["queries"].size(), queries.size());
+  if (j["queries"].size() != queries.size()) return 0;
+  bool any_unreachable = false;
+  int reachable = 0;
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    const auto& q = j["queries"][i];
+    SCOPED_TRACE("query " + std::to_string(queries[i].x) + "," + std::to_string(queries[i].y));
+    EXPECT_EQ(points_of(nlohmann::json::array({q["point"]}))[0], queries[i]);
+    std::optional<Root2> best;
+    std::vector<std::optional<Root2>> per_source;
+    for (const Point s : sources) {
+      std::optional<Root2> d;
+      if constexpr (std::is_same_v<Reference, oracle::L1Reference>) {
+        if (const auto l = ref.distance(s, queries[i])) d = Root2{*l, 0};
+      } else {
+        d = ref.distance(s, queries[i]);
+      }
+      per_source.push_back(d);
+      if (d && (!best || *d < *best)) best = d;
+    }
+    if (!best) {
+      any_unreachable = true;
+      EXPECT_TRUE(q["distance"].is_null());
+      EXPECT_TRUE(q["source"].is_null());
+      EXPECT_TRUE(q.contains("reason"));
+      continue;
+    }
+    ++reachable;
+    if (q["distance"].is_null()) {
+      ADD_FAILURE() << "null distance for a reachable query";
+      continue;
+    }
+    const Root2 got = oct ? Root2{q["distance_exact"][0].get<std::int64_t>(), q["distance_exact"][1].get<std::int64_t>()}
+                          : Root2{q["distance"].get<std::int64_t>(), 0};
+    EXPECT_EQ(got, *best);
+    const std::size_t src = q["source"].get<std::size_t>();
+    if (src >= sources.size()) {
+      ADD_FAILURE() << "source " << src;
+      continue;
+    }
+    EXPECT_EQ(per_source[src], best) << "the named source is not a nearest one";
+    const auto path = points_of(q["points"]);
+    if (path.empty()) {
+      ADD_FAILURE() << "empty path";
+      continue;
+    }
+    EXPECT_EQ(path.front(), sources[src]);
+    EXPECT_EQ(path.back(), queries[i]);
+    if (path.size() > 1) {
+      if constexpr (std::is_same_v<Reference, oracle::L1Reference>)
+        EXPECT_EQ(ref.check_path(path), best->a);
+      else
+        EXPECT_EQ(ref.check_path(path), best);
+    }
+  }
+  EXPECT_EQ(r.status, any_unreachable ? 1 : 0);
+  return reachable;
+}
+
+TEST(Spm, GeneratedLayoutsMatchTheReference) {
+  const std::string dir = temp_dir("spm_gen");
+  int reachable = 0;
+  for (const char* kind : {"rects", "polygons", "maze", "degenerate"}) {
+    for (int seed = 1; seed <= 2; ++seed) {
+      SCOPED_TRACE(std::string(kind) + " seed " + std::to_string(seed));
+      const std::string in = dir + "/" + kind + std::to_string(seed) + ".xml";
+      ASSERT_EQ(run_taut({"gen", kind, "-o", in, "--size", "300", "--nets", "0", "--seed", std::to_string(seed)}).status,
+                0);
+      io::ReadResult rr = io::read_layout(in);
+      ASSERT_TRUE(rr.layout && rr.layout->boundary);
+      const geom::Box b = rr.layout->boundary->box;
+      std::mt19937_64 rng(static_cast<std::uint64_t>(seed) * 31 + kind[0]);
+      auto pick = [&] {
+        return Point{static_cast<int>(b.lo.x + static_cast<std::int64_t>(rng() % static_cast<std::uint64_t>(b.hi.x - b.lo.x + 1))),
+                     static_cast<int>(b.lo.y + static_cast<std::int64_t>(rng() % static_cast<std::uint64_t>(b.hi.y - b.lo.y + 1)))};
+      };
+      std::vector<Point> sources, queries;
+      for (int k = 0; k < 1 + seed * 2; ++k) sources.push_back(pick());
+      for (int k = 0; k < 15; ++k) queries.push_back(pick());
+      reachable += check_spm_on<oracle::L1Reference>(in, sources, queries, false);
+      reachable += check_spm_on<oracle::OctilinearReference>(in, sources, queries, true);
+    }
+  }
+  std::printf("%d reachable queries checked\n", reachable);
+  EXPECT_GT(reachable, 120);  // of 240
+}
+
+TEST(Spm, DemoNamesBlockedAndWalledInQueries) {
+  const std::string demo = std::string(TAUT_SOURCE_DIR) + "/designs/demo.xml";
+  // (10000,9000) is inside dsp; (17000,7500) lies in ring's hole, which only the island shares
+  const auto r = run_taut({"spm", demo, "--source", "500,500", "--source", "23000,13000", "--query", "18000,11500",
+                           "--query", "10000,9000", "--query", "16500,7500", "--json"});
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("[ROUTE-0001] --query 10000,9000 lies inside blockage \"dsp\""), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("[ROUTE-0002] --query no source reaches 16500,7500"), std::string::npos) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["queries"][0]["distance"].get<std::int64_t>(), 6500);  // 5000 across, 1500 down
+  EXPECT_EQ(j["queries"][0]["source"].get<int>(), 1);
+  check_spm_on<oracle::L1Reference>(demo, {{500, 500}, {23000, 13000}}, {{18000, 11500}, {10000, 9000}, {16500, 7500}},
+                                    false);
+  // usage errors exit 2 and print nothing on stdout
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"spm", demo, "--query", "1,1"}, {"spm", demo, "--source", "1,1"},
+        {"spm", demo, "--source", "1.5,1", "--query", "1,1"}}) {
+    const auto u = run_taut(args);
+    EXPECT_EQ(u.status, 2) << u.err;
+    EXPECT_TRUE(u.out.empty()) << u.out;
+  }
+}
+
+}  // namespace
+}  // namespace taut::test

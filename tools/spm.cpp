@@ -1,0 +1,126 @@
+// taut spm FILE --source X,Y [--source X,Y ...] --query X,Y [--query X,Y ...] [--orientations
+// rectilinear|octilinear] [--json]: for each query point, the exact distance to the nearest
+// source among the layout's blockages, which source (0-based, in the order given) and a shortest
+// path (the source, bends at obstacle vertices, the query point).
+//
+// This version answers every query with one multi-source wavefront run (router/wavefront.h:
+// all sources at distance 0, the queries as targets), which is exact; the shortest path map
+// itself, built once and queried in O(log n) per point, comes with the rest of issue #4.
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "router/wavefront.h"
+#include "tools/cli.h"
+#include "tools/commands.h"
+#include "tools/route_common.h"
+
+namespace taut::cli {
+
+void add_spm(CLI::App& app, int& status) {
+  struct Args {
+    std::string file;
+    std::vector<std::string> sources, queries;
+    bool json = false;
+    RoutingOptions routing;
+    LoadOptions load;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* sub = app.add_subcommand(
+      "spm", "Distance, nearest source and shortest path from several sources to query points");
+  sub->add_option("--source", args->sources, "a source point X,Y (repeat the option for more)")->required();
+  sub->add_option("--query", args->queries, "a query point X,Y (repeat the option for more)")->required();
+  sub->add_flag("--json", args->json, "print one JSON document on stdout");
+  add_routing_options(sub, args->routing);
+  add_input_options(sub, args->file, args->load, "do not print warnings");
+  sub->callback([args, &status] {
+    std::vector<geom::Point> sources, queries;
+    for (const auto& [name, texts, out] : {std::tuple{"--source", &args->sources, &sources},
+                                           std::tuple{"--query", &args->queries, &queries}})
+      for (const std::string& text : *texts) {
+        const auto p = parse_point_option(name, text);
+        if (!p) {
+          status = kInvalid;
+          return;
+        }
+        out->push_back(*p);
+      }
+    const auto layout = load_routing_layout(args->file, args->load, args->routing);
+    if (!layout) {
+      status = kInvalid;
+      return;
+    }
+    const bool oct = routing_orientations(args->routing, *layout) == "octilinear";
+    std::vector<geom::Point> all = sources;
+    all.insert(all.end(), queries.begin(), queries.end());
+    const geom::NormalizedObstacles norm = routing_obstacles(*layout, all);
+
+    // Per query: the distance a + b*sqrt2 (b = 0 for L1), the source, the path.
+    struct Answer {
+      std::optional<geom::Root2> distance;
+      std::optional<std::size_t> source;
+      std::vector<geom::Point> path;
+      bool free = true;
+    };
+    std::vector<Answer> answers(queries.size());
+    auto collect = [&](auto& wf, auto to_root2) {
+      wf.run(sources, queries, router::WavefrontStop::AllTargets);
+      for (std::size_t i = 0; i < queries.size(); ++i) {
+        if (const auto d = wf.target_distance(i))
+          answers[i] = {to_root2(*d), wf.target_source(i), wf.target_path(i), true};
+        else
+          answers[i].free = wf.is_free(queries[i]);
+      }
+    };
+    if (oct) {
+      router::OctWavefront wf(norm.domain, norm.obstacles);
+      collect(wf, [](const geom::Root2& d) { return d; });
+    } else {
+      router::L1Wavefront wf(norm.domain, norm.obstacles);
+      collect(wf, [](std::int64_t d) { return geom::Root2{d, 0}; });
+    }
+
+    nlohmann::ordered_json j;
+    j["metric"] = "l1";
+    if (oct) j["orientations"] = "octilinear";
+    auto rows = nlohmann::ordered_json::array();
+    std::size_t unreachable = 0;
+    for (std::size_t i = 0; i < queries.size(); ++i) {
+      const Answer& a = answers[i];
+      nlohmann::ordered_json q;
+      q["point"] = {queries[i].x, queries[i].y};
+      if (a.distance) {
+        if (a.distance->b == 0)
+          q["distance"] = a.distance->a;
+        else
+          q["distance"] = a.distance->to_double();
+        if (oct) q["distance_exact"] = {a.distance->a, a.distance->b};
+        q["source"] = *a.source;
+        auto pts = nlohmann::ordered_json::array();
+        for (const geom::Point p : a.path) pts.push_back({p.x, p.y});
+        q["points"] = pts;
+      } else {
+        ++unreachable;
+        q["distance"] = nullptr;
+        q["source"] = nullptr;
+        q["points"] = nlohmann::ordered_json::array();
+        const std::string code = a.free ? "ROUTE-0002" : "ROUTE-0001";
+        q["reason"] = a.free ? "no source reaches " + point_text(queries[i]) + ": blockages wall it in, or every source out"
+                             : point_text(queries[i]) + " " + why_not_free(*layout, queries[i]);
+        print_usage_error(code, "--query " + q["reason"].get<std::string>());
+      }
+      rows.push_back(q);
+      if (!args->json && a.distance) {
+        std::cout << point_text(queries[i]) << ": distance " << length_text(*a.distance) << " from source "
+                  << *a.source << " (" << point_text(sources[*a.source]) << "), path";
+        for (const geom::Point p : a.path) std::cout << ' ' << point_text(p);
+        std::cout << '\n';
+      }
+    }
+    j["queries"] = rows;
+    if (args->json) std::cout << j.dump() << '\n';
+    status = unreachable ? kIncomplete : kOk;
+  });
+}
+
+}  // namespace taut::cli
