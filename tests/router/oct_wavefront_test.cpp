@@ -27,6 +27,7 @@
 #include "geom/root2.h"
 #include "oracle/oct_oracle.h"
 #include "support/wavefront_cases.h"
+#include "support/wavefront_hand.h"
 
 namespace {
 
@@ -66,68 +67,15 @@ TEST(OctWavefront, RegressionSeeds) {
 // some homotopy class (oct_oracle.h), so each answer below is a taut path's links added up by
 // d8: (dx, dy) with |dx| >= |dy| costs (|dx| - |dy|) + |dy|*sqrt2.
 
-struct Scene {
-  Box domain;
-  std::vector<Polygon> obstacles;
-};
+using taut::test::normalized;
+using taut::test::rect;
+using taut::test::rect_ring;
+using taut::test::Scene;
+using taut::test::str;
 
-Ring rect_ring(int x0, int y0, int x1, int y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
-Polygon rect(int x0, int y0, int x1, int y1) { return {rect_ring(x0, y0, x1, y1), {}}; }
-
-Scene normalized(const Box& domain, const std::vector<Polygon>& inputs) {
-  const auto n = taut::geom::normalize_obstacles(inputs, domain);
-  return {n.domain, n.obstacles};
-}
-
-std::string str(const std::vector<Point>& path) {
-  std::string s;
-  for (const Point p : path) s += "(" + std::to_string(p.x) + "," + std::to_string(p.y) + ")";
-  return s;
-}
-
-// Runs wf and checks every target against `want` (and the reference, which must agree with the
-// hand-worked answer too), with paths checked as in the random test: from the reported source
-// to the target, links of any direction whose d8 lengths add up to the distance exactly.
-void expect_run(const Scene& sc, OctWavefront& wf, const std::vector<Point>& sources,
-                const std::vector<Point>& targets, const std::vector<Dist>& want,
-                Stop stop = Stop::AllTargets) {
-  ASSERT_EQ(targets.size(), want.size());
-  SCOPED_TRACE("sources " + str(sources) + " targets " + str(targets));
-  const OctilinearReference ref(sc.domain, sc.obstacles);
-  wf.run(sources, targets, stop);
-  for (std::size_t i = 0; i < targets.size(); ++i) {
-    const Point t = targets[i];
-    SCOPED_TRACE("target (" + std::to_string(t.x) + "," + std::to_string(t.y) + ")");
-    Dist best;
-    for (const Point s : sources) {
-      const Dist d = ref.distance(s, t);
-      if (d && (!best || *d < *best)) best = d;
-    }
-    EXPECT_EQ(best, want[i]) << "the reference disagrees with the hand-worked answer";
-    EXPECT_EQ(wf.target_distance(i), want[i]);
-    const std::vector<Point> path = wf.target_path(i);
-    const auto src = wf.target_source(i);
-    if (!want[i]) {
-      EXPECT_TRUE(path.empty()) << str(path);
-      EXPECT_FALSE(src.has_value());
-      continue;
-    }
-    ASSERT_TRUE(src.has_value());
-    ASSERT_LT(*src, sources.size());
-    EXPECT_EQ(ref.distance(sources[*src], t), want[i]) << "source " << *src;
-    ASSERT_FALSE(path.empty());
-    EXPECT_EQ(path.front(), sources[*src]) << str(path);
-    EXPECT_EQ(path.back(), t) << str(path);
-    for (std::size_t k = 0; k + 1 < path.size(); ++k) EXPECT_NE(path[k], path[k + 1]) << str(path);
-    EXPECT_EQ(ref.check_path(path), want[i]) << str(path);
-  }
-  const auto& st = wf.stats();
-  EXPECT_LE(st.labelled, st.entities)
-      << "vertices " << st.vertices << " events " << st.events << " wavelets " << st.wavelets;
-  if (stop == Stop::Never && !sc.obstacles.empty() && !sources.empty() && ref.is_free(sources[0])) {
-    EXPECT_GT(st.events, 0);
-    EXPECT_GT(st.labelled, 0);
-  }
+void expect_run(const Scene& sc, OctWavefront& wf, const std::vector<Point>& sources, const std::vector<Point>& targets,
+                const std::vector<Dist>& want, taut::router::WavefrontStop stop = taut::router::WavefrontStop::AllTargets) {
+  taut::test::expect_run<OctilinearReference>(sc, wf, sources, targets, want, stop);
 }
 
 TEST(OctWavefront, NoObstacles) {

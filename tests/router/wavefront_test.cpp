@@ -20,6 +20,7 @@
 #include "geom/normalize.h"
 #include "oracle/l1_oracle.h"
 #include "support/wavefront_cases.h"
+#include "support/wavefront_hand.h"
 
 namespace {
 
@@ -57,67 +58,15 @@ TEST(Wavefront, RegressionSeeds) {
 // ---------------------------------------------------------------------------------------------
 // Hand-worked cases.
 
-struct Scene {
-  Box domain;
-  std::vector<Polygon> obstacles;
-};
+using taut::test::normalized;
+using taut::test::rect;
+using taut::test::rect_ring;
+using taut::test::Scene;
+using taut::test::str;
 
-Ring rect_ring(int x0, int y0, int x1, int y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
-Polygon rect(int x0, int y0, int x1, int y1) { return {rect_ring(x0, y0, x1, y1), {}}; }
-
-Scene normalized(const Box& domain, const std::vector<Polygon>& inputs) {
-  const auto n = taut::geom::normalize_obstacles(inputs, domain);
-  return {n.domain, n.obstacles};
-}
-
-std::string str(const std::vector<Point>& path) {
-  std::string s;
-  for (const Point p : path) s += "(" + std::to_string(p.x) + "," + std::to_string(p.y) + ")";
-  return s;
-}
-
-// Runs wf and checks every target against `want` (and the reference, which must agree with the
-// hand-worked answer too), with paths checked as in the random test.
-void expect_run(const Scene& sc, L1Wavefront& wf, const std::vector<Point>& sources,
-                const std::vector<Point>& targets, const std::vector<Dist>& want,
-                bool stop_early = true) {
-  ASSERT_EQ(targets.size(), want.size());
-  SCOPED_TRACE("sources " + str(sources) + " targets " + str(targets));
-  const L1Reference ref(sc.domain, sc.obstacles);
-  wf.run(sources, targets, stop_early);
-  for (std::size_t i = 0; i < targets.size(); ++i) {
-    const Point t = targets[i];
-    SCOPED_TRACE("target (" + std::to_string(t.x) + "," + std::to_string(t.y) + ")");
-    Dist best;
-    for (const Point s : sources) {
-      const Dist d = ref.distance(s, t);
-      if (d && (!best || *d < *best)) best = d;
-    }
-    EXPECT_EQ(best, want[i]) << "the reference disagrees with the hand-worked answer";
-    EXPECT_EQ(wf.target_distance(i), want[i]);
-    const std::vector<Point> path = wf.target_path(i);
-    const auto src = wf.target_source(i);
-    if (!want[i]) {
-      EXPECT_TRUE(path.empty()) << str(path);
-      EXPECT_FALSE(src.has_value());
-      continue;
-    }
-    ASSERT_TRUE(src.has_value());
-    ASSERT_LT(*src, sources.size());
-    EXPECT_EQ(ref.distance(sources[*src], t), want[i]) << "source " << *src;
-    ASSERT_FALSE(path.empty());
-    EXPECT_EQ(path.front(), sources[*src]) << str(path);
-    EXPECT_EQ(path.back(), t) << str(path);
-    for (std::size_t k = 0; k + 1 < path.size(); ++k) EXPECT_NE(path[k], path[k + 1]) << str(path);
-    EXPECT_EQ(ref.check_path(path), want[i]) << str(path);
-  }
-  const auto& st = wf.stats();
-  EXPECT_LE(st.labelled, st.entities)
-      << "vertices " << st.vertices << " events " << st.events << " wavelets " << st.wavelets;
-  if (!stop_early && !sc.obstacles.empty() && !sources.empty() && ref.is_free(sources[0])) {
-    EXPECT_GT(st.events, 0);
-    EXPECT_GT(st.labelled, 0);
-  }
+void expect_run(const Scene& sc, L1Wavefront& wf, const std::vector<Point>& sources, const std::vector<Point>& targets,
+                const std::vector<Dist>& want, taut::router::WavefrontStop stop = taut::router::WavefrontStop::AllTargets) {
+  taut::test::expect_run<L1Reference>(sc, wf, sources, targets, want, stop);
 }
 
 TEST(Wavefront, RectangleBetweenSourceAndTarget) {
@@ -134,7 +83,7 @@ TEST(Wavefront, RectangleBetweenSourceAndTarget) {
   // Targets on R's boundary: (40,50) in front, 20; (60,50) behind: 40 + 30 + 30 = 100; a
   // corner (60,80): 40 + 30 = 70 (staircase (20,50) (20,80) (60,80)); (50,50) is inside R.
   expect_run(sc, wf, {{20, 50}}, {{40, 50}, {60, 50}, {60, 80}, {50, 50}, {20, 50}},
-             {20, 100, 70, std::nullopt, 0}, /*stop_early=*/false);
+             {20, 100, 70, std::nullopt, 0}, taut::router::WavefrontStop::Never);
   EXPECT_FALSE(wf.is_free({50, 50}));
   EXPECT_TRUE(wf.is_free({60, 50}));
   EXPECT_TRUE(wf.is_free({0, 0}));
@@ -170,7 +119,7 @@ TEST(Wavefront, TwoSquaresTouchingAtACornerBlockTheDiagonal) {
   // From A's top edge to its right edge: the pinch may not be passed; around A's three other
   // corners 20 + 30 + 30 + 20 (around B: 140).
   expect_run(sc, wf, {{40, 50}}, {{50, 40}}, {20 + 30 + 30 + 20});
-  expect_run(sc, wf, {{40, 60}}, {{60, 40}}, {120}, /*stop_early=*/false);
+  expect_run(sc, wf, {{40, 60}}, {{60, 40}}, {120}, taut::router::WavefrontStop::Never);
   EXPECT_EQ(wf.vertex_distance({50, 50}), 20);
   EXPECT_EQ(wf.vertex_distance({20, 50}), 30);
 }
@@ -190,7 +139,7 @@ TEST(Wavefront, RingWithTheTargetInTheHole) {
   // From inside the hole: everything outside is unreachable.
   expect_run(sc, wf, {{50, 50}}, {{45, 55}, {60, 60}, {90, 90}, {50, 50}},
              {10, 20, std::nullopt, 0},
-             /*stop_early=*/false);
+             taut::router::WavefrontStop::Never);
   EXPECT_EQ(wf.vertex_distance({40, 40}), 20);
   EXPECT_EQ(wf.vertex_distance({20, 20}), std::nullopt);  // outer corner: not reached
   // Both at once: each target from the source on its side.
@@ -228,7 +177,7 @@ TEST(Wavefront, DiamondTouchingTheDomainSide) {
   L1Wavefront wf(sc.domain, sc.obstacles);
   EXPECT_TRUE(wf.is_free({50, 0}));
   expect_run(sc, wf, {{20, 0}}, {{80, 0}, {50, 0}, {40, 10}, {60, 10}}, {140, 30, 30, 130},
-             /*stop_early=*/false);
+             taut::router::WavefrontStop::Never);
   // The tip as a source reaches both sides.
   expect_run(sc, wf, {{50, 0}}, {{20, 0}, {80, 0}}, {30, 30});
 }
@@ -249,7 +198,7 @@ TEST(Wavefront, WallAcrossTheDomain) {
   L1Wavefront wf2(closed.domain, closed.obstacles);
   expect_run(closed, wf2, {{0, 0}}, {{0, 100}, {100, 40}, {100, 60}},
              {std::nullopt, 140, std::nullopt},
-             /*stop_early=*/false);
+             taut::router::WavefrontStop::Never);
   // Closed by a pinch only: [0,50] x [40,50] and [50,100] x [50,60] touch at (50,50).
   const Scene pinched =
       normalized({{0, 0}, {100, 100}}, {rect(0, 40, 50, 50), rect(50, 50, 100, 60)});
@@ -275,7 +224,7 @@ TEST(Wavefront, NoObstacles) {
   L1Wavefront wf(sc.domain, sc.obstacles);
   expect_run(sc, wf, {{0, 0}}, {{100, 100}, {0, 100}, {37, 12}, {101, 0}},
              {200, 100, 49, std::nullopt},
-             /*stop_early=*/false);
+             taut::router::WavefrontStop::Never);
   // The segment is free: no bend is needed (a bend at a domain corner is still a shortest path).
   for (const Point p : wf.target_path(0))
     EXPECT_TRUE(
