@@ -11,6 +11,7 @@
 #include "io/layout_geometry.h"
 #include "io/layout_reader.h"
 #include "oracle/oct_oracle.h"
+#include "support/layout_reference.h"
 #include "support/run.h"
 
 namespace taut::test {
@@ -20,17 +21,9 @@ using geom::Point;
 using geom::Root2;
 const std::string kDemo = std::string(TAUT_SOURCE_DIR) + "/designs/demo.xml";
 
-struct Reference {
-  geom::NormalizedObstacles norm;
-  std::unique_ptr<oracle::OctilinearReference> ref;
-};
+using Reference = LayoutReference<oracle::OctilinearReference>;
 Reference reference_for(const std::string& file, std::vector<Point> extra = {}) {
-  io::ReadResult rr = io::read_layout(file);
-  EXPECT_TRUE(rr.layout.has_value()) << file;
-  Reference r;
-  r.norm = geom::normalize_obstacles(io::blockage_polygons(*rr.layout), io::routing_domain(*rr.layout, extra));
-  r.ref = std::make_unique<oracle::OctilinearReference>(r.norm.domain, r.norm.obstacles);
-  return r;
+  return test::reference_for<oracle::OctilinearReference>(file, extra);
 }
 
 // A wire as the contract promises it; returns its exact octilinear length.

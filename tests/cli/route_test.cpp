@@ -10,6 +10,7 @@
 #include "io/layout_geometry.h"
 #include "io/layout_reader.h"
 #include "oracle/l1_oracle.h"
+#include "support/layout_reference.h"
 #include "support/run.h"
 
 namespace taut::test {
@@ -20,17 +21,9 @@ const std::string kDesigns = std::string(TAUT_SOURCE_DIR) + "/designs/";
 const std::string kDemo = kDesigns + "demo.xml";
 
 // The reference on the layout's obstacles (the same domain rule the commands document).
-struct Reference {
-  geom::NormalizedObstacles norm;
-  std::unique_ptr<oracle::L1Reference> ref;
-};
+using Reference = LayoutReference<oracle::L1Reference>;
 Reference reference_for(const std::string& file, std::vector<Point> extra = {}) {
-  io::ReadResult rr = io::read_layout(file);
-  EXPECT_TRUE(rr.layout.has_value()) << file;
-  Reference r;
-  r.norm = geom::normalize_obstacles(io::blockage_polygons(*rr.layout), io::routing_domain(*rr.layout, extra));
-  r.ref = std::make_unique<oracle::L1Reference>(r.norm.domain, r.norm.obstacles);
-  return r;
+  return test::reference_for<oracle::L1Reference>(file, extra);
 }
 
 // A wire as the contract promises it; returns its L1 length.

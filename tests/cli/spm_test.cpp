@@ -13,6 +13,7 @@
 #include "io/layout_reader.h"
 #include "oracle/l1_oracle.h"
 #include "oracle/oct_oracle.h"
+#include "support/layout_reference.h"
 #include "support/run.h"
 
 namespace taut::test {
@@ -33,12 +34,11 @@ int check_spm_on(const std::string& file, const std::vector<Point>& sources, con
   EXPECT_TRUE(r.status == 0 || r.status == 1) << r.err;
   if (r.status != 0 && r.status != 1) return 0;
   const auto j = nlohmann::json::parse(r.out);
-  io::ReadResult rr = io::read_layout(file);
-  if (!rr.layout) return 0;
   std::vector<Point> extra = sources;
   extra.insert(extra.end(), queries.begin(), queries.end());
-  const auto norm = geom::normalize_obstacles(io::blockage_polygons(*rr.layout), io::routing_domain(*rr.layout, extra));
-  const Reference ref(norm.domain, norm.obstacles);
+  const auto lr = reference_for<Reference>(file, extra);
+  if (!lr.ref) return 0;
+  const Reference& ref = *lr.ref;
   EXPECT_EQ(j["queries"].size(), queries.size());
   if (j["queries"].size() != queries.size()) return 0;
   bool any_unreachable = false;

@@ -1,0 +1,35 @@
+// A brute-force reference (oracle::L1Reference or OctilinearReference) on a layout file's
+// obstacles, normalized in the routing domain the commands use (io::routing_domain with the
+// extra query points), so command-line tests can judge what `taut path/route/spm` printed.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "geom/normalize.h"
+#include "io/layout_geometry.h"
+#include "io/layout_reader.h"
+
+namespace taut::test {
+
+template <class Ref>
+struct LayoutReference {
+  geom::NormalizedObstacles norm;
+  std::unique_ptr<Ref> ref;  // null when the file does not read (a test failure is recorded)
+};
+
+template <class Ref>
+LayoutReference<Ref> reference_for(const std::string& file, const std::vector<geom::Point>& extra = {}) {
+  io::ReadResult rr = io::read_layout(file);
+  EXPECT_TRUE(rr.layout.has_value()) << file;
+  LayoutReference<Ref> r;
+  if (!rr.layout) return r;
+  r.norm = geom::normalize_obstacles(io::blockage_polygons(*rr.layout), io::routing_domain(*rr.layout, extra));
+  r.ref = std::make_unique<Ref>(r.norm.domain, r.norm.obstacles);
+  return r;
+}
+
+}  // namespace taut::test
