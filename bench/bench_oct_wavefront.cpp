@@ -69,31 +69,17 @@ int main(int argc, char** argv) {
   bool all_ok = true;
   for (const std::int64_t target : sizes) {
     Row row;
-    taut::io::GenOptions go;
-    go.kind = *kind;
-    go.size = target;
-    go.nets = 0;
-    go.seed = 42;
-    const taut::io::Layout layout = taut::io::generate_layout(go);
-    std::optional<taut::geom::Box> boundary;
-    if (layout.boundary) boundary = layout.boundary->box;
-    const auto norm = taut::geom::normalize_obstacles(taut::io::blockage_polygons(layout), boundary);
-    std::vector<Point> pts;
-    for (const auto& o : norm.obstacles) {
-      pts.insert(pts.end(), o.outer.begin(), o.outer.end());
-      for (const auto& h : o.holes) pts.insert(pts.end(), h.begin(), h.end());
-    }
+    const taut::bench::BenchLayout bl = taut::bench::bench_layout(*kind, target);
+    const auto& norm = bl.norm;
+    const auto& pts = bl.points;
     row.n = static_cast<std::int64_t>(pts.size());
     row.sort = seconds_of([&] { auto v = pts; std::sort(v.begin(), v.end()); }, reps);
     const auto& dom = norm.domain;
-    std::vector<Point> targets;
-    for (int i = 0; i < 50 && !pts.empty(); ++i) targets.push_back(pts[(pts.size() * i) / 50]);
-    Point source{dom.lo.x, dom.lo.y};
+    const std::vector<Point>& targets = bl.targets;
+    Point source;
     {
-      taut::router::L1Wavefront l1(dom, norm.obstacles);
-      for (std::int64_t k = 0; k < 1'000'000 && !l1.is_free(source); ++k)
-        source = Point{static_cast<taut::geom::Coord>(dom.lo.x + (k * 7919) % (std::int64_t{dom.hi.x} - dom.lo.x + 1)),
-                       static_cast<taut::geom::Coord>(dom.lo.y + (k * 104729) % (std::int64_t{dom.hi.y} - dom.lo.y + 1))};
+      const taut::router::L1Wavefront l1(dom, norm.obstacles);
+      source = taut::bench::bench_source(dom, [&](Point p) { return l1.is_free(p); });
     }
     // Both: construction + the whole field, measured alike.
     std::optional<taut::router::L1Wavefront> l1;

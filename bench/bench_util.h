@@ -7,6 +7,12 @@
 #include <chrono>
 #include <cstddef>
 #include <functional>
+#include <optional>
+#include <vector>
+
+#include "geom/normalize.h"
+#include "io/generate.h"
+#include "io/layout_geometry.h"
 
 namespace taut::bench {
 
@@ -35,6 +41,43 @@ inline double peak_rss_mib() {
 inline std::size_t heap_in_use() {
   const struct mallinfo2 mi = mallinfo2();
   return mi.uordblks + mi.hblkhd;
+}
+
+// A generated layout (seed 42, no nets) of about `size` blockage vertices, normalized, with
+// every obstacle vertex (`points`, the n of the tables) and 50 of them spread over the layout as
+// targets (they let the reference be compared).
+struct BenchLayout {
+  geom::NormalizedObstacles norm;
+  std::vector<geom::Point> points, targets;
+};
+inline BenchLayout bench_layout(io::GenKind kind, std::int64_t size) {
+  io::GenOptions go;
+  go.kind = kind;
+  go.size = size;
+  go.nets = 0;
+  go.seed = 42;
+  const io::Layout layout = io::generate_layout(go);
+  std::optional<geom::Box> boundary;
+  if (layout.boundary) boundary = layout.boundary->box;
+  BenchLayout b;
+  b.norm = geom::normalize_obstacles(io::blockage_polygons(layout), boundary);
+  for (const auto& o : b.norm.obstacles) {
+    b.points.insert(b.points.end(), o.outer.begin(), o.outer.end());
+    for (const auto& h : o.holes) b.points.insert(b.points.end(), h.begin(), h.end());
+  }
+  for (int i = 0; i < 50 && !b.points.empty(); ++i) b.targets.push_back(b.points[(b.points.size() * i) / 50]);
+  return b;
+}
+
+// The source: the first free point of a fixed sequence starting at the domain's lower-left
+// corner (deterministic), so the wave has to cross the whole layout. is_free: a wavefront's.
+template <class IsFree>
+geom::Point bench_source(const geom::Box& dom, IsFree is_free) {
+  geom::Point source{dom.lo.x, dom.lo.y};
+  for (std::int64_t k = 0; k < 1'000'000 && !is_free(source); ++k)
+    source = geom::Point{static_cast<geom::Coord>(dom.lo.x + (k * 7919) % (std::int64_t{dom.hi.x} - dom.lo.x + 1)),
+                         static_cast<geom::Coord>(dom.lo.y + (k * 104729) % (std::int64_t{dom.hi.y} - dom.lo.y + 1))};
+  return source;
 }
 
 }  // namespace taut::bench

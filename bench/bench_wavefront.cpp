@@ -83,38 +83,18 @@ int main(int argc, char** argv) {
       if (n <= max_n) sizes.push_back(n);
   for (const std::int64_t target : sizes) {
     Row row;
-    taut::io::GenOptions go;
-    go.kind = *kind;
-    go.size = target;
-    go.nets = 0;
-    go.seed = 42;
-    const taut::io::Layout layout = taut::io::generate_layout(go);
-    std::optional<taut::geom::Box> boundary;
-    if (layout.boundary) boundary = layout.boundary->box;
-    const auto polys = taut::io::blockage_polygons(layout);
-    const taut::geom::NormalizedObstacles norm = taut::geom::normalize_obstacles(polys, boundary);
-    std::vector<Point> pts;
-    for (const auto& o : norm.obstacles) {
-      pts.insert(pts.end(), o.outer.begin(), o.outer.end());
-      for (const auto& h : o.holes) pts.insert(pts.end(), h.begin(), h.end());
-    }
+    const taut::bench::BenchLayout bl = taut::bench::bench_layout(*kind, target);
+    const auto& norm = bl.norm;
+    const auto& pts = bl.points;
     row.n = static_cast<std::int64_t>(pts.size());
     row.sort = seconds_of([&] { auto v = pts; std::sort(v.begin(), v.end()); }, reps);
 
-    // The source: the free lattice point nearest the domain's lower-left corner region
-    // (deterministic), so the wave has to cross the whole layout.
     const auto& dom = norm.domain;
     std::optional<taut::router::L1Wavefront> wf;
     const std::size_t heap0 = taut::bench::heap_in_use();
     row.build = seconds_of([&] { wf.reset(); wf.emplace(dom, norm.obstacles); }, reps);
-    Point source{dom.lo.x, dom.lo.y};
-    for (std::int64_t k = 0; k < 1'000'000 && !wf->is_free(source); ++k)
-      source = Point{static_cast<taut::geom::Coord>(dom.lo.x + (k * 7919) % (std::int64_t{dom.hi.x} - dom.lo.x + 1)),
-                     static_cast<taut::geom::Coord>(dom.lo.y + (k * 104729) % (std::int64_t{dom.hi.y} - dom.lo.y + 1))};
-    // Targets: 50 obstacle vertices spread over the layout (they are labelled by the field
-    // anyway; asking for them only lets the reference be compared).
-    std::vector<Point> targets;
-    for (int i = 0; i < 50 && !pts.empty(); ++i) targets.push_back(pts[(pts.size() * i) / 50]);
+    const Point source = taut::bench::bench_source(dom, [&](Point p) { return wf->is_free(p); });
+    const std::vector<Point>& targets = bl.targets;
     row.field = seconds_of([&] { wf->run({&source, 1}, targets, /*stop_early=*/false); }, reps);
     const auto& st = wf->stats();
     row.events = st.events;
