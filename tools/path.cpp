@@ -45,21 +45,13 @@ void add_path(CLI::App& app, int& status) {
     const geom::NormalizedObstacles norm = routing_obstacles(*layout, ends);
     const bool oct = routing_orientations(args->routing, *layout) == "octilinear";
     // One wire record for both orientations: the length exactly as a + b*sqrt2 (b = 0 for L1).
-    struct {
-      router::WireStatus status;
-      std::optional<geom::Root2> length;
-      std::vector<geom::Point> polygonal, points;
-    } w;
+    router::BasicWire<geom::Root2> w;
     if (oct) {
-      router::OctRouter router(norm.domain, norm.obstacles);
-      router::OctWire o = router.shortest(*from, *to);
-      w = {o.status, o.length, std::move(o.polygonal), std::move(o.points)};
+      w = router::OctRouter(norm.domain, norm.obstacles).shortest(*from, *to);
     } else {
-      router::L1Router router(norm.domain, norm.obstacles);
-      router::L1Wire l = router.shortest(*from, *to);
-      std::optional<geom::Root2> len;
-      if (l.length) len = geom::Root2{*l.length, 0};
-      w = {l.status, len, std::move(l.polygonal), std::move(l.points)};
+      router::L1Wire l = router::L1Router(norm.domain, norm.obstacles).shortest(*from, *to);
+      w = {l.status, std::nullopt, std::move(l.polygonal), std::move(l.points)};
+      if (l.length) w.length = geom::Root2{*l.length, 0};
     }
     const char* metric_word = oct ? "octilinear" : "L1";
     // JSON: an integer when b = 0, else a number with 17 significant digits (CLI.md: at least 9)
