@@ -1746,6 +1746,40 @@ std::optional<std::int64_t> L1Wavefront::vertex_distance(Point p) const {
   return vertex_distance_of<L1Metric>(*impl_, p);
 }
 
+std::span<const Polygon> L1Wavefront::frame_obstacles() const { return impl_->polys; }
+
+std::vector<L1Wavefront::Wedge> L1Wavefront::vertex_wedges(Point p) const {
+  std::vector<Wedge> out;
+  const Impl& c = *impl_;
+  const uint32_t v = c.point_id(p);
+  if (v == kNone) return out;
+  for (uint32_t e = c.ent_begin[v]; e < c.ent_begin[v + 1]; ++e) {
+    const auto& en = c.ents[e];
+    Wedge w{c.pts[en.lo], c.pts[en.hi], std::nullopt, std::nullopt};
+    if (en.labelled) {
+      w.distance = en.d.a;
+      if (en.source != kNone) w.source = en.source;
+    }
+    out.push_back(w);
+  }
+  return out;
+}
+
+std::vector<Point> L1Wavefront::wedge_path(Point p, std::size_t k) const {
+  std::vector<Point> out;
+  const Impl& c = *impl_;
+  const uint32_t v = c.point_id(p);
+  if (v == kNone || k >= c.ent_begin[v + 1] - c.ent_begin[v]) return out;
+  const uint32_t e0 = c.ent_begin[v] + static_cast<uint32_t>(k);
+  if (!c.ents[e0].labelled) return out;
+  for (uint32_t x = e0; x != kNone; x = c.ents[x].parent) {
+    const Point q = c.pts[c.ents[x].point];
+    if (out.empty() || out.back() != q) out.push_back(q);
+  }
+  std::reverse(out.begin(), out.end());
+  return out;
+}
+
 const WavefrontStats& L1Wavefront::stats() const { return impl_->stats; }
 
 std::size_t L1Wavefront::memory_bytes() const { return memory_of(*impl_); }

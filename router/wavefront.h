@@ -133,6 +133,23 @@ class L1Wavefront {
   // vertex or was not reached.
   std::optional<std::int64_t> vertex_distance(geom::Point p) const;
 
+  // For structures built on a finished run (router/spm.h). The obstacles the algorithm works
+  // on: the input's, with the domain side merged into a frame obstacle (an outer ring around
+  // the domain and the domain as its hole), so every wall of free space is an obstacle edge.
+  std::span<const geom::Polygon> frame_obstacles() const;
+  // The free wedges of obstacle vertex p (empty when p is not one): each runs counter-
+  // clockwise from the direction of ring neighbour `lo` to that of `hi`, with its distance and
+  // source after run() (nullopt when not reached). A pinch has one wedge per free side.
+  struct Wedge {
+    geom::Point lo, hi;
+    std::optional<std::int64_t> distance;
+    std::optional<std::size_t> source;
+  };
+  std::vector<Wedge> vertex_wedges(geom::Point p) const;
+  // A shortest path source -> bends -> p reaching p in its wedge k (vertex_wedges() order);
+  // empty when not reached.
+  std::vector<geom::Point> wedge_path(geom::Point p, std::size_t k) const;
+
   const WavefrontStats& stats() const;
   // Bytes held by its own arrays (points, entities, k-d tree, ray answers, ...); the R-tree of
   // obstacle edges and the queue are not counted (bench_wavefront measures those by heap use).

@@ -1,0 +1,101 @@
+// The L1 shortest path map of one or more point sources among polygonal obstacles: built once,
+// then the distance to the nearest source, which source, and a shortest path for any query
+// point in O(log n) (Mitchell §2 "SPM", §5 multiple sources; the cells merged by source are the
+// L1 geodesic Voronoi diagram).
+//
+//   L1Map map(normalized.domain, normalized.obstacles, sources);
+//   if (auto a = map.locate({900, 40})) { a->distance; a->source; map.path({900, 40}); }
+//
+// How. One multi-source wavefront run (router/wavefront.h, to the end) labels every obstacle
+// vertex with its exact distance. The map is then a vertical (trapezoidal) decomposition of free
+// space, with on each trapezoid side the exact distance function of the points beyond it:
+//
+//   Every shortest path ends with a straight link from its last bend r (an obstacle vertex or a
+//   source) to the query point q. Cut free space by the vertical walls through every vertex and
+//   source into trapezoids; the link crosses the walls in x order, each inside a trapezoid side.
+//   So d(q) = min over the left-to-right and right-to-left families of "rays": a ray is a root r
+//   carried along monotone paths from wall to wall, with value d(r) + |x - x_r| + |y - y_r| on
+//   the points it reaches. A ray that went up (y >= y_r) reaches, in the next trapezoid, every
+//   point with y >= a, its threshold (the lowest height at which it entered); one that went down
+//   every point with y <= b. Every value is the length of a real path (so never below d(q)),
+//   and the straight last link is one of them (so d(q) is attained).
+//
+// A side keeps its rays as two staircases (up: thresholds rising, values falling; down: the
+// mirror): a ray that starts no lower and costs no less than another is dropped, since it is
+// beaten wherever it reaches. A query finds its trapezoid with an R-tree of their boxes
+// (Boost.Geometry) and binary-searches the four staircases of its two sides: O(log n).
+//
+// Paths. Among the rays of least value at q the one with the largest root distance d(r) wins:
+// its root sees q straight (if it did not, the taut monotone path from r to q would bend at a
+// vertex v with d(v) = d(r) + |v - r| > d(r) whose ray reaches q as cheaply). The path is the
+// wavefront's shortest path to r, then q: O(k).
+//
+// Exactness. Values are integers; thresholds are the heights where walls meet sloped edges,
+// exact rationals. Degeneracies (shared x, vertical edges, several vertices on one wall) are
+// resolved by the same symbolic shear as the wavefront's: the sweep orders points by (x, y), so
+// walls through vertices on a common vertical are distinct, separated by trapezoids of width 0.
+// Pinches: a wall part below a vertex and the part above it exchange rays only when free space
+// joins them on one side of the vertex; a wedge that only touches the vertex (a pinch) gets the
+// vertex's own distance in that wedge and nothing else.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "geom/types.h"
+
+namespace taut::router {
+
+class L1Map {
+ public:
+  // Obstacles as geom::normalize_obstacles() returns them; sources that are not free are
+  // ignored (no query reaches them); source indices in answers are positions in `sources`.
+  L1Map(const geom::Box& domain, std::span<const geom::Polygon> obstacles,
+        std::span<const geom::Point> sources);
+  ~L1Map();
+  L1Map(L1Map&&) noexcept;
+  L1Map& operator=(L1Map&&) noexcept;
+
+  // Same rule as L1Wavefront::is_free, answered by the map's point location (O(log n)).
+  bool is_free(geom::Point q) const;
+
+  struct Answer {
+    std::int64_t distance = 0;  // exact L1 distance to the nearest source
+    std::size_t source = 0;     // that source's index
+    geom::Point root;           // the last bend (or the source) before q: it sees q straight;
+                                // q itself when q is an obstacle vertex or a source
+  };
+  // nullopt when q is not free or no source reaches it (walled in).
+  std::optional<Answer> locate(geom::Point q) const;
+  // A shortest path: the source, bends at obstacle vertices, q ({q} when q is a source); empty
+  // when locate() is nullopt.
+  std::vector<geom::Point> path(geom::Point q) const;
+
+  // The decomposition's cells (for checks and pictures): trapezoid i lies between the walls
+  // through `left` and `right` (x from left.x to right.x; width 0 between points on a common
+  // vertical, ordered by y), above segment `bottom` and below segment `top` (obstacle edges).
+  struct Trapezoid {
+    geom::Point left, right;
+    geom::Segment bottom, top;
+  };
+  std::vector<Trapezoid> trapezoids() const;
+
+  struct Stats {
+    std::int64_t vertices = 0;    // decomposition points (obstacle vertices, frame, sources)
+    std::int64_t trapezoids = 0;  // free trapezoids (cells of the map before merging by root)
+    std::int64_t rays = 0;        // staircase entries over all trapezoid sides
+    std::int64_t roots = 0;       // (vertex, wedge) roots and sources carrying a ray
+  };
+  const Stats& stats() const;
+  std::size_t memory_bytes() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace taut::router
