@@ -3,13 +3,15 @@
 // source among the layout's blockages, which source (0-based, in the order given) and a shortest
 // path (the source, bends at obstacle vertices, the query point).
 //
-// This version answers every query with one multi-source wavefront run (router/wavefront.h:
-// all sources at distance 0, the queries as targets), which is exact; the shortest path map
-// itself, built once and queried in O(log n) per point, comes with the rest of issue #4.
+// L1 (rectilinear): the shortest path map of the sources (router/spm.h) is built once and each
+// query is a point location in it, O(log n). Octilinear: one multi-source wavefront run
+// (router/wavefront.h: all sources at distance 0, the queries as targets), which is exact; the
+// octilinear map comes with the rest of issue #4.
 #include <iostream>
 
 #include <nlohmann/json.hpp>
 
+#include "router/spm.h"
 #include "router/wavefront.h"
 #include "tools/cli.h"
 #include "tools/commands.h"
@@ -76,8 +78,15 @@ void add_spm(CLI::App& app, int& status) {
       router::OctWavefront wf(norm.domain, norm.obstacles);
       collect(wf, [](const geom::Root2& d) { return d; });
     } else {
-      router::L1Wavefront wf(norm.domain, norm.obstacles);
-      collect(wf, [](std::int64_t d) { return geom::Root2{d, 0}; });
+      // L1: the shortest path map, built once (one wavefront run and a vertical decomposition),
+      // then O(log n) per query.
+      const router::L1Map map(norm.domain, norm.obstacles, sources);
+      for (std::size_t i = 0; i < queries.size(); ++i) {
+        if (const auto a = map.locate(queries[i]))
+          answers[i] = {geom::Root2{a->distance, 0}, a->source, map.path(queries[i]), true};
+        else
+          answers[i].free = map.is_free(queries[i]);
+      }
     }
 
     nlohmann::ordered_json j;

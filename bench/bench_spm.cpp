@@ -1,0 +1,146 @@
+// Benchmark of the L1 shortest path map (router/spm.h, L1Map): build time and size against the
+// number of obstacle vertices n and of sources k, and the time of one distance query, on
+// generated layouts. Baselines measured in the same run (machines are noisy; trust ratios):
+// std::sort of the n vertices (the build's ratio to it), and the same queries answered the way
+// `taut spm` did before the map, one wavefront run per query (router/wavefront.h, stopping at
+// the query): the ratio per query, and after how many queries the map has paid for its build.
+// Every query timed on the wavefront is compared with the map's answer, so a fast wrong map
+// cannot pass.
+//
+//   bench_spm [--sizes N,N,..] [--sources K,K,..] [--kind rects|polygons|maze|degenerate]
+//             [--queries Q] [--wave-queries W]
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "bench/bench_util.h"
+#include "router/spm.h"
+#include "router/wavefront.h"
+
+namespace {
+
+using taut::bench::seconds_of;
+using taut::geom::Point;
+
+std::vector<std::int64_t> parse_list(char* s) {
+  std::vector<std::int64_t> v;
+  for (char* tok = std::strtok(s, ","); tok; tok = std::strtok(nullptr, ",")) v.push_back(std::atoll(tok));
+  return v;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::int64_t> sizes = {1000, 10000, 100000, 1000000}, source_counts = {1, 100, 10000};
+  std::string kind_name = "rects";
+  int nqueries = 100000, wave_queries = 20;
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--sizes") && i + 1 < argc) sizes = parse_list(argv[++i]);
+    else if (!std::strcmp(argv[i], "--sources") && i + 1 < argc) source_counts = parse_list(argv[++i]);
+    else if (!std::strcmp(argv[i], "--kind") && i + 1 < argc) kind_name = argv[++i];
+    else if (!std::strcmp(argv[i], "--queries") && i + 1 < argc) nqueries = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--wave-queries") && i + 1 < argc) wave_queries = std::atoi(argv[++i]);
+    else {
+      std::fprintf(stderr, "usage: %s [--sizes N,..] [--sources K,..] [--kind K] [--queries Q] [--wave-queries W]\n",
+                   argv[0]);
+      return 2;
+    }
+  }
+  const auto kind = taut::io::parse_gen_kind(kind_name);
+  if (!kind) {
+    std::fprintf(stderr, "unknown kind %s\n", kind_name.c_str());
+    return 2;
+  }
+  std::printf("L1 shortest path map, kind %s; times are best of 1, sort = std::sort of the n vertices in the same run\n",
+              kind_name.c_str());
+  std::printf("%9s %6s | %8s %7s %7s | %9s %8s %8s %7s | %8s %9s %9s %8s %s\n", "vertices", "srcs", "build s",
+              "/sort", "/wave", "trapezoids", "rays/trap", "B/vertex", "query us", "wave s", "wave/query", "break-even",
+              "checked", "");
+  struct Point2 {
+    double logn, logt;
+  };
+  std::vector<Point2> growth;
+  int failures = 0;
+  for (const std::int64_t size : sizes) {
+    const auto lay = taut::bench::bench_layout(*kind, size);
+    const auto n = static_cast<std::int64_t>(lay.points.size());
+    const double sort_s = seconds_of(
+        [&] {
+          std::vector<Point> v = lay.points;
+          std::sort(v.begin(), v.end());
+        },
+        3);
+    const auto& dom = lay.norm.domain;
+    // Free points: from a first map's point location (O(log n) each).
+    std::mt19937_64 rng(7);
+    auto random_point = [&] {
+      return Point{static_cast<taut::geom::Coord>(dom.lo.x + static_cast<std::int64_t>(rng() % (std::uint64_t(dom.hi.x) - dom.lo.x + 1))),
+                   static_cast<taut::geom::Coord>(dom.lo.y + static_cast<std::int64_t>(rng() % (std::uint64_t(dom.hi.y) - dom.lo.y + 1)))};
+    };
+    std::vector<Point> free_pts;
+    {
+      taut::router::L1Map probe(dom, lay.norm.obstacles, {});
+      while (static_cast<int>(free_pts.size()) < nqueries + 10000) {
+        const Point p = random_point();
+        if (probe.is_free(p)) free_pts.push_back(p);
+      }
+    }
+    for (const std::int64_t k : source_counts) {
+      std::vector<Point> sources(free_pts.end() - k, free_pts.end());
+      std::vector<Point> queries(free_pts.begin(), free_pts.begin() + nqueries);
+      std::optional<taut::router::L1Map> map;
+      const std::size_t heap0 = taut::bench::heap_in_use();
+      const double build = seconds_of([&] { map.emplace(dom, lay.norm.obstacles, sources); }, 1);
+      const std::size_t bytes = taut::bench::heap_in_use() - heap0;
+      // Query time: every query once (best of 3 passes).
+      std::int64_t sink = 0;
+      const double qs = seconds_of(
+          [&] {
+            for (const Point& q : queries)
+              if (const auto a = map->locate(q)) sink += a->distance;
+          },
+          3);
+      // One wavefront per query (the pre-map way), on the first few queries; answers compared.
+      taut::router::L1Wavefront wf(dom, lay.norm.obstacles);
+      const int w = std::min<int>(wave_queries, nqueries);
+      int checked = 0;
+      const double wave = seconds_of(
+          [&] {
+            for (int i = 0; i < w; ++i) {
+              wf.run(sources, {&queries[i], 1}, taut::router::WavefrontStop::AllTargets);
+              const auto d = wf.target_distance(0);
+              const auto a = map->locate(queries[i]);
+              if (d.has_value() != a.has_value() || (d && *d != a->distance)) ++failures;
+              else ++checked;
+            }
+          },
+          1);
+      const double per_query = qs / nqueries, wave_per = wave / w;
+      const double wave_build = seconds_of(
+          [&] { wf.run(sources, {}, taut::router::WavefrontStop::Never); }, 1);
+      std::printf("%9lld %6lld | %8.3f %7.0f %7.2f | %9lld %8.2f %8.0f %7.2f | %8.4f %9.0f %9.1f %5d/%d %s\n",
+                  static_cast<long long>(n), static_cast<long long>(k), build, build / sort_s, build / wave_build,
+                  static_cast<long long>(map->stats().trapezoids),
+                  static_cast<double>(map->stats().rays) / std::max<std::int64_t>(1, map->stats().trapezoids),
+                  static_cast<double>(bytes) / n, per_query * 1e6, wave_per, wave_per / per_query,
+                  build / std::max(1e-12, wave_per - per_query), checked, w, sink == 42 ? " " : "");
+      std::fflush(stdout);
+      if (k == source_counts.front()) growth.push_back({std::log(static_cast<double>(n)), std::log(build)});
+    }
+  }
+  if (growth.size() >= 2) {
+    const auto& a = growth[growth.size() - 2];
+    const auto& b = growth.back();
+    std::printf("build time grows as n^%.2f between the two largest sizes (%zu sources: the first count)\n",
+                (b.logt - a.logt) / (b.logn - a.logn), static_cast<std::size_t>(source_counts.front()));
+  }
+  std::printf("columns: /sort = build / std::sort of the vertices; /wave = build / one full wavefront run (the\n"
+              "map's own first step); wave s = one wavefront run per query, stopping at it; wave/query = that\n"
+              "over the map's query time; break-even = queries after which the map has paid for its build\n");
+  if (failures) std::printf("MISMATCHES: %d queries differ between the map and the wavefront\n", failures);
+  return failures ? 1 : 0;
+}
