@@ -14,6 +14,7 @@
 
 #include <boost/geometry.hpp>
 #include <boost/geometry/index/rtree.hpp>
+#include <boost/iterator/function_output_iterator.hpp>
 
 #include "geom/index.h"
 #include "geom/predicates.h"
@@ -87,6 +88,8 @@ struct Trap {
   uint32_t bot, top;  // edges
   uint32_t lo[3];     // left staircase: up [lo0, lo1), down [lo1, lo2)
   uint32_t ro[3];     // right staircase
+  // The same geometry as points, copied here so a query's exact test reads one record.
+  Point pl, pr, b0, b1, t0, t1;
 };
 
 struct SideRange {
@@ -372,7 +375,7 @@ struct L1Map::Impl {
       auto open = [&](uint32_t bottom, uint32_t top, Part part, Q lo, Q hi, Point w, bool hw) {
         if (!edges[bottom].free_above || top == kNone) return;
         const uint32_t t = static_cast<uint32_t>(traps.size());
-        traps.push_back(Trap{q, kNone, bottom, top, {0, 0, 0}, {0, 0, 0}});
+        traps.push_back(Trap{q, kNone, bottom, top, {0, 0, 0}, {0, 0, 0}, {}, {}, {}, {}, {}, {}});
         left.push_back({lo, hi});
         right.push_back({});
         gap[bottom] = t;
@@ -388,8 +391,15 @@ struct L1Map::Impl {
     }
     close_begin[n] = static_cast<uint32_t>(closing.size());
     open_begin[n] = static_cast<uint32_t>(opening.size());
-    for (const Trap& t : traps)
+    for (Trap& t : traps) {
       if (t.R == kNone) throw std::logic_error("spm: a trapezoid never closed");
+      t.pl = P[t.L];
+      t.pr = P[t.R];
+      t.b0 = P[edges[t.bot].l];
+      t.b1 = P[edges[t.bot].r];
+      t.t0 = P[edges[t.top].l];
+      t.t1 = P[edges[t.top].r];
+    }
   }
 
   // ------------------------------------------------------------------------------------------
@@ -547,15 +557,15 @@ struct L1Map::Impl {
   uint32_t find(Point q) const {
     uint32_t found = kNone;
     const BPoint bp(q.x, q.y);
-    for (auto it = tree.qbegin(bgi::intersects(bp)); it != tree.qend(); ++it) {
-      const Trap& t = traps[it->second];
-      if (!lex_less(P[t.L], q) || !lex_less(q, P[t.R])) continue;
-      const Edge& b = edges[t.bot];
-      const Edge& u = edges[t.top];
-      if (geom::orientation(P[b.l], P[b.r], q) < 0 || geom::orientation(P[u.l], P[u.r], q) > 0) continue;
-      found = it->second;
-      break;
-    }
+    auto exact = [&](const std::pair<BBox, uint32_t>& v) {
+      const Trap& t = traps[v.second];
+      return lex_less(t.pl, q) && lex_less(q, t.pr) && geom::orientation(t.b0, t.b1, q) >= 0 &&
+             geom::orientation(t.t0, t.t1, q) <= 0;
+    };
+    tree.query(bgi::intersects(bp) && bgi::satisfies(exact),
+               boost::make_function_output_iterator([&](const std::pair<BBox, uint32_t>& v) {
+                 if (found == kNone) found = v.second;
+               }));
     return found;
   }
 
@@ -575,7 +585,7 @@ struct L1Map::Impl {
     const Q y{q.y, 1};
     for (int side = 0; side < 2; ++side) {
       const uint32_t* o = side == 0 ? t.lo : t.ro;
-      const i64 dx = side == 0 ? i64{q.x} - P[t.L].x : i64{P[t.R].x} - q.x;
+      const i64 dx = side == 0 ? i64{q.x} - t.pl.x : i64{t.pr.x} - q.x;
       // up: thresholds ascending; the last with t <= y
       auto ub = std::upper_bound(rays.begin() + o[0], rays.begin() + o[1], y,
                                  [](const Q& yy, const Ray& r) { return cmp(yy, r.t()) < 0; });
@@ -598,23 +608,23 @@ struct L1Map::Impl {
   // The best root at q: (distance, root id); nullopt if not free or unreached.
   std::optional<std::pair<i64, uint32_t>> best_root(Point q) const {
     if (!in_domain(q)) return std::nullopt;
-    const uint32_t v = point_id(q);
-    if (v != kNone) {
-      std::optional<std::pair<i64, uint32_t>> out;
-      for (uint32_t r = root_begin[v]; r < root_begin[v + 1]; ++r)
-        if (!out || roots[r].d < out->first) out = {roots[r].d, r};
-      return out;
-    }
+    // A decomposition point is never strictly between the walls of a trapezoid holding it, so
+    // find() misses it: look it up only then (most queries are not vertices).
     const uint32_t t = find(q);
-    if (t == kNone) return std::nullopt;
-    return evaluate(t, q);
+    if (t != kNone) return evaluate(t, q);
+    const uint32_t v = point_id(q);
+    if (v == kNone) return std::nullopt;
+    std::optional<std::pair<i64, uint32_t>> out;
+    for (uint32_t r = root_begin[v]; r < root_begin[v + 1]; ++r)
+      if (!out || roots[r].d < out->first) out = {roots[r].d, r};
+    return out;
   }
 
   bool is_free(Point q) const {
     if (!in_domain(q)) return false;
+    if (find(q) != kNone) return true;
     const uint32_t v = point_id(q);
-    if (v != kNone) return src_at[v] != kNone || !wf.vertex_wedges(q).empty();
-    return find(q) != kNone;
+    return v != kNone && (src_at[v] != kNone || !wf.vertex_wedges(q).empty());
   }
 };
 

@@ -7,6 +7,7 @@
 // query is a point location in it, O(log n). Octilinear: one multi-source wavefront run
 // (router/wavefront.h: all sources at distance 0, the queries as targets), which is exact; the
 // octilinear map comes with the rest of issue #4.
+#include <fstream>
 #include <iostream>
 
 #include <nlohmann/json.hpp>
@@ -19,10 +20,44 @@
 
 namespace taut::cli {
 
+namespace {
+// Points from a text file, one X,Y per line; blank lines and lines starting with # are skipped.
+// A bad line: FILE:LINE: error: [CLI-0025], nothing added; an unreadable file: IO-0001.
+bool read_point_file(const std::string& path, std::vector<geom::Point>& out) {
+  std::ifstream in(path);
+  if (!in) {
+    print_diagnostics({Diagnostic{Severity::Error, "IO-0001", path, 0, 0, "cannot open the file for reading"}});
+    return false;
+  }
+  std::vector<geom::Point> got;
+  std::string line;
+  for (int n = 1; std::getline(in, line); ++n) {
+    const auto b = line.find_first_not_of(" \t\r");
+    if (b == std::string::npos || line[b] == '#') continue;
+    const auto e = line.find_last_not_of(" \t\r");
+    const std::string text = line.substr(b, e - b + 1);
+    const auto p = parse_point(text);
+    if (!p) {
+      print_diagnostics({Diagnostic{Severity::Error, "CLI-0025", path, n, 0,
+                                    "\"" + text + "\": expected X,Y with integers of at most 2^30 - 1 in absolute value"}});
+      return false;
+    }
+    got.push_back(*p);
+  }
+  if (in.bad()) {
+    print_diagnostics({Diagnostic{Severity::Error, "IO-0001", path, 0, 0, "read error"}});
+    return false;
+  }
+  out.insert(out.end(), got.begin(), got.end());
+  return true;
+}
+}  // namespace
+
 void add_spm(CLI::App& app, int& status) {
   struct Args {
     std::string file;
     std::vector<std::string> sources, queries;
+    std::string source_file, query_file;
     bool json = false;
     RoutingOptions routing;
     LoadOptions load;
@@ -30,8 +65,11 @@ void add_spm(CLI::App& app, int& status) {
   auto args = std::make_shared<Args>();
   CLI::App* sub = app.add_subcommand(
       "spm", "Distance, nearest source and shortest path from several sources to query points");
-  sub->add_option("--source", args->sources, "a source point X,Y (repeat the option for more)")->required();
-  sub->add_option("--query", args->queries, "a query point X,Y (repeat the option for more)")->required();
+  sub->add_option("--source", args->sources, "a source point X,Y (repeat the option for more)");
+  sub->add_option("--query", args->queries, "a query point X,Y (repeat the option for more)");
+  sub->add_option("--source-file", args->source_file,
+                  "more sources: a text file with one X,Y per line (blank lines and # comments skipped)");
+  sub->add_option("--query-file", args->query_file, "more query points, in the same format");
   sub->add_flag("--json", args->json, "print one JSON document on stdout");
   add_routing_options(sub, args->routing);
   add_input_options(sub, args->file, args->load, "do not print warnings");
@@ -47,6 +85,20 @@ void add_spm(CLI::App& app, int& status) {
         }
         out->push_back(*p);
       }
+    for (const auto& [name, path, out] : {std::tuple{"--source-file", &args->source_file, &sources},
+                                          std::tuple{"--query-file", &args->query_file, &queries}}) {
+      if (path->empty()) continue;
+      if (!read_point_file(*path, *out)) {
+        status = kInvalid;
+        return;
+      }
+    }
+    if (sources.empty() || queries.empty()) {
+      print_usage_error("CLI-0001", sources.empty() ? "spm needs at least one source (--source or --source-file)"
+                                                    : "spm needs at least one query (--query or --query-file)");
+      status = kInvalid;
+      return;
+    }
     const auto layout = load_routing_layout(args->file, args->load, args->routing);
     if (!layout) {
       status = kInvalid;

@@ -149,5 +149,35 @@ TEST(Spm, DemoNamesBlockedAndWalledInQueries) {
   }
 }
 
+// Many points from files: the same answers as the options give; a bad line is named with its
+// file and line, and nothing is printed on stdout.
+TEST(Spm, PointFiles) {
+  const std::string demo = std::string(TAUT_SOURCE_DIR) + "/designs/demo.xml";
+  const std::string dir = temp_dir("spm_files");
+  write_text(dir + "/src.txt", "# sources\n500,500\n\n  23000,13000  \n");
+  write_text(dir + "/q.txt", "18000,11500\n10000,10000\n");
+  const auto f = run_taut({"spm", demo, "--source-file", dir + "/src.txt", "--query-file", dir + "/q.txt", "--json"});
+  const auto o = run_taut({"spm", demo, "--source", "500,500", "--source", "23000,13000", "--query", "18000,11500",
+                           "--query", "10000,10000", "--json"});
+  EXPECT_EQ(f.status, 0) << f.err;
+  EXPECT_EQ(f.out, o.out);
+  // options and files add up: sources from the option first, then the file's
+  const auto both = run_taut({"spm", demo, "--source", "1000,13500", "--source-file", dir + "/src.txt", "--query",
+                              "1000,13000", "--json"});
+  ASSERT_EQ(both.status, 0) << both.err;
+  EXPECT_EQ(nlohmann::json::parse(both.out)["queries"][0]["source"].get<int>(), 0);
+  write_text(dir + "/bad.txt", "500,500\n# fine\n23000;13000\n");
+  const auto bad = run_taut({"spm", demo, "--source-file", dir + "/bad.txt", "--query", "1,1", "--json"});
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_TRUE(bad.out.empty()) << bad.out;
+  EXPECT_NE(bad.err.find(dir + "/bad.txt:3: error: [CLI-0025] \"23000;13000\""), std::string::npos) << bad.err;
+  const auto missing = run_taut({"spm", demo, "--source", "1,1", "--query-file", dir + "/none.txt"});
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_NE(missing.err.find("[IO-0001]"), std::string::npos) << missing.err;
+  const auto empty_q = run_taut({"spm", demo, "--source", "1,1", "--query-file", dir + "/src.txt", "--query-file",
+                                 dir + "/q.txt"});
+  EXPECT_EQ(empty_q.status, 2) << "the option is given twice";
+}
+
 }  // namespace
 }  // namespace taut::test

@@ -28,9 +28,14 @@
 #include <set>
 #include <sstream>
 
+#include "geom/normalize.h"
 #include "geom/predicates.h"
+#include "io/layout_geometry.h"
+#include "io/movingai.h"
 #include "oracle/l1_oracle.h"
 #include "router/spm.h"
+#include "router/wavefront.h"
+#include "support/run.h"
 #include "support/wavefront_cases.h"
 
 namespace taut::test {
@@ -259,6 +264,54 @@ TEST(L1Map, MatchesTheReferenceOnRandomLayouts) {
   EXPECT_GE(t.unreachable, 500);
   EXPECT_GE(t.not_free, 5000);
   EXPECT_GE(t.ties, 100);
+}
+
+// Moving AI grid maps (blockages that touch and pinch everywhere): the map against the
+// wavefront (itself checked against the reference above and in wavefront_test) on 3,000 points
+// per map, a quarter of them on grid lines, with 1-8 sources.
+TEST(L1Map, MovingAiMapsMatchTheWavefront) {
+  TAUT_REQUIRE_SHARED_DATA();
+  int maps = 0;
+  for (const char* name : {"8room_000", "arena", "brc202d", "den520d", "lak303d", "maze-100-1", "random512-10-0"}) {
+    SCOPED_TRACE(name);
+    const auto r = io::load_movingai_map(shared_data_dir() + "/movingai/" + name + ".map", 10);
+    ASSERT_TRUE(r.layout && r.layout->boundary);
+    const auto norm = geom::normalize_obstacles(io::blockage_polygons(*r.layout), r.layout->boundary->box);
+    const geom::Box& dom = norm.domain;
+    std::mt19937_64 rng(11);
+    std::vector<Point> queries, sources;
+    const router::L1Map probe(dom, norm.obstacles, {});
+    while (queries.size() < 3000) {
+      Point p{static_cast<geom::Coord>(dom.lo.x + static_cast<i64>(rng() % static_cast<std::uint64_t>(dom.hi.x - dom.lo.x + 1))),
+              static_cast<geom::Coord>(dom.lo.y + static_cast<i64>(rng() % static_cast<std::uint64_t>(dom.hi.y - dom.lo.y + 1)))};
+      if (rng() % 4 == 0) p.x -= p.x % 10;
+      if (rng() % 4 == 0) p.y -= p.y % 10;
+      queries.push_back(p);
+    }
+    const std::size_t k = 1 + rng() % 8;
+    for (const Point q : queries)
+      if (sources.size() < k && probe.is_free(q) && rng() % 50 == 0) sources.push_back(q);
+    const router::L1Map map(dom, norm.obstacles, sources);
+    router::L1Wavefront wf(dom, norm.obstacles);
+    wf.run(sources, queries, router::WavefrontStop::AllTargets);
+    int reached = 0, mismatches = 0;
+    for (std::size_t i = 0; i < queries.size(); ++i) {
+      const bool free = wf.is_free(queries[i]);
+      const auto d = wf.target_distance(i);
+      const auto a = map.locate(queries[i]);
+      if (map.is_free(queries[i]) != free || d.has_value() != a.has_value() || (d && *d != a->distance)) {
+        if (mismatches++ < 3)
+          ADD_FAILURE() << "query " << pt(queries[i]) << ": wavefront " << (d ? std::to_string(*d) : "none")
+                        << ", map " << (a ? std::to_string(a->distance) : "none");
+        continue;
+      }
+      reached += d.has_value();
+    }
+    EXPECT_EQ(mismatches, 0);
+    EXPECT_GT(reached, 300);
+    ++maps;
+  }
+  EXPECT_EQ(maps, 7);
 }
 
 // A hand-made case: two sources on either side of a wall with a gap; the Voronoi boundary and
