@@ -43,6 +43,7 @@ bench: build
 	$(BUILD)/bench/bench_foundation
 	$(BUILD)/bench/bench_wavefront
 	$(BUILD)/bench/bench_oct_wavefront
+	$(BUILD)/bench/bench_spm
 
 install: build
 	cmake --install $(BUILD) --prefix $(or $(PREFIX),/usr/local)

@@ -37,7 +37,7 @@ std::vector<std::int64_t> parse_list(char* s) {
 int main(int argc, char** argv) {
   std::vector<std::int64_t> sizes = {1000, 10000, 100000, 1000000}, source_counts = {1, 100, 10000};
   std::string kind_name = "rects";
-  int nqueries = 100000, wave_queries = 20;
+  int nqueries = 100000, wave_queries = 0;  // 0: 20, or 5 from 10^5 vertices on
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--sizes") && i + 1 < argc) sizes = parse_list(argv[++i]);
     else if (!std::strcmp(argv[i], "--sources") && i + 1 < argc) source_counts = parse_list(argv[++i]);
@@ -106,7 +106,7 @@ int main(int argc, char** argv) {
           3);
       // One wavefront per query (the pre-map way), on the first few queries; answers compared.
       taut::router::L1Wavefront wf(dom, lay.norm.obstacles);
-      const int w = std::min<int>(wave_queries, nqueries);
+      const int w = std::min<int>(wave_queries > 0 ? wave_queries : (n >= 100000 ? 5 : 20), nqueries);
       int checked = 0;
       const double wave = seconds_of(
           [&] {
