@@ -140,6 +140,9 @@ struct L1Map::Impl {
     pass(true, left, right, close_begin, closing, open_begin, opening);
     pass(false, left, right, close_begin, closing, open_begin, opening);
     build_tree(left, right);
+    rays.shrink_to_fit();  // grown by doubling: up to half of it was slack
+    traps.shrink_to_fit();
+    roots.shrink_to_fit();
     if (std::getenv("TAUT_SPM_DEBUG")) dump(left, right);
     st.vertices = static_cast<i64>(P.size());
     st.trapezoids = static_cast<i64>(traps.size());
