@@ -4,8 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <set>
 #include <stdexcept>
@@ -143,30 +141,10 @@ struct L1Map::Impl {
     rays.shrink_to_fit();  // grown by doubling: up to half of it was slack
     traps.shrink_to_fit();
     roots.shrink_to_fit();
-    if (std::getenv("TAUT_SPM_DEBUG")) dump(left, right);
     st.vertices = static_cast<i64>(P.size());
     st.trapezoids = static_cast<i64>(traps.size());
     st.rays = static_cast<i64>(rays.size());
     st.roots = static_cast<i64>(roots.size());
-  }
-
-  void dump(const std::vector<SideRange>& left, const std::vector<SideRange>& right) const {
-    auto qs = [](Q a) { return std::to_string(a.n) + (a.d != 1 ? "/" + std::to_string(a.d) : ""); };
-    for (uint32_t i = 0; i < traps.size(); ++i) {
-      const Trap& t = traps[i];
-      std::fprintf(stderr, "trap %u: L(%d,%d) R(%d,%d) bot (%d,%d)-(%d,%d) top (%d,%d)-(%d,%d) left [%s,%s] right [%s,%s]\n", i,
-                   P[t.L].x, P[t.L].y, P[t.R].x, P[t.R].y, P[edges[t.bot].l].x, P[edges[t.bot].l].y,
-                   P[edges[t.bot].r].x, P[edges[t.bot].r].y, P[edges[t.top].l].x, P[edges[t.top].l].y,
-                   P[edges[t.top].r].x, P[edges[t.top].r].y, qs(left[i].lo).c_str(), qs(left[i].hi).c_str(),
-                   qs(right[i].lo).c_str(), qs(right[i].hi).c_str());
-      for (int side = 0; side < 2; ++side) {
-        const uint32_t* o = side == 0 ? t.lo : t.ro;
-        for (uint32_t k = o[0]; k < o[2]; ++k)
-          std::fprintf(stderr, "   %s %s K=%ld t=%s root (%d,%d) d=%ld\n", side == 0 ? "L" : "R", k < o[1] ? "up" : "dn",
-                       (long)rays[k].K, qs(rays[k].t()).c_str(), roots[rays[k].root].p.x, roots[rays[k].root].p.y,
-                       (long)roots[rays[k].root].d);
-      }
-    }
   }
 
   uint32_t point_id(Point p) const {
@@ -448,7 +426,7 @@ struct L1Map::Impl {
   // Append the staircases of ups and downs to rays; returns the three offsets.
   void staircase(std::vector<Ray>& ups, std::vector<Ray>& downs, uint32_t out[3]) {
     auto push = [&](const Ray& r) {
-      if (rays.size() >= std::numeric_limits<uint32_t>::max()) throw std::length_error("spm: too many rays");
+      if (rays.size() >= std::numeric_limits<uint32_t>::max()) throw std::length_error("the shortest path map needs more than 2^32 rays");
       rays.push_back(r);
     };
     out[0] = static_cast<uint32_t>(rays.size());
@@ -658,13 +636,17 @@ std::optional<L1Map::Answer> L1Map::locate(Point q) const {
   const auto b = impl_->best_root(q);
   if (!b) return std::nullopt;
   const Root& r = impl_->roots[b->second];
-  return Answer{b->first, r.source, r.p};
+  return Answer{b->first, r.source, r.p, b->second};
 }
 
 std::vector<Point> L1Map::path(Point q) const {
-  const auto b = impl_->best_root(q);
-  if (!b) return {};
-  const Root& r = impl_->roots[b->second];
+  const auto a = locate(q);
+  return a ? path(q, *a) : std::vector<Point>{};
+}
+
+std::vector<Point> L1Map::path(Point q, const Answer& a) const {
+  if (a.root_id >= impl_->roots.size()) return {};
+  const Root& r = impl_->roots[a.root_id];
   std::vector<Point> out;
   if (r.wedge == kNone)
     out.push_back(r.p);

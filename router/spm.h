@@ -1,6 +1,6 @@
 // The L1 shortest path map of one or more point sources among polygonal obstacles: built once,
 // then the distance to the nearest source, which source, and a shortest path for any query
-// point in O(log n) (Mitchell §2 "SPM", §5 multiple sources; the cells merged by source are the
+// point by point location (Mitchell §2 "SPM", §5 multiple sources; the cells merged by source are the
 // L1 geodesic Voronoi diagram).
 //
 //   L1Map map(normalized.domain, normalized.obstacles, sources);
@@ -23,7 +23,19 @@
 // A side keeps its rays as two staircases (up: thresholds rising, values falling; down: the
 // mirror): a ray that starts no lower and costs no less than another is dropped, since it is
 // beaten wherever it reaches. A query finds its trapezoid with an R-tree of their boxes
-// (Boost.Geometry) and binary-searches the four staircases of its two sides: O(log n).
+// (Boost.Geometry; the exact test decides) and binary-searches the four staircases of its two
+// sides.
+//
+// Costs, honestly. Query: O(log n) when trapezoid boxes overlap little, as with axis-parallel
+// blockages and the generated and Moving AI layouts (about 2 us at 10^6 vertices); long sloped
+// trapezoids have boxes that overlap almost everywhere, and n parallel diagonal strips make a
+// query scan O(n) of them (measured in review: 137 us at 16,000 strips). A point-location
+// structure built from the sweep (a persistent search tree) would make it O(log n) always; not
+// done yet. Size: sides do not share their staircases, so a side can hold a ray per root: about
+// 20 rays per trapezoid measured on generated and Moving AI layouts, but O(n (n + k)) in the
+// worst case (k sources on a diagonal below-left of m tall walls: 120 million rays, 3.2 GB for
+// k = m = 4,000). Mitchell's map is O(n); sharing staircases between sides would get there.
+// Past 2^32 rays the constructor throws std::length_error (taut: exit status 4).
 //
 // Paths. Among the rays of least value at q the one with the largest root distance d(r) wins:
 // its root sees q straight (if it did not, the taut monotone path from r to q would bend at a
@@ -60,7 +72,7 @@ class L1Map {
   L1Map(L1Map&&) noexcept;
   L1Map& operator=(L1Map&&) noexcept;
 
-  // Same rule as L1Wavefront::is_free, answered by the map's point location (O(log n)).
+  // Same rule as L1Wavefront::is_free, answered by the map's point location.
   bool is_free(geom::Point q) const;
 
   struct Answer {
@@ -68,12 +80,15 @@ class L1Map {
     std::size_t source = 0;     // that source's index
     geom::Point root;           // the last bend (or the source) before q: it sees q straight;
                                 // q itself when q is an obstacle vertex or a source
+    std::uint32_t root_id = 0;  // the map's handle of that root (for path(q, answer))
   };
   // nullopt when q is not free or no source reaches it (walled in).
   std::optional<Answer> locate(geom::Point q) const;
   // A shortest path: the source, bends at obstacle vertices, q ({q} when q is a source); empty
   // when locate() is nullopt.
   std::vector<geom::Point> path(geom::Point q) const;
+  // The same from locate()'s answer for q, without locating q again: O(k).
+  std::vector<geom::Point> path(geom::Point q, const Answer& a) const;
 
   // The decomposition's cells (for checks and pictures): trapezoid i lies between the walls
   // through `left` and `right` (x from left.x to right.x; width 0 between points on a common

@@ -1,6 +1,7 @@
 // taut: exact gridless wire routing. One binary, git-style subcommands (CLI.md).
 #include <exception>
 #include <iostream>
+#include <stdexcept>
 #include <new>
 
 #include "router/version.h"
@@ -38,6 +39,9 @@ int main(int argc, char** argv) {
     return kInvalid;
   } catch (const std::bad_alloc&) {
     print_usage_error("CLI-0002", "out of memory");
+    return kResource;
+  } catch (const std::length_error& e) {  // a structure past its size limit (e.g. the map's 2^32 rays)
+    print_usage_error("CLI-0002", std::string("size limit: ") + e.what());
     return kResource;
   } catch (const std::exception& e) {
     std::cerr << "taut: internal error: [CLI-0003] " << e.what() << " (a bug: please report it)\n";

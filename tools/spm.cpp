@@ -4,7 +4,7 @@
 // path (the source, bends at obstacle vertices, the query point).
 //
 // L1 (rectilinear): the shortest path map of the sources (router/spm.h) is built once and each
-// query is a point location in it, O(log n). Octilinear: one multi-source wavefront run
+// query is a point location in it (see spm.h for its cost). Octilinear: one multi-source wavefront run
 // (router/wavefront.h: all sources at distance 0, the queries as targets), which is exact; the
 // octilinear map comes with the rest of issue #4.
 #include <fstream>
@@ -73,7 +73,8 @@ void add_spm(CLI::App& app, int& status) {
   sub->add_flag("--json", args->json, "print one JSON document on stdout");
   add_routing_options(sub, args->routing);
   add_input_options(sub, args->file, args->load, "do not print warnings");
-  sub->callback([args, &status] {
+  sub->callback([args, &status, sub] {
+    auto sub_count = [sub](const char* name) { return sub->count(name) > 0; };
     std::vector<geom::Point> sources, queries;
     for (const auto& [name, texts, out] : {std::tuple{"--source", &args->sources, &sources},
                                            std::tuple{"--query", &args->queries, &queries}})
@@ -87,7 +88,12 @@ void add_spm(CLI::App& app, int& status) {
       }
     for (const auto& [name, path, out] : {std::tuple{"--source-file", &args->source_file, &sources},
                                           std::tuple{"--query-file", &args->query_file, &queries}}) {
-      if (path->empty()) continue;
+      if (!sub_count(name)) continue;
+      if (path->empty()) {
+        print_usage_error("CLI-0001", std::string(name) + " \"\": needs a file name");
+        status = kInvalid;
+        return;
+      }
       if (!read_point_file(*path, *out)) {
         status = kInvalid;
         return;
@@ -131,11 +137,11 @@ void add_spm(CLI::App& app, int& status) {
       collect(wf, [](const geom::Root2& d) { return d; });
     } else {
       // L1: the shortest path map, built once (one wavefront run and a vertical decomposition),
-      // then O(log n) per query.
+      // then a point location per query.
       const router::L1Map map(norm.domain, norm.obstacles, sources);
       for (std::size_t i = 0; i < queries.size(); ++i) {
         if (const auto a = map.locate(queries[i]))
-          answers[i] = {geom::Root2{a->distance, 0}, a->source, map.path(queries[i]), true};
+          answers[i] = {geom::Root2{a->distance, 0}, a->source, map.path(queries[i], *a), true};
         else
           answers[i].free = map.is_free(queries[i]);
       }

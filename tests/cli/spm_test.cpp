@@ -177,6 +177,9 @@ TEST(Spm, PointFiles) {
   const auto empty_q = run_taut({"spm", demo, "--source", "1,1", "--query-file", dir + "/src.txt", "--query-file",
                                  dir + "/q.txt"});
   EXPECT_EQ(empty_q.status, 2) << "the option is given twice";
+  const auto no_name = run_taut({"spm", demo, "--source", "1,1", "--query-file", ""});
+  EXPECT_EQ(no_name.status, 2);
+  EXPECT_NE(no_name.err.find("--query-file \"\": needs a file name"), std::string::npos) << no_name.err;
 }
 
 }  // namespace

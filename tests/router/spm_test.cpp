@@ -84,7 +84,7 @@ mpq_class y_at(const geom::Segment& s, i64 x) {
 
 struct Tally {
   i64 instances = 0, queries = 0, reachable = 0, unreachable = 0, not_free = 0, paths = 0,
-      multi_source = 0, ties = 0, trapezoids = 0, skipped = 0;
+      multi_source = 0, ties = 0, trapezoids = 0, skipped = 0, blocked_sources = 0;
 };
 
 std::string check_seed(std::uint64_t seed, Tally& tally) {
@@ -112,6 +112,13 @@ std::string check_seed(std::uint64_t seed, Tally& tally) {
   const std::size_t ns = 1 + pick(std::min<std::size_t>(20, free_pts.size() + 3));
   std::vector<Point> sources;
   for (std::size_t i = 0; i < ns; ++i) sources.push_back(free_pts[pick(free_pts.size())]);
+  // One instance in four also gets a source that may not be free (ignored by the map; the
+  // indices of the others must not move).
+  if (pick(4) == 0) {
+    const Point extra = c.candidates[pick(c.candidates.size())];
+    sources.insert(sources.begin() + static_cast<std::ptrdiff_t>(pick(sources.size() + 1)), extra);
+    tally.blocked_sources += !ref.is_free(extra);
+  }
   // Queries: candidates (vertices, points on edges, points of interest), then random points.
   std::vector<Point> queries;
   for (std::size_t i = 0; i < c.candidates.size() && queries.size() < 60; ++i)
@@ -256,7 +263,7 @@ TEST(L1Map, MatchesTheReferenceOnRandomLayouts) {
   std::cout << "instances " << t.instances << " (skipped " << t.skipped << ", multi-source " << t.multi_source
             << "), queries " << t.queries << ": reachable " << t.reachable << " (ties " << t.ties << "), unreachable "
             << t.unreachable << ", not free " << t.not_free << "; paths checked " << t.paths << "; trapezoids "
-            << t.trapezoids << "\n";
+            << t.trapezoids << "; sources not free " << t.blocked_sources << "\n";
   // The generator must exercise what the test claims.
   EXPECT_GE(t.instances, 1000);
   EXPECT_GE(t.multi_source, 800);
@@ -264,6 +271,7 @@ TEST(L1Map, MatchesTheReferenceOnRandomLayouts) {
   EXPECT_GE(t.unreachable, 500);
   EXPECT_GE(t.not_free, 5000);
   EXPECT_GE(t.ties, 100);
+  EXPECT_GE(t.blocked_sources, 20);
 }
 
 // Moving AI grid maps (blockages that touch and pinch everywhere): the map against the
