@@ -27,7 +27,7 @@
 // sides.
 //
 // Costs, honestly. Query: O(log n) when trapezoid boxes overlap little, as with axis-parallel
-// blockages and the generated and Moving AI layouts (about 2 us at 10^6 vertices); long sloped
+// blockages and the generated and Moving AI layouts (2.1-3.0 us at 10^6 vertices); long sloped
 // trapezoids have boxes that overlap almost everywhere, and n parallel diagonal strips make a
 // query scan O(n) of them (measured in review: 137 us at 16,000 strips). A point-location
 // structure built from the sweep (a persistent search tree) would make it O(log n) always; not

@@ -322,6 +322,65 @@ TEST(L1Map, MovingAiMapsMatchTheWavefront) {
   EXPECT_EQ(maps, 7);
 }
 
+// Hand-worked degenerate cases (each answer worked out in the comment, and the reference agrees).
+struct HandCase {
+  const char* name;
+  geom::Box domain;
+  std::vector<geom::Polygon> obstacles;
+  std::vector<Point> sources;
+  Point query;
+  std::optional<i64> distance;
+};
+
+TEST(L1Map, HandWorkedDegenerateCases) {
+  const std::vector<HandCase> cases = {
+      // Two squares touching at (10,10) only: a pinch. From (5,15) to (15,5) the straight
+      // staircase through (10,10) is closed; around either square: 20 + 20 = 40.
+      {"pinch", {{-10, -10}, {30, 30}}, {{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {}}, {{{10, 10}, {20, 10}, {20, 20}, {10, 20}}, {}}},
+       {{5, 15}}, {15, 5}, 40},
+      // A source at the pinch starts in either free wedge: 5 + 5 = 10 to both sides.
+      {"source at the pinch, one side", {{-10, -10}, {30, 30}},
+       {{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {}}, {{{10, 10}, {20, 10}, {20, 20}, {10, 20}}, {}}}, {{10, 10}}, {5, 15}, 10},
+      {"source at the pinch, other side", {{-10, -10}, {30, 30}},
+       {{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {}}, {{{10, 10}, {20, 10}, {20, 20}, {10, 20}}, {}}}, {{10, 10}}, {15, 5}, 10},
+      // Three rectangles whose left edges lie on x = 10 (vertices stacked on one vertical): from
+      // (0,12) to (25,7) through the gap 5 <= y <= 10, monotone: 25 + 5 = 30.
+      {"stacked vertices", {{0, 0}, {30, 30}},
+       {{{{10, 0}, {20, 0}, {20, 5}, {10, 5}}, {}}, {{{10, 10}, {20, 10}, {20, 15}, {10, 15}}, {}},
+        {{{10, 20}, {20, 20}, {20, 25}, {10, 25}}, {}}},
+       {{0, 12}}, {25, 7}, 30},
+      // A source in the middle of a top edge: to the point below the square, around a corner:
+      // 5 + 10 + 5 + 10 = 30.
+      {"source inside an edge", {{0, 0}, {30, 30}}, {{{{10, 10}, {20, 10}, {20, 20}, {10, 20}}, {}}}, {{15, 20}}, {15, 0}, 30},
+      // A rectangle flush with the domain's right side (merged into the frame): the source
+      // above, the query below, around its left end: left to x = 10 (15), down 20, right 15: 50.
+      {"flush with the domain side", {{0, 0}, {30, 30}}, {{{{10, 10}, {30, 10}, {30, 20}, {10, 20}}, {}}}, {{25, 25}}, {25, 5}, 50},
+      // A sloped wall, the parallelogram (8,2) (10,2) (12,18) (10,18), between the source
+      // (0,10) and the query (20,10): around either end, 20 across plus 8 down and 8 up: 36.
+      {"sloped wall", {{0, 0}, {20, 20}}, {{{{8, 2}, {10, 2}, {12, 18}, {10, 18}}, {}}}, {{0, 10}}, {20, 10}, 36},
+      // A walled-in query (inside a ring's hole) and a query inside a blockage.
+      {"walled in", {{0, 0}, {40, 40}},
+       {{{{10, 10}, {30, 10}, {30, 30}, {10, 30}}, {{{15, 15}, {15, 25}, {25, 25}, {25, 15}}}}}, {{5, 5}}, {20, 20}, std::nullopt},
+      {"inside a blockage", {{0, 0}, {40, 40}}, {{{{10, 10}, {30, 10}, {30, 30}, {10, 30}}, {}}}, {{5, 5}}, {20, 12}, std::nullopt},
+  };
+  for (const HandCase& c : cases) {
+    SCOPED_TRACE(c.name);
+    // (touching squares become one obstacle with a pinch, as in every real run)
+    const geom::NormalizedObstacles norm = geom::normalize_obstacles(c.obstacles, c.domain);
+    const router::L1Map map(norm.domain, norm.obstacles, c.sources);
+    const auto a = map.locate(c.query);
+    ASSERT_EQ(a.has_value(), c.distance.has_value());
+    const oracle::L1Reference ref(norm.domain, norm.obstacles);
+    EXPECT_EQ(ref.distance(c.sources[0], c.query), c.distance) << "the hand-worked answer is wrong";
+    if (!a) continue;
+    EXPECT_EQ(a->distance, *c.distance);
+    const auto path = map.path(c.query);
+    ASSERT_GE(path.size(), 1u);
+    EXPECT_EQ(path.front(), c.sources[a->source]);
+    EXPECT_EQ(ref.check_path(path), c.distance);
+  }
+}
+
 // A hand-made case: two sources on either side of a wall with a gap; the Voronoi boundary and
 // the distances are worked out by hand.
 TEST(L1Map, TwoSourcesAroundAWall) {
