@@ -8,8 +8,6 @@
 #include <set>
 #include <stdexcept>
 #include <string>
-#include <tuple>
-#include <unordered_map>
 
 #include <boost/geometry.hpp>
 #include <boost/geometry/index/rtree.hpp>
@@ -43,7 +41,7 @@ inline Q qmin(Q a, Q b) { return cmp(a, b) <= 0 ? a : b; }
 inline i64 floor_of(Q a) { return a.n >= 0 ? a.n / a.d : -((-a.n + a.d - 1) / a.d); }
 inline i64 ceil_of(Q a) { return -floor_of(Q{-a.n, a.d}); }
 
-inline bool lex_less(Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
+// The sheared order of points, (x, y) lexicographic, is Point's own operator< (geom/types.h).
 inline bool same_dir(Point o, Point a, Point b) {  // o->a and o->b point the same way
   const i64 ax = i64{a.x} - o.x, ay = i64{a.y} - o.y, bx = i64{b.x} - o.x, by = i64{b.y} - o.y;
   return i128{ax} * by - i128{ay} * bx == 0 && i128{ax} * bx + i128{ay} * by > 0;
@@ -123,6 +121,7 @@ struct L1Map::Impl {
   std::vector<Ray> rays;
   std::vector<Root> roots;
   std::vector<uint32_t> root_begin;  // per point: its roots [begin, next)
+  std::vector<Point> root_lo;        // build only: per root, the ring neighbour its wedge starts at
   TrapTree tree;
   Stats st;
 
@@ -138,6 +137,7 @@ struct L1Map::Impl {
     pass(true, left, right, close_begin, closing, open_begin, opening);
     pass(false, left, right, close_begin, closing, open_begin, opening);
     build_tree(left, right);
+    root_lo = {};
     rays.shrink_to_fit();  // grown by doubling: up to half of it was slack
     traps.shrink_to_fit();
     roots.shrink_to_fit();
@@ -148,7 +148,7 @@ struct L1Map::Impl {
   }
 
   uint32_t point_id(Point p) const {
-    auto it = std::lower_bound(P.begin(), P.end(), p, lex_less);
+    auto it = std::lower_bound(P.begin(), P.end(), p);
     return it != P.end() && *it == p ? static_cast<uint32_t>(it - P.begin()) : kNone;
   }
   bool in_domain(Point q) const {
@@ -166,15 +166,15 @@ struct L1Map::Impl {
       for (const auto& h : p.holes) raw.insert(raw.end(), h.begin(), h.end());
     }
     const std::size_t nring = raw.size();
-    std::sort(raw.begin(), raw.end(), lex_less);
+    std::sort(raw.begin(), raw.end());
     raw.erase(std::unique(raw.begin(), raw.end()), raw.end());
     std::vector<Point> ring_pts = raw;  // sorted: vertex lookup
-    auto is_vertex = [&](Point p) { return std::binary_search(ring_pts.begin(), ring_pts.end(), p, lex_less); };
+    auto is_vertex = [&](Point p) { return std::binary_search(ring_pts.begin(), ring_pts.end(), p); };
     std::vector<std::pair<Point, uint32_t>> free_src;  // free sources, first index per point
     for (std::size_t i = 0; i < sources.size(); ++i)
       if (wf.is_free(sources[i])) free_src.push_back({sources[i], static_cast<uint32_t>(i)});
     for (const auto& [p, i] : free_src) raw.push_back(p);
-    std::sort(raw.begin(), raw.end(), lex_less);
+    std::sort(raw.begin(), raw.end());
     raw.erase(std::unique(raw.begin(), raw.end()), raw.end());
     P = std::move(raw);
     src_at.assign(P.size(), kNone);
@@ -183,9 +183,8 @@ struct L1Map::Impl {
       s = std::min(s, i);
     }
     // Sources inside an edge: found on an R-tree of the edges (only when there are any).
-    std::unordered_map<uint64_t, std::vector<Point>> splits;  // ring edge (a, b) -> points on it
     auto key = [](Point a, Point b) {
-      if (lex_less(b, a)) std::swap(a, b);
+      if (b < a) std::swap(a, b);
       return std::pair<Point, Point>{a, b};
     };
     std::vector<std::pair<std::pair<Point, Point>, Point>> on_edge;
@@ -202,10 +201,7 @@ struct L1Map::Impl {
           }
       }
     }
-    std::sort(on_edge.begin(), on_edge.end(), [](const auto& a, const auto& b) {
-      return std::tie(a.first.first.x, a.first.first.y, a.first.second.x, a.first.second.y, a.second.x, a.second.y) <
-             std::tie(b.first.first.x, b.first.first.y, b.first.second.x, b.first.second.y, b.second.x, b.second.y);
-    });
+    std::sort(on_edge.begin(), on_edge.end());  // by edge, then by point
     edges.reserve(nring + on_edge.size());
     std::vector<Point> chain;
     auto add_ring = [&](const geom::Ring& ring) {
@@ -216,16 +212,14 @@ struct L1Map::Impl {
         chain.assign({a});
         if (!on_edge.empty()) {
           const auto k = key(a, b);
-          auto it = std::lower_bound(on_edge.begin(), on_edge.end(), k, [](const auto& x, const auto& kk) {
-            return std::tie(x.first.first.x, x.first.first.y, x.first.second.x, x.first.second.y) <
-                   std::tie(kk.first.x, kk.first.y, kk.second.x, kk.second.y);
-          });
+          auto it = std::lower_bound(on_edge.begin(), on_edge.end(), k,
+                                     [](const auto& x, const auto& kk) { return x.first < kk; });
           std::vector<Point> mid;
           for (; it != on_edge.end() && it->first == k; ++it)
             if (it->second != a && it->second != b) mid.push_back(it->second);
-          std::sort(mid.begin(), mid.end(), lex_less);
+          std::sort(mid.begin(), mid.end());
           mid.erase(std::unique(mid.begin(), mid.end()), mid.end());
-          if (lex_less(b, a)) std::reverse(mid.begin(), mid.end());
+          if (b < a) std::reverse(mid.begin(), mid.end());
           chain.insert(chain.end(), mid.begin(), mid.end());
         }
         chain.push_back(b);
@@ -233,8 +227,8 @@ struct L1Map::Impl {
           const uint32_t u = point_id(chain[j]), w = point_id(chain[j + 1]);
           // The obstacle lies left of the ring's direction: above an edge running left to
           // right, below one running right to left.
-          const bool free_above = lex_less(chain[j + 1], chain[j]);
-          edges.push_back(lex_less(P[u], P[w]) ? Edge{u, w, free_above} : Edge{w, u, free_above});
+          const bool free_above = chain[j + 1] < chain[j];
+          edges.push_back(P[u] < P[w] ? Edge{u, w, free_above} : Edge{w, u, free_above});
         }
       }
     };
@@ -290,7 +284,7 @@ struct L1Map::Impl {
         const Point le = s->P[s->edges[e].l], re = s->P[s->edges[e].r];
         const Point lf = s->P[s->edges[f].l], rf = s->P[s->edges[f].r];
         if (s->edges[e].l == s->edges[f].l) return geom::orientation(le, re, rf) > 0;
-        if (lex_less(lf, le)) return geom::orientation(lf, rf, le) < 0;
+        if (lf < le) return geom::orientation(lf, rf, le) < 0;
         return geom::orientation(le, re, lf) > 0;
       }
       bool operator()(uint32_t e, const Key& k) const {
@@ -394,11 +388,15 @@ struct L1Map::Impl {
       root_begin[q] = static_cast<uint32_t>(roots.size());
       if (src_at[q] != kNone) {
         roots.push_back({P[q], 0, src_at[q], kNone});
+        root_lo.push_back(P[q]);
         continue;
       }
       const auto w = wf.vertex_wedges(P[q]);
       for (uint32_t k = 0; k < w.size(); ++k)
-        if (w[k].distance) roots.push_back({P[q], *w[k].distance, static_cast<uint32_t>(*w[k].source), k});
+        if (w[k].distance) {
+          roots.push_back({P[q], *w[k].distance, static_cast<uint32_t>(w[k].source.value_or(kNone)), k});
+          root_lo.push_back(w[k].lo);
+        }
     }
     root_begin[P.size()] = static_cast<uint32_t>(roots.size());
   }
@@ -409,9 +407,8 @@ struct L1Map::Impl {
     if (b == e) return kNone;
     if (roots[b].wedge == kNone) return b;  // a source: every side
     if (!s.has_wedge) return kNone;
-    const auto w = wf.vertex_wedges(P[q]);
     for (uint32_t r = b; r < e; ++r)
-      if (same_dir(P[q], w[roots[r].wedge].lo, s.wedge_lo)) return r;
+      if (same_dir(P[q], root_lo[r], s.wedge_lo)) return r;
     return kNone;
   }
 
@@ -555,7 +552,7 @@ struct L1Map::Impl {
     const BBox bp(BPoint(down(q.x), down(q.y)), BPoint(up(q.x), up(q.y)));
     auto exact = [&](const std::pair<BBox, uint32_t>& v) {
       const Trap& t = traps[v.second];
-      return lex_less(t.pl, q) && lex_less(q, t.pr) && geom::orientation(t.b0, t.b1, q) >= 0 &&
+      return t.pl < q && q < t.pr && geom::orientation(t.b0, t.b1, q) >= 0 &&
              geom::orientation(t.t0, t.t1, q) <= 0;
     };
     tree.query(bgi::intersects(bp) && bgi::satisfies(exact),
