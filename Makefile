@@ -30,7 +30,8 @@ run: build
 	$(BUILD)/tools/taut route designs/demo.xml -o out/demo.routed.xml --svg out/demo.svg --stats out/demo.stats.json || test $$? -eq 1
 	$(BUILD)/tools/taut check out/demo.routed.xml --json > out/demo.check.json
 	$(BUILD)/tools/taut route designs/demo.xml --orientations octilinear -q -o out/demo.oct.routed.xml --svg out/demo.oct.svg || test $$? -eq 1
-	@echo "wrote out/demo.routed.xml, out/demo.svg, out/demo.stats.json, out/demo.check.json, and octilinear wires in out/demo.oct.routed.xml, out/demo.oct.svg"
+	$(BUILD)/tools/taut voronoi designs/demo.xml -q -o out/demo.cells.xml --svg out/demo.voronoi.svg > out/demo.voronoi.txt
+	@echo "wrote out/demo.routed.xml, out/demo.svg, out/demo.stats.json, out/demo.check.json, octilinear wires in out/demo.oct.routed.xml, out/demo.oct.svg, and the pins' Voronoi diagram in out/demo.cells.xml, out/demo.voronoi.svg"
 
 test: build build-asan
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE long
@@ -44,6 +45,7 @@ bench: build
 	$(BUILD)/bench/bench_wavefront
 	$(BUILD)/bench/bench_oct_wavefront
 	$(BUILD)/bench/bench_spm
+	$(BUILD)/bench/bench_voronoi
 
 install: build
 	cmake --install $(BUILD) --prefix $(or $(PREFIX),/usr/local)

@@ -23,14 +23,9 @@
 
 namespace {
 
+using taut::bench::parse_list;
 using taut::bench::seconds_of;
 using taut::geom::Point;
-
-std::vector<std::int64_t> parse_list(char* s) {
-  std::vector<std::int64_t> v;
-  for (char* tok = std::strtok(s, ","); tok; tok = std::strtok(nullptr, ",")) v.push_back(std::atoll(tok));
-  return v;
-}
 
 }  // namespace
 

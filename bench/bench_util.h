@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
+#include <cstring>
 #include <cstddef>
 #include <functional>
 #include <optional>
@@ -78,6 +80,13 @@ geom::Point bench_source(const geom::Box& dom, IsFree is_free) {
     source = geom::Point{static_cast<geom::Coord>(dom.lo.x + (k * 7919) % (std::int64_t{dom.hi.x} - dom.lo.x + 1)),
                          static_cast<geom::Coord>(dom.lo.y + (k * 104729) % (std::int64_t{dom.hi.y} - dom.lo.y + 1))};
   return source;
+}
+
+// "1000,10000" -> {1000, 10000} (a --sizes style option; modifies s).
+inline std::vector<std::int64_t> parse_list(char* s) {
+  std::vector<std::int64_t> v;
+  for (char* tok = std::strtok(s, ","); tok; tok = std::strtok(nullptr, ",")) v.push_back(std::atoll(tok));
+  return v;
 }
 
 }  // namespace taut::bench

@@ -8,9 +8,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 
 #include "geom/predicates.h"
+#include "io/xml_text.h"
 
 namespace taut::io {
 namespace {
@@ -36,24 +38,8 @@ std::string px(double v) {
   return buf;
 }
 
-std::string escape(std::string_view s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20)
-          out += ' ';
-        else
-          out += c;
-    }
-  }
-  return out;
-}
+using io::xml_escape;
+constexpr auto escape = [](std::string_view v) { return xml_escape(v); };
 
 void append_ring_path(std::string& d, const std::vector<Point>& ring) {
   for (std::size_t i = 0; i < ring.size(); ++i) {
@@ -227,6 +213,18 @@ std::string layout_to_svg(const Layout& layout, const SvgOptions& options) {
          "</g>\n";
   }
 
+  // "@PX" stroke widths in the caller's layers become world units.
+  auto scaled = [&](std::string layer) {
+    for (std::size_t at = layer.find("\"@"); at != std::string::npos; at = layer.find("\"@", at + 1)) {
+      const std::size_t end = layer.find('"', at + 2);
+      if (end == std::string::npos) break;
+      const double pixels = std::atof(layer.substr(at + 2, end - at - 2).c_str());
+      layer.replace(at + 1, end - at - 1, world(pixels));
+    }
+    return layer;
+  };
+  o += scaled(options.underlay);
+
   const std::string blockage_style = "fill=\"#8d99a6\" fill-opacity=\"0.75\" stroke=\"#3d4852\" "
                                      "stroke-width=\"" + world(0.8) + "\"";
   for (const Blockage& b : layout.blockages) {
@@ -271,6 +269,7 @@ std::string layout_to_svg(const Layout& layout, const SvgOptions& options) {
       }
     }
   }
+  o += scaled(options.overlay);
   o += "</g>\n";
 
   // Labels (screen coordinates).
@@ -335,6 +334,7 @@ std::string layout_to_svg(const Layout& layout, const SvgOptions& options) {
     for (const Route& r : layout.routes->routes) routed += r.status == "routed";
     summary += ", " + std::to_string(routed) + " routed";
   }
+  if (!options.caption.empty()) summary += ", " + escape(options.caption);
   o += "<text x=\"" + px(margin + bar_px + 10) + "\" y=\"" + px(ly + font * 0.35) + "\">" +
        summary + "</text>\n";
   const double col_w = (pic_w - 2 * margin) / legend_cols;

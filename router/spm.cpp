@@ -3,6 +3,7 @@
 #include "router/spm.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -613,6 +614,221 @@ struct L1Map::Impl {
     return out;
   }
 
+  // ------------------------------------------------------------------------------------------
+  // Cells. Inside trapezoid i the distance is the least of its four staircases' rays. Between
+  // consecutive thresholds (a horizontal band) each staircase has one active ray, a linear
+  // function with gradient (+-1, +-1); so the band splits into at most four convex pieces, cut
+  // by horizontal, vertical and diagonal bisectors (the gradients always differ, so ties are
+  // lines, never areas: L1's tied areas were already settled in the staircases, by key_less).
+  struct Cand {
+    int gx, gy;   // gradient
+    i64 c;        // value = gx x + gy y + c
+    uint32_t root;
+  };
+  // Keep the part of convex polygon `poly` where a x + b y + c <= 0.
+  static void clip(std::vector<RPoint>& poly, const Rational& a, const Rational& b, const Rational& c) {
+    const std::size_t n = poly.size();
+    if (n == 0) return;
+    std::vector<Rational> s(n);
+    bool all_in = true, all_out = true;
+    for (std::size_t i = 0; i < n; ++i) {
+      s[i] = a * poly[i].x + b * poly[i].y + c;
+      all_in = all_in && s[i] <= 0;
+      all_out = all_out && s[i] > 0;
+    }
+    if (all_in) return;
+    if (all_out) {
+      poly.clear();
+      return;
+    }
+    std::vector<RPoint> out;
+    out.reserve(n + 1);
+    for (std::size_t i = 0; i < n; ++i) {
+      const RPoint& p = poly[i];
+      const RPoint& q = poly[(i + 1) % n];
+      const Rational &sp = s[i], &sq = s[(i + 1) % n];
+      if (sp <= 0) out.push_back(p);
+      if ((sp < 0 && sq > 0) || (sp > 0 && sq < 0)) {
+        const Rational f = sp / (sp - sq);
+        out.push_back({p.x + (q.x - p.x) * f, p.y + (q.y - p.y) * f});
+      }
+    }
+    poly.clear();
+    for (RPoint& v : out)
+      if (poly.empty() || !(poly.back() == v)) poly.push_back(std::move(v));
+    while (poly.size() > 1 && poly.front() == poly.back()) poly.pop_back();
+  }
+  static bool has_area(const std::vector<RPoint>& poly) {
+    if (poly.size() < 3) return false;
+    Rational a2 = 0;
+    for (std::size_t i = 0; i < poly.size(); ++i) {
+      const RPoint &p = poly[i], &q = poly[(i + 1) % poly.size()];
+      a2 += p.x * q.y - q.x * p.y;
+    }
+    return a2 > 0;
+  }
+
+  void trapezoid_pieces(uint32_t i, bool by_root, std::vector<L1Map::Piece>& out) const {
+    const Trap& t = traps[i];
+    if (t.pl.x == t.pr.x) return;  // width 0: no area
+    auto y_on = [&](Point a, Point b, i64 x) {  // y of segment ab (not vertical) at x, exact
+      const i64 dx = i64{b.x} - a.x;
+      return Rational(i64{a.y} * (i64{b.x} - x) + i64{b.y} * (x - a.x), dx);
+    };
+    std::vector<RPoint> poly{{Rational(t.pl.x), y_on(t.b0, t.b1, t.pl.x)},
+                             {Rational(t.pr.x), y_on(t.b0, t.b1, t.pr.x)},
+                             {Rational(t.pr.x), y_on(t.t0, t.t1, t.pr.x)},
+                             {Rational(t.pl.x), y_on(t.t0, t.t1, t.pl.x)}};
+    if (poly[1] == poly[2]) poly.erase(poly.begin() + 2);
+    if (poly[0] == poly.back()) poly.pop_back();
+    // The four staircases: ranges and the part of each ray's value that is fixed.
+    struct Stair {
+      uint32_t b, e;
+      bool up;
+      int gx;
+      i64 c0;  // value = ray.K + gx x + (up ? y : -y) + c0
+    };
+    const Stair st4[4] = {{t.lo[0], t.lo[1], true, 1, -i64{t.pl.x}},
+                          {t.lo[1], t.lo[2], false, 1, -i64{t.pl.x}},
+                          {t.ro[0], t.ro[1], true, -1, i64{t.pr.x}},
+                          {t.ro[1], t.ro[2], false, -1, i64{t.pr.x}}};
+    auto emit = [&](std::vector<RPoint>&& ring, uint32_t root, bool merged) {
+      if (!has_area(ring)) return;
+      const Root& r = roots[root];
+      out.push_back({std::move(ring), r.source, r.p, r.d, merged});
+    };
+    // Every ray of the trapezoid from one source: one piece (BySource), no bands needed.
+    uint32_t any = kNone;
+    bool one_source = true, one_root = true;
+    for (const Stair& s : st4)
+      for (uint32_t k = s.b; k < s.e; ++k) {
+        const uint32_t r = rays[k].root;
+        if (any == kNone) any = r;
+        one_root = one_root && r == any;
+        one_source = one_source && roots[r].source == roots[any].source;
+      }
+    if (any == kNone) return;  // no ray: walled in (a reached trapezoid is reached everywhere)
+    if (one_root || (!by_root && one_source)) {
+      emit(std::move(poly), any, !one_root);
+      return;
+    }
+    auto y_q = [](Point a, Point b, i64 x) {
+      return Q{i64{a.y} * (i64{b.x} - x) + i64{b.y} * (x - a.x), i64{b.x} - a.x};
+    };
+    const Q ylo = qmin(y_q(t.b0, t.b1, t.pl.x), y_q(t.b0, t.b1, t.pr.x));
+    const Q yhi = qmax(y_q(t.t0, t.t1, t.pl.x), y_q(t.t0, t.t1, t.pr.x));
+    // Band limits: the trapezoid's lowest and highest y, and the thresholds strictly between.
+    std::vector<Q> lim{ylo};
+    for (const Stair& s : st4)
+      for (uint32_t k = s.b; k < s.e; ++k)
+        if (cmp(rays[k].t(), ylo) > 0 && cmp(rays[k].t(), yhi) < 0) lim.push_back(rays[k].t());
+    std::sort(lim.begin() + 1, lim.end(), [](Q a, Q b) { return cmp(a, b) < 0; });
+    lim.erase(std::unique(lim.begin(), lim.end(), [](Q a, Q b) { return cmp(a, b) == 0; }), lim.end());
+    lim.push_back(yhi);
+    // Active ray of each staircase in the band (a, b): up: the last with t <= a; down: the
+    // last (thresholds descending) with t >= b. Bands rise, so each staircase is walked once:
+    // an up staircase's cursor only moves on, a down staircase's only back.
+    uint32_t cursor[4];
+    for (int s = 0; s < 4; ++s) cursor[s] = st4[s].up ? st4[s].b : st4[s].e;
+    auto active = [&](int si, Q a, Q b) -> uint32_t {
+      const Stair& s = st4[si];
+      uint32_t& c = cursor[si];
+      if (s.up) {
+        while (c < s.e && cmp(rays[c].t(), a) <= 0) ++c;  // [s.b, c): t <= a
+        return c > s.b ? c - 1 : kNone;
+      }
+      while (c > s.b && cmp(rays[c - 1].t(), b) < 0) --c;  // [s.b, c): t >= b
+      return c > s.b ? c - 1 : kNone;
+    };
+    auto rq = [](Q q) { return Rational(q.n, q.d); };
+    // Bands, merged while their active rays stay the same. Consecutive bands that are one
+    // root's (ByRoot) or one source's (BySource) become one slab: fewer, larger pieces.
+    struct Run {
+      Q ya, yb;
+      uint32_t root = kNone;
+      bool merged = false;
+    } run;
+    auto flush = [&] {
+      if (run.root == kNone) return;
+      std::vector<RPoint> slab = poly;
+      if (cmp(run.ya, ylo) > 0) clip(slab, 0, -1, rq(run.ya));  // y >= ya
+      if (cmp(run.yb, yhi) < 0) clip(slab, 0, 1, -rq(run.yb));  // y <= yb
+      emit(std::move(slab), run.root, run.merged);
+      run.root = kNone;
+    };
+    // Band i is (lim[i], lim[i + 1]); the active rays of every band, in one walk.
+    const std::size_t nb = lim.size() - 1;
+    std::vector<std::array<uint32_t, 4>> acts(nb);
+    for (std::size_t i = 0; i < nb; ++i)
+      for (int s = 0; s < 4; ++s) acts[i][s] = active(s, lim[i], lim[i + 1]);
+    std::size_t band = 0;
+    while (band < nb) {
+      const std::array<uint32_t, 4> act = acts[band];
+      std::size_t end = band + 1;
+      while (end < nb && acts[end] == act) ++end;
+      const Q ya = lim[band], yb = lim[end];
+      band = end;
+      std::vector<Cand> cands;
+      for (int s = 0; s < 4; ++s)
+        if (act[s] != kNone) {
+          const Ray& r = rays[act[s]];
+          cands.push_back({st4[s].gx, st4[s].up ? 1 : -1, r.K + st4[s].c0, r.root});
+        }
+      if (cands.empty()) throw std::logic_error("spm: a band of a reached trapezoid has no ray");
+      // A candidate no lower than another at every corner of the band's bounding box
+      // [xl, xr] x [ya, yb] is no lower anywhere in the band (their difference is linear): it
+      // wins nowhere with area, so it is dropped. Exact in __int128, scaled by the thresholds'
+      // denominators. (Two candidates never dominate each other: their gradients differ.)
+      if (cands.size() > 1) {
+        auto diff_at = [&](const Cand& j, const Cand& i, i64 x, Q y) {  // sign of f_j - f_i at (x, y)
+          const i128 v = i128{j.gx - i.gx} * x * y.d + i128{j.gy - i.gy} * y.n + (i128{j.c} - i.c) * y.d;
+          return v < 0 ? -1 : (v > 0 ? 1 : 0);
+        };
+        std::vector<Cand> kept;
+        for (std::size_t i = 0; i < cands.size(); ++i) {
+          bool dominated = false;
+          for (std::size_t j = 0; j < cands.size() && !dominated; ++j)
+            dominated = j != i && diff_at(cands[j], cands[i], t.pl.x, ya) <= 0 && diff_at(cands[j], cands[i], t.pr.x, ya) <= 0 &&
+                        diff_at(cands[j], cands[i], t.pl.x, yb) <= 0 && diff_at(cands[j], cands[i], t.pr.x, yb) <= 0;
+          if (!dominated) kept.push_back(cands[i]);
+        }
+        cands = std::move(kept);
+      }
+      bool uniform = true, merged = false;
+      for (const Cand& c : cands) {
+        uniform = uniform && (by_root ? c.root == cands[0].root : roots[c.root].source == roots[cands[0].root].source);
+        merged = merged || c.root != cands[0].root;
+      }
+      if (uniform) {
+        const bool joins = run.root != kNone && (by_root ? run.root == cands[0].root
+                                                         : roots[run.root].source == roots[cands[0].root].source);
+        if (joins) {
+          run.yb = yb;
+          run.merged = run.merged || merged || run.root != cands[0].root;
+        } else {
+          flush();
+          run = {ya, yb, cands[0].root, merged};
+        }
+        continue;
+      }
+      flush();
+      std::vector<RPoint> b = poly;
+      if (cmp(ya, ylo) > 0) clip(b, 0, -1, rq(ya));   // y >= ya
+      if (cmp(yb, yhi) < 0) clip(b, 0, 1, -rq(yb));   // y <= yb
+      if (!has_area(b)) continue;
+      for (std::size_t a = 0; a < cands.size(); ++a) {
+        std::vector<RPoint> p = b;
+        for (std::size_t o = 0; o < cands.size() && p.size() >= 3; ++o) {
+          if (o == a) continue;
+          const Cand &x = cands[a], &y = cands[o];
+          clip(p, x.gx - y.gx, x.gy - y.gy, Rational(x.c) - y.c);
+        }
+        emit(std::move(p), cands[a].root, false);
+      }
+    }
+    flush();
+  }
+
   bool is_free(Point q) const {
     if (!in_domain(q)) return false;
     if (find(q) != kNone) return true;
@@ -660,6 +876,12 @@ std::vector<L1Map::Trapezoid> L1Map::trapezoids() const {
   for (const Trap& t : m.traps)
     out.push_back({m.P[t.L], m.P[t.R], {m.P[m.edges[t.bot].l], m.P[m.edges[t.bot].r]},
                    {m.P[m.edges[t.top].l], m.P[m.edges[t.top].r]}});
+  return out;
+}
+
+std::vector<L1Map::Piece> L1Map::pieces(Detail detail) const {
+  std::vector<Piece> out;
+  for (uint32_t i = 0; i < impl_->traps.size(); ++i) impl_->trapezoid_pieces(i, detail == Detail::ByRoot, out);
   return out;
 }
 

@@ -58,9 +58,22 @@
 #include <span>
 #include <vector>
 
+#include <boost/multiprecision/gmp.hpp>
+
 #include "geom/types.h"
 
 namespace taut::router {
+
+// Exact rationals for the map's cell vertices: bisectors sit at half-integers and meet sloped
+// blockage edges at rationals whose numerators pass 2^64, so no fixed-width integer pair holds
+// them. Boost.Multiprecision over GMP's mpq (always reduced) keeps them exact; its header-only
+// cpp_rational was 4x slower here.
+using Rational = boost::multiprecision::mpq_rational;
+struct RPoint {
+  Rational x, y;
+  friend bool operator==(const RPoint&, const RPoint&) = default;
+  friend bool operator<(const RPoint& a, const RPoint& b) { return a.x != b.x ? a.x < b.x : a.y < b.y; }
+};
 
 class L1Map {
  public:
@@ -98,6 +111,23 @@ class L1Map {
     geom::Segment bottom, top;
   };
   std::vector<Trapezoid> trapezoids() const;
+
+  // The map's cells as convex pieces with exact vertices (Mitchell's SPM refined by the
+  // decomposition): every point q of a piece has d(q) = root_distance + |q - root|_1 and is
+  // seen straight from root. Pieces have positive area, cover the reached free space and
+  // overlap only on their boundaries; points no source reaches are in no piece.
+  // ByRoot: one root per piece (the structure the tests check against the reference).
+  // BySource: a piece may join the cells of several roots of one source (fewer, larger pieces:
+  // what the Voronoi diagram merges); its root fields are then those of one of them.
+  enum class Detail { ByRoot, BySource };
+  struct Piece {
+    std::vector<RPoint> ring;  // convex, counter-clockwise, no repeated vertex
+    std::size_t source = 0;
+    geom::Point root;
+    std::int64_t root_distance = 0;
+    bool merged = false;  // BySource only: the piece may hold points of other roots of `source`
+  };
+  std::vector<Piece> pieces(Detail detail) const;
 
   struct Stats {
     std::int64_t vertices = 0;    // decomposition points (obstacle vertices, frame, sources)

@@ -2,6 +2,7 @@
 
 #include "tools/commands.h"
 
+#include <fstream>
 #include <iostream>
 
 #include "io/atomic_file.h"
@@ -119,6 +120,37 @@ std::optional<io::Layout> load_routing_layout(const std::string& path, const Loa
   auto layout = load_layout(path, load);
   if (!layout || !check_routing_options(routing, *layout, load.quiet)) return std::nullopt;
   return layout;
+}
+
+// Points from a text file, one X,Y per line; blank lines and lines starting with # are skipped.
+// A bad line: FILE:LINE: error: [CLI-0025], nothing added; an unreadable file: IO-0001.
+bool read_point_file(const std::string& path, std::vector<geom::Point>& out) {
+  std::ifstream in(path);
+  if (!in) {
+    print_diagnostics({Diagnostic{Severity::Error, "IO-0001", path, 0, 0, "cannot open the file for reading"}});
+    return false;
+  }
+  std::vector<geom::Point> got;
+  std::string line;
+  for (int n = 1; std::getline(in, line); ++n) {
+    const auto b = line.find_first_not_of(" \t\r");
+    if (b == std::string::npos || line[b] == '#') continue;
+    const auto e = line.find_last_not_of(" \t\r");
+    const std::string text = line.substr(b, e - b + 1);
+    const auto p = parse_point(text);
+    if (!p) {
+      print_diagnostics({Diagnostic{Severity::Error, "CLI-0025", path, n, 0,
+                                    "\"" + text + "\": expected X,Y with integers of at most 2^30 - 1 in absolute value"}});
+      return false;
+    }
+    got.push_back(*p);
+  }
+  if (in.bad()) {
+    print_diagnostics({Diagnostic{Severity::Error, "IO-0001", path, 0, 0, "read error"}});
+    return false;
+  }
+  out.insert(out.end(), got.begin(), got.end());
+  return true;
 }
 
 bool write_output(const std::string& path, std::string_view bytes) {

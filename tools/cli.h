@@ -64,6 +64,11 @@ std::string routing_orientations(const RoutingOptions& options, const io::Layout
 std::optional<io::Layout> load_routing_layout(const std::string& path, const LoadOptions& load,
                                               const RoutingOptions& routing);
 
+// Points from a text file, one X,Y per line (blank lines and lines starting with # skipped),
+// appended to `out`. A bad line: FILE:LINE: error: [CLI-0025], nothing added; an unreadable file:
+// IO-0001; false then.
+bool read_point_file(const std::string& path, std::vector<geom::Point>& out);
+
 // Writes bytes atomically; prints the diagnostic and returns false on failure.
 bool write_output(const std::string& path, std::string_view bytes);
 

@@ -19,6 +19,7 @@ void add_check(CLI::App& app, int& status);
 void add_path(CLI::App& app, int& status);
 void add_route(CLI::App& app, int& status);
 void add_spm(CLI::App& app, int& status);
+void add_voronoi(CLI::App& app, int& status);
 void add_render(CLI::App& app, int& status);
 void add_stats(CLI::App& app, int& status);
 void add_gen(CLI::App& app, int& status);

@@ -1,0 +1,102 @@
+// Benchmark of the L1 geodesic Voronoi diagram (router/voronoi.h, l1_voronoi): the time to turn
+// a built shortest path map into exact polygons, against the number of obstacle vertices n and
+// of sites k, on generated layouts. Baselines in the same run (machines are noisy; trust
+// ratios): the map's own build (the diagram's ratio to it) and std::sort of the n vertices.
+// Also the diagram's size: regions, rings, ring vertices, and the map pieces it merged.
+//
+//   bench_voronoi [--sizes N,N,..] [--sites K,K,..] [--kind rects|polygons|maze|degenerate]
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "bench/bench_util.h"
+#include "router/spm.h"
+#include "router/voronoi.h"
+
+namespace {
+
+using taut::bench::parse_list;
+using taut::bench::seconds_of;
+using taut::geom::Point;
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::int64_t> sizes = {1000, 10000, 100000}, site_counts = {10, 1000};
+  std::string kind_name = "rects";
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--sizes") && i + 1 < argc) sizes = parse_list(argv[++i]);
+    else if (!std::strcmp(argv[i], "--sites") && i + 1 < argc) site_counts = parse_list(argv[++i]);
+    else if (!std::strcmp(argv[i], "--kind") && i + 1 < argc) kind_name = argv[++i];
+    else {
+      std::fprintf(stderr, "usage: %s [--sizes N,..] [--sites K,..] [--kind K]\n", argv[0]);
+      return 2;
+    }
+  }
+  const auto kind = taut::io::parse_gen_kind(kind_name);
+  if (!kind) {
+    std::fprintf(stderr, "unknown kind %s\n", kind_name.c_str());
+    return 2;
+  }
+  std::printf("L1 geodesic Voronoi diagram, kind %s; times are best of 1\n", kind_name.c_str());
+  std::printf("%9s %6s | %8s %9s %8s %8s | %8s %8s %8s %9s\n", "vertices", "sites", "map s", "voronoi s", "/map",
+              "/sort", "pieces", "regions", "rings", "ring verts");
+  struct Sample {
+    double logn, logt;
+  };
+  std::vector<Sample> growth;
+  for (const std::int64_t size : sizes) {
+    const auto lay = taut::bench::bench_layout(*kind, size);
+    const auto n = static_cast<std::int64_t>(lay.points.size());
+    const double sort_s = seconds_of(
+        [&] {
+          std::vector<Point> v = lay.points;
+          std::sort(v.begin(), v.end());
+        },
+        3);
+    const auto& dom = lay.norm.domain;
+    std::mt19937_64 rng(7);
+    std::vector<Point> free_pts;
+    {
+      taut::router::L1Map probe(dom, lay.norm.obstacles, {});
+      while (static_cast<std::int64_t>(free_pts.size()) < *std::max_element(site_counts.begin(), site_counts.end())) {
+        const Point p{static_cast<taut::geom::Coord>(dom.lo.x + static_cast<std::int64_t>(rng() % (std::uint64_t(dom.hi.x) - dom.lo.x + 1))),
+                      static_cast<taut::geom::Coord>(dom.lo.y + static_cast<std::int64_t>(rng() % (std::uint64_t(dom.hi.y) - dom.lo.y + 1)))};
+        if (probe.is_free(p)) free_pts.push_back(p);
+      }
+    }
+    for (const std::int64_t k : site_counts) {
+      const std::vector<Point> sites(free_pts.begin(), free_pts.begin() + k);
+      std::optional<taut::router::L1Map> map;
+      const double build = seconds_of([&] { map.emplace(dom, lay.norm.obstacles, sites); }, 1);
+      std::vector<taut::router::VoronoiRegion> regions;
+      const double vor = seconds_of([&] { regions = taut::router::l1_voronoi(*map); }, 1);
+      const std::size_t pieces = map->pieces(taut::router::L1Map::Detail::BySource).size();
+      std::size_t rings = 0, verts = 0;
+      for (const auto& r : regions)
+        for (const auto& p : r.polygons) {
+          rings += 1 + p.holes.size();
+          verts += p.outer.size();
+          for (const auto& h : p.holes) verts += h.size();
+        }
+      std::printf("%9lld %6lld | %8.3f %9.3f %8.2f %8.0f | %8zu %8zu %8zu %9zu\n", static_cast<long long>(n),
+                  static_cast<long long>(k), build, vor, vor / build, vor / sort_s, pieces, regions.size(), rings, verts);
+      std::fflush(stdout);
+      if (k == site_counts.front()) growth.push_back({std::log(static_cast<double>(n)), std::log(vor)});
+    }
+  }
+  if (growth.size() >= 2) {
+    const auto& a = growth[growth.size() - 2];
+    const auto& b = growth.back();
+    std::printf("diagram time grows as n^%.2f between the two largest sizes (%lld sites: the first count)\n",
+                (b.logt - a.logt) / (b.logn - a.logn), static_cast<long long>(site_counts.front()));
+  }
+  std::printf("columns: /map = diagram time / the map's build; /sort = diagram time / std::sort of the n vertices;\n"
+              "pieces = the map's convex pieces by site that the diagram merges; rings and ring vertices of all regions\n");
+  return 0;
+}
