@@ -7,7 +7,9 @@
 // query is a point location in it (see spm.h for its cost). Octilinear: one multi-source wavefront run
 // (router/wavefront.h: all sources at distance 0, the queries as targets), which is exact; the
 // octilinear map comes with the rest of issue #4.
+#include <cmath>
 #include <iostream>
+#include <numbers>
 
 #include <nlohmann/json.hpp>
 
@@ -127,7 +129,13 @@ void add_spm(CLI::App& app, int& status) {
           q["distance"] = a.distance->a;
         else
           q["distance"] = a.distance->to_double();
-        if (oct) q["distance_exact"] = {a.distance->a, a.distance->b};
+        if (oct) {
+          q["distance_exact"] = {a.distance->a, a.distance->b};
+          // The octilinear distance approximates the Euclidean geodesic one (Mitchell's fixed
+          // orientations, k = 4): d_E <= d_8 <= sec(pi/8) d_E, so d_E lies in these bounds.
+          const double d8 = a.distance->to_double();
+          q["euclidean_bounds"] = {d8 * std::cos(std::numbers::pi / 8), d8};
+        }
         q["source"] = *a.source;
         auto pts = nlohmann::ordered_json::array();
         for (const geom::Point p : a.path) pts.push_back({p.x, p.y});

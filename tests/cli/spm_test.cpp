@@ -74,6 +74,14 @@ int check_spm_on(const std::string& file, const std::vector<Point>& sources, con
     const Root2 got = oct ? Root2{q["distance_exact"][0].get<std::int64_t>(), q["distance_exact"][1].get<std::int64_t>()}
                           : Root2{q["distance"].get<std::int64_t>(), 0};
     EXPECT_EQ(got, *best);
+    if (oct) {  // the Euclidean bounds: [d cos(pi/8), d] (tests/router/euclid_approx_test.cpp checks the claim)
+      EXPECT_TRUE(q.contains("euclidean_bounds"));
+      if (!q.contains("euclidean_bounds")) continue;
+      EXPECT_EQ(q["euclidean_bounds"][1].get<double>(), got.to_double());
+      EXPECT_NEAR(q["euclidean_bounds"][0].get<double>(), got.to_double() * 0.92387953251128674, 1e-9 * (1 + got.to_double()));
+    } else {
+      EXPECT_FALSE(q.contains("euclidean_bounds"));
+    }
     const std::size_t src = q["source"].get<std::size_t>();
     if (src >= sources.size()) {
       ADD_FAILURE() << "source " << src;

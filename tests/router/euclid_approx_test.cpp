@@ -1,0 +1,115 @@
+// The octilinear distance as an approximation of the Euclidean geodesic distance (Mitchell's
+// fixed-orientation metrics with k = 4 evenly spaced orientations, 0/45/90/135 degrees):
+//   d_E <= d_8 <= sec(pi/8) d_E  (sec(pi/8) = 1.0823922...: epsilon = 8.24 %),
+// which `taut spm --orientations octilinear` reports as "euclidean_bounds". d_8 comes from
+// router::OctWavefront (exact in Z[sqrt2]); d_E from an independent Euclidean visibility graph
+// built here (obstacle vertices and the two ends, an edge wherever oracle::L1Reference says a
+// segment is allowed, Dijkstra in long double). Instances with a pinch vertex (two wedges) are
+// skipped: there a path may not turn through the pinch, which plain visibility does not see.
+// The comparison of two irrational numbers is the only inexact step: each side gets a relative
+// slack of 1e-12, far below the 8 % the bound allows and far above long double's rounding
+// (squares of coordinate differences below 2^62 are exact in its 64-bit mantissa).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <queue>
+#include <random>
+#include <set>
+
+#include "oracle/l1_oracle.h"
+#include "router/wavefront.h"
+#include "support/wavefront_cases.h"
+
+namespace taut::test {
+namespace {
+
+using geom::Point;
+
+long double euclid(Point a, Point b) {
+  const long double dx = static_cast<long double>(a.x) - b.x, dy = static_cast<long double>(a.y) - b.y;
+  return std::sqrt(dx * dx + dy * dy);
+}
+
+// Euclidean geodesic distance from s to t; nullopt when t is unreachable.
+std::optional<long double> euclid_distance(const oracle::L1Reference& ref, const std::vector<Point>& vertices, Point s,
+                                           Point t) {
+  if (s == t) return 0.0L;
+  std::vector<Point> nodes{s, t};
+  for (Point v : vertices)
+    if (v != s && v != t && ref.is_free(v)) nodes.push_back(v);
+  const std::size_t n = nodes.size();
+  std::vector<long double> dist(n, INFINITY);
+  std::vector<bool> done(n, false);
+  dist[0] = 0;
+  for (std::size_t it = 0; it < n; ++it) {  // dense Dijkstra: the graph is complete-ish
+    std::size_t u = n;
+    for (std::size_t i = 0; i < n; ++i)
+      if (!done[i] && std::isfinite(dist[i]) && (u == n || dist[i] < dist[u])) u = i;
+    if (u == n) break;
+    done[u] = true;
+    if (u == 1) return dist[1];
+    for (std::size_t v = 0; v < n; ++v)
+      if (!done[v] && dist[u] + euclid(nodes[u], nodes[v]) < dist[v] && ref.visible(nodes[u], nodes[v]))
+        dist[v] = dist[u] + euclid(nodes[u], nodes[v]);
+  }
+  return std::nullopt;
+}
+
+TEST(EuclidApprox, OctilinearDistanceBoundsTheEuclideanOne) {
+  const long double sec = 1.0L / std::cos(3.14159265358979323846264338327950288L / 8);
+  const long double slack = 1e-12L;
+  int instances = 0, pairs = 0, skipped_pinch = 0, loose = 0;
+  long double worst = 1;
+  for (std::uint64_t seed = 1; seed <= 1000; ++seed) {
+    WavefrontCase c;
+    try {
+      c = make_wavefront_case(seed);
+    } catch (const std::exception&) {
+      continue;
+    }
+    const oracle::L1Reference ref(c.domain, c.obstacles);
+    if (!ref.problems().empty()) continue;
+    std::vector<Point> vertices;
+    bool pinch = false;
+    for (const auto& p : c.obstacles) {
+      vertices.insert(vertices.end(), p.outer.begin(), p.outer.end());
+      for (const auto& h : p.holes) vertices.insert(vertices.end(), h.begin(), h.end());
+    }
+    for (Point v : vertices) pinch = pinch || ref.wedges_at(v).size() > 1;
+    if (pinch) {
+      ++skipped_pinch;
+      continue;
+    }
+    std::vector<Point> free_pts;
+    for (Point p : c.candidates)
+      if (ref.is_free(p)) free_pts.push_back(p);
+    if (free_pts.size() < 2) continue;
+    ++instances;
+    std::mt19937_64 rng(seed);
+    router::OctWavefront wf(c.domain, c.obstacles);
+    for (int k = 0; k < 3; ++k) {
+      const Point s = free_pts[rng() % free_pts.size()], t = free_pts[rng() % free_pts.size()];
+      wf.run(std::vector<Point>{s}, std::vector<Point>{t}, router::WavefrontStop::AllTargets);
+      const auto d8 = wf.target_distance(0);
+      const auto de = euclid_distance(ref, vertices, s, t);
+      ASSERT_EQ(d8.has_value(), de.has_value()) << "seed " << seed << ": reachability differs";
+      if (!d8) continue;
+      ++pairs;
+      const long double v8 = static_cast<long double>(d8->a) + static_cast<long double>(d8->b) * std::sqrt(2.0L);
+      EXPECT_LE(*de, v8 * (1 + slack)) << "seed " << seed << " (" << c.family << "): the octilinear path is shorter than the Euclidean one: " << s.x << "," << s.y << " -> " << t.x << "," << t.y << " d8 " << static_cast<double>(v8) << " dE " << static_cast<double>(*de);
+      EXPECT_LE(v8, sec * *de * (1 + slack)) << "seed " << seed << ": beyond sec(pi/8)";
+      if (*de > 0) {
+        worst = std::max(worst, v8 / *de);
+        loose += v8 > *de * 1.02L;
+      }
+    }
+  }
+  std::printf("instances %d (skipped with pinches %d), pairs %d, worst d8/dE %.6Lf (bound %.6Lf), %d pairs over 2 %%\n",
+              instances, skipped_pinch, pairs, worst, sec, loose);
+  EXPECT_GE(instances, 400);
+  EXPECT_GE(pairs, 1000);
+  EXPECT_GE(loose, 500);  // the bound is exercised, not only met by axis-parallel answers
+}
+
+}  // namespace
+}  // namespace taut::test
