@@ -12,7 +12,6 @@
 
 #include <boost/geometry.hpp>
 #include <boost/geometry/index/rtree.hpp>
-#include <boost/iterator/function_output_iterator.hpp>
 
 #include "geom/index.h"
 #include "geom/predicates.h"
@@ -549,18 +548,15 @@ struct L1Map::Impl {
   // The trapezoid whose closure holds q (q not a decomposition point); kNone if none (q is not
   // free).
   uint32_t find(Point q) const {
-    uint32_t found = kNone;
-    const BBox bp(BPoint(down(q.x), down(q.y)), BPoint(up(q.x), up(q.y)));
-    auto exact = [&](const std::pair<BBox, uint32_t>& v) {
-      const Trap& t = traps[v.second];
-      return t.pl < q && q < t.pr && geom::orientation(t.b0, t.b1, q) >= 0 &&
-             geom::orientation(t.t0, t.t1, q) <= 0;
-    };
-    tree.query(bgi::intersects(bp) && bgi::satisfies(exact),
-               boost::make_function_output_iterator([&](const std::pair<BBox, uint32_t>& v) {
-                 if (found == kNone) found = v.second;
-               }));
-    return found;
+    const BPoint bp(down(q.x), down(q.y)), bq(up(q.x), up(q.y));
+    // The first box holding q whose trapezoid holds q exactly: the query iterator stops there
+    // (no further nodes visited), unlike an output-iterator query that walks every candidate.
+    for (auto it = tree.qbegin(bgi::intersects(BBox(bp, bq))); it != tree.qend(); ++it) {
+      const Trap& t = traps[it->second];
+      if (t.pl < q && q < t.pr && geom::orientation(t.b0, t.b1, q) >= 0 && geom::orientation(t.t0, t.t1, q) <= 0)
+        return it->second;
+    }
+    return kNone;
   }
 
   // Best ray at q inside trapezoid i: (value, root).
