@@ -33,6 +33,13 @@ void xmlFreeTextReader(xmlTextReaderPtr reader);
 namespace taut::io {
 namespace {
 
+SvgOptions svg_options(int width_px, bool labels) {
+  SvgOptions o;
+  o.width_px = width_px;
+  o.labels = labels;
+  return o;
+}
+
 struct Element {
   std::string name;
   std::map<std::string, std::string> attrs;
@@ -121,7 +128,7 @@ TEST(Svg, DemoHasOneElementPerObject) {
 // lands inside the picture.
 TEST(Svg, FlipsYAndFits) {
   const Layout l = demo();
-  const Parsed p = parse_svg(layout_to_svg(l, SvgOptions{800, true}));
+  const Parsed p = parse_svg(layout_to_svg(l, svg_options(800, true)));
   ASSERT_TRUE(p.ok);
   const double w = std::stod(p.elements[0].attrs.at("width"));
   const double h = std::stod(p.elements[0].attrs.at("height"));
@@ -208,7 +215,7 @@ TEST(Svg, EmptyAndUnboundedLayouts) {
   EXPECT_TRUE(parse_svg(layout_to_svg(empty)).ok);
   Layout one;
   one.nets.push_back({"n", {{"p", Point{5, 5}, {}, 0}}, {}, 0});
-  const Parsed p = parse_svg(layout_to_svg(one, SvgOptions{100, false}));
+  const Parsed p = parse_svg(layout_to_svg(one, svg_options(100, false)));
   ASSERT_TRUE(p.ok);
   EXPECT_EQ(p.count_class("pin"), 1);
   EXPECT_EQ(p.count_class("boundary"), 0);
@@ -216,8 +223,8 @@ TEST(Svg, EmptyAndUnboundedLayouts) {
 
 TEST(Svg, LabelsCanBeTurnedOff) {
   const Layout l = demo();
-  const Parsed with = parse_svg(layout_to_svg(l, SvgOptions{1200, true}));
-  const Parsed without = parse_svg(layout_to_svg(l, SvgOptions{1200, false}));
+  const Parsed with = parse_svg(layout_to_svg(l, svg_options(1200, true)));
+  const Parsed without = parse_svg(layout_to_svg(l, svg_options(1200, false)));
   ASSERT_TRUE(with.ok && without.ok);
   EXPECT_GT(with.count_name("text"), without.count_name("text") + static_cast<int>(l.blockages.size()) - 1);
 }
