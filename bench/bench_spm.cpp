@@ -13,11 +13,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <random>
 #include <string>
 #include <vector>
 
 #include "bench/bench_util.h"
+#include "bench/free_points.h"
 #include "router/spm.h"
 #include "router/wavefront.h"
 
@@ -63,27 +63,10 @@ int main(int argc, char** argv) {
   for (const std::int64_t size : sizes) {
     const auto lay = taut::bench::bench_layout(*kind, size);
     const auto n = static_cast<std::int64_t>(lay.points.size());
-    const double sort_s = seconds_of(
-        [&] {
-          std::vector<Point> v = lay.points;
-          std::sort(v.begin(), v.end());
-        },
-        3);
+    const double sort_s = taut::bench::sort_seconds(lay.points);
     const auto& dom = lay.norm.domain;
-    // Free points: from a first map's point location (O(log n) each).
-    std::mt19937_64 rng(7);
-    auto random_point = [&] {
-      return Point{static_cast<taut::geom::Coord>(dom.lo.x + static_cast<std::int64_t>(rng() % (std::uint64_t(dom.hi.x) - dom.lo.x + 1))),
-                   static_cast<taut::geom::Coord>(dom.lo.y + static_cast<std::int64_t>(rng() % (std::uint64_t(dom.hi.y) - dom.lo.y + 1)))};
-    };
-    std::vector<Point> free_pts;
-    {
-      taut::router::L1Map probe(dom, lay.norm.obstacles, {});
-      while (static_cast<int>(free_pts.size()) < nqueries + 10000) {
-        const Point p = random_point();
-        if (probe.is_free(p)) free_pts.push_back(p);
-      }
-    }
+    const std::vector<Point> free_pts =
+        taut::bench::random_free_points(dom, lay.norm.obstacles, static_cast<std::size_t>(nqueries) + 10000, 7);
     for (const std::int64_t k : source_counts) {
       std::vector<Point> sources(free_pts.end() - k, free_pts.end());
       std::vector<Point> queries(free_pts.begin(), free_pts.begin() + nqueries);

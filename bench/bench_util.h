@@ -82,6 +82,16 @@ geom::Point bench_source(const geom::Box& dom, IsFree is_free) {
   return source;
 }
 
+// The baseline the scaling benchmarks divide by: std::sort of the points, best of 3.
+inline double sort_seconds(const std::vector<geom::Point>& points) {
+  return seconds_of(
+      [&] {
+        std::vector<geom::Point> v = points;
+        std::sort(v.begin(), v.end());
+      },
+      3);
+}
+
 // "1000,10000" -> {1000, 10000} (a --sizes style option; modifies s).
 inline std::vector<std::int64_t> parse_list(char* s) {
   std::vector<std::int64_t> v;

@@ -10,11 +10,11 @@
 #include <cstdio>
 #include <cstring>
 #include <optional>
-#include <random>
 #include <string>
 #include <vector>
 
 #include "bench/bench_util.h"
+#include "bench/free_points.h"
 #include "router/spm.h"
 #include "router/voronoi.h"
 
@@ -53,30 +53,23 @@ int main(int argc, char** argv) {
   for (const std::int64_t size : sizes) {
     const auto lay = taut::bench::bench_layout(*kind, size);
     const auto n = static_cast<std::int64_t>(lay.points.size());
-    const double sort_s = seconds_of(
-        [&] {
-          std::vector<Point> v = lay.points;
-          std::sort(v.begin(), v.end());
-        },
-        3);
+    const double sort_s = taut::bench::sort_seconds(lay.points);
     const auto& dom = lay.norm.domain;
-    std::mt19937_64 rng(7);
-    std::vector<Point> free_pts;
-    {
-      taut::router::L1Map probe(dom, lay.norm.obstacles, {});
-      while (static_cast<std::int64_t>(free_pts.size()) < *std::max_element(site_counts.begin(), site_counts.end())) {
-        const Point p{static_cast<taut::geom::Coord>(dom.lo.x + static_cast<std::int64_t>(rng() % (std::uint64_t(dom.hi.x) - dom.lo.x + 1))),
-                      static_cast<taut::geom::Coord>(dom.lo.y + static_cast<std::int64_t>(rng() % (std::uint64_t(dom.hi.y) - dom.lo.y + 1)))};
-        if (probe.is_free(p)) free_pts.push_back(p);
-      }
-    }
+    const std::vector<Point> free_pts = taut::bench::random_free_points(
+        dom, lay.norm.obstacles, static_cast<std::size_t>(*std::max_element(site_counts.begin(), site_counts.end())), 7);
     for (const std::int64_t k : site_counts) {
       const std::vector<Point> sites(free_pts.begin(), free_pts.begin() + k);
       std::optional<taut::router::L1Map> map;
       const double build = seconds_of([&] { map.emplace(dom, lay.norm.obstacles, sites); }, 1);
       std::vector<taut::router::VoronoiRegion> regions;
-      const double vor = seconds_of([&] { regions = taut::router::l1_voronoi(*map); }, 1);
-      const std::size_t pieces = map->pieces(taut::router::L1Map::Detail::BySource).size();
+      std::size_t pieces = 0;
+      const double vor = seconds_of(
+          [&] {
+            const auto by_site = map->pieces(taut::router::L1Map::Detail::BySource);
+            pieces = by_site.size();
+            regions = taut::router::l1_voronoi(by_site);
+          },
+          1);
       std::size_t rings = 0, verts = 0;
       for (const auto& r : regions)
         for (const auto& p : r.polygons) {

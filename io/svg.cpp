@@ -38,9 +38,6 @@ std::string px(double v) {
   return buf;
 }
 
-using io::xml_escape;
-constexpr auto escape = [](std::string_view v) { return xml_escape(v); };
-
 void append_ring_path(std::string& d, const std::vector<Point>& ring) {
   for (std::size_t i = 0; i < ring.size(); ++i) {
     d += i == 0 ? 'M' : 'L';
@@ -196,7 +193,7 @@ std::string layout_to_svg(const Layout& layout, const SvgOptions& options) {
   o += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + px(pic_w) + "\" height=\"" +
        px(pic_h) + "\" viewBox=\"0 0 " + px(pic_w) + " " + px(pic_h) + "\" font-family=\"" +
        "DejaVu Sans, Helvetica, Arial, sans-serif\">\n";
-  o += "<title>" + escape(layout.name) + "</title>\n";
+  o += "<title>" + xml_escape(layout.name) + "</title>\n";
   o += "<rect x=\"0\" y=\"0\" width=\"" + px(pic_w) + "\" height=\"" + px(pic_h) +
        "\" fill=\"#ffffff\"/>\n";
 
@@ -228,7 +225,7 @@ std::string layout_to_svg(const Layout& layout, const SvgOptions& options) {
   const std::string blockage_style = "fill=\"#8d99a6\" fill-opacity=\"0.75\" stroke=\"#3d4852\" "
                                      "stroke-width=\"" + world(0.8) + "\"";
   for (const Blockage& b : layout.blockages) {
-    o += "<g class=\"blockage\" data-id=\"" + escape(b.id) + "\">";
+    o += "<g class=\"blockage\" data-id=\"" + xml_escape(b.id) + "\">";
     for (const Shape& shape : b.shapes) o += shape_element(shape, blockage_style);
     o += "</g>\n";
   }
@@ -241,7 +238,7 @@ std::string layout_to_svg(const Layout& layout, const SvgOptions& options) {
       auto it = net_index.find(r.net);
       const std::string color = net_color(it == net_index.end() ? 0 : it->second);
       for (const Wire& wire : r.wires)
-        o += "<polyline class=\"wire\" data-net=\"" + escape(r.net) + "\" points=\"" +
+        o += "<polyline class=\"wire\" data-net=\"" + xml_escape(r.net) + "\" points=\"" +
              points_attr(wire.points) + "\" fill=\"none\" stroke=\"" + color +
              "\" stroke-opacity=\"0.85\" stroke-width=\"" + world(wire_px) + "\"/>\n";
     }
@@ -251,18 +248,18 @@ std::string layout_to_svg(const Layout& layout, const SvgOptions& options) {
     const Net& n = layout.nets[i];
     const std::string color = net_color(i);
     if (n.sketch)
-      o += "<polyline class=\"sketch\" data-net=\"" + escape(n.name) + "\" points=\"" +
+      o += "<polyline class=\"sketch\" data-net=\"" + xml_escape(n.name) + "\" points=\"" +
            points_attr(n.sketch->points) + "\" fill=\"none\" stroke=\"" + color +
            "\" stroke-width=\"" + world(1.5) + "\" stroke-dasharray=\"" + world(6) + " " +
            world(4) + "\"/>\n";
     for (const Pin& p : n.pins) {
       if (p.point) {
-        o += "<circle class=\"pin\" data-net=\"" + escape(n.name) + "\" cx=\"" +
+        o += "<circle class=\"pin\" data-net=\"" + xml_escape(n.name) + "\" cx=\"" +
              std::to_string(p.point->x) + "\" cy=\"" + std::to_string(p.point->y) + "\" r=\"" +
              world(4) + "\" fill=\"" + color + "\" stroke=\"#ffffff\" stroke-width=\"" +
              world(1) + "\"/>\n";
       } else if (p.shape) {
-        o += "<g class=\"pin\" data-net=\"" + escape(n.name) + "\">" +
+        o += "<g class=\"pin\" data-net=\"" + xml_escape(n.name) + "\">" +
              shape_element(*p.shape, "fill=\"" + color + "\" fill-opacity=\"0.25\" stroke=\"" +
                                          color + "\" stroke-width=\"" + world(2) + "\"") +
              "</g>\n";
@@ -281,7 +278,7 @@ std::string layout_to_svg(const Layout& layout, const SvgOptions& options) {
       for (const Shape& shape : b.shapes) bb.add(shape);
       if (bb.empty) continue;
       const Point spot = label_spot(b, bb);
-      o += "<text x=\"" + px(sx(spot.x)) + "\" y=\"" + px(sy(spot.y)) + "\">" + escape(b.id) +
+      o += "<text x=\"" + px(sx(spot.x)) + "\" y=\"" + px(sy(spot.y)) + "\">" + xml_escape(b.id) +
            "</text>\n";
     }
     o += "</g>\n";
@@ -303,7 +300,7 @@ std::string layout_to_svg(const Layout& layout, const SvgOptions& options) {
           continue;
         }
         o += "<text x=\"" + px(sx(x) + 6) + "\" y=\"" + px(sy(y) - 6) + "\" fill=\"" +
-             net_color(i) + "\">" + escape(n.name) + "." + escape(p.name) + "</text>\n";
+             net_color(i) + "\">" + xml_escape(n.name) + "." + xml_escape(p.name) + "</text>\n";
       }
     }
     o += "</g>\n";
@@ -326,7 +323,7 @@ std::string layout_to_svg(const Layout& layout, const SvgOptions& options) {
        "\" y2=\"" + px(ly + 4) + "\" stroke=\"#1d252c\" stroke-width=\"2\"/>\n";
   o += "<line x1=\"" + px(margin + bar_px) + "\" y1=\"" + px(ly - 4) + "\" x2=\"" +
        px(margin + bar_px) + "\" y2=\"" + px(ly + 4) + "\" stroke=\"#1d252c\" stroke-width=\"2\"/>\n";
-  std::string summary = std::string(bar_label) + "  \u2022  " + escape(layout.name) + ": " +
+  std::string summary = std::string(bar_label) + "  \u2022  " + xml_escape(layout.name) + ": " +
                         std::to_string(layout.blockages.size()) + " blockages, " +
                         std::to_string(layout.nets.size()) + " nets";
   if (layout.routes) {
@@ -334,7 +331,7 @@ std::string layout_to_svg(const Layout& layout, const SvgOptions& options) {
     for (const Route& r : layout.routes->routes) routed += r.status == "routed";
     summary += ", " + std::to_string(routed) + " routed";
   }
-  if (!options.caption.empty()) summary += ", " + escape(options.caption);
+  if (!options.caption.empty()) summary += ", " + xml_escape(options.caption);
   o += "<text x=\"" + px(margin + bar_px + 10) + "\" y=\"" + px(ly + font * 0.35) + "\">" +
        summary + "</text>\n";
   const double col_w = (pic_w - 2 * margin) / legend_cols;
@@ -351,7 +348,7 @@ std::string layout_to_svg(const Layout& layout, const SvgOptions& options) {
     o += "<line x1=\"" + px(x) + "\" y1=\"" + px(y) + "\" x2=\"" + px(x + font * 1.8) +
          "\" y2=\"" + px(y) + "\" stroke=\"" + net_color(i) + "\" stroke-width=\"4\"/>\n";
     o += "<text x=\"" + px(x + font * 2.3) + "\" y=\"" + px(y + font * 0.35) + "\">" +
-         escape(layout.nets[i].name) + " (" + std::to_string(layout.nets[i].pins.size()) +
+         xml_escape(layout.nets[i].name) + " (" + std::to_string(layout.nets[i].pins.size()) +
          " pins)</text>\n";
   }
   o += "</g>\n</svg>\n";

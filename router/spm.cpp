@@ -654,27 +654,21 @@ struct L1Map::Impl {
       if (poly.empty() || !(poly.back() == v)) poly.push_back(std::move(v));
     while (poly.size() > 1 && poly.front() == poly.back()) poly.pop_back();
   }
-  static bool has_area(const std::vector<RPoint>& poly) {
-    if (poly.size() < 3) return false;
-    Rational a2 = 0;
-    for (std::size_t i = 0; i < poly.size(); ++i) {
-      const RPoint &p = poly[i], &q = poly[(i + 1) % poly.size()];
-      a2 += p.x * q.y - q.x * p.y;
-    }
-    return a2 > 0;
-  }
+  static bool has_area(const std::vector<RPoint>& poly) { return poly.size() >= 3 && twice_signed_area(poly) > 0; }
 
   void trapezoid_pieces(uint32_t i, bool by_root, std::vector<L1Map::Piece>& out) const {
     const Trap& t = traps[i];
     if (t.pl.x == t.pr.x) return;  // width 0: no area
-    auto y_on = [&](Point a, Point b, i64 x) {  // y of segment ab (not vertical) at x, exact
-      const i64 dx = i64{b.x} - a.x;
-      return Rational(i64{a.y} * (i64{b.x} - x) + i64{b.y} * (x - a.x), dx);
+    auto y_q = [](Point a, Point b, i64 x) {  // y of segment ab (not vertical) at x, exact
+      return Q{i64{a.y} * (i64{b.x} - x) + i64{b.y} * (x - a.x), i64{b.x} - a.x};
     };
-    std::vector<RPoint> poly{{Rational(t.pl.x), y_on(t.b0, t.b1, t.pl.x)},
-                             {Rational(t.pr.x), y_on(t.b0, t.b1, t.pr.x)},
-                             {Rational(t.pr.x), y_on(t.t0, t.t1, t.pr.x)},
-                             {Rational(t.pl.x), y_on(t.t0, t.t1, t.pl.x)}};
+    auto rq = [](Q q) { return Rational(q.n, q.d); };
+    const Q bl = y_q(t.b0, t.b1, t.pl.x), br = y_q(t.b0, t.b1, t.pr.x);
+    const Q tl = y_q(t.t0, t.t1, t.pl.x), tr = y_q(t.t0, t.t1, t.pr.x);
+    std::vector<RPoint> poly{{Rational(t.pl.x), rq(bl)},
+                             {Rational(t.pr.x), rq(br)},
+                             {Rational(t.pr.x), rq(tr)},
+                             {Rational(t.pl.x), rq(tl)}};
     if (poly[1] == poly[2]) poly.erase(poly.begin() + 2);
     if (poly[0] == poly.back()) poly.pop_back();
     // The four staircases: ranges and the part of each ray's value that is fixed.
@@ -688,10 +682,10 @@ struct L1Map::Impl {
                           {t.lo[1], t.lo[2], false, 1, -i64{t.pl.x}},
                           {t.ro[0], t.ro[1], true, -1, i64{t.pr.x}},
                           {t.ro[1], t.ro[2], false, -1, i64{t.pr.x}}};
-    auto emit = [&](std::vector<RPoint>&& ring, uint32_t root, bool merged) {
+    auto emit = [&](std::vector<RPoint>&& ring, uint32_t root) {
       if (!has_area(ring)) return;
       const Root& r = roots[root];
-      out.push_back({std::move(ring), r.source, r.p, r.d, merged});
+      out.push_back({std::move(ring), r.source, r.p, r.d});
     };
     // Every ray of the trapezoid from one source: one piece (BySource), no bands needed.
     uint32_t any = kNone;
@@ -705,14 +699,10 @@ struct L1Map::Impl {
       }
     if (any == kNone) return;  // no ray: walled in (a reached trapezoid is reached everywhere)
     if (one_root || (!by_root && one_source)) {
-      emit(std::move(poly), any, !one_root);
+      emit(std::move(poly), any);
       return;
     }
-    auto y_q = [](Point a, Point b, i64 x) {
-      return Q{i64{a.y} * (i64{b.x} - x) + i64{b.y} * (x - a.x), i64{b.x} - a.x};
-    };
-    const Q ylo = qmin(y_q(t.b0, t.b1, t.pl.x), y_q(t.b0, t.b1, t.pr.x));
-    const Q yhi = qmax(y_q(t.t0, t.t1, t.pl.x), y_q(t.t0, t.t1, t.pr.x));
+    const Q ylo = qmin(bl, br), yhi = qmax(tl, tr);
     // Band limits: the trapezoid's lowest and highest y, and the thresholds strictly between.
     std::vector<Q> lim{ylo};
     for (const Stair& s : st4)
@@ -736,20 +726,18 @@ struct L1Map::Impl {
       while (c > s.b && cmp(rays[c - 1].t(), b) < 0) --c;  // [s.b, c): t >= b
       return c > s.b ? c - 1 : kNone;
     };
-    auto rq = [](Q q) { return Rational(q.n, q.d); };
     // Bands, merged while their active rays stay the same. Consecutive bands that are one
     // root's (ByRoot) or one source's (BySource) become one slab: fewer, larger pieces.
     struct Run {
       Q ya, yb;
       uint32_t root = kNone;
-      bool merged = false;
     } run;
     auto flush = [&] {
       if (run.root == kNone) return;
       std::vector<RPoint> slab = poly;
       if (cmp(run.ya, ylo) > 0) clip(slab, 0, -1, rq(run.ya));  // y >= ya
       if (cmp(run.yb, yhi) < 0) clip(slab, 0, 1, -rq(run.yb));  // y <= yb
-      emit(std::move(slab), run.root, run.merged);
+      emit(std::move(slab), run.root);
       run.root = kNone;
     };
     // Band i is (lim[i], lim[i + 1]); the active rays of every band, in one walk.
@@ -790,20 +778,17 @@ struct L1Map::Impl {
         }
         cands = std::move(kept);
       }
-      bool uniform = true, merged = false;
-      for (const Cand& c : cands) {
+      bool uniform = true;
+      for (const Cand& c : cands)
         uniform = uniform && (by_root ? c.root == cands[0].root : roots[c.root].source == roots[cands[0].root].source);
-        merged = merged || c.root != cands[0].root;
-      }
       if (uniform) {
         const bool joins = run.root != kNone && (by_root ? run.root == cands[0].root
                                                          : roots[run.root].source == roots[cands[0].root].source);
         if (joins) {
           run.yb = yb;
-          run.merged = run.merged || merged || run.root != cands[0].root;
         } else {
           flush();
-          run = {ya, yb, cands[0].root, merged};
+          run = {ya, yb, cands[0].root};
         }
         continue;
       }
@@ -819,7 +804,7 @@ struct L1Map::Impl {
           const Cand &x = cands[a], &y = cands[o];
           clip(p, x.gx - y.gx, x.gy - y.gy, Rational(x.c) - y.c);
         }
-        emit(std::move(p), cands[a].root, false);
+        emit(std::move(p), cands[a].root);
       }
     }
     flush();
@@ -873,6 +858,15 @@ std::vector<L1Map::Trapezoid> L1Map::trapezoids() const {
     out.push_back({m.P[t.L], m.P[t.R], {m.P[m.edges[t.bot].l], m.P[m.edges[t.bot].r]},
                    {m.P[m.edges[t.top].l], m.P[m.edges[t.top].r]}});
   return out;
+}
+
+Rational twice_signed_area(const std::vector<RPoint>& ring) {
+  Rational a2 = 0;
+  for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+    const RPoint &p = ring[i], &q = ring[(i + 1) % n];
+    a2 += p.x * q.y - q.x * p.y;
+  }
+  return a2;
 }
 
 std::vector<L1Map::Piece> L1Map::pieces(Detail detail) const {

@@ -74,6 +74,8 @@ struct RPoint {
   friend bool operator==(const RPoint&, const RPoint&) = default;
   friend bool operator<(const RPoint& a, const RPoint& b) { return a.x != b.x ? a.x < b.x : a.y < b.y; }
 };
+// Twice the signed area of a ring (positive: counter-clockwise).
+Rational twice_signed_area(const std::vector<RPoint>& ring);
 
 class L1Map {
  public:
@@ -118,14 +120,14 @@ class L1Map {
   // overlap only on their boundaries; points no source reaches are in no piece.
   // ByRoot: one root per piece (the structure the tests check against the reference).
   // BySource: a piece may join the cells of several roots of one source (fewer, larger pieces:
-  // what the Voronoi diagram merges); its root fields are then those of one of them.
+  // what the Voronoi diagram merges); its root fields are then those of one of them, and only
+  // `source` is meaningful.
   enum class Detail { ByRoot, BySource };
   struct Piece {
     std::vector<RPoint> ring;  // convex, counter-clockwise, no repeated vertex
     std::size_t source = 0;
     geom::Point root;
     std::int64_t root_distance = 0;
-    bool merged = false;  // BySource only: the piece may hold points of other roots of `source`
   };
   std::vector<Piece> pieces(Detail detail) const;
 

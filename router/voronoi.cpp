@@ -148,17 +148,11 @@ std::vector<std::pair<RPoint, RPoint>> boundary(const std::vector<const L1Map::P
 
 }  // namespace
 
-Rational twice_signed_area(const std::vector<RPoint>& ring) {
-  Rational a2 = 0;
-  for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
-    const RPoint &p = ring[i], &q = ring[(i + 1) % n];
-    a2 += p.x * q.y - q.x * p.y;
-  }
-  return a2;
+std::vector<VoronoiRegion> l1_voronoi(const L1Map& map) {
+  return l1_voronoi(map.pieces(L1Map::Detail::BySource));
 }
 
-std::vector<VoronoiRegion> l1_voronoi(const L1Map& map) {
-  const std::vector<L1Map::Piece> pieces = map.pieces(L1Map::Detail::BySource);
+std::vector<VoronoiRegion> l1_voronoi(std::span<const L1Map::Piece> pieces) {
   std::map<std::size_t, std::vector<const L1Map::Piece*>> by_site;
   for (const L1Map::Piece& p : pieces) by_site[p.source].push_back(&p);
   std::vector<VoronoiRegion> out;

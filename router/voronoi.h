@@ -21,6 +21,7 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include "router/spm.h"
@@ -41,8 +42,7 @@ struct VoronoiRegion {
 // One region per site that reaches some area, in site order (sites at one point: the least
 // index has the region).
 std::vector<VoronoiRegion> l1_voronoi(const L1Map& map);
-
-// Twice the signed area of a ring (positive: counter-clockwise).
-Rational twice_signed_area(const std::vector<RPoint>& ring);
+// The same from map.pieces(L1Map::Detail::BySource), for a caller that already has them.
+std::vector<VoronoiRegion> l1_voronoi(std::span<const L1Map::Piece> by_source);
 
 }  // namespace taut::router

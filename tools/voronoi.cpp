@@ -28,14 +28,14 @@ namespace {
 
 using io::xml_escape;
 
-// "n" or "n/d", exact.
-std::string rational_text(const router::Rational& r) { return r.str(); }
+// "n" or "n/d", exact (GMP's canonical form).
+std::string rational_str(const router::Rational& r) { return r.str(); }
 
 std::string ring_points(const std::vector<router::RPoint>& ring) {
   std::string s;
   for (std::size_t i = 0; i < ring.size(); ++i) {
     if (i) s += ' ';
-    s += rational_text(ring[i].x) + "," + rational_text(ring[i].y);
+    s += rational_str(ring[i].x) + "," + rational_str(ring[i].y);
   }
   return s;
 }
@@ -62,7 +62,7 @@ std::string cells_xml(const io::Layout& layout, const std::vector<Site>& sites,
     o << "/>\n";
   }
   for (const auto& r : regions) {
-    o << "  <region site=\"" << r.site << "\" area=\"" << rational_text(r.area) << "\">\n";
+    o << "  <region site=\"" << r.site << "\" area=\"" << rational_str(r.area) << "\">\n";
     for (const auto& poly : r.polygons) {
       o << "    <polygon points=\"" << ring_points(poly.outer) << "\"";
       if (poly.holes.empty()) {
@@ -155,9 +155,9 @@ void add_voronoi(CLI::App& app, int& status) {
       }
       for (geom::Point p : pts) sites.push_back({p, "", "", 0});
     }
-    for (const std::string* path : {&args->out, &args->svg})
-      if (path != nullptr && path->empty() && sub->count(path == &args->out ? "-o" : "--svg")) {
-        print_usage_error("CLI-0001", std::string(path == &args->out ? "-o" : "--svg") + " \"\": needs a file name");
+    for (const auto& [name, path] : {std::pair{"-o", &args->out}, std::pair{"--svg", &args->svg}})
+      if (sub->count(name) && path->empty()) {
+        print_usage_error("CLI-0001", std::string(name) + " \"\": needs a file name");
         status = kInvalid;
         return;
       }
@@ -251,7 +251,7 @@ void add_voronoi(CLI::App& app, int& status) {
       }
       const router::VoronoiRegion* r = of[i];
       s["area"] = r ? r->area.convert_to<double>() : 0.0;
-      s["area_exact"] = r ? rational_text(r->area) : "0";
+      s["area_exact"] = r ? rational_str(r->area) : "0";
       std::size_t holes = 0;
       if (r)
         for (const auto& p : r->polygons) holes += p.holes.size();
@@ -260,7 +260,7 @@ void add_voronoi(CLI::App& app, int& status) {
       rows.push_back(s);
       if (!args->json)
         std::cout << site_name(sites[i], i) << " (" << point_text(sites[i].p) << "): area "
-                  << (r ? rational_text(r->area) : "0") << ", " << (r ? r->polygons.size() : 0) << " polygon(s), "
+                  << (r ? rational_str(r->area) : "0") << ", " << (r ? r->polygons.size() : 0) << " polygon(s), "
                   << holes << " hole(s)\n";
     }
     j["sites"] = rows;

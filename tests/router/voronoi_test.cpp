@@ -182,7 +182,7 @@ std::string check_case(const WavefrontCase& c, std::uint64_t seed, Tally& tally)
     map.emplace(c.domain, c.obstacles, sources);
     by_root = map->pieces(router::L1Map::Detail::ByRoot);
     by_source = map->pieces(router::L1Map::Detail::BySource);
-    regions = router::l1_voronoi(*map);
+    regions = router::l1_voronoi(by_source);
   } catch (const std::exception& e) {
     return head + "threw: " + e.what();
   }
