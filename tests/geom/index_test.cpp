@@ -1,6 +1,7 @@
 // ObstacleIndex (geom/index.h): ray shooting and box queries against a brute-force scan of
 // every edge computed with GMP rationals.
 #include "geom/index.h"
+#include "support/sanitized.h"
 
 #include <gmpxx.h>
 #include <gtest/gtest.h>
@@ -225,7 +226,9 @@ void check_layout(const Layout& lay, std::uint64_t seed, int* hits) {
 
 TEST(ObstacleIndex, RaysMatchBruteForceOnCoarseGrids) {
   int hits = 0;
-  for (int i = 0; i < 250; ++i) {
+  // Under the sanitizers half the layouts (support/sanitized.h).
+  const int layouts = static_cast<int>(taut::test::sanitized_share(250, 2));
+  for (int i = 0; i < layouts; ++i) {
     const std::uint64_t seed = kBaseSeed + i;
     Gen g(seed);
     const int grid = static_cast<int>(g.uniform(2, 10));
@@ -238,7 +241,7 @@ TEST(ObstacleIndex, RaysMatchBruteForceOnCoarseGrids) {
     check_layout(lay, seed, &hits);
     if (HasFatalFailure()) return;
   }
-  EXPECT_GT(hits, 10000);
+  EXPECT_GT(hits, taut::test::sanitized_share(10000, 2));
 }
 
 TEST(ObstacleIndex, RaysMatchBruteForceFullRange) {
