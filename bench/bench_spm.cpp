@@ -52,9 +52,9 @@ int main(int argc, char** argv) {
   }
   std::printf("L1 shortest path map, kind %s; times are best of 1, sort = std::sort of the n vertices in the same run\n",
               kind_name.c_str());
-  std::printf("%9s %6s | %8s %7s %7s | %9s %8s %8s %7s | %8s %9s %9s %8s %s\n", "vertices", "srcs", "build s",
-              "/sort", "/wave", "trapezoids", "rays/trap", "B/vertex", "query us", "wave s", "wave/query", "break-even",
-              "checked", "");
+  std::printf("%9s %6s | %8s %7s %7s | %9s %8s %8s %7s %7s | %8s %9s %9s %8s %s\n", "vertices", "srcs", "build s",
+              "/sort", "/wave", "trapezoids", "rays/trap", "B/vertex", "query us", "/bsearch", "wave s", "wave/query",
+              "break-even", "checked", "");
   struct Point2 {
     double logn, logt;
   };
@@ -82,6 +82,15 @@ int main(int argc, char** argv) {
               if (const auto a = map->locate(q)) sink = sink + a->distance;
           },
           3);
+      // Baseline for the query time, in the same run: one binary search per query in the sorted
+      // vertices (a 1-D lookup with the same kind of cache misses), best of 3 passes.
+      std::vector<Point> sorted = lay.points;
+      std::sort(sorted.begin(), sorted.end());
+      const double bs = seconds_of(
+          [&] {
+            for (const Point& q : queries) sink = sink + (std::upper_bound(sorted.begin(), sorted.end(), q) - sorted.begin());
+          },
+          3);
       // One wavefront per query (the pre-map way), on the first few queries; answers compared.
       taut::router::L1Wavefront wf(dom, lay.norm.obstacles);
       const int w = std::min<int>(wave_queries > 0 ? wave_queries : (n >= 100000 ? 5 : 20), nqueries);
@@ -100,11 +109,11 @@ int main(int argc, char** argv) {
       const double per_query = qs / nqueries, wave_per = wave / w;
       const double wave_build = seconds_of(
           [&] { wf.run(sources, {}, taut::router::WavefrontStop::Never); }, 1);
-      std::printf("%9lld %6lld | %8.3f %7.0f %7.2f | %9lld %8.2f %8.0f %7.2f | %8.4f %9.0f %9.1f %5d/%d\n",
+      std::printf("%9lld %6lld | %8.3f %7.0f %7.2f | %9lld %8.2f %8.0f %7.2f %7.1f | %8.4f %9.0f %9.1f %5d/%d\n",
                   static_cast<long long>(n), static_cast<long long>(k), build, build / sort_s, build / wave_build,
                   static_cast<long long>(map->stats().trapezoids),
                   static_cast<double>(map->stats().rays) / std::max<std::int64_t>(1, map->stats().trapezoids),
-                  static_cast<double>(bytes) / n, per_query * 1e6, wave_per, wave_per / per_query,
+                  static_cast<double>(bytes) / n, per_query * 1e6, qs / bs, wave_per, wave_per / per_query,
                   build / std::max(1e-12, wave_per - per_query), checked, w);
       std::fflush(stdout);
       if (k == source_counts.front()) growth.push_back({std::log(static_cast<double>(n)), std::log(build)});
@@ -118,7 +127,8 @@ int main(int argc, char** argv) {
   }
   std::printf("columns: /sort = build / std::sort of the vertices; /wave = build / one full wavefront run (the\n"
               "map's own first step); wave s = one wavefront run per query, stopping at it; wave/query = that\n"
-              "over the map's query time; break-even = queries after which the map has paid for its build\n");
+              "over the map's query time; break-even = queries after which the map has paid for its build;\n"
+              "/bsearch = query time over one std::upper_bound in the n sorted vertices per query (same run)\n");
   if (failures) std::printf("MISMATCHES: %d queries differ between the map and the wavefront\n", failures);
   return failures ? 1 : 0;
 }

@@ -15,6 +15,7 @@
 
 #include "geom/index.h"
 #include "geom/predicates.h"
+#include "router/huge_pages.h"
 #include "router/wavefront.h"
 
 namespace taut::router {
@@ -107,7 +108,13 @@ namespace bgi = boost::geometry::index;
 // outward; the exact test decides.
 using BPoint = bg::model::point<float, 2, bg::cs::cartesian>;
 using BBox = bg::model::box<BPoint>;
-using TrapTree = bgi::rtree<std::pair<BBox, uint32_t>, bgi::rstar<16>>;
+using TrapValue = std::pair<BBox, uint32_t>;
+// Its nodes live in an arena on huge pages (router/huge_pages.h).
+using TrapTree = bgi::rtree<TrapValue, bgi::rstar<16>, bgi::indexable<TrapValue>, bgi::equal_to<TrapValue>,
+                            std::pmr::polymorphic_allocator<TrapValue>>;
+// What queries read at random places goes on huge pages.
+template <class T>
+using HugeVector = std::vector<T, detail::HugePageAllocator<T>>;
 
 }  // namespace
 
@@ -117,12 +124,14 @@ struct L1Map::Impl {
   std::vector<Point> P;            // decomposition points, lex order
   std::vector<uint32_t> src_at;    // per point: the least source index there, or kNone
   std::vector<Edge> edges;
-  std::vector<Trap> traps;
-  std::vector<Ray> rays;
-  std::vector<Root> roots;
+  HugeVector<Trap> traps;
+  HugeVector<Ray> rays;
+  HugeVector<Root> roots;
   std::vector<uint32_t> root_begin;  // per point: its roots [begin, next)
   std::vector<Point> root_lo;        // build only: per root, the ring neighbour its wedge starts at
-  TrapTree tree;
+  detail::HugePageResource tree_pages;  // declared before the tree: it outlives it
+  std::pmr::monotonic_buffer_resource tree_arena{&tree_pages};
+  std::optional<TrapTree> tree;
   Stats st;
 
   Impl(const geom::Box& dom, std::span<const Polygon> obstacles, std::span<const Point> sources)
@@ -542,7 +551,8 @@ struct L1Map::Impl {
       const i64 y1 = std::max(ceil_of(left[i].hi), ceil_of(right[i].hi));
       boxes.push_back({BBox(BPoint(down(P[t.L].x), down(y0)), BPoint(up(P[t.R].x), up(y1))), i});
     }
-    tree = TrapTree(boxes.begin(), boxes.end());
+    tree.emplace(boxes.begin(), boxes.end(), bgi::rstar<16>(), bgi::indexable<TrapValue>(),
+                 bgi::equal_to<TrapValue>(), std::pmr::polymorphic_allocator<TrapValue>(&tree_arena));
   }
 
   // The trapezoid whose closure holds q (q not a decomposition point); kNone if none (q is not
@@ -551,7 +561,7 @@ struct L1Map::Impl {
     const BPoint bp(down(q.x), down(q.y)), bq(up(q.x), up(q.y));
     // The first box holding q whose trapezoid holds q exactly: the query iterator stops there
     // (no further nodes visited), unlike an output-iterator query that walks every candidate.
-    for (auto it = tree.qbegin(bgi::intersects(BBox(bp, bq))); it != tree.qend(); ++it) {
+    for (auto it = tree->qbegin(bgi::intersects(BBox(bp, bq))); it != tree->qend(); ++it) {
       const Trap& t = traps[it->second];
       if (t.pl < q && q < t.pr && geom::orientation(t.b0, t.b1, q) >= 0 && geom::orientation(t.t0, t.t1, q) <= 0)
         return it->second;
@@ -882,7 +892,7 @@ std::size_t L1Map::memory_bytes() const {
   return m.wf.memory_bytes() + m.P.capacity() * sizeof(Point) + m.src_at.capacity() * sizeof(uint32_t) +
          m.edges.capacity() * sizeof(Edge) + m.traps.capacity() * sizeof(Trap) + m.rays.capacity() * sizeof(Ray) +
          m.roots.capacity() * sizeof(Root) + m.root_begin.capacity() * sizeof(uint32_t) +
-         m.traps.size() * (sizeof(BBox) + sizeof(uint32_t));  // R-tree leaves (nodes not counted)
+         m.tree_pages.bytes();  // the R-tree's arena
 }
 
 }  // namespace taut::router

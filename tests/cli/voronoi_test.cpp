@@ -138,7 +138,9 @@ int check_cells(const std::string& layout, const std::string& cells_path, const 
         const int w = in_region(r, qq);
         if (w < 0) continue;
         const bool nearest = best && d[r.site] == best;
-        if (w > 0) EXPECT_TRUE(nearest) << "probe " << x << "," << y << " inside the region of site " << r.site;
+        if (w > 0) {
+          EXPECT_TRUE(nearest) << "probe " << x << "," << y << " inside the region of site " << r.site;
+        }
         in_nearest = in_nearest || nearest;
       }
       if (best) {
