@@ -5,7 +5,7 @@ BUILD ?= build
 ASAN_BUILD ?= build-asan
 CMAKE_FLAGS ?=
 
-.PHONY: all deps build build-asan run test test-long bench install clean
+.PHONY: all deps build build-asan run test test-release test-asan test-long bench install clean
 
 all: build
 
@@ -33,8 +33,15 @@ run: build
 	$(BUILD)/tools/taut voronoi designs/demo.xml -q -o out/demo.cells.xml --svg out/demo.voronoi.svg > out/demo.voronoi.txt
 	@echo "wrote out/demo.routed.xml, out/demo.svg, out/demo.stats.json, out/demo.check.json, octilinear wires in out/demo.oct.routed.xml, out/demo.oct.svg, and the pins' Voronoi diagram in out/demo.cells.xml, out/demo.voronoi.svg"
 
-test: build build-asan
+# The two trees build and test side by side (each with JOBS jobs): one's serial tails (a big
+# file compiling alone, links, a slow test) overlap the other's work. Output is kept per step.
+test: deps
+	@$(MAKE) --no-print-directory -j 2 --output-sync=target test-release test-asan
+
+test-release: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE long
+
+test-asan: build-asan
 	cd $(ASAN_BUILD) && ctest --output-on-failure -j $(JOBS) -LE long
 
 test-long: build

@@ -131,7 +131,9 @@ struct L1Map::Impl {
   std::vector<Point> root_lo;        // build only: per root, the ring neighbour its wedge starts at
   detail::HugePageResource tree_pages;  // declared before the tree: it outlives it
   std::pmr::monotonic_buffer_resource tree_arena{&tree_pages};
-  std::optional<TrapTree> tree;
+  // Trapezoids of positive width, and those of width 0 (between points on a common vertical: half
+  // of them on axis-parallel layouts), which only queries on such a vertical can be in.
+  std::optional<TrapTree> tree, zero_tree;
   Stats st;
 
   Impl(const geom::Box& dom, std::span<const Polygon> obstacles, std::span<const Point> sources)
@@ -543,25 +545,35 @@ struct L1Map::Impl {
   }
 
   void build_tree(const std::vector<SideRange>& left, const std::vector<SideRange>& right) {
-    std::vector<std::pair<BBox, uint32_t>> boxes;
+    std::vector<std::pair<BBox, uint32_t>> boxes, zero_boxes;
     boxes.reserve(traps.size());
     for (uint32_t i = 0; i < traps.size(); ++i) {
       const Trap& t = traps[i];
       const i64 y0 = std::min(floor_of(left[i].lo), floor_of(right[i].lo));
       const i64 y1 = std::max(ceil_of(left[i].hi), ceil_of(right[i].hi));
-      boxes.push_back({BBox(BPoint(down(P[t.L].x), down(y0)), BPoint(up(P[t.R].x), up(y1))), i});
+      (t.pl.x == t.pr.x ? zero_boxes : boxes)
+          .push_back({BBox(BPoint(down(P[t.L].x), down(y0)), BPoint(up(P[t.R].x), up(y1))), i});
     }
+    const std::pmr::polymorphic_allocator<TrapValue> alloc(&tree_arena);
     tree.emplace(boxes.begin(), boxes.end(), bgi::rstar<16>(), bgi::indexable<TrapValue>(),
-                 bgi::equal_to<TrapValue>(), std::pmr::polymorphic_allocator<TrapValue>(&tree_arena));
+                 bgi::equal_to<TrapValue>(), alloc);
+    zero_tree.emplace(zero_boxes.begin(), zero_boxes.end(), bgi::rstar<16>(), bgi::indexable<TrapValue>(),
+                      bgi::equal_to<TrapValue>(), alloc);
   }
 
   // The trapezoid whose closure holds q (q not a decomposition point); kNone if none (q is not
-  // free).
+  // free). The trapezoids partition free space (open across walls, closed along blockage
+  // edges, which have free space on one side only), so at most one holds q: look among those
+  // of positive width first, then among those of width 0.
   uint32_t find(Point q) const {
+    const uint32_t t = find_in(*tree, q);
+    return t != kNone ? t : find_in(*zero_tree, q);
+  }
+  uint32_t find_in(const TrapTree& rt, Point q) const {
     const BPoint bp(down(q.x), down(q.y)), bq(up(q.x), up(q.y));
     // The first box holding q whose trapezoid holds q exactly: the query iterator stops there
     // (no further nodes visited), unlike an output-iterator query that walks every candidate.
-    for (auto it = tree->qbegin(bgi::intersects(BBox(bp, bq))); it != tree->qend(); ++it) {
+    for (auto it = rt.qbegin(bgi::intersects(BBox(bp, bq))); it != rt.qend(); ++it) {
       const Trap& t = traps[it->second];
       if (t.pl < q && q < t.pr && geom::orientation(t.b0, t.b1, q) >= 0 && geom::orientation(t.t0, t.t1, q) <= 0)
         return it->second;

@@ -13,7 +13,7 @@ namespace {
 namespace fs = std::filesystem;
 
 std::set<std::string> codes_in_sources() {
-  const std::regex code(R"(\b(IO|GEOM|LAYOUT|CLI|CHECK|ROUTE)-[0-9]{4}\b)");
+  const std::regex code(R"(\b(IO|GEOM|LAYOUT|CLI|CHECK|ROUTE|VORONOI)-[0-9]{4}\b)");
   std::set<std::string> codes;
   for (const char* dir : {"geom", "io", "router", "tools"}) {
     for (const auto& e : fs::recursive_directory_iterator(fs::path(TAUT_SOURCE_DIR) / dir)) {

@@ -226,8 +226,8 @@ void check_layout(const Layout& lay, std::uint64_t seed, int* hits) {
 
 TEST(ObstacleIndex, RaysMatchBruteForceOnCoarseGrids) {
   int hits = 0;
-  // Under the sanitizers half the layouts (support/sanitized.h).
-  const int layouts = static_cast<int>(taut::test::sanitized_share(250, 2));
+  // Under the sanitizers a quarter of the layouts (support/sanitized.h).
+  const int layouts = static_cast<int>(taut::test::sanitized_share(250, 4));
   for (int i = 0; i < layouts; ++i) {
     const std::uint64_t seed = kBaseSeed + i;
     Gen g(seed);
@@ -241,7 +241,7 @@ TEST(ObstacleIndex, RaysMatchBruteForceOnCoarseGrids) {
     check_layout(lay, seed, &hits);
     if (HasFatalFailure()) return;
   }
-  EXPECT_GT(hits, taut::test::sanitized_share(10000, 2));
+  EXPECT_GT(hits, taut::test::sanitized_share(10000, 4));
 }
 
 TEST(ObstacleIndex, RaysMatchBruteForceFullRange) {

@@ -259,8 +259,8 @@ TEST(L1Map, MatchesTheReferenceOnRandomLayouts) {
     run_seeds({*s}, t);
     return;
   }
-  // Under the sanitizers half the seeds (support/sanitized.h); the thresholds scale with them.
-  const auto share = [](std::int64_t n) { return sanitized_share(n, 2); };
+  // Under the sanitizers a quarter of the seeds (support/sanitized.h); the thresholds scale with them.
+  const auto share = [](std::int64_t n) { return sanitized_share(n, 4); };
   std::vector<std::uint64_t> seeds;
   for (std::int64_t s = 1; s <= share(1000); ++s) seeds.push_back(static_cast<std::uint64_t>(s));
   for (std::int64_t s = 0; s < share(100); ++s) seeds.push_back(kLargeSeedBase + static_cast<std::uint64_t>(s));

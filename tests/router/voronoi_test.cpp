@@ -433,7 +433,7 @@ void run_seeds(const std::vector<std::uint64_t>& seeds, Tally& tally) {
 }
 
 #if defined(__SANITIZE_ADDRESS__)
-constexpr std::uint64_t kSeedsPerHalf = 100;  // the sanitizer tree: ~10x slower, a fifth of the seeds
+constexpr std::uint64_t kSeedsPerHalf = 50;  // the sanitizer tree: ~10x slower, a tenth of the seeds
 #else
 constexpr std::uint64_t kSeedsPerHalf = 500;
 #endif
