@@ -23,11 +23,12 @@
 // A side keeps its rays as two staircases (up: thresholds rising, values falling; down: the
 // mirror): a ray that starts no lower and costs no less than another is dropped, since it is
 // beaten wherever it reaches. A query finds its trapezoid with an R-tree of their boxes
-// (Boost.Geometry; the exact test decides) and binary-searches the four staircases of its two
-// sides.
+// (Boost.Geometry; the exact test decides; trapezoids of width 0 in a second tree, searched only
+// when the first has none) and binary-searches the four staircases of its two sides. What
+// queries read lives on transparent huge pages (router/huge_pages.h).
 //
 // Costs, honestly. Query: O(log n) when trapezoid boxes overlap little, as with axis-parallel
-// blockages and the generated and Moving AI layouts (2.1-3.0 us at 10^6 vertices); long sloped
+// blockages and the generated and Moving AI layouts (1.9-2.7 us at 10^6 vertices, on a busy machine); long sloped
 // trapezoids have boxes that overlap almost everywhere, and n parallel diagonal strips make a
 // query scan O(n) of them (measured in review: 137 us at 16,000 strips). A point-location
 // structure built from the sweep (a persistent search tree) would make it O(log n) always; not
