@@ -1,6 +1,8 @@
 #include "router/l1_router.h"
 
 #include <algorithm>
+#include <map>
+#include <utility>
 
 #include "geom/predicates.h"
 
@@ -289,8 +291,215 @@ typename BasicRouter<W>::Wire BasicRouter<W>::shortest(const geom::Polygon& from
   return finish(best);
 }
 
+template <class W>
+typename BasicRouter<W>::Tree BasicRouter<W>::tree(const geom::Polygon& source,
+                                                   std::span<const geom::Polygon> sinks) {
+  Tree t;
+  t.distance.assign(sinks.size(), std::nullopt);
+  auto keep_free = [&](std::vector<Point>& v) {
+    v.erase(std::remove_if(v.begin(), v.end(), [&](Point p) { return !wavefront_.is_free(p); }), v.end());
+  };
+  // The source's candidates see every sink's vertices (pin_candidates() projects "other"'s
+  // vertices, which is all it reads of it).
+  geom::Polygon all_sinks;
+  for (const geom::Polygon& s : sinks) {
+    all_sinks.outer.insert(all_sinks.outer.end(), s.outer.begin(), s.outer.end());
+    for (const geom::Ring& h : s.holes) all_sinks.outer.insert(all_sinks.outer.end(), h.begin(), h.end());
+  }
+  std::vector<Point> sources = pin_candidates(source, all_sinks);
+  keep_free(sources);
+  if (sources.empty()) {
+    t.status = WireStatus::SourceNotFree;
+    return t;
+  }
+  auto in_pin = [](Point p, const geom::Polygon& pin) {
+    return is_point(pin) ? p == pin.outer[0] : geom::locate(p, pin) != geom::Location::Outside;
+  };
+  std::vector<Point> targets;
+  std::vector<std::size_t> owner;  // targets[j] is a candidate of sinks[owner[j]]
+  std::optional<Point> touch_point;
+  for (std::size_t i = 0; i < sinks.size(); ++i) {
+    std::vector<Point> c = pin_candidates(sinks[i], source);
+    keep_free(c);
+    if (c.empty()) {
+      t.status = WireStatus::TargetNotFree;
+      t.failed = i;
+      return t;
+    }
+    std::optional<Point> touch;  // as in shortest(): a candidate of one pin lies in the other
+    for (const Point p : c)
+      if (!touch && in_pin(p, source)) touch = p;
+    for (const Point p : sources)
+      if (!touch && in_pin(p, sinks[i])) touch = p;
+    if (touch) {
+      t.distance[i] = Len{};
+      if (!touch_point) touch_point = touch;
+      continue;
+    }
+    for (const Point p : c) {
+      targets.push_back(p);
+      owner.push_back(i);
+    }
+  }
+  std::vector<std::optional<std::size_t>> best(sinks.size());  // each sink's nearest candidate
+  if (!targets.empty()) {
+    wavefront_.run(sources, targets, W::Stop::AllTargets);
+    for (std::size_t j = 0; j < targets.size(); ++j) {
+      const auto d = wavefront_.target_distance(j);
+      auto& b = best[owner[j]];
+      if (d && (!b || *d < *wavefront_.target_distance(*b))) b = j;
+    }
+    for (std::size_t i = 0; i < sinks.size(); ++i)
+      if (best[i]) t.distance[i] = wavefront_.target_distance(*best[i]);
+    for (std::size_t i = 0; i < sinks.size(); ++i)
+      if (!t.distance[i]) {
+        t.status = WireStatus::Unreachable;
+        t.failed = i;
+        return t;
+      }
+  }
+  // The paths as a trie: node = (parent node, point). Paths of one run that pass through the
+  // same vertex wedge share the run's prefix; comparing whole prefixes (not points) keeps two
+  // paths through one point in different wedges apart.
+  struct Node {
+    Point p;
+    std::size_t parent;
+    std::size_t first_sink;  // the first sink whose path passes here
+    std::vector<std::size_t> children;
+  };
+  constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+  std::vector<Node> nodes;
+  std::map<std::pair<std::size_t, Point>, std::size_t> index;
+  std::vector<std::size_t> roots;
+  for (std::size_t i = 0; i < sinks.size(); ++i) {
+    if (!best[i]) continue;
+    const std::vector<Point> path = wavefront_.target_path(*best[i]);
+    std::size_t at = kNone;
+    for (const Point p : path) {
+      auto [it, fresh] = index.try_emplace({at, p}, nodes.size());
+      if (fresh) {
+        nodes.push_back({p, at, i, {}});
+        if (at == kNone)
+          roots.push_back(it->second);
+        else
+          nodes[at].children.push_back(it->second);
+      }
+      at = it->second;
+    }
+  }
+  // Chains: from a root or a branch point along single children to a leaf or the next branch.
+  std::vector<std::vector<Point>> stairs;
+  std::vector<std::size_t> starts = roots;
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    const std::size_t u = starts[k];
+    if (nodes[u].children.empty() && nodes[u].parent == kNone) {
+      stairs.push_back({nodes[u].p});  // a path of one point: a sink at a source candidate
+      continue;
+    }
+    for (const std::size_t first : nodes[u].children) {
+      std::vector<Point> chain = {nodes[u].p};
+      std::size_t v = first;
+      chain.push_back(nodes[v].p);
+      while (nodes[v].children.size() == 1) {
+        v = nodes[v].children[0];
+        chain.push_back(nodes[v].p);
+      }
+      if (nodes[v].children.size() > 1) starts.push_back(v);
+      auto s = kOctilinear ? staircase_.octilinear(chain, &staircase_stats_)
+                           : staircase_.rectilinear(chain, &staircase_stats_);
+      if (!s) {
+        t.status = WireStatus::NoIntegerStaircase;
+        t.failed = nodes[v].first_sink;
+        return t;
+      }
+      stairs.push_back(std::move(*s));
+    }
+  }
+  t.wires = without_overlaps(stairs);
+  if (t.wires.empty()) {  // every sink touches the source, or sits at a source candidate
+    const Point p = touch_point ? *touch_point : stairs.empty() ? sources[0] : stairs[0][0];
+    t.wires.push_back({p});
+  }
+  t.status = WireStatus::Ok;
+  return t;
+}
+
 template class BasicRouter<L1Wavefront>;
 template class BasicRouter<OctWavefront>;
+
+std::vector<std::vector<Point>> without_overlaps(std::span<const std::vector<Point>> wires) {
+  // A segment's line: its class (0 horizontal, 1 vertical, 2 and 3 the diagonals dx = dy and
+  // dx = -dy) and the coordinate that is constant along it (y, x, y - x, y + x); t is the
+  // coordinate along it (x, except y on verticals).
+  auto point_at = [](int cls, i64 inv, i64 t) {
+    switch (cls) {
+      case 0: return Point{static_cast<geom::Coord>(t), static_cast<geom::Coord>(inv)};
+      case 1: return Point{static_cast<geom::Coord>(inv), static_cast<geom::Coord>(t)};
+      case 2: return Point{static_cast<geom::Coord>(t), static_cast<geom::Coord>(inv + t)};
+      default: return Point{static_cast<geom::Coord>(t), static_cast<geom::Coord>(inv - t)};
+    }
+  };
+  std::map<std::pair<int, i64>, std::map<i64, i64>> covered;  // line -> disjoint [lo, hi]
+  std::vector<std::vector<Point>> out;
+  std::vector<Point> cur;
+  auto flush = [&] {
+    if (cur.size() >= 2) out.push_back(std::move(cur));
+    cur.clear();
+  };
+  auto extend = [&](Point a, Point b) {
+    if (cur.empty() || cur.back() != a) {
+      flush();
+      cur = {a};
+    }
+    cur.push_back(b);
+  };
+  for (const std::vector<Point>& w : wires) {
+    for (std::size_t k = 0; k + 1 < w.size(); ++k) {
+      const Point a = w[k], b = w[k + 1];
+      const i64 dx = i64{b.x} - a.x, dy = i64{b.y} - a.y;
+      if (dx == 0 && dy == 0) continue;
+      int cls;
+      i64 inv, t0, t1;
+      if (dy == 0) cls = 0, inv = a.y, t0 = a.x, t1 = b.x;
+      else if (dx == 0) cls = 1, inv = a.x, t0 = a.y, t1 = b.y;
+      else if (dx == dy) cls = 2, inv = i64{a.y} - a.x, t0 = a.x, t1 = b.x;
+      else if (dx == -dy) cls = 3, inv = i64{a.y} + a.x, t0 = a.x, t1 = b.x;
+      else {
+        extend(a, b);  // another slope: kept as it is
+        continue;
+      }
+      const i64 lo = std::min(t0, t1), hi = std::max(t0, t1);
+      std::map<i64, i64>& cov = covered[{cls, inv}];
+      std::vector<std::pair<i64, i64>> pieces;  // the uncovered parts of [lo, hi], ascending
+      i64 start = lo;
+      auto it = cov.upper_bound(lo);
+      if (it != cov.begin() && std::prev(it)->second > lo) --it;
+      for (; it != cov.end() && it->first < hi; ++it) {
+        if (it->first > start) pieces.push_back({start, it->first});
+        start = std::max(start, it->second);
+      }
+      if (start < hi) pieces.push_back({start, hi});
+      if (t0 <= t1) {
+        for (const auto& [p, q] : pieces) extend(point_at(cls, inv, p), point_at(cls, inv, q));
+      } else {
+        for (auto r = pieces.rbegin(); r != pieces.rend(); ++r)
+          extend(point_at(cls, inv, r->second), point_at(cls, inv, r->first));
+      }
+      // Cover [lo, hi], merging the intervals it meets or touches.
+      i64 nlo = lo, nhi = hi;
+      auto m = cov.upper_bound(lo);
+      if (m != cov.begin() && std::prev(m)->second >= lo) --m;
+      while (m != cov.end() && m->first <= hi) {
+        nlo = std::min(nlo, m->first);
+        nhi = std::max(nhi, m->second);
+        m = cov.erase(m);
+      }
+      cov.emplace(nlo, nhi);
+    }
+    flush();
+  }
+  return out;
+}
 
 const char* to_string(WireStatus status) {
   switch (status) {

@@ -69,6 +69,31 @@ class BasicRouter {
   // pin_candidates(). Octilinear: pin edges horizontal or vertical only (supports_pin()).
   Wire shortest(const geom::Polygon& from, const geom::Polygon& to);
 
+  // A net of one source pin and several sink pins (points or shapes, as shortest() takes them)
+  // joined by a SHORTEST-PATH TREE: every sink is reached from the source pin along the wires
+  // by a path of exactly its shortest distance from the source pin (a minimum-delay topology:
+  // the total length is not minimised; Steiner trees come with the net router). How: one
+  // wavefront run from the source's candidate points to every sink's candidates (stopping when
+  // the last is reached: the shortest path map of the source, restricted to what the sinks
+  // need), each sink's path taken from the run's parent chain. Paths through the same vertex
+  // share the run's prefix, so the polygonal paths form a tree; it is cut into chains at its
+  // branch points, each chain becomes one staircase (the same builder as shortest()), and
+  // without_overlaps() removes the lengths where staircases leaving a branch point run along
+  // the same line.
+  struct Tree {
+    // Ok; SourceNotFree; TargetNotFree / Unreachable / NoIntegerStaircase for sink `failed`.
+    WireStatus status = WireStatus::Unreachable;
+    std::optional<std::size_t> failed;     // index into sinks, when the status is about a sink
+    std::vector<std::optional<Len>> distance;  // per sink: exact distance from the source pin
+                                               // (0 when they touch; nullopt: not free or
+                                               // not reached)
+    std::vector<std::vector<geom::Point>> wires;  // Ok: polylines with integer vertices, no
+                                                  // two overlapping along a positive length;
+                                                  // one wire of one point when every sink
+                                                  // touches the source
+  };
+  Tree tree(const geom::Polygon& source, std::span<const geom::Polygon> sinks);
+
   // The points of pin `pin` a shortest wire from it may be taken to start at: its vertices, and
   // the horizontal and vertical projections onto its edges of every obstacle vertex and of every
   // vertex of `other` (the other pin). Why that suffices: a shortest path leaves the pin at s
@@ -121,6 +146,15 @@ extern template class BasicRouter<L1Wavefront>;
 extern template class BasicRouter<OctWavefront>;
 
 const char* to_string(WireStatus status);
+
+// The same wires without overlaps: each wire, in order, loses the parts of its segments that
+// run along (overlap with positive length) a segment of an earlier wire or an earlier segment
+// of itself, and is split where it loses them; every piece keeps its direction of travel, and
+// pieces of one point are dropped. The union of the wires is unchanged, so connectivity and
+// every path along them are kept, and the total length is the union's. Overlaps are found for
+// horizontal, vertical and 45-degree segments (the only ones staircases have); segments at other
+// angles are kept as they are. Exact (integer arithmetic).
+std::vector<std::vector<geom::Point>> without_overlaps(std::span<const std::vector<geom::Point>> wires);
 
 // A pin the router takes: a point (one vertex, no holes), or rings of at least 3 vertices whose
 // every edge (closing ones included) has non-zero length and is horizontal, vertical or at 45

@@ -1,13 +1,17 @@
 // taut route FILE -o OUT [--svg PIC] [--stats S.json] [--orientations rectilinear|octilinear]:
-// routes every two-pin net by an exact shortest wire with integer vertices, each net on its own
-// (wires of different nets do not see each other yet), and writes the layout with <routes>.
-// Rectilinear: the shortest L1 wire between point pins and shape pins whose edges are
-// horizontal, vertical or at 45 degrees. Octilinear: the shortest wire in 0/45/90/135 degrees
-// between point pins and shape pins whose edges are horizontal or vertical. Nets this version
-// cannot route are written as failed with a reason and reported on stderr; the exit status is
-// then 1.
+// routes every net by exact shortest wires with integer vertices, each net on its own (wires of
+// different nets do not see each other yet), and writes the layout with <routes>. A two-pin net
+// gets the shortest wire between its pins; a net with more pins gets a shortest-path tree from
+// its first pin (BasicRouter::tree: every other pin is reached along the wires by its exact
+// shortest distance from the first; the total length is not minimised). Rectilinear: point
+// pins and shape pins whose edges are horizontal, vertical or at 45 degrees. Octilinear: the
+// shortest wires in 0/45/90/135 degrees, point pins and shape pins whose edges are horizontal
+// or vertical. Nets this version cannot route are written as failed with a reason and reported
+// on stderr; the exit status is then 1.
 #include <chrono>
 #include <iostream>
+#include <span>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -45,12 +49,6 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router
   };
   if (net.pins.size() < 2)
     return fail("ROUTE-0006", "the net has " + std::to_string(net.pins.size()) + " pin(s); a wire needs two");
-  if (net.pins.size() > 2)
-    return fail("ROUTE-0004", "the net has " + std::to_string(net.pins.size()) +
-                                  " pins; nets with more than two pins are not routed yet (they "
-                                  "come with the net router)");
-  const io::Pin& a = net.pins[0];
-  const io::Pin& b = net.pins[1];
   auto pin_geometry = [](const io::Pin& pin) {
     geom::Polygon g;
     if (pin.point)
@@ -59,8 +57,11 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router
       g = io::shape_polygon(*pin.shape);
     return g;
   };
-  const geom::Polygon ga = pin_geometry(a), gb = pin_geometry(b);
-  for (const auto& [pin, g] : {std::pair{&a, &ga}, std::pair{&b, &gb}}) {
+  std::vector<geom::Polygon> geometry;
+  for (const io::Pin& pin : net.pins) geometry.push_back(pin_geometry(pin));
+  for (std::size_t i = 0; i < net.pins.size(); ++i) {
+    const io::Pin* pin = &net.pins[i];
+    const geom::Polygon* g = &geometry[i];
     if (!router::pin_shape_supported(*g))
       return fail("ROUTE-0005", "pin \"" + pin->name +
                                     "\" has a shape edge that is not horizontal, vertical or at 45 "
@@ -75,14 +76,61 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router
                                     "\" lies partly under a blockage; shape pins that overlap "
                                     "blockages are not routed yet (ones that touch them are)");
   }
+  const io::Pin& a = net.pins[0];
+  const io::Pin& b = net.pins[1];
+  const geom::Polygon& ga = geometry[0];
+  const geom::Polygon& gb = geometry[1];
   auto where = [&](const io::Pin& pin) {
     return pin.point ? "at " + point_text(*pin.point) + " " + why_not_free(layout, *pin.point)
                      : std::string("has no free point (its shape lies in blockages or outside the boundary)");
   };
-  const typename Router::Wire w = router.shortest(ga, gb);
   auto text = [](const auto& len) {
     if constexpr (oct) return length_text(len); else return std::to_string(len);
   };
+  auto finish = [&](std::vector<io::Wire> wires) {
+    for (io::Wire& wire : wires)
+      if (wire.points.size() == 1) wire.points.push_back(wire.points[0]);  // pins at one point
+    std::vector<std::vector<geom::Point>> lines;
+    long bends = 0;
+    for (const io::Wire& wire : wires) {
+      lines.push_back(wire.points);
+      bends += geom::count_bends(wire.points);
+    }
+    r.route.status = "routed";
+    r.route.length = io::format_total_length(lines);
+    r.route.bends = bends;
+    r.route.wires = std::move(wires);
+    return r;
+  };
+  if (net.pins.size() > 2) {
+    // A shortest-path tree from the first pin (the net's source): every other pin is reached
+    // along the wires by its exact shortest distance from the first.
+    const typename Router::Tree t =
+        router.tree(geometry[0], std::span<const geom::Polygon>(geometry).subspan(1));
+    const io::Pin* sink = t.failed ? &net.pins[*t.failed + 1] : nullptr;
+    switch (t.status) {
+      case router::WireStatus::Ok: break;
+      case router::WireStatus::SourceNotFree:
+        return fail("ROUTE-0001", "pin \"" + a.name + "\" " + where(a));
+      case router::WireStatus::TargetNotFree:
+        return fail("ROUTE-0001", "pin \"" + sink->name + "\" " + where(*sink));
+      case router::WireStatus::Unreachable:
+        return fail("ROUTE-0002", "pins \"" + a.name + "\" and \"" + sink->name +
+                                      "\" are in different parts of free space: blockages wall "
+                                      "one of them in");
+      case router::WireStatus::NoIntegerStaircase:
+        return fail("ROUTE-0003", std::string("the shortest ") + (oct ? "octilinear" : "L1") +
+                                      " length from pin \"" + a.name + "\" to pin \"" +
+                                      sink->name + "\" is " + text(*t.distance[*t.failed]) +
+                                      ", but no " + (oct ? "octilinear" : "rectilinear") +
+                                      " wire with integer vertices has that length (sloped "
+                                      "blockages pinch every lattice staircase)");
+    }
+    std::vector<io::Wire> wires;
+    for (const auto& pts : t.wires) wires.push_back(io::Wire{pts});
+    return finish(std::move(wires));
+  }
+  const typename Router::Wire w = router.shortest(ga, gb);
   switch (w.status) {
     case router::WireStatus::Ok: break;
     case router::WireStatus::SourceNotFree:
@@ -100,14 +148,7 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router
                                     " wire with integer vertices has that length (sloped "
                                     "blockages pinch every lattice staircase)");
   }
-  io::Wire wire;
-  wire.points = w.points;
-  if (wire.points.size() == 1) wire.points.push_back(wire.points[0]);  // both pins at one point
-  r.route.status = "routed";
-  r.route.length = io::format_length(wire.points);
-  r.route.bends = geom::count_bends(wire.points);
-  r.route.wires.push_back(std::move(wire));
-  return r;
+  return finish({io::Wire{w.points}});
 }
 
 }  // namespace
@@ -119,7 +160,7 @@ void add_route(CLI::App& app, int& status) {
     LoadOptions load;
   };
   auto args = std::make_shared<Args>();
-  CLI::App* sub = app.add_subcommand("route", "Route every two-pin net and write the routed layout");
+  CLI::App* sub = app.add_subcommand("route", "Route every net (shortest wires; a shortest-path tree from the first pin for nets of three or more pins) and write the routed layout");
   sub->add_option("-o,--output", args->out, "routed layout to write (the input with <routes>)")->required();
   sub->add_option("--svg", args->svg, "also draw the routed layout as SVG");
   sub->add_option("--stats", args->stats, "also write statistics as JSON");
