@@ -387,8 +387,18 @@ typename BasicRouter<W>::Tree BasicRouter<W>::tree(const geom::Polygon& source,
       at = it->second;
     }
   }
-  // Chains: from a root or a branch point along single children to a leaf or the next branch.
+  // Chains: from a root or a branch point along single children to a leaf or the next branch,
+  // each one staircase. At a branch point v the polygonal paths pass through v inside one free
+  // wedge, but a chain's staircase, searched on its own, may reach v around the other side of
+  // an obstacle that touches v (a pinch) and its continuation leave on this side: a joint that
+  // passes through the pinch. Each joint is checked (StaircaseBuilder::turn_ok); a chain whose
+  // joint fails is staircased again with its whole path from the root, whose joints the
+  // builder keeps inside one wedge (the duplicated part is merged below where it coincides).
+  auto staircase = [&](const std::vector<Point>& poly) {
+    return kOctilinear ? staircase_.octilinear(poly, &staircase_stats_) : staircase_.rectilinear(poly, &staircase_stats_);
+  };
   std::vector<std::vector<Point>> stairs;
+  std::vector<std::optional<Point>> arrive(nodes.size());  // branch point: the written point before it
   std::vector<std::size_t> starts = roots;
   for (std::size_t k = 0; k < starts.size(); ++k) {
     const std::size_t u = starts[k];
@@ -404,13 +414,23 @@ typename BasicRouter<W>::Tree BasicRouter<W>::tree(const geom::Polygon& source,
         v = nodes[v].children[0];
         chain.push_back(nodes[v].p);
       }
-      if (nodes[v].children.size() > 1) starts.push_back(v);
-      auto s = kOctilinear ? staircase_.octilinear(chain, &staircase_stats_)
-                           : staircase_.rectilinear(chain, &staircase_stats_);
+      auto s = staircase(chain);
+      if (s && arrive[u] && !staircase_.turn_ok(*arrive[u], nodes[u].p, (*s)[1])) {
+        std::vector<Point> whole;
+        for (std::size_t w = u; w != kNone; w = nodes[w].parent) whole.push_back(nodes[w].p);
+        std::reverse(whole.begin(), whole.end());
+        whole.insert(whole.end(), chain.begin() + 1, chain.end());
+        s = staircase(whole);
+        ++staircase_stats_.rejoined;
+      }
       if (!s) {
         t.status = WireStatus::NoIntegerStaircase;
         t.failed = nodes[v].first_sink;
         return t;
+      }
+      if (nodes[v].children.size() > 1) {
+        arrive[v] = (*s)[s->size() - 2];
+        starts.push_back(v);
       }
       stairs.push_back(std::move(*s));
     }

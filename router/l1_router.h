@@ -77,9 +77,11 @@ class BasicRouter {
   // the last is reached: the shortest path map of the source, restricted to what the sinks
   // need), each sink's path taken from the run's parent chain. Paths through the same vertex
   // share the run's prefix, so the polygonal paths form a tree; it is cut into chains at its
-  // branch points, each chain becomes one staircase (the same builder as shortest()), and
-  // without_overlaps() removes the lengths where staircases leaving a branch point run along
-  // the same line.
+  // branch points, each chain becomes one staircase (the same builder as shortest()); a chain
+  // whose joint at its branch point would pass through a pinch (its staircase reaches the point
+  // on the other side of an obstacle touching it) is staircased again with its whole path from
+  // the source; and without_overlaps() removes the lengths where staircases run along the
+  // same line.
   struct Tree {
     // Ok; SourceNotFree; TargetNotFree / Unreachable / NoIntegerStaircase for sink `failed`.
     WireStatus status = WireStatus::Unreachable;
@@ -149,8 +151,9 @@ const char* to_string(WireStatus status);
 
 // The same wires without overlaps: each wire, in order, loses the parts of its segments that
 // run along (overlap with positive length) a segment of an earlier wire or an earlier segment
-// of itself, and is split where it loses them; every piece keeps its direction of travel, and
-// pieces of one point are dropped. The union of the wires is unchanged, so connectivity and
+// of itself, and is split where what remains does not go on from the point where it stopped
+// (a lost there-and-back spike leaves it in one piece); every piece keeps its direction of
+// travel, and pieces of one point are dropped. The union of the wires is unchanged, so connectivity and
 // every path along them are kept, and the total length is the union's. Overlaps are found for
 // horizontal, vertical and 45-degree segments (the only ones staircases have); segments at other
 // angles are kept as they are. Exact (integer arithmetic).

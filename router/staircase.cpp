@@ -748,6 +748,13 @@ StaircaseBuilder& StaircaseBuilder::operator=(StaircaseBuilder&&) noexcept = def
 
 bool StaircaseBuilder::is_free(Point p) const { return impl_->point_free(p); }
 
+bool StaircaseBuilder::turn_ok(Point a, Point v, Point b) const {
+  if (a == v || b == v || !impl_->in_domain(v)) return false;
+  const WedgeMap w = impl_->wedges(v);
+  const int wa = w.wedge_of(dir(v, a));
+  return wa >= 0 && wa == w.wedge_of(dir(v, b));
+}
+
 LinkTable StaircaseBuilder::link_table(Point a, Point b, StaircaseStyle style) const {
   LinkTable t;
   StaircaseStats st;

@@ -92,6 +92,8 @@ struct StaircaseStats {
   std::int64_t budget_hits = 0;    // searches stopped by max_work_per_search
   std::int64_t greedy_links = 0;   // links answered by the depth-first fallback (bends not
                                    // proven minimal)
+  std::int64_t rejoined = 0;       // tree chains staircased again from the root because their
+                                   // joint passed through a pinch (BasicRouter::tree)
 };
 
 // One link a -> b: its directions and the fewest bends of a free integer staircase per
@@ -131,6 +133,9 @@ class StaircaseBuilder {
   LinkTable link_table(geom::Point a, geom::Point b, StaircaseStyle style) const;
   // A point is free: in the domain, in no obstacle's interior, and with a free wedge.
   bool is_free(geom::Point p) const;
+  // A path arriving at v from the direction of a and leaving towards b passes through v inside
+  // one free wedge (a, b != v): what a joint of two staircases at v must satisfy.
+  bool turn_ok(geom::Point a, geom::Point v, geom::Point b) const;
 
  private:
   struct Impl;
