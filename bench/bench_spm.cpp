@@ -7,17 +7,25 @@
 // Every query timed on the wavefront is compared with the map's answer, so a fast wrong map
 // cannot pass.
 //
+// --strips M,M,..: instead, the adversarial layout for box-based point location: M parallel thin
+// strips at 45 degrees, each over the whole height, so the free trapezoids between them are
+// long and sloped and every one's bounding box holds most query points. Prints the query time
+// with the ratio to the binary-search baseline, and how it grows with M (O(log M) expected).
+//
 //   bench_spm [--sizes N,N,..] [--sources K,K,..] [--kind rects|polygons|maze|degenerate]
-//             [--queries Q] [--wave-queries W]
+//             [--queries Q] [--wave-queries W] [--strips M,M,..]
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <string>
+#include <optional>
+#include <span>
 #include <vector>
 
 #include "bench/bench_util.h"
 #include "bench/free_points.h"
+#include "geom/normalize.h"
 #include "router/spm.h"
 #include "router/wavefront.h"
 
@@ -27,24 +35,73 @@ using taut::bench::parse_list;
 using taut::bench::seconds_of;
 using taut::geom::Point;
 
+// M parallelograms at 45 degrees, 2 wide, 8 apart, over a height of 8 M: each spans the height.
+int run_strips(const std::vector<std::int64_t>& counts, int nqueries) {
+  std::printf("adversarial layout: M parallel strips at 45 degrees (every trapezoid's box holds most points)\n");
+  std::printf("%7s %9s | %8s %10s | %8s %8s\n", "strips", "vertices", "build s", "trapezoids", "query us", "/bsearch");
+  int failures = 0;
+  for (const std::int64_t m : counts) {
+    const taut::geom::Coord h = static_cast<taut::geom::Coord>(8 * m);
+    std::vector<taut::geom::Polygon> shapes;
+    std::vector<Point> pts;
+    for (std::int64_t i = 0; i < m; ++i) {
+      const auto x = static_cast<taut::geom::Coord>(8 * i - h);
+      taut::geom::Polygon p;
+      p.outer = {{x, 0}, {x + 2, 0}, {x + 2 + h, h}, {x + h, h}};
+      pts.insert(pts.end(), p.outer.begin(), p.outer.end());
+      shapes.push_back(std::move(p));
+    }
+    const taut::geom::Box dom{{static_cast<taut::geom::Coord>(-h - 8), -8}, {static_cast<taut::geom::Coord>(h + 8), h + 8}};
+    const auto norm = taut::geom::normalize_obstacles(shapes, dom);
+    const Point src{static_cast<taut::geom::Coord>(-h - 4), -4};
+    std::optional<taut::router::L1Map> map;
+    const double build = seconds_of([&] { map.emplace(norm.domain, norm.obstacles, std::span<const Point>(&src, 1)); }, 1);
+    const std::vector<Point> queries = taut::bench::random_free_points(norm.domain, norm.obstacles, static_cast<std::size_t>(nqueries), 5);
+    volatile std::int64_t sink = 0;
+    int reached = 0;
+    for (const Point& q : queries) reached += map->locate(q).has_value();
+    if (reached != nqueries) ++failures;  // every free point here is reachable from the corner
+    const double qs = seconds_of(
+        [&] {
+          for (const Point& q : queries)
+            if (const auto a = map->locate(q)) sink = sink + a->distance;
+        },
+        3);
+    std::sort(pts.begin(), pts.end());
+    const double bs = seconds_of(
+        [&] {
+          for (const Point& q : queries) sink = sink + (std::upper_bound(pts.begin(), pts.end(), q) - pts.begin());
+        },
+        3);
+    std::printf("%7lld %9zu | %8.3f %10lld | %8.2f %8.1f\n", static_cast<long long>(m), pts.size(), build,
+                static_cast<long long>(map->stats().trapezoids), qs / nqueries * 1e6, qs / bs);
+    std::fflush(stdout);
+  }
+  if (failures) std::printf("UNREACHED free points in %d strip layouts\n", failures);
+  return failures ? 1 : 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::vector<std::int64_t> sizes = {1000, 10000, 100000, 1000000}, source_counts = {1, 100, 10000};
   std::string kind_name = "rects";
   int nqueries = 100000, wave_queries = 0;  // 0: 20, or 5 from 10^5 vertices on
+  std::vector<std::int64_t> strips;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--sizes") && i + 1 < argc) sizes = parse_list(argv[++i]);
     else if (!std::strcmp(argv[i], "--sources") && i + 1 < argc) source_counts = parse_list(argv[++i]);
     else if (!std::strcmp(argv[i], "--kind") && i + 1 < argc) kind_name = argv[++i];
     else if (!std::strcmp(argv[i], "--queries") && i + 1 < argc) nqueries = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--wave-queries") && i + 1 < argc) wave_queries = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--strips") && i + 1 < argc) strips = parse_list(argv[++i]);
     else {
-      std::fprintf(stderr, "usage: %s [--sizes N,..] [--sources K,..] [--kind K] [--queries Q] [--wave-queries W]\n",
+      std::fprintf(stderr, "usage: %s [--sizes N,..] [--sources K,..] [--kind K] [--queries Q] [--wave-queries W] [--strips M,..]\n",
                    argv[0]);
       return 2;
     }
   }
+  if (!strips.empty()) return run_strips(strips, std::min(nqueries, 20000));
   const auto kind = taut::io::parse_gen_kind(kind_name);
   if (!kind) {
     std::fprintf(stderr, "unknown kind %s\n", kind_name.c_str());

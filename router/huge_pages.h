@@ -1,5 +1,5 @@
 // Memory on transparent huge pages (2 MiB) for large structures that queries read at random
-// places: the shortest path map's trapezoids, staircases and R-tree. A query touches a dozen
+// places: the shortest path map's trapezoids, staircases, points and point-location nodes. A query touches a dozen
 // places in up to a gigabyte; with 4 KiB pages nearly each of them also misses the TLB. Linux
 // gives huge pages to memory that asks for them (madvise) when THP is in "madvise" mode, as on
 // Debian by default; elsewhere the advice is ignored and the memory is ordinary.
@@ -14,7 +14,6 @@
 #include <cstdlib>
 #include <limits>
 #include <memory>
-#include <memory_resource>
 #include <new>
 
 namespace taut::router::detail {
@@ -50,27 +49,6 @@ struct HugePageAllocator {
     else std::free(p);
   }
   friend bool operator==(const HugePageAllocator&, const HugePageAllocator&) { return true; }
-};
-
-// Upstream of a std::pmr::monotonic_buffer_resource that holds many small nodes (an R-tree's):
-// its large chunks go on huge pages. Counts the bytes it hands out.
-class HugePageResource : public std::pmr::memory_resource {
- public:
-  std::size_t bytes() const { return bytes_; }
-
- private:
-  void* do_allocate(std::size_t bytes, std::size_t align) override {
-    bytes_ += bytes;
-    if (bytes < kHugePage || align > kHugePage) return ::operator new(bytes, std::align_val_t{align});
-    return huge_page_alloc(bytes);
-  }
-  void do_deallocate(void* p, std::size_t bytes, std::size_t align) override {
-    bytes_ -= bytes;
-    if (bytes < kHugePage || align > kHugePage) ::operator delete(p, bytes, std::align_val_t{align});
-    else std::free(p);
-  }
-  bool do_is_equal(const std::pmr::memory_resource& o) const noexcept override { return this == &o; }
-  std::size_t bytes_ = 0;
 };
 
 }  // namespace taut::router::detail

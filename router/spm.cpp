@@ -10,8 +10,6 @@
 #include <stdexcept>
 #include <string>
 
-#include <boost/geometry.hpp>
-#include <boost/geometry/index/rtree.hpp>
 
 #include "geom/index.h"
 #include "geom/predicates.h"
@@ -102,26 +100,177 @@ struct WallSide {
   bool has_wedge;
 };
 
-namespace bg = boost::geometry;
-namespace bgi = boost::geometry::index;
-// float boxes (half the memory of double ones, so fewer cache misses per query), rounded
-// outward; the exact test decides.
-using BPoint = bg::model::point<float, 2, bg::cs::cartesian>;
-using BBox = bg::model::box<BPoint>;
-using TrapValue = std::pair<BBox, uint32_t>;
-// Its nodes live in an arena on huge pages (router/huge_pages.h).
-using TrapTree = bgi::rtree<TrapValue, bgi::rstar<16>, bgi::indexable<TrapValue>, bgi::equal_to<TrapValue>,
-                            std::pmr::polymorphic_allocator<TrapValue>>;
 // What queries read at random places goes on huge pages.
 template <class T>
 using HugeVector = std::vector<T, detail::HugePageAllocator<T>>;
+
+// The sweep's ordered set of edges, kept for every point of the sweep at once: a treap made
+// persistent by node copying (Driscoll, Sarnak, Sleator & Tarjan, "Making data structures
+// persistent", 1989; Sarnak & Tarjan's planar point location, 1986). Version v is the set after
+// the sweep has passed point v. Each node has one spare child pointer stamped with the version
+// from which it replaces one of the two children; a node changed a second time is copied, and
+// its parent is pointed at the copy (which may use the parent's spare, or copy it in turn).
+// Nodes made during the current version are changed in place. A treap (priorities: a hash of
+// the edge id) changes O(1) pointers per insert or erase in expectation, so the versions cost
+// O(1) nodes each in expectation (measured: 3.1 nodes per edge), and a query reads O(log n)
+// nodes with high probability over the priorities (measured: 11 on average at 10^6 vertices).
+class PersistentEdges {
+ public:
+  struct Node {
+    Point l, r;             // the edge's ends, for a query's test without another lookup
+    uint32_t edge;
+    uint32_t child[2];
+    uint32_t spare_ver;     // kNone, or the version (low 31 bits) and side (top bit) of `spare`
+    uint32_t spare;
+  };
+
+  // Start version v (versions increase by one, from 0).
+  void begin_version(uint32_t v) {
+    ver_ = v;
+    first_of_ver_ = static_cast<uint32_t>(nodes_.size());
+  }
+  // End it: the current set is version v's.
+  void end_version() { roots_.push_back(root_); }
+
+  template <class Less>
+  void insert(uint32_t edge, Point l, Point r, const Less& less) {
+    nodes_.push_back(Node{l, r, edge, {kNone, kNone}, kNone, kNone});
+    root_ = insert_at(root_, static_cast<uint32_t>(nodes_.size() - 1), less);
+  }
+  template <class Less>
+  void erase(uint32_t edge, const Less& less) { root_ = erase_at(root_, edge, less); }
+
+  // The highest edge of version v that q is above (strictly: `strict`) or on; kNone if none.
+  uint32_t below(uint32_t v, Point q, bool strict) const {
+    uint32_t x = roots_[v], best = kNone;
+    while (x != kNone) {
+      const Node& n = nodes_[x];
+      const int o = geom::orientation(n.l, n.r, q);
+      if (o > 0 || (o == 0 && !strict)) {
+        best = n.edge;
+        x = child(n, 1, v);
+      } else {
+        x = child(n, 0, v);
+      }
+    }
+    return best;
+  }
+  // Renumbers the nodes in depth-first order from the roots of the versions in turn (every
+  // pointer followed, spare ones too), so a node's subtree tends to follow it in memory: a query
+  // reads each node once, top down, and most of them are then near the one before.
+  void compact() {
+    const uint32_t n = static_cast<uint32_t>(nodes_.size());
+    std::vector<uint32_t> id(n, kNone), stack;
+    uint32_t next = 0;
+    for (const uint32_t r : roots_) {
+      if (r == kNone || id[r] != kNone) continue;
+      stack.push_back(r);
+      while (!stack.empty()) {
+        const uint32_t x = stack.back();
+        stack.pop_back();
+        if (id[x] != kNone) continue;
+        id[x] = next++;
+        const Node& nd = nodes_[x];
+        for (const uint32_t c : {nd.spare, nd.child[1], nd.child[0]})  // left child first
+          if (c != kNone && id[c] == kNone) stack.push_back(c);
+      }
+    }
+    HugeVector<Node> out(next);
+    for (uint32_t x = 0; x < n; ++x) {
+      if (id[x] == kNone) continue;  // unreachable from every version (replaced in its own)
+      Node nd = nodes_[x];
+      for (uint32_t& c : nd.child)
+        if (c != kNone) c = id[c];
+      if (nd.spare != kNone) nd.spare = id[nd.spare];
+      out[id[x]] = nd;
+    }
+    nodes_ = std::move(out);
+    for (uint32_t& r : roots_)
+      if (r != kNone) r = id[r];
+    roots_.shrink_to_fit();
+  }
+  std::size_t bytes() const { return nodes_.capacity() * sizeof(Node) + roots_.capacity() * sizeof(uint32_t); }
+  std::size_t nodes() const { return nodes_.size(); }
+
+ private:
+  static constexpr uint32_t kSide = 1u << 31;
+  static uint32_t child(const Node& n, int side, uint32_t v) {
+    if (n.spare_ver != kNone && (n.spare_ver & ~kSide) <= v && static_cast<int>(n.spare_ver >> 31) == side)
+      return n.spare;
+    return n.child[side];
+  }
+  uint32_t latest(uint32_t x, int side) const { return child(nodes_[x], side, ver_); }
+  static uint64_t priority(uint32_t edge) {  // splitmix64: a fixed, well-mixed order
+    uint64_t z = edge + 0x9e3779b97f4a7c15ULL;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+  }
+  bool higher(uint32_t a, uint32_t b) const {
+    const uint64_t pa = priority(nodes_[a].edge), pb = priority(nodes_[b].edge);
+    return pa != pb ? pa > pb : nodes_[a].edge > nodes_[b].edge;
+  }
+  // Points x's child `side` at y in the current version; returns the node that is x now (x, or
+  // its copy, which the caller must link in place of x).
+  uint32_t set_child(uint32_t x, int side, uint32_t y) {
+    if (latest(x, side) == y) return x;
+    Node& n = nodes_[x];
+    if (x >= first_of_ver_) {
+      n.child[side] = y;
+      return x;
+    }
+    const uint32_t tag = ver_ | (side ? kSide : 0);
+    if (n.spare_ver == kNone || n.spare_ver == tag) {
+      n.spare_ver = tag;
+      n.spare = y;
+      return x;
+    }
+    Node c = n;
+    c.child[0] = latest(x, 0);
+    c.child[1] = latest(x, 1);
+    c.child[side] = y;
+    c.spare_ver = kNone;
+    c.spare = kNone;
+    nodes_.push_back(c);
+    return static_cast<uint32_t>(nodes_.size() - 1);
+  }
+  template <class Less>
+  uint32_t insert_at(uint32_t x, uint32_t n, const Less& less) {
+    if (x == kNone) return n;
+    const int side = less(nodes_[n].edge, nodes_[x].edge) ? 0 : 1;
+    const uint32_t c = insert_at(latest(x, side), n, less);
+    x = set_child(x, side, c);
+    if (!higher(c, x)) return x;
+    // Rotate c above x.
+    x = set_child(x, side, latest(c, 1 - side));
+    return set_child(c, 1 - side, x);
+  }
+  template <class Less>
+  uint32_t erase_at(uint32_t x, uint32_t edge, const Less& less) {
+    if (x == kNone) throw std::logic_error("spm: an edge to erase is not in the persistent set");
+    if (nodes_[x].edge == edge) return join(latest(x, 0), latest(x, 1));
+    const int side = less(edge, nodes_[x].edge) ? 0 : 1;
+    return set_child(x, side, erase_at(latest(x, side), edge, less));
+  }
+  uint32_t join(uint32_t a, uint32_t b) {  // every edge of a below every edge of b
+    if (a == kNone) return b;
+    if (b == kNone) return a;
+    if (higher(a, b)) return set_child(a, 1, join(latest(a, 1), b));
+    return set_child(b, 0, join(a, latest(b, 0)));
+  }
+
+  HugeVector<Node> nodes_;
+  std::vector<uint32_t> roots_;  // per version
+  uint32_t root_ = kNone;
+  uint32_t ver_ = 0, first_of_ver_ = 0;
+};
 
 }  // namespace
 
 struct L1Map::Impl {
   geom::Box domain;
   L1Wavefront wf;
-  std::vector<Point> P;            // decomposition points, lex order
+  HugeVector<Point> P;             // decomposition points, lex order (queries search it)
   std::vector<uint32_t> src_at;    // per point: the least source index there, or kNone
   std::vector<Edge> edges;
   HugeVector<Trap> traps;
@@ -129,14 +278,29 @@ struct L1Map::Impl {
   HugeVector<Root> roots;
   std::vector<uint32_t> root_begin;  // per point: its roots [begin, next)
   std::vector<Point> root_lo;        // build only: per root, the ring neighbour its wedge starts at
-  detail::HugePageResource tree_pages;  // declared before the tree: it outlives it
-  std::pmr::monotonic_buffer_resource tree_arena{&tree_pages};
-  // Trapezoids of positive width, and those of width 0 (between points on a common vertical: half
-  // of them on axis-parallel layouts), which only queries on such a vertical can be in.
-  std::optional<TrapTree> tree, zero_tree;
+  // Point location from the sweep itself: the edges crossing the sweep line after each point
+  // (PersistentEdges), and per edge the trapezoids above it in sweep order.
+  PersistentEdges pset;
+  HugeVector<uint32_t> above_begin, above;
+  // Where a query's x falls among the points: x_first[b] is the first point with x >= x_lo +
+  // b * x_step (buckets of equal width, about two points each on average).
+  HugeVector<uint32_t> x_first;
+  i64 x_lo = 0, x_step = 1;
+  // The fast path: a uniform grid over the domain; cell c lists the trapezoids whose bounding
+  // box meets it, [cell_begin[c], cell_begin[c + 1]) of cell_traps, and is `complete` when no
+  // trapezoid meeting it was left out (those spanning more than kGridSpan cells are).
+  // Tuned on bench_spm (10^5 and 10^6 vertices, every generated kind): with one cell per
+  // trapezoid, lists of up to 16 and trapezoids listed in up to 64 cells, 1-4 % of queries on
+  // rects, polygons and maze layouts and 12 % on degenerate ones go on to the persistent search
+  // (half a cell per trapezoid and lists of 12: 20 %).
+  static constexpr i64 kGridSpan = 64;       // most cells a trapezoid is listed in
+  static constexpr uint32_t kGridList = 16;  // longest list a query scans
+  i64 gx0 = 0, gy0 = 0, gsx = 1, gsy = 1, gnx = 0, gny = 0;
+  HugeVector<uint32_t> cell_begin, cell_traps;
+  std::vector<bool> cell_complete;
   Stats st;
 
-  Impl(const geom::Box& dom, std::span<const Polygon> obstacles, std::span<const Point> sources)
+  Impl(const geom::Box& dom, std::span<const Polygon> obstacles, std::span<const Point> sources, bool grid)
       : domain(dom), wf(dom, obstacles) {
     wf.run(sources, {}, WavefrontStop::Never);
     build_points_and_edges(sources);
@@ -147,7 +311,7 @@ struct L1Map::Impl {
     make_roots();
     pass(true, left, right, close_begin, closing, open_begin, opening);
     pass(false, left, right, close_begin, closing, open_begin, opening);
-    build_tree(left, right);
+    if (grid) build_grid(left, right);
     root_lo = {};
     rays.shrink_to_fit();  // grown by doubling: up to half of it was slack
     traps.shrink_to_fit();
@@ -156,6 +320,7 @@ struct L1Map::Impl {
     st.trapezoids = static_cast<i64>(traps.size());
     st.rays = static_cast<i64>(rays.size());
     st.roots = static_cast<i64>(roots.size());
+    st.location_nodes = static_cast<i64>(pset.nodes());
   }
 
   uint32_t point_id(Point p) const {
@@ -187,7 +352,7 @@ struct L1Map::Impl {
     for (const auto& [p, i] : free_src) raw.push_back(p);
     std::sort(raw.begin(), raw.end());
     raw.erase(std::unique(raw.begin(), raw.end()), raw.end());
-    P = std::move(raw);
+    P.assign(raw.begin(), raw.end());
     src_at.assign(P.size(), kNone);
     for (const auto& [p, i] : free_src) {
       uint32_t& s = src_at[point_id(p)];
@@ -357,11 +522,17 @@ struct L1Map::Impl {
         for (std::size_t i = 0; i + 1 < E.size(); ++i) close(E[i], kPoint, yq, yq, other(E[i + 1], q), true);
         close(E.back(), kUpper, yq, yA, upper_w, has_upper_w);
       }
+      pset.begin_version(q);
       for (uint32_t e : E) {
         active.erase(where[e]);
         where[e] = active.end();
+        pset.erase(e, below);
       }
-      for (uint32_t e : S) where[e] = active.insert(e).first;
+      for (uint32_t e : S) {
+        where[e] = active.insert(e).first;
+        pset.insert(e, P[edges[e].l], P[edges[e].r], below);
+      }
+      pset.end_version();
       auto open = [&](uint32_t bottom, uint32_t top, Part part, Q lo, Q hi, Point w, bool hw) {
         if (!edges[bottom].free_above || top == kNone) return;
         const uint32_t t = static_cast<uint32_t>(traps.size());
@@ -381,6 +552,27 @@ struct L1Map::Impl {
     }
     close_begin[n] = static_cast<uint32_t>(closing.size());
     open_begin[n] = static_cast<uint32_t>(opening.size());
+    pset.compact();
+    // x buckets (P is sorted by x first).
+    x_lo = P.front().x;
+    const i64 span = i64{P.back().x} - x_lo + 1;
+    const i64 nb = std::max<i64>(1, static_cast<i64>(P.size() / 2));
+    x_step = std::max<i64>(1, (span + nb - 1) / nb);
+    const std::size_t buckets = static_cast<std::size_t>((span + x_step - 1) / x_step);
+    x_first.assign(buckets + 1, 0);
+    for (std::size_t bb = 0, i = 0; bb <= buckets; ++bb) {
+      const i64 start = x_lo + static_cast<i64>(bb) * x_step;
+      while (i < P.size() && P[i].x < start) ++i;
+      x_first[bb] = static_cast<uint32_t>(i);
+    }
+    above_begin.assign(m + 1, 0);
+    for (const Trap& t : traps) ++above_begin[t.bot + 1];
+    for (uint32_t e = 0; e < m; ++e) above_begin[e + 1] += above_begin[e];
+    above.resize(traps.size());
+    {
+      std::vector<uint32_t> fill(above_begin.begin(), above_begin.end() - 1);
+      for (uint32_t t = 0; t < traps.size(); ++t) above[fill[traps[t].bot]++] = t;  // L ascending
+    }
     for (Trap& t : traps) {
       if (t.R == kNone) throw std::logic_error("spm: a trapezoid never closed");
       t.pl = P[t.L];
@@ -532,53 +724,112 @@ struct L1Map::Impl {
     }
   }
 
-  // The float nearest to v on each side (v an integer below 2^31 in magnitude).
-  static float down(i64 v) {
-    float f = static_cast<float>(v);
-    while (static_cast<i64>(f) > v) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
-    return f;
-  }
-  static float up(i64 v) {
-    float f = static_cast<float>(v);
-    while (static_cast<i64>(f) < v) f = std::nextafter(f, std::numeric_limits<float>::infinity());
-    return f;
-  }
-
-  void build_tree(const std::vector<SideRange>& left, const std::vector<SideRange>& right) {
-    std::vector<std::pair<BBox, uint32_t>> boxes, zero_boxes;
-    boxes.reserve(traps.size());
-    for (uint32_t i = 0; i < traps.size(); ++i) {
+  // The grid: about one cell per trapezoid, cells shaped like the domain. Each trapezoid's
+  // box (exact integer bounds of its closure: x between its walls, y from the floor of its
+  // lowest corner height to the ceiling of its highest) is listed in every cell it meets.
+  void build_grid(const std::vector<SideRange>& left, const std::vector<SideRange>& right) {
+    const i64 w = i64{domain.hi.x} - domain.lo.x + 1, h = i64{domain.hi.y} - domain.lo.y + 1;
+    const double cells = std::max<double>(1.0, static_cast<double>(traps.size()));
+    const double aspect = static_cast<double>(w) / static_cast<double>(h);
+    gnx = std::clamp<i64>(static_cast<i64>(std::sqrt(cells * aspect)), 1, w);
+    gny = std::clamp<i64>(static_cast<i64>(cells / static_cast<double>(gnx)), 1, h);
+    gsx = (w + gnx - 1) / gnx;
+    gsy = (h + gny - 1) / gny;
+    gnx = (w + gsx - 1) / gsx;
+    gny = (h + gsy - 1) / gsy;
+    gx0 = domain.lo.x;
+    gy0 = domain.lo.y;
+    const std::size_t ncell = static_cast<std::size_t>(gnx * gny);
+    struct Span {
+      i64 cx0, cx1, cy0, cy1;
+    };
+    auto span = [&](uint32_t i) {
       const Trap& t = traps[i];
-      const i64 y0 = std::min(floor_of(left[i].lo), floor_of(right[i].lo));
-      const i64 y1 = std::max(ceil_of(left[i].hi), ceil_of(right[i].hi));
-      (t.pl.x == t.pr.x ? zero_boxes : boxes)
-          .push_back({BBox(BPoint(down(P[t.L].x), down(y0)), BPoint(up(P[t.R].x), up(y1))), i});
+      const i64 y0 = std::max<i64>(domain.lo.y, std::min(floor_of(left[i].lo), floor_of(right[i].lo)));
+      const i64 y1 = std::min<i64>(domain.hi.y, std::max(ceil_of(left[i].hi), ceil_of(right[i].hi)));
+      return Span{(i64{t.pl.x} - gx0) / gsx, (i64{t.pr.x} - gx0) / gsx, (y0 - gy0) / gsy, (y1 - gy0) / gsy};
+    };
+    // Trapezoids left out are counted per cell with a 2-D difference array.
+    std::vector<int64_t> missing(static_cast<std::size_t>((gnx + 1) * (gny + 1)), 0);
+    auto at = [&](i64 cx, i64 cy) -> int64_t& { return missing[static_cast<std::size_t>(cy * (gnx + 1) + cx)]; };
+    cell_begin.assign(ncell + 1, 0);
+    for (uint32_t i = 0; i < traps.size(); ++i) {
+      const Span sp = span(i);
+      if ((sp.cx1 - sp.cx0 + 1) * (sp.cy1 - sp.cy0 + 1) > kGridSpan) {
+        ++at(sp.cx0, sp.cy0);
+        --at(sp.cx1 + 1, sp.cy0);
+        --at(sp.cx0, sp.cy1 + 1);
+        ++at(sp.cx1 + 1, sp.cy1 + 1);
+        continue;
+      }
+      for (i64 cy = sp.cy0; cy <= sp.cy1; ++cy)
+        for (i64 cx = sp.cx0; cx <= sp.cx1; ++cx) ++cell_begin[static_cast<std::size_t>(cy * gnx + cx) + 1];
     }
-    const std::pmr::polymorphic_allocator<TrapValue> alloc(&tree_arena);
-    tree.emplace(boxes.begin(), boxes.end(), bgi::rstar<16>(), bgi::indexable<TrapValue>(),
-                 bgi::equal_to<TrapValue>(), alloc);
-    zero_tree.emplace(zero_boxes.begin(), zero_boxes.end(), bgi::rstar<16>(), bgi::indexable<TrapValue>(),
-                      bgi::equal_to<TrapValue>(), alloc);
+    for (std::size_t c = 0; c < ncell; ++c) cell_begin[c + 1] += cell_begin[c];
+    cell_traps.resize(cell_begin[ncell]);
+    {
+      std::vector<uint32_t> fill(cell_begin.begin(), cell_begin.end() - 1);
+      for (uint32_t i = 0; i < traps.size(); ++i) {
+        const Span sp = span(i);
+        if ((sp.cx1 - sp.cx0 + 1) * (sp.cy1 - sp.cy0 + 1) > kGridSpan) continue;
+        for (i64 cy = sp.cy0; cy <= sp.cy1; ++cy)
+          for (i64 cx = sp.cx0; cx <= sp.cx1; ++cx) cell_traps[fill[static_cast<std::size_t>(cy * gnx + cx)]++] = i;
+      }
+    }
+    cell_complete.assign(ncell, false);
+    for (i64 cy = 0; cy < gny; ++cy)
+      for (i64 cx = 0; cx < gnx; ++cx) {
+        if (cx > 0) at(cx, cy) += at(cx - 1, cy);
+        if (cy > 0) at(cx, cy) += at(cx, cy - 1);
+        if (cx > 0 && cy > 0) at(cx, cy) -= at(cx - 1, cy - 1);
+        cell_complete[static_cast<std::size_t>(cy * gnx + cx)] = at(cx, cy) == 0;
+      }
   }
 
+  static bool holds(const Trap& t, Point q) {
+    return t.pl < q && q < t.pr && geom::orientation(t.b0, t.b1, q) >= 0 && geom::orientation(t.t0, t.t1, q) <= 0;
+  }
   // The trapezoid whose closure holds q (q not a decomposition point); kNone if none (q is not
   // free). The trapezoids partition free space (open across walls, closed along blockage
-  // edges, which have free space on one side only), so at most one holds q: look among those
-  // of positive width first, then among those of width 0.
+  // edges, which have free space on one side only), so at most one holds q. The edges crossing
+  // the sweep line when it reaches q are version k of the persistent set, k the last point
+  // before q (found in q's x bucket); the trapezoid holding q lies above the highest of them
+  // that q is on or above, or, when q is on that edge and its free side is below, above the
+  // highest that q is strictly above. Per edge the trapezoids above it are in sweep order: the
+  // one open at k is the last that opened at or before k. First, though, q's grid cell: when
+  // its list is short and complete, it holds the answer (kNone included).
   uint32_t find(Point q) const {
-    const uint32_t t = find_in(*tree, q);
-    return t != kNone ? t : find_in(*zero_tree, q);
-  }
-  uint32_t find_in(const TrapTree& rt, Point q) const {
-    const BPoint bp(down(q.x), down(q.y)), bq(up(q.x), up(q.y));
-    // The first box holding q whose trapezoid holds q exactly: the query iterator stops there
-    // (no further nodes visited), unlike an output-iterator query that walks every candidate.
-    for (auto it = rt.qbegin(bgi::intersects(BBox(bp, bq))); it != rt.qend(); ++it) {
-      const Trap& t = traps[it->second];
-      if (t.pl < q && q < t.pr && geom::orientation(t.b0, t.b1, q) >= 0 && geom::orientation(t.t0, t.t1, q) <= 0)
-        return it->second;
+    if (gnx > 0 && q.x >= gx0 && q.y >= gy0 && q.x <= domain.hi.x && q.y <= domain.hi.y) {
+      const std::size_t c = static_cast<std::size_t>(((i64{q.y} - gy0) / gsy) * gnx + (i64{q.x} - gx0) / gsx);
+      const uint32_t b = cell_begin[c], e = cell_begin[c + 1];
+      if (e - b <= kGridList) {
+        for (uint32_t i = b; i < e; ++i)
+          if (holds(traps[cell_traps[i]], q)) return cell_traps[i];
+        if (cell_complete[c]) return kNone;
+      }
     }
-    return kNone;
+    return find_persistent(q);
+  }
+  uint32_t find_persistent(Point q) const {
+    if (q.x < x_lo) return kNone;
+    const std::size_t b = static_cast<std::size_t>((i64{q.x} - x_lo) / x_step);
+    if (b + 1 >= x_first.size()) return kNone;
+    const auto it = std::upper_bound(P.begin() + x_first[b], P.begin() + x_first[b + 1], q);
+    if (it == P.begin()) return kNone;
+    const uint32_t k = static_cast<uint32_t>(it - P.begin() - 1);
+    auto trap_above = [&](uint32_t e) -> uint32_t {
+      if (e == kNone) return kNone;
+      const auto lo = above.begin() + above_begin[e], hi = above.begin() + above_begin[e + 1];
+      const auto j = std::upper_bound(lo, hi, k, [&](uint32_t kk, uint32_t t) { return kk < traps[t].L; });
+      if (j == lo) return kNone;
+      const uint32_t t = *std::prev(j);
+      return holds(traps[t], q) ? t : kNone;
+    };
+    const uint32_t e = pset.below(k, q, false);
+    const uint32_t t = trap_above(e);
+    if (t != kNone || e == kNone) return t;
+    if (geom::orientation(P[edges[e].l], P[edges[e].r], q) != 0) return kNone;
+    return trap_above(pset.below(k, q, true));
   }
 
   // Best ray at q inside trapezoid i: (value, root).
@@ -840,8 +1091,9 @@ struct L1Map::Impl {
   }
 };
 
-L1Map::L1Map(const geom::Box& domain, std::span<const Polygon> obstacles, std::span<const Point> sources)
-    : impl_(std::make_unique<Impl>(domain, obstacles, sources)) {}
+L1Map::L1Map(const geom::Box& domain, std::span<const Polygon> obstacles, std::span<const Point> sources,
+             Options options)
+    : impl_(std::make_unique<Impl>(domain, obstacles, sources, options.grid)) {}
 L1Map::~L1Map() = default;
 L1Map::L1Map(L1Map&&) noexcept = default;
 L1Map& L1Map::operator=(L1Map&&) noexcept = default;
@@ -903,8 +1155,9 @@ std::size_t L1Map::memory_bytes() const {
   const Impl& m = *impl_;
   return m.wf.memory_bytes() + m.P.capacity() * sizeof(Point) + m.src_at.capacity() * sizeof(uint32_t) +
          m.edges.capacity() * sizeof(Edge) + m.traps.capacity() * sizeof(Trap) + m.rays.capacity() * sizeof(Ray) +
-         m.roots.capacity() * sizeof(Root) + m.root_begin.capacity() * sizeof(uint32_t) +
-         m.tree_pages.bytes();  // the R-tree's arena
+         m.roots.capacity() * sizeof(Root) + m.root_begin.capacity() * sizeof(uint32_t) + m.pset.bytes() +
+         (m.above_begin.capacity() + m.above.capacity() + m.x_first.capacity() + m.cell_begin.capacity() +
+          m.cell_traps.capacity()) * sizeof(uint32_t) + m.cell_complete.capacity() / 8;
 }
 
 }  // namespace taut::router

@@ -22,17 +22,20 @@
 //
 // A side keeps its rays as two staircases (up: thresholds rising, values falling; down: the
 // mirror): a ray that starts no lower and costs no less than another is dropped, since it is
-// beaten wherever it reaches. A query finds its trapezoid with an R-tree of their boxes
-// (Boost.Geometry; the exact test decides; trapezoids of width 0 in a second tree, searched only
-// when the first has none) and binary-searches the four staircases of its two sides. What
-// queries read lives on transparent huge pages (router/huge_pages.h).
+// beaten wherever it reaches. A query finds its trapezoid by point location: a uniform grid of
+// about one cell per trapezoid answers most queries (a cell lists the trapezoids whose box meets
+// it; a short, complete list decides); the rest go to a search in the sweep itself (Sarnak &
+// Tarjan): the sweep's ordered set of edges, made persistent by node copying (a treap; every
+// version kept in O(1) expected nodes per update), is searched in the version of the last point
+// before q, and the trapezoid above the edge found is the one open there. Then four staircases
+// of its two sides are binary-searched. What queries read lives on transparent huge pages
+// (router/huge_pages.h).
 //
-// Costs, honestly. Query: O(log n) when trapezoid boxes overlap little, as with axis-parallel
-// blockages and the generated and Moving AI layouts (1.9-2.7 us at 10^6 vertices, on a busy machine); long sloped
-// trapezoids have boxes that overlap almost everywhere, and n parallel diagonal strips make a
-// query scan O(n) of them (measured in review: 137 us at 16,000 strips). A point-location
-// structure built from the sweep (a persistent search tree) would make it O(log n) always; not
-// done yet. Size: sides do not share their staircases, so a side can hold a ray per root: about
+// Costs, honestly. Query: O(log n) on every layout, with high probability over the treap's
+// priorities (a fixed hash of the edge id), plus at most 16 exact tests in the grid: 1.7-1.8 us
+// at 10^6 vertices on generated layouts (1-4 % of queries reach the treap), about 1.3 us on
+// 16,000 parallel sloped strips, where the R-tree of trapezoid boxes used before scanned O(n)
+// of them (205 us). Size: sides do not share their staircases, so a side can hold a ray per root: about
 // 20 rays per trapezoid measured on generated and Moving AI layouts, but O(n (n + k)) in the
 // worst case (k sources on a diagonal below-left of m tall walls: 120 million rays, 3.2 GB for
 // k = m = 4,000). Mitchell's map is O(n); sharing staircases between sides would get there.
@@ -82,8 +85,16 @@ class L1Map {
  public:
   // Obstacles as geom::normalize_obstacles() returns them; sources that are not free are
   // ignored (no query reaches them); source indices in answers are positions in `sources`.
+  struct Options {
+    // Answer queries from the grid first (the fast path); false: every query by the
+    // persistent search alone (the same answers; the tests compare the two).
+    bool grid = true;
+  };
   L1Map(const geom::Box& domain, std::span<const geom::Polygon> obstacles,
-        std::span<const geom::Point> sources);
+        std::span<const geom::Point> sources, Options options);
+  L1Map(const geom::Box& domain, std::span<const geom::Polygon> obstacles,
+        std::span<const geom::Point> sources)
+      : L1Map(domain, obstacles, sources, Options{}) {}
   ~L1Map();
   L1Map(L1Map&&) noexcept;
   L1Map& operator=(L1Map&&) noexcept;
@@ -137,6 +148,7 @@ class L1Map {
     std::int64_t trapezoids = 0;  // free trapezoids (cells of the map before merging by root)
     std::int64_t rays = 0;        // staircase entries over all trapezoid sides
     std::int64_t roots = 0;       // (vertex, wedge) roots and sources carrying a ray
+    std::int64_t location_nodes = 0;  // nodes of the persistent search tree (point location)
   };
   const Stats& stats() const;
   std::size_t memory_bytes() const;
