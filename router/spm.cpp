@@ -747,7 +747,10 @@ struct L1Map::Impl {
       const Trap& t = traps[i];
       const i64 y0 = std::max<i64>(domain.lo.y, std::min(floor_of(left[i].lo), floor_of(right[i].lo)));
       const i64 y1 = std::min<i64>(domain.hi.y, std::max(ceil_of(left[i].hi), ceil_of(right[i].hi)));
-      return Span{(i64{t.pl.x} - gx0) / gsx, (i64{t.pr.x} - gx0) / gsx, (y0 - gy0) / gsy, (y1 - gy0) / gsy};
+      // (trapezoids lie in the domain; the clamps only guard the indices)
+      auto cx = [&](i64 x) { return std::clamp<i64>((x - gx0) / gsx, 0, gnx - 1); };
+      auto cy = [&](i64 y) { return std::clamp<i64>((y - gy0) / gsy, 0, gny - 1); };
+      return Span{cx(t.pl.x), cx(t.pr.x), cy(y0), cy(y1)};
     };
     // Trapezoids left out are counted per cell with a 2-D difference array.
     std::vector<int64_t> missing(static_cast<std::size_t>((gnx + 1) * (gny + 1)), 0);
