@@ -92,6 +92,27 @@ void for_each_edge(const geom::Polygon& pin, F f) {
 }
 bool is_point(const geom::Polygon& pin) { return pin.outer.size() == 1 && pin.holes.empty(); }
 
+// The closed pin holds p.
+bool in_pin(Point p, const geom::Polygon& pin) {
+  return is_point(pin) ? p == pin.outer[0] : geom::locate(p, pin) != geom::Location::Outside;
+}
+// A point two pins share, from their candidates: the first of a's candidates lying in b, else
+// the first of b's lying in a (a candidate of one pin lies in the other whenever they meet, by
+// the same projections).
+std::optional<Point> shared_point(std::span<const Point> a_cands, const geom::Polygon& a,
+                                  std::span<const Point> b_cands, const geom::Polygon& b) {
+  for (const Point p : a_cands)
+    if (in_pin(p, b)) return p;
+  for (const Point p : b_cands)
+    if (in_pin(p, a)) return p;
+  return std::nullopt;
+}
+// Drops the points the wavefront does not find free.
+template <class Wavefront>
+void keep_free(std::vector<Point>& v, const Wavefront& wf) {
+  v.erase(std::remove_if(v.begin(), v.end(), [&](Point p) { return !wf.is_free(p); }), v.end());
+}
+
 // Where the point (x2 / 2, y2 / 2) lies with respect to a ring: exact in __int128 (the doubled
 // coordinates of a midpoint exceed the int64 predicates' range). Crossing number with the
 // half-open rule; on an edge is Boundary.
@@ -250,11 +271,8 @@ typename BasicRouter<W>::Wire BasicRouter<W>::shortest(const geom::Polygon& from
   if (is_point(from) && is_point(to)) return shortest(from.outer[0], to.outer[0]);
   Wire w;
   std::vector<Point> sources = pin_candidates(from, to), targets = pin_candidates(to, from);
-  auto keep_free = [&](std::vector<Point>& v) {
-    v.erase(std::remove_if(v.begin(), v.end(), [&](Point p) { return !wavefront_.is_free(p); }), v.end());
-  };
-  keep_free(sources);
-  keep_free(targets);
+  keep_free(sources, wavefront_);
+  keep_free(targets, wavefront_);
   if (sources.empty()) {
     w.status = WireStatus::SourceNotFree;
     return w;
@@ -263,19 +281,8 @@ typename BasicRouter<W>::Wire BasicRouter<W>::shortest(const geom::Polygon& from
     w.status = WireStatus::TargetNotFree;
     return w;
   }
-  // Pins that share a point: a wire of one point there (a candidate of one pin lies in the
-  // other whenever they meet, by the same projections).
-  auto in_pin = [](Point p, const geom::Polygon& pin) {
-    return is_point(pin) ? p == pin.outer[0] : geom::locate(p, pin) != geom::Location::Outside;
-  };
-  auto touching = [&]() -> std::optional<Point> {
-    for (const Point p : sources)
-      if (in_pin(p, to)) return p;
-    for (const Point p : targets)
-      if (in_pin(p, from)) return p;
-    return std::nullopt;
-  };
-  if (const auto p = touching()) {
+  // Pins that share a point: a wire of one point there.
+  if (const auto p = shared_point(sources, from, targets, to)) {
     w.length = Len{};
     w.polygonal = {*p};
     w.points = {*p};
@@ -296,9 +303,6 @@ typename BasicRouter<W>::Tree BasicRouter<W>::tree(const geom::Polygon& source,
                                                    std::span<const geom::Polygon> sinks) {
   Tree t;
   t.distance.assign(sinks.size(), std::nullopt);
-  auto keep_free = [&](std::vector<Point>& v) {
-    v.erase(std::remove_if(v.begin(), v.end(), [&](Point p) { return !wavefront_.is_free(p); }), v.end());
-  };
   // The source's candidates see every sink's vertices (pin_candidates() projects "other"'s
   // vertices, which is all it reads of it).
   geom::Polygon all_sinks;
@@ -307,31 +311,23 @@ typename BasicRouter<W>::Tree BasicRouter<W>::tree(const geom::Polygon& source,
     for (const geom::Ring& h : s.holes) all_sinks.outer.insert(all_sinks.outer.end(), h.begin(), h.end());
   }
   std::vector<Point> sources = pin_candidates(source, all_sinks);
-  keep_free(sources);
+  keep_free(sources, wavefront_);
   if (sources.empty()) {
     t.status = WireStatus::SourceNotFree;
     return t;
   }
-  auto in_pin = [](Point p, const geom::Polygon& pin) {
-    return is_point(pin) ? p == pin.outer[0] : geom::locate(p, pin) != geom::Location::Outside;
-  };
   std::vector<Point> targets;
   std::vector<std::size_t> owner;  // targets[j] is a candidate of sinks[owner[j]]
   std::optional<Point> touch_point;
   for (std::size_t i = 0; i < sinks.size(); ++i) {
     std::vector<Point> c = pin_candidates(sinks[i], source);
-    keep_free(c);
+    keep_free(c, wavefront_);
     if (c.empty()) {
       t.status = WireStatus::TargetNotFree;
       t.failed = i;
       return t;
     }
-    std::optional<Point> touch;  // as in shortest(): a candidate of one pin lies in the other
-    for (const Point p : c)
-      if (!touch && in_pin(p, source)) touch = p;
-    for (const Point p : sources)
-      if (!touch && in_pin(p, sinks[i])) touch = p;
-    if (touch) {
+    if (const auto touch = shared_point(c, sinks[i], sources, source)) {
       t.distance[i] = Len{};
       if (!touch_point) touch_point = touch;
       continue;

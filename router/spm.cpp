@@ -10,7 +10,6 @@
 #include <stdexcept>
 #include <string>
 
-
 #include "geom/index.h"
 #include "geom/predicates.h"
 #include "router/huge_pages.h"
@@ -752,13 +751,14 @@ struct L1Map::Impl {
       auto cy = [&](i64 y) { return std::clamp<i64>((y - gy0) / gsy, 0, gny - 1); };
       return Span{cx(t.pl.x), cx(t.pr.x), cy(y0), cy(y1)};
     };
+    auto listed = [](const Span& sp) { return (sp.cx1 - sp.cx0 + 1) * (sp.cy1 - sp.cy0 + 1) <= kGridSpan; };
     // Trapezoids left out are counted per cell with a 2-D difference array.
     std::vector<int64_t> missing(static_cast<std::size_t>((gnx + 1) * (gny + 1)), 0);
     auto at = [&](i64 cx, i64 cy) -> int64_t& { return missing[static_cast<std::size_t>(cy * (gnx + 1) + cx)]; };
     cell_begin.assign(ncell + 1, 0);
     for (uint32_t i = 0; i < traps.size(); ++i) {
       const Span sp = span(i);
-      if ((sp.cx1 - sp.cx0 + 1) * (sp.cy1 - sp.cy0 + 1) > kGridSpan) {
+      if (!listed(sp)) {
         ++at(sp.cx0, sp.cy0);
         --at(sp.cx1 + 1, sp.cy0);
         --at(sp.cx0, sp.cy1 + 1);
@@ -774,7 +774,7 @@ struct L1Map::Impl {
       std::vector<uint32_t> fill(cell_begin.begin(), cell_begin.end() - 1);
       for (uint32_t i = 0; i < traps.size(); ++i) {
         const Span sp = span(i);
-        if ((sp.cx1 - sp.cx0 + 1) * (sp.cy1 - sp.cy0 + 1) > kGridSpan) continue;
+        if (!listed(sp)) continue;
         for (i64 cy = sp.cy0; cy <= sp.cy1; ++cy)
           for (i64 cx = sp.cx0; cx <= sp.cx1; ++cx) cell_traps[fill[static_cast<std::size_t>(cy * gnx + cx)]++] = i;
       }
