@@ -12,8 +12,11 @@
 // long and sloped and every one's bounding box holds most query points. Prints the query time
 // with the ratio to the binary-search baseline, and how it grows with M (O(log M) expected).
 //
+// --orientations octilinear: the octilinear map (OctMap, four weighted decompositions) against
+// the octilinear wavefront, the same columns.
+//
 //   bench_spm [--sizes N,N,..] [--sources K,K,..] [--kind rects|polygons|maze|degenerate]
-//             [--queries Q] [--wave-queries W] [--strips M,M,..]
+//             [--queries Q] [--wave-queries W] [--strips M,M,..] [--orientations rectilinear|octilinear]
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -81,6 +84,9 @@ int run_strips(const std::vector<std::int64_t>& counts, int nqueries) {
   return failures ? 1 : 0;
 }
 
+std::int64_t num(std::int64_t d) { return d; }
+std::int64_t num(const taut::geom::Root2& d) { return d.a + d.b; }
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -88,6 +94,7 @@ int main(int argc, char** argv) {
   std::string kind_name = "rects";
   int nqueries = 100000, wave_queries = 0;  // 0: 20, or 5 from 10^5 vertices on
   std::vector<std::int64_t> strips;
+  bool oct = false;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--sizes") && i + 1 < argc) sizes = parse_list(argv[++i]);
     else if (!std::strcmp(argv[i], "--sources") && i + 1 < argc) source_counts = parse_list(argv[++i]);
@@ -95,8 +102,15 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--queries") && i + 1 < argc) nqueries = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--wave-queries") && i + 1 < argc) wave_queries = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--strips") && i + 1 < argc) strips = parse_list(argv[++i]);
-    else {
-      std::fprintf(stderr, "usage: %s [--sizes N,..] [--sources K,..] [--kind K] [--queries Q] [--wave-queries W] [--strips M,..]\n",
+    else if (!std::strcmp(argv[i], "--orientations") && i + 1 < argc) {
+      const std::string o = argv[++i];
+      if (o != "rectilinear" && o != "octilinear") {
+        std::fprintf(stderr, "--orientations: rectilinear or octilinear\n");
+        return 2;
+      }
+      oct = o == "octilinear";
+    } else {
+      std::fprintf(stderr, "usage: %s [--sizes N,..] [--sources K,..] [--kind K] [--queries Q] [--wave-queries W] [--strips M,..] [--orientations O]\n",
                    argv[0]);
       return 2;
     }
@@ -107,8 +121,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "unknown kind %s\n", kind_name.c_str());
     return 2;
   }
-  std::printf("L1 shortest path map, kind %s; times are best of 1, sort = std::sort of the n vertices in the same run\n",
-              kind_name.c_str());
+  std::printf("%s shortest path map, kind %s; times are best of 1, sort = std::sort of the n vertices in the same run\n",
+              oct ? "octilinear" : "L1", kind_name.c_str());
   std::printf("%9s %6s | %8s %7s %7s | %9s %8s %8s %7s %7s | %8s %9s %9s %8s %s\n", "vertices", "srcs", "build s",
               "/sort", "/wave", "trapezoids", "rays/trap", "B/vertex", "query us", "/bsearch", "wave s", "wave/query",
               "break-even", "checked", "");
@@ -117,7 +131,7 @@ int main(int argc, char** argv) {
   };
   std::vector<Point2> growth;
   int failures = 0;
-  for (const std::int64_t size : sizes) {
+  auto measure = [&]<class Map, class Wave>(std::int64_t size) {
     const auto lay = taut::bench::bench_layout(*kind, size);
     const auto n = static_cast<std::int64_t>(lay.points.size());
     const double sort_s = taut::bench::sort_seconds(lay.points);
@@ -127,7 +141,7 @@ int main(int argc, char** argv) {
     for (const std::int64_t k : source_counts) {
       std::vector<Point> sources(free_pts.end() - k, free_pts.end());
       std::vector<Point> queries(free_pts.begin(), free_pts.begin() + nqueries);
-      std::optional<taut::router::L1Map> map;
+      std::optional<Map> map;
       const std::size_t heap0 = taut::bench::heap_in_use();
       const double build = seconds_of([&] { map.emplace(dom, lay.norm.obstacles, sources); }, 1);
       const std::size_t bytes = taut::bench::heap_in_use() - heap0;
@@ -136,7 +150,7 @@ int main(int argc, char** argv) {
       const double qs = seconds_of(
           [&] {
             for (const Point& q : queries)
-              if (const auto a = map->locate(q)) sink = sink + a->distance;
+              if (const auto a = map->locate(q)) sink = sink + num(a->distance);
           },
           3);
       // Baseline for the query time, in the same run: one binary search per query in the sorted
@@ -149,7 +163,7 @@ int main(int argc, char** argv) {
           },
           3);
       // One wavefront per query (the pre-map way), on the first few queries; answers compared.
-      taut::router::L1Wavefront wf(dom, lay.norm.obstacles);
+      Wave wf(dom, lay.norm.obstacles);
       const int w = std::min<int>(wave_queries > 0 ? wave_queries : (n >= 100000 ? 5 : 20), nqueries);
       int checked = 0;
       const double wave = seconds_of(
@@ -175,6 +189,12 @@ int main(int argc, char** argv) {
       std::fflush(stdout);
       if (k == source_counts.front()) growth.push_back({std::log(static_cast<double>(n)), std::log(build)});
     }
+  };
+  for (const std::int64_t size : sizes) {
+    if (oct)
+      measure.operator()<taut::router::OctMap, taut::router::OctWavefront>(size);
+    else
+      measure.operator()<taut::router::L1Map, taut::router::L1Wavefront>(size);
   }
   if (growth.size() >= 2) {
     const auto& a = growth[growth.size() - 2];

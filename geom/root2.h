@@ -33,7 +33,14 @@ struct Root2 {
   static constexpr int sign_of(__int128 a, __int128 b) {
     if (a >= 0 && b >= 0) return (a > 0 || b > 0) ? 1 : 0;
     if (a <= 0 && b <= 0) return (a < 0 || b < 0) ? -1 : 0;
-    const bool a_wins = a * a > 2 * b * b;  // |a| > |b| * sqrt(2)
+    bool a_wins;  // |a| > |b| * sqrt(2)
+    if (a == static_cast<std::int64_t>(a) && b == static_cast<std::int64_t>(b)) {
+      // the usual case (differences of numbers below 2^62): one 64 x 64 -> 128-bit product each
+      const std::int64_t a64 = static_cast<std::int64_t>(a), b64 = static_cast<std::int64_t>(b);
+      a_wins = __int128{a64} * a64 > 2 * (__int128{b64} * b64);
+    } else {
+      a_wins = a * a > 2 * b * b;
+    }
     return (a > 0) == a_wins ? 1 : -1;
   }
   constexpr int sign() const { return sign_of(a, b); }

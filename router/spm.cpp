@@ -53,10 +53,16 @@ inline bool compatible(Part from, Part to) {
   return from == to || from == kJoined || to == kJoined;
 }
 
-// A ray on a side: value y + K (up: for y >= t) or -y + K (down: for y <= t), plus the
-// horizontal distance from the side inside the trapezoid.
-struct Ray {
-  i64 K;
+// Values: i64 for L1; geom::Root2 for the octilinear map's frames, whose x and y steps weigh 1
+// and sqrt2 (or sqrt2 and 1). scale(d, w): d steps of weight w.
+inline i64 scale(i64 d, i64 w) { return d * w; }
+inline geom::Root2 scale(i64 d, geom::Root2 w) { return {d * w.a, d * w.b}; }
+
+// A ray on a side: value wy y + K (up: for y >= t) or -wy y + K (down: for y <= t), plus wx
+// times the horizontal distance from the side inside the trapezoid.
+template <class V>
+struct RayT {
+  V K;
   i64 tn;
   uint32_t td;
   uint32_t root;
@@ -67,9 +73,10 @@ struct Ray {
   }
 };
 
-struct Root {
+template <class V>
+struct RootT {
   Point p;
-  i64 d;
+  V d;
   uint32_t source;
   uint32_t wedge;  // index into vertex_wedges(p); kNone for a source
 };
@@ -264,11 +271,22 @@ class PersistentEdges {
   uint32_t ver_ = 0, first_of_ver_ = 0;
 };
 
-}  // namespace
+// What a decomposition needs of a point's free wedges (in its own coordinates).
+template <class V>
+struct WedgeIn {
+  Point lo;              // a point in the direction the wedge starts at (ccw)
+  std::optional<V> d;    // distance, when reached
+  uint32_t source;       // the source it was reached from
+};
 
-struct L1Map::Impl {
-  geom::Box domain;
-  L1Wavefront wf;
+// The decomposition and its staircases, for one metric: V the value type, wx and wy the
+// weights of a horizontal and a vertical step (1 and 1 for L1).
+template <class V>
+struct Decomp {
+  using Ray = RayT<V>;
+  using Root = RootT<V>;
+  geom::Box domain;  // queries outside it are not free (the octilinear frames: a bounding box)
+  V wx, wy;
   HugeVector<Point> P;             // decomposition points, lex order (queries search it)
   std::vector<uint32_t> src_at;    // per point: the least source index there, or kNone
   std::vector<Edge> edges;
@@ -277,6 +295,7 @@ struct L1Map::Impl {
   HugeVector<Root> roots;
   std::vector<uint32_t> root_begin;  // per point: its roots [begin, next)
   std::vector<Point> root_lo;        // build only: per root, the ring neighbour its wedge starts at
+  std::vector<bool> vertex_free;     // per point: a source, or an obstacle vertex with a free wedge
   // Point location from the sweep itself: the edges crossing the sweep line after each point
   // (PersistentEdges), and per edge the trapezoids above it in sweep order.
   PersistentEdges pset;
@@ -297,20 +316,23 @@ struct L1Map::Impl {
   i64 gx0 = 0, gy0 = 0, gsx = 1, gsy = 1, gnx = 0, gny = 0;
   HugeVector<uint32_t> cell_begin, cell_traps;
   std::vector<bool> cell_complete;
-  Stats st;
+  L1Map::Stats st;
 
-  Impl(const geom::Box& dom, std::span<const Polygon> obstacles, std::span<const Point> sources, bool grid)
-      : domain(dom), wf(dom, obstacles) {
-    wf.run(sources, {}, WavefrontStop::Never);
-    build_points_and_edges(sources);
+  // polys: the wavefront's frame obstacles; free_src: the free sources (point, index); wedges(p):
+  // the free wedges of ring vertex p, in vertex_wedges() order.
+  template <class Wedges>
+  Decomp(const geom::Box& dom, std::span<const Polygon> polys, std::span<const std::pair<Point, uint32_t>> free_src,
+         const Wedges& wedges, V wx_, V wy_, bool grid, double box_area = 1.0)
+      : domain(dom), wx(wx_), wy(wy_) {
+    build_points_and_edges(polys, free_src);
     std::vector<SideRange> left, right;
     std::vector<uint32_t> close_begin, open_begin;
     std::vector<WallSide> closing, opening;
     sweep(left, right, close_begin, closing, open_begin, opening);
-    make_roots();
+    make_roots(wedges);
     pass(true, left, right, close_begin, closing, open_begin, opening);
     pass(false, left, right, close_begin, closing, open_begin, opening);
-    if (grid) build_grid(left, right);
+    if (grid) build_grid(left, right, box_area);
     root_lo = {};
     rays.shrink_to_fit();  // grown by doubling: up to half of it was slack
     traps.shrink_to_fit();
@@ -333,8 +355,7 @@ struct L1Map::Impl {
   // ------------------------------------------------------------------------------------------
   // Points: every ring vertex (frame included) and every free source; edges: the ring edges,
   // split at sources lying inside them, each knowing which side is free.
-  void build_points_and_edges(std::span<const Point> sources) {
-    const std::span<const Polygon> polys = wf.frame_obstacles();
+  void build_points_and_edges(std::span<const Polygon> polys, std::span<const std::pair<Point, uint32_t>> free_src) {
     std::vector<Point> raw;
     for (const Polygon& p : polys) {
       raw.insert(raw.end(), p.outer.begin(), p.outer.end());
@@ -345,9 +366,6 @@ struct L1Map::Impl {
     raw.erase(std::unique(raw.begin(), raw.end()), raw.end());
     std::vector<Point> ring_pts = raw;  // sorted: vertex lookup
     auto is_vertex = [&](Point p) { return std::binary_search(ring_pts.begin(), ring_pts.end(), p); };
-    std::vector<std::pair<Point, uint32_t>> free_src;  // free sources, first index per point
-    for (std::size_t i = 0; i < sources.size(); ++i)
-      if (wf.is_free(sources[i])) free_src.push_back({sources[i], static_cast<uint32_t>(i)});
     for (const auto& [p, i] : free_src) raw.push_back(p);
     std::sort(raw.begin(), raw.end());
     raw.erase(std::unique(raw.begin(), raw.end()), raw.end());
@@ -452,8 +470,8 @@ struct L1Map::Impl {
       Point q;
     };
     struct Below {
-      using is_transparent = void;
-      const Impl* s;
+      struct is_transparent {};  // (a type: GCC calls an unused typedef in a template unused)
+      const Decomp* s;
       bool operator()(uint32_t e, uint32_t f) const {
         if (e == f) return false;
         const Point le = s->P[s->edges[e].l], re = s->P[s->edges[e].r];
@@ -470,7 +488,7 @@ struct L1Map::Impl {
       }
     };
     std::set<uint32_t, Below> active(Below{this});
-    std::vector<std::set<uint32_t, Below>::iterator> where(m, active.end());
+    std::vector<typename std::set<uint32_t, Below>::iterator> where(m, active.end());
     std::vector<uint32_t> gap(m, kNone);  // trapezoid open above edge e
     close_begin.assign(n + 1, 0);
     open_begin.assign(n + 1, 0);
@@ -584,19 +602,23 @@ struct L1Map::Impl {
   }
 
   // ------------------------------------------------------------------------------------------
-  void make_roots() {
+  template <class Wedges>
+  void make_roots(const Wedges& wedges) {
     root_begin.assign(P.size() + 1, 0);
+    vertex_free.assign(P.size(), false);
     for (uint32_t q = 0; q < P.size(); ++q) {
       root_begin[q] = static_cast<uint32_t>(roots.size());
       if (src_at[q] != kNone) {
-        roots.push_back({P[q], 0, src_at[q], kNone});
+        roots.push_back({P[q], V{}, src_at[q], kNone});
         root_lo.push_back(P[q]);
+        vertex_free[q] = true;
         continue;
       }
-      const auto w = wf.vertex_wedges(P[q]);
+      const std::vector<WedgeIn<V>> w = wedges(P[q]);
+      vertex_free[q] = !w.empty();
       for (uint32_t k = 0; k < w.size(); ++k)
-        if (w[k].distance) {
-          roots.push_back({P[q], *w[k].distance, static_cast<uint32_t>(w[k].source.value_or(kNone)), k});
+        if (w[k].d) {
+          roots.push_back({P[q], *w[k].d, w[k].source, k});
           root_lo.push_back(w[k].lo);
         }
     }
@@ -617,7 +639,7 @@ struct L1Map::Impl {
   // Ray order: value (K), then the larger root distance, then the root id.
   bool key_less(const Ray& a, const Ray& b) const {
     if (a.K != b.K) return a.K < b.K;
-    const i64 da = roots[a.root].d, db = roots[b.root].d;
+    const V &da = roots[a.root].d, &db = roots[b.root].d;
     if (da != db) return da > db;
     return a.root < b.root;
   }
@@ -683,7 +705,7 @@ struct L1Map::Impl {
         for (uint32_t i = o[0]; i < o[2]; ++i) {
           Ray r = rays[i];
           const bool up = i < o[1];
-          r.K += w;
+          r.K += scale(w, wx);
           if (up) {
             if (cmp(r.t(), at.hi) > 0) continue;
             r.set_t(qmax(r.t(), at.lo));
@@ -713,9 +735,10 @@ struct L1Map::Impl {
         }
         const uint32_t root = root_for(q, *d);
         if (root != kNone) {
-          const i64 y = P[q].y, dr = roots[root].d;
-          ups.push_back({dr - y, y, 1, root});
-          downs.push_back({dr + y, y, 1, root});
+          const i64 y = P[q].y;
+          const V dr = roots[root].d;
+          ups.push_back({dr - scale(y, wy), y, 1, root});
+          downs.push_back({dr + scale(y, wy), y, 1, root});
         }
         Trap& t = traps[d->trap];
         staircase(ups, downs, l2r ? t.lo : t.ro);
@@ -726,9 +749,12 @@ struct L1Map::Impl {
   // The grid: about one cell per trapezoid, cells shaped like the domain. Each trapezoid's
   // box (exact integer bounds of its closure: x between its walls, y from the floor of its
   // lowest corner height to the ceiling of its highest) is listed in every cell it meets.
-  void build_grid(const std::vector<SideRange>& left, const std::vector<SideRange>& right) {
+  void build_grid(const std::vector<SideRange>& left, const std::vector<SideRange>& right, double box_area) {
     const i64 w = i64{domain.hi.x} - domain.lo.x + 1, h = i64{domain.hi.y} - domain.lo.y + 1;
-    const double cells = std::max<double>(1.0, static_cast<double>(traps.size()));
+    // About one cell per trapezoid of the domain's own area: `domain` may be a bounding box
+    // `box_area` times larger (the octilinear frames' parallelograms), whose cells outside hold
+    // nothing.
+    const double cells = std::max<double>(1.0, static_cast<double>(traps.size()) * box_area);
     const double aspect = static_cast<double>(w) / static_cast<double>(h);
     gnx = std::clamp<i64>(static_cast<i64>(std::sqrt(cells * aspect)), 1, w);
     gny = std::clamp<i64>(static_cast<i64>(cells / static_cast<double>(gnx)), 1, h);
@@ -836,11 +862,11 @@ struct L1Map::Impl {
   }
 
   // Best ray at q inside trapezoid i: (value, root).
-  std::optional<std::pair<i64, uint32_t>> evaluate(uint32_t i, Point q) const {
+  std::optional<std::pair<V, uint32_t>> evaluate(uint32_t i, Point q) const {
     const Trap& t = traps[i];
     std::optional<Ray> best;
-    i64 best_v = 0;
-    auto consider = [&](const Ray& r, i64 v) {
+    V best_v{};
+    auto consider = [&](const Ray& r, V v) {
       Ray c = r;
       c.K = v;
       if (!best || key_less(c, *best)) {
@@ -851,28 +877,28 @@ struct L1Map::Impl {
     const Q y{q.y, 1};
     for (int side = 0; side < 2; ++side) {
       const uint32_t* o = side == 0 ? t.lo : t.ro;
-      const i64 dx = side == 0 ? i64{q.x} - t.pl.x : i64{t.pr.x} - q.x;
+      const V dx = scale(side == 0 ? i64{q.x} - t.pl.x : i64{t.pr.x} - q.x, wx), y_up = scale(q.y, wy);
       // up: thresholds ascending; the last with t <= y
       auto ub = std::upper_bound(rays.begin() + o[0], rays.begin() + o[1], y,
                                  [](const Q& yy, const Ray& r) { return cmp(yy, r.t()) < 0; });
       if (ub != rays.begin() + o[0]) {
         const Ray& r = *std::prev(ub);
-        consider(r, r.K + q.y + dx);
+        consider(r, r.K + y_up + dx);
       }
       // down: thresholds descending; the last with t >= y
       auto db = std::upper_bound(rays.begin() + o[1], rays.begin() + o[2], y,
                                  [](const Q& yy, const Ray& r) { return cmp(yy, r.t()) > 0; });
       if (db != rays.begin() + o[1]) {
         const Ray& r = *std::prev(db);
-        consider(r, r.K - q.y + dx);
+        consider(r, r.K - y_up + dx);
       }
     }
     if (!best) return std::nullopt;
-    return std::pair<i64, uint32_t>{best_v, best->root};
+    return std::pair<V, uint32_t>{best_v, best->root};
   }
 
   // The best root at q: (distance, root id); nullopt if not free or unreached.
-  std::optional<std::pair<i64, uint32_t>> best_root(Point q) const {
+  std::optional<std::pair<V, uint32_t>> best_root(Point q) const {
     if (!in_domain(q)) return std::nullopt;
     // A decomposition point is never strictly between the walls of a trapezoid holding it, so
     // find() misses it: look it up only then (most queries are not vertices).
@@ -880,7 +906,7 @@ struct L1Map::Impl {
     if (t != kNone) return evaluate(t, q);
     const uint32_t v = point_id(q);
     if (v == kNone) return std::nullopt;
-    std::optional<std::pair<i64, uint32_t>> out;
+    std::optional<std::pair<V, uint32_t>> out;
     for (uint32_t r = root_begin[v]; r < root_begin[v + 1]; ++r)
       if (!out || roots[r].d < out->first) out = {roots[r].d, r};
     return out;
@@ -1090,8 +1116,76 @@ struct L1Map::Impl {
     if (!in_domain(q)) return false;
     if (find(q) != kNone) return true;
     const uint32_t v = point_id(q);
-    return v != kNone && (src_at[v] != kNone || !wf.vertex_wedges(q).empty());
+    return v != kNone && vertex_free[v];
   }
+
+  std::size_t memory_bytes() const {
+    return P.capacity() * sizeof(Point) + src_at.capacity() * sizeof(uint32_t) + edges.capacity() * sizeof(Edge) +
+           traps.capacity() * sizeof(Trap) + rays.capacity() * sizeof(Ray) + roots.capacity() * sizeof(Root) +
+           root_begin.capacity() * sizeof(uint32_t) + vertex_free.capacity() / 8 + pset.bytes() +
+           (above_begin.capacity() + above.capacity() + x_first.capacity() + cell_begin.capacity() +
+            cell_traps.capacity()) * sizeof(uint32_t) + cell_complete.capacity() / 8;
+  }
+};
+
+// The free sources (point, index), in input order.
+template <class Wf>
+std::vector<std::pair<Point, uint32_t>> free_sources(const Wf& wf, std::span<const Point> sources) {
+  std::vector<std::pair<Point, uint32_t>> out;
+  for (std::size_t i = 0; i < sources.size(); ++i)
+    if (wf.is_free(sources[i])) out.push_back({sources[i], static_cast<uint32_t>(i)});
+  return out;
+}
+template <class Wf>
+Wf ran(const geom::Box& domain, std::span<const Polygon> obstacles, std::span<const Point> sources) {
+  Wf wf(domain, obstacles);
+  wf.run(sources, {}, WavefrontStop::Never);
+  return wf;
+}
+
+// The octilinear map's frames: (u, v) = A (x - cx, y - cy) with det A = +1; the inverse's
+// columns are the frame's two orientations (u: the first, v: the second), one an axis (weight
+// 1) and one a diagonal (weight sqrt2, on x when sqrt2_x). Between them they cover the eight
+// cones between neighbouring orientations, each frame a cone and its opposite.
+struct OctFrame {
+  i64 a, b, c, d;      // u = a x + b y, v = c x + d y
+  i64 ia, ib, ic, id;  // x = ia u + ib v, y = ic u + id v
+  bool sqrt2_x;
+};
+constexpr OctFrame kOctFrames[4] = {
+    {1, -1, 0, 1, 1, 1, 0, 1, false},    // E (u), NE (v)
+    {1, 0, -1, 1, 1, 0, 1, 1, true},     // NE (u), N (v)
+    {1, 1, -1, 0, 0, -1, 1, 1, false},   // N (u), NW (v)
+    {0, 1, -1, -1, -1, -1, 1, 0, true},  // NW (u), W (v)
+};
+constexpr bool oct_frames_consistent() {
+  for (const OctFrame& f : kOctFrames) {
+    if (f.a * f.ia + f.b * f.ic != 1 || f.a * f.ib + f.b * f.id != 0) return false;
+    if (f.c * f.ia + f.d * f.ic != 0 || f.c * f.ib + f.d * f.id != 1) return false;
+    if (f.a * f.d - f.b * f.c != 1) return false;
+    // the diagonal column has no zero, the axis column one
+    const bool u_diag = f.ia != 0 && f.ic != 0, v_diag = f.ib != 0 && f.id != 0;
+    if (u_diag == v_diag || u_diag != f.sqrt2_x) return false;
+  }
+  return true;
+}
+static_assert(oct_frames_consistent());
+
+}  // namespace
+
+struct L1Map::Impl {
+  L1Wavefront wf;
+  Decomp<i64> dec;
+  Impl(const geom::Box& domain, std::span<const Polygon> obstacles, std::span<const Point> sources, bool grid)
+      : wf(ran<L1Wavefront>(domain, obstacles, sources)),
+        dec(domain, wf.frame_obstacles(), free_sources(wf, sources),
+            [&](Point p) {
+              std::vector<WedgeIn<i64>> out;
+              for (const auto& w : wf.vertex_wedges(p))
+                out.push_back({w.lo, w.distance, static_cast<uint32_t>(w.source.value_or(kNone))});
+              return out;
+            },
+            1, 1, grid) {}
 };
 
 L1Map::L1Map(const geom::Box& domain, std::span<const Polygon> obstacles, std::span<const Point> sources,
@@ -1101,12 +1195,12 @@ L1Map::~L1Map() = default;
 L1Map::L1Map(L1Map&&) noexcept = default;
 L1Map& L1Map::operator=(L1Map&&) noexcept = default;
 
-bool L1Map::is_free(Point q) const { return impl_->is_free(q); }
+bool L1Map::is_free(Point q) const { return impl_->dec.is_free(q); }
 
 std::optional<L1Map::Answer> L1Map::locate(Point q) const {
-  const auto b = impl_->best_root(q);
+  const auto b = impl_->dec.best_root(q);
   if (!b) return std::nullopt;
-  const Root& r = impl_->roots[b->second];
+  const auto& r = impl_->dec.roots[b->second];
   return Answer{b->first, r.source, r.p, b->second};
 }
 
@@ -1116,8 +1210,8 @@ std::vector<Point> L1Map::path(Point q) const {
 }
 
 std::vector<Point> L1Map::path(Point q, const Answer& a) const {
-  if (a.root_id >= impl_->roots.size()) return {};
-  const Root& r = impl_->roots[a.root_id];
+  if (a.root_id >= impl_->dec.roots.size()) return {};
+  const auto& r = impl_->dec.roots[a.root_id];
   std::vector<Point> out;
   if (r.wedge == kNone)
     out.push_back(r.p);
@@ -1128,7 +1222,7 @@ std::vector<Point> L1Map::path(Point q, const Answer& a) const {
 }
 
 std::vector<L1Map::Trapezoid> L1Map::trapezoids() const {
-  const Impl& m = *impl_;
+  const Decomp<i64>& m = impl_->dec;
   std::vector<Trapezoid> out;
   out.reserve(m.traps.size());
   for (const Trap& t : m.traps)
@@ -1148,19 +1242,153 @@ Rational twice_signed_area(const std::vector<RPoint>& ring) {
 
 std::vector<L1Map::Piece> L1Map::pieces(Detail detail) const {
   std::vector<Piece> out;
-  for (uint32_t i = 0; i < impl_->traps.size(); ++i) impl_->trapezoid_pieces(i, detail == Detail::ByRoot, out);
+  for (uint32_t i = 0; i < impl_->dec.traps.size(); ++i) impl_->dec.trapezoid_pieces(i, detail == Detail::ByRoot, out);
   return out;
 }
 
-const L1Map::Stats& L1Map::stats() const { return impl_->st; }
+const L1Map::Stats& L1Map::stats() const { return impl_->dec.st; }
 
-std::size_t L1Map::memory_bytes() const {
+std::size_t L1Map::memory_bytes() const { return impl_->wf.memory_bytes() + impl_->dec.memory_bytes(); }
+
+// ----------------------------------------------------------------------------------------------
+struct OctMap::Impl {
+  OctWavefront wf;
+  geom::Box domain;
+  i64 cx, cy;  // the frames' origin: the domain's centre
+  std::vector<Decomp<geom::Root2>> dec;
+  L1Map::Stats st;
+
+  static i64 centre(i64 lo, i64 hi) { return (lo + hi) >> 1; }
+  static std::array<i64, 2> frame_coords(const OctFrame& f, i64 x, i64 y) { return {f.a * x + f.b * y, f.c * x + f.d * y}; }
+  Point fwd(int k, Point p) const {
+    const auto [u, v] = frame_coords(kOctFrames[k], i64{p.x} - cx, i64{p.y} - cy);
+    return {static_cast<geom::Coord>(u), static_cast<geom::Coord>(v)};
+  }
+  Point back(int k, Point p) const {
+    const OctFrame& f = kOctFrames[k];
+    return {static_cast<geom::Coord>(f.ia * p.x + f.ib * p.y + cx), static_cast<geom::Coord>(f.ic * p.x + f.id * p.y + cy)};
+  }
+  // Every point the frames hold lies in the frame obstacle's outer ring (the domain grown by 1):
+  // its corners' frame coordinates bound them all (the maps are linear).
+  static bool fits(const geom::Box& d) {
+    const i64 ox = centre(d.lo.x, d.hi.x), oy = centre(d.lo.y, d.hi.y);
+    for (const OctFrame& f : kOctFrames)
+      for (const i64 x : {i64{d.lo.x} - 1, i64{d.hi.x} + 1})
+        for (const i64 y : {i64{d.lo.y} - 1, i64{d.hi.y} + 1})
+          for (const i64 c : frame_coords(f, x - ox, y - oy))
+            if (!geom::in_range(c)) return false;
+    return true;
+  }
+  static OctWavefront checked(const geom::Box& domain, std::span<const Polygon> obstacles, std::span<const Point> sources) {
+    if (!fits(domain))
+      throw std::domain_error("the octilinear shortest path map needs a domain whose width plus height is below about 2^31");
+    return ran<OctWavefront>(domain, obstacles, sources);
+  }
+
+  Impl(const geom::Box& dom, std::span<const Polygon> obstacles, std::span<const Point> sources, bool grid)
+      : wf(checked(dom, obstacles, sources)), domain(dom), cx(centre(dom.lo.x, dom.hi.x)), cy(centre(dom.lo.y, dom.hi.y)) {
+    const auto free_src = free_sources(wf, sources);
+    dec.reserve(4);
+    for (int k = 0; k < 4; ++k) {
+      std::vector<Polygon> polys;
+      auto ring = [&](const geom::Ring& r) {
+        geom::Ring out;
+        out.reserve(r.size());
+        for (Point p : r) out.push_back(fwd(k, p));
+        return out;
+      };
+      for (const Polygon& p : wf.frame_obstacles()) {
+        Polygon q{ring(p.outer), {}};
+        for (const auto& h : p.holes) q.holes.push_back(ring(h));
+        polys.push_back(std::move(q));
+      }
+      std::vector<std::pair<Point, uint32_t>> src;
+      for (const auto& [p, i] : free_src) src.push_back({fwd(k, p), i});
+      geom::Box box{fwd(k, dom.lo), fwd(k, dom.lo)};
+      for (Point c : {dom.lo, dom.hi, Point{dom.lo.x, dom.hi.y}, Point{dom.hi.x, dom.lo.y}}) {
+        const Point u = fwd(k, c);
+        box.lo = {std::min(box.lo.x, u.x), std::min(box.lo.y, u.y)};
+        box.hi = {std::max(box.hi.x, u.x), std::max(box.hi.y, u.y)};
+      }
+      const geom::Root2 one{1, 0}, root2{0, 1};
+      dec.emplace_back(box, polys, src,
+                       [&](Point pu) {
+                         std::vector<WedgeIn<geom::Root2>> out;
+                         for (const auto& w : wf.vertex_wedges(back(k, pu)))
+                           out.push_back({fwd(k, w.lo), w.distance, static_cast<uint32_t>(w.source.value_or(kNone))});
+                         return out;
+                       },
+                       kOctFrames[k].sqrt2_x ? root2 : one, kOctFrames[k].sqrt2_x ? one : root2, grid,
+                       // the box over the domain's image (a parallelogram of the same area)
+                       (static_cast<double>(box.hi.x) - box.lo.x + 1) * (static_cast<double>(box.hi.y) - box.lo.y + 1) /
+                           ((static_cast<double>(dom.hi.x) - dom.lo.x + 1) * (static_cast<double>(dom.hi.y) - dom.lo.y + 1)));
+      if (dec.back().roots.size() >= (1u << 30)) throw std::length_error("the octilinear map needs more than 2^30 roots");
+      const L1Map::Stats& s = dec.back().st;
+      st.vertices = s.vertices;
+      st.trapezoids += s.trapezoids;
+      st.rays += s.rays;
+      st.roots += s.roots;
+      st.location_nodes += s.location_nodes;
+    }
+  }
+  bool in_domain(Point q) const {
+    return q.x >= domain.lo.x && q.x <= domain.hi.x && q.y >= domain.lo.y && q.y <= domain.hi.y;
+  }
+};
+
+OctMap::OctMap(const geom::Box& domain, std::span<const Polygon> obstacles, std::span<const Point> sources,
+               Options options)
+    : impl_(std::make_unique<Impl>(domain, obstacles, sources, options.grid)) {}
+OctMap::~OctMap() = default;
+OctMap::OctMap(OctMap&&) noexcept = default;
+OctMap& OctMap::operator=(OctMap&&) noexcept = default;
+
+bool OctMap::fits(const geom::Box& domain) { return Impl::fits(domain); }
+
+bool OctMap::is_free(Point q) const { return impl_->in_domain(q) && impl_->dec[0].is_free(impl_->fwd(0, q)); }
+
+std::optional<OctMap::Answer> OctMap::locate(Point q) const {
   const Impl& m = *impl_;
-  return m.wf.memory_bytes() + m.P.capacity() * sizeof(Point) + m.src_at.capacity() * sizeof(uint32_t) +
-         m.edges.capacity() * sizeof(Edge) + m.traps.capacity() * sizeof(Trap) + m.rays.capacity() * sizeof(Ray) +
-         m.roots.capacity() * sizeof(Root) + m.root_begin.capacity() * sizeof(uint32_t) + m.pset.bytes() +
-         (m.above_begin.capacity() + m.above.capacity() + m.x_first.capacity() + m.cell_begin.capacity() +
-          m.cell_traps.capacity()) * sizeof(uint32_t) + m.cell_complete.capacity() / 8;
+  if (!m.in_domain(q)) return std::nullopt;
+  // The least value over the frames; ties go to the first frame. Each frame's answer has a root
+  // that sees q straight (its staircases prefer the larger root distance, L1Map's argument in
+  // the frame's weighted metric), so any of the tied ones will do.
+  std::optional<Answer> best;
+  for (int k = 0; k < 4; ++k) {
+    const auto b = m.dec[k].best_root(m.fwd(k, q));
+    if (!b || (best && !(b->first < best->distance))) continue;
+    const auto& r = m.dec[k].roots[b->second];
+    best = Answer{b->first, r.source, m.back(k, r.p), (static_cast<uint32_t>(k) << 30) | b->second};
+  }
+  return best;
+}
+
+std::vector<Point> OctMap::path(Point q) const {
+  const auto a = locate(q);
+  return a ? path(q, *a) : std::vector<Point>{};
+}
+
+std::vector<Point> OctMap::path(Point q, const Answer& a) const {
+  const Impl& m = *impl_;
+  const int k = static_cast<int>(a.root_id >> 30);
+  const uint32_t id = a.root_id & ((1u << 30) - 1);
+  if (id >= m.dec[k].roots.size()) return {};
+  const auto& r = m.dec[k].roots[id];
+  std::vector<Point> out;
+  if (r.wedge == kNone)
+    out.push_back(m.back(k, r.p));
+  else
+    out = m.wf.wedge_path(m.back(k, r.p), r.wedge);
+  if (out.empty() || out.back() != q) out.push_back(q);
+  return out;
+}
+
+const L1Map::Stats& OctMap::stats() const { return impl_->st; }
+
+std::size_t OctMap::memory_bytes() const {
+  std::size_t b = impl_->wf.memory_bytes();
+  for (const auto& d : impl_->dec) b += d.memory_bytes();
+  return b;
 }
 
 }  // namespace taut::router

@@ -64,6 +64,7 @@
 
 #include <boost/multiprecision/gmp.hpp>
 
+#include "geom/root2.h"
 #include "geom/types.h"
 
 namespace taut::router {
@@ -151,6 +152,71 @@ class L1Map {
     std::int64_t location_nodes = 0;  // nodes of the persistent search tree (point location)
   };
   const Stats& stats() const;
+  std::size_t memory_bytes() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// The OCTILINEAR shortest path map (Mitchell §6, Theorem 3): the same questions as L1Map, with
+// distances the least lengths of paths in the four orientations 0, 45, 90 and 135 degrees
+// (exact a + b*sqrt2, geom/root2.h), from one OctWavefront run (router/wavefront.h).
+//
+//   OctMap map(normalized.domain, normalized.obstacles, sources);
+//   if (auto a = map.locate({900, 40})) { a->distance; a->source; map.path({900, 40}); }
+//
+// How. The octilinear length of a vector in the cone between two neighbouring orientations e
+// (an axis, weight 1) and f (a diagonal, weight sqrt2) is s + sqrt2 t for the vector s e + t f,
+// s, t >= 0. In the integer coordinates (u, v) of the basis (e, f) (a unimodular map, so
+// lattice points, lines and orientations are kept) that is the weighted L1 length
+// |du| + sqrt2 |dv|, and it is exact in the opposite cone as well. So four frames, one per pair
+// of opposite cones, each get L1Map's decomposition and staircases in their own coordinates
+// with steps weighted 1 and sqrt2; every value in a frame is the length of a real octilinear
+// path (a staircase in the frame's two orientations), and the straight last link from a
+// query's last bend lies in some frame's cones, where its value is exact. A query is located
+// in all four and takes the least value. Each frame's answer has a root that sees the query
+// straight (L1Map's argument, in the frame's weighted metric: a root whose monotone path bends
+// at a vertex v loses to v's ray, of equal value and larger root distance), so ties between
+// frames may go to any of them (the first). The vertex distances come from OctWavefront; paths are its
+// polygonal paths (links of any direction measured by their octilinear length; router/
+// staircase.h makes wires of them).
+//
+// Costs: four decompositions, so about four times L1Map's memory and query time (bench_spm
+// --orientations octilinear). Coordinates: each frame centres the domain and its coordinates
+// are sums of two, so a domain whose width plus height exceeds about 2^31 does not fit the
+// frames' exact integer range; the constructor then throws std::domain_error (fits() tells
+// before), and callers answer such queries with OctWavefront runs. The map's cells as exact
+// pieces (L1Map::pieces) and the octilinear Voronoi diagram are not available yet: their
+// vertices lie in Q(sqrt2).
+class OctMap {
+ public:
+  using Options = L1Map::Options;
+  OctMap(const geom::Box& domain, std::span<const geom::Polygon> obstacles,
+         std::span<const geom::Point> sources, Options options);
+  OctMap(const geom::Box& domain, std::span<const geom::Polygon> obstacles,
+         std::span<const geom::Point> sources)
+      : OctMap(domain, obstacles, sources, Options{}) {}
+  ~OctMap();
+  OctMap(OctMap&&) noexcept;
+  OctMap& operator=(OctMap&&) noexcept;
+
+  // Whether the constructor accepts this domain (see Costs above).
+  static bool fits(const geom::Box& domain);
+
+  bool is_free(geom::Point q) const;
+  struct Answer {
+    geom::Root2 distance;      // exact octilinear distance to the nearest source
+    std::size_t source = 0;
+    geom::Point root;          // the last bend (or the source) before q: it sees q straight
+    std::uint32_t root_id = 0;
+  };
+  std::optional<Answer> locate(geom::Point q) const;
+  std::vector<geom::Point> path(geom::Point q) const;
+  std::vector<geom::Point> path(geom::Point q, const Answer& a) const;
+
+  // Summed over the four frames (vertices: of one frame).
+  const L1Map::Stats& stats() const;
   std::size_t memory_bytes() const;
 
  private:

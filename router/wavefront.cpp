@@ -1694,6 +1694,36 @@ std::optional<typename M::C> vertex_distance_of(const Core& c, Point p) {
     }
   return best;
 }
+template <class M, class Core>
+std::vector<WavefrontWedge<typename M::C>> wedges_of(const Core& c, Point p) {
+  std::vector<WavefrontWedge<typename M::C>> out;
+  const uint32_t v = c.point_id(p);
+  if (v == kNone) return out;
+  for (uint32_t e = c.ent_begin[v]; e < c.ent_begin[v + 1]; ++e) {
+    const auto& en = c.ents[e];
+    WavefrontWedge<typename M::C> w{c.pts[en.lo], c.pts[en.hi], std::nullopt, std::nullopt};
+    if (en.labelled) {
+      w.distance = M::constant(en.d);
+      if (en.source != kNone) w.source = en.source;
+    }
+    out.push_back(w);
+  }
+  return out;
+}
+template <class Core>
+std::vector<Point> wedge_path_of(const Core& c, Point p, std::size_t k) {
+  std::vector<Point> out;
+  const uint32_t v = c.point_id(p);
+  if (v == kNone || k >= c.ent_begin[v + 1] - c.ent_begin[v]) return out;
+  const uint32_t e0 = c.ent_begin[v] + static_cast<uint32_t>(k);
+  if (!c.ents[e0].labelled) return out;
+  for (uint32_t x = e0; x != kNone; x = c.ents[x].parent) {
+    const Point q = c.pts[c.ents[x].point];
+    if (out.empty() || out.back() != q) out.push_back(q);
+  }
+  std::reverse(out.begin(), out.end());
+  return out;
+}
 template <class Core>
 std::size_t memory_of(const Core& m) {
   std::size_t b = m.pts.capacity() * sizeof(Point) + m.ents.capacity() * sizeof(m.ents[0]) +
@@ -1749,36 +1779,10 @@ std::optional<std::int64_t> L1Wavefront::vertex_distance(Point p) const {
 std::span<const Polygon> L1Wavefront::frame_obstacles() const { return impl_->polys; }
 
 std::vector<L1Wavefront::Wedge> L1Wavefront::vertex_wedges(Point p) const {
-  std::vector<Wedge> out;
-  const Impl& c = *impl_;
-  const uint32_t v = c.point_id(p);
-  if (v == kNone) return out;
-  for (uint32_t e = c.ent_begin[v]; e < c.ent_begin[v + 1]; ++e) {
-    const auto& en = c.ents[e];
-    Wedge w{c.pts[en.lo], c.pts[en.hi], std::nullopt, std::nullopt};
-    if (en.labelled) {
-      w.distance = en.d.a;
-      if (en.source != kNone) w.source = en.source;
-    }
-    out.push_back(w);
-  }
-  return out;
+  return wedges_of<L1Metric>(*impl_, p);
 }
 
-std::vector<Point> L1Wavefront::wedge_path(Point p, std::size_t k) const {
-  std::vector<Point> out;
-  const Impl& c = *impl_;
-  const uint32_t v = c.point_id(p);
-  if (v == kNone || k >= c.ent_begin[v + 1] - c.ent_begin[v]) return out;
-  const uint32_t e0 = c.ent_begin[v] + static_cast<uint32_t>(k);
-  if (!c.ents[e0].labelled) return out;
-  for (uint32_t x = e0; x != kNone; x = c.ents[x].parent) {
-    const Point q = c.pts[c.ents[x].point];
-    if (out.empty() || out.back() != q) out.push_back(q);
-  }
-  std::reverse(out.begin(), out.end());
-  return out;
-}
+std::vector<Point> L1Wavefront::wedge_path(Point p, std::size_t k) const { return wedge_path_of(*impl_, p, k); }
 
 const WavefrontStats& L1Wavefront::stats() const { return impl_->stats; }
 
@@ -1813,6 +1817,14 @@ std::vector<Point> OctWavefront::target_path(std::size_t i) const { return path_
 std::optional<geom::Root2> OctWavefront::vertex_distance(Point p) const {
   return vertex_distance_of<OctMetric>(*impl_, p);
 }
+
+std::span<const Polygon> OctWavefront::frame_obstacles() const { return impl_->polys; }
+
+std::vector<OctWavefront::Wedge> OctWavefront::vertex_wedges(Point p) const {
+  return wedges_of<OctMetric>(*impl_, p);
+}
+
+std::vector<Point> OctWavefront::wedge_path(Point p, std::size_t k) const { return wedge_path_of(*impl_, p, k); }
 
 const WavefrontStats& OctWavefront::stats() const { return impl_->stats; }
 

@@ -98,6 +98,16 @@ struct WavefrontStats {
                                   // rays of obstacle vertices come from the construction's sweep)
 };
 
+// A free wedge of an obstacle vertex p: it runs counter-clockwise from the direction of ring
+// neighbour `lo` to that of `hi`, with its distance and source after run() (nullopt when not
+// reached). A pinch has one wedge per free side. C: the metric's distance type.
+template <class C>
+struct WavefrontWedge {
+  geom::Point lo, hi;
+  std::optional<C> distance;
+  std::optional<std::size_t> source;
+};
+
 class L1Wavefront {
  public:
   // Obstacles as geom::normalize_obstacles() returns them (integer vertices, outer rings
@@ -140,11 +150,7 @@ class L1Wavefront {
   // The free wedges of obstacle vertex p (empty when p is not one): each runs counter-
   // clockwise from the direction of ring neighbour `lo` to that of `hi`, with its distance and
   // source after run() (nullopt when not reached). A pinch has one wedge per free side.
-  struct Wedge {
-    geom::Point lo, hi;
-    std::optional<std::int64_t> distance;
-    std::optional<std::size_t> source;
-  };
+  using Wedge = WavefrontWedge<std::int64_t>;
   std::vector<Wedge> vertex_wedges(geom::Point p) const;
   // A shortest path source -> bends -> p reaching p in its wedge k (vertex_wedges() order);
   // empty when not reached.
@@ -192,6 +198,11 @@ class OctWavefront {
   std::optional<std::size_t> target_source(std::size_t i) const;
   std::vector<geom::Point> target_path(std::size_t i) const;
   std::optional<geom::Root2> vertex_distance(geom::Point p) const;
+  // As L1Wavefront's (for router/spm.h's octilinear map).
+  std::span<const geom::Polygon> frame_obstacles() const;
+  using Wedge = WavefrontWedge<geom::Root2>;
+  std::vector<Wedge> vertex_wedges(geom::Point p) const;
+  std::vector<geom::Point> wedge_path(geom::Point p, std::size_t k) const;
   const WavefrontStats& stats() const;
   std::size_t memory_bytes() const;
 

@@ -3,10 +3,11 @@
 // source among the layout's blockages, which source (0-based, in the order given) and a shortest
 // path (the source, bends at obstacle vertices, the query point).
 //
-// L1 (rectilinear): the shortest path map of the sources (router/spm.h) is built once and each
-// query is a point location in it (see spm.h for its cost). Octilinear: one multi-source wavefront run
-// (router/wavefront.h: all sources at distance 0, the queries as targets), which is exact; the
-// octilinear map comes with the rest of issue #4.
+// The shortest path map of the sources (router/spm.h: L1Map, or OctMap for octilinear) is built
+// once and each query is a point location in it (see spm.h for its cost). An octilinear domain
+// too wide for OctMap's frames (OctMap::fits: width plus height above about 2^31) is answered by
+// one multi-source wavefront run instead (router/wavefront.h: all sources at distance 0, the
+// queries as targets): the same exact answers.
 #include <cmath>
 #include <iostream>
 #include <numbers>
@@ -100,9 +101,17 @@ void add_spm(CLI::App& app, int& status) {
           answers[i].free = wf.is_free(queries[i]);
       }
     };
-    if (oct) {
+    if (oct && !router::OctMap::fits(norm.domain)) {
       router::OctWavefront wf(norm.domain, norm.obstacles);
       collect(wf, [](const geom::Root2& d) { return d; });
+    } else if (oct) {
+      const router::OctMap map(norm.domain, norm.obstacles, sources);
+      for (std::size_t i = 0; i < queries.size(); ++i) {
+        if (const auto a = map.locate(queries[i]))
+          answers[i] = {a->distance, a->source, map.path(queries[i], *a), true};
+        else
+          answers[i].free = map.is_free(queries[i]);
+      }
     } else {
       // L1: the shortest path map, built once (one wavefront run and a vertical decomposition),
       // then a point location per query.

@@ -157,6 +157,28 @@ TEST(Spm, DemoNamesBlockedAndWalledInQueries) {
   }
 }
 
+// Octilinear on a domain too wide for OctMap's frames (width plus height near 2^32): answered by
+// a wavefront run instead, with the same exact numbers. A wall x in [-100, 100], y <= 10^9;
+// source (-10^9, 0), query (10^9, 0): up the left to the corner (-100, 10^9) (10^9 - 100 across,
+// 10^9 up: 100 straight, 10^9 - 100 diagonal), 200 across, down to the query the mirror.
+TEST(Spm, OctilinearOnAVeryWideDomain) {
+  const std::string dir = temp_dir("spm_wide");
+  write_text(dir + "/wide.xml", R"(<?xml version="1.0"?>
+<layout name="wide" version="1" dbu-per-micron="1000">
+  <boundary x0="-1073741823" y0="-1073741823" x1="1073741823" y1="1073741823"/>
+  <blockage id="wall"><rect x0="-100" y0="-1073741823" x1="100" y1="1000000000"/></blockage>
+</layout>
+)");
+  const auto r = run_taut({"spm", dir + "/wide.xml", "--source", "-1000000000,0", "--query", "1000000000,0", "--query",
+                           "-999999000,1000", "--orientations", "octilinear", "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["queries"][0]["distance_exact"], nlohmann::json::array({100 + 200 + 100, 2 * (1000000000 - 100)}));
+  EXPECT_EQ(points_of(j["queries"][0]["points"]),
+            (std::vector<Point>{{-1000000000, 0}, {-100, 1000000000}, {100, 1000000000}, {1000000000, 0}}));
+  EXPECT_EQ(j["queries"][1]["distance_exact"], nlohmann::json::array({0, 1000}));
+}
+
 // Many points from files: the same answers as the options give; a bad line is named with its
 // file and line, and nothing is printed on stdout.
 TEST(Spm, PointFiles) {

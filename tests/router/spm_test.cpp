@@ -36,6 +36,7 @@
 #include "router/wavefront.h"
 #include "support/run.h"
 #include "support/sanitized.h"
+#include "support/spm_check.h"
 #include "support/wavefront_cases.h"
 
 namespace taut::test {
@@ -44,26 +45,6 @@ namespace {
 using geom::Point;
 using i64 = std::int64_t;
 
-std::string pt(Point p) { return "{" + std::to_string(p.x) + ", " + std::to_string(p.y) + "}"; }
-std::string instance_cpp(const WavefrontCase& c, const std::vector<Point>& sources) {
-  std::ostringstream os;
-  os << "  domain {" << pt(c.domain.lo) << ", " << pt(c.domain.hi) << "}\n  obstacles {";
-  for (const auto& p : c.obstacles) {
-    os << "{{";
-    for (std::size_t i = 0; i < p.outer.size(); ++i) os << (i ? ", " : "") << pt(p.outer[i]);
-    os << "}, {";
-    for (std::size_t h = 0; h < p.holes.size(); ++h) {
-      os << (h ? ", {" : "{");
-      for (std::size_t i = 0; i < p.holes[h].size(); ++i) os << (i ? ", " : "") << pt(p.holes[h][i]);
-      os << "}";
-    }
-    os << "}}, ";
-  }
-  os << "}\n  sources {";
-  for (Point s : sources) os << pt(s) << ", ";
-  os << "}\n";
-  return os.str();
-}
 
 mpz_class Z(i64 v) { return mpz_class(static_cast<long>(v)); }
 
@@ -85,62 +66,18 @@ mpq_class y_at(const geom::Segment& s, i64 x) {
   return r;
 }
 
-struct Tally {
-  i64 instances = 0, queries = 0, reachable = 0, unreachable = 0, not_free = 0, paths = 0,
-      multi_source = 0, ties = 0, trapezoids = 0, skipped = 0, blocked_sources = 0, location_nodes = 0,
-      edges = 0;
+struct Tally : SpmTally {
+  i64 trapezoids = 0, location_nodes = 0, edges = 0;
 };
 
 std::string check_seed(std::uint64_t seed, Tally& tally) {
-  WavefrontCase c;
-  try {
-    c = make_wavefront_case(seed);
-  } catch (const std::exception& e) {
-    ++tally.skipped;  // the generator's own failure (counted by the wavefront tests)
-    return "";
-  }
-  const oracle::L1Reference ref(c.domain, c.obstacles);
-  if (!ref.problems().empty()) {
-    ++tally.skipped;
-    return "";
-  }
-  std::mt19937_64 rng(seed * 0x9E3779B97F4A7C15ull + 17);
-  auto pick = [&](std::size_t n) { return static_cast<std::size_t>(rng() % n); };
-  std::vector<Point> free_pts;
-  for (Point p : c.candidates)
-    if (ref.is_free(p)) free_pts.push_back(p);
-  if (free_pts.empty()) {
-    ++tally.skipped;
-    return "";
-  }
-  const std::size_t ns = 1 + pick(std::min<std::size_t>(20, free_pts.size() + 3));
-  std::vector<Point> sources;
-  for (std::size_t i = 0; i < ns; ++i) sources.push_back(free_pts[pick(free_pts.size())]);
-  // One instance in four also gets a source that may not be free (ignored by the map; the
-  // indices of the others must not move).
-  if (pick(4) == 0) {
-    const Point extra = c.candidates[pick(c.candidates.size())];
-    sources.insert(sources.begin() + static_cast<std::ptrdiff_t>(pick(sources.size() + 1)), extra);
-    tally.blocked_sources += !ref.is_free(extra);
-  }
-  // Queries: candidates (vertices, points on edges, points of interest), then random points.
-  std::vector<Point> queries;
-  for (std::size_t i = 0; i < c.candidates.size() && queries.size() < 60; ++i)
-    queries.push_back(c.candidates[pick(c.candidates.size())]);
+  std::optional<oracle::L1Reference> ref;
+  const auto in = make_spm_instance(seed, 17, tally, ref);
+  if (!in) return "";
+  const WavefrontCase& c = in->c;
+  const std::vector<Point>& sources = in->sources;
   const geom::Box& D = c.domain;
-  while (queries.size() < 100) {
-    const i64 x = D.lo.x + static_cast<i64>(rng() % static_cast<std::uint64_t>(i64{D.hi.x} - D.lo.x + 1));
-    const i64 y = D.lo.y + static_cast<i64>(rng() % static_cast<std::uint64_t>(i64{D.hi.y} - D.lo.y + 1));
-    queries.push_back({static_cast<geom::Coord>(x), static_cast<geom::Coord>(y)});
-  }
-  std::set<Point> vertices;
-  for (const auto& p : c.obstacles) {
-    vertices.insert(p.outer.begin(), p.outer.end());
-    for (const auto& h : p.holes) vertices.insert(h.begin(), h.end());
-  }
-  for (Point corner : {D.lo, D.hi, Point{D.lo.x, D.hi.y}, Point{D.hi.x, D.lo.y}}) vertices.insert(corner);
-
-  const std::string head = "seed " + std::to_string(seed) + " (family " + c.family + ")\n" + instance_cpp(c, sources);
+  const std::string& head = in->head;
   std::optional<router::L1Map> map;
   try {
     map.emplace(c.domain, c.obstacles, sources);
@@ -148,16 +85,9 @@ std::string check_seed(std::uint64_t seed, Tally& tally) {
     return head + "  building the map threw: " + e.what() + "\n";
   }
   // The same map answering by the persistent search alone (no grid): every query the same.
-  {
-    const router::L1Map plain(c.domain, c.obstacles, sources, router::L1Map::Options{.grid = false});
-    for (const Point q : queries) {
-      const auto a = map->locate(q), b = plain.locate(q);
-      if (a.has_value() != b.has_value() || (a && (a->distance != b->distance || a->source != b->source ||
-                                                   a->root != b->root || a->root_id != b->root_id)))
-        return head + "  at " + std::to_string(q.x) + "," + std::to_string(q.y) +
-               ": the grid and the persistent search answer differently\n";
-    }
-  }
+  if (std::string r = compare_spm_grid(*in, *map, router::L1Map(c.domain, c.obstacles, sources, router::L1Map::Options{.grid = false}));
+      !r.empty())
+    return r;
   ++tally.instances;
   tally.multi_source += sources.size() > 1;
   tally.location_nodes += map->stats().location_nodes;
@@ -185,72 +115,11 @@ std::string check_seed(std::uint64_t seed, Tally& tally) {
     tally.trapezoids += static_cast<i64>(traps.size());
   }
 
-  std::vector<std::vector<std::optional<i64>>> ref_d;  // [source][query]
-  for (Point s : sources) ref_d.push_back(ref.distances(s, queries));
-  for (std::size_t i = 0; i < queries.size(); ++i) {
-    const Point q = queries[i];
-    const std::string where = head + "  query " + pt(q) + ": ";
-    ++tally.queries;
-    const bool rf = ref.is_free(q);
-    if (map->is_free(q) != rf) return where + "is_free " + std::to_string(!rf) + ", reference " + std::to_string(rf) + "\n";
-    std::optional<i64> best;
-    int at_best = 0;
-    for (std::size_t s = 0; s < sources.size(); ++s)
-      if (const auto d = ref_d[s][i]) {
-        if (!best || *d < *best) {
-          best = d;
-          at_best = 0;
-        }
-        if (*d == *best) ++at_best;
-      }
-    const auto a = map->locate(q);
-    if (!rf) {
-      ++tally.not_free;
-      if (a) return where + "not free, but the map answers " + std::to_string(a->distance) + "\n";
-      continue;
-    }
-    if (!best) {
-      ++tally.unreachable;
-      if (a) return where + "unreachable, but the map answers " + std::to_string(a->distance) + "\n";
-      if (!map->path(q).empty()) return where + "unreachable, but the map gives a path\n";
-      continue;
-    }
-    if (!a) return where + "the map finds no source, reference distance " + std::to_string(*best) + "\n";
-    if (a->distance != *best)
-      return where + "distance " + std::to_string(a->distance) + ", reference " + std::to_string(*best) + "\n";
-    ++tally.reachable;
-    tally.ties += at_best > 1;
-    if (a->source >= sources.size() || ref_d[a->source][i] != best)
-      return where + "source " + std::to_string(a->source) + " is not at the least distance\n";
-    const std::vector<Point> path = map->path(q);
-    if (path.empty() || path.front() != sources[a->source] || path.back() != q)
-      return where + "the path does not run from the named source to the query\n";
-    const Point root = path.size() >= 2 ? path[path.size() - 2] : path.front();
-    if (root != a->root && a->root != q) return where + "the path's last link does not start at the root " + pt(a->root) + "\n";
-    for (std::size_t k = 1; k + 1 < path.size(); ++k)
-      if (!vertices.count(path[k])) return where + "the path bends at " + pt(path[k]) + ", not an obstacle vertex\n";
-    const auto len = ref.check_path(path);
-    if (!len || *len != *best)
-      return where + "the path is " + (len ? "of length " + std::to_string(*len) : std::string("not free")) + "\n";
-    ++tally.paths;
-  }
-  return "";
+  return check_spm_queries(*in, *map, *ref, tally);
 }
 
 void run_seeds(const std::vector<std::uint64_t>& seeds, Tally& tally) {
-  int reported = 0;
-  std::vector<std::uint64_t> failed;
-  for (std::uint64_t seed : seeds) {
-    const std::string r = check_seed(seed, tally);
-    if (r.empty()) continue;
-    failed.push_back(seed);
-    if (reported++ < 3) ADD_FAILURE() << r;
-  }
-  if (!failed.empty()) {
-    std::string list;
-    for (auto s : failed) list += std::to_string(s) + " ";
-    ADD_FAILURE() << failed.size() << " failing seeds: " << list << "(TAUT_SPM_SEED=N reruns one)";
-  }
+  run_spm_seeds(seeds, [&](std::uint64_t seed) { return check_seed(seed, tally); }, "TAUT_SPM_SEED");
 }
 
 std::optional<std::uint64_t> seed_from_env() {
@@ -275,11 +144,8 @@ TEST(L1Map, MatchesTheReferenceOnRandomLayouts) {
   }
   // Under the sanitizers a quarter of the seeds (support/sanitized.h); the thresholds scale with them.
   const auto share = [](std::int64_t n) { return sanitized_share(n, 4); };
-  std::vector<std::uint64_t> seeds;
-  for (std::int64_t s = 1; s <= share(1000); ++s) seeds.push_back(static_cast<std::uint64_t>(s));
-  for (std::int64_t s = 0; s < share(100); ++s) seeds.push_back(kLargeSeedBase + static_cast<std::uint64_t>(s));
   Tally t;
-  run_seeds(seeds, t);
+  run_seeds(spm_seed_list(), t);
   std::cout << "instances " << t.instances << " (skipped " << t.skipped << ", multi-source " << t.multi_source
             << "), queries " << t.queries << ": reachable " << t.reachable << " (ties " << t.ties << "), unreachable "
             << t.unreachable << ", not free " << t.not_free << "; paths checked " << t.paths << "; trapezoids "
@@ -308,55 +174,11 @@ TEST(L1Map, MovingAiMapsMatchTheWavefront) {
   int maps = 0;
   for (const char* name : {"8room_000", "arena", "brc202d", "den520d", "lak303d", "maze-100-1", "random512-10-0"}) {
     SCOPED_TRACE(name);
-    const auto r = io::load_movingai_map(shared_data_dir() + "/movingai/" + name + ".map", 10);
-    ASSERT_TRUE(r.layout && r.layout->boundary);
-    const auto norm = geom::normalize_obstacles(io::blockage_polygons(*r.layout), r.layout->boundary->box);
-    const geom::Box& dom = norm.domain;
-    std::mt19937_64 rng(11);
-    std::vector<Point> queries, sources;
-    const router::L1Map probe(dom, norm.obstacles, {});
-    while (queries.size() < 3000) {
-      Point p{static_cast<geom::Coord>(dom.lo.x + static_cast<i64>(rng() % static_cast<std::uint64_t>(dom.hi.x - dom.lo.x + 1))),
-              static_cast<geom::Coord>(dom.lo.y + static_cast<i64>(rng() % static_cast<std::uint64_t>(dom.hi.y - dom.lo.y + 1)))};
-      if (rng() % 4 == 0) p.x -= p.x % 10;
-      if (rng() % 4 == 0) p.y -= p.y % 10;
-      queries.push_back(p);
-    }
-    const std::size_t k = 1 + rng() % 8;
-    for (const Point q : queries)
-      if (sources.size() < k && probe.is_free(q) && rng() % 50 == 0) sources.push_back(q);
-    const router::L1Map map(dom, norm.obstacles, sources);
-    router::L1Wavefront wf(dom, norm.obstacles);
-    wf.run(sources, queries, router::WavefrontStop::AllTargets);
-    int reached = 0, mismatches = 0;
-    for (std::size_t i = 0; i < queries.size(); ++i) {
-      const bool free = wf.is_free(queries[i]);
-      const auto d = wf.target_distance(i);
-      const auto a = map.locate(queries[i]);
-      if (map.is_free(queries[i]) != free || d.has_value() != a.has_value() || (d && *d != a->distance)) {
-        if (mismatches++ < 3)
-          ADD_FAILURE() << "query " << pt(queries[i]) << ": wavefront " << (d ? std::to_string(*d) : "none")
-                        << ", map " << (a ? std::to_string(a->distance) : "none");
-        continue;
-      }
-      reached += d.has_value();
-    }
-    EXPECT_EQ(mismatches, 0);
-    EXPECT_GT(reached, 300);
+    const GridMapCase g = check_map_on_grid_map<router::L1Map, router::L1Wavefront>(name, 11, 3000);
+    EXPECT_EQ(g.mismatches, 0);
+    EXPECT_GT(g.reached, 300);
     if (std::string(name) == "arena") {
-      const oracle::L1Reference ref(dom, norm.obstacles);
-      std::vector<std::optional<i64>> best(queries.size());
-      for (const Point s : sources) {
-        const auto d = ref.distances(s, queries);
-        for (std::size_t i = 0; i < queries.size(); ++i)
-          if (d[i] && (!best[i] || *d[i] < *best[i])) best[i] = d[i];
-      }
-      int ref_mismatches = 0;
-      for (std::size_t i = 0; i < queries.size(); ++i) {
-        const auto a = map.locate(queries[i]);
-        if (a.has_value() != best[i].has_value() || (a && a->distance != *best[i])) ++ref_mismatches;
-      }
-      EXPECT_EQ(ref_mismatches, 0) << "against the reference on arena";
+      EXPECT_EQ((grid_map_reference_mismatches<router::L1Map, oracle::L1Reference>(g)), 0) << "against the reference on arena";
     }
     ++maps;
   }
