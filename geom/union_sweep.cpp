@@ -33,8 +33,13 @@ int cmp_frac(std::int64_t f1, std::int64_t d1, std::int64_t f2, std::int64_t d2)
   const i128 l = i128{f1} * d2, r = i128{f2} * d1;
   return (l > r) - (l < r);
 }
-i64 cross(Point d1, Point d2) { return i64{d1.x} * d2.y - i64{d1.y} * d2.x; }
-Point sub(Point a, Point b) { return {a.x - b.x, a.y - b.y}; }  // |diff| < 2^31: fits Coord
+// Differences of points in 64 bits: the wavefront's frame obstacle lies one unit outside a
+// domain that may reach +-(2^30 - 1), so a difference can reach 2^31 (not an int32).
+struct Vec {
+  i64 x, y;
+};
+i64 cross(Vec d1, Vec d2) { return d1.x * d2.y - d1.y * d2.x; }
+Vec sub(Point a, Point b) { return {i64{a.x} - b.x, i64{a.y} - b.y}; }
 
 struct Seg {
   Point a, b;  // as directed in its loop
@@ -81,13 +86,13 @@ struct Below {
 
 // Angle class of d seen counter-clockwise from ref, in (0, 2*pi]: 0 (0, pi), 1 pi,
 // 2 (pi, 2 pi), 3 exactly 2 pi.
-int angle_class(Point ref, Point d) {
+int angle_class(Vec ref, Vec d) {
   const i64 c = cross(ref, d);
   if (c > 0) return 0;
   if (c < 0) return 2;
-  return dot({0, 0}, ref, {0, 0}, d) < 0 ? 1 : 3;
+  return ref.x * d.x + ref.y * d.y < 0 ? 1 : 3;
 }
-bool ccw_before(Point ref, Point d1, Point d2) {  // angle(ref -> d1) < angle(ref -> d2)
+bool ccw_before(Vec ref, Vec d1, Vec d2) {  // angle(ref -> d1) < angle(ref -> d2)
   const int c1 = angle_class(ref, d1), c2 = angle_class(ref, d2);
   if (c1 != c2) return c1 < c2;
   if (c1 == 1 || c1 == 3) return false;
@@ -362,7 +367,7 @@ UnionResult union_loops(const std::vector<Loop>& loops, const Box& domain) {
       continue;
     }
     if (n == 0) throw std::logic_error("union_loops: boundary edge without successor");
-    const Point ref = sub(line[e].a, line[e].b);  // from v back along e
+    const Vec ref = sub(line[e].a, line[e].b);  // from v back along e
     int best = -1;
     for (int k = b; k < b + n; ++k) {
       const int o = out_list[k];

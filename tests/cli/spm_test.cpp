@@ -177,6 +177,30 @@ TEST(Spm, OctilinearOnAVeryWideDomain) {
   EXPECT_EQ(points_of(j["queries"][0]["points"]),
             (std::vector<Point>{{-1000000000, 0}, {-100, 1000000000}, {100, 1000000000}, {1000000000, 0}}));
   EXPECT_EQ(j["queries"][1]["distance_exact"], nlohmann::json::array({0, 1000}));
+  // The same layout through every command that builds free space: the frame obstacle around a
+  // domain at +-(2^30 - 1) lies at +-2^30, whose differences need 64 bits (the union of the
+  // frame overflowed an int under UBSan before).
+  write_text(dir + "/wide_net.xml", R"(<?xml version="1.0"?>
+<layout name="wide" version="1" dbu-per-micron="1000">
+  <boundary x0="-1073741823" y0="-1073741823" x1="1073741823" y1="1073741823"/>
+  <blockage id="wall"><rect x0="-100" y0="-1073741823" x1="100" y1="1000000000"/></blockage>
+  <net name="n"><pin name="a" x="-1000000000" y="0"/><pin name="b" x="1000000000" y="0"/><pin name="c" x="1073741823" y="-1073741823"/></net>
+</layout>
+)");
+  for (const char* o : {"rectilinear", "octilinear"}) {
+    const std::string out = dir + "/wide." + o + ".xml";
+    const auto route = run_taut({"route", dir + "/wide_net.xml", "-o", out, "--orientations", o, "-q"});
+    EXPECT_EQ(route.status, 0) << o << ": " << route.err;
+    EXPECT_EQ(run_taut({"check", out, "-q"}).status, 0) << o;
+  }
+  const auto v = run_taut({"voronoi", dir + "/wide_net.xml", "-q", "--json"});
+  ASSERT_EQ(v.status, 0) << v.err;
+  EXPECT_EQ(nlohmann::json::parse(v.out)["sites"].size(), 3u);
+  // L1 from the top right corner to the bottom left: around the wall's top, 2 (2^31 - 2).
+  const auto l1 = run_taut({"spm", dir + "/wide_net.xml", "--source", "1073741823,1073741823", "--query",
+                            "-1073741823,-1073741823", "--json"});
+  ASSERT_EQ(l1.status, 0) << l1.err;
+  EXPECT_EQ(nlohmann::json::parse(l1.out)["queries"][0]["distance"].get<std::int64_t>(), 4294967292);
 }
 
 // Many points from files: the same answers as the options give; a bad line is named with its
