@@ -1663,6 +1663,13 @@ struct WaveCore {
 
 struct L1Wavefront::Impl : WaveCore<L1Metric> {
   using WaveCore::WaveCore;
+  // Per point source of the run: the source index the caller sees (run with segment sources);
+  // empty: the identity.
+  std::vector<std::size_t> source_origin;
+  std::optional<std::size_t> origin(uint32_t s) const {
+    if (s == kNone) return std::nullopt;
+    return source_origin.empty() ? std::size_t{s} : source_origin[s];
+  }
 };
 struct OctWavefront::Impl : WaveCore<OctMetric> {
   using WaveCore::WaveCore;
@@ -1751,11 +1758,69 @@ bool L1Wavefront::is_free(Point p) const { return impl_->is_free(p); }
 
 void L1Wavefront::run(std::span<const Point> sources, std::span<const Point> targets,
                       bool stop_early) {
-  impl_->run(sources, targets, stop_early ? Stop::AllTargets : Stop::Never);
+  run(sources, targets, stop_early ? Stop::AllTargets : Stop::Never);
 }
 
 void L1Wavefront::run(std::span<const Point> sources, std::span<const Point> targets, Stop stop) {
+  impl_->source_origin.clear();
   impl_->run(sources, targets, stop);
+}
+
+void L1Wavefront::run(std::span<const Point> sources, std::span<const geom::Segment> segment_sources,
+                      std::span<const Point> targets, Stop stop) {
+  Impl& c = *impl_;
+  // Distinct x and y of the ring vertices (frame included) and the targets: where projections
+  // onto a segment can fall.
+  std::vector<i64> xs, ys;
+  xs.reserve(c.nvert + targets.size());
+  ys.reserve(c.nvert + targets.size());
+  for (uint32_t v = 0; v < c.nvert; ++v) {
+    xs.push_back(c.pts[v].x);
+    ys.push_back(c.pts[v].y);
+  }
+  for (const Point t : targets) {
+    xs.push_back(t.x);
+    ys.push_back(t.y);
+  }
+  for (auto* v : {&xs, &ys}) {
+    std::sort(v->begin(), v->end());
+    v->erase(std::unique(v->begin(), v->end()), v->end());
+  }
+  auto strictly_between = [](const std::vector<i64>& v, i64 lo, i64 hi) {
+    if (hi <= lo + 1) return std::span<const i64>();  // (a single point has no inside)
+    return std::span<const i64>(std::upper_bound(v.begin(), v.end(), lo), std::lower_bound(v.begin(), v.end(), hi));
+  };
+  std::vector<Point> pts(sources.begin(), sources.end());
+  std::vector<std::size_t> origin(sources.size());
+  for (std::size_t i = 0; i < sources.size(); ++i) origin[i] = i;
+  std::vector<Point> cand;
+  for (std::size_t k = 0; k < segment_sources.size(); ++k) {
+    Point a = segment_sources[k].a, b = segment_sources[k].b;
+    const i64 dx = i64{b.x} - a.x, dy = i64{b.y} - a.y;
+    if (dx != 0 && dy != 0 && dx != dy && dx != -dy)
+      throw std::invalid_argument("a segment source must be horizontal, vertical or at 45 degrees");
+    if (b < a) std::swap(a, b);  // a before b: by x, then y
+    cand.assign({a, b});
+    if (a.x == b.x) {
+      for (const i64 y : strictly_between(ys, a.y, b.y)) cand.push_back({a.x, static_cast<geom::Coord>(y)});
+    } else {
+      const i64 s = (b.y > a.y) - (b.y < a.y);  // slope 0, 1 or -1
+      for (const i64 x : strictly_between(xs, a.x, b.x))  // vertical projections
+        cand.push_back({static_cast<geom::Coord>(x), static_cast<geom::Coord>(a.y + s * (x - a.x))});
+      if (s != 0)  // horizontal projections
+        for (const i64 y : strictly_between(ys, std::min(a.y, b.y), std::max(a.y, b.y)))
+          cand.push_back({static_cast<geom::Coord>(a.x + s * (y - a.y)), static_cast<geom::Coord>(y)});
+    }
+    std::sort(cand.begin(), cand.end());
+    cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
+    for (const Point p : cand)
+      if (c.is_free(p)) {
+        pts.push_back(p);
+        origin.push_back(sources.size() + k);
+      }
+  }
+  c.run(pts, targets, stop);
+  c.source_origin = std::move(origin);
 }
 
 std::optional<std::int64_t> L1Wavefront::target_distance(std::size_t i) const {
@@ -1767,7 +1832,7 @@ std::optional<std::int64_t> L1Wavefront::target_distance(std::size_t i) const {
 std::optional<std::size_t> L1Wavefront::target_source(std::size_t i) const {
   auto e = impl_->best_target_entity(i);
   if (!e) return std::nullopt;
-  return impl_->ents[*e].source;
+  return impl_->origin(impl_->ents[*e].source);
 }
 
 std::vector<Point> L1Wavefront::target_path(std::size_t i) const { return path_of(*impl_, i); }
@@ -1779,7 +1844,10 @@ std::optional<std::int64_t> L1Wavefront::vertex_distance(Point p) const {
 std::span<const Polygon> L1Wavefront::frame_obstacles() const { return impl_->polys; }
 
 std::vector<L1Wavefront::Wedge> L1Wavefront::vertex_wedges(Point p) const {
-  return wedges_of<L1Metric>(*impl_, p);
+  std::vector<Wedge> w = wedges_of<L1Metric>(*impl_, p);
+  for (Wedge& x : w)
+    if (x.source) x.source = impl_->origin(static_cast<uint32_t>(*x.source));
+  return w;
 }
 
 std::vector<Point> L1Wavefront::wedge_path(Point p, std::size_t k) const { return wedge_path_of(*impl_, p, k); }

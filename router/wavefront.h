@@ -131,6 +131,24 @@ class L1Wavefront {
   // stop_early = true is Stop::AllTargets, false is Stop::Never.
   using Stop = WavefrontStop;
   void run(std::span<const geom::Point> sources, std::span<const geom::Point> targets, Stop stop);
+  // The same with SEGMENT sources too (wires, pin edges): each segment, horizontal, vertical or
+  // at 45 degrees, is a source along its whole length (distance 0 at each of its points). Source
+  // indices in answers (target_source, Wedge::source) number the point sources first, then the
+  // segments (sources.size() + k for segment k); target_path() starts at the segment's point the
+  // path leaves from. A segment of another direction throws std::invalid_argument. Points of a
+  // segment that are not free are not sources (a wire must not cross a blockage).
+  //
+  // How: the L1 distance from a segment S is the least over finitely many of its points, so
+  // they run as point sources. A shortest path from S leaves it at a point p and runs to its
+  // first bend w (an obstacle vertex, or the target) with length |w - p|_1, p ranging over the
+  // part F_w of S from which a monotone free path reaches w. |w - p|_1 is piecewise linear along
+  // S with its breaks where p is level with w (the vertical or horizontal projection of w onto
+  // S), and the ends of F_w are where a blocking obstacle's extreme vertex projects onto S. So
+  // the least value is at S's ends or at the horizontal or vertical projection of a ring vertex
+  // or a target: every such point of S (integer points, as every coordinate is) is a source.
+  // Cost: O(number of distinct vertex and target coordinates in S's range) sources per segment.
+  void run(std::span<const geom::Point> sources, std::span<const geom::Segment> segment_sources,
+           std::span<const geom::Point> targets, Stop stop);
 
   // After run(): exact L1 distance of target i to the nearest source; nullopt = unreachable.
   std::optional<std::int64_t> target_distance(std::size_t i) const;
