@@ -203,7 +203,7 @@ TEST(SegmentSources, MatchTheReferenceOnRandomLayouts) {
             << " (leaving it between its ends " << t.inside_segment << ")\n";
   EXPECT_GE(t.instances, sanitized_share(950, 4));
   EXPECT_GE(t.reached, sanitized_share(25000, 4));
-  EXPECT_GE(t.inside_segment, sanitized_share(1000, 4));
+  EXPECT_GE(t.inside_segment, kSanitized ? 100 : 1000);  // (segments are half as long there)
   EXPECT_GE(t.scaled, sanitized_share(150, 4));
 }
 
