@@ -11,6 +11,7 @@
 #include <string>
 
 #include "geom/index.h"
+#include "geom/normalize.h"
 #include "geom/predicates.h"
 #include "router/huge_pages.h"
 #include "router/wavefront.h"
@@ -84,7 +85,21 @@ struct RootT {
 struct Edge {
   uint32_t l, r;  // point ids, l lex-before r
   bool free_above;
+  uint32_t src = kNone;  // an edge of a shape source: its source index (distance 0 along it)
 };
+
+// A "flat" ray: the horizontal front of a vertical edge of a shape source. Value K (plus wx
+// times the horizontal distance from the side inside the trapezoid) for every y in [lo, hi]:
+// each such point is reached straight across from the edge.
+template <class V>
+struct FlatT {
+  V K;
+  Q lo, hi;
+  uint32_t src;
+};
+// The root of an answer that comes from a shape source's side (a front or a flat ray): no
+// vertex; the answer names the foot point on the shape, which sees the query straight.
+constexpr uint32_t kFootRoot = L1Map::kFootRoot;
 
 struct Trap {
   uint32_t L, R;      // the points whose walls bound it
@@ -285,6 +300,7 @@ template <class V>
 struct Decomp {
   using Ray = RayT<V>;
   using Root = RootT<V>;
+  using Flat = FlatT<V>;
   geom::Box domain;  // queries outside it are not free (the octilinear frames: a bounding box)
   V wx, wy;
   HugeVector<Point> P;             // decomposition points, lex order (queries search it)
@@ -296,6 +312,11 @@ struct Decomp {
   std::vector<uint32_t> root_begin;  // per point: its roots [begin, next)
   std::vector<Point> root_lo;        // build only: per root, the ring neighbour its wedge starts at
   std::vector<bool> vertex_free;     // per point: a source, or an obstacle vertex with a free wedge
+  // Shape sources (maps built with them only): per trapezoid, the flat rays of its left side
+  // [f[0], f[1]) and of its right side [f[2], f[3]) in `flats`.
+  bool has_shapes = false;
+  std::vector<Flat> flats;
+  std::vector<std::array<uint32_t, 4>> trap_flats;
   // Point location from the sweep itself: the edges crossing the sweep line after each point
   // (PersistentEdges), and per edge the trapezoids above it in sweep order.
   PersistentEdges pset;
@@ -321,10 +342,12 @@ struct Decomp {
   // polys: the wavefront's frame obstacles; free_src: the free sources (point, index); wedges(p):
   // the free wedges of ring vertex p, in vertex_wedges() order.
   template <class Wedges>
+  // poly_src (empty, or one per polygon): the source index of a polygon that is a shape source
+  // (its edges are at distance 0), else kNone.
   Decomp(const geom::Box& dom, std::span<const Polygon> polys, std::span<const std::pair<Point, uint32_t>> free_src,
-         const Wedges& wedges, V wx_, V wy_, bool grid, double box_area = 1.0)
+         const Wedges& wedges, V wx_, V wy_, bool grid, double box_area = 1.0, std::span<const uint32_t> poly_src = {})
       : domain(dom), wx(wx_), wy(wy_) {
-    build_points_and_edges(polys, free_src);
+    build_points_and_edges(polys, free_src, poly_src);
     std::vector<SideRange> left, right;
     std::vector<uint32_t> close_begin, open_begin;
     std::vector<WallSide> closing, opening;
@@ -355,7 +378,8 @@ struct Decomp {
   // ------------------------------------------------------------------------------------------
   // Points: every ring vertex (frame included) and every free source; edges: the ring edges,
   // split at sources lying inside them, each knowing which side is free.
-  void build_points_and_edges(std::span<const Polygon> polys, std::span<const std::pair<Point, uint32_t>> free_src) {
+  void build_points_and_edges(std::span<const Polygon> polys, std::span<const std::pair<Point, uint32_t>> free_src,
+                              std::span<const uint32_t> poly_src) {
     std::vector<Point> raw;
     for (const Polygon& p : polys) {
       raw.insert(raw.end(), p.outer.begin(), p.outer.end());
@@ -397,6 +421,7 @@ struct Decomp {
     std::sort(on_edge.begin(), on_edge.end());  // by edge, then by point
     edges.reserve(nring + on_edge.size());
     std::vector<Point> chain;
+    uint32_t ring_src = kNone;
     auto add_ring = [&](const geom::Ring& ring) {
       const std::size_t n = ring.size();
       for (std::size_t i = 0; i < n; ++i) {
@@ -421,11 +446,14 @@ struct Decomp {
           // The obstacle lies left of the ring's direction: above an edge running left to
           // right, below one running right to left.
           const bool free_above = chain[j + 1] < chain[j];
-          edges.push_back(P[u] < P[w] ? Edge{u, w, free_above} : Edge{w, u, free_above});
+          edges.push_back(P[u] < P[w] ? Edge{u, w, free_above, ring_src} : Edge{w, u, free_above, ring_src});
         }
       }
     };
-    for (const Polygon& p : polys) {
+    for (std::size_t i = 0; i < polys.size(); ++i) {
+      const Polygon& p = polys[i];
+      ring_src = poly_src.empty() ? kNone : poly_src[i];
+      has_shapes = has_shapes || ring_src != kNone;
       add_ring(p.outer);
       for (const auto& h : p.holes) add_ring(h);
     }
@@ -686,8 +714,32 @@ struct Decomp {
       bool up;
       Part part;
     };
+    struct FlatIn {
+      Flat f;
+      Part part;
+    };
     std::vector<In> in;
+    std::vector<FlatIn> fin;
     std::vector<Ray> ups, downs;
+    std::vector<Flat> fout;
+    // Shape sources: the vertical edges whose free side faces this pass's new sides: left to
+    // right, an edge with free space on its right (free below, in the sheared order) starts
+    // flats at its upper end r; right to left, one with free space on its left at its lower end.
+    std::vector<std::vector<uint32_t>> vertical_at;
+    if (has_shapes) {
+      vertical_at.resize(n);
+      if (trap_flats.size() != traps.size()) trap_flats.assign(traps.size(), {0, 0, 0, 0});
+      for (uint32_t e = 0; e < edges.size(); ++e) {
+        const Edge& ed = edges[e];
+        if (ed.src == kNone || P[ed.l].x != P[ed.r].x || ed.free_above == l2r) continue;
+        vertical_at[l2r ? ed.r : ed.l].push_back(e);
+      }
+    }
+    auto clip = [](Flat& f, const SideRange& at) {
+      f.lo = qmax(f.lo, at.lo);
+      f.hi = qmin(f.hi, at.hi);
+      return cmp(f.lo, f.hi) <= 0;
+    };
     for (uint32_t step = 0; step < n; ++step) {
       const uint32_t q = l2r ? step : n - 1 - step;
       const WallSide* src = l2r ? closing.data() + close_begin[q] : opening.data() + open_begin[q];
@@ -696,6 +748,7 @@ struct Decomp {
       const WallSide* dst_end = l2r ? opening.data() + open_begin[q + 1] : closing.data() + close_begin[q + 1];
       if (dst == dst_end) continue;
       in.clear();
+      fin.clear();
       for (const WallSide* s = src; s != src_end; ++s) {
         if (s->part == kPoint) continue;
         const Trap& t = traps[s->trap];
@@ -714,6 +767,27 @@ struct Decomp {
             r.set_t(qmin(r.t(), at.hi));
           }
           in.push_back({r, up, s->part});
+        }
+        if (!has_shapes) continue;
+        const auto& tf = trap_flats[s->trap];
+        for (uint32_t i = tf[l2r ? 0 : 2]; i < tf[l2r ? 1 : 3]; ++i) {
+          Flat f = flats[i];
+          f.K += scale(w, wx);
+          if (clip(f, at)) fin.push_back({f, s->part});
+        }
+        // A trapezoid on a shape's horizontal or 45-degree edge: its front (the distance
+        // straight down to its bottom edge, or up to its top) goes on past this wall as the
+        // rays of the edge's point on the wall (distance 0, a root of its own).
+        for (const bool bottom : {true, false}) {
+          const Edge& e = edges[bottom ? t.bot : t.top];
+          if (e.src == kNone || P[e.l].x == P[e.r].x) continue;
+          const i64 y = floor_of(bottom ? at.lo : at.hi);  // an integer: the edge is at 0 or 45 degrees
+          const uint32_t root = static_cast<uint32_t>(roots.size());
+          roots.push_back({Point{P[q].x, static_cast<geom::Coord>(y)}, V{}, e.src, kNone});
+          if (bottom)
+            in.push_back({Ray{V{} - scale(y, wy), y, 1, root}, true, s->part});
+          else
+            in.push_back({Ray{V{} + scale(y, wy), y, 1, root}, false, s->part});
         }
       }
       for (const WallSide* d = dst; d != dst_end; ++d) {
@@ -742,6 +816,32 @@ struct Decomp {
         }
         Trap& t = traps[d->trap];
         staircase(ups, downs, l2r ? t.lo : t.ro);
+        if (!has_shapes) continue;
+        fout.clear();
+        for (const FlatIn& x : fin) {
+          if (!compatible(x.part, d->part)) continue;
+          Flat f = x.f;
+          if (clip(f, at)) fout.push_back(f);
+        }
+        // A shape's vertical edge ending here, its free side towards this side: every point of
+        // it is at distance 0, and the side's points level with it are reached straight across.
+        const Part facing = l2r ? kLower : kUpper;
+        if (d->part == facing || d->part == kJoined)
+          for (const uint32_t e : vertical_at[q]) {
+            Flat f{V{}, Q{P[edges[e].l].y, 1}, Q{P[edges[e].r].y, 1}, edges[e].src};
+            if (clip(f, at)) fout.push_back(f);
+          }
+        // Keep a flat unless another covers its whole range for no more.
+        auto& tf = trap_flats[d->trap];
+        tf[l2r ? 0 : 2] = static_cast<uint32_t>(flats.size());
+        for (std::size_t a = 0; a < fout.size(); ++a) {
+          bool covered = false;
+          for (std::size_t b = 0; b < fout.size() && !covered; ++b)
+            covered = b != a && !(fout[a].K < fout[b].K) && cmp(fout[b].lo, fout[a].lo) <= 0 &&
+                      cmp(fout[a].hi, fout[b].hi) <= 0 && (fout[b].K < fout[a].K || b < a);
+          if (!covered) flats.push_back(fout[a]);
+        }
+        tf[l2r ? 1 : 3] = static_cast<uint32_t>(flats.size());
       }
     }
   }
@@ -861,8 +961,16 @@ struct Decomp {
     return trap_above(pset.below(k, q, true));
   }
 
-  // Best ray at q inside trapezoid i: (value, root).
-  std::optional<std::pair<V, uint32_t>> evaluate(uint32_t i, Point q) const {
+  // The answer at a point: its value and root, or (root kFootRoot) the foot on a shape source
+  // that sees it straight and that source.
+  struct Best {
+    V value;
+    uint32_t root;
+    Point foot{};
+    uint32_t src = kNone;
+  };
+  // Best ray at q inside trapezoid i.
+  std::optional<Best> evaluate(uint32_t i, Point q) const {
     const Trap& t = traps[i];
     std::optional<Ray> best;
     V best_v{};
@@ -893,12 +1001,42 @@ struct Decomp {
         consider(r, r.K - y_up + dx);
       }
     }
-    if (!best) return std::nullopt;
-    return std::pair<V, uint32_t>{best_v, best->root};
+    std::optional<Best> out;
+    if (best) out = Best{best_v, best->root};
+    if constexpr (std::is_same_v<V, i64>) {
+      if (!has_shapes) return out;
+      // A foot on a shape wins only when strictly nearer: on a tie a root (distance >= 0,
+      // preferred by the larger distance) sees q straight as well.
+      auto foot = [&](i64 v, Point f, uint32_t src) {
+        if (!out || v < out->value) out = Best{v, kFootRoot, f, src};
+      };
+      // Fronts: straight down to a shape's bottom edge, or up to its top edge (0 or 45 degrees).
+      for (const bool bottom : {true, false}) {
+        const Edge& e = edges[bottom ? t.bot : t.top];
+        if (e.src == kNone) continue;
+        const Point a = P[e.l], b = P[e.r];
+        if (a.x == b.x) {  // a vertical edge bounds only trapezoids of width 0: q on it, or not
+          if (q.x == a.x && a.y <= q.y && q.y <= b.y) foot(0, q, e.src);
+          continue;
+        }
+        const i64 ye = i64{a.y} + (i64{b.y} - a.y) / (i64{b.x} - a.x) * (i64{q.x} - a.x);
+        foot(bottom ? q.y - ye : ye - q.y, Point{q.x, static_cast<geom::Coord>(ye)}, e.src);
+      }
+      // Flats: straight across to a shape's vertical edge.
+      const auto& tf = trap_flats[i];
+      for (int side = 0; side < 2; ++side)
+        for (uint32_t k = tf[2 * side]; k < tf[2 * side + 1]; ++k) {
+          const Flat& f = flats[k];
+          if (cmp(f.lo, y) > 0 || cmp(y, f.hi) > 0) continue;
+          const i64 x0 = side == 0 ? i64{t.pl.x} - f.K : i64{t.pr.x} + f.K;  // the edge's x
+          foot(f.K + (side == 0 ? i64{q.x} - t.pl.x : i64{t.pr.x} - q.x), Point{static_cast<geom::Coord>(x0), q.y}, f.src);
+        }
+    }
+    return out;
   }
 
-  // The best root at q: (distance, root id); nullopt if not free or unreached.
-  std::optional<std::pair<V, uint32_t>> best_root(Point q) const {
+  // The best root at q; nullopt if not free or unreached.
+  std::optional<Best> best_root(Point q) const {
     if (!in_domain(q)) return std::nullopt;
     // A decomposition point is never strictly between the walls of a trapezoid holding it, so
     // find() misses it: look it up only then (most queries are not vertices).
@@ -906,9 +1044,9 @@ struct Decomp {
     if (t != kNone) return evaluate(t, q);
     const uint32_t v = point_id(q);
     if (v == kNone) return std::nullopt;
-    std::optional<std::pair<V, uint32_t>> out;
+    std::optional<Best> out;
     for (uint32_t r = root_begin[v]; r < root_begin[v + 1]; ++r)
-      if (!out || roots[r].d < out->first) out = {roots[r].d, r};
+      if (!out || roots[r].d < out->value) out = Best{roots[r].d, r};
     return out;
   }
 
@@ -921,7 +1059,9 @@ struct Decomp {
   struct Cand {
     int gx, gy;   // gradient
     i64 c;        // value = gx x + gy y + c
-    uint32_t root;
+    uint32_t root;     // kFootRoot: a shape's front or flat, from src, straight out of seg
+    uint32_t src;
+    geom::Segment seg;
   };
   // Keep the part of convex polygon `poly` where a x + b y + c <= 0.
   static void clip(std::vector<RPoint>& poly, const Rational& a, const Rational& b, const Rational& c) {
@@ -984,24 +1124,64 @@ struct Decomp {
                           {t.lo[1], t.lo[2], false, 1, -i64{t.pl.x}},
                           {t.ro[0], t.ro[1], true, -1, i64{t.pr.x}},
                           {t.ro[1], t.ro[2], false, -1, i64{t.pr.x}}};
-    auto emit = [&](std::vector<RPoint>&& ring, uint32_t root) {
+    // Shape sources: the fronts of the trapezoid's bottom and top edges (all of it), and the
+    // flats of its two sides (each over its range of y): linear values as well.
+    std::vector<Cand> fronts;
+    struct FlatCand {
+      Cand c;
+      Q lo, hi;
+    };
+    std::vector<FlatCand> flat_cands;
+    if (has_shapes) {
+      for (const bool bottom : {true, false}) {
+        const Edge& e = edges[bottom ? t.bot : t.top];
+        if (e.src == kNone) continue;
+        const Point a = P[e.l], b = P[e.r];
+        const int sl = static_cast<int>((i64{b.y} - a.y) / (i64{b.x} - a.x));  // 0 or +-1 (not vertical here)
+        // bottom: y - (a.y + sl (x - a.x)); top: the opposite
+        const int sg = bottom ? 1 : -1;
+        fronts.push_back({-sg * sl, sg, sg * (i64{sl} * a.x - a.y), kFootRoot, e.src, {a, b}});
+      }
+      const auto& tf = trap_flats[i];
+      for (int side = 0; side < 2; ++side)
+        for (uint32_t k = tf[2 * side]; k < tf[2 * side + 1]; ++k) {
+          const Flat& f = flats[k];
+          const i64 x0 = side == 0 ? i64{t.pl.x} - f.K : i64{t.pr.x} + f.K;
+          const Point s0{static_cast<geom::Coord>(x0), static_cast<geom::Coord>(floor_of(f.lo))};
+          const Point s1{static_cast<geom::Coord>(x0), static_cast<geom::Coord>(ceil_of(f.hi))};
+          // side 0: K + (x - pl.x) = x - x0; side 1: x0 - x
+          flat_cands.push_back({{side == 0 ? 1 : -1, 0, side == 0 ? -x0 : x0, kFootRoot, f.src, {s0, s1}}, f.lo, f.hi});
+        }
+    }
+    auto source_of = [&](const Cand& c) { return c.root == kFootRoot ? c.src : roots[c.root].source; };
+    auto same = [&](const Cand& a, const Cand& b) {  // ByRoot: one root (or one straight front)
+      return by_root ? a.root == b.root && (a.root != kFootRoot || (a.seg == b.seg && a.gx == b.gx && a.gy == b.gy))
+                     : source_of(a) == source_of(b);
+    };
+    auto emit = [&](std::vector<RPoint>&& ring, const Cand& c) {
       if (!has_area(ring)) return;
-      const Root& r = roots[root];
-      out.push_back({std::move(ring), r.source, r.p, r.d});
+      if (c.root == kFootRoot) {
+        out.push_back({std::move(ring), c.src, c.seg.a, 0, c.seg});
+        return;
+      }
+      const Root& r = roots[c.root];
+      out.push_back({std::move(ring), r.source, r.p, r.d, std::nullopt});
     };
     // Every ray of the trapezoid from one source: one piece (BySource), no bands needed.
-    uint32_t any = kNone;
-    bool one_source = true, one_root = true;
+    std::optional<Cand> any;
+    bool one_source = true, one_root = fronts.empty() && flat_cands.empty();
+    auto see = [&](const Cand& c) {
+      if (!any) any = c;
+      one_root = one_root && c.root == any->root;
+      one_source = one_source && source_of(c) == source_of(*any);
+    };
     for (const Stair& s : st4)
-      for (uint32_t k = s.b; k < s.e; ++k) {
-        const uint32_t r = rays[k].root;
-        if (any == kNone) any = r;
-        one_root = one_root && r == any;
-        one_source = one_source && roots[r].source == roots[any].source;
-      }
-    if (any == kNone) return;  // no ray: walled in (a reached trapezoid is reached everywhere)
+      for (uint32_t k = s.b; k < s.e; ++k) see({0, 0, 0, rays[k].root, kNone, {}});
+    for (const Cand& c : fronts) see(c);
+    for (const FlatCand& f : flat_cands) see(f.c);
+    if (!any) return;  // no ray: walled in (a reached trapezoid is reached everywhere)
     if (one_root || (!by_root && one_source)) {
-      emit(std::move(poly), any);
+      emit(std::move(poly), *any);
       return;
     }
     const Q ylo = qmin(bl, br), yhi = qmax(tl, tr);
@@ -1010,6 +1190,9 @@ struct Decomp {
     for (const Stair& s : st4)
       for (uint32_t k = s.b; k < s.e; ++k)
         if (cmp(rays[k].t(), ylo) > 0 && cmp(rays[k].t(), yhi) < 0) lim.push_back(rays[k].t());
+    for (const FlatCand& f : flat_cands)
+      for (const Q y : {f.lo, f.hi})
+        if (cmp(y, ylo) > 0 && cmp(y, yhi) < 0) lim.push_back(y);
     std::sort(lim.begin() + 1, lim.end(), [](Q a, Q b) { return cmp(a, b) < 0; });
     lim.erase(std::unique(lim.begin(), lim.end(), [](Q a, Q b) { return cmp(a, b) == 0; }), lim.end());
     lim.push_back(yhi);
@@ -1032,24 +1215,34 @@ struct Decomp {
     // root's (ByRoot) or one source's (BySource) become one slab: fewer, larger pieces.
     struct Run {
       Q ya, yb;
-      uint32_t root = kNone;
+      std::optional<Cand> c;
     } run;
     auto flush = [&] {
-      if (run.root == kNone) return;
+      if (!run.c) return;
       std::vector<RPoint> slab = poly;
       if (cmp(run.ya, ylo) > 0) clip(slab, 0, -1, rq(run.ya));  // y >= ya
       if (cmp(run.yb, yhi) < 0) clip(slab, 0, 1, -rq(run.yb));  // y <= yb
-      emit(std::move(slab), run.root);
-      run.root = kNone;
+      emit(std::move(slab), *run.c);
+      run.c.reset();
     };
-    // Band i is (lim[i], lim[i + 1]); the active rays of every band, in one walk.
+    // Band i is (lim[i], lim[i + 1]); the active rays (and flats) of every band, in one walk.
     const std::size_t nb = lim.size() - 1;
-    std::vector<std::array<uint32_t, 4>> acts(nb);
-    for (std::size_t i = 0; i < nb; ++i)
+    std::vector<std::array<uint32_t, 6>> acts(nb);
+    for (std::size_t i = 0; i < nb; ++i) {
       for (int s = 0; s < 4; ++s) acts[i][s] = active(s, lim[i], lim[i + 1]);
+      for (int side = 0; side < 2; ++side) {  // the least flat of each side covering the band
+        uint32_t bestf = kNone;
+        for (uint32_t k = 0; k < flat_cands.size(); ++k) {
+          const FlatCand& f = flat_cands[k];
+          if ((f.c.gx == 1) != (side == 0) || cmp(f.lo, lim[i]) > 0 || cmp(lim[i + 1], f.hi) > 0) continue;
+          if (bestf == kNone || f.c.c < flat_cands[bestf].c.c) bestf = k;  // one side: one gradient
+        }
+        acts[i][4 + side] = bestf;
+      }
+    }
     std::size_t band = 0;
     while (band < nb) {
-      const std::array<uint32_t, 4> act = acts[band];
+      const std::array<uint32_t, 6> act = acts[band];
       std::size_t end = band + 1;
       while (end < nb && acts[end] == act) ++end;
       const Q ya = lim[band], yb = lim[end];
@@ -1058,13 +1251,17 @@ struct Decomp {
       for (int s = 0; s < 4; ++s)
         if (act[s] != kNone) {
           const Ray& r = rays[act[s]];
-          cands.push_back({st4[s].gx, st4[s].up ? 1 : -1, r.K + st4[s].c0, r.root});
+          cands.push_back({st4[s].gx, st4[s].up ? 1 : -1, r.K + st4[s].c0, r.root, kNone, {}});
         }
+      for (const Cand& c : fronts) cands.push_back(c);
+      for (int side = 0; side < 2; ++side)
+        if (act[4 + side] != kNone) cands.push_back(flat_cands[act[4 + side]].c);
       if (cands.empty()) throw std::logic_error("spm: a band of a reached trapezoid has no ray");
       // A candidate no lower than another at every corner of the band's bounding box
       // [xl, xr] x [ya, yb] is no lower anywhere in the band (their difference is linear): it
       // wins nowhere with area, so it is dropped. Exact in __int128, scaled by the thresholds'
-      // denominators. (Two candidates never dominate each other: their gradients differ.)
+      // denominators. Two rays never tie on an area (their gradients differ); a shape's front
+      // or flat may tie with a ray: the one listed first stays.
       if (cands.size() > 1) {
         auto diff_at = [&](const Cand& j, const Cand& i, i64 x, Q y) {  // sign of f_j - f_i at (x, y)
           const i128 v = i128{j.gx - i.gx} * x * y.d + i128{j.gy - i.gy} * y.n + (i128{j.c} - i.c) * y.d;
@@ -1073,24 +1270,26 @@ struct Decomp {
         std::vector<Cand> kept;
         for (std::size_t i = 0; i < cands.size(); ++i) {
           bool dominated = false;
-          for (std::size_t j = 0; j < cands.size() && !dominated; ++j)
-            dominated = j != i && diff_at(cands[j], cands[i], t.pl.x, ya) <= 0 && diff_at(cands[j], cands[i], t.pr.x, ya) <= 0 &&
-                        diff_at(cands[j], cands[i], t.pl.x, yb) <= 0 && diff_at(cands[j], cands[i], t.pr.x, yb) <= 0;
+          for (std::size_t j = 0; j < cands.size() && !dominated; ++j) {
+            if (j == i) continue;
+            const int d[4] = {diff_at(cands[j], cands[i], t.pl.x, ya), diff_at(cands[j], cands[i], t.pr.x, ya),
+                              diff_at(cands[j], cands[i], t.pl.x, yb), diff_at(cands[j], cands[i], t.pr.x, yb)};
+            const bool le = d[0] <= 0 && d[1] <= 0 && d[2] <= 0 && d[3] <= 0;
+            const bool tie = d[0] == 0 && d[1] == 0 && d[2] == 0 && d[3] == 0;
+            dominated = le && (!tie || j < i);
+          }
           if (!dominated) kept.push_back(cands[i]);
         }
         cands = std::move(kept);
       }
       bool uniform = true;
-      for (const Cand& c : cands)
-        uniform = uniform && (by_root ? c.root == cands[0].root : roots[c.root].source == roots[cands[0].root].source);
+      for (const Cand& c : cands) uniform = uniform && same(c, cands[0]);
       if (uniform) {
-        const bool joins = run.root != kNone && (by_root ? run.root == cands[0].root
-                                                         : roots[run.root].source == roots[cands[0].root].source);
-        if (joins) {
+        if (run.c && same(*run.c, cands[0])) {
           run.yb = yb;
         } else {
           flush();
-          run = {ya, yb, cands[0].root};
+          run = {ya, yb, cands[0]};
         }
         continue;
       }
@@ -1104,9 +1303,11 @@ struct Decomp {
         for (std::size_t o = 0; o < cands.size() && p.size() >= 3; ++o) {
           if (o == a) continue;
           const Cand &x = cands[a], &y = cands[o];
+          // x's part: f_x <= f_y, and where they tie the earlier candidate's (strictly: the
+          // later one keeps only f_x < f_y, a set of no area more than f_x <= f_y)
           clip(p, x.gx - y.gx, x.gy - y.gy, Rational(x.c) - y.c);
         }
-        emit(std::move(p), cands[a].root);
+        emit(std::move(p), cands[a]);
       }
     }
     flush();
@@ -1173,24 +1374,145 @@ static_assert(oct_frames_consistent());
 
 }  // namespace
 
+// Shape sources: checked, cleaned (geom::normalize_obstacles on each alone), and their edges.
+struct ShapeSet {
+  std::vector<Polygon> rings;            // one counter-clockwise outer ring each
+  std::vector<geom::Segment> edges;      // every ring edge, as segment sources
+  std::vector<uint32_t> edge_shape;      // per edge: its shape
+};
+std::string shape_problem_of(const geom::Box& domain, std::span<const Polygon> obstacles, std::span<const Polygon> shapes,
+                             ShapeSet* out) {
+  ShapeSet set;
+  for (std::size_t k = 0; k < shapes.size(); ++k) {
+    const std::string name = "shape source " + std::to_string(k);
+    if (!shapes[k].holes.empty()) return name + " has holes";
+    for (const Point p : shapes[k].outer)
+      if (p.x <= domain.lo.x || p.x >= domain.hi.x || p.y <= domain.lo.y || p.y >= domain.hi.y)
+        return name + " does not lie inside the domain (off its sides)";
+    const Polygon one[1] = {shapes[k]};
+    geom::NormalizedObstacles n = geom::normalize_obstacles(one, domain);
+    if (n.obstacles.size() != 1 || !n.obstacles[0].holes.empty() ||
+        geom::twice_area(n.obstacles[0].outer) != geom::twice_area(shapes[k].outer) * (geom::twice_area(shapes[k].outer) < 0 ? -1 : 1))
+      return name + " is not a simple polygon";
+    const geom::Ring& r = n.obstacles[0].outer;
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      const Point a = r[i], b = r[(i + 1) % r.size()];
+      const i64 dx = i64{b.x} - a.x, dy = i64{b.y} - a.y;
+      if (dx != 0 && dy != 0 && dx != dy && dx != -dy) return name + " has an edge that is not horizontal, vertical or at 45 degrees";
+      set.edges.push_back({a, b});
+      set.edge_shape.push_back(static_cast<uint32_t>(k));
+    }
+    set.rings.push_back(std::move(n.obstacles[0]));
+  }
+  // No common point with an obstacle or another shape: no two edges meet, and no vertex of one
+  // lies inside the other.
+  auto apart = [](const Polygon& a, const Polygon& b) {
+    auto rings = [](const Polygon& p) {
+      std::vector<const geom::Ring*> v{&p.outer};
+      for (const auto& h : p.holes) v.push_back(&h);
+      return v;
+    };
+    for (const geom::Ring* ra : rings(a))
+      for (const geom::Ring* rb : rings(b))
+        for (std::size_t i = 0; i < ra->size(); ++i)
+          for (std::size_t j = 0; j < rb->size(); ++j)
+            if (geom::intersect({(*ra)[i], (*ra)[(i + 1) % ra->size()]}, {(*rb)[j], (*rb)[(j + 1) % rb->size()]}) !=
+                geom::SegmentIntersection::None)
+              return false;
+    return geom::locate(a.outer[0], b) == geom::Location::Outside && geom::locate(b.outer[0], a) == geom::Location::Outside;
+  };
+  auto box_of = [](const Polygon& p) {
+    geom::Box b{p.outer[0], p.outer[0]};
+    for (const Point q : p.outer) {
+      b.lo = {std::min(b.lo.x, q.x), std::min(b.lo.y, q.y)};
+      b.hi = {std::max(b.hi.x, q.x), std::max(b.hi.y, q.y)};
+    }
+    return b;
+  };
+  auto boxes_meet = [](const geom::Box& a, const geom::Box& b) {
+    return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y;
+  };
+  for (std::size_t k = 0; k < set.rings.size(); ++k) {
+    const geom::Box bk = box_of(set.rings[k]);
+    for (const Polygon& o : obstacles)
+      if (boxes_meet(bk, box_of(o)) && !apart(set.rings[k], o))
+        return "shape source " + std::to_string(k) + " touches or overlaps a blockage";
+    for (std::size_t j = 0; j < k; ++j)
+      if (boxes_meet(bk, box_of(set.rings[j])) && !apart(set.rings[k], set.rings[j]))
+        return "shape sources " + std::to_string(j) + " and " + std::to_string(k) + " touch or overlap";
+  }
+  if (out) *out = std::move(set);
+  return "";
+}
+
 struct L1Map::Impl {
+  std::size_t npoints;  // point sources given (shape k is source npoints + k)
+  ShapeSet shapes;
   L1Wavefront wf;
   Decomp<i64> dec;
-  Impl(const geom::Box& domain, std::span<const Polygon> obstacles, std::span<const Point> sources, bool grid)
-      : wf(ran<L1Wavefront>(domain, obstacles, sources)),
+  static ShapeSet checked(const geom::Box& domain, std::span<const Polygon> obstacles, std::span<const Polygon> shapes) {
+    ShapeSet set;
+    if (const std::string why = shape_problem_of(domain, obstacles, shapes, &set); !why.empty())
+      throw std::invalid_argument(why);
+    return set;
+  }
+  static L1Wavefront ran_with(const geom::Box& domain, std::span<const Polygon> obstacles, std::span<const Point> sources,
+                              const ShapeSet& shapes) {
+    if (shapes.rings.empty()) return ran<L1Wavefront>(domain, obstacles, sources);
+    std::vector<Polygon> all(obstacles.begin(), obstacles.end());
+    all.insert(all.end(), shapes.rings.begin(), shapes.rings.end());
+    L1Wavefront wf(domain, all);
+    wf.run(sources, shapes.edges, {}, WavefrontStop::Never);
+    return wf;
+  }
+  // Per polygon of the wavefront's frame obstacles: the source index of a shape, else kNone
+  // (shapes keep off everything, so they are there as themselves; found by a vertex).
+  std::vector<uint32_t> poly_sources(std::size_t npoints) const {
+    std::vector<uint32_t> out;
+    if (shapes.rings.empty()) return out;
+    std::vector<std::pair<Point, uint32_t>> first;
+    for (uint32_t k = 0; k < shapes.rings.size(); ++k) first.push_back({shapes.rings[k].outer[0], k});
+    std::sort(first.begin(), first.end());
+    for (const Polygon& p : wf.frame_obstacles()) {
+      uint32_t src = kNone;
+      for (const Point v : p.outer) {
+        const auto it = std::lower_bound(first.begin(), first.end(), std::pair<Point, uint32_t>{v, 0});
+        if (it != first.end() && it->first == v) src = static_cast<uint32_t>(npoints + it->second);
+      }
+      out.push_back(src);
+    }
+    return out;
+  }
+  // A wedge's source as the map numbers them: point sources, then shapes (the wavefront numbers
+  // the shapes' edges).
+  uint32_t source_of(const std::optional<std::size_t>& s, std::size_t npoints) const {
+    if (!s) return kNone;
+    if (*s < npoints) return static_cast<uint32_t>(*s);
+    return static_cast<uint32_t>(npoints + shapes.edge_shape[*s - npoints]);
+  }
+  Impl(const geom::Box& domain, std::span<const Polygon> obstacles, std::span<const Point> sources,
+       std::span<const Polygon> shape_sources, bool grid)
+      : npoints(sources.size()),
+        shapes(checked(domain, obstacles, shape_sources)),
+        wf(ran_with(domain, obstacles, sources, shapes)),
         dec(domain, wf.frame_obstacles(), free_sources(wf, sources),
             [&](Point p) {
               std::vector<WedgeIn<i64>> out;
-              for (const auto& w : wf.vertex_wedges(p))
-                out.push_back({w.lo, w.distance, static_cast<uint32_t>(w.source.value_or(kNone))});
+              for (const auto& w : wf.vertex_wedges(p)) out.push_back({w.lo, w.distance, source_of(w.source, sources.size())});
               return out;
             },
-            1, 1, grid) {}
+            1, 1, grid, 1.0, poly_sources(sources.size())) {}
 };
 
 L1Map::L1Map(const geom::Box& domain, std::span<const Polygon> obstacles, std::span<const Point> sources,
              Options options)
-    : impl_(std::make_unique<Impl>(domain, obstacles, sources, options.grid)) {}
+    : impl_(std::make_unique<Impl>(domain, obstacles, sources, std::span<const Polygon>{}, options.grid)) {}
+L1Map::L1Map(const geom::Box& domain, std::span<const Polygon> obstacles, std::span<const Point> sources,
+             std::span<const Polygon> shapes, Options options)
+    : impl_(std::make_unique<Impl>(domain, obstacles, sources, shapes, options.grid)) {}
+std::string L1Map::shape_problem(const geom::Box& domain, std::span<const Polygon> obstacles, std::span<const Polygon> shapes) {
+  return shape_problem_of(domain, obstacles, shapes, nullptr);
+}
 L1Map::~L1Map() = default;
 L1Map::L1Map(L1Map&&) noexcept = default;
 L1Map& L1Map::operator=(L1Map&&) noexcept = default;
@@ -1200,8 +1522,9 @@ bool L1Map::is_free(Point q) const { return impl_->dec.is_free(q); }
 std::optional<L1Map::Answer> L1Map::locate(Point q) const {
   const auto b = impl_->dec.best_root(q);
   if (!b) return std::nullopt;
-  const auto& r = impl_->dec.roots[b->second];
-  return Answer{b->first, r.source, r.p, b->second};
+  if (b->root == kFootRoot) return Answer{b->value, b->src, b->foot, kFootRoot};
+  const auto& r = impl_->dec.roots[b->root];
+  return Answer{b->value, r.source, r.p, b->root};
 }
 
 std::vector<Point> L1Map::path(Point q) const {
@@ -1210,6 +1533,7 @@ std::vector<Point> L1Map::path(Point q) const {
 }
 
 std::vector<Point> L1Map::path(Point q, const Answer& a) const {
+  if (a.root_id == kFootRoot) return a.root == q ? std::vector<Point>{q} : std::vector<Point>{a.root, q};
   if (a.root_id >= impl_->dec.roots.size()) return {};
   const auto& r = impl_->dec.roots[a.root_id];
   std::vector<Point> out;
@@ -1247,6 +1571,9 @@ std::vector<L1Map::Piece> L1Map::pieces(Detail detail) const {
 }
 
 const L1Map::Stats& L1Map::stats() const { return impl_->dec.st; }
+
+std::span<const Polygon> L1Map::shape_sources() const { return impl_->shapes.rings; }
+std::size_t L1Map::shape_source_index(std::size_t k) const { return impl_->npoints + k; }
 
 std::size_t L1Map::memory_bytes() const { return impl_->wf.memory_bytes() + impl_->dec.memory_bytes(); }
 
@@ -1356,9 +1683,9 @@ std::optional<OctMap::Answer> OctMap::locate(Point q) const {
   std::optional<Answer> best;
   for (int k = 0; k < 4; ++k) {
     const auto b = m.dec[k].best_root(m.fwd(k, q));
-    if (!b || (best && !(b->first < best->distance))) continue;
-    const auto& r = m.dec[k].roots[b->second];
-    best = Answer{b->first, r.source, m.back(k, r.p), (static_cast<uint32_t>(k) << 30) | b->second};
+    if (!b || (best && !(b->value < best->distance))) continue;
+    const auto& r = m.dec[k].roots[b->root];
+    best = Answer{b->value, r.source, m.back(k, r.p), (static_cast<uint32_t>(k) << 30) | b->root};
   }
   return best;
 }

@@ -46,6 +46,19 @@
 // vertex v with d(v) = d(r) + |v - r| > d(r) whose ray reaches q as cheaply). The path is the
 // wavefront's shortest path to r, then q: O(k).
 //
+// Shape sources (pins: polygons with horizontal, vertical and 45-degree edges, sources along
+// their whole boundary; L1 only). The shapes are obstacles of the decomposition and their
+// edges are labelled with their source. The wavefront labels the vertices from segment sources
+// (router/wavefront.h). What a point source's rays cannot carry is the part of the distance
+// that runs straight out of a side: a trapezoid whose bottom (top) edge is a shape's
+// horizontal or 45-degree side has its "front", the distance straight down (up) to it, and
+// passes it on at its walls as the rays of the side's point on the wall (a root of distance 0);
+// a vertical side starts "flat" rays on the wall side it faces, the distance straight across
+// (K plus the horizontal distance, for y in a range), carried from side to side like the
+// staircases and clipped to each side's range (their ends are the side's own corners, or
+// blockage edges). An answer from a front or a flat names the foot on the shape (root_id
+// kFootRoot; the foot sees the query straight); on a tie a root is preferred.
+//
 // Exactness. Values are integers; thresholds are the heights where walls meet sloped edges,
 // exact rationals. Degeneracies (shared x, vertical edges, several vertices on one wall) are
 // resolved by the same symbolic shear as the wavefront's: the sweep orders points by (x, y), so
@@ -60,6 +73,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include <boost/multiprecision/gmp.hpp>
@@ -96,6 +110,26 @@ class L1Map {
   L1Map(const geom::Box& domain, std::span<const geom::Polygon> obstacles,
         std::span<const geom::Point> sources)
       : L1Map(domain, obstacles, sources, Options{}) {}
+  // With SHAPE sources as well (pins): polygons without holes whose edges are horizontal,
+  // vertical or at 45 degrees, each a source along its whole boundary (distance 0 there; its
+  // inside is not free: paths go around it). Each must lie inside the domain off its sides and
+  // have no point in common with an obstacle or another shape; else std::invalid_argument with
+  // what shape_problem() returns. Source indices: the point sources first, then the shapes.
+  // Answers reached straight out of a shape's side name the foot on the shape as their root
+  // (root_id kFootRoot); the cells from such a side are pieces with a root_segment.
+  L1Map(const geom::Box& domain, std::span<const geom::Polygon> obstacles,
+        std::span<const geom::Point> sources, std::span<const geom::Polygon> shapes, Options options);
+  L1Map(const geom::Box& domain, std::span<const geom::Polygon> obstacles,
+        std::span<const geom::Point> sources, std::span<const geom::Polygon> shapes)
+      : L1Map(domain, obstacles, sources, shapes, Options{}) {}
+  // Why the shapes cannot be sources of a map on these obstacles ("" when they can).
+  static std::string shape_problem(const geom::Box& domain, std::span<const geom::Polygon> obstacles,
+                                   std::span<const geom::Polygon> shapes);
+  static constexpr std::uint32_t kFootRoot = 0xFFFFFFFEu;
+  // The shape sources as the map holds them (cleaned: one counter-clockwise outer ring each,
+  // in the order given), and shape k's source index (the number of point sources + k).
+  std::span<const geom::Polygon> shape_sources() const;
+  std::size_t shape_source_index(std::size_t k) const;
   ~L1Map();
   L1Map(L1Map&&) noexcept;
   L1Map& operator=(L1Map&&) noexcept;
@@ -141,6 +175,11 @@ class L1Map {
     std::size_t source = 0;
     geom::Point root;
     std::int64_t root_distance = 0;
+    // Set for a piece reached straight out of a shape source's side (its front: straight up
+    // or down to a horizontal or 45-degree edge; a flat: straight across to a vertical one):
+    // the distance of each of its points is its L1 distance to this segment's supporting line
+    // (root is the segment's first end, root_distance 0).
+    std::optional<geom::Segment> root_segment;
   };
   std::vector<Piece> pieces(Detail detail) const;
 

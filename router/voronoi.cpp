@@ -149,7 +149,17 @@ std::vector<std::pair<RPoint, RPoint>> boundary(const std::vector<const L1Map::P
 }  // namespace
 
 std::vector<VoronoiRegion> l1_voronoi(const L1Map& map) {
-  return l1_voronoi(map.pieces(L1Map::Detail::BySource));
+  std::vector<L1Map::Piece> pieces = map.pieces(L1Map::Detail::BySource);
+  // A shape site's region holds the shape itself (distance 0 there): one more piece each.
+  const auto shapes = map.shape_sources();
+  for (std::size_t k = 0; k < shapes.size(); ++k) {
+    L1Map::Piece p;
+    for (const geom::Point v : shapes[k].outer) p.ring.push_back({Rational(v.x), Rational(v.y)});
+    p.source = map.shape_source_index(k);
+    p.root = shapes[k].outer[0];
+    pieces.push_back(std::move(p));
+  }
+  return l1_voronoi(pieces);
 }
 
 std::vector<VoronoiRegion> l1_voronoi(std::span<const L1Map::Piece> pieces) {

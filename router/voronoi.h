@@ -40,7 +40,7 @@ struct VoronoiRegion {
 };
 
 // One region per site that reaches some area, in site order (sites at one point: the least
-// index has the region).
+// index has the region). A shape site's region holds the shape as well.
 std::vector<VoronoiRegion> l1_voronoi(const L1Map& map);
 // The same from map.pieces(L1Map::Detail::BySource), for a caller that already has them.
 std::vector<VoronoiRegion> l1_voronoi(std::span<const L1Map::Piece> by_source);

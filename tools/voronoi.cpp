@@ -1,7 +1,8 @@
 // taut voronoi FILE [--site X,Y ...] [--site-file F] [-o CELLS.xml] [--svg PIC] [--json]: the L1
 // geodesic Voronoi diagram of the sites among the layout's blockages (router/voronoi.h): for
 // each site, the free points no other site is nearer to, as polygons with holes and exact
-// rational vertices. Sites default to every point pin of every net.
+// rational vertices. Sites default to every pin of every net: a point pin is a point site, a
+// shape pin a shape site (its whole boundary is at distance 0, and its region holds the shape).
 //
 // Output: a summary on stdout (or one JSON document with --json), the regions as XML (-o, the
 // format is in the README) and a picture (--svg): each site's region shaded in its own colour
@@ -41,10 +42,17 @@ std::string ring_points(const std::vector<router::RPoint>& ring) {
 }
 
 struct Site {
-  geom::Point p;
-  std::string net, pin;  // empty for --site / --site-file sites
-  int line = 0;          // the pin's line in the layout file
+  geom::Point p;                       // a point site (for a shape: its first vertex)
+  std::string net, pin;                // empty for --site / --site-file sites
+  int line = 0;                        // the pin's line in the layout file
+  std::optional<geom::Polygon> shape;  // a shape pin
 };
+
+std::string points_text(const geom::Ring& r) {
+  std::string s;
+  for (std::size_t i = 0; i < r.size(); ++i) s += (i ? " " : "") + std::to_string(r[i].x) + "," + std::to_string(r[i].y);
+  return s;
+}
 
 std::string site_name(const Site& s, std::size_t i) {
   return s.net.empty() ? "site " + std::to_string(i) : s.net + "." + s.pin;
@@ -57,7 +65,10 @@ std::string cells_xml(const io::Layout& layout, const std::vector<Site>& sites,
   o << "<voronoi version=\"1\" tool=\"taut " << router::version() << "\" metric=\"l1\" layout=\""
     << xml_escape(layout.name) << "\">\n";
   for (std::size_t i = 0; i < sites.size(); ++i) {
-    o << "  <site index=\"" << i << "\" x=\"" << sites[i].p.x << "\" y=\"" << sites[i].p.y << "\"";
+    if (sites[i].shape)
+      o << "  <site index=\"" << i << "\" points=\"" << points_text(sites[i].shape->outer) << "\"";
+    else
+      o << "  <site index=\"" << i << "\" x=\"" << sites[i].p.x << "\" y=\"" << sites[i].p.y << "\"";
     if (!sites[i].net.empty()) o << " net=\"" << xml_escape(sites[i].net) << "\" pin=\"" << xml_escape(sites[i].pin) << "\"";
     o << "/>\n";
   }
@@ -124,8 +135,8 @@ void add_voronoi(CLI::App& app, int& status) {
   };
   auto args = std::make_shared<Args>();
   CLI::App* sub = app.add_subcommand(
-      "voronoi", "L1 geodesic Voronoi diagram of sites (default: every point pin) among the blockages");
-  sub->add_option("--site", args->sites, "a site X,Y (repeat the option for more); default: every point pin");
+      "voronoi", "L1 geodesic Voronoi diagram of sites (default: every pin, points and shapes) among the blockages");
+  sub->add_option("--site", args->sites, "a site X,Y (repeat the option for more); default: every pin");
   sub->add_option("--site-file", args->site_file,
                   "more sites: a text file with one X,Y per line (blank lines and # comments skipped)");
   sub->add_option("-o,--output", args->out, "write the regions as XML (exact rational coordinates)");
@@ -140,7 +151,7 @@ void add_voronoi(CLI::App& app, int& status) {
         status = kInvalid;
         return;
       }
-      sites.push_back({*p, "", "", 0});
+      sites.push_back({*p, "", "", 0, std::nullopt});
     }
     if (sub->count("--site-file")) {
       if (args->site_file.empty()) {
@@ -153,7 +164,7 @@ void add_voronoi(CLI::App& app, int& status) {
         status = kInvalid;
         return;
       }
-      for (geom::Point p : pts) sites.push_back({p, "", "", 0});
+      for (geom::Point p : pts) sites.push_back({p, "", "", 0, std::nullopt});
     }
     for (const auto& [name, path] : {std::pair{"-o", &args->out}, std::pair{"--svg", &args->svg}})
       if (sub->count(name) && path->empty()) {
@@ -171,15 +182,15 @@ void add_voronoi(CLI::App& app, int& status) {
       for (const io::Net& n : layout->nets)
         for (const io::Pin& p : n.pins) {
           if (p.point) {
-            sites.push_back({*p.point, n.name, p.name, p.line});
-          } else if (!args->load.quiet) {
-            print_diagnostics({Diagnostic{Severity::Warning, "VORONOI-0002", args->file, p.line, 0,
-                                          "pin \"" + p.name + "\" of net \"" + n.name +
-                                              "\" is a shape: shape pins are not Voronoi sites in this version (give a point with --site)"}});
+            sites.push_back({*p.point, n.name, p.name, p.line, std::nullopt});
+          } else {
+            geom::Polygon poly = io::shape_polygon(*p.shape);
+            const geom::Point first = poly.outer.front();
+            sites.push_back({first, n.name, p.name, p.line, std::move(poly)});
           }
         }
       if (sites.empty()) {
-        print_usage_error("VORONOI-0001", "no sites: the layout has no point pins; give sites with --site or --site-file");
+        print_usage_error("VORONOI-0001", "no sites: the layout has no pins; give sites with --site or --site-file");
         status = kInvalid;
         return;
       }
@@ -187,11 +198,41 @@ void add_voronoi(CLI::App& app, int& status) {
     std::vector<geom::Point> pts;
     for (const Site& s : sites) pts.push_back(s.p);
     const geom::NormalizedObstacles norm = routing_obstacles(*layout, pts);
-    const router::L1Map map(norm.domain, norm.obstacles, pts);
+    // The map's sources: the point sites, then the shape sites it can take (a shape must keep
+    // off every blockage, the boundary and the other shapes; one that does not is named
+    // (VORONOI-0002) and left out). map_site[k]: the site of the map's source k.
+    std::vector<geom::Point> point_sites;
+    std::vector<geom::Polygon> shape_sites;
+    std::vector<std::size_t> map_site, shape_site;
+    for (std::size_t i = 0; i < sites.size(); ++i)
+      if (!sites[i].shape) {
+        point_sites.push_back(sites[i].p);
+        map_site.push_back(i);
+      }
+    for (std::size_t i = 0; i < sites.size(); ++i) {
+      if (!sites[i].shape) continue;
+      std::vector<geom::Polygon> more = shape_sites;
+      more.push_back(*sites[i].shape);
+      if (std::string why = router::L1Map::shape_problem(norm.domain, norm.obstacles, more); !why.empty()) {
+        if (why.rfind("shape sources ", 0) == 0)  // "shape sources j and k touch": name the pins
+          why = "it touches or overlaps another shape pin";
+        else if (const auto at = why.find(' ', std::string("shape source ").size()); why.rfind("shape source ", 0) == 0 && at != std::string::npos)
+          why = "it" + why.substr(at);
+        if (!args->load.quiet)
+          print_diagnostics({Diagnostic{Severity::Warning, "VORONOI-0002", args->file, sites[i].line, 0,
+                                        "pin \"" + sites[i].pin + "\" of net \"" + sites[i].net +
+                                            "\" is a shape that cannot be a Voronoi site: " + why + "; it is left out"}});
+        continue;
+      }
+      shape_sites.push_back(*sites[i].shape);
+      shape_site.push_back(i);
+    }
+    for (const std::size_t i : shape_site) map_site.push_back(i);
+    const router::L1Map map(norm.domain, norm.obstacles, point_sites, shape_sites);
     // A site outside free space has no region: refused, naming it (nothing is written).
     bool bad = false;
     for (std::size_t i = 0; i < sites.size(); ++i)
-      if (!map.is_free(sites[i].p)) {
+      if (!sites[i].shape && !map.is_free(sites[i].p)) {
         const std::string what = site_name(sites[i], i) + " at " + point_text(sites[i].p) + " " + why_not_free(*layout, sites[i].p);
         if (sites[i].line)
           print_diagnostics({Diagnostic{Severity::Error, "ROUTE-0001", args->file, sites[i].line, 0, what}});
@@ -203,14 +244,16 @@ void add_voronoi(CLI::App& app, int& status) {
       status = kInvalid;
       return;
     }
-    const std::vector<router::VoronoiRegion> regions = router::l1_voronoi(map);
+    std::vector<router::VoronoiRegion> regions = router::l1_voronoi(map);
+    for (auto& r : regions) r.site = map_site[r.site];  // the map's source index -> the site's
+    std::sort(regions.begin(), regions.end(), [](const auto& a, const auto& b) { return a.site < b.site; });
     std::vector<const router::VoronoiRegion*> of(sites.size(), nullptr);
     for (const auto& r : regions) of[r.site] = &r;
     // Sites sharing a point: the first has the region, the others are named.
     for (std::size_t i = 0; i < sites.size(); ++i)
       if (!of[i] && !args->load.quiet)
         for (std::size_t j = 0; j < i; ++j)
-          if (sites[j].p == sites[i].p) {
+          if (!sites[i].shape && !sites[j].shape && sites[j].p == sites[i].p) {
             print_diagnostics({Diagnostic{Severity::Warning, "VORONOI-0003", sites[i].line ? args->file : "", sites[i].line, 0,
                                           site_name(sites[i], i) + " is at the same point as " + site_name(sites[j], j) +
                                               ", which has the region"}});
@@ -244,7 +287,13 @@ void add_voronoi(CLI::App& app, int& status) {
     for (std::size_t i = 0; i < sites.size(); ++i) {
       nlohmann::ordered_json s;
       s["site"] = i;
-      s["point"] = {sites[i].p.x, sites[i].p.y};
+      if (sites[i].shape) {
+        auto pts_json = nlohmann::ordered_json::array();
+        for (const geom::Point v : sites[i].shape->outer) pts_json.push_back({v.x, v.y});
+        s["points"] = pts_json;
+      } else {
+        s["point"] = {sites[i].p.x, sites[i].p.y};
+      }
       if (!sites[i].net.empty()) {
         s["net"] = sites[i].net;
         s["pin"] = sites[i].pin;
@@ -259,7 +308,7 @@ void add_voronoi(CLI::App& app, int& status) {
       s["holes"] = holes;
       rows.push_back(s);
       if (!args->json)
-        std::cout << site_name(sites[i], i) << " (" << point_text(sites[i].p) << "): area "
+        std::cout << site_name(sites[i], i) << " (" << (sites[i].shape ? "shape " + points_text(sites[i].shape->outer) : point_text(sites[i].p)) << "): area "
                   << (r ? rational_str(r->area) : "0") << ", " << (r ? r->polygons.size() : 0) << " polygon(s), "
                   << holes << " hole(s)\n";
     }

@@ -12,6 +12,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "geom/normalize.h"
+#include "geom/predicates.h"
 #include "oracle/l1_oracle.h"
 #include "support/exact_rings.h"
 #include "support/layout_reference.h"
@@ -66,7 +68,14 @@ Cells read_cells(const std::string& path) {
   xmlNode* root = xmlDocGetRootElement(doc);
   EXPECT_TRUE(is(root, "voronoi"));
   for (xmlNode* n = root->children; n; n = n->next) {
-    if (is(n, "site")) c.sites.push_back({std::stoi(prop(n, "x")), std::stoi(prop(n, "y"))});
+    if (is(n, "site")) {
+      if (const std::string pts = prop(n, "points"); !pts.empty()) {  // a shape site: its first vertex
+        const P2 first = parse_points(pts).front();
+        c.sites.push_back({static_cast<int>(mpz_class(first.x).get_si()), static_cast<int>(mpz_class(first.y).get_si())});
+      } else {
+        c.sites.push_back({std::stoi(prop(n, "x")), std::stoi(prop(n, "y"))});
+      }
+    }
     if (!is(n, "region")) continue;
     Region r{std::stoul(prop(n, "site")), parse_q(prop(n, "area")), {}};
     for (xmlNode* p = n->children; p; p = p->next) {
@@ -98,8 +107,10 @@ int in_region(const Region& r, const P2& q) {
 
 // Checks the file's regions against the reference on a lattice of probes; returns how many
 // probes were reached.
+// shapes: the shape sites (site index, polygon): sources along their boundary, obstacles too.
 int check_cells(const std::string& layout, const std::string& cells_path, const std::vector<Point>& sites,
-                int step) {
+                int step, const std::vector<std::pair<std::size_t, geom::Polygon>>& shapes = {},
+                const std::vector<std::size_t>& left_out = {}) {
   const Cells cells = read_cells(cells_path);
   EXPECT_EQ(cells.sites, sites);
   for (const auto& r : cells.regions) {
@@ -114,14 +125,53 @@ int check_cells(const std::string& layout, const std::string& cells_path, const 
     }
     EXPECT_EQ(a, 2 * r.area) << "site " << r.site;
   }
-  const auto lr = reference_for<oracle::L1Reference>(layout, sites);
+  auto lr = reference_for<oracle::L1Reference>(layout, sites);
   if (!lr.ref) return 0;
+  if (!shapes.empty()) {  // the shapes are obstacles as well
+    std::vector<geom::Polygon> all = lr.norm.obstacles;
+    for (const auto& [i, p] : shapes) all.push_back(p);
+    lr.norm = geom::normalize_obstacles(all, lr.norm.domain);
+    lr.ref = std::make_unique<oracle::L1Reference>(lr.norm.domain, lr.norm.obstacles);
+  }
   const geom::Box& D = lr.norm.domain;
   std::vector<Point> probes;
   for (int x = D.lo.x; x <= D.hi.x; x += step)
     for (int y = D.lo.y; y <= D.hi.y; y += step) probes.push_back({x, y});
   std::vector<std::vector<std::optional<std::int64_t>>> dist;  // [site][probe]
   for (Point s : sites) dist.push_back(lr.ref->distances(s, probes));
+  for (const std::size_t i : left_out) dist[i].assign(probes.size(), std::nullopt);  // no region: reaches nothing
+  // A shape site: the least distance over its corners and the points of its edges level with
+  // an obstacle vertex or a probe (the least over a segment is at such a point: the brute-force
+  // check over every lattice point is tests/router/segment_source_test.cpp).
+  for (const auto& [i, shape] : shapes) {
+    std::vector<int> xs, ys;
+    for (const auto& p : lr.norm.obstacles)
+      for (const Point v : p.outer) xs.push_back(v.x), ys.push_back(v.y);
+    for (const Point q : probes) xs.push_back(q.x), ys.push_back(q.y);
+    for (auto* v : {&xs, &ys}) {
+      std::sort(v->begin(), v->end());
+      v->erase(std::unique(v->begin(), v->end()), v->end());
+    }
+    std::vector<Point> cand;
+    const auto& r = shape.outer;
+    for (std::size_t k = 0; k < r.size(); ++k) {
+      const Point a = r[k], b = r[(k + 1) % r.size()];
+      cand.push_back(a);
+      const int dx = (b.x > a.x) - (b.x < a.x), dy = (b.y > a.y) - (b.y < a.y);
+      for (Point c = a; c != b; c = {c.x + dx, c.y + dy})
+        if ((dx != 0 && std::binary_search(xs.begin(), xs.end(), c.x)) || (dy != 0 && std::binary_search(ys.begin(), ys.end(), c.y)))
+          cand.push_back(c);  // level with one across the edge (a horizontal edge: in x; vertical: in y)
+    }
+    std::vector<std::optional<std::int64_t>> best(probes.size());
+    for (const Point c : cand) {
+      const auto d = lr.ref->distances(c, probes);
+      for (std::size_t k = 0; k < probes.size(); ++k)
+        if (d[k] && (!best[k] || *d[k] < *best[k])) best[k] = d[k];
+    }
+    for (std::size_t k = 0; k < probes.size(); ++k)  // the shape's own points: distance 0
+      if (geom::locate(probes[k], shape) != geom::Location::Outside) best[k] = 0;
+    dist[i] = best;
+  }
   int reached = 0;
   for (std::size_t i = 0; i < probes.size(); ++i) {
     {
@@ -157,25 +207,37 @@ TEST(Voronoi, DemoPinsMatchTheReference) {
   const std::string dir = temp_dir("voronoi_demo");
   const auto r = run_taut({"voronoi", demo, "-o", dir + "/cells.xml", "--svg", dir + "/cells.svg", "--json"});
   ASSERT_EQ(r.status, 0) << r.err;
-  // The two shape pins of net bump are named, with their lines, and are not sites.
-  EXPECT_NE(r.err.find("demo.xml:63: warning: [VORONOI-0002] pin \"pad\" of net \"bump\" is a shape"), std::string::npos) << r.err;
+  // Every pin is a site: the two shape pins of net bump too (the pad and the diamond ball).
+  EXPECT_EQ(r.err.find("VORONOI-0002"), std::string::npos) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   std::vector<Point> sites;
-  for (const auto& s : j["sites"]) sites.push_back({s["point"][0].get<int>(), s["point"][1].get<int>()});
-  ASSERT_EQ(sites.size(), 9u);
+  std::vector<std::pair<std::size_t, geom::Polygon>> shapes;
+  for (const auto& s : j["sites"]) {
+    if (s.contains("points")) {
+      geom::Polygon p;
+      for (const auto& v : s["points"]) p.outer.push_back({v[0].get<int>(), v[1].get<int>()});
+      shapes.push_back({sites.size(), p});
+      sites.push_back(p.outer.front());
+    } else {
+      sites.push_back({s["point"][0].get<int>(), s["point"][1].get<int>()});
+    }
+  }
+  ASSERT_EQ(sites.size(), 11u);
+  ASSERT_EQ(shapes.size(), 2u);
   EXPECT_EQ(j["sites"][0]["net"], "clk");
   EXPECT_EQ(j["sites"][0]["pin"], "drv");
-  const int reached = check_cells(demo, dir + "/cells.xml", sites, 250);
+  EXPECT_EQ(j["sites"][9]["pin"], "pad");
+  const int reached = check_cells(demo, dir + "/cells.xml", sites, 250, shapes);
   EXPECT_GT(reached, 3000);
   // The summary agrees with the file.
   const Cells cells = read_cells(dir + "/cells.xml");
-  ASSERT_EQ(cells.regions.size(), 9u);
+  ASSERT_EQ(cells.regions.size(), 11u);
   for (const auto& reg : cells.regions) EXPECT_EQ(parse_q(j["sites"][reg.site]["area_exact"].get<std::string>()), reg.area);
   // The picture: a shaded path per region, under the blockages.
   const std::string svg = read_text(dir + "/cells.svg");
   std::size_t paths = 0;
   for (std::size_t at = svg.find("class=\"region\""); at != std::string::npos; at = svg.find("class=\"region\"", at + 1)) ++paths;
-  EXPECT_EQ(paths, 9u);
+  EXPECT_EQ(paths, 11u);
   EXPECT_LT(svg.find("class=\"region\""), svg.find("class=\"blockage\""));
 }
 
@@ -203,6 +265,38 @@ TEST(Voronoi, GivenSitesOnAGeneratedLayout) {
   ASSERT_EQ(r.status, 0) << r.err;
   const int step = std::max(1, (D.hi.x - D.lo.x) / 60);
   EXPECT_GT(check_cells(file, dir + "/cells.xml", sites, step), 1000);
+}
+
+// A shape pin that touches a blockage cannot be a site: named with its reason and left out; the
+// other shape pin is a site whose region holds it.
+TEST(Voronoi, ShapePinTouchingABlockageIsLeftOut) {
+  const std::string dir = temp_dir("voronoi_shapes");
+  write_text(dir + "/s.xml", R"(<?xml version="1.0"?>
+<layout name="s" version="1" dbu-per-micron="1000">
+  <boundary x0="0" y0="0" x1="1000" y1="1000"/>
+  <blockage id="wall"><rect x0="400" y0="0" x1="600" y1="700"/></blockage>
+  <net name="n">
+    <pin name="a" x="100" y="100"/>
+    <pin name="pad"><rect x0="600" y0="300" x1="700" y1="400"/></pin>
+    <pin name="ball"><polygon points="800,500 850,550 800,600 750,550"/></pin>
+  </net>
+</layout>
+)");
+  const auto r = run_taut({"voronoi", dir + "/s.xml", "--json", "-o", dir + "/cells.xml"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("s.xml:7: warning: [VORONOI-0002] pin \"pad\" of net \"n\" is a shape that cannot be a Voronoi site: it "
+                       "touches or overlaps a blockage; it is left out"),
+            std::string::npos)
+      << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["sites"].size(), 3u);
+  EXPECT_EQ(j["sites"][1]["area_exact"], "0");
+  // The ball's region holds the ball: its area is at least the ball's (5,000).
+  EXPECT_GT(j["sites"][2]["area"].get<double>(), 5000.0);
+  const std::vector<Point> sites = {{100, 100}, {600, 300}, {800, 500}};
+  const std::vector<std::pair<std::size_t, geom::Polygon>> shapes = {
+      {2, geom::Polygon{{{800, 500}, {850, 550}, {800, 600}, {750, 550}}, {}}}};
+  EXPECT_GT(check_cells(dir + "/s.xml", dir + "/cells.xml", sites, 25, shapes, {1}), 500);
 }
 
 TEST(Voronoi, BadInputIsRefusedAndWritesNothing) {

@@ -49,19 +49,6 @@ struct Tally {
   i64 instances = 0, skipped = 0, queries = 0, reached = 0, from_segment = 0, inside_segment = 0, scaled = 0;
 };
 
-// The least reference distance from any of the points to each query (nullopt: none reaches it).
-std::vector<std::optional<i64>> least(const oracle::L1Reference& ref, const std::vector<Point>& from,
-                                      const std::vector<Point>& queries) {
-  std::vector<std::optional<i64>> best(queries.size());
-  for (const Point p : from) {
-    if (!ref.is_free(p)) continue;
-    const auto d = ref.distances(p, queries);
-    for (std::size_t i = 0; i < queries.size(); ++i)
-      if (d[i] && (!best[i] || *d[i] < *best[i])) best[i] = d[i];
-  }
-  return best;
-}
-
 std::string check_seed(std::uint64_t seed, Tally& tally) {
   WavefrontCase c;
   try {
@@ -115,8 +102,8 @@ std::string check_seed(std::uint64_t seed, Tally& tally) {
   }
   // The reference: every lattice point of each source.
   std::vector<std::vector<std::optional<i64>>> per_source;  // [source][query]
-  for (const Point p : points) per_source.push_back(least(ref, {p}, queries));
-  for (const auto& s : segs) per_source.push_back(least(ref, lattice_points(s), queries));
+  for (const Point p : points) per_source.push_back(least_distances(ref, {p}, queries));
+  for (const auto& s : segs) per_source.push_back(least_distances(ref, lattice_points(s), queries));
 
   std::string head = "seed " + std::to_string(seed) + " (family " + c.family + ")\n  segments";
   for (const auto& s : segs) head += " " + spm_pt(s.a) + "-" + spm_pt(s.b);
@@ -174,7 +161,7 @@ std::string check_seed(std::uint64_t seed, Tally& tally) {
     std::vector<Point> q2;
     for (const Point q : queries) q2.push_back(twice(q));
     for (std::size_t k = 0; k < segs.size(); ++k) {
-      const auto d2 = least(ref2, lattice_points({twice(segs[k].a), twice(segs[k].b)}), q2);
+      const auto d2 = least_distances(ref2, lattice_points({twice(segs[k].a), twice(segs[k].b)}), q2);
       for (std::size_t i = 0; i < queries.size(); ++i) {
         const auto& d1 = per_source[points.size() + k][i];
         if (d2[i].has_value() != d1.has_value() || (d1 && *d2[i] != 2 * *d1))
@@ -190,14 +177,7 @@ std::string check_seed(std::uint64_t seed, Tally& tally) {
 
 TEST(SegmentSources, MatchTheReferenceOnRandomLayouts) {
   Tally t;
-  if (const char* s = std::getenv("TAUT_SEGMENT_SOURCE_SEED")) {
-    run_spm_seeds({std::strtoull(s, nullptr, 10)}, [&](std::uint64_t seed) { return check_seed(seed, t); },
-                  "TAUT_SEGMENT_SOURCE_SEED");
-    return;
-  }
-  std::vector<std::uint64_t> seeds;
-  for (std::int64_t s = 1; s <= sanitized_share(1000, 4); ++s) seeds.push_back(static_cast<std::uint64_t>(s));
-  run_spm_seeds(seeds, [&](std::uint64_t seed) { return check_seed(seed, t); }, "TAUT_SEGMENT_SOURCE_SEED");
+  if (!run_seed_range("TAUT_SEGMENT_SOURCE_SEED", 1000, [&](std::uint64_t seed) { return check_seed(seed, t); })) return;
   std::cout << "instances " << t.instances << " (skipped " << t.skipped << ", scaled " << t.scaled << "), queries "
             << t.queries << ": reached " << t.reached << ", from a segment " << t.from_segment
             << " (leaving it between its ends " << t.inside_segment << ")\n";

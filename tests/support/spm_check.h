@@ -17,6 +17,7 @@
 #pragma once
 
 #include <cstdint>
+#include <cstdlib>
 #include <functional>
 #include <optional>
 #include <random>
@@ -261,6 +262,21 @@ int grid_map_reference_mismatches(const GridMapCase& g) {
   return mismatches;
 }
 
+// The least reference distance from any of the points (free ones) to each target; nullopt: none
+// reaches it.
+template <class Ref>
+std::vector<std::optional<std::int64_t>> least_distances(const Ref& ref, const std::vector<geom::Point>& from,
+                                                         const std::vector<geom::Point>& targets) {
+  std::vector<std::optional<std::int64_t>> best(targets.size());
+  for (const geom::Point p : from) {
+    if (!ref.is_free(p)) continue;
+    const auto d = ref.distances(p, targets);
+    for (std::size_t i = 0; i < targets.size(); ++i)
+      if (d[i] && (!best[i] || *d[i] < *best[i])) best[i] = d[i];
+  }
+  return best;
+}
+
 // The seeds of the random tests: 1..1000 and 100 of the larger instances (a quarter of each
 // under the sanitizers, support/sanitized.h).
 inline std::vector<std::uint64_t> spm_seed_list() {
@@ -287,6 +303,20 @@ inline void run_spm_seeds(const std::vector<std::uint64_t>& seeds, const std::fu
     for (std::size_t i = 0; i < failed.size() && i < 30; ++i) list += std::to_string(failed[i]) + " ";
     ADD_FAILURE() << failed.size() << " failing seeds: " << list << "(" << env << "=N reruns one)";
   }
+}
+
+// Seeds 1..n (a quarter of them under the sanitizers) through check, or only the seed the
+// environment variable `env` names. False when it named one (the caller's totals then mean
+// nothing and its thresholds are skipped).
+inline bool run_seed_range(const char* env, std::int64_t n, const std::function<std::string(std::uint64_t)>& check) {
+  if (const char* s = std::getenv(env)) {
+    run_spm_seeds({std::strtoull(s, nullptr, 10)}, check, env);
+    return false;
+  }
+  std::vector<std::uint64_t> seeds;
+  for (std::int64_t s = 1; s <= sanitized_share(n, 4); ++s) seeds.push_back(static_cast<std::uint64_t>(s));
+  run_spm_seeds(seeds, check, env);
+  return true;
 }
 
 }  // namespace taut::test
