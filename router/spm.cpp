@@ -833,6 +833,8 @@ struct Decomp {
           }
         // Keep a flat unless another covers its whole range for no more.
         auto& tf = trap_flats[d->trap];
+        if (flats.size() + fout.size() >= std::numeric_limits<uint32_t>::max())
+          throw std::length_error("the shortest path map needs more than 2^32 flat rays");
         tf[l2r ? 0 : 2] = static_cast<uint32_t>(flats.size());
         for (std::size_t a = 0; a < fout.size(); ++a) {
           bool covered = false;
@@ -1324,6 +1326,7 @@ struct Decomp {
     return P.capacity() * sizeof(Point) + src_at.capacity() * sizeof(uint32_t) + edges.capacity() * sizeof(Edge) +
            traps.capacity() * sizeof(Trap) + rays.capacity() * sizeof(Ray) + roots.capacity() * sizeof(Root) +
            root_begin.capacity() * sizeof(uint32_t) + vertex_free.capacity() / 8 + pset.bytes() +
+           flats.capacity() * sizeof(Flat) + trap_flats.capacity() * sizeof(trap_flats[0]) +
            (above_begin.capacity() + above.capacity() + x_first.capacity() + cell_begin.capacity() +
             cell_traps.capacity()) * sizeof(uint32_t) + cell_complete.capacity() / 8;
   }
@@ -1380,32 +1383,24 @@ struct ShapeSet {
   std::vector<geom::Segment> edges;      // every ring edge, as segment sources
   std::vector<uint32_t> edge_shape;      // per edge: its shape
 };
-std::string shape_problem_of(const geom::Box& domain, std::span<const Polygon> obstacles, std::span<const Polygon> shapes,
-                             ShapeSet* out) {
-  ShapeSet set;
-  for (std::size_t k = 0; k < shapes.size(); ++k) {
-    const std::string name = "shape source " + std::to_string(k);
-    if (!shapes[k].holes.empty()) return name + " has holes";
-    for (const Point p : shapes[k].outer)
-      if (p.x <= domain.lo.x || p.x >= domain.hi.x || p.y <= domain.lo.y || p.y >= domain.hi.y)
-        return name + " does not lie inside the domain (off its sides)";
-    const Polygon one[1] = {shapes[k]};
-    geom::NormalizedObstacles n = geom::normalize_obstacles(one, domain);
-    if (n.obstacles.size() != 1 || !n.obstacles[0].holes.empty() ||
-        geom::twice_area(n.obstacles[0].outer) != geom::twice_area(shapes[k].outer) * (geom::twice_area(shapes[k].outer) < 0 ? -1 : 1))
-      return name + " is not a simple polygon";
-    const geom::Ring& r = n.obstacles[0].outer;
-    for (std::size_t i = 0; i < r.size(); ++i) {
-      const Point a = r[i], b = r[(i + 1) % r.size()];
-      const i64 dx = i64{b.x} - a.x, dy = i64{b.y} - a.y;
-      if (dx != 0 && dy != 0 && dx != dy && dx != -dy) return name + " has an edge that is not horizontal, vertical or at 45 degrees";
-      set.edges.push_back({a, b});
-      set.edge_shape.push_back(static_cast<uint32_t>(k));
+// Per shape, in order: why it cannot be a source ("" when it can) beside the blockages, the
+// shapes before it that can, and the points given (a point on or in a shape would not be free).
+// Cost: linear box scans, O(k (n + k)) box tests for k shapes and n obstacles, and exact tests
+// only where boxes meet.
+std::vector<std::string> shape_problems_of(const geom::Box& domain, std::span<const Polygon> obstacles,
+                                           std::span<const Polygon> shapes, std::span<const Point> points, ShapeSet* out) {
+  auto box_of = [](const Polygon& p) {
+    geom::Box b{p.outer[0], p.outer[0]};
+    for (const Point q : p.outer) {
+      b.lo = {std::min(b.lo.x, q.x), std::min(b.lo.y, q.y)};
+      b.hi = {std::max(b.hi.x, q.x), std::max(b.hi.y, q.y)};
     }
-    set.rings.push_back(std::move(n.obstacles[0]));
-  }
-  // No common point with an obstacle or another shape: no two edges meet, and no vertex of one
-  // lies inside the other.
+    return b;
+  };
+  auto boxes_meet = [](const geom::Box& a, const geom::Box& b) {
+    return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y;
+  };
+  // No common point: no two edges meet, and no vertex of one lies inside the other.
   auto apart = [](const Polygon& a, const Polygon& b) {
     auto rings = [](const Polygon& p) {
       std::vector<const geom::Ring*> v{&p.outer};
@@ -1421,28 +1416,59 @@ std::string shape_problem_of(const geom::Box& domain, std::span<const Polygon> o
               return false;
     return geom::locate(a.outer[0], b) == geom::Location::Outside && geom::locate(b.outer[0], a) == geom::Location::Outside;
   };
-  auto box_of = [](const Polygon& p) {
-    geom::Box b{p.outer[0], p.outer[0]};
-    for (const Point q : p.outer) {
-      b.lo = {std::min(b.lo.x, q.x), std::min(b.lo.y, q.y)};
-      b.hi = {std::max(b.hi.x, q.x), std::max(b.hi.y, q.y)};
+  std::vector<geom::Box> obstacle_boxes;
+  for (const Polygon& o : obstacles) obstacle_boxes.push_back(box_of(o));
+  ShapeSet set;
+  std::vector<geom::Box> taken_boxes;
+  std::vector<std::size_t> taken_index;  // the input index of each taken shape
+  std::vector<std::string> why(shapes.size());
+  for (std::size_t k = 0; k < shapes.size(); ++k) {
+    std::string& w = why[k];
+    if (shapes[k].outer.size() < 3 || !shapes[k].holes.empty()) {
+      w = "it is not a polygon without holes";
+      continue;
     }
-    return b;
-  };
-  auto boxes_meet = [](const geom::Box& a, const geom::Box& b) {
-    return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y;
-  };
-  for (std::size_t k = 0; k < set.rings.size(); ++k) {
-    const geom::Box bk = box_of(set.rings[k]);
-    for (const Polygon& o : obstacles)
-      if (boxes_meet(bk, box_of(o)) && !apart(set.rings[k], o))
-        return "shape source " + std::to_string(k) + " touches or overlaps a blockage";
-    for (std::size_t j = 0; j < k; ++j)
-      if (boxes_meet(bk, box_of(set.rings[j])) && !apart(set.rings[k], set.rings[j]))
-        return "shape sources " + std::to_string(j) + " and " + std::to_string(k) + " touch or overlap";
+    bool inside = true;
+    for (const Point p : shapes[k].outer)
+      inside = inside && p.x > domain.lo.x && p.x < domain.hi.x && p.y > domain.lo.y && p.y < domain.hi.y;
+    if (!inside) {
+      w = "it does not lie inside the domain off its sides";
+      continue;
+    }
+    const Polygon one[1] = {shapes[k]};
+    geom::NormalizedObstacles n = geom::normalize_obstacles(one, domain);
+    const geom::i128 a2 = geom::twice_area(shapes[k].outer);
+    if (n.obstacles.size() != 1 || !n.obstacles[0].holes.empty() || geom::twice_area(n.obstacles[0].outer) != (a2 < 0 ? -a2 : a2)) {
+      w = "it is not a simple polygon";
+      continue;
+    }
+    const Polygon& ring = n.obstacles[0];
+    for (std::size_t i = 0; i < ring.outer.size() && w.empty(); ++i) {
+      const Point a = ring.outer[i], b = ring.outer[(i + 1) % ring.outer.size()];
+      const i64 dx = i64{b.x} - a.x, dy = i64{b.y} - a.y;
+      if (dx != 0 && dy != 0 && dx != dy && dx != -dy) w = "it has an edge that is not horizontal, vertical or at 45 degrees";
+    }
+    if (!w.empty()) continue;
+    const geom::Box bk = box_of(ring);
+    for (std::size_t o = 0; o < obstacles.size() && w.empty(); ++o)
+      if (boxes_meet(bk, obstacle_boxes[o]) && !apart(ring, obstacles[o])) w = "it touches or overlaps a blockage";
+    for (std::size_t t = 0; t < set.rings.size() && w.empty(); ++t)
+      if (boxes_meet(bk, taken_boxes[t]) && !apart(ring, set.rings[t]))
+        w = "it touches or overlaps shape source " + std::to_string(taken_index[t]);
+    for (std::size_t p = 0; p < points.size() && w.empty(); ++p)
+      if (geom::locate(points[p], ring) != geom::Location::Outside)
+        w = "point source " + std::to_string(p) + " lies on or in it";
+    if (!w.empty()) continue;
+    for (std::size_t i = 0; i < ring.outer.size(); ++i) {
+      set.edges.push_back({ring.outer[i], ring.outer[(i + 1) % ring.outer.size()]});
+      set.edge_shape.push_back(static_cast<uint32_t>(set.rings.size()));
+    }
+    set.rings.push_back(ring);
+    taken_boxes.push_back(bk);
+    taken_index.push_back(k);
   }
   if (out) *out = std::move(set);
-  return "";
+  return why;
 }
 
 struct L1Map::Impl {
@@ -1452,8 +1478,9 @@ struct L1Map::Impl {
   Decomp<i64> dec;
   static ShapeSet checked(const geom::Box& domain, std::span<const Polygon> obstacles, std::span<const Polygon> shapes) {
     ShapeSet set;
-    if (const std::string why = shape_problem_of(domain, obstacles, shapes, &set); !why.empty())
-      throw std::invalid_argument(why);
+    const auto why = shape_problems_of(domain, obstacles, shapes, {}, &set);
+    for (std::size_t k = 0; k < why.size(); ++k)
+      if (!why[k].empty()) throw std::invalid_argument("shape source " + std::to_string(k) + ": " + why[k]);
     return set;
   }
   static L1Wavefront ran_with(const geom::Box& domain, std::span<const Polygon> obstacles, std::span<const Point> sources,
@@ -1510,8 +1537,15 @@ L1Map::L1Map(const geom::Box& domain, std::span<const Polygon> obstacles, std::s
 L1Map::L1Map(const geom::Box& domain, std::span<const Polygon> obstacles, std::span<const Point> sources,
              std::span<const Polygon> shapes, Options options)
     : impl_(std::make_unique<Impl>(domain, obstacles, sources, shapes, options.grid)) {}
+std::vector<std::string> L1Map::shape_problems(const geom::Box& domain, std::span<const Polygon> obstacles,
+                                               std::span<const Polygon> shapes, std::span<const Point> points) {
+  return shape_problems_of(domain, obstacles, shapes, points, nullptr);
+}
 std::string L1Map::shape_problem(const geom::Box& domain, std::span<const Polygon> obstacles, std::span<const Polygon> shapes) {
-  return shape_problem_of(domain, obstacles, shapes, nullptr);
+  const auto why = shape_problems_of(domain, obstacles, shapes, {}, nullptr);
+  for (std::size_t k = 0; k < why.size(); ++k)
+    if (!why[k].empty()) return "shape source " + std::to_string(k) + ": " + why[k];
+  return "";
 }
 L1Map::~L1Map() = default;
 L1Map::L1Map(L1Map&&) noexcept = default;

@@ -57,7 +57,10 @@
 // (K plus the horizontal distance, for y in a range), carried from side to side like the
 // staircases and clipped to each side's range (their ends are the side's own corners, or
 // blockage edges). An answer from a front or a flat names the foot on the shape (root_id
-// kFootRoot; the foot sees the query straight); on a tie a root is preferred.
+// kFootRoot; the foot sees the query straight); on a tie a root is preferred. Cost: a query
+// also scans the flats of its trapezoid's two sides, one per vertical shape side it sees
+// straight across (a column of n pads facing one open region: O(n) there), so the O(log n)
+// query bound above holds for maps without shape sources.
 //
 // Exactness. Values are integers; thresholds are the heights where walls meet sloped edges,
 // exact rationals. Degeneracies (shared x, vertical edges, several vertices on one wall) are
@@ -122,9 +125,16 @@ class L1Map {
   L1Map(const geom::Box& domain, std::span<const geom::Polygon> obstacles,
         std::span<const geom::Point> sources, std::span<const geom::Polygon> shapes)
       : L1Map(domain, obstacles, sources, shapes, Options{}) {}
-  // Why the shapes cannot be sources of a map on these obstacles ("" when they can).
+  // Why the shapes cannot be sources of a map on these obstacles ("" when they can): the first
+  // problem, naming its shape ("shape source k: it touches or overlaps a blockage").
   static std::string shape_problem(const geom::Box& domain, std::span<const geom::Polygon> obstacles,
                                    std::span<const geom::Polygon> shapes);
+  // Per shape, in order, why it cannot be a source beside the obstacles, the shapes before it
+  // that can, and `points` (point sources: one on or in a shape would not be free); "" for
+  // those that can. For choosing the shapes to pass (taut voronoi leaves the others out).
+  static std::vector<std::string> shape_problems(const geom::Box& domain, std::span<const geom::Polygon> obstacles,
+                                                 std::span<const geom::Polygon> shapes,
+                                                 std::span<const geom::Point> points = {});
   static constexpr std::uint32_t kFootRoot = 0xFFFFFFFEu;
   // The shape sources as the map holds them (cleaned: one counter-clockwise outer ring each,
   // in the order given), and shape k's source index (the number of point sources + k).
@@ -187,7 +197,8 @@ class L1Map {
     std::int64_t vertices = 0;    // decomposition points (obstacle vertices, frame, sources)
     std::int64_t trapezoids = 0;  // free trapezoids (cells of the map before merging by root)
     std::int64_t rays = 0;        // staircase entries over all trapezoid sides
-    std::int64_t roots = 0;       // (vertex, wedge) roots and sources carrying a ray
+    std::int64_t roots = 0;       // (vertex, wedge) roots and sources carrying a ray, and the
+                                  // points of shape sides on walls (shape sources)
     std::int64_t location_nodes = 0;  // nodes of the persistent search tree (point location)
   };
   const Stats& stats() const;

@@ -209,23 +209,40 @@ void add_voronoi(CLI::App& app, int& status) {
         point_sites.push_back(sites[i].p);
         map_site.push_back(i);
       }
-    for (std::size_t i = 0; i < sites.size(); ++i) {
-      if (!sites[i].shape) continue;
-      std::vector<geom::Polygon> more = shape_sites;
-      more.push_back(*sites[i].shape);
-      if (std::string why = router::L1Map::shape_problem(norm.domain, norm.obstacles, more); !why.empty()) {
-        if (why.rfind("shape sources ", 0) == 0)  // "shape sources j and k touch": name the pins
-          why = "it touches or overlaps another shape pin";
-        else if (const auto at = why.find(' ', std::string("shape source ").size()); why.rfind("shape source ", 0) == 0 && at != std::string::npos)
-          why = "it" + why.substr(at);
-        if (!args->load.quiet)
-          print_diagnostics({Diagnostic{Severity::Warning, "VORONOI-0002", args->file, sites[i].line, 0,
-                                        "pin \"" + sites[i].pin + "\" of net \"" + sites[i].net +
-                                            "\" is a shape that cannot be a Voronoi site: " + why + "; it is left out"}});
+    std::vector<geom::Polygon> wanted;
+    std::vector<std::size_t> wanted_site;
+    for (std::size_t i = 0; i < sites.size(); ++i)
+      if (sites[i].shape) {
+        wanted.push_back(*sites[i].shape);
+        wanted_site.push_back(i);
+      }
+    const std::vector<std::string> why = router::L1Map::shape_problems(norm.domain, norm.obstacles, wanted, point_sites);
+    for (std::size_t k = 0; k < wanted.size(); ++k) {
+      const std::size_t i = wanted_site[k];
+      if (why[k].empty()) {
+        shape_sites.push_back(wanted[k]);
+        shape_site.push_back(i);
         continue;
       }
-      shape_sites.push_back(*sites[i].shape);
-      shape_site.push_back(i);
+      // Name the other pin: "shape source j" is wanted[j], "point source p" point_sites[p].
+      std::string reason = why[k];
+      auto rename = [&](const std::string& word, const std::vector<std::size_t>& site_of) {
+        const auto at = reason.find(word);
+        if (at == std::string::npos) return;
+        const std::size_t end = reason.find(' ', at + word.size());
+        const std::size_t n = std::stoul(reason.substr(at + word.size(), end - at - word.size()));
+        const Site& o = sites[site_of[n]];
+        reason.replace(at, end - at, "pin \"" + o.pin + "\" of net \"" + o.net + "\"");
+      };
+      rename("shape source ", wanted_site);
+      std::vector<std::size_t> point_site;
+      for (std::size_t t = 0; t < sites.size(); ++t)
+        if (!sites[t].shape) point_site.push_back(t);
+      rename("point source ", point_site);
+      if (!args->load.quiet)
+        print_diagnostics({Diagnostic{Severity::Warning, "VORONOI-0002", args->file, sites[i].line, 0,
+                                      "pin \"" + sites[i].pin + "\" of net \"" + sites[i].net +
+                                          "\" is a shape that cannot be a Voronoi site: " + reason + "; it is left out"}});
     }
     for (const std::size_t i : shape_site) map_site.push_back(i);
     const router::L1Map map(norm.domain, norm.obstacles, point_sites, shape_sites);

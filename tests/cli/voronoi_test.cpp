@@ -279,6 +279,9 @@ TEST(Voronoi, ShapePinTouchingABlockageIsLeftOut) {
     <pin name="a" x="100" y="100"/>
     <pin name="pad"><rect x0="600" y0="300" x1="700" y1="400"/></pin>
     <pin name="ball"><polygon points="800,500 850,550 800,600 750,550"/></pin>
+    <pin name="b" x="900" y="100"/>
+    <pin name="pad2"><rect x0="100" y0="800" x1="200" y1="900"/></pin>
+    <pin name="c" x="150" y="900"/>
   </net>
 </layout>
 )");
@@ -288,15 +291,23 @@ TEST(Voronoi, ShapePinTouchingABlockageIsLeftOut) {
                        "touches or overlaps a blockage; it is left out"),
             std::string::npos)
       << r.err;
+  // pad2 has point pin c on its edge: left out too, naming c.
+  EXPECT_NE(r.err.find("pin \"pad2\" of net \"n\" is a shape that cannot be a Voronoi site: pin \"c\" of net \"n\" lies on or "
+                       "in it; it is left out"),
+            std::string::npos)
+      << r.err;
   const auto j = nlohmann::json::parse(r.out);
-  ASSERT_EQ(j["sites"].size(), 3u);
+  ASSERT_EQ(j["sites"].size(), 6u);
   EXPECT_EQ(j["sites"][1]["area_exact"], "0");
-  // The ball's region holds the ball: its area is at least the ball's (5,000).
+  EXPECT_EQ(j["sites"][4]["area_exact"], "0");
+  // The ball's region holds the ball: its area is at least the ball's (5,000). Point pin b comes
+  // after the ball in the file and keeps its own region (the map lists points before shapes).
   EXPECT_GT(j["sites"][2]["area"].get<double>(), 5000.0);
-  const std::vector<Point> sites = {{100, 100}, {600, 300}, {800, 500}};
+  EXPECT_GT(j["sites"][3]["area"].get<double>(), 0.0);
+  const std::vector<Point> sites = {{100, 100}, {600, 300}, {800, 500}, {900, 100}, {100, 800}, {150, 900}};
   const std::vector<std::pair<std::size_t, geom::Polygon>> shapes = {
       {2, geom::Polygon{{{800, 500}, {850, 550}, {800, 600}, {750, 550}}, {}}}};
-  EXPECT_GT(check_cells(dir + "/s.xml", dir + "/cells.xml", sites, 25, shapes, {1}), 500);
+  EXPECT_GT(check_cells(dir + "/s.xml", dir + "/cells.xml", sites, 25, shapes, {1, 4}), 500);
 }
 
 TEST(Voronoi, BadInputIsRefusedAndWritesNothing) {

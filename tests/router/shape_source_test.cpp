@@ -75,6 +75,7 @@ std::string check_seed(std::uint64_t seed, Tally& tally) {
     const int s = static_cast<int>(1 + pick(static_cast<std::size_t>(std::clamp<i64>(span / 20, 1, 6))));
     std::vector<geom::Polygon> more = shapes;
     more.push_back(shape_at(p, s, static_cast<int>(pick(4))));
+    if (pick(3) == 0) std::reverse(more.back().outer.begin(), more.back().outer.end());  // clockwise: cleaned
     if (router::L1Map::shape_problem(D, c.obstacles, more).empty()) shapes = std::move(more);
   }
   if (shapes.empty()) {
@@ -218,6 +219,10 @@ std::string check_seed(std::uint64_t seed, Tally& tally) {
           if (pc.source >= per_source.size() || per_source[pc.source][i] != best)
             return head + "  query " + spm_pt(q) + " lies in a piece of source " + std::to_string(pc.source) + ", not a nearest" +
                    piece_text() + "\n";
+          // the cells and locate() settle ties alike (voronoi.h: a point goes where locate sends it)
+          if (const auto a = map->locate(q); !a || a->source != pc.source)
+            return head + "  query " + spm_pt(q) + " lies in a piece of source " + std::to_string(pc.source) +
+                   ", locate() names another" + piece_text() + "\n";
           if (detail != router::L1Map::Detail::ByRoot) continue;
           i64 formula;
           if (pc.root_segment) {
@@ -261,15 +266,22 @@ TEST(ShapeSources, RefusesShapesThatTouch) {
   const std::vector<geom::Polygon> obs = {{{{40, 40}, {60, 40}, {60, 60}, {40, 60}}, {}}};
   auto problem = [&](std::vector<geom::Polygon> shapes) { return router::L1Map::shape_problem(dom, obs, shapes); };
   EXPECT_EQ(problem({{{{10, 10}, {20, 10}, {20, 20}, {10, 20}}, {}}}), "");
-  EXPECT_NE(problem({{{{30, 40}, {40, 40}, {40, 50}, {30, 50}}, {}}}).find("touches or overlaps a blockage"), std::string::npos);
+  EXPECT_EQ(problem({{{{30, 40}, {40, 40}, {40, 50}, {30, 50}}, {}}}), "shape source 0: it touches or overlaps a blockage");
   EXPECT_NE(problem({{{{45, 45}, {50, 45}, {50, 50}, {45, 50}}, {}}}).find("touches or overlaps a blockage"), std::string::npos);
   EXPECT_NE(problem({{{{10, 10}, {20, 10}, {20, 20}, {10, 20}}, {}}, {{{20, 20}, {30, 20}, {30, 30}, {20, 30}}, {}}})
-                .find("shape sources 0 and 1 touch or overlap"),
+                .find("shape source 1: it touches or overlaps shape source 0"),
             std::string::npos);
   EXPECT_NE(problem({{{{0, 10}, {20, 10}, {20, 20}, {0, 20}}, {}}}).find("inside the domain"), std::string::npos);
   EXPECT_NE(problem({{{{10, 10}, {20, 10}, {22, 15}, {10, 20}}, {}}}).find("45 degrees"), std::string::npos);
   EXPECT_THROW(router::L1Map(dom, obs, {}, std::vector<geom::Polygon>{{{{30, 40}, {40, 40}, {40, 50}, {30, 50}}, {}}}),
                std::invalid_argument);
+  // Greedy, per shape: the second of two touching shapes is refused, the first taken; a point
+  // source on a shape refuses it.
+  const std::vector<geom::Polygon> two = {{{{10, 10}, {20, 10}, {20, 20}, {10, 20}}, {}}, {{{20, 20}, {30, 20}, {30, 30}, {20, 30}}, {}},
+                                          {{{70, 70}, {80, 70}, {80, 80}, {70, 80}}, {}}};
+  const std::vector<Point> pts = {{75, 80}};
+  EXPECT_EQ(router::L1Map::shape_problems(dom, obs, two, pts),
+            (std::vector<std::string>{"", "it touches or overlaps shape source 0", "point source 0 lies on or in it"}));
 }
 
 // Worked by hand: a pad x in [10, 20], y in [10, 14]; a wall x in [30, 32], y in [0, 30].
