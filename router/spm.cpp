@@ -963,6 +963,35 @@ struct Decomp {
     return trap_above(pset.below(k, q, true));
   }
 
+  // The shape sides trapezoid i sees straight, as linear candidates (value gx x + gy y + c, root
+  // kFootRoot): the fronts of its bottom and top edges when they are a shape's horizontal or
+  // 45-degree sides (over all of it: f(c, -, -, false)), then the flats of its left and right
+  // sides (for y in [lo, hi]: f(c, lo, hi, true)). L1 maps only (V = i64).
+  template <class F>
+  void side_candidates(uint32_t i, F&& f) const {
+    if (!has_shapes) return;
+    const Trap& t = traps[i];
+    for (const bool bottom : {true, false}) {
+      const Edge& e = edges[bottom ? t.bot : t.top];
+      const Point a = P[e.l], b = P[e.r];
+      if (e.src == kNone || a.x == b.x) continue;
+      const int sl = static_cast<int>((i64{b.y} - a.y) / (i64{b.x} - a.x));  // 0 or +-1
+      // bottom: y - (a.y + sl (x - a.x)); top: the opposite
+      const int sg = bottom ? 1 : -1;
+      f(Cand{-sg * sl, sg, sg * (i64{sl} * a.x - a.y), kFootRoot, e.src, {a, b}}, Q{}, Q{}, false);
+    }
+    const auto& tf = trap_flats[i];
+    for (int side = 0; side < 2; ++side)
+      for (uint32_t k = tf[2 * side]; k < tf[2 * side + 1]; ++k) {
+        const Flat& fl = flats[k];
+        const i64 x0 = side == 0 ? i64{t.pl.x} - fl.K : i64{t.pr.x} + fl.K;  // the vertical side's x
+        const Point s0{static_cast<geom::Coord>(x0), static_cast<geom::Coord>(floor_of(fl.lo))};
+        const Point s1{static_cast<geom::Coord>(x0), static_cast<geom::Coord>(ceil_of(fl.hi))};
+        // side 0: K + (x - pl.x) = x - x0; side 1: x0 - x
+        f(Cand{side == 0 ? 1 : -1, 0, side == 0 ? -x0 : x0, kFootRoot, fl.src, {s0, s1}}, fl.lo, fl.hi, true);
+      }
+  }
+
   // The answer at a point: its value and root, or (root kFootRoot) the foot on a shape source
   // that sees it straight and that source.
   struct Best {
@@ -1012,27 +1041,19 @@ struct Decomp {
       auto foot = [&](i64 v, Point f, uint32_t src) {
         if (!out || v < out->value) out = Best{v, kFootRoot, f, src};
       };
-      // Fronts: straight down to a shape's bottom edge, or up to its top edge (0 or 45 degrees).
-      for (const bool bottom : {true, false}) {
-        const Edge& e = edges[bottom ? t.bot : t.top];
-        if (e.src == kNone) continue;
-        const Point a = P[e.l], b = P[e.r];
-        if (a.x == b.x) {  // a vertical edge bounds only trapezoids of width 0: q on it, or not
-          if (q.x == a.x && a.y <= q.y && q.y <= b.y) foot(0, q, e.src);
-          continue;
-        }
-        const i64 ye = i64{a.y} + (i64{b.y} - a.y) / (i64{b.x} - a.x) * (i64{q.x} - a.x);
-        foot(bottom ? q.y - ye : ye - q.y, Point{q.x, static_cast<geom::Coord>(ye)}, e.src);
+      // A vertical side bounds only trapezoids of width 0: q on it, or not.
+      for (const uint32_t e : {t.bot, t.top}) {
+        const Point a = P[edges[e].l], b = P[edges[e].r];
+        if (edges[e].src != kNone && a.x == b.x && q.x == a.x && a.y <= q.y && q.y <= b.y) foot(0, q, edges[e].src);
       }
-      // Flats: straight across to a shape's vertical edge.
-      const auto& tf = trap_flats[i];
-      for (int side = 0; side < 2; ++side)
-        for (uint32_t k = tf[2 * side]; k < tf[2 * side + 1]; ++k) {
-          const Flat& f = flats[k];
-          if (cmp(f.lo, y) > 0 || cmp(y, f.hi) > 0) continue;
-          const i64 x0 = side == 0 ? i64{t.pl.x} - f.K : i64{t.pr.x} + f.K;  // the edge's x
-          foot(f.K + (side == 0 ? i64{q.x} - t.pl.x : i64{t.pr.x} - q.x), Point{static_cast<geom::Coord>(x0), q.y}, f.src);
-        }
+      // The fronts and flats: the foot lies straight down or up (a front), or across (a flat).
+      side_candidates(i, [&](const Cand& c, Q lo, Q hi, bool ranged) {
+        if (ranged && (cmp(lo, y) > 0 || cmp(y, hi) > 0)) return;
+        const i64 v = c.gx * i64{q.x} + c.gy * i64{q.y} + c.c;
+        const Point f = c.gy != 0 ? Point{q.x, static_cast<geom::Coord>(q.y - c.gy * v)}
+                                  : Point{static_cast<geom::Coord>(q.x - c.gx * v), q.y};
+        foot(v, f, c.src);
+      });
     }
     return out;
   }
@@ -1134,27 +1155,12 @@ struct Decomp {
       Q lo, hi;
     };
     std::vector<FlatCand> flat_cands;
-    if (has_shapes) {
-      for (const bool bottom : {true, false}) {
-        const Edge& e = edges[bottom ? t.bot : t.top];
-        if (e.src == kNone) continue;
-        const Point a = P[e.l], b = P[e.r];
-        const int sl = static_cast<int>((i64{b.y} - a.y) / (i64{b.x} - a.x));  // 0 or +-1 (not vertical here)
-        // bottom: y - (a.y + sl (x - a.x)); top: the opposite
-        const int sg = bottom ? 1 : -1;
-        fronts.push_back({-sg * sl, sg, sg * (i64{sl} * a.x - a.y), kFootRoot, e.src, {a, b}});
-      }
-      const auto& tf = trap_flats[i];
-      for (int side = 0; side < 2; ++side)
-        for (uint32_t k = tf[2 * side]; k < tf[2 * side + 1]; ++k) {
-          const Flat& f = flats[k];
-          const i64 x0 = side == 0 ? i64{t.pl.x} - f.K : i64{t.pr.x} + f.K;
-          const Point s0{static_cast<geom::Coord>(x0), static_cast<geom::Coord>(floor_of(f.lo))};
-          const Point s1{static_cast<geom::Coord>(x0), static_cast<geom::Coord>(ceil_of(f.hi))};
-          // side 0: K + (x - pl.x) = x - x0; side 1: x0 - x
-          flat_cands.push_back({{side == 0 ? 1 : -1, 0, side == 0 ? -x0 : x0, kFootRoot, f.src, {s0, s1}}, f.lo, f.hi});
-        }
-    }
+    side_candidates(i, [&](const Cand& c, Q lo, Q hi, bool ranged) {
+      if (ranged)
+        flat_cands.push_back({c, lo, hi});
+      else
+        fronts.push_back(c);
+    });
     auto source_of = [&](const Cand& c) { return c.root == kFootRoot ? c.src : roots[c.root].source; };
     auto same = [&](const Cand& a, const Cand& b) {  // ByRoot: one root (or one straight front)
       return by_root ? a.root == b.root && (a.root != kFootRoot || (a.seg == b.seg && a.gx == b.gx && a.gy == b.gy))
