@@ -74,7 +74,7 @@ int main(int argc, char** argv) {
         const auto why = taut::router::L1Map::shape_problems(dom, lay.norm.obstacles, wanted);
         sites.clear();
         for (std::size_t i = 0; i < wanted.size(); ++i)
-          if (why[i].empty()) {
+          if (!why[i]) {
             squares.push_back(wanted[i]);
             sites.push_back(wanted[i].outer[0]);
           }

@@ -1393,7 +1393,7 @@ struct ShapeSet {
 // shapes before it that can, and the points given (a point on or in a shape would not be free).
 // Cost: linear box scans, O(k (n + k)) box tests for k shapes and n obstacles, and exact tests
 // only where boxes meet.
-std::vector<std::string> shape_problems_of(const geom::Box& domain, std::span<const Polygon> obstacles,
+std::vector<L1Map::ShapeProblem> shape_problems_of(const geom::Box& domain, std::span<const Polygon> obstacles,
                                            std::span<const Polygon> shapes, std::span<const Point> points, ShapeSet* out) {
   auto box_of = [](const Polygon& p) {
     geom::Box b{p.outer[0], p.outer[0]};
@@ -1427,44 +1427,43 @@ std::vector<std::string> shape_problems_of(const geom::Box& domain, std::span<co
   ShapeSet set;
   std::vector<geom::Box> taken_boxes;
   std::vector<std::size_t> taken_index;  // the input index of each taken shape
-  std::vector<std::string> why(shapes.size());
+  using Kind = L1Map::ShapeProblem::Kind;
+  std::vector<L1Map::ShapeProblem> why(shapes.size());
   for (std::size_t k = 0; k < shapes.size(); ++k) {
-    std::string& w = why[k];
+    L1Map::ShapeProblem& w = why[k];
     if (shapes[k].outer.size() < 3 || !shapes[k].holes.empty()) {
-      w = "it is not a polygon without holes";
+      w.kind = Kind::NotPolygon;
       continue;
     }
     bool inside = true;
     for (const Point p : shapes[k].outer)
       inside = inside && p.x > domain.lo.x && p.x < domain.hi.x && p.y > domain.lo.y && p.y < domain.hi.y;
     if (!inside) {
-      w = "it does not lie inside the domain off its sides";
+      w.kind = Kind::OffDomain;
       continue;
     }
     const Polygon one[1] = {shapes[k]};
     geom::NormalizedObstacles n = geom::normalize_obstacles(one, domain);
     const geom::i128 a2 = geom::twice_area(shapes[k].outer);
     if (n.obstacles.size() != 1 || !n.obstacles[0].holes.empty() || geom::twice_area(n.obstacles[0].outer) != (a2 < 0 ? -a2 : a2)) {
-      w = "it is not a simple polygon";
+      w.kind = Kind::NotSimple;
       continue;
     }
     const Polygon& ring = n.obstacles[0];
-    for (std::size_t i = 0; i < ring.outer.size() && w.empty(); ++i) {
+    for (std::size_t i = 0; i < ring.outer.size() && w.kind == Kind::None; ++i) {
       const Point a = ring.outer[i], b = ring.outer[(i + 1) % ring.outer.size()];
       const i64 dx = i64{b.x} - a.x, dy = i64{b.y} - a.y;
-      if (dx != 0 && dy != 0 && dx != dy && dx != -dy) w = "it has an edge that is not horizontal, vertical or at 45 degrees";
+      if (dx != 0 && dy != 0 && dx != dy && dx != -dy) w.kind = Kind::Angle;
     }
-    if (!w.empty()) continue;
+    if (w.kind != Kind::None) continue;
     const geom::Box bk = box_of(ring);
-    for (std::size_t o = 0; o < obstacles.size() && w.empty(); ++o)
-      if (boxes_meet(bk, obstacle_boxes[o]) && !apart(ring, obstacles[o])) w = "it touches or overlaps a blockage";
-    for (std::size_t t = 0; t < set.rings.size() && w.empty(); ++t)
-      if (boxes_meet(bk, taken_boxes[t]) && !apart(ring, set.rings[t]))
-        w = "it touches or overlaps shape source " + std::to_string(taken_index[t]);
-    for (std::size_t p = 0; p < points.size() && w.empty(); ++p)
-      if (geom::locate(points[p], ring) != geom::Location::Outside)
-        w = "point source " + std::to_string(p) + " lies on or in it";
-    if (!w.empty()) continue;
+    for (std::size_t o = 0; o < obstacles.size() && w.kind == Kind::None; ++o)
+      if (boxes_meet(bk, obstacle_boxes[o]) && !apart(ring, obstacles[o])) w.kind = Kind::Blockage;
+    for (std::size_t t = 0; t < set.rings.size() && w.kind == Kind::None; ++t)
+      if (boxes_meet(bk, taken_boxes[t]) && !apart(ring, set.rings[t])) w = {Kind::Shape, taken_index[t]};
+    for (std::size_t p = 0; p < points.size() && w.kind == Kind::None; ++p)
+      if (geom::locate(points[p], ring) != geom::Location::Outside) w = {Kind::Point, p};
+    if (w.kind != Kind::None) continue;
     for (std::size_t i = 0; i < ring.outer.size(); ++i) {
       set.edges.push_back({ring.outer[i], ring.outer[(i + 1) % ring.outer.size()]});
       set.edge_shape.push_back(static_cast<uint32_t>(set.rings.size()));
@@ -1486,7 +1485,7 @@ struct L1Map::Impl {
     ShapeSet set;
     const auto why = shape_problems_of(domain, obstacles, shapes, {}, &set);
     for (std::size_t k = 0; k < why.size(); ++k)
-      if (!why[k].empty()) throw std::invalid_argument("shape source " + std::to_string(k) + ": " + why[k]);
+      if (why[k]) throw std::invalid_argument("shape source " + std::to_string(k) + ": " + why[k].text());
     return set;
   }
   static L1Wavefront ran_with(const geom::Box& domain, std::span<const Polygon> obstacles, std::span<const Point> sources,
@@ -1543,14 +1542,27 @@ L1Map::L1Map(const geom::Box& domain, std::span<const Polygon> obstacles, std::s
 L1Map::L1Map(const geom::Box& domain, std::span<const Polygon> obstacles, std::span<const Point> sources,
              std::span<const Polygon> shapes, Options options)
     : impl_(std::make_unique<Impl>(domain, obstacles, sources, shapes, options.grid)) {}
-std::vector<std::string> L1Map::shape_problems(const geom::Box& domain, std::span<const Polygon> obstacles,
-                                               std::span<const Polygon> shapes, std::span<const Point> points) {
+std::vector<L1Map::ShapeProblem> L1Map::shape_problems(const geom::Box& domain, std::span<const Polygon> obstacles,
+                                                       std::span<const Polygon> shapes, std::span<const Point> points) {
   return shape_problems_of(domain, obstacles, shapes, points, nullptr);
+}
+std::string L1Map::ShapeProblem::text() const {
+  switch (kind) {
+    case Kind::None: return "";
+    case Kind::NotPolygon: return "it is not a polygon without holes";
+    case Kind::OffDomain: return "it does not lie inside the domain off its sides";
+    case Kind::NotSimple: return "it is not a simple polygon";
+    case Kind::Angle: return "it has an edge that is not horizontal, vertical or at 45 degrees";
+    case Kind::Blockage: return "it touches or overlaps a blockage";
+    case Kind::Shape: return "it touches or overlaps shape source " + std::to_string(other);
+    case Kind::Point: return "point source " + std::to_string(other) + " lies on or in it";
+  }
+  return "";
 }
 std::string L1Map::shape_problem(const geom::Box& domain, std::span<const Polygon> obstacles, std::span<const Polygon> shapes) {
   const auto why = shape_problems_of(domain, obstacles, shapes, {}, nullptr);
   for (std::size_t k = 0; k < why.size(); ++k)
-    if (!why[k].empty()) return "shape source " + std::to_string(k) + ": " + why[k];
+    if (why[k]) return "shape source " + std::to_string(k) + ": " + why[k].text();
   return "";
 }
 L1Map::~L1Map() = default;

@@ -130,11 +130,17 @@ class L1Map {
   static std::string shape_problem(const geom::Box& domain, std::span<const geom::Polygon> obstacles,
                                    std::span<const geom::Polygon> shapes);
   // Per shape, in order, why it cannot be a source beside the obstacles, the shapes before it
-  // that can, and `points` (point sources: one on or in a shape would not be free); "" for
-  // those that can. For choosing the shapes to pass (taut voronoi leaves the others out).
-  static std::vector<std::string> shape_problems(const geom::Box& domain, std::span<const geom::Polygon> obstacles,
-                                                 std::span<const geom::Polygon> shapes,
-                                                 std::span<const geom::Point> points = {});
+  // that can, and `points` (point sources: one on or in a shape would not be free); kind None
+  // for those that can. For choosing the shapes to pass (taut voronoi leaves the others out).
+  struct ShapeProblem {
+    enum class Kind { None, NotPolygon, OffDomain, NotSimple, Angle, Blockage, Shape, Point } kind = Kind::None;
+    std::size_t other = 0;  // Shape: the earlier shape it touches; Point: the point on or in it
+    explicit operator bool() const { return kind != Kind::None; }
+    std::string text() const;  // "it touches or overlaps a blockage", ...
+  };
+  static std::vector<ShapeProblem> shape_problems(const geom::Box& domain, std::span<const geom::Polygon> obstacles,
+                                                  std::span<const geom::Polygon> shapes,
+                                                  std::span<const geom::Point> points = {});
   static constexpr std::uint32_t kFootRoot = 0xFFFFFFFEu;
   // The shape sources as the map holds them (cleaned: one counter-clockwise outer ring each,
   // in the order given), and shape k's source index (the number of point sources + k).

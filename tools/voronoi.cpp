@@ -216,33 +216,24 @@ void add_voronoi(CLI::App& app, int& status) {
         wanted.push_back(*sites[i].shape);
         wanted_site.push_back(i);
       }
-    const std::vector<std::string> why = router::L1Map::shape_problems(norm.domain, norm.obstacles, wanted, point_sites);
+    const auto why = router::L1Map::shape_problems(norm.domain, norm.obstacles, wanted, point_sites);
     for (std::size_t k = 0; k < wanted.size(); ++k) {
       const std::size_t i = wanted_site[k];
-      if (why[k].empty()) {
+      using Kind = router::L1Map::ShapeProblem::Kind;
+      if (!why[k]) {
         shape_sites.push_back(wanted[k]);
         shape_site.push_back(i);
         continue;
       }
-      // Name the other pin: "shape source j" is wanted[j], "point source p" point_sites[p].
-      std::string reason = why[k];
-      auto rename = [&](const std::string& word, const std::vector<std::size_t>& site_of) {
-        const auto at = reason.find(word);
-        if (at == std::string::npos) return;
-        const std::size_t end = reason.find(' ', at + word.size());
-        const std::size_t n = std::stoul(reason.substr(at + word.size(), end - at - word.size()));
-        const Site& o = sites[site_of[n]];
-        reason.replace(at, end - at, "pin \"" + o.pin + "\" of net \"" + o.net + "\"");
-      };
-      rename("shape source ", wanted_site);
-      std::vector<std::size_t> point_site;
-      for (std::size_t t = 0; t < sites.size(); ++t)
-        if (!sites[t].shape) point_site.push_back(t);
-      rename("point source ", point_site);
+      auto pin_name = [&](std::size_t t) { return "pin \"" + sites[t].pin + "\" of net \"" + sites[t].net + "\""; };
+      // The other pin by name: an earlier shape (wanted[other]) or a point site (map_site: the
+      // point sites, in order).
+      const std::string reason = why[k].kind == Kind::Shape   ? "it touches or overlaps " + pin_name(wanted_site[why[k].other])
+                                 : why[k].kind == Kind::Point ? pin_name(map_site[why[k].other]) + " lies on or in it"
+                                                              : why[k].text();
       if (!args->load.quiet)
         print_diagnostics({Diagnostic{Severity::Warning, "VORONOI-0002", args->file, sites[i].line, 0,
-                                      "pin \"" + sites[i].pin + "\" of net \"" + sites[i].net +
-                                          "\" is a shape that cannot be a Voronoi site: " + reason + "; it is left out"}});
+                                      pin_name(i) + " is a shape that cannot be a Voronoi site: " + reason + "; it is left out"}});
     }
     for (const std::size_t i : shape_site) map_site.push_back(i);
     const router::L1Map map(norm.domain, norm.obstacles, point_sites, shape_sites);

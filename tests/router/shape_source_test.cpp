@@ -280,8 +280,11 @@ TEST(ShapeSources, RefusesShapesThatTouch) {
   const std::vector<geom::Polygon> two = {{{{10, 10}, {20, 10}, {20, 20}, {10, 20}}, {}}, {{{20, 20}, {30, 20}, {30, 30}, {20, 30}}, {}},
                                           {{{70, 70}, {80, 70}, {80, 80}, {70, 80}}, {}}};
   const std::vector<Point> pts = {{75, 80}};
-  EXPECT_EQ(router::L1Map::shape_problems(dom, obs, two, pts),
-            (std::vector<std::string>{"", "it touches or overlaps shape source 0", "point source 0 lies on or in it"}));
+  const auto why = router::L1Map::shape_problems(dom, obs, two, pts);
+  ASSERT_EQ(why.size(), 3u);
+  EXPECT_FALSE(why[0]);
+  EXPECT_EQ(why[1].text(), "it touches or overlaps shape source 0");
+  EXPECT_EQ(why[2].text(), "point source 0 lies on or in it");
 }
 
 // Worked by hand: a pad x in [10, 20], y in [10, 14]; a wall x in [30, 32], y in [0, 30].
