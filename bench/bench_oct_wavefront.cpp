@@ -5,9 +5,12 @@
 // oct / L1 says what the eight frames, the Z[sqrt2] levels and the diagonal rays cost. The
 // octilinear brute-force reference (tests/oracle/oct_oracle.h) runs while it finishes (up to
 // --ref-max vertices) and 50 distances are compared exactly, so a fast wrong answer cannot pass.
+// With --norm N (2, 3 or 4) the fixed-orientation norm of that order (NormWavefront: 16, 32 or 48
+// directions, geom/fixed_norm.h) runs instead of the octilinear metric, checked against
+// oracle::NormReference.
 //
 //   bench_oct_wavefront [--sizes N,N,..] [--kind rects|polygons|maze|degenerate] [--ref-max N]
-//                       [--reps R]
+//                       [--reps R] [--norm N]
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -41,16 +44,17 @@ struct Row {
 int main(int argc, char** argv) {
   std::vector<std::int64_t> sizes;
   std::int64_t ref_max = 2000;
-  int reps = 1;
+  int reps = 1, norm_order = 0;
   std::string kind_name = "rects";
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--ref-max") && i + 1 < argc) ref_max = std::atoll(argv[++i]);
     else if (!std::strcmp(argv[i], "--reps") && i + 1 < argc) reps = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--kind") && i + 1 < argc) kind_name = argv[++i];
+    else if (!std::strcmp(argv[i], "--norm") && i + 1 < argc) norm_order = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--sizes") && i + 1 < argc) {
       for (char* tok = std::strtok(argv[++i], ","); tok; tok = std::strtok(nullptr, ",")) sizes.push_back(std::atoll(tok));
     } else {
-      std::fprintf(stderr, "usage: %s [--sizes N,N,...] [--kind K] [--ref-max N] [--reps R]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--sizes N,N,...] [--kind K] [--ref-max N] [--reps R] [--norm 2|3|4]\n", argv[0]);
       return 2;
     }
   }
@@ -59,9 +63,18 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "unknown kind %s\n", kind_name.c_str());
     return 2;
   }
+  if (norm_order != 0 && (norm_order < 2 || norm_order > 4)) {
+    std::fprintf(stderr, "--norm: 2, 3 or 4\n");
+    return 2;
+  }
   if (sizes.empty()) sizes = {1'000, 2'000, 10'000, 100'000, 1'000'000};
-  std::printf("taut octilinear wavefront benchmark: kind=%s, one source, whole distance field, one thread, best of %d\n",
-              kind_name.c_str(), reps);
+  // "oct" below is the metric under test: octilinear, or the norm of --norm
+  if (norm_order)
+    std::printf("taut fixed-orientation norm wavefront benchmark (order %d, %d directions; the oct columns): ",
+                norm_order, norm_order == 2 ? 16 : norm_order == 3 ? 32 : 48);
+  else
+    std::printf("taut octilinear wavefront benchmark: ");
+  std::printf("kind=%s, one source, whole distance field, one thread, best of %d\n", kind_name.c_str(), reps);
   std::printf("%9s %8s | %8s %8s %7s | %9s %9s | %7s %8s | %7s %8s | %7s | %6s\n", "vertices", "sort(s)", "l1(s)",
               "oct(s)", "oct/l1", "l1 ev/n", "oct ev/n", "l1 nd/q", "oct nd/q", "ref(s)", "ref/oct", "checked",
               "oct B/v");
@@ -91,28 +104,44 @@ int main(int argc, char** argv) {
     row.l1_events = l1->stats().events;
     row.l1_nodes = double(l1->stats().drag_nodes) / double(std::max<std::int64_t>(1, l1->stats().drag_queries));
     l1.reset();
-    std::optional<taut::router::OctWavefront> oct;
-    const std::size_t heap0 = taut::bench::heap_in_use();
-    row.oct = seconds_of([&] {
-      oct.reset();
-      oct.emplace(dom, norm.obstacles);
-      oct->run({&source, 1}, targets, taut::router::WavefrontStop::Never);
-    }, reps);
-    row.oct_events = oct->stats().events;
-    row.oct_nodes = double(oct->stats().drag_nodes) / double(std::max<std::int64_t>(1, oct->stats().drag_queries));
-    row.oct_bytes = taut::bench::heap_in_use() - heap0;
-    if (row.n <= ref_max) {
-      std::vector<std::optional<taut::geom::Root2>> ref;
-      row.ref = seconds_of([&] {
-        taut::oracle::OctilinearReference oracle(dom, norm.obstacles);
-        ref = oracle.distances(source, targets);
-      }, 1);
-      for (std::size_t i = 0; i < targets.size(); ++i, ++row.checked)
-        if (ref[i] != oct->target_distance(i)) {
-          all_ok = false;
-          std::fprintf(stderr, "MISMATCH at n=%lld target %zu (%d,%d)\n", static_cast<long long>(row.n), i,
-                       targets[i].x, targets[i].y);
-        }
+    // the metric under test: construction, the whole field, stats, heap, and the reference check
+    auto measure = [&](auto& oct, auto make, auto make_ref) {
+      const std::size_t heap0 = taut::bench::heap_in_use();
+      row.oct = seconds_of([&] {
+        oct.reset();
+        make(oct);
+        oct->run({&source, 1}, targets, taut::router::WavefrontStop::Never);
+      }, reps);
+      row.oct_events = oct->stats().events;
+      row.oct_nodes = double(oct->stats().drag_nodes) / double(std::max<std::int64_t>(1, oct->stats().drag_queries));
+      row.oct_bytes = taut::bench::heap_in_use() - heap0;
+      if (row.n > ref_max) return;
+      bool same = true;
+      row.ref = seconds_of([&] { same = make_ref(); }, 1);
+      row.checked = static_cast<int>(targets.size());
+      if (!same) {
+        all_ok = false;
+        std::fprintf(stderr, "MISMATCH at n=%lld\n", static_cast<long long>(row.n));
+      }
+    };
+    if (norm_order) {
+      std::optional<taut::router::NormWavefront> w;
+      measure(w, [&](auto& o) { o.emplace(dom, norm.obstacles, norm_order); }, [&] {
+        const taut::oracle::NormReference oracle(dom, norm.obstacles, norm_order);
+        const auto ref = oracle.distances(source, targets);
+        for (std::size_t i = 0; i < targets.size(); ++i)
+          if (ref[i] != w->target_distance(i)) return false;
+        return true;
+      });
+    } else {
+      std::optional<taut::router::OctWavefront> w;
+      measure(w, [&](auto& o) { o.emplace(dom, norm.obstacles); }, [&] {
+        const taut::oracle::OctilinearReference oracle(dom, norm.obstacles);
+        const auto ref = oracle.distances(source, targets);
+        for (std::size_t i = 0; i < targets.size(); ++i)
+          if (ref[i] != w->target_distance(i)) return false;
+        return true;
+      });
     }
     char refbuf[32] = "-", ratiobuf[32] = "-";
     if (row.ref >= 0) {

@@ -10,10 +10,13 @@
 #include <queue>
 #include <set>
 #include <stdexcept>
+#include <type_traits>
 #include <unordered_map>
+#include <variant>
 
 #include "geom/index.h"
 #include "geom/normalize.h"
+#include "geom/fixed_norm.h"
 #include "geom/predicates.h"
 
 namespace taut::router {
@@ -41,6 +44,7 @@ struct T3 {
   }
   T3 operator+(const T3& o) const { return {a + o.a, b + o.b, c + o.c}; }
   T3 operator-(const T3& o) const { return {a - o.a, b - o.b, c - o.c}; }
+  T3 operator*(i64 k) const { return {a * k, b * k, c * k}; }
 };
 
 // Direction frames: the wave moves "north-east" in local coordinates (u, v) = M (X, Y) of the
@@ -49,38 +53,107 @@ struct T3 {
 // directions. L1 (frames 0-3): M = diag(sx, sy), one frame per quadrant (NE, NW, SW, SE), level
 // u + v. Octilinear (frames 4-11): one frame per cone between two neighbouring orientations, its
 // local east the axis direction and its local north the diagonal, level u + sqrt2 v (a distance
-// t*east + s*north, t, s >= 0, has octilinear length t + sqrt2 s).
+// t*east + s*north, t, s >= 0, has octilinear length t + sqrt2 s). Fixed-orientation norms
+// (geom/fixed_norm.h, frames 12-107): one frame per cone between consecutive directions d_i,
+// d_{i+1} (east d_i, north d_{i+1}: determinant 1 by the Farey construction), level
+// w_i u + w_{i+1} v, which is the cone's functional lambda_i applied to (X, Y).
 struct Frame {
   i64 a, b, c, d;          // u = a*X + b*Y, v = c*X + d*Y
   i64 ia, ib, ic, id;      // the inverse: X = ia*u + ib*v, Y = ic*u + id*v
   int sigma;               // det M: +1 keeps orientation, -1 mirrors it
+  // Integer levels (L1, norms): level = wu*u + wv*v = la*X + lb*Y (octilinear: unused).
+  i64 wu = 1, wv = 1, la = 0, lb = 0;
+  // The ray-cache mode (sweep_rays()) of the east and north directions, and their sense along
+  // the mode's direction (+1 or -1).
+  int east_mode = 0, east_sense = 1, north_mode = 0, north_sense = 1;
 };
-constexpr Frame kFrames[12] = {
-    {1, 0, 0, 1, 1, 0, 0, 1, 1},      // L1 NE
-    {-1, 0, 0, 1, -1, 0, 0, 1, -1},   // L1 NW
-    {-1, 0, 0, -1, -1, 0, 0, -1, 1},  // L1 SW
-    {1, 0, 0, -1, 1, 0, 0, -1, -1},   // L1 SE
-    // octilinear, inverse columns (east, north):
-    {1, -1, 0, 1, 1, 1, 0, 1, 1},        // E, NE
-    {-1, 1, 1, 0, 0, 1, 1, 1, -1},       // N, NE
-    {1, 1, -1, 0, 0, -1, 1, 1, 1},       // N, NW
-    {-1, -1, 0, 1, -1, -1, 0, 1, -1},    // W, NW
-    {-1, 1, 0, -1, -1, -1, 0, -1, 1},    // W, SW
-    {1, -1, -1, 0, 0, -1, -1, -1, -1},   // S, SW
-    {-1, -1, 1, 0, 0, 1, -1, -1, 1},     // S, SE
-    {1, 1, 0, -1, 1, 1, 0, -1, -1},      // E, SE
+// The orientations (one direction each, y > 0 or y == 0 < x) whose track rays a metric caches,
+// in mode order: L1 and octilinear share the first two / four.
+struct ModeDir {
+  i64 x, y;
 };
+constexpr ModeDir kAxisModes[4] = {{0, 1}, {1, 0}, {1, 1}, {-1, 1}};
+
+constexpr int kNormFirst2 = 12, kNormFirst3 = kNormFirst2 + geom::FareyNorm<2>::kDirs,
+              kNormFirst4 = kNormFirst3 + geom::FareyNorm<3>::kDirs,
+              kFrameCount = kNormFirst4 + geom::FareyNorm<4>::kDirs;
+
+// The mode of world direction (x, y) among `modes`, and its sense.
+constexpr void find_mode(const ModeDir* modes, int n, i64 x, i64 y, int& mode, int& sense) {
+  for (int j = 0; j < n; ++j) {
+    if (modes[j].x * y - modes[j].y * x != 0) continue;
+    mode = j;
+    sense = modes[j].x * x + modes[j].y * y > 0 ? 1 : -1;
+    return;
+  }
+  mode = -1;
+}
+template <int N>
+constexpr void add_norm_frames(std::array<Frame, kFrameCount>& out, int first,
+                               const geom::FareyNorm<N>& norm) {
+  constexpr int m = geom::FareyNorm<N>::kDirs;
+  std::array<ModeDir, m / 2> modes{};
+  for (int j = 0; j < m / 2; ++j) modes[j] = {norm.dir[j].x, norm.dir[j].y};
+  for (int i = 0; i < m; ++i) {
+    const auto e = norm.dir[i], g = norm.dir[(i + 1) % m];
+    Frame f{g.y, -g.x, -e.y, e.x, e.x, g.x, e.y, g.y, 1};
+    f.wu = norm.weight[i];
+    f.wv = norm.weight[(i + 1) % m];
+    f.la = f.wu * f.a + f.wv * f.c;
+    f.lb = f.wu * f.b + f.wv * f.d;
+    find_mode(modes.data(), m / 2, e.x, e.y, f.east_mode, f.east_sense);
+    find_mode(modes.data(), m / 2, g.x, g.y, f.north_mode, f.north_sense);
+    out[first + i] = f;
+  }
+}
+constexpr std::array<Frame, kFrameCount> make_frames() {
+  std::array<Frame, kFrameCount> out{};
+  const Frame fixed[12] = {
+      {1, 0, 0, 1, 1, 0, 0, 1, 1},      // L1 NE
+      {-1, 0, 0, 1, -1, 0, 0, 1, -1},   // L1 NW
+      {-1, 0, 0, -1, -1, 0, 0, -1, 1},  // L1 SW
+      {1, 0, 0, -1, 1, 0, 0, -1, -1},   // L1 SE
+      // octilinear, inverse columns (east, north):
+      {1, -1, 0, 1, 1, 1, 0, 1, 1},        // E, NE
+      {-1, 1, 1, 0, 0, 1, 1, 1, -1},       // N, NE
+      {1, 1, -1, 0, 0, -1, 1, 1, 1},       // N, NW
+      {-1, -1, 0, 1, -1, -1, 0, 1, -1},    // W, NW
+      {-1, 1, 0, -1, -1, -1, 0, -1, 1},    // W, SW
+      {1, -1, -1, 0, 0, -1, -1, -1, -1},   // S, SW
+      {-1, -1, 1, 0, 0, 1, -1, -1, 1},     // S, SE
+      {1, 1, 0, -1, 1, 1, 0, -1, -1},      // E, SE
+  };
+  for (int d = 0; d < 12; ++d) {
+    Frame f = fixed[d];
+    f.la = f.a + f.c;
+    f.lb = f.b + f.d;
+    find_mode(kAxisModes, d < 4 ? 2 : 4, f.ia, f.ic, f.east_mode, f.east_sense);
+    find_mode(kAxisModes, d < 4 ? 2 : 4, f.ib, f.id, f.north_mode, f.north_sense);
+    out[d] = f;
+  }
+  add_norm_frames(out, kNormFirst2, geom::kFarey2);
+  add_norm_frames(out, kNormFirst3, geom::kFarey3);
+  add_norm_frames(out, kNormFirst4, geom::kFarey4);
+  return out;
+}
+constexpr std::array<Frame, kFrameCount> kFrames = make_frames();
 constexpr bool frames_consistent() {
   for (const Frame& f : kFrames) {
     if (f.a * f.ia + f.b * f.ic != 1 || f.a * f.ib + f.b * f.id != 0) return false;
     if (f.c * f.ia + f.d * f.ic != 0 || f.c * f.ib + f.d * f.id != 1) return false;
     if (f.a * f.d - f.b * f.c != f.sigma) return false;
+    if (f.east_mode < 0 || f.north_mode < 0) return false;
   }
   // octilinear: local east an axis, local north a diagonal; consecutive cones share an axis
   for (int d = 4; d < 12; ++d) {
     const Frame& f = kFrames[d];
     if ((f.ia == 0) == (f.ic == 0)) return false;   // east = (ia, ic) has one zero
     if (f.ib == 0 || f.id == 0) return false;       // north = (ib, id) has none
+  }
+  // norms: the level meets the weights on the frame's two directions
+  for (int d = kNormFirst2; d < kFrameCount; ++d) {
+    const Frame& f = kFrames[d];
+    if (f.la * f.ia + f.lb * f.ic != f.wu || f.la * f.ib + f.lb * f.id != f.wv) return false;
   }
   return true;
 }
@@ -122,34 +195,98 @@ struct R3 {
   R3 operator-(const R3& o) const { return {u - o.u, v - o.v}; }
 };
 
-// What differs between the metrics: the frames, the level's type (T3 for L1: u + v; R3 for the
-// octilinear metric: u + sqrt2 v) and its constant term's type (what distances and the k-d
-// tree's bounds are), the track rays cached per vertex (the four axis directions, and the four
-// diagonals for octilinear) and the width of the per-entity wedge bits (6 per frame).
+// What differs between the metrics: the frames, the level's type (T3 for L1: u + v, and for
+// the norms: wu u + wv v; R3 for the octilinear metric: u + sqrt2 v) and its constant term's
+// type (what distances and the k-d tree's bounds are), the track rays cached per vertex (the
+// four axis directions, the four diagonals for octilinear, every direction of a norm) and the
+// width of the per-entity wedge bits (6 per frame). kRoot2: levels in Z[sqrt2]; kPerFrame: the
+// k-d search is instantiated per frame (L1, octilinear; a norm's 16 to 48 frames share one
+// instantiation that reads the frame at run time).
 struct L1Metric {
   static constexpr int kFirst = 0, kCount = 4, kRaySlots = 4;
+  static constexpr bool kRoot2 = false, kPerFrame = true, kUnitWeights = true;
   using Lv = T3;
   using C = i64;
   using Bits = uint32_t;
   [[gnu::always_inline]] static Lv level(int d, Point p) { return U(d, p) + V(d, p); }
   [[gnu::always_inline]] static C constant(const Lv& l) { return l.a; }
-  [[gnu::always_inline]] static C combine(i64 u, i64 v) { return u + v; }
+  [[gnu::always_inline]] static C combine(int, i64 u, i64 v) { return u + v; }
+  static constexpr ModeDir mode_dir(int j) { return kAxisModes[j]; }
 };
 struct OctMetric {
   static constexpr int kFirst = 4, kCount = 8, kRaySlots = 8;
+  static constexpr bool kRoot2 = true, kPerFrame = true, kUnitWeights = false;
   using Lv = R3;
   using C = geom::Root2;
   using Bits = uint64_t;
   [[gnu::always_inline]] static Lv level(int d, Point p) { return {U(d, p), V(d, p)}; }
   [[gnu::always_inline]] static C constant(const Lv& l) { return {l.u.a, l.v.a}; }
-  [[gnu::always_inline]] static C combine(i64 u, i64 v) { return {u, v}; }
+  [[gnu::always_inline]] static C combine(int, i64 u, i64 v) { return {u, v}; }
+  static constexpr ModeDir mode_dir(int j) { return kAxisModes[j]; }
 };
+// Wedge bits wider than 64 (a norm's frames).
+template <int W>
+struct WideBits {
+  std::array<uint64_t, W> w{};
+};
+template <int N, int First>
+struct NormMetric {
+  using Norm = geom::FareyNorm<N>;
+  static constexpr int kFirst = First, kCount = Norm::kDirs, kRaySlots = Norm::kDirs;
+  static constexpr bool kRoot2 = false, kPerFrame = false, kUnitWeights = false;
+  using Lv = T3;
+  using C = i64;
+  using Bits = WideBits<(6 * kCount + 63) / 64>;
+  [[gnu::always_inline]] static Lv level(int d, Point p) {
+    const Frame& f = kFrames[d];
+    return {f.la * p.x + f.lb * p.y, f.la * p.y, f.lb * p.x};
+  }
+  [[gnu::always_inline]] static C constant(const Lv& l) { return l.a; }
+  [[gnu::always_inline]] static C combine(int d, i64 u, i64 v) { return kFrames[d].wu * u + kFrames[d].wv * v; }
+  static constexpr ModeDir mode_dir(int j) { return {norm().dir[j].x, norm().dir[j].y}; }
+  static constexpr const Norm& norm() {
+    if constexpr (N == 2) return geom::kFarey2;
+    else if constexpr (N == 3) return geom::kFarey3;
+    else return geom::kFarey4;
+  }
+};
+using Norm2Metric = NormMetric<2, kNormFirst2>;
+using Norm3Metric = NormMetric<3, kNormFirst3>;
+using Norm4Metric = NormMetric<4, kNormFirst4>;
+static_assert(Norm2Metric::kCount + kNormFirst2 == kNormFirst3 && Norm4Metric::kFirst + Norm4Metric::kCount == kFrameCount);
+
+// The 6 wedge bits of frame slot k (d - kFirst).
+template <class Bits>
+inline void put_bits(Bits& bits, int k, uint32_t b) {
+  if constexpr (std::is_integral_v<Bits>) {
+    bits |= static_cast<Bits>(b) << (6 * k);
+  } else {
+    const int bit = 6 * k, word = bit / 64, off = bit % 64;
+    bits.w[word] |= uint64_t{b} << off;
+    if (off > 58) bits.w[word + 1] |= uint64_t{b} >> (64 - off);
+  }
+}
+template <class Bits>
+inline uint32_t get_bits(const Bits& bits, int k) {
+  if constexpr (std::is_integral_v<Bits>) {
+    return static_cast<uint32_t>(bits >> (6 * k)) & 63u;
+  } else {
+    const int bit = 6 * k, word = bit / 64, off = bit % 64;
+    uint64_t v = bits.w[word] >> off;
+    if (off > 58) v |= bits.w[word + 1] << (64 - off);
+    return static_cast<uint32_t>(v) & 63u;
+  }
+}
+
 // f(std::integral_constant<int, d>) for the runtime frame d of metric M: lets the k-d search be
-// instantiated per frame, so each frame's matrix folds into its arithmetic.
+// instantiated per frame, so each frame's matrix folds into its arithmetic. A norm metric gets
+// d = -1: the search then reads the region's frame at run time.
 template <class M, class F>
 [[gnu::always_inline]] inline decltype(auto) with_frame(int d, F&& f) {
   using std::integral_constant;
-  if constexpr (M::kCount == 4) {
+  if constexpr (!M::kPerFrame) {
+    return f(integral_constant<int, -1>{});
+  } else if constexpr (M::kCount == 4) {
     switch (d) {
       case 0: return f(integral_constant<int, 0>{});
       case 1: return f(integral_constant<int, 1>{});
@@ -306,7 +443,7 @@ inline bool region_hull(const RegionT<M>& r, const Box& frame, Box& out) {
       slanted[ns++] = {-dy, dx, dx * r.ea[i].y - dy * r.ea[i].x};
     }
   }
-  if constexpr (M::kCount != 4) {
+  if constexpr (M::kRoot2) {
     // Octilinear: the level line u + sqrt2 v >= S is irrational; it is replaced by a rational
     // line every point of the region satisfies. With v0 the least v over the current box (so
     // v >= v0 there) and 99/70 > sqrt2: u + (99/70)(v - v0) >= u + sqrt2 (v - v0) >= S - sqrt2 v0,
@@ -317,7 +454,7 @@ inline bool region_hull(const RegionT<M>& r, const Box& frame, Box& out) {
     const Point bhi{static_cast<geom::Coord>(xhi), static_cast<geom::Coord>(yhi)};
     const i64 v0 = v_range(r.d, blo, bhi).lo;
     const geom::Root2 st = M::constant(r.start);
-    if (M::combine(u_range(r.d, blo, bhi).hi, v_range(r.d, blo, bhi).hi) < st) return false;
+    if (M::combine(r.d, u_range(r.d, blo, bhi).hi, v_range(r.d, blo, bhi).hi) < st) return false;
     const i128 ra = i128{70} * st.a + i128{99} * v0, rb = i128{70} * st.b - i128{70} * v0;
     // floor(ra + rb sqrt2): estimate, then correct with exact signs
     i128 f = static_cast<i128>(std::floor(static_cast<long double>(ra) +
@@ -327,19 +464,20 @@ inline bool region_hull(const RegionT<M>& r, const Box& frame, Box& out) {
     // -(70 u + 99 v) <= -f with u = fr.a x + fr.b y, v = fr.c x + fr.d y
     slanted[ns++] = {-(70 * fr.a + 99 * fr.c), -(70 * fr.b + 99 * fr.d), static_cast<i64>(-f)};
   }
-  // the level: sx*x + sy*y >= start, with the level's coefficients (L1: sx, sy = +-1)
-  const i64 sx = fr.a + fr.c, sy = fr.b + fr.d;
+  // the level: sx*x + sy*y >= start, with the level's coefficients (L1: sx, sy = +-1; a
+  // norm: the cone's functional)
+  const i64 sx = fr.la, sy = fr.lb;
   auto level_ok_box = [&] {
-    if constexpr (M::kCount != 4) {
+    if constexpr (M::kRoot2) {
       return true;
     } else {
-      const i64 best = (sx > 0 ? xhi : -xlo) + (sy > 0 ? yhi : -ylo);
+      const i64 best = (sx > 0 ? sx * xhi : sx * xlo) + (sy > 0 ? sy * yhi : sy * ylo);
       return best >= M::constant(r.start);
     }
   };
   if (xlo > xhi || ylo > yhi || !level_ok_box()) return false;
   if (ns == 0) {
-    if constexpr (M::kCount == 4) {
+    if constexpr (M::kUnitWeights) {
       // tighten by the level: local u >= start - vmax, v >= start - umax
       const i64 st = M::constant(r.start);
       const i64 umax = sx > 0 ? xhi : -xlo, vmax = sy > 0 ? yhi : -ylo;
@@ -350,13 +488,13 @@ inline bool region_hull(const RegionT<M>& r, const Box& frame, Box& out) {
               {static_cast<geom::Coord>(xhi), static_cast<geom::Coord>(yhi)}};
     return true;
   }
-  std::array<Line, 13> lines;  // (the level line: L1 only)
+  std::array<Line, 13> lines;  // (the level line: integer levels only)
   int nl = 0;
   lines[nl++] = {0, -1, -ylo};  // y >= ylo
   lines[nl++] = {1, 0, xhi};    // x <= xhi
   lines[nl++] = {0, 1, yhi};    // y <= yhi
   lines[nl++] = {-1, 0, -xlo};  // x >= xlo
-  if constexpr (M::kCount == 4) lines[nl++] = {-sx, -sy, -M::constant(r.start)};
+  if constexpr (!M::kRoot2) lines[nl++] = {-sx, -sy, -M::constant(r.start)};
   for (int i = 0; i < ns; ++i) lines[nl++] = slanted[i];
   struct V {
     uint8_t in, out;  // lines before and after the vertex (counter-clockwise)
@@ -416,10 +554,11 @@ inline bool region_hull(const RegionT<M>& r, const Box& frame, Box& out) {
 // search below is instantiated per frame).
 template <class M, int D>
 inline bool satisfies(const RegionT<M>& r, Point q) {
-  if (!(M::level(D, q) > r.start)) return false;
+  const int d = D >= 0 ? D : r.d;
+  if (!(M::level(d, q) > r.start)) return false;
   for (int i = 0; i < r.nlex; ++i) {
     const auto& l = r.lex[i];
-    const T3 v = l.on_u ? U(D, q) : V(D, q);
+    const T3 v = l.on_u ? U(d, q) : V(d, q);
     if (l.greater ? !(v > l.value) : !(v < l.value)) return false;
   }
   for (int i = 0; i < r.nedges; ++i)
@@ -511,15 +650,15 @@ class KdTree {
   // Stop edges only shrink the region, so the bound is conservative.
   template <int D>
   static bool outside_bound(const Node& n, const Region& r, C& bound) {
-    constexpr Frame f = kFrames[D];
+    const Frame& f = kFrames[D >= 0 ? D : r.d];
     const Box& h = r.hull;
     bool any = false;
     const C st = M::constant(r.start);
     auto side = [&](i64 xlo, i64 ylo, i64 xhi, i64 yhi) {
       if (xlo > xhi || ylo > yhi) return;
       C b;
-      if constexpr (M::kCount == 4) {
-        const i64 la = f.a + f.c, lb = f.b + f.d;  // level = la*x + lb*y (constant term)
+      if constexpr (!M::kRoot2) {
+        const i64 la = f.la, lb = f.lb;  // level = la*x + lb*y (constant term)
         const i64 x0 = la * xlo, x1 = la * xhi, y0 = lb * ylo, y1 = lb * yhi;
         b = std::min(x0, x1) + std::min(y0, y1);
       } else {
@@ -593,27 +732,36 @@ class KdTree {
   }
   template <int D>
   static C box_min_level(const Node& n, const Region& r) {
-    i64 umin = u_range(D, n.lo, n.hi).lo;
-    i64 vmin = v_range(D, n.lo, n.hi).lo;
+    const int d = D >= 0 ? D : r.d;
+    i64 umin = u_range(d, n.lo, n.hi).lo;
+    i64 vmin = v_range(d, n.lo, n.hi).lo;
     for (int i = 0; i < r.nlex; ++i) {
       const auto& l = r.lex[i];
       if (!l.greater) continue;
       i64& m = l.on_u ? umin : vmin;
       m = std::max(m, l.value.a);
     }
-    if constexpr (M::kCount != 4)
-      return std::max({M::combine(umin, vmin), M::constant(r.start),
+    if constexpr (M::kRoot2) {
+      return std::max({M::combine(d, umin, vmin), M::constant(r.start),
                        oct_box_min<D>(n.lo.x, n.lo.y, n.hi.x, n.hi.y)});
-    else
-      return std::max(M::combine(umin, vmin), M::constant(r.start));
+    } else if constexpr (!M::kUnitWeights) {
+      // a norm: also the exact least level la*x + lb*y over the box (at the corner its signs
+      // pick); wu*umin + wv*vmin alone takes u and v at different corners
+      const Frame& f = kFrames[d];
+      const i64 exact = f.la * (f.la > 0 ? n.lo.x : n.hi.x) + f.lb * (f.lb > 0 ? n.lo.y : n.hi.y);
+      return std::max({M::combine(d, umin, vmin), M::constant(r.start), exact});
+    } else {
+      return std::max(M::combine(d, umin, vmin), M::constant(r.start));
+    }
   }
   template <int D>
   static bool box_may_satisfy(const Node& n, const Region& r) {
     if (n.hi.x < r.hull.lo.x || n.lo.x > r.hull.hi.x || n.hi.y < r.hull.lo.y || n.lo.y > r.hull.hi.y)
       return false;
-    const Range ur = u_range(D, n.lo, n.hi), vr = v_range(D, n.lo, n.hi);
+    const int d = D >= 0 ? D : r.d;
+    const Range ur = u_range(d, n.lo, n.hi), vr = v_range(d, n.lo, n.hi);
     const i64 umax = ur.hi, umin = ur.lo, vmax = vr.hi, vmin = vr.lo;
-    if (M::combine(umax, vmax) < M::constant(r.start)) return false;
+    if (M::combine(d, umax, vmax) < M::constant(r.start)) return false;
     for (int i = 0; i < r.nlex; ++i) {
       const auto& l = r.lex[i];
       const i64 mx = l.on_u ? umax : vmax;
@@ -639,7 +787,7 @@ class KdTree {
     if (n.left == kNone) {
       for (uint32_t i = n.begin; i < n.end; ++i) {
         const Point q = items_[i].first;
-        const Lv lv = M::level(D, q);
+        const Lv lv = M::level(D >= 0 ? D : r.d, q);
         if (found && !(lv < best)) continue;
         if (!satisfies<M, D>(r, q)) continue;
         found = true;
@@ -934,14 +1082,15 @@ struct WaveCore {
     struct MP {
       i64 x, y;
     };
+    // The mode's direction (dx, dy) made vertical: (dy x - dx y, y) when dy > 0 (for the
+    // diagonals the unimodular maps above; for a norm's direction a map of determinant dy > 0,
+    // which keeps orientations and incidences just the same), (y, x) for the horizontal. The
+    // order of (dy X - dx Y) in the sheared plane is lexicographic (dy x - dx y, y) (the e term
+    // is dy y, dy > 0), so the sweep's argument holds verbatim.
+    const ModeDir md = M::mode_dir(mode);
     auto mp = [&](uint32_t v) {
       const Point p = pts[v];
-      switch (mode) {
-        case 0: return MP{p.x, p.y};
-        case 1: return MP{p.y, p.x};
-        case 2: return MP{i64{p.x} - p.y, p.y};
-        default: return MP{i64{p.x} + p.y, p.y};
-      }
+      return md.y == 0 ? MP{p.y, p.x} : MP{md.y * p.x - md.x * p.y, p.y};
     };
     auto lex_less = [](MP a, MP b) { return a.x < b.x || (a.x == b.x && a.y < b.y); };
     auto orient = [](MP a, MP b, MP c) {
@@ -1052,8 +1201,8 @@ struct WaveCore {
   enum : uint32_t { kEInWedge = 1, kNInWedge = 2, kL0InQuad = 4, kL1InQuad = 8, kRightByEdge = 16,
                     kLeftByEdge = 32 };
   typename M::Bits compute_wedge_bits(const Entity& e) const {
-    if (e.full) return 0;
-    typename M::Bits bits = 0;
+    if (e.full) return {};
+    typename M::Bits bits{};
     for (int d = M::kFirst; d < M::kFirst + M::kCount; ++d) {
       const int sigma = kFrames[d].sigma;
       const Dir L0 = sigma > 0 ? lo_dir(e) : hi_dir(e);
@@ -1062,14 +1211,16 @@ struct WaveCore {
         return sigma > 0 ? in_ccw(a, b, x) : in_ccw(b, a, x);
       };
       const Dir E = local_dir(d, 1, 0), N = local_dir(d, 0, 1);
-      const Dir NW = local_dir(d, -1, 1), SE = local_dir(d, 1, -1);
       uint32_t b = 0;
       if (local_in(L0, L1, E)) b |= kEInWedge;
       if (local_in(L0, L1, N)) b |= kNInWedge;
       if (local_in(E, N, L0)) b |= kL0InQuad;
       if (local_in(E, N, L1)) b |= kL1InQuad;
-      if constexpr (M::kCount == 4) {
-        // the front's directions are the lattice directions SE and NW
+      if constexpr (!M::kRoot2) {
+        // the front wu u + wv v = const runs along the local lattice directions (wv, -wu) and
+        // (-wv, wu) (L1: SE and NW)
+        const int wu = static_cast<int>(kFrames[d].wu), wv = static_cast<int>(kFrames[d].wv);
+        const Dir NW = local_dir(d, -wv, wu), SE = local_dir(d, wv, -wu);
         if (local_in(SE, E, L1)) b |= kRightByEdge;
         if (local_in(N, NW, L0)) b |= kLeftByEdge;
       } else {
@@ -1091,13 +1242,11 @@ struct WaveCore {
         uv(l0, u, v);
         if (u < T3{} && R3{u, v} > R3{}) b |= kLeftByEdge;
       }
-      bits |= static_cast<typename M::Bits>(b) << (6 * (d - M::kFirst));
+      put_bits(bits, d - M::kFirst, b);
     }
     return bits;
   }
-  uint32_t wedge_bits(uint32_t ent, int d) const {
-    return static_cast<uint32_t>(ent_bits[ent] >> (6 * (d - M::kFirst))) & 63u;
-  }
+  uint32_t wedge_bits(uint32_t ent, int d) const { return get_bits(ent_bits[ent], d - M::kFirst); }
 
   bool wedge_contains(const Entity& e, const Dir& x) const {
     if (e.full) return true;
@@ -1174,9 +1323,9 @@ struct WaveCore {
   bool shoot(int d, bool vertical, uint32_t o, uint32_t& ea, uint32_t& eb) {
     // The track's world direction: local north (V track) or east (H track): a world axis
     // direction, or (octilinear) a diagonal; sweep_rays()' mode and slot for it.
-    const Point w = vertical ? local_int(d, 0, 1) : local_int(d, 1, 0);
-    const int mode = w.x == 0 ? 0 : w.y == 0 ? 1 : w.x == w.y ? 2 : 3;
-    const int s = mode == 1 ? w.x : w.y;  // +1: towards larger world y (x for mode 1)
+    const Frame& f = kFrames[d];
+    const int mode = vertical ? f.north_mode : f.east_mode;
+    const int s = vertical ? f.north_sense : f.east_sense;  // +1: along the mode's direction
     const uint32_t hit = o < nvert ? ray_cache[std::size_t{M::kRaySlots} * o + 2 * mode + (s > 0 ? 0 : 1)]
                                    : shoot_uncached(s, mode, o);
     if (hit == kNone) return false;
@@ -1187,18 +1336,12 @@ struct WaveCore {
   uint32_t shoot_uncached(int s, int mode, uint32_t o) {
     ++stats.ray_queries;
     const Point p = pts[o];
-    const bool vertical = mode != 1;
+    const ModeDir md = M::mode_dir(mode);
+    const bool vertical = md.y != 0;
     // Work in coordinates where the ray is along +/- the "t" axis and "w" is the other one
-    // (sweep_rays()' mapped coordinates: diagonals mapped to vertical by a unimodular T).
+    // (sweep_rays()' mapped coordinates: the mode's direction mapped to vertical).
     auto tc = [&](Point q) -> i64 { return vertical ? q.y : q.x; };
-    auto wc = [&](Point q) -> i64 {
-      switch (mode) {
-        case 0: return q.x;
-        case 1: return q.y;
-        case 2: return i64{q.x} - q.y;
-        default: return i64{q.x} + q.y;
-      }
-    };
+    auto wc = [&](Point q) -> i64 { return vertical ? md.y * q.x - md.x * q.y : q.y; };
     // side of q relative to the sheared line through p: lexicographic (w, t) for vertical
     // (X = x + e y), (w, t) likewise for horizontal (Y = y + e^2 x) and the diagonals.
     auto side = [&](Point q) {
@@ -1215,10 +1358,13 @@ struct WaveCore {
       const i64 t0 = tc(p);
       const i64 t1 = s > 0 ? std::min<i64>(t0 + len, lim_hi) : std::max<i64>(t0 - len, lim_lo);
       Box box;
-      if (mode >= 2) {  // the diagonal segment's box, cut to the frame (no edges outside it)
-        const i64 x1 = mode == 2 ? p.x + (t1 - t0) : p.x - (t1 - t0);
-        const i64 xlo = std::max<i64>(std::min<i64>(p.x, x1), domain.lo.x - 1);
-        const i64 xhi = std::min<i64>(std::max<i64>(p.x, x1), domain.hi.x + 1);
+      if (vertical && md.x != 0) {  // the sloped segment's box, cut to the frame (no edges outside it)
+        // x moves by md.x / md.y per unit of y: the far end's x, rounded outwards
+        const i64 num = md.x * (t1 - t0);
+        const i64 x1lo = p.x + (num >= 0 ? num / md.y : -((-num + md.y - 1) / md.y));
+        const i64 x1hi = p.x + (num >= 0 ? (num + md.y - 1) / md.y : -((-num) / md.y));
+        const i64 xlo = std::max<i64>(std::min<i64>(p.x, x1lo), domain.lo.x - 1);
+        const i64 xhi = std::min<i64>(std::max<i64>(p.x, x1hi), domain.hi.x + 1);
         box = Box{{static_cast<geom::Coord>(xlo), static_cast<geom::Coord>(std::min(t0, t1))},
                   {static_cast<geom::Coord>(xhi), static_cast<geom::Coord>(std::max(t0, t1))}};
       } else if (vertical)
@@ -1252,7 +1398,7 @@ struct WaveCore {
         const i128 rel = num - i128{tc(p)} * den;
         if (rel == 0) continue;  // through p: p lies on this edge
         if ((rel > 0 ? 1 : -1) != s) continue;
-        // Within the window: the diagonal modes' box is the square around the ray's segment, so
+        // Within the window: a sloped mode's box is the box around the ray's segment, so
         // an edge may meet it and cross the ray beyond t1, past a nearer edge that misses the
         // box; it is taken only by a wider window. (For the axis modes the box is the segment
         // itself and every edge meeting it crosses within [t0, t1].)
@@ -1494,8 +1640,16 @@ struct WaveCore {
       const Point w = local_int(d, u, v);
       return int_dir(w.x, w.y);
     };
-    if (on_left && w.left.kind == kV) arrive = world_int(1, -2);
-    if (on_right && w.right.kind == kH) arrive = world_int(-2, 1);
+    // a direction strictly between the track's back direction (local south, west) and the
+    // front's: (1, -2) and (-2, 1) for L1 (front SE/NW) and octilinear (front (sqrt2, -1)); for
+    // a norm's front (wv, -wu): (wv, -(wu + wv)) and (-(wu + wv), wu)
+    i64 fu = 1, fv = 1;
+    if constexpr (!M::kRoot2) {
+      fu = kFrames[d].wu;
+      fv = kFrames[d].wv;
+    }
+    if (on_left && w.left.kind == kV) arrive = world_int(fv, -(fu + fv));
+    if (on_right && w.right.kind == kH) arrive = world_int(-(fu + fv), fu);
     auto arriving_edge_entity = [&](const Bound& b) {
       // ring edge ea -> eb ends here: at eb it is the entity's lo edge, at ea its hi edge
       return b.eb == p ? entity_at(p, b.ea, kNone, nullptr) : entity_at(p, kNone, b.eb, nullptr);
@@ -1897,6 +2051,76 @@ std::vector<Point> OctWavefront::wedge_path(Point p, std::size_t k) const { retu
 const WavefrontStats& OctWavefront::stats() const { return impl_->stats; }
 
 std::size_t OctWavefront::memory_bytes() const { return memory_of(*impl_); }
+
+// One core per supported order; the public class dispatches at run time.
+struct NormWavefront::Impl {
+  std::variant<std::unique_ptr<WaveCore<Norm2Metric>>, std::unique_ptr<WaveCore<Norm3Metric>>,
+               std::unique_ptr<WaveCore<Norm4Metric>>>
+      core;
+  template <class F>
+  decltype(auto) visit(F&& f) const {
+    return std::visit([&](const auto& c) -> decltype(auto) { return f(*c); }, core);
+  }
+  template <class F>
+  decltype(auto) visit(F&& f) {
+    return std::visit([&](auto& c) -> decltype(auto) { return f(*c); }, core);
+  }
+};
+
+NormWavefront::NormWavefront(const Box& domain, std::span<const Polygon> obstacles, int order)
+    : impl_(std::make_unique<Impl>()), order_(order) {
+  if (order < 2 || order > 4)
+    throw std::invalid_argument("NormWavefront: the order must be 2, 3 or 4");
+  std::size_t vertices = 8;
+  for (const Polygon& p : obstacles) {
+    vertices += p.outer.size();
+    for (const auto& h : p.holes) vertices += h.size();
+  }
+  const i128 extent = i128{domain.hi.x} - domain.lo.x + i128{domain.hi.y} - domain.lo.y + 2;
+  if (i128(vertices + 2) * extent * geom::kNormScale >= (i128{1} << 62))
+    throw std::domain_error("NormWavefront: the layout is too large for exact norm lengths in 64 bits");
+  switch (order) {
+    case 2: impl_->core = std::make_unique<WaveCore<Norm2Metric>>(domain, obstacles); break;
+    case 3: impl_->core = std::make_unique<WaveCore<Norm3Metric>>(domain, obstacles); break;
+    default: impl_->core = std::make_unique<WaveCore<Norm4Metric>>(domain, obstacles); break;
+  }
+}
+NormWavefront::~NormWavefront() = default;
+NormWavefront::NormWavefront(NormWavefront&&) noexcept = default;
+NormWavefront& NormWavefront::operator=(NormWavefront&&) noexcept = default;
+
+bool NormWavefront::is_free(Point p) const {
+  return impl_->visit([&](const auto& c) { return c.is_free(p); });
+}
+void NormWavefront::run(std::span<const Point> sources, std::span<const Point> targets, Stop stop) {
+  impl_->visit([&](auto& c) { c.run(sources, targets, stop); });
+}
+std::optional<std::int64_t> NormWavefront::target_distance(std::size_t i) const {
+  return impl_->visit([&](const auto& c) -> std::optional<std::int64_t> {
+    auto e = c.best_target_entity(i);
+    if (!e) return std::nullopt;
+    return c.ents[*e].d.a;
+  });
+}
+std::optional<std::size_t> NormWavefront::target_source(std::size_t i) const {
+  return impl_->visit([&](const auto& c) -> std::optional<std::size_t> {
+    auto e = c.best_target_entity(i);
+    if (!e) return std::nullopt;
+    return c.ents[*e].source;
+  });
+}
+std::vector<Point> NormWavefront::target_path(std::size_t i) const {
+  return impl_->visit([&](const auto& c) { return path_of(c, i); });
+}
+std::optional<std::int64_t> NormWavefront::vertex_distance(Point p) const {
+  return impl_->visit([&](const auto& c) { return vertex_distance_of<L1Metric>(c, p); });
+}
+const WavefrontStats& NormWavefront::stats() const {
+  return impl_->visit([&](const auto& c) -> const WavefrontStats& { return c.stats; });
+}
+std::size_t NormWavefront::memory_bytes() const {
+  return impl_->visit([&](const auto& c) { return memory_of(c); });
+}
 
 std::optional<std::int64_t> l1_distance(const Box& domain, std::span<const Polygon> obstacles,
                                         Point s, Point t) {

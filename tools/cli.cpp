@@ -86,7 +86,9 @@ bool check_routing_options(const RoutingOptions& options, const io::Layout& layo
                                   "available in this version");
     return false;
   }
-  auto available = [](const std::string& o) { return o == "rectilinear" || o == "octilinear"; };
+  auto available = [&](const std::string& o) {
+    return o == "rectilinear" || o == "octilinear" || (options.allow_any && o == "any");
+  };
   if (!options.orientations.empty() && !available(options.orientations)) {
     print_usage_error("CLI-0021", "--orientations " + options.orientations +
                                       ": only rectilinear and octilinear wires are available in "

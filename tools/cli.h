@@ -49,6 +49,9 @@ struct RoutingOptions {
   std::string metric = "l1";
   std::string orientations;  // empty: from <rules> (default rectilinear)
   std::optional<std::int64_t> bend_cost;
+  // `spm` only: orientations "any" is accepted (distances are then epsilon-approximate
+  // Euclidean ones, from a fixed-orientation norm).
+  bool allow_any = false;
 };
 // Checks the options against what is implemented and the layout's <rules>; prints and returns
 // false when routing must not start (exit status 2). A bend cost in <rules> is reported as a
@@ -56,7 +59,7 @@ struct RoutingOptions {
 bool check_routing_options(const RoutingOptions& options, const io::Layout& layout, bool quiet);
 
 // The orientations to route in after check_routing_options() accepted them: --orientations,
-// else <rules>, else "rectilinear"; "rectilinear" or "octilinear".
+// else <rules>, else "rectilinear"; "rectilinear" or "octilinear" (or "any" with allow_any).
 std::string routing_orientations(const RoutingOptions& options, const io::Layout& layout);
 
 // load_layout(), then check_routing_options(): the layout when routing may start, otherwise

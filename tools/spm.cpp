@@ -8,12 +8,22 @@
 // too wide for OctMap's frames (OctMap::fits: width plus height above about 2^31) is answered by
 // one multi-source wavefront run instead (router/wavefront.h: all sources at distance 0, the
 // queries as targets): the same exact answers.
+//
+// --orientations any (here only: spm reports distances, not wires): epsilon-approximate
+// Euclidean geodesic distances from a fixed-orientation norm (geom/fixed_norm.h, Mitchell §6)
+// with 16, 32 or 48 directions, the fewest whose guaranteed epsilon is at most --epsilon
+// (default 0.01): one router::NormWavefront run from all sources, exact integer N-lengths d,
+// reported with the interval [d / Lambda, d / S] that holds the Euclidean geodesic distance.
 #include <cmath>
+#include <cstdio>
+#include <optional>
+#include <stdexcept>
 #include <iostream>
 #include <numbers>
 
 #include <nlohmann/json.hpp>
 
+#include "geom/fixed_norm.h"
 #include "router/spm.h"
 #include "router/wavefront.h"
 #include "tools/cli.h"
@@ -28,6 +38,7 @@ void add_spm(CLI::App& app, int& status) {
     std::vector<std::string> sources, queries;
     std::string source_file, query_file;
     bool json = false;
+    std::optional<double> epsilon;
     RoutingOptions routing;
     LoadOptions load;
   };
@@ -41,6 +52,10 @@ void add_spm(CLI::App& app, int& status) {
   sub->add_option("--query-file", args->query_file, "more query points, in the same format");
   sub->add_flag("--json", args->json, "print one JSON document on stdout");
   add_routing_options(sub, args->routing);
+  args->routing.allow_any = true;
+  sub->add_option("--epsilon", args->epsilon,
+                  "with --orientations any: the largest relative width of each distance's Euclidean "
+                  "interval, at least 0.0076 (default 0.01)");
   add_input_options(sub, args->file, args->load, "do not print warnings");
   sub->callback([args, &status, sub] {
     auto sub_count = [sub](const char* name) { return sub->count(name) > 0; };
@@ -79,7 +94,29 @@ void add_spm(CLI::App& app, int& status) {
       status = kInvalid;
       return;
     }
-    const bool oct = routing_orientations(args->routing, *layout) == "octilinear";
+    const std::string orientations = routing_orientations(args->routing, *layout);
+    const bool oct = orientations == "octilinear", any = orientations == "any";
+    // --orientations any: the fewest directions whose epsilon is at most --epsilon
+    int order = 0;
+    if (args->epsilon && !any) {
+      print_usage_error("CLI-0026", "--epsilon applies to --orientations any (epsilon-approximate "
+                                    "Euclidean distances)");
+      status = kInvalid;
+      return;
+    }
+    if (any) {
+      const double eps = args->epsilon.value_or(0.01);
+      for (int o = 2; o <= 4 && order == 0; ++o)
+        if (geom::fixed_norm_epsilon(o) <= eps) order = o;
+      if (order == 0) {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "%.4Lf", geom::fixed_norm_epsilon(4));
+        print_usage_error("CLI-0026", "--epsilon " + std::to_string(eps) + ": the finest available is " + buf +
+                                          " (48 directions)");
+        status = kInvalid;
+        return;
+      }
+    }
     std::vector<geom::Point> all = sources;
     all.insert(all.end(), queries.begin(), queries.end());
     const geom::NormalizedObstacles norm = routing_obstacles(*layout, all);
@@ -92,6 +129,7 @@ void add_spm(CLI::App& app, int& status) {
       bool free = true;
     };
     std::vector<Answer> answers(queries.size());
+    std::vector<std::int64_t> norm_lengths(queries.size(), 0);  // any: d, scaled by kNormScale
     auto collect = [&](auto& wf, auto to_root2) {
       wf.run(sources, queries, router::WavefrontStop::AllTargets);
       for (std::size_t i = 0; i < queries.size(); ++i) {
@@ -101,7 +139,25 @@ void add_spm(CLI::App& app, int& status) {
           answers[i].free = wf.is_free(queries[i]);
       }
     };
-    if (oct && !router::OctMap::fits(norm.domain)) {
+    if (any) {
+      std::optional<router::NormWavefront> wf;
+      try {
+        wf.emplace(norm.domain, norm.obstacles, order);
+      } catch (const std::domain_error& e) {
+        print_usage_error("CLI-0002", std::string("--orientations any: ") + e.what());
+        status = kResource;
+        return;
+      }
+      wf->run(sources, queries, router::WavefrontStop::AllTargets);
+      for (std::size_t i = 0; i < queries.size(); ++i) {
+        if (const auto d = wf->target_distance(i)) {
+          answers[i] = {geom::Root2{*d, 0}, wf->target_source(i), wf->target_path(i), true};
+          norm_lengths[i] = *d;
+        } else {
+          answers[i].free = wf->is_free(queries[i]);
+        }
+      }
+    } else if (oct && !router::OctMap::fits(norm.domain)) {
       router::OctWavefront wf(norm.domain, norm.obstacles);
       collect(wf, [](const geom::Root2& d) { return d; });
     } else if (oct) {
@@ -125,15 +181,34 @@ void add_spm(CLI::App& app, int& status) {
     }
 
     nlohmann::ordered_json j;
-    j["metric"] = "l1";
+    j["metric"] = any ? "euclidean" : "l1";
     if (oct) j["orientations"] = "octilinear";
+    const long double scale = static_cast<long double>(geom::kNormScale);
+    const long double lambda = any ? std::sqrt(static_cast<long double>(geom::fixed_norm_lambda_max_sq(order))) : 0;
+    if (any) {
+      j["orientations"] = "any";
+      j["directions"] = order == 2 ? 16 : order == 3 ? 32 : 48;
+      j["epsilon"] = static_cast<double>(geom::fixed_norm_epsilon(order));
+    }
     auto rows = nlohmann::ordered_json::array();
     std::size_t unreachable = 0;
     for (std::size_t i = 0; i < queries.size(); ++i) {
       const Answer& a = answers[i];
       nlohmann::ordered_json q;
       q["point"] = {queries[i].x, queries[i].y};
-      if (a.distance) {
+      if (a.distance && any) {
+        // d / S is the N-length of a real path divided by S, at least its Euclidean length; the
+        // Euclidean geodesic distance lies in [d / Lambda, d / S] (geom/fixed_norm.h)
+        const long double d = static_cast<long double>(norm_lengths[i]);
+        q["distance"] = static_cast<double>(d / scale);
+        q["euclidean_bounds"] = {static_cast<double>(std::nextafter(d / lambda, 0.0L)),
+                                 static_cast<double>(std::nextafter(d / scale, 2 * d / scale + 1))};
+        q["norm_length"] = norm_lengths[i];
+        q["source"] = *a.source;
+        auto pts = nlohmann::ordered_json::array();
+        for (const geom::Point p : a.path) pts.push_back({p.x, p.y});
+        q["points"] = pts;
+      } else if (a.distance) {
         if (a.distance->b == 0)
           q["distance"] = a.distance->a;
         else
@@ -160,7 +235,17 @@ void add_spm(CLI::App& app, int& status) {
         print_usage_error(code, "--query " + q["reason"].get<std::string>());
       }
       rows.push_back(q);
-      if (!args->json && a.distance) {
+      if (!args->json && a.distance && any) {
+        char buf[96];
+        std::snprintf(buf, sizeof buf, "%.6Lf (Euclidean in [%.6Lf, %.6Lf])",
+                      static_cast<long double>(norm_lengths[i]) / scale,
+                      static_cast<long double>(norm_lengths[i]) / lambda,
+                      static_cast<long double>(norm_lengths[i]) / scale);
+        std::cout << point_text(queries[i]) << ": distance " << buf << " from source " << *a.source << " ("
+                  << point_text(sources[*a.source]) << "), path";
+        for (const geom::Point p : a.path) std::cout << ' ' << point_text(p);
+        std::cout << '\n';
+      } else if (!args->json && a.distance) {
         std::cout << point_text(queries[i]) << ": distance " << length_text(*a.distance) << " from source "
                   << *a.source << " (" << point_text(sources[*a.source]) << "), path";
         for (const geom::Point p : a.path) std::cout << ' ' << point_text(p);

@@ -6,8 +6,11 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+#include <cmath>
 #include <random>
+#include <tuple>
 
+#include "geom/fixed_norm.h"
 #include "geom/normalize.h"
 #include "io/layout_geometry.h"
 #include "io/layout_reader.h"
@@ -201,6 +204,96 @@ TEST(Spm, OctilinearOnAVeryWideDomain) {
                             "-1073741823,-1073741823", "--json"});
   ASSERT_EQ(l1.status, 0) << l1.err;
   EXPECT_EQ(nlohmann::json::parse(l1.out)["queries"][0]["distance"].get<std::int64_t>(), 4294967292);
+}
+
+// --orientations any: epsilon-approximate Euclidean distances. Each query's "norm_length" is the
+// least NormReference distance over the sources (exact integers, the norm --epsilon picks: 16,
+// 32 or 48 directions), the named source is at that distance, the path has exactly that
+// N-length, "distance" is d / 4096 and "euclidean_bounds" [d / Lambda, d / 4096] (the claim that
+// they hold the Euclidean geodesic distance is tests/router/euclid_approx_test.cpp's).
+TEST(Spm, EuclideanDistancesWithinEpsilon) {
+  const std::string dir = temp_dir("spm_any");
+  int reachable = 0;
+  for (const auto& [kind, eps, order] : {std::tuple{"rects", "0.03", 2}, std::tuple{"polygons", "0.02", 3},
+                                         std::tuple{"maze", "0.01", 4}, std::tuple{"degenerate", "0.008", 4}}) {
+    SCOPED_TRACE(std::string(kind) + " epsilon " + eps);
+    const std::string in = dir + "/" + kind + ".xml";
+    ASSERT_EQ(run_taut({"gen", kind, "-o", in, "--size", "200", "--nets", "0", "--seed", "3"}).status, 0);
+    io::ReadResult rr = io::read_layout(in);
+    ASSERT_TRUE(rr.layout && rr.layout->boundary);
+    const geom::Box b = rr.layout->boundary->box;
+    std::mt19937_64 rng(static_cast<std::uint64_t>(order) * 77 + kind[0]);
+    auto pick = [&] {
+      return Point{static_cast<int>(b.lo.x + static_cast<std::int64_t>(rng() % static_cast<std::uint64_t>(b.hi.x - b.lo.x + 1))),
+                   static_cast<int>(b.lo.y + static_cast<std::int64_t>(rng() % static_cast<std::uint64_t>(b.hi.y - b.lo.y + 1)))};
+    };
+    std::vector<Point> sources{pick(), pick()}, queries;
+    for (int k = 0; k < 12; ++k) queries.push_back(pick());
+    std::vector<std::string> args = {"spm", in, "--json", "-q", "--orientations", "any", "--epsilon", eps};
+    for (const Point s : sources) args.insert(args.end(), {"--source", std::to_string(s.x) + "," + std::to_string(s.y)});
+    for (const Point q : queries) args.insert(args.end(), {"--query", std::to_string(q.x) + "," + std::to_string(q.y)});
+    const auto r = run_taut(args);
+    ASSERT_TRUE(r.status == 0 || r.status == 1) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["metric"], "euclidean");
+    EXPECT_EQ(j["orientations"], "any");
+    EXPECT_EQ(j["directions"].get<int>(), order == 2 ? 16 : order == 3 ? 32 : 48);
+    EXPECT_LE(j["epsilon"].get<double>(), std::stod(eps));
+    std::vector<Point> extra = sources;
+    extra.insert(extra.end(), queries.begin(), queries.end());
+    const auto norm = geom::normalize_obstacles(io::blockage_polygons(*rr.layout), io::routing_domain(*rr.layout, extra));
+    const oracle::NormReference ref(norm.domain, norm.obstacles, order);
+    const double lambda = std::sqrt(static_cast<double>(geom::fixed_norm_lambda_max_sq(order)));
+    ASSERT_EQ(j["queries"].size(), queries.size());
+    bool unreachable = false;
+    for (std::size_t i = 0; i < queries.size(); ++i) {
+      const auto& q = j["queries"][i];
+      std::optional<std::int64_t> best;
+      std::vector<std::optional<std::int64_t>> per;
+      for (const Point s : sources) {
+        per.push_back(ref.distance(s, queries[i]));
+        if (per.back() && (!best || *per.back() < *best)) best = per.back();
+      }
+      if (!best) {
+        unreachable = true;
+        EXPECT_TRUE(q["distance"].is_null());
+        continue;
+      }
+      ++reachable;
+      ASSERT_FALSE(q["distance"].is_null());
+      const std::int64_t d = q["norm_length"].get<std::int64_t>();
+      EXPECT_EQ(d, *best);
+      EXPECT_DOUBLE_EQ(q["distance"].get<double>(), static_cast<double>(d) / 4096);
+      EXPECT_NEAR(q["euclidean_bounds"][0].get<double>(), static_cast<double>(d) / lambda, 1e-9 * (1 + d));
+      EXPECT_NEAR(q["euclidean_bounds"][1].get<double>(), static_cast<double>(d) / 4096, 1e-9 * (1 + d));
+      EXPECT_LE(q["euclidean_bounds"][0].get<double>(), q["euclidean_bounds"][1].get<double>());
+      const std::size_t src = q["source"].get<std::size_t>();
+      ASSERT_LT(src, sources.size());
+      EXPECT_EQ(per[src], best);
+      const auto path = points_of(q["points"]);
+      ASSERT_FALSE(path.empty());
+      EXPECT_EQ(path.front(), sources[src]);
+      EXPECT_EQ(path.back(), queries[i]);
+      if (path.size() > 1) EXPECT_EQ(ref.check_path(path), best);
+    }
+    EXPECT_EQ(r.status, unreachable ? 1 : 0);
+  }
+  EXPECT_GT(reachable, 20);  // of 48
+  // --epsilon below the finest set, or without --orientations any: usage errors, nothing on stdout
+  const std::string demo = std::string(TAUT_SOURCE_DIR) + "/designs/demo.xml";
+  for (const std::vector<std::string>& a :
+       {std::vector<std::string>{"spm", demo, "--source", "500,500", "--query", "19500,11500", "--orientations", "any",
+                                 "--epsilon", "0.005"},
+        {"spm", demo, "--source", "500,500", "--query", "19500,11500", "--epsilon", "0.05"}}) {
+    const auto u = run_taut(a);
+    EXPECT_EQ(u.status, 2) << u.err;
+    EXPECT_NE(u.err.find("[CLI-0026]"), std::string::npos) << u.err;
+    EXPECT_TRUE(u.out.empty()) << u.out;
+  }
+  // route and path still refuse free-angle wires
+  const auto p = run_taut({"path", demo, "--from", "500,500", "--to", "19500,11500", "--orientations", "any"});
+  EXPECT_EQ(p.status, 2);
+  EXPECT_NE(p.err.find("[CLI-0021]"), std::string::npos) << p.err;
 }
 
 // Many points from files: the same answers as the options give; a bad line is named with its

@@ -1,5 +1,7 @@
 #include "oracle/l1_oracle.h"
 
+#include "geom/fixed_norm.h"
+
 #include <algorithm>
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/dijkstra_shortest_paths.hpp>
@@ -100,7 +102,13 @@ bool Wedge::contains(i64 dx, i64 dy) const {
 
 Root2 segment_length(Metric metric, Point a, Point b) {
   const i64 dx = i64{b.x} - a.x, dy = i64{b.y} - a.y;
-  if (metric == Metric::Octilinear) return geom::octilinear_length(dx, dy);
+  switch (metric) {
+    case Metric::Octilinear: return geom::octilinear_length(dx, dy);
+    case Metric::Farey2: return {geom::kFarey2.length(dx, dy), 0};
+    case Metric::Farey3: return {geom::kFarey3.length(dx, dy), 0};
+    case Metric::Farey4: return {geom::kFarey4.length(dx, dy), 0};
+    case Metric::L1: break;
+  }
   return {std::abs(dx) + std::abs(dy), 0};
 }
 

@@ -63,8 +63,10 @@ struct Wedge {
 // How a reference measures a straight segment ab: L1 is |dx| + |dy|; Octilinear is the length
 // of the shortest path from a to b in the four orientations 0, 45, 90 and 135 degrees,
 // (max - min) + min * sqrt(2) of |dx| and |dy| (geom/root2.h). Both are norms, so the argument
-// above holds for each; an L1 length is a Root2 with b == 0.
-enum class Metric { L1, Octilinear };
+// above holds for each; an L1 length is a Root2 with b == 0. Farey2..Farey4: the
+// fixed-orientation norms of geom/fixed_norm.h, N(v) = max_i lambda_i . v (an integer, scaled
+// by geom::kNormScale; a Root2 with b == 0).
+enum class Metric { L1, Octilinear, Farey2, Farey3, Farey4 };
 geom::Root2 segment_length(Metric metric, geom::Point a, geom::Point b);
 
 // The visibility graph of the comment above and Dijkstra on it, in either metric: the nodes and
@@ -161,6 +163,21 @@ class L1Reference : private VisibilityGraph {
   using VisibilityGraph::problems;
   using VisibilityGraph::visible;
   using VisibilityGraph::wedges_at;
+
+ protected:
+  // Another metric whose lengths are integers (NormReference).
+  L1Reference(const geom::Box& domain, std::span<const geom::Polygon> obstacles, Metric metric)
+      : VisibilityGraph(domain, obstacles, metric) {}
+};
+
+// The reference for a fixed-orientation norm of geom/fixed_norm.h (order 2, 3 or 4): the same
+// graph, each edge weighted by N(b - a) = max_i lambda_i . (b - a), an exact integer (the
+// argument above holds for every norm); the interface of L1Reference, lengths in N.
+class NormReference : public L1Reference {
+ public:
+  NormReference(const geom::Box& domain, std::span<const geom::Polygon> obstacles, int order)
+      : L1Reference(domain, obstacles,
+                    order == 2 ? Metric::Farey2 : order == 3 ? Metric::Farey3 : Metric::Farey4) {}
 };
 
 }  // namespace taut::oracle

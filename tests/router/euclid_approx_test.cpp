@@ -16,6 +16,7 @@
 #include <random>
 #include <set>
 
+#include "geom/fixed_norm.h"
 #include "oracle/l1_oracle.h"
 #include "router/wavefront.h"
 #include "support/wavefront_cases.h"
@@ -109,6 +110,65 @@ TEST(EuclidApprox, OctilinearDistanceBoundsTheEuclideanOne) {
   EXPECT_GE(instances, 400);
   EXPECT_GE(pairs, 1000);
   EXPECT_GE(loose, 500);  // the bound is exercised, not only met by axis-parallel answers
+}
+
+// The Farey norms (geom/fixed_norm.h, router::NormWavefront, orders 2-4: 16, 32, 48
+// directions): S d_E <= d_N <= Lambda d_E, i.e. d_E in [d_N / Lambda, d_N / S], which
+// `taut spm --orientations any` reports. Same instances and reference as above; the worst ratio
+// (d_N / S) / d_E per order is printed, and order 2's must use more than half its epsilon (the
+// interval is exercised, not only met by straight answers).
+TEST(EuclidApprox, NormDistancesBoundTheEuclideanOne) {
+  const long double slack = 1e-12L;
+  const long double S = static_cast<long double>(geom::kNormScale);
+  int instances = 0, pairs = 0;
+  long double worst[5] = {1, 1, 1, 1, 1};
+  for (std::uint64_t seed = 1; seed <= 600; ++seed) {
+    WavefrontCase c;
+    try {
+      c = make_wavefront_case(seed);
+    } catch (const std::exception&) {
+      continue;
+    }
+    const oracle::L1Reference ref(c.domain, c.obstacles);
+    if (!ref.problems().empty()) continue;
+    std::vector<Point> vertices;
+    bool pinch = false;
+    for (const auto& p : c.obstacles) {
+      vertices.insert(vertices.end(), p.outer.begin(), p.outer.end());
+      for (const auto& h : p.holes) vertices.insert(vertices.end(), h.begin(), h.end());
+    }
+    for (Point v : vertices) pinch = pinch || ref.wedges_at(v).size() > 1;
+    if (pinch) continue;
+    std::vector<Point> free_pts;
+    for (Point p : c.candidates)
+      if (ref.is_free(p)) free_pts.push_back(p);
+    if (free_pts.size() < 2) continue;
+    ++instances;
+    std::mt19937_64 rng(seed);
+    const Point s = free_pts[rng() % free_pts.size()], t = free_pts[rng() % free_pts.size()];
+    const auto de = euclid_distance(ref, vertices, s, t);
+    for (int order = 2; order <= 4; ++order) {
+      router::NormWavefront wf(c.domain, c.obstacles, order);
+      wf.run(std::vector<Point>{s}, std::vector<Point>{t}, router::WavefrontStop::AllTargets);
+      const auto dn = wf.target_distance(0);
+      ASSERT_EQ(dn.has_value(), de.has_value()) << "seed " << seed << " order " << order;
+      if (!dn) continue;
+      if (order == 2) ++pairs;
+      const long double lambda = std::sqrt(static_cast<long double>(geom::fixed_norm_lambda_max_sq(order)));
+      const long double v = static_cast<long double>(*dn);
+      EXPECT_LE(*de, v / S * (1 + slack)) << "seed " << seed << " order " << order << ": below d_N / S";
+      EXPECT_LE(v / lambda, *de * (1 + slack)) << "seed " << seed << " order " << order << ": above d_N / Lambda";
+      if (*de > 0) worst[order] = std::max(worst[order], v / S / *de);
+    }
+  }
+  std::printf("instances %d, pairs %d; worst (d_N / S) / d_E: order 2 %.6Lf (1 + eps = %.6Lf), order 3 %.6Lf "
+              "(%.6Lf), order 4 %.6Lf (%.6Lf)\n",
+              instances, pairs, worst[2], 1 + geom::fixed_norm_epsilon(2), worst[3],
+              1 + geom::fixed_norm_epsilon(3), worst[4], 1 + geom::fixed_norm_epsilon(4));
+  EXPECT_GE(instances, 200);
+  EXPECT_GE(pairs, 150);
+  // the approximation is exercised: some pair is off by more than half of order 2's epsilon
+  EXPECT_GT(worst[2], 1 + geom::fixed_norm_epsilon(2) / 2);
 }
 
 }  // namespace

@@ -606,6 +606,35 @@ struct OctMetric {
   }
 };
 
+// A fixed-orientation norm (geom/fixed_norm.h): NormWavefront against NormReference, lengths
+// int64 (scaled by geom::kNormScale).
+template <int N>
+struct NormTestMetric {
+  struct Wavefront : router::NormWavefront {
+    Wavefront(const Box& domain, std::span<const Polygon> obstacles)
+        : router::NormWavefront(domain, obstacles, N) {}
+  };
+  struct Reference : oracle::NormReference {
+    Reference(const Box& domain, std::span<const Polygon> obstacles)
+        : oracle::NormReference(domain, obstacles, N) {}
+  };
+  using Dist = std::optional<std::int64_t>;
+  static constexpr WaveMetric kMetric =
+      N == 2 ? WaveMetric::Farey2 : N == 3 ? WaveMetric::Farey3 : WaveMetric::Farey4;
+  static constexpr const char* kWavefront = "NormWavefront";
+  static constexpr const char* kReference = "NormReference";
+  static constexpr const char* kSeedVariable = "TAUT_NORM_SEED";
+  static constexpr const char* kFamilyNote =
+      N == 2 ? ", Farey norm 2" : N == 3 ? ", Farey norm 3" : ", Farey norm 4";
+  static void run(Wavefront& wf, const std::vector<Point>& sources,
+                  const std::vector<Point>& targets, bool stop_early) {
+    wf.run(sources, targets, stop_early ? Wavefront::Stop::AllTargets : Wavefront::Stop::Never);
+  }
+  static std::string stop_cpp(bool stop_early) {
+    return stop_early ? "NormWavefront::Stop::AllTargets" : "NormWavefront::Stop::Never";
+  }
+};
+
 struct Scene {
   Box domain;
   std::vector<Polygon> obstacles;
@@ -1037,12 +1066,14 @@ void set_crash_seed(std::optional<u64> seed, WaveMetric metric = WaveMetric::L1)
     g_crash_length = 0;
     return;
   }
-  const bool oct = metric == WaveMetric::Octilinear;
+  const bool oct = metric == WaveMetric::Octilinear, l1 = metric == WaveMetric::L1;
   const int n = std::snprintf(g_crash_message, sizeof g_crash_message,
                               "\n*** crashed while checking %swavefront seed %llu (rerun alone: "
                               "%s=%llu)\n",
-                              oct ? "octilinear " : "", static_cast<unsigned long long>(*seed),
-                              oct ? OctMetric::kSeedVariable : L1Metric::kSeedVariable,
+                              oct ? "octilinear " : l1 ? "" : "norm ", static_cast<unsigned long long>(*seed),
+                              oct ? OctMetric::kSeedVariable
+                              : l1 ? L1Metric::kSeedVariable
+                                   : NormTestMetric<2>::kSeedVariable,
                               static_cast<unsigned long long>(*seed));
   g_crash_length = n > 0 ? static_cast<std::size_t>(n) : 0;
 }
@@ -1387,9 +1418,14 @@ std::string check_seed(std::uint64_t seed, WavefrontTally& tally, bool verbose,
 
 std::string check_wavefront_seed(std::uint64_t seed, WavefrontTally& tally, bool verbose,
                                  bool shrink_failures, WaveMetric metric) {
-  return metric == WaveMetric::Octilinear
-             ? check_seed<OctMetric>(seed, tally, verbose, shrink_failures)
-             : check_seed<L1Metric>(seed, tally, verbose, shrink_failures);
+  switch (metric) {
+    case WaveMetric::Octilinear: return check_seed<OctMetric>(seed, tally, verbose, shrink_failures);
+    case WaveMetric::Farey2: return check_seed<NormTestMetric<2>>(seed, tally, verbose, shrink_failures);
+    case WaveMetric::Farey3: return check_seed<NormTestMetric<3>>(seed, tally, verbose, shrink_failures);
+    case WaveMetric::Farey4: return check_seed<NormTestMetric<4>>(seed, tally, verbose, shrink_failures);
+    case WaveMetric::L1: break;
+  }
+  return check_seed<L1Metric>(seed, tally, verbose, shrink_failures);
 }
 
 WavefrontSweep run_wavefront_seeds(const std::vector<std::uint64_t>& seeds, std::size_t max_reports,
@@ -1425,7 +1461,8 @@ WavefrontSweep run_wavefront_sweep(std::uint64_t first, std::int64_t count, std:
 
 std::optional<std::uint64_t> wavefront_seed_from_env(WaveMetric metric) {
   const char* s = std::getenv(metric == WaveMetric::Octilinear ? OctMetric::kSeedVariable
-                                                               : L1Metric::kSeedVariable);
+                              : metric == WaveMetric::L1       ? L1Metric::kSeedVariable
+                                                               : NormTestMetric<2>::kSeedVariable);
   if (!s || !*s) return std::nullopt;
   char* end = nullptr;
   const unsigned long long v = std::strtoull(s, &end, 10);

@@ -65,7 +65,8 @@ inline constexpr std::uint64_t kLargeSeedBase = 1'000'000'000'000ULL;
 
 // Which engine and reference the checks compare: L1Wavefront with L1Reference, or OctWavefront
 // with OctilinearReference.
-enum class WaveMetric { L1, Octilinear };
+// Farey2..Farey4: router::NormWavefront of that order with oracle::NormReference.
+enum class WaveMetric { L1, Octilinear, Farey2, Farey3, Farey4 };
 
 struct WavefrontCase {
   std::uint64_t seed = 0;
