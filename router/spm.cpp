@@ -10,6 +10,9 @@
 #include <stdexcept>
 #include <string>
 
+#include <boost/geometry.hpp>
+#include <boost/geometry/index/rtree.hpp>
+
 #include "geom/index.h"
 #include "geom/normalize.h"
 #include "geom/predicates.h"
@@ -39,6 +42,44 @@ inline Q qmax(Q a, Q b) { return cmp(a, b) >= 0 ? a : b; }
 inline Q qmin(Q a, Q b) { return cmp(a, b) <= 0 ? a : b; }
 inline i64 floor_of(Q a) { return a.n >= 0 ? a.n / a.d : -((-a.n + a.d - 1) / a.d); }
 inline i64 ceil_of(Q a) { return -floor_of(Q{-a.n, a.d}); }
+
+// Keep the part of convex polygon `poly` (points of an exact field N: Rational, RationalRoot2)
+// where a x + b y + c <= 0: Sutherland-Hodgman against one line, exact.
+template <class Pt, class N>
+void clip_convex(std::vector<Pt>& poly, const N& a, const N& b, const N& c) {
+  const std::size_t n = poly.size();
+  if (n == 0) return;
+  std::vector<N> v(n);
+  std::vector<int> sg(n);
+  bool all_in = true, all_out = true;
+  for (std::size_t i = 0; i < n; ++i) {
+    v[i] = a * poly[i].x + b * poly[i].y + c;
+    sg[i] = v[i].sign();
+    all_in = all_in && sg[i] <= 0;
+    all_out = all_out && sg[i] > 0;
+  }
+  if (all_in) return;
+  if (all_out) {
+    poly.clear();
+    return;
+  }
+  std::vector<Pt> out;
+  out.reserve(n + 1);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Pt& p = poly[i];
+    const Pt& q = poly[(i + 1) % n];
+    const int sp = sg[i], sq = sg[(i + 1) % n];
+    if (sp <= 0) out.push_back(p);
+    if ((sp < 0 && sq > 0) || (sp > 0 && sq < 0)) {
+      const N f = v[i] / (v[i] - v[(i + 1) % n]);
+      out.push_back({p.x + (q.x - p.x) * f, p.y + (q.y - p.y) * f});
+    }
+  }
+  poly.clear();
+  for (Pt& w : out)
+    if (poly.empty() || !(poly.back() == w)) poly.push_back(std::move(w));
+  while (poly.size() > 1 && poly.front() == poly.back()) poly.pop_back();
+}
 
 // The sheared order of points, (x, y) lexicographic, is Point's own operator< (geom/types.h).
 inline bool same_dir(Point o, Point a, Point b) {  // o->a and o->b point the same way
@@ -1088,36 +1129,7 @@ struct Decomp {
   };
   // Keep the part of convex polygon `poly` where a x + b y + c <= 0.
   static void clip(std::vector<RPoint>& poly, const Rational& a, const Rational& b, const Rational& c) {
-    const std::size_t n = poly.size();
-    if (n == 0) return;
-    std::vector<Rational> s(n);
-    bool all_in = true, all_out = true;
-    for (std::size_t i = 0; i < n; ++i) {
-      s[i] = a * poly[i].x + b * poly[i].y + c;
-      all_in = all_in && s[i] <= 0;
-      all_out = all_out && s[i] > 0;
-    }
-    if (all_in) return;
-    if (all_out) {
-      poly.clear();
-      return;
-    }
-    std::vector<RPoint> out;
-    out.reserve(n + 1);
-    for (std::size_t i = 0; i < n; ++i) {
-      const RPoint& p = poly[i];
-      const RPoint& q = poly[(i + 1) % n];
-      const Rational &sp = s[i], &sq = s[(i + 1) % n];
-      if (sp <= 0) out.push_back(p);
-      if ((sp < 0 && sq > 0) || (sp > 0 && sq < 0)) {
-        const Rational f = sp / (sp - sq);
-        out.push_back({p.x + (q.x - p.x) * f, p.y + (q.y - p.y) * f});
-      }
-    }
-    poly.clear();
-    for (RPoint& v : out)
-      if (poly.empty() || !(poly.back() == v)) poly.push_back(std::move(v));
-    while (poly.size() > 1 && poly.front() == poly.back()) poly.pop_back();
+    clip_convex(poly, a, b, c);
   }
   static bool has_area(const std::vector<RPoint>& poly) { return poly.size() >= 3 && twice_signed_area(poly) > 0; }
 
@@ -1616,6 +1628,32 @@ Rational twice_signed_area(const std::vector<RPoint>& ring) {
   return a2;
 }
 
+int RationalRoot2::sign() const {
+  const int sa = a.sign(), sb = b.sign();
+  if (sa >= 0 && sb >= 0) return (sa > 0 || sb > 0) ? 1 : 0;
+  if (sa <= 0 && sb <= 0) return (sa < 0 || sb < 0) ? -1 : 0;
+  // opposite signs: a + b sqrt2 has a's sign when a^2 > 2 b^2 (never equal: sqrt2 is irrational)
+  const Rational d = a * a - 2 * b * b;
+  return sa > 0 ? d.sign() : -d.sign();
+}
+double RationalRoot2::to_double() const {
+  return a.convert_to<double>() + b.convert_to<double>() * 1.4142135623730951;
+}
+std::int64_t RationalRoot2::floor() const {
+  std::int64_t f = static_cast<std::int64_t>(std::floor(to_double()));
+  while ((*this - RationalRoot2(Rational(f))).sign() < 0) --f;
+  while ((*this - RationalRoot2(Rational(f + 1))).sign() >= 0) ++f;
+  return f;
+}
+RationalRoot2 twice_signed_area(const std::vector<R2Point>& ring) {
+  RationalRoot2 a2;
+  for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+    const R2Point &p = ring[i], &q = ring[(i + 1) % n];
+    a2 = a2 + (p.x * q.y - q.x * p.y);
+  }
+  return a2;
+}
+
 std::vector<L1Map::Piece> L1Map::pieces(Detail detail) const {
   std::vector<Piece> out;
   for (uint32_t i = 0; i < impl_->dec.traps.size(); ++i) impl_->dec.trapezoid_pieces(i, detail == Detail::ByRoot, out);
@@ -1630,6 +1668,162 @@ std::size_t L1Map::shape_source_index(std::size_t k) const { return impl_->npoin
 std::size_t L1Map::memory_bytes() const { return impl_->wf.memory_bytes() + impl_->dec.memory_bytes(); }
 
 // ----------------------------------------------------------------------------------------------
+namespace {
+
+// Keep the part of convex polygon `poly` where a x + b y + c <= 0 (Q(sqrt2) coefficients).
+void clip_r2(std::vector<R2Point>& poly, const RationalRoot2& a, const RationalRoot2& b, const RationalRoot2& c) {
+  clip_convex(poly, a, b, c);
+}
+bool has_area_r2(const std::vector<R2Point>& poly) { return poly.size() >= 3 && twice_signed_area(poly).sign() > 0; }
+
+// A piece of one octilinear frame: on `ring` the frame's value is gx x + gy y + c (coordinates
+// of whatever plane the ring is in), from root `root` of that frame's decomposition.
+struct LinearPiece {
+  std::vector<R2Point> ring;
+  RationalRoot2 gx, gy, c;
+  uint32_t root;
+};
+
+// The pieces of trapezoid i of a weighted frame decomposition (frame coordinates): L1Map's bands
+// (trapezoid_pieces), with the weighted gradients (+-wx, +-wy), always cut at every threshold
+// (so each piece has one linear function), merged only across bands with the same function.
+void frame_pieces(const Decomp<geom::Root2>& m, uint32_t i, std::vector<LinearPiece>& out) {
+  using R = RationalRoot2;
+  const Trap& t = m.traps[i];
+  if (t.pl.x == t.pr.x) return;
+  auto y_q = [](Point a, Point b, i64 x) {
+    return Q{i64{a.y} * (i64{b.x} - x) + i64{b.y} * (x - a.x), i64{b.x} - a.x};
+  };
+  auto rq = [](Q q) { return R(Rational(q.n, q.d)); };
+  const Q bl = y_q(t.b0, t.b1, t.pl.x), br = y_q(t.b0, t.b1, t.pr.x);
+  const Q tl = y_q(t.t0, t.t1, t.pl.x), tr = y_q(t.t0, t.t1, t.pr.x);
+  const R xl{Rational(t.pl.x)}, xr{Rational(t.pr.x)};
+  std::vector<R2Point> poly{{xl, rq(bl)}, {xr, rq(br)}, {xr, rq(tr)}, {xl, rq(tl)}};
+  if (poly[1] == poly[2]) poly.erase(poly.begin() + 2);
+  if (poly[0] == poly.back()) poly.pop_back();
+  const R wx(m.wx), wy(m.wy);
+  struct Stair {
+    uint32_t b, e;
+    bool up;
+    int gx;
+    i64 x0;  // value = K + gx wx (x - x0) +- wy y
+  };
+  const Stair st4[4] = {{t.lo[0], t.lo[1], true, 1, i64{t.pl.x}},
+                        {t.lo[1], t.lo[2], false, 1, i64{t.pl.x}},
+                        {t.ro[0], t.ro[1], true, -1, i64{t.pr.x}},
+                        {t.ro[1], t.ro[2], false, -1, i64{t.pr.x}}};
+  bool any = false;
+  for (const Stair& st : st4) any = any || st.e > st.b;
+  if (!any) return;  // walled in
+  const Q ylo = qmin(bl, br), yhi = qmax(tl, tr);
+  std::vector<Q> lim{ylo};
+  for (const Stair& st : st4)
+    for (uint32_t k = st.b; k < st.e; ++k)
+      if (cmp(m.rays[k].t(), ylo) > 0 && cmp(m.rays[k].t(), yhi) < 0) lim.push_back(m.rays[k].t());
+  std::sort(lim.begin() + 1, lim.end(), [](Q a, Q b) { return cmp(a, b) < 0; });
+  lim.erase(std::unique(lim.begin(), lim.end(), [](Q a, Q b) { return cmp(a, b) == 0; }), lim.end());
+  lim.push_back(yhi);
+  struct Cand {
+    R gx, gy, c;
+    uint32_t root;
+    bool same(const Cand& o) const { return root == o.root && gx == o.gx && gy == o.gy && c == o.c; }
+  };
+  auto active = [&](const Stair& st, Q a, Q b) -> uint32_t {  // L1Map's rule, searched
+    uint32_t best = kNone;
+    for (uint32_t k = st.b; k < st.e; ++k) {
+      if (st.up ? cmp(m.rays[k].t(), a) <= 0 : cmp(m.rays[k].t(), b) >= 0) best = k;
+      else break;
+    }
+    return best;
+  };
+  struct Run {
+    Q ya, yb;
+    std::optional<Cand> c;
+  } run;
+  auto slab = [&](Q ya, Q yb) {
+    std::vector<R2Point> b = poly;
+    if (cmp(ya, ylo) > 0) clip_r2(b, R(), R(Rational(-1)), rq(ya));   // y >= ya
+    if (cmp(yb, yhi) < 0) clip_r2(b, R(), R(Rational(1)), -rq(yb));   // y <= yb
+    return b;
+  };
+  auto emit = [&](std::vector<R2Point>&& ring, const Cand& c) {
+    // Only the exact ones: the frame's value d(r) + wx |du| + wy |dv| is the octilinear length
+    // of q - r when du and dv have one sign (q - r in the frame's cone or its opposite), and
+    // strictly more when they have opposite signs (the octagon is strictly convex between
+    // orientations 135 degrees apart): such a piece is nowhere the least over the frames.
+    if ((c.gx.sign() > 0) != (c.gy.sign() > 0)) return;
+    if (has_area_r2(ring)) out.push_back({std::move(ring), c.gx, c.gy, c.c, c.root});
+  };
+  auto flush = [&] {
+    if (!run.c) return;
+    emit(slab(run.ya, run.yb), *run.c);
+    run.c.reset();
+  };
+  // the active ray of each staircase per band; consecutive bands with the same ones are one
+  const std::size_t nb = lim.size() - 1;
+  std::vector<std::array<uint32_t, 4>> acts(nb);
+  for (std::size_t i = 0; i < nb; ++i)
+    for (int k = 0; k < 4; ++k) acts[i][k] = active(st4[k], lim[i], lim[i + 1]);
+  for (std::size_t band = 0; band < nb;) {
+    std::size_t end = band + 1;
+    while (end < nb && acts[end] == acts[band]) ++end;
+    const Q ya = lim[band], yb = lim[end];
+    const std::array<uint32_t, 4> act = acts[band];
+    band = end;
+    std::vector<Cand> cands;
+    for (int si = 0; si < 4; ++si) {
+      const uint32_t k = act[si];
+      if (k == kNone) continue;
+      const Stair& st = st4[si];
+      const auto& ray = m.rays[k];
+      const R gx = st.gx > 0 ? wx : -wx, gy = st.up ? wy : -wy;
+      cands.push_back({gx, gy, R(ray.K) - gx * R(Rational(st.x0)), ray.root});
+    }
+    if (cands.empty()) throw std::logic_error("spm: a band of a reached octilinear trapezoid has no ray");
+    if (cands.size() > 1) {  // drop candidates no lower anywhere in the band's box (linear)
+      auto diff = [&](const Cand& j, const Cand& k, const R& x, const R& y) {
+        return ((j.gx - k.gx) * x + (j.gy - k.gy) * y + (j.c - k.c)).sign();
+      };
+      const R yar = rq(ya), ybr = rq(yb);
+      std::vector<Cand> kept;
+      for (std::size_t a = 0; a < cands.size(); ++a) {
+        bool dominated = false;
+        for (std::size_t b = 0; b < cands.size() && !dominated; ++b) {
+          if (b == a) continue;
+          const int d[4] = {diff(cands[b], cands[a], xl, yar), diff(cands[b], cands[a], xr, yar),
+                            diff(cands[b], cands[a], xl, ybr), diff(cands[b], cands[a], xr, ybr)};
+          const bool le = d[0] <= 0 && d[1] <= 0 && d[2] <= 0 && d[3] <= 0;
+          const bool tie = d[0] == 0 && d[1] == 0 && d[2] == 0 && d[3] == 0;
+          dominated = le && (!tie || b < a);
+        }
+        if (!dominated) kept.push_back(cands[a]);
+      }
+      cands = std::move(kept);
+    }
+    if (cands.size() == 1) {
+      if (run.c && run.c->same(cands[0])) {
+        run.yb = yb;
+      } else {
+        flush();
+        run = {ya, yb, cands[0]};
+      }
+      continue;
+    }
+    flush();
+    const std::vector<R2Point> b = slab(ya, yb);
+    if (!has_area_r2(b)) continue;
+    for (std::size_t a = 0; a < cands.size(); ++a) {
+      std::vector<R2Point> p = b;
+      for (std::size_t o = 0; o < cands.size() && p.size() >= 3; ++o)
+        if (o != a) clip_r2(p, cands[a].gx - cands[o].gx, cands[a].gy - cands[o].gy, cands[a].c - cands[o].c);
+      emit(std::move(p), cands[a]);
+    }
+  }
+  flush();
+}
+
+}  // namespace
+
 struct OctMap::Impl {
   OctWavefront wf;
   geom::Box domain;
@@ -1759,6 +1953,115 @@ std::vector<Point> OctMap::path(Point q, const Answer& a) const {
   else
     out = m.wf.wedge_path(m.back(k, r.p), r.wedge);
   if (out.empty() || out.back() != q) out.push_back(q);
+  return out;
+}
+
+std::vector<OctMap::Piece> OctMap::pieces() const {
+  using R = RationalRoot2;
+  const Impl& m = *impl_;
+  namespace bgi = boost::geometry::index;
+  using BPoint = boost::geometry::model::point<std::int64_t, 2, boost::geometry::cs::cartesian>;
+  using BBox = boost::geometry::model::box<BPoint>;
+  struct World {
+    LinearPiece p;  // world coordinates
+    BBox box;       // integer bounding box of the ring
+  };
+  // an integer box holding the ring (exact floors, each rounded up by one for the top)
+  auto box_of = [](const std::vector<R2Point>& ring) {
+    std::int64_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    for (std::size_t j = 0; j < ring.size(); ++j) {
+      const std::int64_t fx = ring[j].x.floor(), fy = ring[j].y.floor();
+      if (j == 0 || fx < x0) x0 = fx;
+      if (j == 0 || fy < y0) y0 = fy;
+      if (j == 0 || fx + 1 > x1) x1 = fx + 1;
+      if (j == 0 || fy + 1 > y1) y1 = fy + 1;
+    }
+    return BBox(BPoint(x0, y0), BPoint(x1, y1));
+  };
+  std::vector<std::vector<World>> frames(4);
+  using Tree = bgi::rtree<std::pair<BBox, uint32_t>, bgi::rstar<16>>;
+  std::vector<Tree> trees(4);
+  for (int k = 0; k < 4; ++k) {
+    const OctFrame& f = kOctFrames[k];
+    const Decomp<geom::Root2>& d = m.dec[k];
+    std::vector<LinearPiece> local;
+    for (uint32_t i = 0; i < d.traps.size(); ++i) frame_pieces(d, i, local);
+    std::vector<std::pair<BBox, uint32_t>> items;
+    for (LinearPiece& lp : local) {
+      // world = M^-1 (u, v) + centre; the value gu u + gv v + c with u = a (x - cx) + b (y - cy),
+      // v = c' (x - cx) + d (y - cy)
+      World w;
+      for (const R2Point& p : lp.ring)
+        w.p.ring.push_back({R(Rational(f.ia)) * p.x + R(Rational(f.ib)) * p.y + R(Rational(m.cx)),
+                            R(Rational(f.ic)) * p.x + R(Rational(f.id)) * p.y + R(Rational(m.cy))});
+      w.p.gx = lp.gx * R(Rational(f.a)) + lp.gy * R(Rational(f.c));
+      w.p.gy = lp.gx * R(Rational(f.b)) + lp.gy * R(Rational(f.d));
+      w.p.c = lp.c - w.p.gx * R(Rational(m.cx)) - w.p.gy * R(Rational(m.cy));
+      w.p.root = lp.root;
+      w.box = box_of(w.p.ring);
+      items.push_back({w.box, static_cast<uint32_t>(frames[k].size())});
+      frames[k].push_back(std::move(w));
+    }
+    trees[k] = Tree(items.begin(), items.end());
+  }
+  // Every piece here is exact (frame_pieces), and the map's value at q is attained by the exact
+  // piece of some frame there; so a piece keeps q unless an exact piece of another frame holding
+  // q is lower there. Each piece therefore loses, for
+  // every exact piece C of another frame it meets, the convex part of C where C is no higher:
+  // the part minus a convex polygon is cut into convex pieces, one per edge of the polygon.
+  std::vector<Piece> out;
+  auto minus = [](const std::vector<R2Point>& part, const std::vector<R2Point>& c, std::vector<std::vector<R2Point>>& res) {
+    std::vector<R2Point> rest = part;  // part, inside the edges of c handled so far
+    for (std::size_t e = 0; e < c.size() && rest.size() >= 3; ++e) {
+      const R2Point &a = c[e], &b = c[(e + 1) % c.size()];
+      // (b - a) x (p - a) = (b.x - a.x)(p.y - a.y) - (b.y - a.y)(p.x - a.x): outside (right) <= 0
+      const R ex = b.x - a.x, ey = b.y - a.y;
+      std::vector<R2Point> outside = rest;
+      clip_r2(outside, -ey, ex, ey * a.x - ex * a.y);  // cross <= 0
+      if (has_area_r2(outside)) res.push_back(std::move(outside));
+      clip_r2(rest, ey, -ex, ex * a.y - ey * a.x);     // inside (left): cross >= 0
+    }
+  };
+  for (int k = 0; k < 4; ++k)
+    for (const World& w : frames[k]) {
+      std::vector<std::vector<R2Point>> parts{w.p.ring};
+      std::vector<std::pair<BBox, uint32_t>> hits;
+      for (int g = 0; g < 4 && !parts.empty(); ++g) {
+        if (g == k) continue;
+        hits.clear();
+        trees[g].query(bgi::intersects(w.box), std::back_inserter(hits));
+        for (const auto& [box, id] : hits) {
+          const LinearPiece& o = frames[g][id].p;
+          // c: where o is no higher than w. Their gradients differ: an exact piece's gradient
+          // is the octilinear functional of one of its frame's two cones, and no two frames
+          // share a cone; so they tie on a line at most, and either may keep it.
+          const R dgx = w.p.gx - o.gx, dgy = w.p.gy - o.gy, dc = w.p.c - o.c;
+          if (dgx.sign() == 0 && dgy.sign() == 0)
+            throw std::logic_error("spm: two octilinear frames with one gradient");
+          std::vector<R2Point> c = o.ring;
+          clip_r2(c, -dgx, -dgy, -dc);  // w - o >= 0
+          if (!has_area_r2(c)) continue;
+          std::vector<std::vector<R2Point>> next;
+          for (auto& part : parts) {
+            // does c meet part with area? (part inside every edge of c)
+            std::vector<R2Point> meet = part;
+            for (std::size_t e = 0; e < c.size() && meet.size() >= 3; ++e) {
+              const R2Point &a = c[e], &b = c[(e + 1) % c.size()];
+              clip_r2(meet, b.y - a.y, a.x - b.x, (b.x - a.x) * a.y - (b.y - a.y) * a.x);
+            }
+            if (!has_area_r2(meet)) {
+              next.push_back(std::move(part));
+              continue;
+            }
+            minus(part, c, next);
+          }
+          parts = std::move(next);
+          if (parts.empty()) break;
+        }
+      }
+      const auto& r = m.dec[k].roots[w.p.root];
+      for (auto& part : parts) out.push_back({std::move(part), r.source, m.back(k, r.p), r.d});
+    }
   return out;
 }
 

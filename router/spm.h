@@ -99,6 +99,40 @@ struct RPoint {
 // Twice the signed area of a ring (positive: counter-clockwise).
 Rational twice_signed_area(const std::vector<RPoint>& ring);
 
+// Exact numbers a + b sqrt2 with rational a and b (the field Q(sqrt2)): the octilinear map's
+// cell vertices, where bisectors whose slopes lie in Q(sqrt2) meet. Signs are exact: a + b sqrt2
+// with a and b of opposite signs compares a^2 with 2 b^2.
+struct RationalRoot2 {
+  Rational a, b;
+  RationalRoot2() = default;
+  RationalRoot2(Rational a_, Rational b_ = 0) : a(std::move(a_)), b(std::move(b_)) {}
+  explicit RationalRoot2(const geom::Root2& r) : a(r.a), b(r.b) {}
+  int sign() const;
+  friend RationalRoot2 operator+(const RationalRoot2& x, const RationalRoot2& y) { return {x.a + y.a, x.b + y.b}; }
+  friend RationalRoot2 operator-(const RationalRoot2& x, const RationalRoot2& y) { return {x.a - y.a, x.b - y.b}; }
+  friend RationalRoot2 operator-(const RationalRoot2& x) { return {-x.a, -x.b}; }
+  friend RationalRoot2 operator*(const RationalRoot2& x, const RationalRoot2& y) {
+    return {x.a * y.a + 2 * x.b * y.b, x.a * y.b + x.b * y.a};
+  }
+  // y != 0
+  friend RationalRoot2 operator/(const RationalRoot2& x, const RationalRoot2& y) {
+    const Rational n = y.a * y.a - 2 * y.b * y.b;  // nonzero: sqrt2 is irrational
+    return {(x.a * y.a - 2 * x.b * y.b) / n, (x.b * y.a - x.a * y.b) / n};
+  }
+  friend bool operator==(const RationalRoot2&, const RationalRoot2&) = default;
+  friend bool operator<(const RationalRoot2& x, const RationalRoot2& y) { return (x - y).sign() < 0; }
+  friend bool operator<=(const RationalRoot2& x, const RationalRoot2& y) { return (x - y).sign() <= 0; }
+  friend bool operator>(const RationalRoot2& x, const RationalRoot2& y) { return (x - y).sign() > 0; }
+  // The largest integer not above it (exact; a floating estimate corrected by exact signs).
+  std::int64_t floor() const;
+  double to_double() const;  // for pictures and messages only
+};
+struct R2Point {
+  RationalRoot2 x, y;
+  friend bool operator==(const R2Point&, const R2Point&) = default;
+};
+RationalRoot2 twice_signed_area(const std::vector<R2Point>& ring);
+
 class L1Map {
  public:
   // Obstacles as geom::normalize_obstacles() returns them; sources that are not free are
@@ -242,9 +276,9 @@ class L1Map {
 // --orientations octilinear). Coordinates: each frame centres the domain and its coordinates
 // are sums of two, so a domain whose width plus height exceeds about 2^31 does not fit the
 // frames' exact integer range; the constructor then throws std::domain_error (fits() tells
-// before), and callers answer such queries with OctWavefront runs. The map's cells as exact
-// pieces (L1Map::pieces) and the octilinear Voronoi diagram are not available yet: their
-// vertices lie in Q(sqrt2).
+// before), and callers answer such queries with OctWavefront runs. The map's cells: pieces()
+// (exact, in Q(sqrt2)); the octilinear Voronoi diagram (cells merged by source, written as
+// XML and SVG) is not available yet.
 class OctMap {
  public:
   using Options = L1Map::Options;
@@ -270,6 +304,25 @@ class OctMap {
   std::optional<Answer> locate(geom::Point q) const;
   std::vector<geom::Point> path(geom::Point q) const;
   std::vector<geom::Point> path(geom::Point q, const Answer& a) const;
+
+  // The map's cells as convex pieces with exact vertices in Q(sqrt2): every point q of a piece
+  // has d(q) = root_distance + d8(q - root) and is seen straight from root. Pieces have positive
+  // area, cover the reached free space and overlap only on their boundaries. How: each frame's
+  // decomposition gives pieces on which its value is one linear function (L1Map's bands, with
+  // the weighted gradients); the map's value is the least over the frames, so each piece keeps
+  // the part where its function is no larger than those of the other frames' pieces it meets
+  // (found on an R-tree of their integer bounding boxes). Only pieces where the frame is exact
+  // take part (d(r) + wx |du| + wy |dv| with du, dv of one sign: the cone or its opposite);
+  // elsewhere a frame's value exceeds the octilinear one.
+  // Cost: exact Q(sqrt2) arithmetic on GMP rationals, pieces times the other frames' pieces they
+  // meet: for checks and pictures, not for large maps.
+  struct Piece {
+    std::vector<R2Point> ring;  // convex, counter-clockwise, no repeated vertex
+    std::size_t source = 0;
+    geom::Point root;
+    geom::Root2 root_distance;
+  };
+  std::vector<Piece> pieces() const;
 
   // Summed over the four frames (vertices: of one frame).
   const L1Map::Stats& stats() const;

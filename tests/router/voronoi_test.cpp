@@ -36,6 +36,7 @@
 #include "io/layout_geometry.h"
 #include "io/movingai.h"
 #include "support/exact_rings.h"
+#include "support/reach.h"
 #include "support/run.h"
 #include "support/wavefront_cases.h"
 
@@ -262,24 +263,7 @@ std::string check_case(const WavefrontCase& c, std::uint64_t seed, Tally& tally)
   // Probes.
   std::vector<std::vector<std::optional<i64>>> ref_d;
   for (Point s : sources) ref_d.push_back(ref.distances(s, probes));
-  // Free space is all reached when every obstacle vertex is, and no vertex is a pinch (two
-  // wedges; else a walled-in component could hide behind a reached wedge of the same point).
-  bool all_reached = true;
-  {
-    std::vector<Point> vs;
-    for (const auto& p : c.obstacles) {
-      vs.insert(vs.end(), p.outer.begin(), p.outer.end());
-      for (const auto& h : p.holes) vs.insert(vs.end(), h.begin(), h.end());
-    }
-    for (Point corner : {D.lo, D.hi, Point{D.lo.x, D.hi.y}, Point{D.hi.x, D.lo.y}}) vs.push_back(corner);
-    std::vector<bool> reached(vs.size(), false);
-    for (Point s : sources) {
-      const auto d = ref.distances(s, vs);
-      for (std::size_t i = 0; i < vs.size(); ++i) reached[i] = reached[i] || d[i].has_value();
-    }
-    for (std::size_t i = 0; i < vs.size(); ++i)
-      all_reached = all_reached && (reached[i] || !ref.is_free(vs[i])) && ref.wedges_at(vs[i]).size() <= 1;
-  }
+  const bool all_reached = all_free_space_reached(ref, D, c.obstacles, sources);
   for (std::size_t i = 0; i < probes.size(); ++i) {
     const Point q = probes[i];
     const P2 qq = conv(q);

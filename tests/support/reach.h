@@ -1,0 +1,34 @@
+// Whether the sources reach all of free space, by a brute-force reference: every obstacle vertex
+// and domain corner that is free is reached from some source, and no vertex is a pinch (two
+// wedges; else a walled-in component could hide behind a reached wedge of the same point). For
+// the cell tests, where the cells' total area must then be the free area. Ref: any reference
+// of tests/oracle/ (distances(), is_free(), wedges_at()).
+#pragma once
+
+#include <vector>
+
+#include "geom/types.h"
+
+namespace taut::test {
+
+template <class Ref>
+bool all_free_space_reached(const Ref& ref, const geom::Box& D, const std::vector<geom::Polygon>& obstacles,
+                            const std::vector<geom::Point>& sources) {
+  using geom::Point;
+  std::vector<Point> vs;
+  for (const auto& p : obstacles) {
+    vs.insert(vs.end(), p.outer.begin(), p.outer.end());
+    for (const auto& h : p.holes) vs.insert(vs.end(), h.begin(), h.end());
+  }
+  for (Point corner : {D.lo, D.hi, Point{D.lo.x, D.hi.y}, Point{D.hi.x, D.lo.y}}) vs.push_back(corner);
+  std::vector<bool> reached(vs.size(), false);
+  for (Point s : sources) {
+    const auto d = ref.distances(s, vs);
+    for (std::size_t i = 0; i < vs.size(); ++i) reached[i] = reached[i] || d[i].has_value();
+  }
+  for (std::size_t i = 0; i < vs.size(); ++i)
+    if (!(reached[i] || !ref.is_free(vs[i])) || ref.wedges_at(vs[i]).size() > 1) return false;
+  return true;
+}
+
+}  // namespace taut::test
