@@ -14,11 +14,15 @@
 //   - every root sees every vertex of its piece (no obstacle edge properly crosses root ->
 //     vertex, no obstacle vertex strictly inside their hull);
 //   - areas add up, exactly in Q(sqrt2): the pieces' total is at most the free area, and equal
-//     to it (its sqrt2 part cancelling) when the reference reaches all of free space.
+//     to it (its sqrt2 part cancelling) when the reference reaches all of free space;
+//   - cell boundaries are bisectors or walls: at the midpoint of every piece edge all pieces
+//     holding it give one distance, and an edge no other piece meets lies on an obstacle edge
+//     or the domain side (when all of free space is reached).
 // A failure prints the seed; TAUT_OCT_CELLS_SEED=N runs only seed N.
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <random>
 
@@ -86,7 +90,8 @@ S2 d8(i64 dx, i64 dy) {
 S2 s2(const geom::Root2& r) { return {mpq_class(static_cast<long>(r.a)), mpq_class(static_cast<long>(r.b))}; }
 
 struct Tally {
-  i64 instances = 0, probes = 0, reached = 0, pieces = 0, irrational_vertices = 0, full_area = 0, multi_source = 0;
+  i64 instances = 0, probes = 0, reached = 0, pieces = 0, irrational_vertices = 0, full_area = 0, multi_source = 0,
+      bisector_edges = 0, wall_edges = 0;
 };
 
 std::string check_seed(std::uint64_t seed, Tally& tally) {
@@ -231,6 +236,72 @@ std::string check_seed(std::uint64_t seed, Tally& tally) {
           return head + "an obstacle vertex lies between a piece and its root";
       }
   }
+
+  // Cell boundaries. At the midpoint m of every piece edge, every piece whose closure holds m
+  // gives the same value root_distance + d8(m - root) (the distance is continuous, so where two
+  // roots' cells meet the boundary is a bisector of the two); an edge whose midpoint no other
+  // piece holds lies on an obstacle edge or the domain side, when all of free space is reached.
+  const double r2 = std::sqrt(2.0);
+  auto approx = [&](const S2& v) { return v.a.get_d() + v.b.get_d() * r2; };
+  auto absv = [](const S2& v) { return sgn2(v) < 0 ? S2{-v.a, -v.b} : v; };
+  auto d8v = [&](const S2& dx, const S2& dy) {  // max + (sqrt2 - 1) min of |dx|, |dy|
+    const S2 ax = absv(dx), ay = absv(dy);
+    const bool xbig = sgn2(ax - ay) >= 0;
+    return (xbig ? ax : ay) + (xbig ? ay : ax) * S2{-1, 1};
+  };
+  struct DBox {
+    double x0, y0, x1, y1;
+  };
+  std::vector<DBox> dboxes;
+  for (const auto& r : rings) {
+    DBox b{approx(r[0].x), approx(r[0].y), approx(r[0].x), approx(r[0].y)};
+    for (const P& v : r) {
+      b.x0 = std::min(b.x0, approx(v.x));
+      b.x1 = std::max(b.x1, approx(v.x));
+      b.y0 = std::min(b.y0, approx(v.y));
+      b.y1 = std::max(b.y1, approx(v.y));
+    }
+    const double margin = 1e-6 * (1 + std::max({std::abs(b.x0), std::abs(b.x1), std::abs(b.y0), std::abs(b.y1)}));
+    dboxes.push_back({b.x0 - margin, b.y0 - margin, b.x1 + margin, b.y1 + margin});
+  }
+  const P corners[4] = {conv(D.lo), conv(Point{D.hi.x, D.lo.y}), conv(D.hi), conv(Point{D.lo.x, D.hi.y})};
+  for (int i = 0; i < 4; ++i) edges.push_back({corners[i], corners[(i + 1) % 4]});
+  auto on_seg = [&](const P& a, const P& b, const P& m) {
+    if (sgn2(cross(a, b, m)) != 0) return false;
+    auto between = [](const S2& u, const S2& v, const S2& w) {
+      return (sgn2(w - u) >= 0 && sgn2(v - w) >= 0) || (sgn2(w - v) >= 0 && sgn2(u - w) >= 0);
+    };
+    return between(a.x, b.x, m.x) && between(a.y, b.y, m.y);
+  };
+  const S2 half{mpq_class(1, 2), 0};
+  for (std::size_t k = 0; k < pieces.size(); ++k) {
+    const auto& ring = rings[k];
+    const P rk = conv(pieces[k].root);
+    for (std::size_t e = 0; e < ring.size(); ++e) {
+      const P m{(ring[e].x + ring[(e + 1) % ring.size()].x) * half, (ring[e].y + ring[(e + 1) % ring.size()].y) * half};
+      const S2 vk = s2(pieces[k].root_distance) + d8v(m.x - rk.x, m.y - rk.y);
+      const double mx = approx(m.x), my = approx(m.y);
+      int others = 0;
+      bool other_root = false;
+      for (std::size_t j = 0; j < pieces.size(); ++j) {
+        if (j == k || mx < dboxes[j].x0 || mx > dboxes[j].x1 || my < dboxes[j].y0 || my > dboxes[j].y1) continue;
+        if (in_convex(rings[j], m) < 0) continue;
+        ++others;
+        const P rj = conv(pieces[j].root);
+        const S2 vj = s2(pieces[j].root_distance) + d8v(m.x - rj.x, m.y - rj.y);
+        if (!eq(vj, vk)) return head + "two cells meeting at a point give it different distances";
+        other_root = other_root || !(pieces[j].root == pieces[k].root);
+      }
+      if (others == 0) {
+        bool on_wall = false;
+        for (const auto& [a, b] : edges) on_wall = on_wall || on_seg(a, b, m);
+        if (!on_wall && all_reached) return head + "a cell edge borders nothing, and lies on no obstacle edge";
+        ++tally.wall_edges;
+      } else if (other_root) {
+        ++tally.bisector_edges;
+      }
+    }
+  }
   return "";
 }
 
@@ -251,16 +322,19 @@ TEST(OctCells, PiecesMatchTheReference) {
     }
   }
   std::printf("instances %lld (%lld with several sources, %lld with all free space reached), pieces %lld "
-              "(vertices with a sqrt2 part: %lld), probes %lld (reached %lld)\n",
+              "(vertices with a sqrt2 part: %lld), probes %lld (reached %lld); piece edges between two roots %lld, "
+              "on a wall %lld\n",
               static_cast<long long>(t.instances), static_cast<long long>(t.multi_source),
               static_cast<long long>(t.full_area), static_cast<long long>(t.pieces),
               static_cast<long long>(t.irrational_vertices), static_cast<long long>(t.probes),
-              static_cast<long long>(t.reached));
+              static_cast<long long>(t.reached), static_cast<long long>(t.bisector_edges),
+              static_cast<long long>(t.wall_edges));
   if (seeds.size() > 1) {
     EXPECT_GE(t.instances, sanitized_share(150, 4));
     EXPECT_GE(t.full_area, sanitized_share(50, 4));
     EXPECT_GE(t.irrational_vertices, sanitized_share(1000, 4));
     EXPECT_GE(t.reached, sanitized_share(7000, 4));
+    EXPECT_GE(t.bisector_edges, sanitized_share(1000, 4));
   }
 }
 
