@@ -87,18 +87,11 @@ struct FareyNorm {
     for (const Vec& l : lambda) m = std::max(m, l.x * l.x + l.y * l.y);
     return m;
   }
-  // Lambda / S - 1, rounded up (for reporting).
+  // Lambda / S - 1, rounded up: the long double square root is off by about 2^-64 Lambda, so a
+  // margin of 10^-15 keeps it above the true value (also after conversion to double).
   long double euclidean_epsilon() const {
-    return std::nextafter(std::sqrt(static_cast<long double>(lambda_max_sq())) / kNormScale - 1,
-                          1.0L);
+    return std::sqrt(static_cast<long double>(lambda_max_sq())) / kNormScale - 1 + 1e-15L;
   }
-  // Largest |lambda_i . (1, 0)| or |lambda_i . (0, 1)| (bounds N(v) <= this * (|dx| + |dy|)).
-  constexpr std::int64_t lambda_max_abs() const {
-    std::int64_t m = 0;
-    for (const Vec& l : lambda) m = std::max({m, l.x < 0 ? -l.x : l.x, l.y < 0 ? -l.y : l.y});
-    return m;
-  }
-
   static constexpr FareyNorm make() {
     FareyNorm f;
     // Farey fractions of order N in [0, 1], ascending (by the standard next-term recurrence).

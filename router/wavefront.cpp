@@ -44,7 +44,6 @@ struct T3 {
   }
   T3 operator+(const T3& o) const { return {a + o.a, b + o.b, c + o.c}; }
   T3 operator-(const T3& o) const { return {a - o.a, b - o.b, c - o.c}; }
-  T3 operator*(i64 k) const { return {a * k, b * k, c * k}; }
 };
 
 // Direction frames: the wave moves "north-east" in local coordinates (u, v) = M (X, Y) of the
@@ -882,9 +881,9 @@ struct WaveCore {
   std::vector<typename M::Bits> ent_bits;           // per entity: compute_wedge_bits()
   uint32_t nvent = 0;
   KdTree<M> vertex_tree;
-  // Track-ray answers per vertex point and world direction (N, S, E, W, and for octilinear NE,
-  // SW, NW, SE; M::kRaySlots per point): the edge id hit, or
-  // kNone (sweep_rays()). Query points shoot on the R-tree instead (shoot_uncached()).
+  // Track-ray answers per vertex point and world direction (M::kRaySlots per point: two per
+  // mode of sweep_rays(), the mode's direction and its opposite): the edge id hit, or kNone.
+  // Query points shoot on the R-tree instead (shoot_uncached()).
   std::vector<uint32_t> ray_cache;
   std::vector<uint32_t> box_edges;  // scratch for edges_in_box
   i64 ray_window = 64;              // first window length of a track ray (set in the constructor)
@@ -1060,8 +1059,8 @@ struct WaveCore {
     for (int mode = 0; mode < M::kRaySlots / 2; ++mode) sweep_rays(mode);
   }
 
-  // Track rays of every vertex point at once, by two plane sweeps (four for octilinear; O(n log n)
-  // in all, against
+  // Track rays of every vertex point at once, by one plane sweep per orientation (two for L1,
+  // four for octilinear, 8 to 24 for the norms; O(n log n) each, against
   // one R-tree probe sequence per ray): for the sheared vertical (horizontal) line through each
   // vertex point q, the first ring edge above and below (east and west of) q. The sweep runs
   // in the sheared order of X = x + e*y, which is lexicographic (x, y); for horizontal rays the
@@ -1076,8 +1075,10 @@ struct WaveCore {
   // the diagonal vertical: (x - y, y) for NE/SW, (x + y, y) for NW/SE. A diagonal track is a line
   // U = const of a frame whose u is -+(X - Y) (or -+(X + Y)), and the sign of U(q) - U(p) is
   // lexicographic (x - y, y) (or (x + y, y)), the sheared order of the mapped points; T keeps
-  // orientations and incidences, so the sweep's argument holds verbatim.
-  // mode: 0 vertical (slots N, S), 1 horizontal (E, W), 2 NE/SW diagonal, 3 NW/SE diagonal.
+  // orientations and incidences, so the sweep's argument holds verbatim. A norm's direction
+  // (p, q) is mapped the same way (below).
+  // mode: M::mode_dir(mode); for L1 and octilinear 0 vertical (slots N, S), 1 horizontal (E, W),
+  // 2 NE/SW diagonal, 3 NW/SE diagonal; for a norm, its directions with y > 0 or y == 0 < x.
   void sweep_rays(int mode) {
     struct MP {
       i64 x, y;
@@ -1321,8 +1322,8 @@ struct WaveCore {
   // exact axis line, ties (edges through one point of it) by slope, which is the order the
   // sheared ray meets them in (see header).
   bool shoot(int d, bool vertical, uint32_t o, uint32_t& ea, uint32_t& eb) {
-    // The track's world direction: local north (V track) or east (H track): a world axis
-    // direction, or (octilinear) a diagonal; sweep_rays()' mode and slot for it.
+    // The track's world direction: local north (V track) or east (H track), one of the
+    // metric's directions; sweep_rays()' mode and slot for it.
     const Frame& f = kFrames[d];
     const int mode = vertical ? f.north_mode : f.east_mode;
     const int s = vertical ? f.north_sense : f.east_sense;  // +1: along the mode's direction

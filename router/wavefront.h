@@ -235,7 +235,7 @@ class OctWavefront {
 // w_i = ceil(kNormScale |d_i|) per unit. Distances are exact integers: the least N-length of a
 // path among the obstacles, N(v) = max_i lambda_i . v. They bracket the Euclidean geodesic
 // distance d_E: d_E in [d / Lambda, d / kNormScale] (geom::fixed_norm_epsilon(order): 2.75 %,
-// 1.31 %, 0.76 %), which is what `taut spm --orientations farey:N` reports.
+// 1.31 %, 0.76 %), which is what `taut spm --orientations any [--epsilon E]` reports.
 //
 // How it differs from L1Wavefront: one frame per cone between consecutive directions, whose
 // local axes are the cone's two directions (a unimodular frame: consecutive Farey directions

@@ -69,8 +69,8 @@ std::optional<geom::Point> parse_point_option(const std::string& name, const std
 void add_routing_options(CLI::App* sub, RoutingOptions& options) {
   sub->add_option("--metric", options.metric, "l1 (default); combined and link are not available yet");
   sub->add_option("--orientations", options.orientations,
-                  "wire directions: rectilinear or octilinear; default: orientations of <rules>, "
-                  "else rectilinear (any and c: sets are not available yet)");
+                  "rectilinear or octilinear (spm also: any, epsilon-approximate Euclidean distances); "
+                  "default: orientations of <rules>, else rectilinear (c: sets are not available yet)");
   sub->add_option("--bend-cost", options.bend_cost, "C of the combined metric (not available yet)");
 }
 

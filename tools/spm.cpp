@@ -16,6 +16,7 @@
 // reported with the interval [d / Lambda, d / S] that holds the Euclidean geodesic distance.
 #include <cmath>
 #include <cstdio>
+#include <utility>
 #include <optional>
 #include <stdexcept>
 #include <iostream>
@@ -31,6 +32,25 @@
 #include "tools/route_common.h"
 
 namespace taut::cli {
+namespace {
+
+// The Euclidean interval [d / Lambda, d / S] of a norm length d (geom/fixed_norm.h) as doubles
+// rounded outwards: each end is checked exactly (GMP rationals: lo^2 Lambda^2 <= d^2, hi S >= d)
+// and then moved one more step out, so that a decimal that reads back as the double (JSON's
+// shortest form) lies outside the interval too.
+std::pair<double, double> euclidean_interval(std::int64_t d, std::int64_t lambda_sq) {
+  using router::Rational;
+  const Rational dd(d), d2 = dd * dd;
+  double lo = static_cast<double>(static_cast<long double>(d) / std::sqrt(static_cast<long double>(lambda_sq)));
+  while (lo > 0 && Rational(lo) * Rational(lo) * lambda_sq > d2) lo = std::nextafter(lo, 0.0);
+  if (lo > 0) lo = std::nextafter(lo, 0.0);
+  double hi = static_cast<double>(d) / static_cast<double>(geom::kNormScale);
+  while (Rational(hi) * geom::kNormScale < dd) hi = std::nextafter(hi, HUGE_VAL);
+  hi = std::nextafter(hi, HUGE_VAL);
+  return {lo, hi};
+}
+
+}  // namespace
 
 void add_spm(CLI::App& app, int& status) {
   struct Args {
@@ -184,7 +204,6 @@ void add_spm(CLI::App& app, int& status) {
     j["metric"] = any ? "euclidean" : "l1";
     if (oct) j["orientations"] = "octilinear";
     const long double scale = static_cast<long double>(geom::kNormScale);
-    const long double lambda = any ? std::sqrt(static_cast<long double>(geom::fixed_norm_lambda_max_sq(order))) : 0;
     if (any) {
       j["orientations"] = "any";
       j["directions"] = order == 2 ? 16 : order == 3 ? 32 : 48;
@@ -201,8 +220,8 @@ void add_spm(CLI::App& app, int& status) {
         // Euclidean geodesic distance lies in [d / Lambda, d / S] (geom/fixed_norm.h)
         const long double d = static_cast<long double>(norm_lengths[i]);
         q["distance"] = static_cast<double>(d / scale);
-        q["euclidean_bounds"] = {static_cast<double>(std::nextafter(d / lambda, 0.0L)),
-                                 static_cast<double>(std::nextafter(d / scale, 2 * d / scale + 1))};
+        const auto [lo, hi] = euclidean_interval(norm_lengths[i], geom::fixed_norm_lambda_max_sq(order));
+        q["euclidean_bounds"] = {lo, hi};
         q["norm_length"] = norm_lengths[i];
         q["source"] = *a.source;
         auto pts = nlohmann::ordered_json::array();
@@ -236,11 +255,14 @@ void add_spm(CLI::App& app, int& status) {
       }
       rows.push_back(q);
       if (!args->json && a.distance && any) {
-        char buf[96];
+        // the bounds to 6 decimals, rounded outwards (a step of 10^-6 more for the rounding of
+        // the product)
+        const auto [lo, hi] = euclidean_interval(norm_lengths[i], geom::fixed_norm_lambda_max_sq(order));
+        char buf[128];
         std::snprintf(buf, sizeof buf, "%.6Lf (Euclidean in [%.6Lf, %.6Lf])",
                       static_cast<long double>(norm_lengths[i]) / scale,
-                      static_cast<long double>(norm_lengths[i]) / lambda,
-                      static_cast<long double>(norm_lengths[i]) / scale);
+                      (std::floor(static_cast<long double>(lo) * 1e6L) - 1) / 1e6L,
+                      (std::ceil(static_cast<long double>(hi) * 1e6L) + 1) / 1e6L);
         std::cout << point_text(queries[i]) << ": distance " << buf << " from source " << *a.source << " ("
                   << point_text(sources[*a.source]) << "), path";
         for (const geom::Point p : a.path) std::cout << ' ' << point_text(p);

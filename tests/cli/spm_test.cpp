@@ -5,6 +5,7 @@
 // exactly that length in free space; unreachable or blocked queries get null and exit status 1.
 #include <gtest/gtest.h>
 
+#include <gmpxx.h>
 #include <nlohmann/json.hpp>
 #include <cmath>
 #include <random>
@@ -264,9 +265,14 @@ TEST(Spm, EuclideanDistancesWithinEpsilon) {
       const std::int64_t d = q["norm_length"].get<std::int64_t>();
       EXPECT_EQ(d, *best);
       EXPECT_DOUBLE_EQ(q["distance"].get<double>(), static_cast<double>(d) / 4096);
-      EXPECT_NEAR(q["euclidean_bounds"][0].get<double>(), static_cast<double>(d) / lambda, 1e-9 * (1 + d));
-      EXPECT_NEAR(q["euclidean_bounds"][1].get<double>(), static_cast<double>(d) / 4096, 1e-9 * (1 + d));
-      EXPECT_LE(q["euclidean_bounds"][0].get<double>(), q["euclidean_bounds"][1].get<double>());
+      // the printed bounds hold [d / Lambda, d / 4096] (exactly: lo^2 Lambda^2 <= d^2, hi 4096 >= d),
+      // and are that interval to within 10^-12 relative
+      const double lo = q["euclidean_bounds"][0].get<double>(), hi = q["euclidean_bounds"][1].get<double>();
+      const mpq_class mlo(lo), mhi(hi), md(static_cast<double>(d));
+      EXPECT_LE(mlo * mlo * mpq_class(static_cast<double>(geom::fixed_norm_lambda_max_sq(order))), md * md);
+      EXPECT_GE(mhi * 4096, md);
+      EXPECT_NEAR(lo, static_cast<double>(d) / lambda, 1e-12 * static_cast<double>(d) / lambda);
+      EXPECT_NEAR(hi, static_cast<double>(d) / 4096, 1e-12 * static_cast<double>(d) / 4096);
       const std::size_t src = q["source"].get<std::size_t>();
       ASSERT_LT(src, sources.size());
       EXPECT_EQ(per[src], best);

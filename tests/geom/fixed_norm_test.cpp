@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <numeric>
 #include <optional>
 #include <random>
 
@@ -66,8 +67,11 @@ void check_norm(const F& f) {
     EXPECT_GE(static_cast<long double>(n), static_cast<long double>(taut::geom::kNormScale) * e * (1 - 1e-15L)) << vx << "," << vy;
     EXPECT_LE(static_cast<long double>(n), lambda * e * (1 + 1e-15L)) << vx << "," << vy;
   }
-  // along each direction the cost is exactly the weight
-  for (int i = 0; i < F::kDirs; ++i) EXPECT_EQ(f.length(f.dir[i].x, f.dir[i].y), f.weight[i]);
+  // along each direction the cost is exactly the weight; every direction is primitive
+  for (int i = 0; i < F::kDirs; ++i) {
+    EXPECT_EQ(f.length(f.dir[i].x, f.dir[i].y), f.weight[i]);
+    EXPECT_EQ(std::gcd(f.dir[i].x, f.dir[i].y), 1) << i;
+  }
 }
 
 TEST(FixedNorm, LengthsAreTheLeastCombinations) {

@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <random>
 #include <optional>
 #include <stdexcept>
 #include <vector>
@@ -81,6 +82,95 @@ TEST(NormWavefront, RegressionSeeds) {
     const WavefrontSweep sw = taut::test::run_wavefront_seeds(kRegressionSeeds, 50, m);
     taut::test::expect_clean_sweep(sw);
   }
+}
+
+// Layouts drawn on the norms' own directions, which the shared generator (built around axes and
+// diagonals) rarely puts vertices on: parallelograms whose sides run along two directions of
+// the set, on a coarse grid so that many vertices share lines along (2,1), (3,2), (4,3), ...
+// (only the symbolic shear separates them), touching and overlapping (normalize merges them).
+// Sources and targets: obstacle vertices, points a few steps along a direction of the set from
+// them, and random lattice points. Every free target's distance against NormReference, and its
+// path measured by the reference.
+template <class F>
+void farey_aligned(int order, const F& norm, std::uint64_t seeds, std::int64_t& compared, std::int64_t& aligned) {
+  for (std::uint64_t seed = 1; seed <= seeds; ++seed) {
+    std::mt19937_64 rng(seed * 7919 + static_cast<std::uint64_t>(order));
+    auto rnd = [&](int n) { return static_cast<int>(rng() % static_cast<std::uint64_t>(n)); };
+    const Box dom{{0, 0}, {120, 120}};
+    std::vector<Polygon> polys;
+    const int n = 1 + rnd(6);
+    for (int k = 0; k < n; ++k) {
+      const auto& a = norm.dir[static_cast<std::size_t>(rnd(F::kDirs))];
+      const auto& b = norm.dir[static_cast<std::size_t>(rnd(F::kDirs))];
+      const std::int64_t cr = a.x * b.y - a.y * b.x;
+      if (cr == 0) continue;
+      const int ka = 1 + rnd(4), kb = 1 + rnd(4);
+      Point p{10 * (1 + rnd(10)), 10 * (1 + rnd(10))};
+      Point pa{static_cast<int>(p.x + ka * a.x), static_cast<int>(p.y + ka * a.y)};
+      Point pb{static_cast<int>(p.x + kb * b.x), static_cast<int>(p.y + kb * b.y)};
+      Point pab{static_cast<int>(pa.x + kb * b.x), static_cast<int>(pa.y + kb * b.y)};
+      Polygon poly{cr > 0 ? taut::geom::Ring{p, pa, pab, pb} : taut::geom::Ring{p, pb, pab, pa}, {}};
+      bool inside = true;
+      for (Point q : poly.outer) inside = inside && q.x > 0 && q.y > 0 && q.x < 120 && q.y < 120;
+      if (inside) polys.push_back(poly);
+    }
+    taut::test::Scene sc;
+    try {
+      sc = taut::test::normalized(dom, polys);
+    } catch (const std::exception&) {
+      continue;
+    }
+    const taut::oracle::NormReference ref(sc.domain, sc.obstacles, order);
+    if (!ref.problems().empty()) continue;
+    std::vector<Point> pts;
+    for (const Polygon& p : sc.obstacles)
+      for (Point v : p.outer) {
+        pts.push_back(v);
+        const auto& d = norm.dir[static_cast<std::size_t>(rnd(F::kDirs))];
+        const int t = 1 + rnd(5);
+        const Point w{static_cast<int>(v.x + t * d.x), static_cast<int>(v.y + t * d.y)};
+        if (w.x >= 0 && w.y >= 0 && w.x <= 120 && w.y <= 120) pts.push_back(w);
+      }
+    for (int k = 0; k < 6; ++k) pts.push_back({rnd(121), rnd(121)});
+    std::vector<Point> sources, targets;
+    for (Point q : pts)
+      if (ref.is_free(q)) (sources.size() < 3 && rnd(4) == 0 ? sources : targets).push_back(q);
+    if (sources.empty() || targets.empty()) continue;
+    NormWavefront wf(sc.domain, sc.obstacles, order);
+    for (Point s0 : sources) {
+      wf.run(std::vector<Point>{s0}, targets, Stop::Never);
+      for (std::size_t i = 0; i < targets.size(); ++i) {
+        const auto want = ref.distance(s0, targets[i]);
+        ASSERT_EQ(wf.target_distance(i), want)
+            << "order " << order << " seed " << seed << ": from (" << s0.x << "," << s0.y << ") to (" << targets[i].x
+            << "," << targets[i].y << ")";
+        ++compared;
+        if (!want) continue;
+        const auto path = wf.target_path(i);
+        if (path.size() > 1) ASSERT_EQ(ref.check_path(path), want) << "order " << order << " seed " << seed;
+        for (std::size_t j = 0; j + 1 < path.size(); ++j) {  // links along a direction of the set
+          const std::int64_t dx = path[j + 1].x - path[j].x, dy = path[j + 1].y - path[j].y;
+          for (const auto& d : norm.dir)
+            if (d.x * dy - d.y * dx == 0 && d.x * dx + d.y * dy > 0) {
+              ++aligned;
+              break;
+            }
+        }
+      }
+    }
+  }
+}
+
+TEST(NormWavefront, FareyAlignedLayoutsMatchReference) {
+  std::int64_t compared = 0, aligned = 0;
+  const std::uint64_t seeds = static_cast<std::uint64_t>(taut::test::sanitized_share(300, 4));
+  farey_aligned(2, kFarey2, seeds, compared, aligned);
+  farey_aligned(3, kFarey3, seeds, compared, aligned);
+  farey_aligned(4, kFarey4, seeds, compared, aligned);
+  std::printf("%lld distances compared, %lld path links along a direction of the set\n",
+              static_cast<long long>(compared), static_cast<long long>(aligned));
+  EXPECT_GE(compared, taut::test::sanitized_share(20000, 4));
+  EXPECT_GE(aligned, taut::test::sanitized_share(5000, 4));
 }
 
 // ---------------------------------------------------------------------------------------------
