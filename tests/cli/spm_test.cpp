@@ -280,7 +280,9 @@ TEST(Spm, EuclideanDistancesWithinEpsilon) {
       ASSERT_FALSE(path.empty());
       EXPECT_EQ(path.front(), sources[src]);
       EXPECT_EQ(path.back(), queries[i]);
-      if (path.size() > 1) EXPECT_EQ(ref.check_path(path), best);
+      if (path.size() > 1) {
+        EXPECT_EQ(ref.check_path(path), best);
+      }
     }
     EXPECT_EQ(r.status, unreachable ? 1 : 0);
   }

@@ -147,7 +147,9 @@ void farey_aligned(int order, const F& norm, std::uint64_t seeds, std::int64_t& 
         ++compared;
         if (!want) continue;
         const auto path = wf.target_path(i);
-        if (path.size() > 1) ASSERT_EQ(ref.check_path(path), want) << "order " << order << " seed " << seed;
+        if (path.size() > 1) {
+          ASSERT_EQ(ref.check_path(path), want) << "order " << order << " seed " << seed;
+        }
         for (std::size_t j = 0; j + 1 < path.size(); ++j) {  // links along a direction of the set
           const std::int64_t dx = path[j + 1].x - path[j].x, dy = path[j + 1].y - path[j].y;
           for (const auto& d : norm.dir)
