@@ -1,0 +1,112 @@
+#include "oracle/homotopy.h"
+
+#include <gmpxx.h>
+
+#include <algorithm>
+#include <optional>
+#include <stdexcept>
+
+namespace taut::oracle {
+
+using geom::Point;
+using i64 = std::int64_t;
+
+namespace {
+
+// The height of a segment at x = X + sigma e: y0 + s e (s already times sigma).
+struct Height {
+  mpq_class y0, s;
+};
+bool less(const Height& a, const Height& b) { return a.y0 != b.y0 ? a.y0 < b.y0 : a.s < b.s; }
+
+std::optional<Height> crossing(Point a, Point b, i64 X, int sigma) {
+  const i64 lo = sigma > 0 ? X : X - 1;  // the line lies strictly between lo and lo + 1
+  const bool crosses = (a.x <= lo && b.x >= lo + 1) || (b.x <= lo && a.x >= lo + 1);
+  if (!crosses) return std::nullopt;
+  const mpq_class slope(mpz_class(static_cast<long>(i64{b.y} - a.y)), mpz_class(static_cast<long>(i64{b.x} - a.x)));
+  mpq_class s = slope;
+  s.canonicalize();
+  Height h{mpq_class(static_cast<long>(a.y)) + mpq_class(static_cast<long>(X - a.x)) * s, sigma > 0 ? s : mpq_class(-s)};
+  return h;
+}
+
+}  // namespace
+
+struct HomotopyWords::Impl {
+  struct Cut {
+    i64 X;
+    int sigma;
+    Height base, end;
+  };
+  std::vector<Cut> cuts;
+};
+
+HomotopyWords::HomotopyWords(const geom::Box& domain, std::span<const geom::Polygon> obstacles)
+    : impl_(new Impl) {
+  std::vector<std::pair<Point, Point>> edges;
+  for (const auto& p : obstacles) {
+    std::vector<const geom::Ring*> rs{&p.outer};
+    for (const auto& h : p.holes) rs.push_back(&h);
+    for (const geom::Ring* r : rs)
+      for (std::size_t i = 0; i < r->size(); ++i) edges.push_back({(*r)[i], (*r)[(i + 1) % r->size()]});
+  }
+  for (const auto& p : obstacles) {
+    const geom::Ring& r = p.outer;
+    std::size_t t = 0;
+    for (std::size_t i = 1; i < r.size(); ++i)
+      if (r[i].y > r[t].y || (r[i].y == r[t].y && r[i].x > r[t].x)) t = i;
+    const Point v = r[t], prev = r[(t + r.size() - 1) % r.size()], next = r[(t + 1) % r.size()];
+    // counter-clockwise ring: the interior at v runs counter-clockwise from v->next to v->prev,
+    // inside the lower half-plane; it reaches x > v.x iff v->prev does
+    const int sigma = prev.x > v.x ? 1 : -1;
+    const Point side = sigma > 0 ? prev : next;
+    const auto base = crossing(v, side, v.x, sigma);
+    if (!base) throw std::logic_error("HomotopyWords: the top vertex's edge misses its cut line");
+    Impl::Cut c{v.x, sigma, *base, Height{mpq_class(static_cast<long>(domain.hi.y)), 0}};
+    for (const auto& [a, b] : edges) {
+      const auto h = crossing(a, b, v.x, sigma);
+      if (h && less(c.base, *h) && less(*h, c.end)) c.end = *h;
+    }
+    impl_->cuts.push_back(c);
+  }
+}
+
+HomotopyWords::~HomotopyWords() { delete impl_; }
+
+std::size_t HomotopyWords::cut_count() const { return impl_->cuts.size(); }
+
+std::vector<int> HomotopyWords::word(std::span<const Point> path) const {
+  std::vector<int> w;
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+    const Point a = path[i], b = path[i + 1];
+    if (a.x == b.x) continue;
+    const int dir = b.x > a.x ? 1 : -1;
+    struct Hit {
+      i64 X;
+      int sigma;
+      std::size_t k;
+    };
+    std::vector<Hit> hits;
+    for (std::size_t k = 0; k < impl_->cuts.size(); ++k) {
+      const auto& c = impl_->cuts[k];
+      const auto h = crossing(a, b, c.X, c.sigma);
+      if (!h || less(*h, c.base) || less(c.end, *h)) continue;
+      hits.push_back({c.X, c.sigma, k});
+    }
+    // in the order the segment meets the lines x = X + sigma e
+    std::sort(hits.begin(), hits.end(), [&](const Hit& p, const Hit& q) {
+      if (p.X != q.X || p.sigma != q.sigma) return (p.X != q.X ? p.X < q.X : p.sigma < q.sigma) == (dir > 0);
+      return p.k < q.k;
+    });
+    for (const Hit& h : hits) {
+      const int letter = dir * static_cast<int>(h.k + 1);
+      if (!w.empty() && w.back() == -letter)
+        w.pop_back();
+      else
+        w.push_back(letter);
+    }
+  }
+  return w;
+}
+
+}  // namespace taut::oracle
