@@ -9,6 +9,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #include <boost/geometry.hpp>
 #include <boost/geometry/index/rtree.hpp>
@@ -45,8 +46,10 @@ inline i64 ceil_of(Q a) { return -floor_of(Q{-a.n, a.d}); }
 
 // Keep the part of convex polygon `poly` (points of an exact field N: Rational, RationalRoot2)
 // where a x + b y + c <= 0: Sutherland-Hodgman against one line, exact.
-template <class Pt, class N>
-void clip_convex(std::vector<Pt>& poly, const N& a, const N& b, const N& c) {
+// N: the points' coordinate type; the coefficients convert to it.
+template <class Pt, class N = std::remove_cvref_t<decltype(Pt::x)>>
+void clip_convex(std::vector<Pt>& poly, const std::type_identity_t<N>& a, const std::type_identity_t<N>& b,
+                 const std::type_identity_t<N>& c) {
   const std::size_t n = poly.size();
   if (n == 0) return;
   std::vector<N> v(n);
@@ -1127,10 +1130,6 @@ struct Decomp {
     uint32_t src;
     geom::Segment seg;
   };
-  // Keep the part of convex polygon `poly` where a x + b y + c <= 0.
-  static void clip(std::vector<RPoint>& poly, const Rational& a, const Rational& b, const Rational& c) {
-    clip_convex(poly, a, b, c);
-  }
   static bool has_area(const std::vector<RPoint>& poly) { return poly.size() >= 3 && twice_signed_area(poly) > 0; }
 
   void trapezoid_pieces(uint32_t i, bool by_root, std::vector<L1Map::Piece>& out) const {
@@ -1240,8 +1239,8 @@ struct Decomp {
     auto flush = [&] {
       if (!run.c) return;
       std::vector<RPoint> slab = poly;
-      if (cmp(run.ya, ylo) > 0) clip(slab, 0, -1, rq(run.ya));  // y >= ya
-      if (cmp(run.yb, yhi) < 0) clip(slab, 0, 1, -rq(run.yb));  // y <= yb
+      if (cmp(run.ya, ylo) > 0) clip_convex(slab, 0, -1, rq(run.ya));  // y >= ya
+      if (cmp(run.yb, yhi) < 0) clip_convex(slab, 0, 1, -rq(run.yb));  // y <= yb
       emit(std::move(slab), *run.c);
       run.c.reset();
     };
@@ -1315,8 +1314,8 @@ struct Decomp {
       }
       flush();
       std::vector<RPoint> b = poly;
-      if (cmp(ya, ylo) > 0) clip(b, 0, -1, rq(ya));   // y >= ya
-      if (cmp(yb, yhi) < 0) clip(b, 0, 1, -rq(yb));   // y <= yb
+      if (cmp(ya, ylo) > 0) clip_convex(b, 0, -1, rq(ya));   // y >= ya
+      if (cmp(yb, yhi) < 0) clip_convex(b, 0, 1, -rq(yb));   // y <= yb
       if (!has_area(b)) continue;
       for (std::size_t a = 0; a < cands.size(); ++a) {
         std::vector<RPoint> p = b;
@@ -1325,7 +1324,7 @@ struct Decomp {
           const Cand &x = cands[a], &y = cands[o];
           // x's part: f_x <= f_y, and where they tie the earlier candidate's (strictly: the
           // later one keeps only f_x < f_y, a set of no area more than f_x <= f_y)
-          clip(p, x.gx - y.gx, x.gy - y.gy, Rational(x.c) - y.c);
+          clip_convex(p, x.gx - y.gx, x.gy - y.gy, Rational(x.c) - y.c);
         }
         emit(std::move(p), cands[a]);
       }
@@ -1670,10 +1669,6 @@ std::size_t L1Map::memory_bytes() const { return impl_->wf.memory_bytes() + impl
 // ----------------------------------------------------------------------------------------------
 namespace {
 
-// Keep the part of convex polygon `poly` where a x + b y + c <= 0 (Q(sqrt2) coefficients).
-void clip_r2(std::vector<R2Point>& poly, const RationalRoot2& a, const RationalRoot2& b, const RationalRoot2& c) {
-  clip_convex(poly, a, b, c);
-}
 bool has_area_r2(const std::vector<R2Point>& poly) { return poly.size() >= 3 && twice_signed_area(poly).sign() > 0; }
 
 // A piece of one octilinear frame: on `ring` the frame's value is gx x + gy y + c (coordinates
@@ -1742,8 +1737,8 @@ void frame_pieces(const Decomp<geom::Root2>& m, uint32_t i, std::vector<LinearPi
   } run;
   auto slab = [&](Q ya, Q yb) {
     std::vector<R2Point> b = poly;
-    if (cmp(ya, ylo) > 0) clip_r2(b, R(), R(Rational(-1)), rq(ya));   // y >= ya
-    if (cmp(yb, yhi) < 0) clip_r2(b, R(), R(Rational(1)), -rq(yb));   // y <= yb
+    if (cmp(ya, ylo) > 0) clip_convex(b, R(), R(Rational(-1)), rq(ya));   // y >= ya
+    if (cmp(yb, yhi) < 0) clip_convex(b, R(), R(Rational(1)), -rq(yb));   // y <= yb
     return b;
   };
   auto emit = [&](std::vector<R2Point>&& ring, const Cand& c) {
@@ -1815,7 +1810,7 @@ void frame_pieces(const Decomp<geom::Root2>& m, uint32_t i, std::vector<LinearPi
     for (std::size_t a = 0; a < cands.size(); ++a) {
       std::vector<R2Point> p = b;
       for (std::size_t o = 0; o < cands.size() && p.size() >= 3; ++o)
-        if (o != a) clip_r2(p, cands[a].gx - cands[o].gx, cands[a].gy - cands[o].gy, cands[a].c - cands[o].c);
+        if (o != a) clip_convex(p, cands[a].gx - cands[o].gx, cands[a].gy - cands[o].gy, cands[a].c - cands[o].c);
       emit(std::move(p), cands[a]);
     }
   }
@@ -2017,9 +2012,9 @@ std::vector<OctMap::Piece> OctMap::pieces() const {
       // (b - a) x (p - a) = (b.x - a.x)(p.y - a.y) - (b.y - a.y)(p.x - a.x): outside (right) <= 0
       const R ex = b.x - a.x, ey = b.y - a.y;
       std::vector<R2Point> outside = rest;
-      clip_r2(outside, -ey, ex, ey * a.x - ex * a.y);  // cross <= 0
+      clip_convex(outside, -ey, ex, ey * a.x - ex * a.y);  // cross <= 0
       if (has_area_r2(outside)) res.push_back(std::move(outside));
-      clip_r2(rest, ey, -ex, ex * a.y - ey * a.x);     // inside (left): cross >= 0
+      clip_convex(rest, ey, -ex, ex * a.y - ey * a.x);     // inside (left): cross >= 0
     }
   };
   for (int k = 0; k < 4; ++k)
@@ -2039,7 +2034,7 @@ std::vector<OctMap::Piece> OctMap::pieces() const {
           if (dgx.sign() == 0 && dgy.sign() == 0)
             throw std::logic_error("spm: two octilinear frames with one gradient");
           std::vector<R2Point> c = o.ring;
-          clip_r2(c, -dgx, -dgy, -dc);  // w - o >= 0
+          clip_convex(c, -dgx, -dgy, -dc);  // w - o >= 0
           if (!has_area_r2(c)) continue;
           std::vector<std::vector<R2Point>> next;
           for (auto& part : parts) {
@@ -2047,7 +2042,7 @@ std::vector<OctMap::Piece> OctMap::pieces() const {
             std::vector<R2Point> meet = part;
             for (std::size_t e = 0; e < c.size() && meet.size() >= 3; ++e) {
               const R2Point &a = c[e], &b = c[(e + 1) % c.size()];
-              clip_r2(meet, b.y - a.y, a.x - b.x, (b.x - a.x) * a.y - (b.y - a.y) * a.x);
+              clip_convex(meet, b.y - a.y, a.x - b.x, (b.x - a.x) * a.y - (b.y - a.y) * a.x);
             }
             if (!has_area_r2(meet)) {
               next.push_back(std::move(part));

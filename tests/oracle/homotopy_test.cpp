@@ -11,6 +11,7 @@
 #include <random>
 
 #include "oracle/l1_oracle.h"
+#include "support/reach.h"
 #include "support/sanitized.h"
 #include "support/wavefront_cases.h"
 #include "support/wavefront_hand.h"
@@ -85,13 +86,10 @@ TEST(HomotopyWords, HomotopyMovesKeepTheWord) {
     }
     const oracle::L1Reference ref(c.domain, c.obstacles);
     if (!ref.problems().empty() || c.obstacles.empty()) continue;
-    std::vector<Point> free_pts, vertices;
+    std::vector<Point> free_pts;
     for (Point p : c.candidates)
       if (ref.is_free(p)) free_pts.push_back(p);
-    for (const auto& p : c.obstacles) {
-      vertices.insert(vertices.end(), p.outer.begin(), p.outer.end());
-      for (const auto& hole : p.holes) vertices.insert(vertices.end(), hole.begin(), hole.end());
-    }
+    const std::vector<Point> vertices = obstacle_vertices(c.obstacles);
     for (Point v : vertices)
       if (ref.is_free(v) && ref.wedges_at(v).size() == 1) free_pts.push_back(v);
     if (free_pts.size() < 3) continue;

@@ -12,6 +12,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
+#include <optional>
 #include <queue>
 #include <random>
 #include <set>
@@ -19,6 +21,7 @@
 #include "geom/fixed_norm.h"
 #include "oracle/l1_oracle.h"
 #include "router/wavefront.h"
+#include "support/reach.h"
 #include "support/wavefront_cases.h"
 
 namespace taut::test {
@@ -56,35 +59,48 @@ std::optional<long double> euclid_distance(const oracle::L1Reference& ref, const
   return std::nullopt;
 }
 
+// One seeded instance with its reference, obstacle vertices and free candidate points; pinch:
+// some vertex has two wedges (such instances are skipped: plain visibility would squeeze through
+// the pinch). nullopt when the seed makes no usable instance (or fewer than two free points).
+struct Instance {
+  WavefrontCase c;
+  std::unique_ptr<oracle::L1Reference> ref;
+  std::vector<Point> vertices, free_pts;
+  bool pinch = false;
+};
+std::optional<Instance> instance(std::uint64_t seed) {
+  Instance in;
+  try {
+    in.c = make_wavefront_case(seed);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+  in.ref = std::make_unique<oracle::L1Reference>(in.c.domain, in.c.obstacles);
+  if (!in.ref->problems().empty()) return std::nullopt;
+  in.vertices = obstacle_vertices(in.c.obstacles);
+  for (Point v : in.vertices) in.pinch = in.pinch || in.ref->wedges_at(v).size() > 1;
+  for (Point p : in.c.candidates)
+    if (in.ref->is_free(p)) in.free_pts.push_back(p);
+  if (in.free_pts.size() < 2) return std::nullopt;
+  return in;
+}
+
 TEST(EuclidApprox, OctilinearDistanceBoundsTheEuclideanOne) {
   const long double sec = 1.0L / std::cos(3.14159265358979323846264338327950288L / 8);
   const long double slack = 1e-12L;
   int instances = 0, pairs = 0, skipped_pinch = 0, loose = 0;
   long double worst = 1;
   for (std::uint64_t seed = 1; seed <= 1000; ++seed) {
-    WavefrontCase c;
-    try {
-      c = make_wavefront_case(seed);
-    } catch (const std::exception&) {
-      continue;
-    }
-    const oracle::L1Reference ref(c.domain, c.obstacles);
-    if (!ref.problems().empty()) continue;
-    std::vector<Point> vertices;
-    bool pinch = false;
-    for (const auto& p : c.obstacles) {
-      vertices.insert(vertices.end(), p.outer.begin(), p.outer.end());
-      for (const auto& h : p.holes) vertices.insert(vertices.end(), h.begin(), h.end());
-    }
-    for (Point v : vertices) pinch = pinch || ref.wedges_at(v).size() > 1;
-    if (pinch) {
+    const auto inst = instance(seed);
+    if (!inst) continue;
+    if (inst->pinch) {
       ++skipped_pinch;
       continue;
     }
-    std::vector<Point> free_pts;
-    for (Point p : c.candidates)
-      if (ref.is_free(p)) free_pts.push_back(p);
-    if (free_pts.size() < 2) continue;
+    const WavefrontCase& c = inst->c;
+    const oracle::L1Reference& ref = *inst->ref;
+    const std::vector<Point>& vertices = inst->vertices;
+    const std::vector<Point>& free_pts = inst->free_pts;
     ++instances;
     std::mt19937_64 rng(seed);
     router::OctWavefront wf(c.domain, c.obstacles);
@@ -123,26 +139,12 @@ TEST(EuclidApprox, NormDistancesBoundTheEuclideanOne) {
   int instances = 0, pairs = 0;
   long double worst[5] = {1, 1, 1, 1, 1};
   for (std::uint64_t seed = 1; seed <= 600; ++seed) {
-    WavefrontCase c;
-    try {
-      c = make_wavefront_case(seed);
-    } catch (const std::exception&) {
-      continue;
-    }
-    const oracle::L1Reference ref(c.domain, c.obstacles);
-    if (!ref.problems().empty()) continue;
-    std::vector<Point> vertices;
-    bool pinch = false;
-    for (const auto& p : c.obstacles) {
-      vertices.insert(vertices.end(), p.outer.begin(), p.outer.end());
-      for (const auto& h : p.holes) vertices.insert(vertices.end(), h.begin(), h.end());
-    }
-    for (Point v : vertices) pinch = pinch || ref.wedges_at(v).size() > 1;
-    if (pinch) continue;
-    std::vector<Point> free_pts;
-    for (Point p : c.candidates)
-      if (ref.is_free(p)) free_pts.push_back(p);
-    if (free_pts.size() < 2) continue;
+    const auto inst = instance(seed);
+    if (!inst || inst->pinch) continue;
+    const WavefrontCase& c = inst->c;
+    const oracle::L1Reference& ref = *inst->ref;
+    const std::vector<Point>& vertices = inst->vertices;
+    const std::vector<Point>& free_pts = inst->free_pts;
     ++instances;
     std::mt19937_64 rng(seed);
     const Point s = free_pts[rng() % free_pts.size()], t = free_pts[rng() % free_pts.size()];

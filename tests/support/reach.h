@@ -11,15 +11,21 @@
 
 namespace taut::test {
 
-template <class Ref>
-bool all_free_space_reached(const Ref& ref, const geom::Box& D, const std::vector<geom::Polygon>& obstacles,
-                            const std::vector<geom::Point>& sources) {
-  using geom::Point;
-  std::vector<Point> vs;
+// Every ring vertex of the obstacles (outer rings and holes, in ring order; repeats kept).
+inline std::vector<geom::Point> obstacle_vertices(const std::vector<geom::Polygon>& obstacles) {
+  std::vector<geom::Point> vs;
   for (const auto& p : obstacles) {
     vs.insert(vs.end(), p.outer.begin(), p.outer.end());
     for (const auto& h : p.holes) vs.insert(vs.end(), h.begin(), h.end());
   }
+  return vs;
+}
+
+template <class Ref>
+bool all_free_space_reached(const Ref& ref, const geom::Box& D, const std::vector<geom::Polygon>& obstacles,
+                            const std::vector<geom::Point>& sources) {
+  using geom::Point;
+  std::vector<Point> vs = obstacle_vertices(obstacles);
   for (Point corner : {D.lo, D.hi, Point{D.lo.x, D.hi.y}, Point{D.hi.x, D.lo.y}}) vs.push_back(corner);
   std::vector<bool> reached(vs.size(), false);
   for (Point s : sources) {
