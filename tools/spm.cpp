@@ -213,6 +213,7 @@ void add_spm(CLI::App& app, int& status) {
     std::size_t unreachable = 0;
     for (std::size_t i = 0; i < queries.size(); ++i) {
       const Answer& a = answers[i];
+      std::pair<double, double> bounds;  // --orientations any: the Euclidean interval
       nlohmann::ordered_json q;
       q["point"] = {queries[i].x, queries[i].y};
       if (a.distance && any) {
@@ -220,8 +221,8 @@ void add_spm(CLI::App& app, int& status) {
         // Euclidean geodesic distance lies in [d / Lambda, d / S] (geom/fixed_norm.h)
         const long double d = static_cast<long double>(norm_lengths[i]);
         q["distance"] = static_cast<double>(d / scale);
-        const auto [lo, hi] = euclidean_interval(norm_lengths[i], geom::fixed_norm_lambda_max_sq(order));
-        q["euclidean_bounds"] = {lo, hi};
+        bounds = euclidean_interval(norm_lengths[i], geom::fixed_norm_lambda_max_sq(order));
+        q["euclidean_bounds"] = {bounds.first, bounds.second};
         q["norm_length"] = norm_lengths[i];
         q["source"] = *a.source;
         auto pts = nlohmann::ordered_json::array();
@@ -257,7 +258,7 @@ void add_spm(CLI::App& app, int& status) {
       if (!args->json && a.distance && any) {
         // the bounds to 6 decimals, rounded outwards (a step of 10^-6 more for the rounding of
         // the product)
-        const auto [lo, hi] = euclidean_interval(norm_lengths[i], geom::fixed_norm_lambda_max_sq(order));
+        const auto [lo, hi] = bounds;
         char buf[128];
         std::snprintf(buf, sizeof buf, "%.6Lf (Euclidean in [%.6Lf, %.6Lf])",
                       static_cast<long double>(norm_lengths[i]) / scale,
