@@ -3,7 +3,7 @@
 //   d_E <= d_8 <= sec(pi/8) d_E  (sec(pi/8) = 1.0823922...: epsilon = 8.24 %),
 // which `taut spm --orientations octilinear` reports as "euclidean_bounds". d_8 comes from
 // router::OctWavefront (exact in Z[sqrt2]); d_E from an independent Euclidean visibility graph
-// built here (obstacle vertices and the two ends, an edge wherever oracle::L1Reference says a
+// (tests/oracle/euclid_oracle.h: obstacle vertices and the two ends, an edge wherever oracle::L1Reference says a
 // segment is allowed, Dijkstra in long double). Instances with a pinch vertex (two wedges) are
 // skipped: there a path may not turn through the pinch, which plain visibility does not see.
 // The comparison of two irrational numbers is the only inexact step: each side gets a relative
@@ -19,6 +19,7 @@
 #include <set>
 
 #include "geom/fixed_norm.h"
+#include "oracle/euclid_oracle.h"
 #include "oracle/l1_oracle.h"
 #include "router/wavefront.h"
 #include "support/reach.h"
@@ -29,34 +30,12 @@ namespace {
 
 using geom::Point;
 
-long double euclid(Point a, Point b) {
-  const long double dx = static_cast<long double>(a.x) - b.x, dy = static_cast<long double>(a.y) - b.y;
-  return std::sqrt(dx * dx + dy * dy);
-}
-
 // Euclidean geodesic distance from s to t; nullopt when t is unreachable.
 std::optional<long double> euclid_distance(const oracle::L1Reference& ref, const std::vector<Point>& vertices, Point s,
                                            Point t) {
-  if (s == t) return 0.0L;
-  std::vector<Point> nodes{s, t};
-  for (Point v : vertices)
-    if (v != s && v != t && ref.is_free(v)) nodes.push_back(v);
-  const std::size_t n = nodes.size();
-  std::vector<long double> dist(n, INFINITY);
-  std::vector<bool> done(n, false);
-  dist[0] = 0;
-  for (std::size_t it = 0; it < n; ++it) {  // dense Dijkstra: the graph is complete-ish
-    std::size_t u = n;
-    for (std::size_t i = 0; i < n; ++i)
-      if (!done[i] && std::isfinite(dist[i]) && (u == n || dist[i] < dist[u])) u = i;
-    if (u == n) break;
-    done[u] = true;
-    if (u == 1) return dist[1];
-    for (std::size_t v = 0; v < n; ++v)
-      if (!done[v] && dist[u] + euclid(nodes[u], nodes[v]) < dist[v] && ref.visible(nodes[u], nodes[v]))
-        dist[v] = dist[u] + euclid(nodes[u], nodes[v]);
-  }
-  return std::nullopt;
+  const auto p = oracle::euclid_shortest(ref, vertices, s, t);
+  if (!p) return std::nullopt;
+  return p->length;
 }
 
 // One seeded instance with its reference, obstacle vertices and free candidate points; pinch:

@@ -1,0 +1,110 @@
+// Homotopic rubber-banding (Hershberger & Snoeyink, seeds/001, sections 2-3): the Euclidean
+// shortest path homotopic to a given path among the obstacles, on the free-space triangulation
+// (geom/triangulation.h).
+//
+//   const geom::FreeSpaceTriangulation t = geom::triangulate_free_space(domain, obstacles);
+//   const router::Tightener tight(t);
+//   router::Tightened r = tight.tighten(sketch);   // sketch: polyline in free space
+//   if (r.status == router::TightenStatus::Ok) use(r.points);
+//
+// The lift (Lemma 2.4 / 3.1). The sketch is walked segment by segment through the triangles it
+// meets, with exact int64 orientations only. A segment leaves its current triangle through the
+// relative interior of an edge (the free triangle across it is entered; an obstacle edge or the
+// domain side there means the sketch leaves free space) or through a vertex v. At a vertex the
+// walk turns around v inside the fan of free triangles at v, from the triangle it came in to the
+// one whose closed corner holds the outgoing direction, crossing the fan edges between them.
+// Every triangulation vertex is an obstacle vertex or a domain corner, so each fan is bounded by
+// constrained edges on both sides and the turn within it is unique: that is where a path that
+// touches an obstacle, runs along its edge or bends on its corner is counted as the free paths
+// just off it are. A direction that lies in no triangle of the current fan leaves free space or
+// passes through a point where two blockages touch (FORMAT.md forbids both). The crossed edges
+// form a walk in the dual graph; cancelling every immediate back-and-forth leaves the reduced
+// walk, which is the path's lift into the universal cover: the sleeve, a sequence of triangles
+// each sharing an edge (a portal) with the next.
+//
+// The funnel (Theorem 3.2). The shortest path from p to q inside the sleeve is found by the
+// funnel algorithm in an array deque: the apex, the left chain (bending counter-clockwise) and
+// the right chain (bending clockwise). Each portal brings one new vertex on one side; vertices
+// it makes redundant are popped from that side's end, and when the side is emptied back to the
+// apex the apex moves along the other chain, each move a vertex of the output. Collinear
+// vertices are popped (the output never bends by 0 degrees), so every bend of the output is at
+// a triangulation vertex with a strict turn. Time is linear in the sleeve (each vertex enters
+// and leaves the deque once); space is the sleeve.
+//
+// The output is the shortest path in the homotopy class of the input with the same ends; for
+// polygonal obstacles a locally taut path (each bend on an obstacle vertex, wrapping it) is the
+// shortest of its class. Its vertices are the two ends and obstacle vertices (or domain
+// corners): integers when the ends are.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "geom/triangulation.h"
+#include "geom/types.h"
+
+namespace taut::router {
+
+enum class TightenStatus {
+  Ok,
+  StartNotFree,   // the first point is in no free triangle
+  LeavesFreeSpace,  // a segment enters an obstacle or leaves the domain
+  ThroughPinch,     // a segment passes through a point where obstacles touch
+};
+
+// Portal i lies between sleeve triangles i and i + 1, its ends seen from triangle i looking
+// into triangle i + 1.
+struct Portal {
+  geom::Point left, right;
+};
+
+struct Sleeve {
+  std::vector<std::int32_t> triangles;  // at least one when the lift succeeded
+  std::vector<Portal> portals;          // triangles.size() - 1 of them
+  std::size_t crossings = 0;            // edges crossed by the walk, before cancelling
+};
+
+struct Tightened {
+  TightenStatus status = TightenStatus::Ok;
+  std::size_t segment = 0;          // index of the input segment where the lift failed
+  geom::Point where{};              // a point of that segment where it failed (a vertex or its start)
+  std::vector<geom::Point> points;  // the shortest homotopic path (status Ok)
+  std::size_t sleeve = 0;           // triangles in the sleeve
+  std::size_t crossings = 0;        // edges crossed by the input, before cancelling
+};
+
+class Tightener {
+ public:
+  // The triangulation must outlive the Tightener and be ok().
+  explicit Tightener(const geom::FreeSpaceTriangulation& t);
+
+  // The lift of a polyline (consecutive repeated points are ignored). On failure the status
+  // says why, with the segment index and a point.
+  TightenStatus lift(std::span<const geom::Point> path, Sleeve& sleeve, std::size_t* segment = nullptr,
+                     geom::Point* where = nullptr) const;
+
+  // The shortest path from p to q inside the sleeve (p in its first triangle, q in its last).
+  std::vector<geom::Point> funnel(geom::Point p, geom::Point q, const Sleeve& sleeve) const;
+
+  // Both: the shortest path homotopic to `path` with the same ends.
+  Tightened tighten(std::span<const geom::Point> path) const;
+
+  const geom::FreeSpaceTriangulation& triangulation() const { return *t_; }
+
+ private:
+  struct Walker;
+  const geom::FreeSpaceTriangulation* t_;
+  std::vector<std::int32_t> fan_start_;  // CSR: triangles incident to each vertex
+  std::vector<std::int32_t> fan_;
+};
+
+// Euclidean length of a polyline (double sum of exact-input square roots).
+double euclidean_length(std::span<const geom::Point> path);
+
+// A person's words for a status.
+std::string tighten_status_text(TightenStatus s);
+
+}  // namespace taut::router
