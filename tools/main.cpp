@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   int status = kOk;
   add_check(app, status);
   add_route(app, status);
+  add_tighten(app, status);
   add_path(app, status);
   add_spm(app, status);
   add_voronoi(app, status);

@@ -196,8 +196,8 @@ void add_route(CLI::App& app, int& status) {
         if (net.sketch)  // said, not dropped silently
           print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0007", layout->file, net.sketch->line, 0,
                                         "net \"" + net.name + "\": the wire is the shortest of any "
-                                        "homotopy class and does not follow the <sketch> (a sketch "
-                                        "fixes the class for tightening, which is not implemented yet)"}},
+                                        "homotopy class and does not follow the <sketch> (taut "
+                                        "tighten pulls the sketch taut in its class)"}},
                             args->load.quiet);
       } else {
         print_diagnostics({Diagnostic{Severity::Warning, r.code, layout->file, net.line, 0,

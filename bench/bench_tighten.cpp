@@ -1,0 +1,174 @@
+// Benchmark of homotopic tightening (router/tighten.h): the lift into the triangulation (the
+// sleeve) and the funnel, on generated layouts of 10^3 .. 10^5 blockage vertices.
+//
+// Sketches: W wires, each the concatenation of 1 to 4 legs of exact L1 shortest paths through
+// one source in the middle of the layout (router::L1Map paths, bends at obstacle vertices):
+// q1 -> s -> q2 [-> s -> q3 ...], so a sketch crosses the layout up to 8 times and its class is
+// whatever those paths make it. Every sketch is tightened; times are the best of R runs.
+//
+// Printed per size: the triangles, the sketches' edge crossings and sleeve triangles in total,
+// the time to tighten all W (lift + funnel), the funnel alone (on the stored sleeves) in
+// sleeve triangles per second, and the ratio of each to a baseline measured in the same run on
+// the same data: `pass` = one pass over every sleeve's triangles reading their three vertex
+// indices (the memory traffic any linear algorithm on the sleeve must pay). Then, for the
+// largest size, the time per sleeve triangle bucketed by sleeve length (growth against sleeve
+// length: flat means linear). Targets (issue #5): funnel >= 10^7 triangles/s; 10^4 wires on a
+// 10^5-vertex layout under 10 s.
+//
+//   bench_tighten [--sizes N,N,..] [--wires W] [--kind rects|polygons|maze|degenerate] [--reps R]
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "bench/bench_util.h"
+#include "bench/free_points.h"
+#include "geom/triangulation.h"
+#include "router/spm.h"
+#include "router/tighten.h"
+
+namespace {
+
+using taut::bench::seconds_of;
+using taut::geom::Point;
+
+std::vector<std::int64_t> parse_list(const char* s) {
+  std::vector<std::int64_t> v;
+  for (const char* p = s; *p;) {
+    v.push_back(std::atoll(p));
+    while (*p && *p != ',') ++p;
+    if (*p == ',') ++p;
+  }
+  return v;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::int64_t> sizes = {1000, 10000, 100000};
+  int wires = 10000, reps = 3;
+  std::string kind_name = "rects";
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--sizes") && i + 1 < argc) sizes = parse_list(argv[++i]);
+    else if (!std::strcmp(argv[i], "--wires") && i + 1 < argc) wires = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--kind") && i + 1 < argc) kind_name = argv[++i];
+    else if (!std::strcmp(argv[i], "--reps") && i + 1 < argc) reps = std::atoi(argv[++i]);
+    else {
+      std::fprintf(stderr, "usage: %s [--sizes N,N,..] [--wires W] [--kind K] [--reps R]\n", argv[0]);
+      return 2;
+    }
+  }
+  const auto kind = taut::io::parse_gen_kind(kind_name);
+  if (!kind) {
+    std::fprintf(stderr, "unknown kind %s\n", kind_name.c_str());
+    return 2;
+  }
+  std::printf("bench_tighten: %d wires per layout, kind %s, best of %d\n", wires, kind_name.c_str(), reps);
+  std::printf("%9s %9s | %10s %10s | %9s %7s | %9s %11s %7s | %8s\n", "vertices", "triangles", "crossings",
+              "sleeve", "tighten_s", "/pass", "funnel_s", "tri/s", "/pass", "failures");
+  std::map<int, std::pair<double, std::int64_t>> buckets;  // log4(sleeve) -> (seconds, triangles)
+  int failures_total = 0;
+  for (std::size_t si = 0; si < sizes.size(); ++si) {
+    const auto b = taut::bench::bench_layout(*kind, sizes[si]);
+    const auto tri = taut::geom::triangulate_free_space(b.norm.domain, b.norm.obstacles);
+    if (!tri.ok()) {
+      std::printf("%9zu: triangulation failed\n", b.points.size());
+      return 1;
+    }
+    const taut::router::Tightener tight(tri);
+    const auto& D = b.norm.domain;
+    const std::vector<Point> pts = taut::bench::random_free_points(D, b.norm.obstacles, static_cast<std::size_t>(4 * wires + 1), 7);
+    // the source: the free point nearest the middle
+    const Point mid{static_cast<taut::geom::Coord>((std::int64_t{D.lo.x} + D.hi.x) / 2),
+                    static_cast<taut::geom::Coord>((std::int64_t{D.lo.y} + D.hi.y) / 2)};
+    Point src = pts[0];
+    for (Point p : pts)
+      if (std::llabs(std::int64_t{p.x} - mid.x) + std::llabs(std::int64_t{p.y} - mid.y) <
+          std::llabs(std::int64_t{src.x} - mid.x) + std::llabs(std::int64_t{src.y} - mid.y))
+        src = p;
+    const taut::router::L1Map map(D, b.norm.obstacles, std::span<const Point>(&src, 1));
+    std::mt19937_64 rng(11);
+    std::vector<std::vector<Point>> sketches;
+    std::size_t next = 1;
+    for (int w = 0; w < wires; ++w) {
+      const int legs = 1 + static_cast<int>(rng() % 4);
+      std::vector<Point> sk;
+      for (int l = 0; l < legs + 1 && next < pts.size(); ++l) {
+        std::vector<Point> p = map.path(pts[next++]);
+        if (p.empty()) continue;
+        if (sk.empty()) {
+          std::reverse(p.begin(), p.end());  // q1 -> s
+          sk = p;
+        } else {
+          sk.insert(sk.end(), p.begin() + 1, p.end());  // s -> q
+          if (l < legs) sk.insert(sk.end(), p.rbegin() + 1, p.rend());  // and back to s
+        }
+      }
+      if (sk.size() >= 2) sketches.push_back(std::move(sk));
+    }
+    // lift once to keep the sleeves for the funnel-only timing
+    std::vector<taut::router::Sleeve> sleeves(sketches.size());
+    std::int64_t crossings = 0, sleeve_tris = 0;
+    int failures = 0;
+    for (std::size_t i = 0; i < sketches.size(); ++i) {
+      if (tight.lift(sketches[i], sleeves[i]) != taut::router::TightenStatus::Ok) ++failures;
+      crossings += static_cast<std::int64_t>(sleeves[i].crossings);
+      sleeve_tris += static_cast<std::int64_t>(sleeves[i].triangles.size());
+    }
+    volatile std::int64_t sink = 0;
+    const double t_tighten = seconds_of(
+        [&] {
+          for (const auto& sk : sketches) sink = sink + static_cast<std::int64_t>(tight.tighten(sk).points.size());
+        },
+        reps);
+    const double t_funnel = seconds_of(
+        [&] {
+          for (std::size_t i = 0; i < sketches.size(); ++i)
+            sink = sink + static_cast<std::int64_t>(tight.funnel(sketches[i].front(), sketches[i].back(), sleeves[i]).size());
+        },
+        reps);
+    const auto& tris = tri.triangles();
+    const double t_pass = seconds_of(
+        [&] {
+          std::int64_t s = 0;
+          for (const auto& sl : sleeves)
+            for (std::int32_t t : sl.triangles) {
+              const auto& tr = tris[static_cast<std::size_t>(t)];
+              s += tr.v[0] + tr.v[1] + tr.v[2];
+            }
+          sink = sink + s;
+        },
+        reps);
+    std::printf("%9zu %9zu | %10lld %10lld | %9.3f %7.1f | %9.4f %11.3g %7.1f | %8d\n", b.points.size(), tris.size(),
+                static_cast<long long>(crossings), static_cast<long long>(sleeve_tris), t_tighten, t_tighten / t_pass,
+                t_funnel, static_cast<double>(sleeve_tris) / t_funnel, t_funnel / t_pass, failures);
+    std::fflush(stdout);
+    failures_total += failures;
+    if (si + 1 == sizes.size()) {
+      for (std::size_t i = 0; i < sketches.size(); ++i) {
+        const std::int64_t n = static_cast<std::int64_t>(sleeves[i].triangles.size());
+        if (n < 4) continue;
+        const double t = seconds_of([&] { sink = sink + static_cast<std::int64_t>(tight.tighten(sketches[i]).points.size()); }, 1);
+        auto& bk = buckets[static_cast<int>(std::log(static_cast<double>(n)) / std::log(4.0))];
+        bk.first += t;
+        bk.second += n;
+      }
+      std::printf("\ngrowth against sleeve length (largest size; lift + funnel per wire, summed per bucket)\n");
+      std::printf("%18s %8s %12s\n", "sleeve triangles", "wires", "ns/triangle");
+      for (const auto& [k, v] : buckets) {
+        std::int64_t count = 0;
+        for (const auto& sl : sleeves) {
+          const std::int64_t n = static_cast<std::int64_t>(sl.triangles.size());
+          count += n >= 4 && static_cast<int>(std::log(static_cast<double>(n)) / std::log(4.0)) == k;
+        }
+        std::printf("%8.0f .. %7.0f %8lld %12.1f\n", std::pow(4.0, k), std::pow(4.0, k + 1) - 1,
+                    static_cast<long long>(count), v.first / static_cast<double>(v.second) * 1e9);
+      }
+    }
+  }
+  return failures_total ? 1 : 0;
+}

@@ -1,0 +1,253 @@
+// taut tighten FILE -o OUT [--svg PIC] [--stats S.json] [--orientations any]: pulls each net's
+// <sketch> (or, for a net without one, each of its routed wires) taut in its homotopy class
+// (router/tighten.h: the sleeve in the free-space triangulation and the funnel), and writes the
+// layout with <routes metric="euclidean" orientations="any"> holding the tightened wires. The
+// ends stay where they are; every bend of a tightened wire is on a blockage vertex, so its
+// vertices are integers. A sketch or wire that leaves free space is an input error
+// (TIGHTEN-0001, file:line, nothing written); a net with nothing to tighten is written as failed
+// (TIGHTEN-0002, exit status 1). c-oriented output (rectilinear, octilinear, c: sets) is not
+// implemented yet: asking for it is CLI-0027, and a layout whose <rules> ask for it is told so
+// (TIGHTEN-0003) and gets wires at any angle.
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "geom/triangulation.h"
+#include "io/layout_writer.h"
+#include "io/stats_json.h"
+#include "io/svg.h"
+#include "router/tighten.h"
+#include "router/version.h"
+#include "tools/cli.h"
+#include "tools/commands.h"
+#include "tools/route_common.h"
+
+namespace taut::cli {
+namespace {
+
+struct NetTightening {
+  std::string source;  // "sketch" or "wires"
+  double before = 0, after = 0;
+  long bends_before = 0, bends_after = 0;
+  std::size_t sleeve = 0, crossings = 0;
+};
+
+std::string fixed3(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.3f", v);
+  return buf;
+}
+
+}  // namespace
+
+void add_tighten(CLI::App& app, int& status) {
+  struct Args {
+    std::string file, out, svg, stats, orientations;
+    LoadOptions load;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* sub = app.add_subcommand(
+      "tighten",
+      "Pull each net's sketch (or its routed wires) taut without changing how it winds around the "
+      "blockages: the shortest wire of its homotopy class");
+  sub->add_option("-o,--output", args->out, "layout to write (the input with <routes> of the tightened wires)")
+      ->required();
+  sub->add_option("--svg", args->svg, "also draw the result as SVG (input sketches and wires dashed)");
+  sub->add_option("--stats", args->stats, "also write statistics as JSON (lengths before and after)");
+  sub->add_option("--orientations", args->orientations,
+                  "directions of the output: any (the default; c-oriented output is not available yet)");
+  add_input_options(sub, args->file, args->load, "do not print warnings or the summary");
+  sub->callback([args, &status] {
+    using Clock = std::chrono::steady_clock;
+    const auto t0 = Clock::now();
+    if (!args->orientations.empty() && args->orientations != "any") {
+      print_usage_error("CLI-0027", "tighten: --orientations " + args->orientations +
+                                        ": c-oriented output (rectilinear, octilinear, c: sets) is not "
+                                        "available yet; tightened wires are written at any angle "
+                                        "(--orientations any)");
+      status = kInvalid;
+      return;
+    }
+    const auto layout = load_layout(args->file, args->load);
+    if (!layout) {
+      status = kInvalid;
+      return;
+    }
+    if (args->orientations.empty() && layout->rules && layout->rules->orientations != "any")
+      print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0003", layout->file, layout->rules->line, 0,
+                                    "<rules orientations=\"" + layout->rules->orientations +
+                                        "\">: tightened wires are written at any angle (c-oriented "
+                                        "output is not available yet)"}},
+                        args->load.quiet);
+
+    // What each net tightens: its sketch, else its routed wires.
+    struct Input {
+      std::vector<std::vector<geom::Point>> lines;
+      std::vector<int> line_numbers;
+      std::string source;
+    };
+    std::vector<Input> inputs(layout->nets.size());
+    std::vector<geom::Point> extra;
+    for (std::size_t i = 0; i < layout->nets.size(); ++i) {
+      const io::Net& net = layout->nets[i];
+      Input& in = inputs[i];
+      if (net.sketch) {
+        in.source = "sketch";
+        in.lines.push_back(net.sketch->points);
+        in.line_numbers.push_back(net.sketch->line);
+      } else if (layout->routes) {
+        for (const io::Route& r : layout->routes->routes)
+          if (r.net == net.name && r.status == "routed" && !r.wires.empty()) {
+            in.source = "wires";
+            for (const io::Wire& w : r.wires) {
+              in.lines.push_back(w.points);
+              in.line_numbers.push_back(w.line ? w.line : r.line);
+            }
+            break;
+          }
+      }
+      for (const auto& l : in.lines) extra.insert(extra.end(), l.begin(), l.end());
+    }
+
+    const geom::NormalizedObstacles norm = routing_obstacles(*layout, extra);
+    const geom::FreeSpaceTriangulation tri = geom::triangulate_free_space(norm.domain, norm.obstacles);
+    if (!tri.ok()) {
+      print_diagnostics(tri.diagnostics());
+      throw std::logic_error("the free space of normalized blockages could not be triangulated");
+    }
+    const router::Tightener tight(tri);
+    const auto t1 = Clock::now();
+
+    io::Routes routes;
+    routes.tool = "taut " + std::string(router::version());
+    routes.metric = "euclidean";
+    routes.orientations = "any";
+    std::vector<Diagnostic> errors;
+    std::vector<NetTightening> stats(layout->nets.size());
+    std::size_t done = 0;
+    for (std::size_t i = 0; i < layout->nets.size(); ++i) {
+      const io::Net& net = layout->nets[i];
+      const Input& in = inputs[i];
+      io::Route route;
+      route.net = net.name;
+      if (in.lines.empty()) {
+        route.status = "failed";
+        route.reason = "nothing to tighten: the net has no <sketch> and no routed wire";
+        print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0002", layout->file, net.line, 0,
+                                      "net \"" + net.name + "\": " + *route.reason}},
+                          args->load.quiet);
+        routes.routes.push_back(std::move(route));
+        continue;
+      }
+      NetTightening& st = stats[i];
+      st.source = in.source;
+      std::vector<std::vector<geom::Point>> out_lines;
+      bool ok = true;
+      for (std::size_t k = 0; k < in.lines.size(); ++k) {
+        const auto& line = in.lines[k];
+        const router::Tightened r = tight.tighten(line);
+        if (r.status != router::TightenStatus::Ok) {
+          std::string what = "net \"" + net.name + "\": the " + (in.source == "sketch" ? "sketch" : "wire");
+          if (r.status == router::TightenStatus::StartNotFree)
+            what += " starts at " + point_text(line.front()) + ", which " + why_not_free(*layout, line.front());
+          else
+            what += "'s segment " + std::to_string(r.segment + 1) + " (" + point_text(line[r.segment]) + " to " +
+                    point_text(line[r.segment + 1]) + ") " + router::tighten_status_text(r.status) + " at or after " +
+                    point_text(r.where);
+          errors.push_back(Diagnostic{Severity::Error, "TIGHTEN-0001", layout->file, in.line_numbers[k], 0, what});
+          ok = false;
+          continue;
+        }
+        std::vector<geom::Point> pts = r.points;
+        if (pts.size() == 1) pts.push_back(pts[0]);
+        st.before += router::euclidean_length(line);
+        st.after += router::euclidean_length(pts);
+        st.bends_before += io::count_bends(line);
+        st.bends_after += io::count_bends(pts);
+        st.sleeve += r.sleeve;
+        st.crossings += r.crossings;
+        out_lines.push_back(std::move(pts));
+      }
+      if (!ok) continue;
+      route.status = "routed";
+      route.length = io::format_total_length(out_lines);
+      route.bends = st.bends_after;
+      for (auto& l : out_lines) route.wires.push_back(io::Wire{std::move(l)});
+      routes.routes.push_back(std::move(route));
+      ++done;
+    }
+    if (!errors.empty()) {
+      print_diagnostics(errors);
+      status = kInvalid;
+      return;
+    }
+    const auto t2 = Clock::now();
+    io::Layout out = *layout;
+    out.routes = std::move(routes);
+
+    // Every output is made before any is written, so a failure leaves nothing half done.
+    const std::string xml = io::layout_to_xml(out);
+    std::string svg, stats_text;
+    if (!args->svg.empty()) {
+      io::SvgOptions so;
+      for (std::size_t i = 0; i < layout->nets.size(); ++i)
+        if (inputs[i].source == "wires")
+          for (const auto& l : inputs[i].lines) {
+            std::string pts;
+            for (geom::Point p : l) pts += (pts.empty() ? "" : " ") + point_text(p);
+            so.overlay += "<polyline class=\"input-wire\" points=\"" + pts +
+                          "\" fill=\"none\" stroke=\"#555555\" stroke-width=\"@1.5\" stroke-dasharray=\"@6 @4\"/>\n";
+          }
+      so.caption = "tightened (input dashed)";
+      svg = io::layout_to_svg(out, so);
+    }
+    double before = 0, after = 0;
+    for (const NetTightening& s : stats) {
+      before += s.before;
+      after += s.after;
+    }
+    if (!args->stats.empty()) {
+      auto j = nlohmann::ordered_json::parse(io::layout_stats_json(out));
+      nlohmann::ordered_json nets = nlohmann::ordered_json::array();
+      for (std::size_t i = 0; i < layout->nets.size(); ++i) {
+        if (inputs[i].lines.empty()) continue;
+        const NetTightening& s = stats[i];
+        nets.push_back({{"net", layout->nets[i].name},
+                        {"source", s.source},
+                        {"length_before", std::stod(fixed3(s.before))},
+                        {"length_after", std::stod(fixed3(s.after))},
+                        {"bends_before", s.bends_before},
+                        {"bends_after", s.bends_after},
+                        {"sleeve_triangles", s.sleeve},
+                        {"crossings", s.crossings}});
+      }
+      j["tighten"] = {{"nets", nets},
+                      {"length_before", std::stod(fixed3(before))},
+                      {"length_after", std::stod(fixed3(after))},
+                      {"triangles", tri.triangles().size()},
+                      {"seconds", {{"prepare", std::chrono::duration<double>(t1 - t0).count()},
+                                   {"tighten", std::chrono::duration<double>(t2 - t1).count()}}}};
+      stats_text = j.dump(2) + "\n";
+    }
+    if (!write_output(args->out, xml) || (!args->svg.empty() && !write_output(args->svg, svg)) ||
+        (!args->stats.empty() && !write_output(args->stats, stats_text))) {
+      status = kInvalid;
+      return;
+    }
+    if (!args->load.quiet) {
+      for (std::size_t i = 0; i < layout->nets.size(); ++i) {
+        if (inputs[i].lines.empty()) continue;
+        const NetTightening& s = stats[i];
+        std::cerr << "  " << layout->nets[i].name << " (" << s.source << "): length " << fixed3(s.before) << " -> "
+                  << fixed3(s.after) << ", bends " << s.bends_before << " -> " << s.bends_after << '\n';
+      }
+      std::cerr << args->file << ": tightened " << done << " of " << layout->nets.size() << " nets, length "
+                << fixed3(before) << " -> " << fixed3(after) << "; wrote " << args->out << '\n';
+    }
+    status = done == layout->nets.size() ? kOk : kIncomplete;
+  });
+}
+
+}  // namespace taut::cli
