@@ -45,6 +45,7 @@
 
 #include "geom/triangulation.h"
 #include "geom/types.h"
+#include "router/staircase.h"
 
 namespace taut::router {
 
@@ -100,6 +101,29 @@ class Tightener {
   std::vector<std::int32_t> fan_start_;  // CSR: triangles incident to each vertex
   std::vector<std::int32_t> fan_;
 };
+
+// c-oriented output (H&S section 6) for the rectilinear and octilinear direction sets, with
+// integer vertices. The Euclidean shortest path of a class is also the shortest in it under
+// every convex distance function (Theorem 6.2), so its L1 (octilinear) length is the least of
+// the class, and every least path passes through the points where the Euclidean path's tangent
+// is a basis direction (Lemma 6.3): its vertices where consecutive links are not strictly
+// inside one cone between neighbouring directions, and the ends of links along a direction.
+// Between two such cuts the links all lie strictly inside one cone, so any monotone staircase of
+// that cone's two directions from cut to cut has the same length (Lemma 6.1). The staircases
+// are router::StaircaseBuilder's (the fewest bends per link with exact integer search, joints
+// chosen by its DP) on the path of the cuts alone; a staircase may then pass a blockage on the
+// other side than the Euclidean path does, so the result is checked to tighten back to `taut`
+// (the same class: the class's shortest path is unique). If it does not, the staircases are
+// searched through every bend of `taut` instead (same length; the fewest links not proven), and
+// if that fails too the result is empty.
+struct COriented {
+  std::vector<geom::Point> points;  // empty: no staircase in the class was found
+  bool through_cuts = false;  // the staircases join the cuts only: the fewest links of any
+                              // shortest c-oriented path in the class when `complete`
+  bool complete = true;       // no staircase search ran out of budget
+};
+COriented c_oriented(const Tightener& tight, const StaircaseBuilder& sb, std::span<const geom::Point> taut,
+                     StaircaseStyle style);
 
 // Euclidean length of a polyline (double sum of exact-input square roots).
 double euclidean_length(std::span<const geom::Point> path);

@@ -163,7 +163,60 @@ double length(const Path& p) { return router::euclidean_length(p); }
 struct Totals {
   long long instances = 0, sketches = 0, winding = 0, bends = 0, pinch_refusals = 0, global_class = 0,
             reference_paths = 0, crossings = 0;
+  long long c_paths[2] = {0, 0}, c_missing[2] = {0, 0}, c_through_cuts[2] = {0, 0}, c_incomplete[2] = {0, 0},
+            c_links[2] = {0, 0}, c_sloped[2] = {0, 0};
 };
+
+// Exact lengths: L1 as an integer; octilinear as a + b*sqrt2 (a, b integers).
+std::int64_t l1_length(const Path& p) {
+  std::int64_t s = 0;
+  for (std::size_t i = 1; i < p.size(); ++i)
+    s += std::llabs(std::int64_t{p[i].x} - p[i - 1].x) + std::llabs(std::int64_t{p[i].y} - p[i - 1].y);
+  return s;
+}
+std::pair<std::int64_t, std::int64_t> oct_length(const Path& p) {
+  std::int64_t a = 0, b = 0;
+  for (std::size_t i = 1; i < p.size(); ++i) {
+    const std::int64_t dx = std::llabs(std::int64_t{p[i].x} - p[i - 1].x), dy = std::llabs(std::int64_t{p[i].y} - p[i - 1].y);
+    a += std::max(dx, dy) - std::min(dx, dy);
+    b += std::min(dx, dy);
+  }
+  return {a, b};
+}
+
+// The c-oriented form of a tightened path, judged by the references.
+void check_c_oriented(const router::Tightener& tight, const router::StaircaseBuilder& sb, const oracle::L1Reference& ref,
+                      const oracle::HomotopyWords& h, const Path& sketch, const Path& taut, const std::string& where,
+                      Totals& tot) {
+  for (int k = 0; k < 2; ++k) {
+    const auto style = k == 0 ? router::StaircaseStyle::Rectilinear : router::StaircaseStyle::Octilinear;
+    const router::COriented c = router::c_oriented(tight, sb, taut, style);
+    if (c.points.empty()) {
+      ++tot.c_missing[k];
+      continue;
+    }
+    ++tot.c_paths[k];
+    tot.c_through_cuts[k] += c.through_cuts;
+    tot.c_incomplete[k] += !c.complete;
+    const Path& p = c.points;
+    const std::string w = where + (k == 0 ? " rectilinear " : " octilinear ") + str(p);
+    EXPECT_EQ(p.front(), taut.front()) << w;
+    EXPECT_EQ(p.back(), taut.back()) << w;
+    for (std::size_t i = 1; i < p.size(); ++i) {
+      const std::int64_t dx = std::int64_t{p[i].x} - p[i - 1].x, dy = std::int64_t{p[i].y} - p[i - 1].y;
+      const bool ok = dx == 0 || dy == 0 || (k == 1 && std::llabs(dx) == std::llabs(dy));
+      EXPECT_TRUE(ok) << w << ": segment " << i << " is not in the direction set";
+      tot.c_sloped[k] += dx != 0 && dy != 0;
+    }
+    tot.c_links[k] += static_cast<long long>(p.size()) - 1;
+    EXPECT_TRUE(ref.check_path(p).has_value()) << w << ": leaves free space";
+    EXPECT_EQ(h.word(p), h.word(sketch)) << w << ": another homotopy class";
+    if (k == 0)
+      EXPECT_EQ(l1_length(p), l1_length(taut)) << w << ": not the L1 length of the Euclidean path";
+    else
+      EXPECT_EQ(oct_length(p), oct_length(taut)) << w << ": not the octilinear length of the Euclidean path";
+  }
+}
 
 void check_seed(std::uint64_t seed, Totals& tot) {
   WavefrontCase c;
@@ -176,6 +229,7 @@ void check_seed(std::uint64_t seed, Totals& tot) {
   if (!ref.problems().empty()) return;
   const Scenery st = setup(c.domain, c.obstacles);
   ASSERT_TRUE(st.t.ok()) << "seed " << seed << " (" << c.family << "): the triangulation failed";
+  const router::StaircaseBuilder sb(c.domain, c.obstacles);
   std::vector<Point> pts;
   for (Point p : c.candidates)
     if (ref.is_free(p)) pts.push_back(p);
@@ -224,6 +278,7 @@ void check_seed(std::uint64_t seed, Totals& tot) {
     EXPECT_TRUE(taut.empty()) << where << ": the tightened path " << str(out) << " is not taut: " << taut;
     EXPECT_LE(length(out), length(sketch) * (1 + 1e-12)) << where;
     tot.bends += static_cast<long long>(out.size()) - 2;
+    check_c_oriented(*st.tight, sb, ref, h, sketch, out, where, tot);
     // tightening is idempotent
     const router::Tightened again = st.tight->tighten(out);
     ASSERT_EQ(again.status, router::TightenStatus::Ok) << where;
@@ -269,6 +324,10 @@ TEST(Tighten, RandomSketchesAgainstTheReferences) {
       "class, %lld reference paths, %lld refused at pinches\n",
       tot.instances, tot.sketches, tot.winding, tot.crossings, tot.bends, tot.global_class,
       tot.reference_paths, tot.pinch_refusals);
+  std::printf("c-oriented: rectilinear %lld paths (%lld through the cuts only, %lld searches out of budget, %lld missing), "
+              "octilinear %lld paths (%lld through the cuts, %lld out of budget, %lld missing, %lld diagonal links)\n",
+              tot.c_paths[0], tot.c_through_cuts[0], tot.c_incomplete[0], tot.c_missing[0], tot.c_paths[1],
+              tot.c_through_cuts[1], tot.c_incomplete[1], tot.c_missing[1], tot.c_sloped[1]);
   EXPECT_GE(tot.sketches, sanitized_share(6000, 6));
   EXPECT_GE(tot.winding, sanitized_share(2000, 6));
   EXPECT_GE(tot.global_class, sanitized_share(1500, 6));
