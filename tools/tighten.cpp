@@ -1,14 +1,15 @@
-// taut tighten FILE -o OUT [--svg PIC] [--stats S.json] [--orientations any]: pulls each net's
-// <sketch> (or, for a net without one, each of its routed wires) taut in its homotopy class
-// (router/tighten.h: the sleeve in the free-space triangulation and the funnel), and writes the
-// layout with <routes metric="euclidean" orientations="any"> holding the tightened wires. The
-// ends stay where they are; every bend of a tightened wire is on a blockage vertex, so its
-// vertices are integers. A sketch or wire that leaves free space is an input error
-// (TIGHTEN-0001, file:line, nothing written); a net with nothing to tighten is written as failed
-// (TIGHTEN-0002, exit status 1). c-oriented output (rectilinear, octilinear, c: sets) is not
-// implemented yet: asking for it is CLI-0027, and a layout whose <rules> ask for it is told so
-// (TIGHTEN-0003) and gets wires at any angle.
+// taut tighten FILE -o OUT [--svg PIC] [--stats S.json] [--orientations rectilinear|octilinear|any]:
+// pulls each net's <sketch> (or, for a net without one, each of its routed wires) taut in its
+// homotopy class (router/tighten.h: the sleeve in the free-space triangulation and the funnel),
+// then writes it in the chosen directions (--orientations, else <rules>, else rectilinear):
+// `any` keeps the Euclidean shortest wire; rectilinear and octilinear write the shortest wire of
+// the class in those directions with the fewest links (router::c_oriented). The ends stay where
+// they are and every vertex is an integer. A sketch or wire that leaves free space is an input
+// error (TIGHTEN-0001, file:line, nothing written); a net with nothing to tighten (TIGHTEN-0002)
+// or with no integer staircase in its class (TIGHTEN-0004) is written as failed (exit status 1).
+// `c:` direction sets are refused (CLI-0027) or, from <rules>, replaced by `any` (TIGHTEN-0003).
 #include <chrono>
+#include <optional>
 #include <cstdio>
 #include <iostream>
 
@@ -29,7 +30,8 @@ namespace {
 
 struct NetTightening {
   std::string source;  // "sketch" or "wires"
-  double before = 0, after = 0;
+  double before = 0, taut = 0, after = 0;
+  bool fewest_links = true;
   long bends_before = 0, bends_after = 0;
   std::size_t sleeve = 0, crossings = 0;
 };
@@ -57,16 +59,17 @@ void add_tighten(CLI::App& app, int& status) {
   sub->add_option("--svg", args->svg, "also draw the result as SVG (input sketches and wires dashed)");
   sub->add_option("--stats", args->stats, "also write statistics as JSON (lengths before and after)");
   sub->add_option("--orientations", args->orientations,
-                  "directions of the output: any (the default; c-oriented output is not available yet)");
+                  "directions of the output: rectilinear, octilinear (the shortest wire of the class in "
+                  "those directions, fewest links) or any (the Euclidean shortest); default: <rules>");
   add_input_options(sub, args->file, args->load, "do not print warnings or the summary");
   sub->callback([args, &status] {
     using Clock = std::chrono::steady_clock;
     const auto t0 = Clock::now();
-    if (!args->orientations.empty() && args->orientations != "any") {
-      print_usage_error("CLI-0027", "tighten: --orientations " + args->orientations +
-                                        ": c-oriented output (rectilinear, octilinear, c: sets) is not "
-                                        "available yet; tightened wires are written at any angle "
-                                        "(--orientations any)");
+    const std::string& o = args->orientations;
+    if (!o.empty() && o != "any" && o != "rectilinear" && o != "octilinear") {
+      print_usage_error("CLI-0027", "tighten: --orientations " + o +
+                                        ": only rectilinear, octilinear and any are available (c: sets "
+                                        "have directions without integer steps)");
       status = kInvalid;
       return;
     }
@@ -75,12 +78,20 @@ void add_tighten(CLI::App& app, int& status) {
       status = kInvalid;
       return;
     }
-    if (args->orientations.empty() && layout->rules && layout->rules->orientations != "any")
-      print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0003", layout->file, layout->rules->line, 0,
-                                    "<rules orientations=\"" + layout->rules->orientations +
-                                        "\">: tightened wires are written at any angle (c-oriented "
-                                        "output is not available yet)"}},
-                        args->load.quiet);
+    std::string orientations = o;
+    if (orientations.empty()) {
+      orientations = layout->rules ? layout->rules->orientations : "rectilinear";
+      if (orientations != "any" && orientations != "rectilinear" && orientations != "octilinear") {
+        print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0003", layout->file, layout->rules->line, 0,
+                                      "<rules orientations=\"" + orientations +
+                                          "\">: c: direction sets are not available; tightened wires are "
+                                          "written at any angle"}},
+                          args->load.quiet);
+        orientations = "any";
+      }
+    }
+    const bool c_oriented = orientations != "any";
+    const auto style = orientations == "octilinear" ? router::StaircaseStyle::Octilinear : router::StaircaseStyle::Rectilinear;
 
     // What each net tightens: its sketch, else its routed wires.
     struct Input {
@@ -118,12 +129,14 @@ void add_tighten(CLI::App& app, int& status) {
       throw std::logic_error("the free space of normalized blockages could not be triangulated");
     }
     const router::Tightener tight(tri);
+    std::optional<router::StaircaseBuilder> sb;
+    if (c_oriented) sb.emplace(norm.domain, norm.obstacles);
     const auto t1 = Clock::now();
 
     io::Routes routes;
     routes.tool = "taut " + std::string(router::version());
-    routes.metric = "euclidean";
-    routes.orientations = "any";
+    routes.metric = c_oriented ? "l1" : "euclidean";
+    routes.orientations = orientations;
     std::vector<Diagnostic> errors;
     std::vector<NetTightening> stats(layout->nets.size());
     std::size_t done = 0;
@@ -144,7 +157,7 @@ void add_tighten(CLI::App& app, int& status) {
       NetTightening& st = stats[i];
       st.source = in.source;
       std::vector<std::vector<geom::Point>> out_lines;
-      bool ok = true;
+      bool ok = true, no_staircase = false;
       for (std::size_t k = 0; k < in.lines.size(); ++k) {
         const auto& line = in.lines[k];
         const router::Tightened r = tight.tighten(line);
@@ -161,6 +174,16 @@ void add_tighten(CLI::App& app, int& status) {
           continue;
         }
         std::vector<geom::Point> pts = r.points;
+        st.taut += router::euclidean_length(pts);
+        if (c_oriented) {
+          router::COriented c = router::c_oriented(tight, *sb, r.points, style);
+          if (c.points.empty()) {
+            no_staircase = true;
+            break;
+          }
+          st.fewest_links = st.fewest_links && c.through_cuts && c.complete;
+          pts = std::move(c.points);
+        }
         if (pts.size() == 1) pts.push_back(pts[0]);
         st.before += router::euclidean_length(line);
         st.after += router::euclidean_length(pts);
@@ -171,6 +194,16 @@ void add_tighten(CLI::App& app, int& status) {
         out_lines.push_back(std::move(pts));
       }
       if (!ok) continue;
+      if (no_staircase) {
+        route.status = "failed";
+        route.reason = "no " + orientations + " wire with integer vertices follows the taut wire's class at its "
+                       "length (sloped blockages pinch every lattice staircase); --orientations any writes it";
+        print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0004", layout->file, in.line_numbers[0], 0,
+                                      "net \"" + net.name + "\": " + *route.reason}},
+                          args->load.quiet);
+        routes.routes.push_back(std::move(route));
+        continue;
+      }
       route.status = "routed";
       route.length = io::format_total_length(out_lines);
       route.bends = st.bends_after;
@@ -217,13 +250,16 @@ void add_tighten(CLI::App& app, int& status) {
         nets.push_back({{"net", layout->nets[i].name},
                         {"source", s.source},
                         {"length_before", std::stod(fixed3(s.before))},
+                        {"length_taut", std::stod(fixed3(s.taut))},
                         {"length_after", std::stod(fixed3(s.after))},
                         {"bends_before", s.bends_before},
                         {"bends_after", s.bends_after},
                         {"sleeve_triangles", s.sleeve},
-                        {"crossings", s.crossings}});
+                        {"crossings", s.crossings},
+                        {"fewest_links", s.fewest_links}});
       }
-      j["tighten"] = {{"nets", nets},
+      j["tighten"] = {{"orientations", orientations},
+                      {"nets", nets},
                       {"length_before", std::stod(fixed3(before))},
                       {"length_after", std::stod(fixed3(after))},
                       {"triangles", tri.triangles().size()},
@@ -236,12 +272,20 @@ void add_tighten(CLI::App& app, int& status) {
       status = kInvalid;
       return;
     }
+    auto stats_failed = [&](std::size_t i) {
+      for (const io::Route& r : out.routes->routes)
+        if (r.net == layout->nets[i].name) return r.status != "routed";
+      return true;
+    };
     if (!args->load.quiet) {
       for (std::size_t i = 0; i < layout->nets.size(); ++i) {
         if (inputs[i].lines.empty()) continue;
         const NetTightening& s = stats[i];
+        if (stats_failed(i)) continue;
         std::cerr << "  " << layout->nets[i].name << " (" << s.source << "): length " << fixed3(s.before) << " -> "
-                  << fixed3(s.after) << ", bends " << s.bends_before << " -> " << s.bends_after << '\n';
+                  << fixed3(s.after);
+        if (c_oriented) std::cerr << " " << orientations << " (taut " << fixed3(s.taut) << ")";
+        std::cerr << ", bends " << s.bends_before << " -> " << s.bends_after << '\n';
       }
       std::cerr << args->file << ": tightened " << done << " of " << layout->nets.size() << " nets, length "
                 << fixed3(before) << " -> " << fixed3(after) << "; wrote " << args->out << '\n';

@@ -22,8 +22,71 @@ using geom::Point;
 using Path = std::vector<Point>;
 const std::string kDesigns = std::string(TAUT_SOURCE_DIR) + "/designs/";
 
+using Inputs = std::vector<std::pair<std::string, std::vector<Path>>>;
+
+std::int64_t l1_length(const Path& p) {
+  std::int64_t s = 0;
+  for (std::size_t i = 1; i < p.size(); ++i)
+    s += std::llabs(std::int64_t{p[i].x} - p[i - 1].x) + std::llabs(std::int64_t{p[i].y} - p[i - 1].y);
+  return s;
+}
+std::pair<std::int64_t, std::int64_t> oct_length(const Path& p) {  // a + b*sqrt2
+  std::int64_t a = 0, b = 0;
+  for (std::size_t i = 1; i < p.size(); ++i) {
+    const std::int64_t dx = std::llabs(std::int64_t{p[i].x} - p[i - 1].x), dy = std::llabs(std::int64_t{p[i].y} - p[i - 1].y);
+    a += std::max(dx, dy) - std::min(dx, dy);
+    b += std::min(dx, dy);
+  }
+  return {a, b};
+}
+
+// The wires of net `net` in a routed file.
+std::vector<Path> wires_of(const std::string& file, const std::string& net) {
+  io::ReadResult rr = io::read_layout(file);
+  std::vector<Path> out;
+  if (!rr.layout || !rr.layout->routes) return out;
+  for (const io::Route& r : rr.layout->routes->routes)
+    if (r.net == net)
+      for (const io::Wire& w : r.wires) out.push_back(w.points);
+  return out;
+}
+
+// The c-oriented wires of `c_file` against the taut (any-angle) wires of `taut_file`: every
+// segment in the set, free, in the taut wire's class, of its L1 (octilinear) length.
+void expect_c_oriented(const std::string& c_file, const std::string& taut_file, const Inputs& inputs, bool oct) {
+  io::ReadResult rr = io::read_layout(c_file);
+  ASSERT_TRUE(rr.layout && rr.layout->routes) << c_file;
+  EXPECT_EQ(rr.layout->routes->orientations, oct ? "octilinear" : "rectilinear");
+  std::vector<Point> extra;
+  for (const auto& [net, lines] : inputs)
+    for (const Path& l : lines) extra.insert(extra.end(), l.begin(), l.end());
+  const auto r = reference_for<oracle::L1Reference>(c_file, extra);
+  const oracle::HomotopyWords h(r.norm.domain, r.norm.obstacles);
+  for (const auto& [net, lines] : inputs) {
+    SCOPED_TRACE(net + (oct ? " octilinear" : " rectilinear"));
+    const std::vector<Path> c = wires_of(c_file, net), t = wires_of(taut_file, net);
+    ASSERT_EQ(c.size(), lines.size());
+    ASSERT_EQ(t.size(), lines.size());
+    for (std::size_t k = 0; k < lines.size(); ++k) {
+      const Path& w = c[k];
+      EXPECT_EQ(w.front(), lines[k].front());
+      EXPECT_EQ(w.back(), lines[k].back());
+      for (std::size_t i = 1; i < w.size(); ++i) {
+        const std::int64_t dx = std::int64_t{w[i].x} - w[i - 1].x, dy = std::int64_t{w[i].y} - w[i - 1].y;
+        EXPECT_TRUE(dx == 0 || dy == 0 || (oct && std::llabs(dx) == std::llabs(dy))) << "segment " << i;
+      }
+      EXPECT_TRUE(r.ref->check_path(w).has_value()) << "leaves free space";
+      EXPECT_EQ(h.word(w), h.word(lines[k])) << "another homotopy class";
+      if (oct)
+        EXPECT_EQ(oct_length(w), oct_length(t[k]));
+      else
+        EXPECT_EQ(l1_length(w), l1_length(t[k]));
+    }
+  }
+}
+
 // Every routed wire of `out_file` against the input polyline it came from.
-void expect_tightened(const std::string& out_file, const std::vector<std::pair<std::string, std::vector<Path>>>& inputs) {
+void expect_tightened(const std::string& out_file, const Inputs& inputs) {
   io::ReadResult rr = io::read_layout(out_file);
   ASSERT_TRUE(rr.layout && rr.layout->routes) << out_file;
   std::vector<Point> extra;
@@ -100,6 +163,12 @@ TEST(Tighten, WindingSketches) {
   }
   EXPECT_NEAR(t["length_before"].get<double>(), before, 0.003);
   EXPECT_NEAR(t["length_after"].get<double>(), after, 0.003);
+  // rectilinear and octilinear output: the shortest wires of the class in those directions
+  for (const std::string o : {"rectilinear", "octilinear"}) {
+    const auto c = run_taut({"tighten", in, "-q", "-o", dir + "/" + o + ".xml", "--orientations", o});
+    ASSERT_EQ(c.status, 0) << c.err;
+    expect_c_oriented(dir + "/" + o + ".xml", dir + "/w.xml", inputs, o == std::string("octilinear"));
+  }
   // the picture shows the sketches (dashed) and the tightened wires
   const std::string svg = read_text(dir + "/w.svg");
   EXPECT_NE(svg.find("class=\"sketch\" data-net=\"spiral\""), std::string::npos);
@@ -112,9 +181,8 @@ TEST(Tighten, RoutedWiresOfTheDemo) {
   const std::string dir = temp_dir("tighten_demo");
   const auto routed = run_taut({"route", kDesigns + "demo.xml", "-q", "-o", dir + "/r.xml"});
   ASSERT_EQ(routed.status, 0) << routed.err;
-  const auto run = run_taut({"tighten", dir + "/r.xml", "-o", dir + "/t.xml", "--svg", dir + "/t.svg"});
+  const auto run = run_taut({"tighten", dir + "/r.xml", "-o", dir + "/t.xml", "--svg", dir + "/t.svg", "--orientations", "any"});
   ASSERT_EQ(run.status, 0) << run.err;
-  EXPECT_NE(run.err.find("[TIGHTEN-0003]"), std::string::npos) << run.err;  // rules say rectilinear
   io::ReadResult rr = io::read_layout(dir + "/r.xml");
   ASSERT_TRUE(rr.layout && rr.layout->routes);
   std::vector<std::pair<std::string, std::vector<Path>>> inputs;
@@ -135,11 +203,25 @@ TEST(Tighten, RoutedWiresOfTheDemo) {
   // the routed layout checks
   const auto check = run_taut({"check", dir + "/t.xml"});
   EXPECT_EQ(check.status, 0) << check.err;
+  // without --orientations the demo's rules (rectilinear) apply
+  const auto rect = run_taut({"tighten", dir + "/r.xml", "-q", "-o", dir + "/rect.xml"});
+  ASSERT_EQ(rect.status, 0) << rect.err;
+  expect_c_oriented(dir + "/rect.xml", dir + "/t.xml", inputs, false);
+  const auto check2 = run_taut({"check", dir + "/rect.xml"});  // checks the directions too
+  EXPECT_EQ(check2.status, 0) << check2.err;
+  // the rectilinear wires of `route` are L1-shortest already: tightening never lengthens them
+  for (const io::Net& n : rr.layout->nets) {
+    if (n.sketch) continue;
+    std::int64_t before = 0, after = 0;
+    for (const Path& w : wires_of(dir + "/r.xml", n.name)) before += l1_length(w);
+    for (const Path& w : wires_of(dir + "/rect.xml", n.name)) after += l1_length(w);
+    EXPECT_LE(after, before) << n.name;
+  }
 }
 
 TEST(Tighten, NothingToTightenIsAFailedNet) {
   const std::string dir = temp_dir("tighten_nothing");
-  const auto run = run_taut({"tighten", kDesigns + "demo.xml", "-o", dir + "/t.xml"});
+  const auto run = run_taut({"tighten", kDesigns + "demo.xml", "-o", dir + "/t.xml", "--orientations", "any"});
   EXPECT_EQ(run.status, 1) << run.err;
   EXPECT_NE(run.err.find("demo.xml:41: warning: [TIGHTEN-0002] net \"clk\""), std::string::npos) << run.err;
   io::ReadResult rr = io::read_layout(dir + "/t.xml");
@@ -151,6 +233,40 @@ TEST(Tighten, NothingToTightenIsAFailedNet) {
   }
   EXPECT_EQ(failed, 4);
   EXPECT_EQ(routed, 1);
+}
+
+// Two sloped triangles leave the free segment (0,0)-(3,1) with no lattice staircase (the
+// corridor is 2/3 wide): rectilinear output fails for that net, `any` writes the segment.
+TEST(Tighten, NoLatticeStaircaseInTheClassIsAFailedNet) {
+  const std::string dir = temp_dir("tighten_pinch");
+  const std::string file = layout_file("tighten_staircase",
+                                       "  <boundary x0=\"-3\" y0=\"-3\" x1=\"6\" y1=\"4\"/>\n"
+                                       "  <blockage id=\"a\"><polygon points=\"-1,0 2,1 -1,1\"/></blockage>\n"
+                                       "  <blockage id=\"b\"><polygon points=\"1,0 4,0 4,1\"/></blockage>\n"
+                                       "  <net name=\"n\"><pin name=\"p\" x=\"0\" y=\"0\"/><pin name=\"q\" x=\"3\" y=\"1\"/>\n"
+                                       "    <sketch points=\"0,0 3,1\"/></net>\n");
+  auto run = run_taut({"tighten", file, "-o", dir + "/t.xml", "--orientations", "rectilinear"});
+  EXPECT_EQ(run.status, 1) << run.err;
+  EXPECT_NE(run.err.find("[TIGHTEN-0004] net \"n\""), std::string::npos) << run.err;
+  io::ReadResult rr = io::read_layout(dir + "/t.xml");
+  ASSERT_TRUE(rr.layout && rr.layout->routes);
+  EXPECT_EQ(rr.layout->routes->routes.at(0).status, "failed");
+  run = run_taut({"tighten", file, "-o", dir + "/t.xml", "--orientations", "any"});
+  EXPECT_EQ(run.status, 0) << run.err;
+  EXPECT_EQ(wires_of(dir + "/t.xml", "n"), (std::vector<Path>{{{0, 0}, {3, 1}}}));
+}
+
+TEST(Tighten, CSetInTheRulesIsWrittenAtAnyAngle) {
+  const std::string dir = temp_dir("tighten_cset");
+  const std::string file = layout_file("tighten_cset_in",
+                                       "  <rules orientations=\"c:0,60,120\"/>\n"
+                                       "  <blockage id=\"a\"><rect x0=\"40\" y0=\"40\" x1=\"60\" y1=\"60\"/></blockage>\n"
+                                       "  <net name=\"n\"><pin name=\"p\" x=\"10\" y=\"50\"/><pin name=\"q\" x=\"90\" y=\"50\"/>\n"
+                                       "    <sketch points=\"10,50 50,90 90,50\"/></net>\n");
+  const auto run = run_taut({"tighten", file, "-o", dir + "/t.xml"});
+  EXPECT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.err.find("warning: [TIGHTEN-0003]"), std::string::npos) << run.err;
+  EXPECT_EQ(wires_of(dir + "/t.xml", "n"), (std::vector<Path>{{{10, 50}, {40, 60}, {60, 60}, {90, 50}}}));
 }
 
 TEST(Tighten, BadInputExit2AndWritesNothing) {
@@ -179,8 +295,8 @@ TEST(Tighten, BadInputExit2AndWritesNothing) {
   run = run_taut({"tighten", layout_file("tighten_bad_pinch", pinch), "-o", dir + "/t.xml"});
   EXPECT_EQ(run.status, 2) << run.err;
   EXPECT_NE(run.err.find("passes through a point where blockages touch at or after 60,60"), std::string::npos) << run.err;
-  // c-oriented output is not available yet
-  run = run_taut({"tighten", file, "-o", dir + "/t.xml", "--orientations", "rectilinear"});
+  // c: sets are not available
+  run = run_taut({"tighten", file, "-o", dir + "/t.xml", "--orientations", "c:0,60,120"});
   EXPECT_EQ(run.status, 2) << run.err;
   EXPECT_NE(run.err.find("[CLI-0027]"), std::string::npos) << run.err;
   EXPECT_EQ(read_text(dir + "/t.xml"), "old");
