@@ -24,22 +24,6 @@ const std::string kDesigns = std::string(TAUT_SOURCE_DIR) + "/designs/";
 
 using Inputs = std::vector<std::pair<std::string, std::vector<Path>>>;
 
-std::int64_t l1_length(const Path& p) {
-  std::int64_t s = 0;
-  for (std::size_t i = 1; i < p.size(); ++i)
-    s += std::llabs(std::int64_t{p[i].x} - p[i - 1].x) + std::llabs(std::int64_t{p[i].y} - p[i - 1].y);
-  return s;
-}
-std::pair<std::int64_t, std::int64_t> oct_length(const Path& p) {  // a + b*sqrt2
-  std::int64_t a = 0, b = 0;
-  for (std::size_t i = 1; i < p.size(); ++i) {
-    const std::int64_t dx = std::llabs(std::int64_t{p[i].x} - p[i - 1].x), dy = std::llabs(std::int64_t{p[i].y} - p[i - 1].y);
-    a += std::max(dx, dy) - std::min(dx, dy);
-    b += std::min(dx, dy);
-  }
-  return {a, b};
-}
-
 // The wires of net `net` in a routed file.
 std::vector<Path> wires_of(const std::string& file, const std::string& net) {
   io::ReadResult rr = io::read_layout(file);

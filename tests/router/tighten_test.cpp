@@ -169,22 +169,6 @@ struct Totals {
             c_links[2] = {0, 0}, c_sloped[2] = {0, 0};
 };
 
-// Exact lengths: L1 as an integer; octilinear as a + b*sqrt2 (a, b integers).
-std::int64_t l1_length(const Path& p) {
-  std::int64_t s = 0;
-  for (std::size_t i = 1; i < p.size(); ++i)
-    s += std::llabs(std::int64_t{p[i].x} - p[i - 1].x) + std::llabs(std::int64_t{p[i].y} - p[i - 1].y);
-  return s;
-}
-std::pair<std::int64_t, std::int64_t> oct_length(const Path& p) {
-  std::int64_t a = 0, b = 0;
-  for (std::size_t i = 1; i < p.size(); ++i) {
-    const std::int64_t dx = std::llabs(std::int64_t{p[i].x} - p[i - 1].x), dy = std::llabs(std::int64_t{p[i].y} - p[i - 1].y);
-    a += std::max(dx, dy) - std::min(dx, dy);
-    b += std::min(dx, dy);
-  }
-  return {a, b};
-}
 
 // The c-oriented form of a tightened path, judged by the references.
 void check_c_oriented(const router::Tightener& tight, const router::StaircaseBuilder& sb, const oracle::L1Reference& ref,

@@ -15,6 +15,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "geom/types.h"
@@ -51,6 +52,27 @@ inline bool arcs_meet(Dir s1, Dir s2, Dir m1, Dir m2) {
   return in_open(m1, s1, s2) || in_open(s1, m1, m2) || same(s1, m1);
 }
 }  // namespace taut_detail
+
+// Exact lengths of a polyline: L1 as an integer; octilinear as (a, b) meaning a + b*sqrt2.
+inline std::int64_t l1_length(const std::vector<geom::Point>& p) {
+  std::int64_t s = 0;
+  for (std::size_t i = 1; i < p.size(); ++i) {
+    const std::int64_t dx = std::int64_t{p[i].x} - p[i - 1].x, dy = std::int64_t{p[i].y} - p[i - 1].y;
+    s += (dx < 0 ? -dx : dx) + (dy < 0 ? -dy : dy);
+  }
+  return s;
+}
+inline std::pair<std::int64_t, std::int64_t> oct_length(const std::vector<geom::Point>& p) {
+  std::int64_t a = 0, b = 0;
+  for (std::size_t i = 1; i < p.size(); ++i) {
+    std::int64_t dx = std::int64_t{p[i].x} - p[i - 1].x, dy = std::int64_t{p[i].y} - p[i - 1].y;
+    dx = dx < 0 ? -dx : dx;
+    dy = dy < 0 ? -dy : dy;
+    a += (dx > dy ? dx - dy : dy - dx);
+    b += dx < dy ? dx : dy;
+  }
+  return {a, b};
+}
 
 // Empty when `path` is locally taut, else what is wrong and where.
 inline std::string taut_problem(const std::vector<geom::Point>& path, const geom::Box& domain,
