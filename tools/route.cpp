@@ -1,4 +1,4 @@
-// taut route FILE -o OUT [--svg PIC] [--stats S.json] [--orientations rectilinear|octilinear]:
+// taut route FILE -o OUT [--svg PIC] [--stats S.json] [--orientations rectilinear|octilinear] [--tighten]:
 // routes every net by exact shortest wires with integer vertices, each net on its own (wires of
 // different nets do not see each other yet), and writes the layout with <routes>. A two-pin net
 // gets the shortest wire between its pins; a net with more pins gets a shortest-path tree from
@@ -7,7 +7,9 @@
 // pins and shape pins whose edges are horizontal, vertical or at 45 degrees. Octilinear: the
 // shortest wires in 0/45/90/135 degrees, point pins and shape pins whose edges are horizontal
 // or vertical. Nets this version cannot route are written as failed with a reason and reported
-// on stderr; the exit status is then 1.
+// on stderr; the exit status is then 1. --tighten then pulls every routed wire taut in its
+// class and writes it with the fewest links; a net with a <sketch> gets its sketch tightened
+// (tools/route_common.h: WireTightener, as `taut tighten` does).
 #include <chrono>
 #include <iostream>
 #include <span>
@@ -158,6 +160,7 @@ void add_route(CLI::App& app, int& status) {
     std::string file, out, svg, stats;
     RoutingOptions routing;
     LoadOptions load;
+    bool tighten = false;
   };
   auto args = std::make_shared<Args>();
   CLI::App* sub = app.add_subcommand("route", "Route every net (shortest wires; a shortest-path tree from the first pin for nets of three or more pins) and write the routed layout");
@@ -165,6 +168,9 @@ void add_route(CLI::App& app, int& status) {
   sub->add_option("--svg", args->svg, "also draw the routed layout as SVG");
   sub->add_option("--stats", args->stats, "also write statistics as JSON");
   add_routing_options(sub, args->routing);
+  sub->add_flag("--tighten", args->tighten,
+                "then pull every wire taut in its class and write it with the fewest links (a net with a "
+                "<sketch> follows its sketch), as taut tighten does");
   add_input_options(sub, args->file, args->load, "do not print warnings or the summary");
   sub->callback([args, &status] {
     using Clock = std::chrono::steady_clock;
@@ -174,7 +180,11 @@ void add_route(CLI::App& app, int& status) {
       status = kInvalid;
       return;
     }
-    const geom::NormalizedObstacles norm = routing_obstacles(*layout);
+    std::vector<geom::Point> sketch_points;  // --tighten: sketches must fit in the domain
+    if (args->tighten)
+      for (const io::Net& net : layout->nets)
+        if (net.sketch) sketch_points.insert(sketch_points.end(), net.sketch->points.begin(), net.sketch->points.end());
+    const geom::NormalizedObstacles norm = routing_obstacles(*layout, sketch_points);
     const bool octilinear = routing_orientations(args->routing, *layout) == "octilinear";
     std::optional<router::L1Router> l1;
     std::optional<router::OctRouter> oct;
@@ -193,11 +203,11 @@ void add_route(CLI::App& app, int& status) {
       NetResult r = l1 ? route_net(*layout, net, *l1) : route_net(*layout, net, *oct);
       if (r.route.status == "routed") {
         ++routed;
-        if (net.sketch)  // said, not dropped silently
+        if (net.sketch && !args->tighten)  // said, not dropped silently
           print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0007", layout->file, net.sketch->line, 0,
                                         "net \"" + net.name + "\": the wire is the shortest of any "
-                                        "homotopy class and does not follow the <sketch> (taut "
-                                        "tighten pulls the sketch taut in its class)"}},
+                                        "homotopy class and does not follow the <sketch> (--tighten or "
+                                        "taut tighten pull the sketch taut in its class)"}},
                             args->load.quiet);
       } else {
         print_diagnostics({Diagnostic{Severity::Warning, r.code, layout->file, net.line, 0,
@@ -205,6 +215,65 @@ void add_route(CLI::App& app, int& status) {
                           args->load.quiet);
       }
       routes.routes.push_back(std::move(r.route));
+    }
+    if (args->tighten) {
+      // Every routed wire pulled taut in its class and written with the fewest links (its L1 or
+      // octilinear length cannot grow: the routed wire is a staircase of the class); a net with a
+      // sketch gets its sketch tightened instead, which fixes its class.
+      const WireTightener wt(norm, octilinear ? "octilinear" : "rectilinear");
+      std::vector<Diagnostic> errors;
+      for (std::size_t i = 0; i < layout->nets.size(); ++i) {
+        const io::Net& net = layout->nets[i];
+        io::Route& route = routes.routes[i];
+        std::vector<io::Wire> wires;
+        if (net.sketch && net.pins.size() == 2) {
+          const auto res = wt.run(net.sketch->points);
+          if (res.taut.status != router::TightenStatus::Ok) {
+            errors.push_back(Diagnostic{Severity::Error, "TIGHTEN-0001", layout->file, net.sketch->line, 0,
+                                        WireTightener::failure_text(*layout, net.name, "sketch", net.sketch->points,
+                                                                    res.taut)});
+            continue;
+          }
+          if (res.no_staircase) {
+            if (route.status == "routed") --routed;
+            route = io::Route{};
+            route.net = net.name;
+            route.status = "failed";
+            route.reason = no_staircase_reason(octilinear ? "octilinear" : "rectilinear") + " (the net's <sketch>)";
+            print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0004", layout->file, net.sketch->line, 0,
+                                          "net \"" + net.name + "\": " + *route.reason}},
+                              args->load.quiet);
+            continue;
+          }
+          wires.push_back(io::Wire{res.points});
+          if (route.status != "routed") ++routed;
+        } else if (route.status == "routed") {
+          for (const io::Wire& w : route.wires) {
+            const auto res = wt.run(w.points);
+            // a routed wire is in free space; no staircase found: the routed one stays
+            wires.push_back(res.points.empty() ? w : io::Wire{res.points});
+          }
+        } else {
+          continue;
+        }
+        std::vector<std::vector<geom::Point>> lines;
+        long bends = 0;
+        for (const io::Wire& w : wires) {
+          lines.push_back(w.points);
+          bends += geom::count_bends(w.points);
+        }
+        route = io::Route{};
+        route.net = net.name;
+        route.status = "routed";
+        route.length = io::format_total_length(lines);
+        route.bends = bends;
+        route.wires = std::move(wires);
+      }
+      if (!errors.empty()) {
+        print_diagnostics(errors);
+        status = kInvalid;
+        return;
+      }
     }
     const auto t2 = Clock::now();
     io::Layout out = *layout;

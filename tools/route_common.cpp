@@ -1,6 +1,7 @@
 #include "tools/route_common.h"
 
 #include <cstdio>
+#include <stdexcept>
 
 #include "geom/predicates.h"
 #include "io/layout_geometry.h"
@@ -36,6 +37,53 @@ std::string why_not_free(const io::Layout& layout, geom::Point p) {
         return "lies inside blockage \"" + blk.id + "\"" + where + std::to_string(s.line) + ")";
   return "is not in free space: it is enclosed where blockages touch or overlap, or lies on a "
          "blockage edge flush with the boundary";
+}
+
+WireTightener::WireTightener(const geom::NormalizedObstacles& norm, const std::string& orientations)
+    : orientations_(orientations), tri_(geom::triangulate_free_space(norm.domain, norm.obstacles)) {
+  if (!tri_.ok()) {
+    std::string why;
+    for (const Diagnostic& d : tri_.diagnostics()) why += " [" + d.code + "] " + d.message;
+    throw std::logic_error("the free space of normalized blockages could not be triangulated:" + why);
+  }
+  tight_ = std::make_unique<router::Tightener>(tri_);
+  if (orientations_ != "any") sb_ = std::make_unique<router::StaircaseBuilder>(norm.domain, norm.obstacles);
+}
+
+WireTightener::Result WireTightener::run(std::span<const geom::Point> line) const {
+  Result r;
+  r.taut = tight_->tighten(line);
+  if (r.taut.status != router::TightenStatus::Ok) return r;
+  r.points = r.taut.points;
+  if (sb_) {
+    const auto style = orientations_ == "octilinear" ? router::StaircaseStyle::Octilinear
+                                                     : router::StaircaseStyle::Rectilinear;
+    router::COriented c = router::c_oriented(*tight_, *sb_, r.taut.points, style);
+    if (c.points.empty()) {
+      r.no_staircase = true;
+      r.points.clear();
+      return r;
+    }
+    r.fewest_links = c.through_cuts && c.complete;
+    r.points = std::move(c.points);
+  }
+  if (r.points.size() == 1) r.points.push_back(r.points[0]);
+  return r;
+}
+
+std::string WireTightener::failure_text(const io::Layout& layout, const std::string& net, const std::string& what,
+                                        std::span<const geom::Point> line, const router::Tightened& r) {
+  std::string text = "net \"" + net + "\": the " + what;
+  if (r.status == router::TightenStatus::StartNotFree)
+    return text + " starts at " + point_text(line.front()) + ", which " + why_not_free(layout, line.front());
+  return text + "'s segment " + std::to_string(r.segment + 1) + " (" + point_text(line[r.segment]) + " to " +
+         point_text(line[r.segment + 1]) + ") " + router::tighten_status_text(r.status) + " at or after " +
+         point_text(r.where);
+}
+
+std::string no_staircase_reason(const std::string& orientations) {
+  return "no " + orientations + " wire with integer vertices follows the taut wire's class at its length "
+         "(sloped blockages pinch every lattice staircase); --orientations any writes it";
 }
 
 }  // namespace taut::cli

@@ -2,6 +2,7 @@
 // words a person reads when a wire cannot be made.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -10,7 +11,9 @@
 #include "geom/normalize.h"
 #include "geom/root2.h"
 #include "io/layout.h"
+#include "geom/triangulation.h"
 #include "router/l1_router.h"
+#include "router/tighten.h"
 
 namespace taut::cli {
 
@@ -28,5 +31,34 @@ std::string point_text(geom::Point p);
 // A length a + b*sqrt2 for people: "23000" when b = 0, else "15.8994949366 (6+7*sqrt2)" (the
 // value to 12 significant digits, then the exact form).
 std::string length_text(const geom::Root2& length);
+
+// Tightening as `tighten` and `route --tighten` do it: the free-space triangulation of the
+// normalized obstacles, the tightener, and for rectilinear or octilinear output the staircase
+// builder (router/tighten.h).
+class WireTightener {
+ public:
+  // orientations: "any", "rectilinear" or "octilinear".
+  WireTightener(const geom::NormalizedObstacles& norm, const std::string& orientations);
+  struct Result {
+    router::Tightened taut;           // the lift and the Euclidean shortest path of the class
+    std::vector<geom::Point> points;  // in the orientations (a repeated point for a one-point wire)
+    bool no_staircase = false;        // c-oriented: no lattice staircase in the class (TIGHTEN-0004)
+    bool fewest_links = true;         // c-oriented: the fewest links are proven
+  };
+  Result run(std::span<const geom::Point> line) const;
+  // The TIGHTEN-0001 message for a failed lift of `line` (what: "sketch" or "wire").
+  static std::string failure_text(const io::Layout& layout, const std::string& net, const std::string& what,
+                                  std::span<const geom::Point> line, const router::Tightened& r);
+  const geom::FreeSpaceTriangulation& triangulation() const { return tri_; }
+
+ private:
+  std::string orientations_;
+  geom::FreeSpaceTriangulation tri_;
+  std::unique_ptr<router::Tightener> tight_;
+  std::unique_ptr<router::StaircaseBuilder> sb_;
+};
+
+// The reason written for a net with no lattice staircase in its class (TIGHTEN-0004).
+std::string no_staircase_reason(const std::string& orientations);
 
 }  // namespace taut::cli

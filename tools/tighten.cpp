@@ -91,7 +91,6 @@ void add_tighten(CLI::App& app, int& status) {
       }
     }
     const bool c_oriented = orientations != "any";
-    const auto style = orientations == "octilinear" ? router::StaircaseStyle::Octilinear : router::StaircaseStyle::Rectilinear;
 
     // What each net tightens: its sketch, else its routed wires.
     struct Input {
@@ -123,14 +122,7 @@ void add_tighten(CLI::App& app, int& status) {
     }
 
     const geom::NormalizedObstacles norm = routing_obstacles(*layout, extra);
-    const geom::FreeSpaceTriangulation tri = geom::triangulate_free_space(norm.domain, norm.obstacles);
-    if (!tri.ok()) {
-      print_diagnostics(tri.diagnostics());
-      throw std::logic_error("the free space of normalized blockages could not be triangulated");
-    }
-    const router::Tightener tight(tri);
-    std::optional<router::StaircaseBuilder> sb;
-    if (c_oriented) sb.emplace(norm.domain, norm.obstacles);
+    const WireTightener wt(norm, orientations);
     const auto t1 = Clock::now();
 
     io::Routes routes;
@@ -160,31 +152,22 @@ void add_tighten(CLI::App& app, int& status) {
       bool ok = true, no_staircase = false;
       for (std::size_t k = 0; k < in.lines.size(); ++k) {
         const auto& line = in.lines[k];
-        const router::Tightened r = tight.tighten(line);
+        WireTightener::Result res = wt.run(line);
+        const router::Tightened& r = res.taut;
         if (r.status != router::TightenStatus::Ok) {
-          std::string what = "net \"" + net.name + "\": the " + (in.source == "sketch" ? "sketch" : "wire");
-          if (r.status == router::TightenStatus::StartNotFree)
-            what += " starts at " + point_text(line.front()) + ", which " + why_not_free(*layout, line.front());
-          else
-            what += "'s segment " + std::to_string(r.segment + 1) + " (" + point_text(line[r.segment]) + " to " +
-                    point_text(line[r.segment + 1]) + ") " + router::tighten_status_text(r.status) + " at or after " +
-                    point_text(r.where);
-          errors.push_back(Diagnostic{Severity::Error, "TIGHTEN-0001", layout->file, in.line_numbers[k], 0, what});
+          errors.push_back(Diagnostic{Severity::Error, "TIGHTEN-0001", layout->file, in.line_numbers[k], 0,
+                                      WireTightener::failure_text(*layout, net.name,
+                                                                  in.source == "sketch" ? "sketch" : "wire", line, r)});
           ok = false;
           continue;
         }
-        std::vector<geom::Point> pts = r.points;
-        st.taut += router::euclidean_length(pts);
-        if (c_oriented) {
-          router::COriented c = router::c_oriented(tight, *sb, r.points, style);
-          if (c.points.empty()) {
-            no_staircase = true;
-            break;
-          }
-          st.fewest_links = st.fewest_links && c.through_cuts && c.complete;
-          pts = std::move(c.points);
+        st.taut += router::euclidean_length(r.points);
+        if (res.no_staircase) {
+          no_staircase = true;
+          break;
         }
-        if (pts.size() == 1) pts.push_back(pts[0]);
+        st.fewest_links = st.fewest_links && res.fewest_links;
+        std::vector<geom::Point> pts = std::move(res.points);
         st.before += router::euclidean_length(line);
         st.after += router::euclidean_length(pts);
         st.bends_before += io::count_bends(line);
@@ -196,8 +179,7 @@ void add_tighten(CLI::App& app, int& status) {
       if (!ok) continue;
       if (no_staircase) {
         route.status = "failed";
-        route.reason = "no " + orientations + " wire with integer vertices follows the taut wire's class at its "
-                       "length (sloped blockages pinch every lattice staircase); --orientations any writes it";
+        route.reason = no_staircase_reason(orientations);
         print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0004", layout->file, in.line_numbers[0], 0,
                                       "net \"" + net.name + "\": " + *route.reason}},
                           args->load.quiet);
@@ -262,7 +244,7 @@ void add_tighten(CLI::App& app, int& status) {
                       {"nets", nets},
                       {"length_before", std::stod(fixed3(before))},
                       {"length_after", std::stod(fixed3(after))},
-                      {"triangles", tri.triangles().size()},
+                      {"triangles", wt.triangulation().triangles().size()},
                       {"seconds", {{"prepare", std::chrono::duration<double>(t1 - t0).count()},
                                    {"tighten", std::chrono::duration<double>(t2 - t1).count()}}}};
       stats_text = j.dump(2) + "\n";

@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "geom/predicates.h"
 #include "io/layout_reader.h"
 #include "oracle/homotopy.h"
 #include "oracle/l1_oracle.h"
@@ -217,6 +218,54 @@ TEST(Tighten, NothingToTightenIsAFailedNet) {
   }
   EXPECT_EQ(failed, 4);
   EXPECT_EQ(routed, 1);
+}
+
+// route --tighten: each routed wire pulled taut in its class and written with the fewest links
+// (never longer, never more bends than the routed wire: that wire is a staircase of the class),
+// and the net with a sketch follows its sketch.
+TEST(Tighten, RouteTighten) {
+  const std::string dir = temp_dir("tighten_route");
+  const std::string demo = kDesigns + "demo.xml";
+  for (const std::string o : {"rectilinear", "octilinear"}) {
+    SCOPED_TRACE(o);
+    const auto plain = run_taut({"route", demo, "-q", "--orientations", o, "-o", dir + "/plain.xml"});
+    const auto tight = run_taut({"route", demo, "--orientations", o, "--tighten", "-o", dir + "/tight.xml"});
+    ASSERT_EQ(tight.status, 0) << tight.err;  // octilinear too: bump follows its sketch
+    EXPECT_EQ(tight.err.find("ROUTE-0007"), std::string::npos) << tight.err;
+    io::ReadResult in = io::read_layout(demo);
+    ASSERT_TRUE(in.layout);
+    Inputs sketches, routed;
+    for (const io::Net& n : in.layout->nets) {
+      if (n.sketch)
+        sketches.push_back({n.name, {n.sketch->points}});
+      else
+        routed.push_back({n.name, wires_of(dir + "/plain.xml", n.name)});
+    }
+    // the tightened sketch, written at any angle, is the reference for the sketch's net
+    const auto any = run_taut({"tighten", demo, "-q", "--orientations", "any", "-o", dir + "/any.xml"});
+    ASSERT_EQ(any.status, 1) << any.err;  // the other nets have no sketch
+    expect_c_oriented(dir + "/tight.xml", dir + "/any.xml", sketches, o == std::string("octilinear"));
+    const auto r = reference_for<oracle::L1Reference>(dir + "/tight.xml");
+    const oracle::HomotopyWords h(r.norm.domain, r.norm.obstacles);
+    for (const auto& [net, lines] : routed) {
+      SCOPED_TRACE(net);
+      const std::vector<Path> t = wires_of(dir + "/tight.xml", net);
+      ASSERT_EQ(t.size(), lines.size());
+      for (std::size_t k = 0; k < lines.size(); ++k) {
+        EXPECT_EQ(t[k].front(), lines[k].front());
+        EXPECT_EQ(t[k].back(), lines[k].back());
+        EXPECT_TRUE(r.ref->check_path(t[k]).has_value());
+        EXPECT_EQ(h.word(t[k]), h.word(lines[k]));
+        if (o == std::string("octilinear"))
+          EXPECT_EQ(oct_length(t[k]), oct_length(lines[k]));  // the routed wire is already shortest
+        else
+          EXPECT_EQ(l1_length(t[k]), l1_length(lines[k]));
+        EXPECT_LE(geom::count_bends(t[k]), geom::count_bends(lines[k]));
+      }
+    }
+    const auto check = run_taut({"check", dir + "/tight.xml"});
+    EXPECT_EQ(check.status, 0) << check.err;
+  }
 }
 
 // Two sloped triangles leave the free segment (0,0)-(3,1) with no lattice staircase (the
