@@ -10,9 +10,11 @@
 //   LAYOUT-0005  a shape pin lies entirely in the interior of one blockage shape
 //   LAYOUT-0006  a pin lies outside the boundary (a point pin outside the closed box; a shape pin
 //                that does not meet the closed box at all); on a boundary edge is fine
-//   LAYOUT-0007  warning: a net has fewer than two pins (it is reported as not routable)
+//   LAYOUT-0007  warning: a net has fewer than two pins (it is reported as not routable), unless
+//                its sketch is a loop (closed: a guard ring)
 //   LAYOUT-0008  warning: a sketch does not start on the net's first pin or end on its second
 //   LAYOUT-0009  warning: a sketch on a net that does not have exactly two pins
+//   (neither for a loop: a sketch whose last point is its first, which belongs to no pin)
 //   LAYOUT-0010  a route names a net that does not exist
 //   LAYOUT-0011  two routes for the same net
 //   LAYOUT-0012  a blockage has no shapes (layouts built in memory; the reader says IO-0020)
@@ -481,7 +483,7 @@ class Validator {
       if (!fresh && !net.name.empty())
         error("LAYOUT-0002", net.line,
               ctx + ": name already used by the net on line " + std::to_string(it->second));
-      if (net.pins.size() < 2)
+      if (net.pins.size() < 2 && !is_loop(net))  // a loop net (guard ring) needs no pins
         warning("LAYOUT-0007", net.line,
                 ctx + ": has " + std::to_string(net.pins.size()) +
                     " pin(s), needs two or more; it will not be routed");
@@ -511,10 +513,22 @@ class Validator {
     }
   }
 
+  // A sketch whose last point is its first, around at least one other point: a loop (e.g. a
+  // guard ring), tightened to the shortest closed loop of its class; it belongs to no pin.
+  static bool is_loop(const Net& net) {
+    if (!net.sketch || net.sketch->points.size() < 3) return false;
+    const auto& pts = net.sketch->points;
+    if (pts.front() != pts.back()) return false;
+    for (Point p : pts)
+      if (p != pts.front()) return true;
+    return false;
+  }
+
   void check_sketch(const Net& net, const std::string& ctx) {
     const Sketch& s = *net.sketch;
     for (Point p : s.points)
       if (!check_range(p, s.line, ctx + " sketch")) return;
+    if (is_loop(net)) return;
     if (net.pins.size() != 2) {
       warning("LAYOUT-0009", s.line,
               ctx + " sketch: the net has " + std::to_string(net.pins.size()) +

@@ -1,5 +1,6 @@
 #include "router/tighten.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -102,6 +103,22 @@ struct Tightener::Walker {
     return -1;
   }
 
+  // Walks every segment of a polyline (repeated points skipped); on failure the segment's index
+  // and a point.
+  TightenStatus polyline(std::span<const Point> path, std::size_t* segment, Point* where) {
+    for (std::size_t i = 1; i < path.size(); ++i) {
+      if (path[i] == path[i - 1]) continue;
+      Point at{};
+      const TightenStatus s = this->segment(path[i - 1], path[i], &at);
+      if (s != TightenStatus::Ok) {
+        *segment = i - 1;
+        *where = at;
+        return s;
+      }
+    }
+    return TightenStatus::Ok;
+  }
+
   // Walks the segment from p to b (p in the current triangle). Ok, or why not (with *where).
   TightenStatus segment(Point p, Point b, Point* where) {
     const std::size_t guard_max = 4 * tris.size() + 16;
@@ -151,6 +168,23 @@ Tightener::Tightener(const geom::FreeSpaceTriangulation& t) : t_(&t) {
     for (std::int32_t v : tris[i].v) fan_[static_cast<std::size_t>(fill[static_cast<std::size_t>(v)]++)] = static_cast<std::int32_t>(i);
 }
 
+std::vector<Portal> Tightener::portals_of(const std::vector<std::int32_t>& triangles) const {
+  const auto& tris = t_->triangles();
+  const auto& V = t_->vertices();
+  std::vector<Portal> portals;
+  for (std::size_t k = 0; k + 1 < triangles.size(); ++k) {
+    const FreeTriangle& a = tris[static_cast<std::size_t>(triangles[k])];
+    int edge = -1;
+    for (int i = 0; i < 3; ++i)
+      if (a.neighbor[static_cast<std::size_t>(i)] == triangles[k + 1]) edge = i;
+    if (edge < 0) throw std::logic_error("tighten: consecutive sleeve triangles are not neighbours");
+    // seen from triangle k: the edge runs counter-clockwise from its right end to its left end
+    portals.push_back(Portal{V[static_cast<std::size_t>(a.v[static_cast<std::size_t>((edge + 1) % 3)])],
+                             V[static_cast<std::size_t>(a.v[static_cast<std::size_t>(edge)])]});
+  }
+  return portals;
+}
+
 TightenStatus Tightener::lift(std::span<const Point> path, Sleeve& sleeve, std::size_t* segment,
                               Point* where) const {
   sleeve = Sleeve{};
@@ -174,32 +208,124 @@ TightenStatus Tightener::lift(std::span<const Point> path, Sleeve& sleeve, std::
     w.cur = t;
   }
   w.stack.push_back(w.cur);
-  std::size_t seg = 0;
-  for (std::size_t i = 1; i < path.size(); ++i) {
-    if (path[i] == path[i - 1]) continue;
-    Point at{};
-    const TightenStatus s = w.segment(path[i - 1], path[i], &at);
-    if (s != TightenStatus::Ok) {
-      *segment = i - 1;
-      *where = at;
-      return s;
-    }
-    ++seg;
-  }
+  if (const TightenStatus s = w.polyline(path, segment, where); s != TightenStatus::Ok) return s;
   sleeve.triangles = std::move(w.stack);
   sleeve.crossings = w.crossings;
-  const auto& tris = t_->triangles();
-  const auto& V = t_->vertices();
-  for (std::size_t k = 0; k + 1 < sleeve.triangles.size(); ++k) {
-    const FreeTriangle& a = tris[static_cast<std::size_t>(sleeve.triangles[k])];
-    int edge = -1;
-    for (int i = 0; i < 3; ++i)
-      if (a.neighbor[static_cast<std::size_t>(i)] == sleeve.triangles[k + 1]) edge = i;
-    if (edge < 0) throw std::logic_error("tighten: sleeve triangles are not neighbours");
-    sleeve.portals.push_back(Portal{V[static_cast<std::size_t>(a.v[static_cast<std::size_t>((edge + 1) % 3)])],
-                                    V[static_cast<std::size_t>(a.v[static_cast<std::size_t>(edge)])]});
-  }
+  sleeve.portals = portals_of(sleeve.triangles);
   return TightenStatus::Ok;
+}
+
+TightenStatus Tightener::band(std::span<const Point> loop, std::vector<std::int32_t>& cycle, std::size_t* segment,
+                              Point* where) const {
+  cycle.clear();
+  std::size_t seg_dummy = 0;
+  Point where_dummy{};
+  if (!segment) segment = &seg_dummy;
+  if (!where) where = &where_dummy;
+  *segment = 0;
+  if (loop.empty() || loop.front() != loop.back()) throw std::invalid_argument("Tightener::band: the loop is not closed");
+  *where = loop[0];
+  const Point p = loop[0];
+  std::size_t first = 1;
+  while (first < loop.size() && loop[first] == p) ++first;
+  if (first == loop.size()) return TightenStatus::Ok;  // a single point
+  const auto start = t_->locate(p);
+  if (!start) return TightenStatus::StartNotFree;
+  Walker w(*this);
+  w.cur = *start;
+  const bool at_vertex = corner_of(w.tri(w.cur), w.V, p) >= 0;
+  if (at_vertex) {
+    const std::int32_t t = w.any_corner(p, loop[first]);
+    if (t < 0) return TightenStatus::LeavesFreeSpace;
+    w.cur = t;
+  }
+  const std::int32_t t0 = w.cur;
+  w.stack.push_back(t0);
+  if (const TightenStatus s = w.polyline(loop, segment, where); s != TightenStatus::Ok) return s;
+  // Close up at p: back into the triangle the loop left p through.
+  if (w.cur != t0) {
+    if (at_vertex && !w.pivot(p, loop[first])) {
+      *segment = loop.size() - 2;
+      return w.any_corner(p, loop[first]) >= 0 ? TightenStatus::ThroughPinch : TightenStatus::LeavesFreeSpace;
+    }
+    if (w.cur != t0) {
+      bool adjacent = false;
+      for (std::int32_t n : w.tri(w.cur).neighbor) adjacent = adjacent || n == t0;
+      if (!adjacent) throw std::logic_error("tighten: a loop does not close up where it started");
+      w.step_to(t0);
+    }
+  }
+  // Cyclic reduction (Lemma 5.1): the stack starts and ends with t0.
+  const std::vector<std::int32_t>& S = w.stack;
+  std::size_t lo = 0, hi = S.size() - 1;
+  while (hi - lo >= 2 && S[lo + 1] == S[hi - 1]) {
+    ++lo;
+    --hi;
+  }
+  if (hi - lo >= 3) cycle.assign(S.begin() + static_cast<std::ptrdiff_t>(lo), S.begin() + static_cast<std::ptrdiff_t>(hi));
+  return TightenStatus::Ok;
+}
+
+namespace {
+
+// The same cyclic sequence, up to rotation.
+bool same_cycle(const std::vector<std::int32_t>& a, const std::vector<std::int32_t>& b) {
+  if (a.size() != b.size()) return false;
+  if (a.empty()) return true;
+  for (std::size_t r = 0; r < b.size(); ++r) {
+    if (b[r] != a[0]) continue;
+    bool eq = true;
+    for (std::size_t i = 0; i < a.size() && eq; ++i) eq = a[i] == b[(r + i) % b.size()];
+    if (eq) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+Tightener::Loop Tightener::tighten_loop(std::span<const Point> loop) const {
+  Loop out;
+  std::vector<std::int32_t> cycle;
+  out.status = band(loop, cycle, &out.segment, &out.where);
+  if (out.status != TightenStatus::Ok) return out;
+  if (cycle.empty()) {
+    out.contractible = true;
+    return out;
+  }
+  out.band = cycle.size();
+  const std::size_t r = cycle.size();
+  Sleeve twice;
+  for (std::size_t k = 0; k <= 2 * r; ++k) twice.triangles.push_back(cycle[k % r]);
+  twice.portals = portals_of(twice.triangles);
+  // Candidates: between two visits of one vertex of the twice-around path, from either end of
+  // the first portal (a class that winds k times round an obstacle visits its vertices 2k times:
+  // every pair is a candidate, the band check keeps those once round the band).
+  std::vector<std::vector<Point>> candidates;
+  for (const Point s : {twice.portals[0].left, twice.portals[0].right}) {
+    const std::vector<Point> path = funnel(s, s, twice);
+    for (std::size_t i = 0; i < path.size(); ++i)
+      for (std::size_t j = i + 2; j < path.size(); ++j)
+        if (path[j] == path[i])  // a class winding k times visits a vertex up to 2k times
+          candidates.emplace_back(path.begin() + static_cast<std::ptrdiff_t>(i),
+                                  path.begin() + static_cast<std::ptrdiff_t>(j) + 1);
+  }
+  std::sort(candidates.begin(), candidates.end(), [](const auto& a, const auto& b) {
+    return euclidean_length(a) < euclidean_length(b);  // only the order of trying: each is certified
+  });
+  for (const std::vector<Point>& c : candidates) {
+    if (c.size() < 4) continue;  // a closed loop around something bends at two or more vertices
+    std::vector<std::int32_t> cc;
+    if (band(c, cc) != TightenStatus::Ok || !same_cycle(cycle, cc)) continue;
+    const Tightened t1 = tighten(c);
+    if (t1.status != TightenStatus::Ok || t1.points != c) continue;
+    std::vector<Point> rot(c.begin() + 1, c.end());
+    rot.push_back(c[1]);
+    const Tightened t2 = tighten(rot);
+    if (t2.status != TightenStatus::Ok || t2.points != rot) continue;
+    out.points = c;
+    return out;
+  }
+  throw std::logic_error("tighten: no certified shortest loop among the band's candidates");
 }
 
 std::vector<Point> Tightener::funnel(Point p, Point q, const Sleeve& sleeve) const {

@@ -93,10 +93,38 @@ class Tightener {
   // Both: the shortest path homotopic to `path` with the same ends.
   Tightened tighten(std::span<const geom::Point> path) const;
 
+  // Loops (H&S section 5.1, orientable bands: free space in the plane). `loop` is a closed
+  // polyline (its last point equals its first). Its lift from the first point back to it is
+  // closed up at that point (turning inside the fan when it is a vertex) and reduced cyclically
+  // (Lemma 5.1): what remains is the band, the cycle of triangles every loop of the free
+  // homotopy class crosses. Empty when the loop can be pulled to a point (contractible).
+  TightenStatus band(std::span<const geom::Point> loop, std::vector<std::int32_t>& cycle,
+                     std::size_t* segment = nullptr, geom::Point* where = nullptr) const;
+
+  // The shortest closed loop freely homotopic to `loop` (the base point may move). Theorem 5.4:
+  // for each end s of the band's first portal, the funnel's shortest path from s around the
+  // band twice back to s; a vertex it visits twice bounds a loop around the band once. A
+  // candidate is accepted only when it is certified exactly: its band equals the input's (up to
+  // rotation), and it is taut at every vertex (tightening it from two different base points gives
+  // it back), which for polygonal obstacles makes it a shortest loop of the class. Candidates
+  // are tried shortest first. `points` is closed (front == back); empty with status Ok when the
+  // loop is contractible (`contractible`).
+  struct Loop {
+    TightenStatus status = TightenStatus::Ok;
+    std::size_t segment = 0;
+    geom::Point where{};
+    bool contractible = false;
+    std::vector<geom::Point> points;
+    std::size_t band = 0;  // triangles in the band
+  };
+  Loop tighten_loop(std::span<const geom::Point> loop) const;
+
   const geom::FreeSpaceTriangulation& triangulation() const { return *t_; }
 
  private:
   struct Walker;
+  // The portals between consecutive triangles (neighbours) of a sleeve.
+  std::vector<Portal> portals_of(const std::vector<std::int32_t>& triangles) const;
   const geom::FreeSpaceTriangulation* t_;
   std::vector<std::int32_t> fan_start_;  // CSR: triangles incident to each vertex
   std::vector<std::int32_t> fan_;

@@ -226,7 +226,7 @@ void add_route(CLI::App& app, int& status) {
         const io::Net& net = layout->nets[i];
         io::Route& route = routes.routes[i];
         std::vector<io::Wire> wires;
-        if (net.sketch && net.pins.size() == 2) {
+        if (net.sketch && (net.pins.size() == 2 || WireTightener::is_loop(net.sketch->points))) {
           const auto res = wt.run(net.sketch->points);
           if (res.taut.status != router::TightenStatus::Ok) {
             errors.push_back(Diagnostic{Severity::Error, "TIGHTEN-0001", layout->file, net.sketch->line, 0,
@@ -234,14 +234,16 @@ void add_route(CLI::App& app, int& status) {
                                                                     res.taut)});
             continue;
           }
-          if (res.no_staircase) {
+          if (res.no_staircase || res.contractible) {
             if (route.status == "routed") --routed;
             route = io::Route{};
             route.net = net.name;
             route.status = "failed";
-            route.reason = no_staircase_reason(octilinear ? "octilinear" : "rectilinear") + " (the net's <sketch>)";
-            print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0004", layout->file, net.sketch->line, 0,
-                                          "net \"" + net.name + "\": " + *route.reason}},
+            route.reason = res.contractible
+                               ? std::string("the loop sketch winds around no blockage: it can be pulled to a point")
+                               : no_staircase_reason(octilinear ? "octilinear" : "rectilinear") + " (the net's <sketch>)";
+            print_diagnostics({Diagnostic{Severity::Warning, res.contractible ? "TIGHTEN-0005" : "TIGHTEN-0004",
+                                          layout->file, net.sketch->line, 0, "net \"" + net.name + "\": " + *route.reason}},
                               args->load.quiet);
             continue;
           }

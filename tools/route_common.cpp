@@ -50,10 +50,32 @@ WireTightener::WireTightener(const geom::NormalizedObstacles& norm, const std::s
   if (orientations_ != "any") sb_ = std::make_unique<router::StaircaseBuilder>(norm.domain, norm.obstacles);
 }
 
+bool WireTightener::is_loop(std::span<const geom::Point> line) {
+  if (line.size() < 3 || line.front() != line.back()) return false;
+  for (geom::Point p : line)
+    if (p != line.front()) return true;
+  return false;
+}
+
 WireTightener::Result WireTightener::run(std::span<const geom::Point> line) const {
   Result r;
-  r.taut = tight_->tighten(line);
-  if (r.taut.status != router::TightenStatus::Ok) return r;
+  if (is_loop(line)) {
+    r.loop = true;
+    const router::Tightener::Loop l = tight_->tighten_loop(line);
+    r.taut.status = l.status;
+    r.taut.segment = l.segment;
+    r.taut.where = l.where;
+    r.taut.sleeve = l.band;
+    if (l.status != router::TightenStatus::Ok) return r;
+    if (l.contractible) {
+      r.contractible = true;
+      return r;
+    }
+    r.taut.points = l.points;
+  } else {
+    r.taut = tight_->tighten(line);
+    if (r.taut.status != router::TightenStatus::Ok) return r;
+  }
   r.points = r.taut.points;
   if (sb_) {
     const auto style = orientations_ == "octilinear" ? router::StaircaseStyle::Octilinear

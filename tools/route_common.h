@@ -43,9 +43,14 @@ class WireTightener {
     router::Tightened taut;           // the lift and the Euclidean shortest path of the class
     std::vector<geom::Point> points;  // in the orientations (a repeated point for a one-point wire)
     bool no_staircase = false;        // c-oriented: no lattice staircase in the class (TIGHTEN-0004)
+    bool loop = false;                // the line was closed: `points` is the shortest closed loop
+    bool contractible = false;        // a loop that winds around nothing (TIGHTEN-0005)
     bool fewest_links = true;         // c-oriented: the fewest links are proven
   };
+  // A closed line (last point = first, around some other point) is a loop: the shortest closed
+  // loop of its free homotopy class (Tightener::tighten_loop).
   Result run(std::span<const geom::Point> line) const;
+  static bool is_loop(std::span<const geom::Point> line);
   // The TIGHTEN-0001 message for a failed lift of `line` (what: "sketch" or "wire").
   static std::string failure_text(const io::Layout& layout, const std::string& net, const std::string& what,
                                   std::span<const geom::Point> line, const router::Tightened& r);

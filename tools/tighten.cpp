@@ -149,7 +149,7 @@ void add_tighten(CLI::App& app, int& status) {
       NetTightening& st = stats[i];
       st.source = in.source;
       std::vector<std::vector<geom::Point>> out_lines;
-      bool ok = true, no_staircase = false;
+      bool ok = true, no_staircase = false, contractible = false;
       for (std::size_t k = 0; k < in.lines.size(); ++k) {
         const auto& line = in.lines[k];
         WireTightener::Result res = wt.run(line);
@@ -160,6 +160,10 @@ void add_tighten(CLI::App& app, int& status) {
                                                                   in.source == "sketch" ? "sketch" : "wire", line, r)});
           ok = false;
           continue;
+        }
+        if (res.contractible) {
+          contractible = true;
+          break;
         }
         st.taut += router::euclidean_length(r.points);
         if (res.no_staircase) {
@@ -177,6 +181,15 @@ void add_tighten(CLI::App& app, int& status) {
         out_lines.push_back(std::move(pts));
       }
       if (!ok) continue;
+      if (contractible) {
+        route.status = "failed";
+        route.reason = "the loop sketch winds around no blockage: it can be pulled to a point";
+        print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0005", layout->file, in.line_numbers[0], 0,
+                                      "net \"" + net.name + "\": " + *route.reason}},
+                          args->load.quiet);
+        routes.routes.push_back(std::move(route));
+        continue;
+      }
       if (no_staircase) {
         route.status = "failed";
         route.reason = no_staircase_reason(orientations);

@@ -54,14 +54,18 @@ void expect_c_oriented(const std::string& c_file, const std::string& taut_file, 
     ASSERT_EQ(t.size(), lines.size());
     for (std::size_t k = 0; k < lines.size(); ++k) {
       const Path& w = c[k];
-      EXPECT_EQ(w.front(), lines[k].front());
-      EXPECT_EQ(w.back(), lines[k].back());
+      const bool loop = lines[k].front() == lines[k].back();
+      EXPECT_EQ(w.front(), loop ? t[k].front() : lines[k].front());  // a loop: from the taut loop's base
+      EXPECT_EQ(w.back(), loop ? t[k].back() : lines[k].back());
       for (std::size_t i = 1; i < w.size(); ++i) {
         const std::int64_t dx = std::int64_t{w[i].x} - w[i - 1].x, dy = std::int64_t{w[i].y} - w[i - 1].y;
         EXPECT_TRUE(dx == 0 || dy == 0 || (oct && std::llabs(dx) == std::llabs(dy))) << "segment " << i;
       }
       EXPECT_TRUE(r.ref->check_path(w).has_value()) << "leaves free space";
-      EXPECT_EQ(h.word(w), h.word(lines[k])) << "another homotopy class";
+      if (loop)
+        EXPECT_TRUE(same_up_to_rotation(cyclic_word(h.word(w)), cyclic_word(h.word(lines[k])))) << "another class";
+      else
+        EXPECT_EQ(h.word(w), h.word(lines[k])) << "another homotopy class";
       if (oct)
         EXPECT_EQ(oct_length(w), oct_length(t[k]));
       else
@@ -94,11 +98,19 @@ void expect_tightened(const std::string& out_file, const Inputs& inputs) {
     for (std::size_t k = 0; k < lines.size(); ++k) {
       const Path& w = route->wires[k].points;
       const Path& in = lines[k];
-      EXPECT_EQ(w.front(), in.front());
-      EXPECT_EQ(w.back(), in.back());
-      EXPECT_TRUE(r.ref->check_path(w).has_value()) << "leaves free space";
-      EXPECT_EQ(h.word(w), h.word(in)) << "another homotopy class";
-      EXPECT_EQ(taut_problem(w, r.norm.domain, r.norm.obstacles), "");
+      if (in.front() == in.back()) {  // a loop: the shortest of its free homotopy class
+        EXPECT_EQ(w.front(), w.back());
+        EXPECT_TRUE(r.ref->check_path(wrapped(w)).has_value()) << "leaves free space";
+        EXPECT_TRUE(same_up_to_rotation(cyclic_word(h.word(w)), cyclic_word(h.word(in)))) << "another class";
+        EXPECT_FALSE(cyclic_word(h.word(in)).empty());
+        EXPECT_EQ(taut_problem(wrapped(w), r.norm.domain, r.norm.obstacles), "");
+      } else {
+        EXPECT_EQ(w.front(), in.front());
+        EXPECT_EQ(w.back(), in.back());
+        EXPECT_TRUE(r.ref->check_path(w).has_value()) << "leaves free space";
+        EXPECT_EQ(h.word(w), h.word(in)) << "another homotopy class";
+        EXPECT_EQ(taut_problem(w, r.norm.domain, r.norm.obstacles), "");
+      }
       EXPECT_LE(router::euclidean_length(w), router::euclidean_length(in) + 1e-6);
       total += router::euclidean_length(w);
       bends += static_cast<long>(w.size()) - 2;
@@ -121,7 +133,7 @@ TEST(Tighten, WindingSketches) {
     ASSERT_TRUE(n.sketch) << n.name;
     inputs.push_back({n.name, {n.sketch->points}});
   }
-  ASSERT_GE(inputs.size(), 5u);
+  ASSERT_GE(inputs.size(), 6u);
   expect_tightened(dir + "/w.xml", inputs);
   // the spiral wraps the core's corners twice: (20000,13000) and (26000,13000) appear twice
   io::ReadResult out = io::read_layout(dir + "/w.xml");
@@ -159,7 +171,12 @@ TEST(Tighten, WindingSketches) {
   EXPECT_NE(svg.find("class=\"sketch\" data-net=\"spiral\""), std::string::npos);
   EXPECT_NE(svg.find("class=\"wire\" data-net=\"spiral\""), std::string::npos);
   // the summary on stderr
-  EXPECT_NE(run.err.find("tightened 5 of 5 nets"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("tightened 6 of 6 nets"), std::string::npos) << run.err;
+  EXPECT_EQ(run.err.find("warning"), std::string::npos) << run.err;  // the pinless loop net is fine
+  // the guard ring is the hexagon's boundary
+  const std::vector<Path> ring = wires_of(dir + "/w.xml", "guard");
+  ASSERT_EQ(ring.size(), 1u);
+  EXPECT_EQ(ring[0].size(), 7u);
 }
 
 TEST(Tighten, RoutedWiresOfTheDemo) {
@@ -287,6 +304,23 @@ TEST(Tighten, NoLatticeStaircaseInTheClassIsAFailedNet) {
   run = run_taut({"tighten", file, "-o", dir + "/t.xml", "--orientations", "any"});
   EXPECT_EQ(run.status, 0) << run.err;
   EXPECT_EQ(wires_of(dir + "/t.xml", "n"), (std::vector<Path>{{{0, 0}, {3, 1}}}));
+}
+
+TEST(Tighten, ContractibleLoopIsAFailedNet) {
+  const std::string dir = temp_dir("tighten_contractible");
+  const std::string file = layout_file("tighten_contractible_in",
+                                       "  <rules orientations=\"any\"/>\n"
+                                       "  <blockage id=\"a\"><rect x0=\"40\" y0=\"40\" x1=\"60\" y1=\"60\"/></blockage>\n"
+                                       "  <net name=\"ring\"><sketch points=\"10,10 30,10 30,30 10,10\"/></net>\n"
+                                       "  <net name=\"guard\"><sketch points=\"10,50 50,10 90,50 50,90 10,50\"/></net>\n");
+  const auto run = run_taut({"tighten", file, "-o", dir + "/t.xml"});
+  EXPECT_EQ(run.status, 1) << run.err;
+  EXPECT_NE(run.err.find("warning: [TIGHTEN-0005] net \"ring\""), std::string::npos) << run.err;
+  EXPECT_EQ(wires_of(dir + "/t.xml", "guard"), (std::vector<Path>{{{40, 40}, {60, 40}, {60, 60}, {40, 60}, {40, 40}}}));
+  // route --tighten gives the guard ring its loop too
+  const auto routed = run_taut({"route", file, "--orientations", "rectilinear", "--tighten", "-o", dir + "/r.xml"});
+  EXPECT_EQ(routed.status, 1) << routed.err;  // "ring" is contractible
+  EXPECT_EQ(wires_of(dir + "/r.xml", "guard"), (std::vector<Path>{{{40, 40}, {60, 40}, {60, 60}, {40, 60}, {40, 40}}}));
 }
 
 TEST(Tighten, CSetInTheRulesIsWrittenAtAnyAngle) {

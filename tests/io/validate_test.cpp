@@ -417,6 +417,22 @@ TEST(ValidateNets, SketchEndpoints) {
   EXPECT_EQ(three[0].line, b.l.nets[4].sketch->line);
 }
 
+// A closed sketch is a loop (a guard ring): no pins needed, none checked; one that stays at one
+// point is not a loop.
+TEST(ValidateNets, LoopSketchesNeedNoPins) {
+  L b;
+  b.net("ring").sketch({{0, 0}, {10, 0}, {10, 10}, {0, 0}});
+  b.net("ring3").pin("a", 50, 50).pin("b", 60, 60).pin("c", 70, 70).sketch({{0, 0}, {10, 0}, {10, 10}, {0, 0}});
+  b.net("dot").sketch({{5, 5}, {5, 5}, {5, 5}});
+  const auto ds = validate_layout(b.l);
+  EXPECT_FALSE(taut::has_error(ds)) << dump(ds);
+  const auto few = with_code(ds, "LAYOUT-0007");
+  ASSERT_EQ(few.size(), 1u) << dump(ds);
+  EXPECT_NE(few[0].message.find("net \"dot\""), std::string::npos);
+  EXPECT_TRUE(with_code(ds, "LAYOUT-0008").empty()) << dump(ds);
+  ASSERT_EQ(with_code(ds, "LAYOUT-0009").size(), 1u) << dump(ds);  // "dot": a sketch, not a loop
+}
+
 TEST(ValidateRoutes, UnknownNetAndTwice) {
   L b;
   b.net("a").pin("p", 0, 0).pin("q", 1, 1);

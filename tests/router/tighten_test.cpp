@@ -442,6 +442,114 @@ TEST(Tighten, COrientedFewestLinksAgainstExhaustiveSearch) {
   EXPECT_GE(compared, sanitized_share(400, 5));
 }
 
+// The loop's vertices as a cyclic sequence starting at its least point (for comparing with a ring).
+Path canonical(const Path& loop) {
+  Path p(loop.begin(), loop.end() - 1);
+  std::rotate(p.begin(), std::min_element(p.begin(), p.end()), p.end());
+  return p;
+}
+
+TEST(TightenLoop, AroundSquares) {
+  const Scene sc = normalized({{0, 0}, {200, 100}}, {rect(40, 40, 60, 60), rect(140, 40, 160, 60)});
+  const Scenery s = setup(sc.domain, sc.obstacles);
+  ASSERT_TRUE(s.t.ok());
+  // once around the left square, counter-clockwise: its boundary
+  auto l = s.tight->tighten_loop(Path{{20, 50}, {50, 10}, {90, 50}, {50, 90}, {20, 50}});
+  ASSERT_EQ(l.status, router::TightenStatus::Ok);
+  ASSERT_FALSE(l.contractible);
+  EXPECT_EQ(canonical(l.points), (Path{{40, 40}, {60, 40}, {60, 60}, {40, 60}}));
+  // clockwise: the same ring the other way round
+  l = s.tight->tighten_loop(Path{{20, 50}, {50, 90}, {90, 50}, {50, 10}, {20, 50}});
+  EXPECT_EQ(canonical(l.points), (Path{{40, 40}, {40, 60}, {60, 60}, {60, 40}}));
+  // twice around: every corner twice
+  l = s.tight->tighten_loop(Path{{20, 50}, {50, 10}, {90, 50}, {50, 90}, {20, 50}, {50, 10}, {90, 50}, {50, 90}, {20, 50}});
+  ASSERT_EQ(l.points.size(), 9u);
+  EXPECT_EQ(canonical(l.points), (Path{{40, 40}, {60, 40}, {60, 60}, {40, 60}, {40, 40}, {60, 40}, {60, 60}, {40, 60}}));
+  // around both squares: their convex hull
+  l = s.tight->tighten_loop(Path{{20, 50}, {100, 5}, {180, 50}, {100, 95}, {20, 50}});
+  EXPECT_EQ(canonical(l.points), (Path{{40, 40}, {160, 40}, {160, 60}, {40, 60}}));
+  // a figure eight: round the left square counter-clockwise, the right one clockwise
+  l = s.tight->tighten_loop(Path{{100, 50}, {50, 10}, {10, 50}, {50, 90}, {100, 50}, {150, 10}, {190, 50}, {150, 90}, {100, 50}});
+  ASSERT_EQ(l.status, router::TightenStatus::Ok);
+  // it wraps all eight corners and crosses itself between the squares
+  EXPECT_EQ(l.points.size(), 9u);
+  EXPECT_EQ(taut_problem(wrapped(l.points), sc.domain, sc.obstacles), "");
+  const oracle::HomotopyWords h(sc.domain, sc.obstacles);
+  EXPECT_TRUE(same_up_to_rotation(cyclic_word(h.word(l.points)),
+                                  cyclic_word(h.word(Path{{100, 50}, {50, 10}, {10, 50}, {50, 90}, {100, 50}, {150, 10},
+                                                          {190, 50}, {150, 90}, {100, 50}}))));
+  // not around anything
+  l = s.tight->tighten_loop(Path{{10, 10}, {90, 10}, {90, 30}, {10, 10}});
+  EXPECT_TRUE(l.contractible);
+  EXPECT_TRUE(l.points.empty());
+  // into a square
+  l = s.tight->tighten_loop(Path{{10, 10}, {50, 50}, {10, 90}, {10, 10}});
+  EXPECT_EQ(l.status, router::TightenStatus::LeavesFreeSpace);
+}
+
+TEST(TightenLoop, RandomLoopsAgainstTheReferences) {
+  long long loops = 0, contractible = 0, winding = 0, bends = 0;
+  const std::uint64_t n = static_cast<std::uint64_t>(sanitized_share(700, 6));
+  for (std::uint64_t seed = 1; seed <= n; ++seed) {
+    WavefrontCase c;
+    try {
+      c = make_wavefront_case(seed);
+    } catch (const std::exception&) {
+      continue;
+    }
+    if (c.obstacles.empty()) continue;
+    const oracle::L1Reference ref(c.domain, c.obstacles);
+    if (!ref.problems().empty()) continue;
+    const Scenery st = setup(c.domain, c.obstacles);
+    ASSERT_TRUE(st.t.ok());
+    std::vector<Point> pts;
+    for (Point p : c.candidates)
+      if (ref.is_free(p)) pts.push_back(p);
+    for (Point v : obstacle_vertices(c.obstacles))
+      if (ref.wedges_at(v).size() == 1) pts.push_back(v);
+    if (pts.size() < 3) continue;
+    const oracle::HomotopyWords h(c.domain, c.obstacles);
+    std::mt19937_64 rng(seed * 31 + 7);
+    Sketcher sk{ref, h, pts, rng};
+    for (int k = 0; k < 10; ++k) {
+      Path loop = sk.walk(2 + static_cast<int>(rng() % 5));
+      if (loop.size() < 2) continue;
+      if (k % 4 != 0) sk.add_loops(loop);  // turns of their own (then one more point)
+      if (!ref.visible(loop.back(), loop.front())) continue;
+      loop.push_back(loop.front());
+      if (loop.size() < 4) continue;
+      const std::string where = "seed " + std::to_string(seed) + " (" + c.family + ") loop " + str(loop);
+      const auto l = st.tight->tighten_loop(loop);
+      if (l.status == router::TightenStatus::ThroughPinch) continue;  // checked by the path test
+      ASSERT_EQ(l.status, router::TightenStatus::Ok) << where << ": " << router::tighten_status_text(l.status);
+      const std::vector<int> w = cyclic_word(h.word(loop));
+      if (l.contractible) {
+        EXPECT_TRUE(w.empty()) << where << ": called contractible, but its cyclic word is not empty";
+        ++contractible;
+        continue;
+      }
+      ASSERT_FALSE(w.empty()) << where << ": a contractible loop was tightened to " << str(l.points);
+      ++loops;
+      winding += w.size() > 1;
+      const Path& out = l.points;
+      ASSERT_GE(out.size(), 4u) << where;
+      EXPECT_EQ(out.front(), out.back()) << where;
+      EXPECT_TRUE(ref.check_path(wrapped(out)).has_value()) << where << ": " << str(out) << " leaves free space";
+      EXPECT_TRUE(same_up_to_rotation(cyclic_word(h.word(out)), w))
+          << where << ": " << str(out) << " is in another free homotopy class";
+      const std::string taut = taut_problem(wrapped(out), c.domain, c.obstacles);
+      EXPECT_TRUE(taut.empty()) << where << ": " << str(out) << " is not taut: " << taut;
+      EXPECT_LE(length(out), length(loop) * (1 + 1e-12)) << where;
+      bends += static_cast<long long>(out.size()) - 1;
+    }
+  }
+  std::printf("%lld loops tightened (%lld with a cyclic word of two or more letters, %lld bends), %lld contractible\n",
+              loops, winding, bends, contractible);
+  EXPECT_GE(loops, sanitized_share(900, 6));
+  EXPECT_GE(winding, sanitized_share(600, 6));
+  EXPECT_GE(contractible, sanitized_share(1500, 6));
+}
+
 // Seeds that once failed (none yet: add each failing seed here).
 TEST(Tighten, RegressionSeeds) {
   Totals tot;

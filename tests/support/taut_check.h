@@ -74,6 +74,31 @@ inline std::pair<std::int64_t, std::int64_t> oct_length(const std::vector<geom::
   return {a, b};
 }
 
+// The cyclically reduced word of a loop, and equality up to rotation: two loops are freely
+// homotopic iff these agree (conjugate elements of a free group).
+inline std::vector<int> cyclic_word(std::vector<int> w) {
+  std::size_t lo = 0, hi = w.size();
+  while (hi - lo >= 2 && w[lo] == -w[hi - 1]) {
+    ++lo;
+    --hi;
+  }
+  return std::vector<int>(w.begin() + static_cast<std::ptrdiff_t>(lo), w.begin() + static_cast<std::ptrdiff_t>(hi));
+}
+inline bool same_up_to_rotation(const std::vector<int>& a, const std::vector<int>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t r = 0; r <= b.size(); ++r) {
+    bool eq = true;
+    for (std::size_t i = 0; i < a.size() && eq; ++i) eq = a[i] == b[(r + i) % b.size()];
+    if (eq) return true;
+  }
+  return a.empty();
+}
+// A closed loop as a path whose every vertex, the base included, is interior.
+inline std::vector<geom::Point> wrapped(const std::vector<geom::Point>& loop) {
+  std::vector<geom::Point> p = loop;
+  if (loop.size() >= 2) p.push_back(loop[1]);
+  return p;
+}
 // Empty when `path` is locally taut, else what is wrong and where.
 inline std::string taut_problem(const std::vector<geom::Point>& path, const geom::Box& domain,
                                 const std::vector<geom::Polygon>& obstacles) {
