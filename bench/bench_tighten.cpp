@@ -12,7 +12,9 @@
 // the same data: `pass` = one pass over every sleeve's triangles reading their three vertex
 // indices (the memory traffic any linear algorithm on the sleeve must pay). Then, for the
 // largest size, the time per sleeve triangle bucketed by sleeve length (growth against sleeve
-// length: flat means linear). Targets (issue #5): funnel >= 10^7 triangles/s; 10^4 wires on a
+// length: flat means linear). `online_s`: the same sketches fed point by point to
+// router::OnlineTightener with the current path read after every point (a path per point, so
+// it is expected to cost more than one tightening at the end). Targets (issue #5): funnel >= 10^7 triangles/s; 10^4 wires on a
 // 10^5-vertex layout under 10 s.
 //
 //   bench_tighten [--sizes N,N,..] [--wires W] [--kind rects|polygons|maze|degenerate] [--reps R]
@@ -68,8 +70,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   std::printf("bench_tighten: %d wires per layout, kind %s, best of %d\n", wires, kind_name.c_str(), reps);
-  std::printf("%9s %9s | %10s %10s | %9s %7s | %9s %11s %7s | %8s\n", "vertices", "triangles", "crossings",
-              "sleeve", "tighten_s", "/pass", "funnel_s", "tri/s", "/pass", "failures");
+  std::printf("%9s %9s | %10s %10s | %9s %7s | %9s %11s %7s | %9s %8s | %8s\n", "vertices", "triangles", "crossings",
+              "sleeve", "tighten_s", "/pass", "funnel_s", "tri/s", "/pass", "online_s", "/tighten", "failures");
   std::map<int, std::pair<double, std::int64_t>> buckets;  // log4(sleeve) -> (seconds, triangles)
   int failures_total = 0;
   for (std::size_t si = 0; si < sizes.size(); ++si) {
@@ -131,6 +133,18 @@ int main(int argc, char** argv) {
             sink = sink + static_cast<std::int64_t>(tight.funnel(sketches[i].front(), sketches[i].back(), sleeves[i]).size());
         },
         reps);
+    // on-line: each sketch fed point by point, its path read after every point
+    const double t_online = seconds_of(
+        [&] {
+          for (const auto& sk : sketches) {
+            taut::router::OnlineTightener on(tight, sk.front());
+            for (std::size_t k = 1; k < sk.size(); ++k) {
+              on.extend(sk[k]);
+              sink = sink + static_cast<std::int64_t>(on.path().size());
+            }
+          }
+        },
+        reps);
     const auto& tris = tri.triangles();
     const double t_pass = seconds_of(
         [&] {
@@ -143,9 +157,10 @@ int main(int argc, char** argv) {
           sink = sink + s;
         },
         reps);
-    std::printf("%9zu %9zu | %10lld %10lld | %9.3f %7.1f | %9.4f %11.3g %7.1f | %8d\n", b.points.size(), tris.size(),
-                static_cast<long long>(crossings), static_cast<long long>(sleeve_tris), t_tighten, t_tighten / t_pass,
-                t_funnel, static_cast<double>(sleeve_tris) / t_funnel, t_funnel / t_pass, failures);
+    std::printf("%9zu %9zu | %10lld %10lld | %9.3f %7.1f | %9.4f %11.3g %7.1f | %9.3f %8.2f | %8d\n", b.points.size(),
+                tris.size(), static_cast<long long>(crossings), static_cast<long long>(sleeve_tris), t_tighten,
+                t_tighten / t_pass, t_funnel, static_cast<double>(sleeve_tris) / t_funnel, t_funnel / t_pass, t_online,
+                t_online / t_tighten, failures);
     std::fflush(stdout);
     failures_total += failures;
     if (si + 1 == sizes.size()) {

@@ -22,16 +22,36 @@ int corner_of(const FreeTriangle& t, const std::vector<Point>& V, Point p) {
   return -1;
 }
 
+
+// Drops repeated points and straight-through vertices.
+std::vector<Point> simplified(const std::vector<Point>& in) {
+  std::vector<Point> out;
+  for (Point v : in) {
+    if (!out.empty() && out.back() == v) continue;
+    while (out.size() >= 2 && orient(out[out.size() - 2], out.back(), v) == 0 &&
+           geom::dot(out[out.size() - 2], out.back(), out.back(), v) > 0)
+      out.pop_back();
+    out.push_back(v);
+  }
+  return out;
+}
 }  // namespace
 
 // The walk through the triangles: the current triangle and the reduced stack of triangles.
 struct Tightener::Walker {
+  // Told of every change of the reduced stack (the on-line funnel follows it).
+  struct Observer {
+    virtual void pushed(std::int32_t from, std::int32_t to) = 0;
+    virtual void popped(std::int32_t top, std::int32_t below) = 0;
+    virtual ~Observer() = default;
+  };
   const Tightener& tg;
   const std::vector<FreeTriangle>& tris;
   const std::vector<Point>& V;
   std::vector<std::int32_t> stack;
   std::size_t crossings = 0;
   std::int32_t cur = -1;
+  Observer* observer = nullptr;
 
   explicit Walker(const Tightener& t)
       : tg(t), tris(t.t_->triangles()), V(t.t_->vertices()) {}
@@ -43,10 +63,13 @@ struct Tightener::Walker {
 
   void step_to(std::int32_t next) {
     ++crossings;
-    if (stack.size() >= 2 && stack[stack.size() - 2] == next)
+    if (stack.size() >= 2 && stack[stack.size() - 2] == next) {
+      if (observer) observer->popped(stack.back(), next);
       stack.pop_back();
-    else
+    } else {
+      if (observer) observer->pushed(stack.back(), next);
       stack.push_back(next);
+    }
     cur = next;
   }
 
@@ -382,16 +405,7 @@ std::vector<Point> Tightener::funnel(Point p, Point q, const Sleeve& sleeve) con
   }
   add_right(q);
   for (std::ptrdiff_t i = a + 1; i <= hi; ++i) out.push_back(at(i));
-  // Drop repeated points and straight-through vertices.
-  std::vector<Point> clean;
-  for (Point v : out) {
-    if (!clean.empty() && clean.back() == v) continue;
-    while (clean.size() >= 2 && orient(clean[clean.size() - 2], clean.back(), v) == 0 &&
-           geom::dot(clean[clean.size() - 2], clean.back(), clean.back(), v) > 0)
-      clean.pop_back();
-    clean.push_back(v);
-  }
-  return clean;
+  return simplified(out);
 }
 
 Tightened Tightener::tighten(std::span<const Point> path) const {
@@ -403,6 +417,227 @@ Tightened Tightener::tighten(std::span<const Point> path) const {
   r.sleeve = s.triangles.size();
   r.points = funnel(path.front(), path.back(), s);
   return r;
+}
+
+// ---- On-line tightening ----------------------------------------------------------------
+
+struct OnlineTightener::Impl : Tightener::Walker::Observer {
+  const Tightener& tg;
+  Tightener::Walker w;
+  Point start, last;
+  TightenStatus st = TightenStatus::Ok;
+  bool moved = false;  // a segment has been walked (the start triangle is then fixed)
+
+  // The funnel: D[lo..a] the left chain from its tip to the apex, D[a..hi] the right chain;
+  // logical indices, stored at index + off in `D`.
+  std::vector<Point> D;
+  std::ptrdiff_t off = 0, lo = 0, hi = 0, a = 0;
+  std::vector<Point> out;  // the path from the start to the apex
+  struct Hist {
+    std::ptrdiff_t lo, hi, a;
+    std::size_t out_size;
+    std::ptrdiff_t slot;
+    Point old;
+  };
+  std::vector<Hist> hist;
+  std::vector<Portal> portals;     // the sleeve's portals (a stack)
+  std::vector<std::uint8_t> ops;   // funnel Adds per portal (0, 1 or 2)
+  std::vector<std::pair<bool, std::pair<std::int32_t, std::int32_t>>> log;  // this extend's steps
+  bool logging = false;
+
+  Impl(const Tightener& t, Point s) : tg(t), w(t), start(s), last(s) {
+    D.assign(64, Point{});
+    off = 32;
+    at(0) = s;
+    out.push_back(s);
+    const auto t0 = tg.t_->locate(s);
+    if (!t0) {
+      st = TightenStatus::StartNotFree;
+      return;
+    }
+    w.cur = *t0;
+    w.stack.push_back(w.cur);
+    w.observer = this;
+  }
+
+  Point& at(std::ptrdiff_t i) { return D[static_cast<std::size_t>(i + off)]; }
+  const Point& at(std::ptrdiff_t i) const { return D[static_cast<std::size_t>(i + off)]; }
+  void room() {  // one free slot beyond each end
+    if (lo - 1 + off >= 0 && hi + 1 + off < static_cast<std::ptrdiff_t>(D.size())) return;
+    const std::size_t n = D.size();
+    std::vector<Point> bigger(2 * n);
+    const std::ptrdiff_t shift = static_cast<std::ptrdiff_t>(n / 2);
+    for (std::size_t i = 0; i < n; ++i) bigger[i + static_cast<std::size_t>(shift)] = D[i];
+    D.swap(bigger);
+    off += shift;
+  }
+  void remember(std::ptrdiff_t slot) { hist.push_back(Hist{lo, hi, a, out.size(), slot, at(slot)}); }
+  void undo_one() {
+    const Hist& h = hist.back();
+    at(h.slot) = h.old;
+    lo = h.lo;
+    hi = h.hi;
+    a = h.a;
+    out.resize(h.out_size);
+    hist.pop_back();
+  }
+
+  // Is the edge between D[j-1] and D[j] made redundant by a new right vertex w (walked from the
+  // right tip towards the left tip)? The predicate of the off-line funnel's pops.
+  bool bad_right(std::ptrdiff_t j, Point v) const {
+    if (j > a) return orient(at(j - 1), at(j), v) >= 0;
+    const i64 o = orient(at(j), at(j - 1), v);
+    return o > 0 || (o == 0 && geom::dot(at(j), at(j - 1), at(j - 1), v) > 0);
+  }
+  // The same for a new left vertex and the edge between D[j] and D[j+1].
+  bool bad_left(std::ptrdiff_t j, Point v) const {
+    if (j < a) return orient(at(j + 1), at(j), v) <= 0;
+    const i64 o = orient(at(j), at(j + 1), v);
+    return o < 0 || (o == 0 && geom::dot(at(j), at(j + 1), at(j + 1), v) > 0);
+  }
+  void add_right(Point v) {
+    room();
+    // Split: the last index t (from the right tip down) whose edge is not made redundant; the
+    // redundant edges form a run at the right end.
+    std::ptrdiff_t l = lo, r = hi;  // answer in [lo, hi]: edges (t, hi] are bad
+    while (l < r) {
+      const std::ptrdiff_t m = l + (r - l + 1) / 2;
+      if (bad_right(m, v)) r = m - 1;
+      else l = m;
+    }
+    const std::ptrdiff_t t = l;
+    remember(t + 1);
+    if (t < a) {
+      for (std::ptrdiff_t j = a - 1; j >= t; --j) out.push_back(at(j));
+      a = t;
+    }
+    hi = t;
+    at(++hi) = v;
+  }
+  void add_left(Point v) {
+    room();
+    std::ptrdiff_t l = lo, r = hi;  // answer in [lo, hi]: edges [lo, t) are bad
+    while (l < r) {
+      const std::ptrdiff_t m = l + (r - l) / 2;
+      if (bad_left(m, v)) l = m + 1;
+      else r = m;
+    }
+    const std::ptrdiff_t t = l;
+    remember(t - 1);
+    if (t > a) {
+      for (std::ptrdiff_t j = a + 1; j <= t; ++j) out.push_back(at(j));
+      a = t;
+    }
+    lo = t;
+    at(--lo) = v;
+  }
+
+  Portal portal(std::int32_t from, std::int32_t to) const {
+    const FreeTriangle& t = w.tri(from);
+    for (int i = 0; i < 3; ++i)
+      if (t.neighbor[static_cast<std::size_t>(i)] == to)
+        return Portal{w.vert(from, i + 1), w.vert(from, i)};
+    throw std::logic_error("tighten: on-line step between triangles that are not neighbours");
+  }
+  void add_portal(const Portal& pt) {
+    std::uint8_t n = 0;
+    if (lo == a && a == hi) {  // the funnel is empty: a portal through the start adds nothing
+      if (!geom::on_segment(start, pt.left, pt.right)) {
+        add_left(pt.left);
+        add_right(pt.right);
+        n = 2;
+      }
+    } else if (pt.left == portals.back().left) {
+      add_right(pt.right);
+      n = 1;
+    } else if (pt.right == portals.back().right) {
+      add_left(pt.left);
+      n = 1;
+    } else {
+      throw std::logic_error("tighten: consecutive portals share no end");
+    }
+    portals.push_back(pt);
+    ops.push_back(n);
+  }
+  void remove_portal() {
+    for (std::uint8_t k = 0; k < ops.back(); ++k) undo_one();
+    ops.pop_back();
+    portals.pop_back();
+  }
+  void pushed(std::int32_t from, std::int32_t to) override {
+    add_portal(portal(from, to));
+    if (logging) log.push_back({true, {from, to}});
+  }
+  void popped(std::int32_t top, std::int32_t below) override {
+    remove_portal();
+    if (logging) log.push_back({false, {below, top}});
+  }
+
+  TightenStatus extend(Point q, Point* where) {
+    if (st != TightenStatus::Ok) return st;
+    if (q == last) return TightenStatus::Ok;
+    if (!moved && corner_of(w.tri(w.cur), w.V, start) >= 0) {
+      // at a vertex, start in the fan (of possibly several at a pinch) that holds the first segment
+      const std::int32_t t = w.any_corner(start, q);
+      if (t < 0) {
+        if (where) *where = start;
+        return TightenStatus::LeavesFreeSpace;
+      }
+      w.cur = t;
+      w.stack.assign(1, t);
+    }
+    const std::int32_t cur0 = w.cur;
+    log.clear();
+    logging = true;
+    Point at_fail{};
+    const TightenStatus s = w.segment(last, q, &at_fail);
+    logging = false;
+    if (s != TightenStatus::Ok) {
+      // undo this segment's steps, last first (the observer is detached meanwhile)
+      w.observer = nullptr;
+      for (std::size_t k = log.size(); k-- > 0;) {
+        const auto& [push, tri] = log[k];
+        if (push) {
+          remove_portal();
+          w.stack.pop_back();
+        } else {
+          w.stack.push_back(tri.second);
+          add_portal(portal(tri.first, tri.second));
+        }
+      }
+      w.observer = this;
+      w.cur = cur0;
+      if (where) *where = at_fail;
+      return s;
+    }
+    moved = true;
+    last = q;
+    return TightenStatus::Ok;
+  }
+};
+
+OnlineTightener::OnlineTightener(const Tightener& t, Point start) : impl_(std::make_unique<Impl>(t, start)) {}
+OnlineTightener::~OnlineTightener() = default;
+TightenStatus OnlineTightener::status() const { return impl_->st; }
+TightenStatus OnlineTightener::extend(Point q, Point* where) { return impl_->extend(q, where); }
+Point OnlineTightener::end() const { return impl_->last; }
+std::size_t OnlineTightener::sleeve() const { return impl_->w.stack.size(); }
+
+std::vector<Point> OnlineTightener::path() const {
+  Impl& m = *impl_;  // path() changes the funnel and restores it exactly
+  const Point q = m.last;
+  // portals through the current point add nothing (as in Tightener::funnel): taken off, then put back
+  std::vector<Portal> trailing;
+  while (!m.portals.empty() && m.ops.back() != 0 && geom::on_segment(q, m.portals.back().left, m.portals.back().right)) {
+    trailing.push_back(m.portals.back());
+    m.remove_portal();
+  }
+  m.add_right(q);
+  std::vector<Point> out = m.out;
+  for (std::ptrdiff_t i = m.a + 1; i <= m.hi; ++i) out.push_back(m.at(i));
+  m.undo_one();
+  for (std::size_t k = trailing.size(); k-- > 0;) m.add_portal(trailing[k]);
+  return simplified(out);
 }
 
 namespace {
@@ -478,18 +713,6 @@ struct Stairs {
   }
 };
 
-// Drops repeated points and straight-through vertices.
-std::vector<Point> simplified(const std::vector<Point>& in) {
-  std::vector<Point> out;
-  for (Point v : in) {
-    if (!out.empty() && out.back() == v) continue;
-    while (out.size() >= 2 && orient(out[out.size() - 2], out.back(), v) == 0 &&
-           geom::dot(out[out.size() - 2], out.back(), out.back(), v) > 0)
-      out.pop_back();
-    out.push_back(v);
-  }
-  return out;
-}
 
 }  // namespace
 

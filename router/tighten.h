@@ -39,6 +39,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -76,6 +77,8 @@ struct Tightened {
   std::size_t sleeve = 0;           // triangles in the sleeve
   std::size_t crossings = 0;        // edges crossed by the input, before cancelling
 };
+
+class OnlineTightener;
 
 class Tightener {
  public:
@@ -122,12 +125,48 @@ class Tightener {
   const geom::FreeSpaceTriangulation& triangulation() const { return *t_; }
 
  private:
+  friend class OnlineTightener;
   struct Walker;
   // The portals between consecutive triangles (neighbours) of a sleeve.
   std::vector<Portal> portals_of(const std::vector<std::int32_t>& triangles) const;
   const geom::FreeSpaceTriangulation* t_;
   std::vector<std::int32_t> fan_start_;  // CSR: triangles incident to each vertex
   std::vector<std::int32_t> fan_;
+};
+
+// On-line tightening (H&S section 3.2): a sketch given point by point, whose shortest homotopic
+// path is kept up to date. The walk through the triangles is the lift's (above); every triangle
+// it pushes on the sleeve brings a portal and one funnel Add, every triangle it pops (the sketch
+// going back the way it came) one Undo. The funnel is the array deque of the off-line algorithm
+// with a history: an Add finds where the new vertex's tangent meets the funnel by binary search
+// over the chains (the Split: the edges that the new vertex makes redundant form a run at the
+// end of the chain walked from its tip past the apex), moves the end of that side (and the
+// apex, copying the vertices it passes to the path), and writes the vertex into one array slot;
+// the history keeps the old ends, apex, path length and the overwritten slot, so Undo restores
+// them in O(1). Per triangle crossed: O(log n) plus the vertices the apex passes (each copied
+// once per Add; forward-only sketches copy each output vertex once). path() adds the current
+// point to the funnel, reads the path and undoes that, so it costs the path's length plus a
+// binary search. It returns exactly what Tightener::tighten() returns for the points so far.
+class OnlineTightener {
+ public:
+  // Starts a sketch at `start`; status() says whether that is a free point.
+  OnlineTightener(const Tightener& t, geom::Point start);
+  ~OnlineTightener();
+  OnlineTightener(const OnlineTightener&) = delete;
+  OnlineTightener& operator=(const OnlineTightener&) = delete;
+
+  TightenStatus status() const;
+  // The sketch goes on straight to q. On failure (the segment leaves free space or passes a
+  // pinch; *where a point of it) nothing changes.
+  TightenStatus extend(geom::Point q, geom::Point* where = nullptr);
+  // The shortest path homotopic to the sketch so far (start to the current point).
+  std::vector<geom::Point> path() const;
+  geom::Point end() const;
+  std::size_t sleeve() const;  // triangles in the current sleeve
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
 };
 
 // c-oriented output (H&S section 6) for the rectilinear and octilinear direction sets, with

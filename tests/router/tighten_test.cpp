@@ -550,6 +550,106 @@ TEST(TightenLoop, RandomLoopsAgainstTheReferences) {
   EXPECT_GE(contractible, sanitized_share(1500, 6));
 }
 
+// router::OnlineTightener (H&S 3.2): a sketch given point by point, going back over itself now
+// and then (to an earlier point, or straight back the way it came), must give after every point
+// exactly the path Tightener::tighten() gives for the points so far; a step that leaves free
+// space must change nothing.
+TEST(TightenOnline, EveryPrefixEqualsTheOfflinePath) {
+  long long steps = 0, backs = 0, refused = 0, longest = 0;
+  const std::uint64_t n = static_cast<std::uint64_t>(sanitized_share(500, 6));
+  for (std::uint64_t i = 1; i <= n + n / 5; ++i) {
+    const std::uint64_t seed = i <= n ? i : kLargeSeedBase + (i - n);
+    WavefrontCase c;
+    try {
+      c = make_wavefront_case(seed);
+    } catch (const std::exception&) {
+      continue;
+    }
+    const oracle::L1Reference ref(c.domain, c.obstacles);
+    if (!ref.problems().empty()) continue;
+    const Scenery st = setup(c.domain, c.obstacles);
+    ASSERT_TRUE(st.t.ok());
+    std::vector<Point> pts;
+    for (Point p : c.candidates)
+      if (ref.is_free(p)) pts.push_back(p);
+    for (Point v : obstacle_vertices(c.obstacles))
+      if (ref.wedges_at(v).size() == 1) pts.push_back(v);
+    if (pts.size() < 3) continue;
+    std::mt19937_64 rng(seed * 613 + 5);
+    for (int sk = 0; sk < 3; ++sk) {
+      Path sketch{pts[rng() % pts.size()]};
+      router::OnlineTightener on(*st.tight, sketch[0]);
+      ASSERT_EQ(on.status(), router::TightenStatus::Ok);
+      for (int k = 0; k < 40; ++k) {
+        Point q;
+        const int kind = static_cast<int>(rng() % 6);
+        if (kind == 0 && sketch.size() >= 2) {
+          q = sketch[sketch.size() - 2];  // straight back
+          ++backs;
+        } else if (kind == 1 && sketch.size() >= 3) {
+          q = sketch[rng() % sketch.size()];  // to an earlier point
+          ++backs;
+        } else if (kind == 5) {
+          q = pts[rng() % pts.size()];  // anywhere (it may leave free space: refused)
+        } else {
+          q = pts[rng() % pts.size()];  // somewhere it can see, so the sleeve grows
+          for (int tries = 0; tries < 30 && !ref.visible(sketch.back(), q); ++tries) q = pts[rng() % pts.size()];
+        }
+        const std::string where = "seed " + std::to_string(seed) + " (" + c.family + ") sketch " + str(sketch) +
+                                  " then " + str(Path{q});
+        const router::TightenStatus s = on.extend(q);
+        if (s != router::TightenStatus::Ok) {
+          ++refused;
+          Path longer = sketch;
+          longer.push_back(q);
+          EXPECT_NE(st.tight->tighten(longer).status, router::TightenStatus::Ok) << where << ": refused on-line only";
+        } else {
+          sketch.push_back(q);
+        }
+        const router::Tightened off = st.tight->tighten(sketch);
+        ASSERT_EQ(off.status, router::TightenStatus::Ok) << where;
+        ASSERT_EQ(on.path(), off.points) << where;
+        ASSERT_EQ(on.sleeve(), off.sleeve) << where;
+        ASSERT_EQ(on.end(), sketch.back()) << where;
+        ++steps;
+        longest = std::max<long long>(longest, static_cast<long long>(off.sleeve));
+      }
+    }
+  }
+  std::printf("%lld on-line steps (%lld back over the sketch, %lld refused), longest sleeve %lld\n", steps, backs,
+              refused, longest);
+  EXPECT_GE(steps, sanitized_share(20000, 6));
+  EXPECT_GE(backs, sanitized_share(4000, 6));
+}
+
+// Thirty turns round one square and back again, point by point: long sleeves, the apex walking
+// round the square, and every Undo back to the start.
+TEST(TightenOnline, WindingThirtyTimesAndBack) {
+  const Scene sc = normalized({{0, 0}, {100, 100}}, {rect(40, 40, 60, 60), rect(70, 10, 80, 20)});
+  const Scenery st = setup(sc.domain, sc.obstacles);
+  ASSERT_TRUE(st.t.ok());
+  const Path round{{50, 10}, {90, 50}, {50, 90}, {10, 50}};
+  Path sketch{{20, 30}};
+  router::OnlineTightener on(*st.tight, sketch[0]);
+  std::size_t deepest = 0;
+  auto step = [&](Point q) {
+    ASSERT_EQ(on.extend(q), router::TightenStatus::Ok);
+    sketch.push_back(q);
+    const router::Tightened off = st.tight->tighten(sketch);
+    ASSERT_EQ(on.path(), off.points) << str(sketch);
+    ASSERT_EQ(on.sleeve(), off.sleeve);
+    deepest = std::max(deepest, off.sleeve);
+  };
+  for (int t = 0; t < 30; ++t)
+    for (Point q : round) step(q);
+  EXPECT_EQ(on.path().size(), 2u + 4u * 30u - 1u);  // every corner once per turn (bar one)
+  const Path forward = sketch;
+  for (std::size_t k = forward.size() - 1; k-- > 0;) step(forward[k]);  // all the way back
+  EXPECT_EQ(on.path(), (Path{{20, 30}}));
+  EXPECT_EQ(on.sleeve(), 1u);
+  EXPECT_GT(deepest, 200u);
+}
+
 // Seeds that once failed (none yet: add each failing seed here).
 TEST(Tighten, RegressionSeeds) {
   Totals tot;
