@@ -366,4 +366,44 @@ NormalizedObstacles normalize_obstacles(std::span<const Polygon> inputs,
   return result;
 }
 
+std::vector<Polygon> square_grown(std::span<const Polygon> polygons, Coord r) {
+  if (r < 0) throw std::invalid_argument("square_grown: negative r");
+  std::vector<Polygon> out;
+  auto corner = [r](Point p, int sx, int sy) {
+    const std::int64_t x = std::int64_t{p.x} + sx * std::int64_t{r}, y = std::int64_t{p.y} + sy * std::int64_t{r};
+    if (!in_range(x) || !in_range(y)) throw std::domain_error("a blockage grown by its clearance passes the coordinate limit");
+    return Point{static_cast<Coord>(x), static_cast<Coord>(y)};
+  };
+  for (const Polygon& poly : polygons) {
+    out.push_back(poly);
+    if (r == 0) continue;
+    std::vector<const Ring*> rings{&poly.outer};
+    for (const Ring& h : poly.holes) rings.push_back(&h);
+    for (const Ring* ring : rings)
+      for (std::size_t i = 0; i < ring->size(); ++i) {
+        const Point a = (*ring)[i], b = (*ring)[(i + 1) % ring->size()];
+        std::vector<Point> pts;
+        for (Point p : {a, b})
+          for (int sx : {-1, 1})
+            for (int sy : {-1, 1}) pts.push_back(corner(p, sx, sy));
+        // convex hull (monotone chain, exact), counter-clockwise, collinear points dropped
+        std::sort(pts.begin(), pts.end());
+        pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+        std::vector<Point> hull(2 * pts.size());
+        std::size_t k = 0;
+        for (std::size_t j = 0; j < pts.size(); ++j) {
+          while (k >= 2 && orient(hull[k - 2], hull[k - 1], pts[j]) <= 0) --k;
+          hull[k++] = pts[j];
+        }
+        for (std::size_t j = pts.size() - 1, t = k + 1; j-- > 0;) {
+          while (k >= t && orient(hull[k - 2], hull[k - 1], pts[j]) <= 0) --k;
+          hull[k++] = pts[j];
+        }
+        hull.resize(k - 1);
+        out.push_back(Polygon{hull, {}});
+      }
+  }
+  return out;
+}
+
 }  // namespace taut::geom

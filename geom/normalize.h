@@ -86,4 +86,13 @@ inline constexpr Coord kDomainMargin = 64;
 NormalizedObstacles normalize_obstacles(std::span<const Polygon> inputs,
                                         std::optional<Box> boundary);
 
+// Pieces whose union is the Minkowski sum of the polygons with the square [-r, r]^2 (r >= 0):
+// each polygon itself (holes kept) and, for every edge ab of every ring, the convex hull of the
+// squares at a and b (a hexagon, or a rectangle for an axis-parallel edge). A point outside the
+// union is at L-infinity distance > r, so at Euclidean distance > r, from every polygon; a point
+// on its boundary at distance >= r. Pass them to normalize_obstacles() for the union (sloped
+// crossings are rounded outward there, never inward). Integer vertices; std::domain_error when a
+// grown coordinate would pass kMaxCoord.
+std::vector<Polygon> square_grown(std::span<const Polygon> polygons, Coord r);
+
 }  // namespace taut::geom

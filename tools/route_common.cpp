@@ -94,13 +94,22 @@ WireTightener::Result WireTightener::run(std::span<const geom::Point> line) cons
 }
 
 std::string WireTightener::failure_text(const io::Layout& layout, const std::string& net, const std::string& what,
-                                        std::span<const geom::Point> line, const router::Tightened& r) {
+                                        std::span<const geom::Point> line, const router::Tightened& r,
+                                        std::int64_t clearance) {
   std::string text = "net \"" + net + "\": the " + what;
-  if (r.status == router::TightenStatus::StartNotFree)
-    return text + " starts at " + point_text(line.front()) + ", which " + why_not_free(layout, line.front());
-  return text + "'s segment " + std::to_string(r.segment + 1) + " (" + point_text(line[r.segment]) + " to " +
-         point_text(line[r.segment + 1]) + ") " + router::tighten_status_text(r.status) + " at or after " +
-         point_text(r.where);
+  const std::string within = "within the clearance of a blockage (" + std::to_string(clearance) +
+                             " DBU: half the wire width plus the spacing)";
+  if (r.status == router::TightenStatus::StartNotFree) {
+    const std::string why = why_not_free(layout, line.front());
+    const bool specific = why.rfind("lies inside", 0) == 0 || why.rfind("lies outside", 0) == 0;
+    return text + " starts at " + point_text(line.front()) + ", which " +
+           (clearance > 0 && !specific ? "lies " + within : why);
+  }
+  text += "'s segment " + std::to_string(r.segment + 1) + " (" + point_text(line[r.segment]) + " to " +
+          point_text(line[r.segment + 1]) + ") " + router::tighten_status_text(r.status) + " at or after " +
+          point_text(r.where);
+  if (clearance > 0) text += ", or comes " + within;
+  return text;
 }
 
 std::string no_staircase_reason(const std::string& orientations) {

@@ -52,8 +52,10 @@ class WireTightener {
   Result run(std::span<const geom::Point> line) const;
   static bool is_loop(std::span<const geom::Point> line);
   // The TIGHTEN-0001 message for a failed lift of `line` (what: "sketch" or "wire").
+  // clearance: the growth of the blockages (0: none), named in the message.
   static std::string failure_text(const io::Layout& layout, const std::string& net, const std::string& what,
-                                  std::span<const geom::Point> line, const router::Tightened& r);
+                                  std::span<const geom::Point> line, const router::Tightened& r,
+                                  std::int64_t clearance = 0);
   const geom::FreeSpaceTriangulation& triangulation() const { return tri_; }
 
  private:

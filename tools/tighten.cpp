@@ -48,6 +48,7 @@ void add_tighten(CLI::App& app, int& status) {
   struct Args {
     std::string file, out, svg, stats, orientations;
     LoadOptions load;
+    bool clearance = false;
   };
   auto args = std::make_shared<Args>();
   CLI::App* sub = app.add_subcommand(
@@ -61,6 +62,9 @@ void add_tighten(CLI::App& app, int& status) {
   sub->add_option("--orientations", args->orientations,
                   "directions of the output: rectilinear, octilinear (the shortest wire of the class in "
                   "those directions, fewest links) or any (the Euclidean shortest); default: <rules>");
+  sub->add_flag("--clearance", args->clearance,
+                "keep half the wire width plus the spacing of <rules> from every blockage (tighten against "
+                "blockages grown by that much)");
   add_input_options(sub, args->file, args->load, "do not print warnings or the summary");
   sub->callback([args, &status] {
     using Clock = std::chrono::steady_clock;
@@ -121,7 +125,36 @@ void add_tighten(CLI::App& app, int& status) {
       for (const auto& l : in.lines) extra.insert(extra.end(), l.begin(), l.end());
     }
 
-    const geom::NormalizedObstacles norm = routing_obstacles(*layout, extra);
+    // Clearance: half the wire width (rounded up) plus the spacing, kept by growing every
+    // blockage by a square of that half-side (so at least that far in Euclidean distance).
+    const std::int64_t width = layout->rules ? layout->rules->wire_width : 0;
+    const std::int64_t spacing = layout->rules ? layout->rules->spacing : 0;
+    const std::int64_t grow = args->clearance ? (width + 1) / 2 + spacing : 0;
+    if (!args->clearance && width + spacing > 0)
+      print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0006", layout->file, layout->rules->line, 0,
+                                    "<rules> wire-width and spacing are not kept: tightened wires may touch "
+                                    "blockages (--clearance keeps them)"}},
+                        args->load.quiet);
+    geom::NormalizedObstacles norm;
+    if (grow > 0) {
+      geom::Box domain = io::routing_domain(*layout, extra);
+      if (!layout->boundary) {  // room to go round a grown blockage in the unbounded plane
+        auto clamp = [](std::int64_t v) { return static_cast<geom::Coord>(std::clamp<std::int64_t>(v, -geom::kMaxCoord, geom::kMaxCoord)); };
+        domain = {{clamp(std::int64_t{domain.lo.x} - grow), clamp(std::int64_t{domain.lo.y} - grow)},
+                  {clamp(std::int64_t{domain.hi.x} + grow), clamp(std::int64_t{domain.hi.y} + grow)}};
+      }
+      try {
+        norm = geom::normalize_obstacles(
+            geom::square_grown(io::blockage_polygons(*layout), static_cast<geom::Coord>(std::min<std::int64_t>(grow, geom::kMaxCoord))),
+            domain);
+      } catch (const std::domain_error& e) {
+        print_usage_error("CLI-0002", std::string("tighten --clearance: ") + e.what());
+        status = kResource;
+        return;
+      }
+    } else {
+      norm = routing_obstacles(*layout, extra);
+    }
     const WireTightener wt(norm, orientations);
     const auto t1 = Clock::now();
 
@@ -157,7 +190,7 @@ void add_tighten(CLI::App& app, int& status) {
         if (r.status != router::TightenStatus::Ok) {
           errors.push_back(Diagnostic{Severity::Error, "TIGHTEN-0001", layout->file, in.line_numbers[k], 0,
                                       WireTightener::failure_text(*layout, net.name,
-                                                                  in.source == "sketch" ? "sketch" : "wire", line, r)});
+                                                                  in.source == "sketch" ? "sketch" : "wire", line, r, grow)});
           ok = false;
           continue;
         }
