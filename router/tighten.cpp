@@ -227,7 +227,10 @@ TightenStatus Tightener::lift(std::span<const Point> path, Sleeve& sleeve, std::
   while (first < path.size() && path[first] == path[0]) ++first;
   if (first < path.size() && corner_of(w.tri(w.cur), w.V, path[0]) >= 0) {
     const std::int32_t t = w.any_corner(path[0], path[first]);
-    if (t < 0) return TightenStatus::LeavesFreeSpace;
+    if (t < 0) {
+      *segment = first - 1;
+      return TightenStatus::LeavesFreeSpace;
+    }
     w.cur = t;
   }
   w.stack.push_back(w.cur);
@@ -323,20 +326,42 @@ Tightener::Loop Tightener::tighten_loop(std::span<const Point> loop) const {
   // Candidates: between two visits of one vertex of the twice-around path, from either end of
   // the first portal (a class that winds k times round an obstacle visits its vertices 2k times:
   // every pair is a candidate, the band check keeps those once round the band).
-  std::vector<std::vector<Point>> candidates;
+  struct Candidate {
+    int path;           // which of the two paths
+    std::size_t i, j;   // path[i] == path[j]
+    double length;      // only the order of trying: each is certified exactly
+  };
+  std::vector<std::vector<Point>> paths;
+  std::vector<Candidate> candidates;
   for (const Point s : {twice.portals[0].left, twice.portals[0].right}) {
-    const std::vector<Point> path = funnel(s, s, twice);
-    for (std::size_t i = 0; i < path.size(); ++i)
-      for (std::size_t j = i + 2; j < path.size(); ++j)
-        if (path[j] == path[i])  // a class winding k times visits a vertex up to 2k times
-          candidates.emplace_back(path.begin() + static_cast<std::ptrdiff_t>(i),
-                                  path.begin() + static_cast<std::ptrdiff_t>(j) + 1);
+    paths.push_back(funnel(s, s, twice));
+    const std::vector<Point>& path = paths.back();
+    std::vector<double> prefix(path.size(), 0.0);
+    for (std::size_t k = 1; k < path.size(); ++k)
+      prefix[k] = prefix[k - 1] + euclidean_length(std::span<const Point>(&path[k - 1], 2));
+    // visits of each vertex (a class winding k times round a blockage visits its vertices up
+    // to 2k times): every pair is a candidate, the band check keeps those once round the band
+    std::vector<std::pair<Point, std::size_t>> visits;
+    for (std::size_t k = 0; k < path.size(); ++k) visits.push_back({path[k], k});
+    std::sort(visits.begin(), visits.end());
+    for (std::size_t x = 0; x < visits.size();) {
+      std::size_t y = x;
+      while (y < visits.size() && visits[y].first == visits[x].first) ++y;
+      for (std::size_t u = x; u < y; ++u)
+        for (std::size_t v = u + 1; v < y; ++v) {
+          const std::size_t i = visits[u].second, j = visits[v].second;
+          if (j >= i + 3)  // a closed loop around something bends at two or more vertices
+            candidates.push_back(Candidate{static_cast<int>(paths.size() - 1), i, j, prefix[j] - prefix[i]});
+        }
+      x = y;
+    }
   }
-  std::sort(candidates.begin(), candidates.end(), [](const auto& a, const auto& b) {
-    return euclidean_length(a) < euclidean_length(b);  // only the order of trying: each is certified
-  });
-  for (const std::vector<Point>& c : candidates) {
-    if (c.size() < 4) continue;  // a closed loop around something bends at two or more vertices
+  std::sort(candidates.begin(), candidates.end(),
+            [](const Candidate& a, const Candidate& b) { return a.length < b.length; });
+  for (const Candidate& cand : candidates) {
+    const std::vector<Point>& path = paths[static_cast<std::size_t>(cand.path)];
+    const std::vector<Point> c(path.begin() + static_cast<std::ptrdiff_t>(cand.i),
+                               path.begin() + static_cast<std::ptrdiff_t>(cand.j) + 1);
     std::vector<std::int32_t> cc;
     if (band(c, cc) != TightenStatus::Ok || !same_cycle(cycle, cc)) continue;
     const Tightened t1 = tighten(c);
@@ -590,7 +615,14 @@ struct OnlineTightener::Impl : Tightener::Walker::Observer {
     log.clear();
     logging = true;
     Point at_fail{};
-    const TightenStatus s = w.segment(last, q, &at_fail);
+    TightenStatus s = TightenStatus::Ok;
+    bool threw = false;
+    try {
+      s = w.segment(last, q, &at_fail);
+    } catch (...) {  // a broken triangulation: undo, then let it through
+      threw = true;
+      s = TightenStatus::LeavesFreeSpace;
+    }
     logging = false;
     if (s != TightenStatus::Ok) {
       // undo this segment's steps, last first (the observer is detached meanwhile)
@@ -607,6 +639,7 @@ struct OnlineTightener::Impl : Tightener::Walker::Observer {
       }
       w.observer = this;
       w.cur = cur0;
+      if (threw) throw std::logic_error("tighten: the on-line walk failed (the step was undone)");
       if (where) *where = at_fail;
       return s;
     }

@@ -199,17 +199,21 @@ void add_route(CLI::App& app, int& status) {
     routes.metric = "l1";
     routes.orientations = octilinear ? "octilinear" : "rectilinear";
     std::size_t routed = 0;
+    // With --tighten a two-pin net's sketch, or a loop sketch on any net, is what gets tightened.
+    auto follows_sketch = [&](const io::Net& net) {
+      return args->tighten && net.sketch && (net.pins.size() == 2 || WireTightener::is_loop(net.sketch->points));
+    };
     for (const io::Net& net : layout->nets) {
       NetResult r = l1 ? route_net(*layout, net, *l1) : route_net(*layout, net, *oct);
       if (r.route.status == "routed") {
         ++routed;
-        if (net.sketch && !args->tighten)  // said, not dropped silently
+        if (net.sketch && !follows_sketch(net))  // said, not dropped silently
           print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0007", layout->file, net.sketch->line, 0,
                                         "net \"" + net.name + "\": the wire is the shortest of any "
                                         "homotopy class and does not follow the <sketch> (--tighten or "
                                         "taut tighten pull the sketch taut in its class)"}},
                             args->load.quiet);
-      } else {
+      } else if (!(follows_sketch(net) && WireTightener::is_loop(net.sketch->points))) {  // a loop net is tightened below
         print_diagnostics({Diagnostic{Severity::Warning, r.code, layout->file, net.line, 0,
                                       "net \"" + net.name + "\" not routed: " + *r.route.reason}},
                           args->load.quiet);
@@ -226,7 +230,7 @@ void add_route(CLI::App& app, int& status) {
         const io::Net& net = layout->nets[i];
         io::Route& route = routes.routes[i];
         std::vector<io::Wire> wires;
-        if (net.sketch && (net.pins.size() == 2 || WireTightener::is_loop(net.sketch->points))) {
+        if (follows_sketch(net)) {
           const auto res = wt.run(net.sketch->points);
           if (res.taut.status != router::TightenStatus::Ok) {
             errors.push_back(Diagnostic{Severity::Error, "TIGHTEN-0001", layout->file, net.sketch->line, 0,
@@ -252,8 +256,10 @@ void add_route(CLI::App& app, int& status) {
         } else if (route.status == "routed") {
           for (const io::Wire& w : route.wires) {
             const auto res = wt.run(w.points);
-            // a routed wire is in free space; no staircase found: the routed one stays
-            wires.push_back(res.points.empty() ? w : io::Wire{res.points});
+            // a routed wire is in free space; when no staircase is found, or the one found has
+            // more bends (its fewest links not proven), the routed one stays
+            const bool better = !res.points.empty() && geom::count_bends(res.points) <= geom::count_bends(w.points);
+            wires.push_back(better ? io::Wire{res.points} : w);
           }
         } else {
           continue;

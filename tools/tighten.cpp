@@ -148,8 +148,10 @@ void add_tighten(CLI::App& app, int& status) {
             geom::square_grown(io::blockage_polygons(*layout), static_cast<geom::Coord>(std::min<std::int64_t>(grow, geom::kMaxCoord))),
             domain);
       } catch (const std::domain_error& e) {
-        print_usage_error("CLI-0002", std::string("tighten --clearance: ") + e.what());
-        status = kResource;
+        print_diagnostics({Diagnostic{Severity::Error, "TIGHTEN-0007", layout->file, layout->rules->line, 0,
+                                      std::string("--clearance: ") + e.what() + " (" + std::to_string(grow) +
+                                          " DBU round every blockage)"}});
+        status = kInvalid;
         return;
       }
     } else {
@@ -194,14 +196,14 @@ void add_tighten(CLI::App& app, int& status) {
           ok = false;
           continue;
         }
-        if (res.contractible) {
+        if (res.contractible) {  // the other lines are still lifted: their errors are said
           contractible = true;
-          break;
+          continue;
         }
         st.taut += router::euclidean_length(r.points);
         if (res.no_staircase) {
           no_staircase = true;
-          break;
+          continue;
         }
         st.fewest_links = st.fewest_links && res.fewest_links;
         std::vector<geom::Point> pts = std::move(res.points);
