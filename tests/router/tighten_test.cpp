@@ -380,7 +380,7 @@ int fewest_bends_exhaustive(const oracle::L1Reference& ref, const oracle::Homoto
 // path's bends against the exhaustive search, for rectilinear and octilinear output.
 TEST(Tighten, COrientedFewestLinksAgainstExhaustiveSearch) {
   long long compared = 0, proven = 0, bent = 0;
-  const int n = sanitized_share(150, 5);
+  const int n = sanitized_share(150, 15);
   for (int seed = 1; seed <= n; ++seed) {
     std::mt19937_64 rng(static_cast<std::uint64_t>(seed) * 1009);
     auto r = [&](int lo, int hi) { return lo + static_cast<int>(rng() % static_cast<std::uint64_t>(hi - lo + 1)); };
@@ -439,7 +439,7 @@ TEST(Tighten, COrientedFewestLinksAgainstExhaustiveSearch) {
   }
   std::printf("%lld c-oriented paths compared with the exhaustive search (%lld claimed fewest, %lld with bends)\n",
               compared, proven, bent);
-  EXPECT_GE(compared, sanitized_share(400, 5));
+  EXPECT_GE(compared, sanitized_share(400, 15));
 }
 
 // The loop's vertices as a cyclic sequence starting at its least point (for comparing with a ring).
@@ -489,7 +489,7 @@ TEST(TightenLoop, AroundSquares) {
 
 TEST(TightenLoop, RandomLoopsAgainstTheReferences) {
   long long loops = 0, contractible = 0, winding = 0, bends = 0;
-  const std::uint64_t n = static_cast<std::uint64_t>(sanitized_share(700, 6));
+  const std::uint64_t n = static_cast<std::uint64_t>(sanitized_share(700, 10));
   for (std::uint64_t seed = 1; seed <= n; ++seed) {
     WavefrontCase c;
     try {
@@ -545,9 +545,9 @@ TEST(TightenLoop, RandomLoopsAgainstTheReferences) {
   }
   std::printf("%lld loops tightened (%lld with a cyclic word of two or more letters, %lld bends), %lld contractible\n",
               loops, winding, bends, contractible);
-  EXPECT_GE(loops, sanitized_share(900, 6));
-  EXPECT_GE(winding, sanitized_share(600, 6));
-  EXPECT_GE(contractible, sanitized_share(1500, 6));
+  EXPECT_GE(loops, sanitized_share(900, 10));
+  EXPECT_GE(winding, sanitized_share(600, 10));
+  EXPECT_GE(contractible, sanitized_share(1500, 10));
 }
 
 // router::OnlineTightener (H&S 3.2): a sketch given point by point, going back over itself now
@@ -658,7 +658,7 @@ TEST(Tighten, RegressionSeeds) {
 
 TEST(Tighten, RandomSketchesAgainstTheReferences) {
   Totals tot;
-  const std::uint64_t n = static_cast<std::uint64_t>(sanitized_share(900, 6));
+  const std::uint64_t n = static_cast<std::uint64_t>(sanitized_share(900, 10));
   for (std::uint64_t seed = 1; seed <= n; ++seed) {
     check_seed(seed, tot);
     if (::testing::Test::HasFatalFailure()) {
@@ -676,9 +676,9 @@ TEST(Tighten, RandomSketchesAgainstTheReferences) {
               "octilinear %lld paths (%lld through the cuts, %lld out of budget, %lld missing, %lld diagonal links)\n",
               tot.c_paths[0], tot.c_through_cuts[0], tot.c_incomplete[0], tot.c_missing[0], tot.c_paths[1],
               tot.c_through_cuts[1], tot.c_incomplete[1], tot.c_missing[1], tot.c_sloped[1]);
-  EXPECT_GE(tot.sketches, sanitized_share(6000, 6));
-  EXPECT_GE(tot.winding, sanitized_share(2000, 6));
-  EXPECT_GE(tot.global_class, sanitized_share(1500, 6));
+  EXPECT_GE(tot.sketches, sanitized_share(6000, 10));
+  EXPECT_GE(tot.winding, sanitized_share(2000, 10));
+  EXPECT_GE(tot.global_class, sanitized_share(1500, 10));
 }
 
 }  // namespace
