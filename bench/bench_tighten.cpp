@@ -14,7 +14,8 @@
 // largest size, the time per sleeve triangle bucketed by sleeve length (growth against sleeve
 // length: flat means linear). `online_s`: the same sketches fed point by point to
 // router::OnlineTightener with the current path read after every point (a path per point, so
-// it is expected to cost more than one tightening at the end). Targets (issue #5): funnel >= 10^7 triangles/s; 10^4 wires on a
+// it is expected to cost more than one tightening at the end). Then, once per size, the time to
+// write the first 1,000 taut wires as rectilinear staircases (router::c_oriented, one run). Targets (issue #5): funnel >= 10^7 triangles/s; 10^4 wires on a
 // 10^5-vertex layout under 10 s.
 //
 //   bench_tighten [--sizes N,N,..] [--wires W] [--kind rects|polygons|maze|degenerate] [--reps R]
@@ -145,6 +146,25 @@ int main(int argc, char** argv) {
           }
         },
         reps);
+    // rectilinear output: each taut wire written as the fewest-link staircase of its class
+    const taut::router::StaircaseBuilder sb(D, b.norm.obstacles);
+    std::vector<std::vector<Point>> taut_paths;
+    for (const auto& sk : sketches) {  // the first 1,000 (the staircase search is the slow part)
+      if (taut_paths.size() == 1000) break;
+      taut_paths.push_back(tight.tighten(sk).points);
+    }
+    int c_missing = 0, c_unproven = 0;
+    const double t_rect = seconds_of(
+        [&] {
+          c_missing = c_unproven = 0;
+          for (const auto& t : taut_paths) {
+            const auto c = taut::router::c_oriented(tight, sb, t, taut::router::StaircaseStyle::Rectilinear);
+            c_missing += c.points.empty();
+            c_unproven += !c.points.empty() && !(c.through_cuts && c.complete);
+            sink = sink + static_cast<std::int64_t>(c.points.size());
+          }
+        },
+        1);
     const auto& tris = tri.triangles();
     const double t_pass = seconds_of(
         [&] {
@@ -161,6 +181,11 @@ int main(int argc, char** argv) {
                 tris.size(), static_cast<long long>(crossings), static_cast<long long>(sleeve_tris), t_tighten,
                 t_tighten / t_pass, t_funnel, static_cast<double>(sleeve_tris) / t_funnel, t_funnel / t_pass, t_online,
                 t_online / t_tighten, failures);
+    std::printf("%9s rectilinear output of the first %zu taut wires: %.3f s (%.1f ms per wire, %.0f x tightening one), "
+                "%d without a staircase, %d with the fewest links not proven\n",
+                "", taut_paths.size(), t_rect, t_rect / static_cast<double>(taut_paths.size()) * 1e3,
+                t_rect / static_cast<double>(taut_paths.size()) / (t_tighten / static_cast<double>(sketches.size())),
+                c_missing, c_unproven);
     std::fflush(stdout);
     failures_total += failures;
     if (si + 1 == sizes.size()) {

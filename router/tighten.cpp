@@ -757,12 +757,14 @@ COriented c_oriented(const Tightener& tight, const StaircaseBuilder& sb, std::sp
     r.through_cuts = true;
     return r;
   }
-  std::vector<Point> cuts{taut.front()};
+  std::vector<std::size_t> cut_at{0};  // indices of the cuts in taut
   for (std::size_t i = 1; i + 1 < taut.size(); ++i) {
     const int c0 = cone_of(taut[i - 1], taut[i], style), c1 = cone_of(taut[i], taut[i + 1], style);
-    if (c0 < 0 || c1 < 0 || c0 != c1) cuts.push_back(taut[i]);
+    if (c0 < 0 || c1 < 0 || c0 != c1) cut_at.push_back(i);
   }
-  cuts.push_back(taut.back());
+  cut_at.push_back(taut.size() - 1);
+  std::vector<Point> cuts;
+  for (std::size_t i : cut_at) cuts.push_back(taut[i]);
   const std::vector<Point> want(taut.begin(), taut.end());
   Stairs stairs{tight, sb, style, {}};
   if (auto s = sb.staircase(cuts, style, &stairs.st); s && stairs.same_class(*s, want)) {
@@ -771,11 +773,24 @@ COriented c_oriented(const Tightener& tight, const StaircaseBuilder& sb, std::sp
     r.complete = stairs.st.budget_hits == 0 && stairs.st.greedy_links == 0;
     return r;
   }
-  // Link by link, each in its class (split where the search's staircase is not).
+  // Piece by piece (a piece runs between two cuts), each in its class; a piece whose staircase
+  // is not is done link by link (split where the search's staircase is not in the class either).
   stairs.st = StaircaseStats{};
   std::vector<Point> out{taut.front()};
-  for (std::size_t i = 0; i + 1 < taut.size(); ++i)
-    if (!stairs.link(taut[i], taut[i + 1], out, 0)) return r;
+  for (std::size_t k = 0; k + 1 < cut_at.size(); ++k) {
+    const std::size_t i0 = cut_at[k], i1 = cut_at[k + 1];
+    if (i1 > i0 + 1) {
+      const std::vector<Point> piece(taut.begin() + static_cast<std::ptrdiff_t>(i0),
+                                     taut.begin() + static_cast<std::ptrdiff_t>(i1) + 1);
+      if (auto s = sb.staircase(std::vector<Point>{taut[i0], taut[i1]}, style, &stairs.st);
+          s && stairs.same_class(*s, piece)) {
+        out.insert(out.end(), s->begin() + 1, s->end());
+        continue;
+      }
+    }
+    for (std::size_t i = i0; i < i1; ++i)
+      if (!stairs.link(taut[i], taut[i + 1], out, 0)) return r;
+  }
   out = simplified(out);
   for (std::size_t i = 1; i + 1 < out.size(); ++i)
     if (!sb.turn_ok(out[i - 1], out[i], out[i + 1])) return r;
