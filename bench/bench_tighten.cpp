@@ -15,7 +15,8 @@
 // length: flat means linear). `online_s`: the same sketches fed point by point to
 // router::OnlineTightener with the current path read after every point (a path per point, so
 // it is expected to cost more than one tightening at the end). Then, once per size, the time to
-// write the first 1,000 taut wires as rectilinear staircases (router::c_oriented, one run). Targets (issue #5): funnel >= 10^7 triangles/s; 10^4 wires on a
+// write the first 1,000 taut wires as rectilinear staircases (router::c_oriented, one run, with
+// the staircase search budget `taut tighten` uses, 2^12; TAUT_STAIR_WORK=N sets another). Targets (issue #5): funnel >= 10^7 triangles/s; 10^4 wires on a
 // 10^5-vertex layout under 10 s.
 //
 //   bench_tighten [--sizes N,N,..] [--wires W] [--kind rects|polygons|maze|degenerate] [--reps R]
@@ -147,7 +148,9 @@ int main(int argc, char** argv) {
         },
         reps);
     // rectilinear output: each taut wire written as the fewest-link staircase of its class
-    const taut::router::StaircaseBuilder sb(D, b.norm.obstacles);
+    taut::router::StaircaseOptions so{std::size_t{1} << 12};  // the budget `taut tighten` uses
+    if (const char* w = std::getenv("TAUT_STAIR_WORK")) so.max_work_per_search = std::strtoull(w, nullptr, 10);
+    const taut::router::StaircaseBuilder sb(D, b.norm.obstacles, so);
     std::vector<std::vector<Point>> taut_paths;
     for (const auto& sk : sketches) {  // the first 1,000 (the staircase search is the slow part)
       if (taut_paths.size() == 1000) break;
