@@ -31,7 +31,7 @@ run: build
 	@# exit status 1 = some nets are not routed (bump's diamond pin, octilinear: named on stderr)
 	$(BUILD)/tools/taut route designs/demo.xml --orientations octilinear -q -o out/demo.oct.routed.xml --svg out/demo.oct.svg || test $$? -eq 1
 	$(BUILD)/tools/taut voronoi designs/demo.xml -q -o out/demo.cells.xml --svg out/demo.voronoi.svg > out/demo.voronoi.txt
-	$(BUILD)/tools/taut tighten designs/wind.xml -q --clearance -o out/wind.tightened.xml --svg out/wind.svg --stats out/wind.stats.json
+	$(BUILD)/tools/taut tighten designs/wind.xml -q --clearance --min-link -o out/wind.tightened.xml --svg out/wind.svg --stats out/wind.stats.json
 	@echo "wrote out/demo.routed.xml, out/demo.svg, out/demo.stats.json, out/demo.check.json, octilinear wires in out/demo.oct.routed.xml, out/demo.oct.svg, the pins' Voronoi diagram in out/demo.cells.xml, out/demo.voronoi.svg, and designs/wind.xml's sketches tightened in out/wind.tightened.xml, out/wind.svg, out/wind.stats.json"
 
 # The two trees build and test side by side (each with JOBS jobs): one's serial tails (a big

@@ -16,7 +16,9 @@
 // router::OnlineTightener with the current path read after every point (a path per point, so
 // it is expected to cost more than one tightening at the end). Then, once per size, the time to
 // write the first 1,000 taut wires as rectilinear staircases (router::c_oriented, one run, with
-// the staircase search budget `taut tighten` uses, 2^12; TAUT_STAIR_WORK=N sets another). Targets (issue #5): funnel >= 10^7 triangles/s; 10^4 wires on a
+// the staircase search budget `taut tighten` uses, 2^12; TAUT_STAIR_WORK=N sets another), and
+// their minimum-link paths (router::MinLinker: time, links against the shortest wire's, and
+// the longest exact coordinate written out). Targets (issue #5): funnel >= 10^7 triangles/s; 10^4 wires on a
 // 10^5-vertex layout under 10 s.
 //
 //   bench_tighten [--sizes N,N,..] [--wires W] [--kind rects|polygons|maze|degenerate] [--reps R]
@@ -33,6 +35,7 @@
 #include "bench/free_points.h"
 #include "geom/triangulation.h"
 #include "router/spm.h"
+#include "router/minlink.h"
 #include "router/tighten.h"
 
 namespace {
@@ -168,6 +171,22 @@ int main(int argc, char** argv) {
           }
         },
         1);
+    // minimum-link paths of the same taut wires (router::MinLinker, exact rationals)
+    const taut::router::MinLinker ml(tri);
+    long long ml_links = 0, taut_links = 0;
+    std::size_t ml_digits = 0;
+    const double t_minlink = seconds_of(
+        [&] {
+          ml_links = taut_links = 0;
+          ml_digits = 0;
+          for (const auto& t : taut_paths) {
+            const auto m = ml.path(t);
+            ml_links += static_cast<long long>(m.links());
+            taut_links += static_cast<long long>(t.size()) - 1;
+            for (const auto& p : m.points) ml_digits = std::max({ml_digits, p.x.str().size(), p.y.str().size()});
+          }
+        },
+        1);
     const auto& tris = tri.triangles();
     const double t_pass = seconds_of(
         [&] {
@@ -189,6 +208,12 @@ int main(int argc, char** argv) {
                 "", taut_paths.size(), t_rect, t_rect / static_cast<double>(taut_paths.size()) * 1e3,
                 t_rect / static_cast<double>(taut_paths.size()) / (t_tighten / static_cast<double>(sketches.size())),
                 c_missing, c_unproven);
+    std::printf("%9s minimum-link paths of the same wires: %.3f s (%.2f ms per wire, %.1f x tightening one), "
+                "%.2f links per wire against %.2f for the shortest, longest coordinate %zu characters\n",
+                "", t_minlink, t_minlink / static_cast<double>(taut_paths.size()) * 1e3,
+                t_minlink / static_cast<double>(taut_paths.size()) / (t_tighten / static_cast<double>(sketches.size())),
+                static_cast<double>(ml_links) / static_cast<double>(taut_paths.size()),
+                static_cast<double>(taut_links) / static_cast<double>(taut_paths.size()), ml_digits);
     std::fflush(stdout);
     failures_total += failures;
     if (si + 1 == sizes.size()) {

@@ -712,4 +712,19 @@ std::vector<std::string> FreeSpaceTriangulation::check() const {
   return problems;
 }
 
+VertexFans vertex_fans(const FreeSpaceTriangulation& t) {
+  VertexFans f;
+  const auto& tris = t.triangles();
+  f.start.assign(t.vertices().size() + 1, 0);
+  for (const FreeTriangle& tr : tris)
+    for (std::int32_t v : tr.v) ++f.start[static_cast<std::size_t>(v) + 1];
+  for (std::size_t i = 1; i < f.start.size(); ++i) f.start[i] += f.start[i - 1];
+  f.triangles.assign(static_cast<std::size_t>(f.start.back()), 0);
+  std::vector<std::int32_t> fill(f.start.begin(), f.start.end() - 1);
+  for (std::size_t i = 0; i < tris.size(); ++i)
+    for (std::int32_t v : tris[i].v)
+      f.triangles[static_cast<std::size_t>(fill[static_cast<std::size_t>(v)]++)] = static_cast<std::int32_t>(i);
+  return f;
+}
+
 }  // namespace taut::geom

@@ -104,6 +104,14 @@ class FreeSpaceTriangulation {
   friend FreeSpaceTriangulation triangulate_free_space(const Box&, std::span<const Polygon>);
 };
 
+// The triangles incident to each vertex, in compressed rows: vertex v's are
+// triangles[start[v] .. start[v + 1]), in increasing index order.
+struct VertexFans {
+  std::vector<std::int32_t> start;      // vertices().size() + 1 offsets
+  std::vector<std::int32_t> triangles;  // triangle indices
+};
+VertexFans vertex_fans(const FreeSpaceTriangulation& t);
+
 // Triangulates domain minus the obstacles (see the contract above). Diagnostics:
 //   GEOM-0040  the domain box is empty or degenerate, or a coordinate exceeds kMaxCoord
 //   GEOM-0041  a ring has fewer than 3 vertices, or the wrong orientation (outer ring not

@@ -180,15 +180,9 @@ struct Tightener::Walker {
 
 Tightener::Tightener(const geom::FreeSpaceTriangulation& t) : t_(&t) {
   if (!t.ok()) throw std::invalid_argument("Tightener: the triangulation is not valid");
-  const auto& tris = t.triangles();
-  fan_start_.assign(t.vertices().size() + 1, 0);
-  for (const FreeTriangle& tr : tris)
-    for (std::int32_t v : tr.v) ++fan_start_[static_cast<std::size_t>(v) + 1];
-  for (std::size_t i = 1; i < fan_start_.size(); ++i) fan_start_[i] += fan_start_[i - 1];
-  fan_.assign(static_cast<std::size_t>(fan_start_.back()), 0);
-  std::vector<std::int32_t> fill(fan_start_.begin(), fan_start_.end() - 1);
-  for (std::size_t i = 0; i < tris.size(); ++i)
-    for (std::int32_t v : tris[i].v) fan_[static_cast<std::size_t>(fill[static_cast<std::size_t>(v)]++)] = static_cast<std::int32_t>(i);
+  geom::VertexFans f = geom::vertex_fans(t);
+  fan_start_ = std::move(f.start);
+  fan_ = std::move(f.triangles);
 }
 
 std::vector<Portal> Tightener::portals_of(const std::vector<std::int32_t>& triangles) const {

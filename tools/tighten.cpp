@@ -8,6 +8,9 @@
 // error (TIGHTEN-0001, file:line, nothing written); a net with nothing to tighten (TIGHTEN-0002)
 // or with no integer staircase in its class (TIGHTEN-0004) is written as failed (exit status 1).
 // `c:` direction sets are refused (CLI-0027) or, from <rules>, replaced by `any` (TIGHTEN-0003).
+// --min-link adds each open wire's minimum-link path of its class (router/minlink.h, any angle,
+// exact rational bends) to --stats and --svg; it is not written as a wire (FORMAT.md coordinates
+// are integers).
 #include <chrono>
 #include <optional>
 #include <cstdio>
@@ -19,6 +22,7 @@
 #include "io/layout_writer.h"
 #include "io/stats_json.h"
 #include "io/svg.h"
+#include "router/minlink.h"
 #include "router/tighten.h"
 #include "router/version.h"
 #include "tools/cli.h"
@@ -34,6 +38,10 @@ struct NetTightening {
   bool fewest_links = true;
   long bends_before = 0, bends_after = 0;
   std::size_t sleeve = 0, crossings = 0;
+  // --min-link: the minimum-link path of each open wire's class (exact rational bends)
+  std::size_t min_links = 0;
+  std::vector<router::MinLinkPath> min_link;
+  bool loop = false;  // minimum-link loops (section 5.2) are not computed
 };
 
 std::string fixed3(double v) {
@@ -48,7 +56,7 @@ void add_tighten(CLI::App& app, int& status) {
   struct Args {
     std::string file, out, svg, stats, orientations;
     LoadOptions load;
-    bool clearance = false;
+    bool clearance = false, min_link = false;
   };
   auto args = std::make_shared<Args>();
   CLI::App* sub = app.add_subcommand(
@@ -65,6 +73,10 @@ void add_tighten(CLI::App& app, int& status) {
   sub->add_flag("--clearance", args->clearance,
                 "keep half the wire width plus the spacing of <rules> from every blockage (tighten against "
                 "blockages grown by that much)");
+  sub->add_flag("--min-link", args->min_link,
+                "also find each wire's minimum-link path of its class (any angle, exact rational bends): "
+                "its link count and bends go to --stats, its drawing to --svg; the written wires are "
+                "still the shortest ones");
   add_input_options(sub, args->file, args->load, "do not print warnings or the summary");
   sub->callback([args, &status] {
     using Clock = std::chrono::steady_clock;
@@ -158,6 +170,7 @@ void add_tighten(CLI::App& app, int& status) {
       norm = routing_obstacles(*layout, extra);
     }
     const WireTightener wt(norm, orientations);
+    std::unique_ptr<router::MinLinker> min_linker;  // made on the first open wire under --min-link
     const auto t1 = Clock::now();
 
     io::Routes routes;
@@ -201,6 +214,12 @@ void add_tighten(CLI::App& app, int& status) {
           continue;
         }
         st.taut += router::euclidean_length(r.points);
+        st.loop = st.loop || line.front() == line.back();
+        if (args->min_link && line.front() != line.back()) {
+          if (!min_linker) min_linker = std::make_unique<router::MinLinker>(wt.triangulation());
+          st.min_link.push_back(min_linker->path(r.points));
+          st.min_links += st.min_link.back().links();
+        }
         if (res.no_staircase) {
           no_staircase = true;
           continue;
@@ -263,7 +282,15 @@ void add_tighten(CLI::App& app, int& status) {
             so.overlay += "<polyline class=\"input-wire\" points=\"" + pts +
                           "\" fill=\"none\" stroke=\"#555555\" stroke-width=\"@1.5\" stroke-dasharray=\"@6 @4\"/>\n";
           }
-      so.caption = "tightened (input dashed)";
+      for (const NetTightening& st : stats)
+        for (const router::MinLinkPath& m : st.min_link) {
+          std::string pts;
+          for (const router::RPoint& p : m.points)
+            pts += (pts.empty() ? "" : " ") + fixed3(p.x.convert_to<double>()) + "," + fixed3(p.y.convert_to<double>());
+          so.overlay += "<polyline class=\"min-link\" points=\"" + pts +
+                        "\" fill=\"none\" stroke=\"#c0392b\" stroke-width=\"@1.5\" stroke-dasharray=\"@2 @3\"/>\n";
+        }
+      so.caption = args->min_link ? "tightened (input dashed, minimum-link dotted red)" : "tightened (input dashed)";
       svg = io::layout_to_svg(out, so);
     }
     double before = 0, after = 0;
@@ -287,6 +314,17 @@ void add_tighten(CLI::App& app, int& status) {
                         {"sleeve_triangles", s.sleeve},
                         {"crossings", s.crossings},
                         {"fewest_links", s.fewest_links}});
+        if (args->min_link) {
+          // exact bends as "p/q" strings (a double would not be the point)
+          nlohmann::ordered_json paths = nlohmann::ordered_json::array();
+          for (const router::MinLinkPath& m : s.min_link) {
+            nlohmann::ordered_json pts = nlohmann::ordered_json::array();
+            for (const router::RPoint& p : m.points) pts.push_back({p.x.str(), p.y.str()});
+            paths.push_back(pts);
+          }
+          nets.back()["min_links"] = s.loop ? nlohmann::ordered_json() : nlohmann::ordered_json(s.min_links);
+          nets.back()["min_link_wires"] = paths;
+        }
       }
       j["tighten"] = {{"orientations", orientations},
                       {"nets", nets},
@@ -315,7 +353,9 @@ void add_tighten(CLI::App& app, int& status) {
         std::cerr << "  " << layout->nets[i].name << " (" << s.source << "): length " << fixed3(s.before) << " -> "
                   << fixed3(s.after);
         if (c_oriented) std::cerr << " " << orientations << " (taut " << fixed3(s.taut) << ")";
-        std::cerr << ", bends " << s.bends_before << " -> " << s.bends_after << '\n';
+        std::cerr << ", bends " << s.bends_before << " -> " << s.bends_after;
+        if (!s.min_link.empty()) std::cerr << ", minimum links " << s.min_links;
+        std::cerr << '\n';
       }
       std::cerr << args->file << ": tightened " << done << " of " << layout->nets.size() << " nets, length "
                 << fixed3(before) << " -> " << fixed3(after) << "; wrote " << args->out << '\n';

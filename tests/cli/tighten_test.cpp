@@ -12,6 +12,7 @@
 #include "io/layout_reader.h"
 #include "oracle/homotopy.h"
 #include "oracle/l1_oracle.h"
+#include "oracle/link_oracle.h"
 #include "router/tighten.h"
 #include "support/layout_reference.h"
 #include "support/run.h"
@@ -178,6 +179,52 @@ TEST(Tighten, WindingSketches) {
   const std::vector<Path> ring = wires_of(dir + "/w.xml", "guard");
   ASSERT_EQ(ring.size(), 1u);
   EXPECT_EQ(ring[0].size(), 7u);
+}
+
+// --min-link: each open wire's minimum-link path, exact, in the stats; checked against the
+// rational references (free, same class) and against the written (shortest) wire's links.
+TEST(Tighten, MinLinkPathsInTheStats) {
+  const std::string dir = temp_dir("tighten_minlink");
+  const std::string in = kDesigns + "wind.xml";
+  const auto run = run_taut({"tighten", in, "-o", dir + "/w.xml", "--orientations", "any", "--svg", dir + "/w.svg",
+                             "--stats", dir + "/w.json", "--min-link"});
+  ASSERT_EQ(run.status, 0) << run.err;
+  io::ReadResult rr = io::read_layout(in);
+  ASSERT_TRUE(rr.layout);
+  std::vector<Point> extra;
+  for (const io::Net& n : rr.layout->nets) extra.insert(extra.end(), n.sketch->points.begin(), n.sketch->points.end());
+  const auto r = reference_for<oracle::L1Reference>(in, extra);
+  const oracle::HomotopyWords h(r.norm.domain, r.norm.obstacles);
+  const auto j = nlohmann::json::parse(read_text(dir + "/w.json"));
+  const auto& nets = j["tighten"]["nets"];
+  ASSERT_EQ(nets.size(), rr.layout->nets.size());
+  int fewer = 0;
+  for (std::size_t i = 0; i < nets.size(); ++i) {
+    const Path& sketch = rr.layout->nets[i].sketch->points;
+    const auto& e = nets[i];
+    SCOPED_TRACE(e["net"].get<std::string>());
+    if (sketch.front() == sketch.back()) {  // a loop: not computed, said so
+      EXPECT_TRUE(e["min_links"].is_null());
+      continue;
+    }
+    ASSERT_EQ(e["min_link_wires"].size(), 1u);
+    std::vector<oracle::QPoint> q;
+    for (const auto& p : e["min_link_wires"][0])
+      q.push_back({mpq_class(p[0].get<std::string>()), mpq_class(p[1].get<std::string>())});
+    ASSERT_GE(q.size(), 2u);
+    EXPECT_EQ(e["min_links"].get<std::size_t>(), q.size() - 1);
+    EXPECT_TRUE(q.front().x == sketch.front().x && q.front().y == sketch.front().y);
+    EXPECT_TRUE(q.back().x == sketch.back().x && q.back().y == sketch.back().y);
+    for (std::size_t k = 0; k + 1 < q.size(); ++k)
+      EXPECT_TRUE(oracle::segment_free(q[k], q[k + 1], r.norm.domain, r.norm.obstacles)) << "link " << k;
+    EXPECT_EQ(h.word(std::span<const oracle::QPoint>(q)), h.word(sketch)) << "another homotopy class";
+    const long links_after = e["bends_after"].get<long>() + 1;
+    EXPECT_LE(static_cast<long>(q.size()) - 1, links_after);
+    fewer += static_cast<long>(q.size()) - 1 < links_after;
+  }
+  EXPECT_GE(fewer, 2);  // the slalom and the spiral save links
+  EXPECT_NE(read_text(dir + "/w.svg").find("class=\"min-link\""), std::string::npos);
+  EXPECT_NE(run.err.find("minimum links"), std::string::npos) << run.err;
 }
 
 TEST(Tighten, RoutedWiresOfTheDemo) {

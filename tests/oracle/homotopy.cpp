@@ -30,6 +30,15 @@ std::optional<Height> crossing(Point a, Point b, i64 X, int sigma) {
   return h;
 }
 
+std::optional<Height> crossing(const QPoint& a, const QPoint& b, i64 X, int sigma) {
+  const mpq_class x(static_cast<long>(X));
+  const bool crosses = sigma > 0 ? ((a.x <= x && b.x > x) || (b.x <= x && a.x > x))
+                                 : ((a.x < x && b.x >= x) || (b.x < x && a.x >= x));
+  if (!crosses) return std::nullopt;
+  const mpq_class s = (b.y - a.y) / (b.x - a.x);
+  return Height{a.y + (x - a.x) * s, sigma > 0 ? s : mpq_class(-s)};
+}
+
 }  // namespace
 
 struct HomotopyWords::Impl {
@@ -75,10 +84,12 @@ HomotopyWords::~HomotopyWords() { delete impl_; }
 
 std::size_t HomotopyWords::cut_count() const { return impl_->cuts.size(); }
 
-std::vector<int> HomotopyWords::word(std::span<const Point> path) const {
+template <class P>
+std::vector<int> HomotopyWords::word_of(std::span<const P> path) const {
   std::vector<int> w;
   for (std::size_t i = 0; i + 1 < path.size(); ++i) {
-    const Point a = path[i], b = path[i + 1];
+    const P& a = path[i];
+    const P& b = path[i + 1];
     if (a.x == b.x) continue;
     const int dir = b.x > a.x ? 1 : -1;
     struct Hit {
@@ -108,5 +119,8 @@ std::vector<int> HomotopyWords::word(std::span<const Point> path) const {
   }
   return w;
 }
+
+std::vector<int> HomotopyWords::word(std::span<const Point> path) const { return word_of(path); }
+std::vector<int> HomotopyWords::word(std::span<const QPoint> path) const { return word_of(path); }
 
 }  // namespace taut::oracle

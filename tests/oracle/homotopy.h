@@ -22,12 +22,19 @@
 // compared lexicographically in GMP rationals.
 #pragma once
 
+#include <gmpxx.h>
+
 #include <span>
 #include <vector>
 
 #include "geom/types.h"
 
 namespace taut::oracle {
+
+// A point with rational coordinates (minimum-link paths bend at intersections of lines).
+struct QPoint {
+  mpq_class x, y;
+};
 
 class HomotopyWords {
  public:
@@ -38,10 +45,15 @@ class HomotopyWords {
 
   // The reduced word of a polyline in free space (consecutive points joined by segments).
   std::vector<int> word(std::span<const geom::Point> path) const;
+  // The same for a polyline with rational vertices (the line x = X + sigma e is crossed iff the
+  // ends lie on both sides of it: x <= X < x' for sigma = +1, x < X <= x' for sigma = -1).
+  std::vector<int> word(std::span<const QPoint> path) const;
 
   std::size_t cut_count() const;
 
  private:
+  template <class P>
+  std::vector<int> word_of(std::span<const P> path) const;
   struct Impl;
   Impl* impl_;
 };

@@ -29,6 +29,7 @@
 #include "oracle/l1_oracle.h"
 #include "support/reach.h"
 #include "support/sanitized.h"
+#include "support/sketcher.h"
 #include "support/taut_check.h"
 #include "support/wavefront_cases.h"
 #include "support/wavefront_hand.h"
@@ -118,47 +119,6 @@ TEST(Tighten, DegenerateSketches) {
 
 // A random free path: a walk through visible points, then loops with a word of their own
 // appended one to three times (so it winds around obstacles, several turns included).
-struct Sketcher {
-  const oracle::L1Reference& ref;
-  const oracle::HomotopyWords& h;
-  const std::vector<Point>& pts;
-  std::mt19937_64& rng;
-  Point pick() { return pts[rng() % pts.size()]; }
-  Path walk(int max_points) {
-    Path path{pick()};
-    for (int tries = 0; tries < 200 && static_cast<int>(path.size()) < max_points; ++tries) {
-      const Point q = pick();
-      if (q != path.back() && ref.visible(path.back(), q)) path.push_back(q);
-    }
-    return path;
-  }
-  bool add_loops(Path& path) {
-    const Point s = path.back();
-    for (int tries = 0; tries < 400; ++tries) {
-      Path loop{s};
-      const int stops = 2 + static_cast<int>(rng() % 3);
-      for (int t1 = 0; t1 < 40 && static_cast<int>(loop.size()) <= stops; ++t1) {
-        const Point p = pick();
-        if (p != loop.back() && ref.visible(loop.back(), p)) loop.push_back(p);
-      }
-      if (loop.size() < 3 || !ref.visible(loop.back(), s)) continue;
-      loop.push_back(s);
-      if (h.word(loop).empty()) continue;
-      const int turns = 1 + static_cast<int>(rng() % 3);
-      for (int k = 0; k < turns; ++k) path.insert(path.end(), loop.begin() + 1, loop.end());
-      // and on to a last point
-      for (int t2 = 0; t2 < 50; ++t2) {
-        const Point q = pick();
-        if (q != s && ref.visible(s, q)) {
-          path.push_back(q);
-          break;
-        }
-      }
-      return true;
-    }
-    return false;
-  }
-};
 
 double length(const Path& p) { return router::euclidean_length(p); }
 

@@ -1,0 +1,177 @@
+#include "oracle/link_oracle.h"
+
+#include <algorithm>
+#include <optional>
+
+namespace taut::oracle {
+
+using geom::Point;
+
+namespace {
+
+QPoint q(Point p) { return {mpq_class(static_cast<long>(p.x)), mpq_class(static_cast<long>(p.y))}; }
+mpq_class cross(const mpq_class& ax, const mpq_class& ay, const mpq_class& bx, const mpq_class& by) {
+  return ax * by - ay * bx;
+}
+
+// p on the closed segment cd
+bool on_edge(const QPoint& p, const QPoint& c, const QPoint& d) {
+  if (cross(d.x - c.x, d.y - c.y, p.x - c.x, p.y - c.y) != 0) return false;
+  return std::min(c.x, d.x) <= p.x && p.x <= std::max(c.x, d.x) && std::min(c.y, d.y) <= p.y &&
+         p.y <= std::max(c.y, d.y);
+}
+
+// -1 outside, 0 on the boundary, 1 strictly inside the region of a simple ring
+int locate(const QPoint& p, const geom::Ring& r) {
+  bool in = false;
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    const QPoint c = q(r[i]), d = q(r[(i + 1) % r.size()]);
+    if (on_edge(p, c, d)) return 0;
+    // crossing number: edges straddling the horizontal through p, crossed to the right of p
+    if ((c.y > p.y) != (d.y > p.y)) {
+      const mpq_class x = c.x + (p.y - c.y) * (d.x - c.x) / (d.y - c.y);
+      if (x > p.x) in = !in;
+    }
+  }
+  return in ? 1 : -1;
+}
+
+bool in_material(const QPoint& p, std::span<const geom::Polygon> obstacles) {
+  for (const auto& o : obstacles) {
+    if (locate(p, o.outer) != 1) continue;
+    bool in_hole = false;
+    for (const auto& h : o.holes) in_hole = in_hole || locate(p, h) >= 0;
+    if (!in_hole) return true;
+  }
+  return false;
+}
+
+std::optional<QPoint> meet(const QPoint& a, const QPoint& b, const QPoint& c, const QPoint& d) {
+  const mpq_class den = cross(b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y);
+  if (den == 0) return std::nullopt;
+  const mpq_class t = cross(c.x - a.x, c.y - a.y, d.x - c.x, d.y - c.y) / den;
+  return QPoint{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+}
+
+}  // namespace
+
+bool segment_free(const QPoint& a, const QPoint& b, const geom::Box& D, std::span<const geom::Polygon> obstacles) {
+  for (const QPoint* p : {&a, &b})
+    if (p->x < D.lo.x || p->x > D.hi.x || p->y < D.lo.y || p->y > D.hi.y) return false;
+  const mpq_class rx = b.x - a.x, ry = b.y - a.y;
+  if (rx == 0 && ry == 0) return !in_material(a, obstacles);
+  std::vector<mpq_class> ts{0, 1};
+  auto edge = [&](Point c0, Point d0) {
+    const QPoint c = q(c0), d = q(d0);
+    const mpq_class sx = d.x - c.x, sy = d.y - c.y;
+    const mpq_class den = cross(rx, ry, sx, sy);
+    const mpq_class cax = c.x - a.x, cay = c.y - a.y;
+    if (den != 0) {
+      const mpq_class t = cross(cax, cay, sx, sy) / den, u = cross(cax, cay, rx, ry) / den;
+      if (t >= 0 && t <= 1 && u >= 0 && u <= 1) ts.push_back(t);
+    } else if (cross(cax, cay, rx, ry) == 0) {
+      for (const QPoint* e : {&c, &d}) {
+        const mpq_class t = ((e->x - a.x) * rx + (e->y - a.y) * ry) / (rx * rx + ry * ry);
+        if (t >= 0 && t <= 1) ts.push_back(t);
+      }
+    }
+  };
+  for (const auto& o : obstacles) {
+    std::vector<const geom::Ring*> rs{&o.outer};
+    for (const auto& h : o.holes) rs.push_back(&h);
+    for (const geom::Ring* r : rs)
+      for (std::size_t i = 0; i < r->size(); ++i) edge((*r)[i], (*r)[(i + 1) % r->size()]);
+  }
+  std::sort(ts.begin(), ts.end());
+  ts.erase(std::unique(ts.begin(), ts.end()), ts.end());
+  // An obstacle vertex strictly inside the segment with edges leaving it on both sides: the
+  // segment either enters material there or, where obstacle corners touch (a pinch), slips
+  // between touching blockages (FORMAT.md forbids it); either way it is not free.
+  for (const auto& o : obstacles) {
+    std::vector<const geom::Ring*> rs{&o.outer};
+    for (const auto& h : o.holes) rs.push_back(&h);
+    for (const geom::Ring* r : rs)
+      for (std::size_t i = 0; i < r->size(); ++i) {
+        const QPoint v = q((*r)[i]);
+        if (!on_edge(v, a, b) || (v.x == a.x && v.y == a.y) || (v.x == b.x && v.y == b.y)) continue;
+        bool left = false, right = false;
+        for (const auto& o2 : obstacles) {
+          std::vector<const geom::Ring*> rs2{&o2.outer};
+          for (const auto& h : o2.holes) rs2.push_back(&h);
+          for (const geom::Ring* r2 : rs2)
+            for (std::size_t k = 0; k < r2->size(); ++k) {
+              if ((*r2)[k] != (*r)[i]) continue;
+              for (Point w : {(*r2)[(k + r2->size() - 1) % r2->size()], (*r2)[(k + 1) % r2->size()]}) {
+                const int sg = sgn(cross(rx, ry, q(w).x - v.x, q(w).y - v.y));
+                left = left || sg > 0;
+                right = right || sg < 0;
+              }
+            }
+        }
+        if (left && right) return false;
+      }
+  }
+  for (std::size_t i = 0; i + 1 < ts.size(); ++i) {
+    const mpq_class m = (ts[i] + ts[i + 1]) / 2;
+    if (in_material(QPoint{a.x + m * rx, a.y + m * ry}, obstacles)) return false;
+  }
+  return true;
+}
+
+LinkSearch::LinkSearch(const geom::Box& domain, std::span<const geom::Polygon> obstacles, const HomotopyWords& words)
+    : domain_(domain), obstacles_(obstacles.begin(), obstacles.end()), words_(words) {
+  for (const auto& o : obstacles_) {
+    vertices_.insert(vertices_.end(), o.outer.begin(), o.outer.end());
+    for (const auto& h : o.holes) vertices_.insert(vertices_.end(), h.begin(), h.end());
+  }
+  std::sort(vertices_.begin(), vertices_.end());
+  vertices_.erase(std::unique(vertices_.begin(), vertices_.end()), vertices_.end());
+}
+
+bool LinkSearch::path_ok(const std::vector<QPoint>& path, const std::vector<int>& word) const {
+  for (std::size_t i = 0; i + 1 < path.size(); ++i)
+    if (!segment_free(path[i], path[i + 1], domain_, obstacles_)) return false;
+  return words_.word(std::span<const QPoint>(path)) == word;
+}
+
+int LinkSearch::fewest(Point p, Point q0, const std::vector<int>& word, int max_links, std::vector<QPoint>* out) const {
+  const QPoint P = q(p), Q = q(q0);
+  auto found = [&](std::vector<QPoint> path) {
+    if (!path_ok(path, word)) return false;
+    if (out) *out = std::move(path);
+    return true;
+  };
+  if (max_links >= 1 && found({P, Q})) return 1;
+  std::vector<Point> pts = vertices_;
+  pts.push_back(p);
+  pts.push_back(q0);
+  std::sort(pts.begin(), pts.end());
+  pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+  // lines as point pairs
+  std::vector<std::pair<QPoint, QPoint>> through_p, through_q, all;
+  for (Point s : pts) {
+    if (s != p) through_p.push_back({P, q(s)});
+    if (s != q0) through_q.push_back({Q, q(s)});
+  }
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    for (std::size_t j = i + 1; j < pts.size(); ++j) all.push_back({q(pts[i]), q(pts[j])});
+  if (max_links >= 2)
+    for (const auto& l1 : through_p)
+      for (const auto& l2 : through_q) {
+        const auto x = meet(l1.first, l1.second, l2.first, l2.second);
+        if (x && found({P, *x, Q})) return 2;
+      }
+  if (max_links >= 3)
+    for (const auto& l1 : through_p)
+      for (const auto& l2 : all) {
+        const auto x = meet(l1.first, l1.second, l2.first, l2.second);
+        if (!x || !segment_free(P, *x, domain_, obstacles_)) continue;
+        for (const auto& l3 : through_q) {
+          const auto y = meet(l2.first, l2.second, l3.first, l3.second);
+          if (y && found({P, *x, *y, Q})) return 3;
+        }
+      }
+  return 0;
+}
+
+}  // namespace taut::oracle

@@ -1,0 +1,256 @@
+// router::MinLinker (minimum-link paths of a homotopy class, Hershberger & Snoeyink section 4)
+// against references that share only geom's types with it (tests/oracle/link_oracle.h):
+//   - oracle::segment_free: every link stays in the closed free space (exact rationals);
+//   - oracle::HomotopyWords: the path has the sketch's reduced cut word (same class, ends fixed);
+//   - oracle::LinkSearch: no path of the class on candidate lines (through two of the ends and
+//     the obstacle vertices) has fewer links, exhaustively up to three links; and how often the
+//     candidate lines reach the same count is reported.
+// Layouts are small seeded scenes of rectangles and triangles (shared coordinates, touching and
+// collinear edges come with the small grid); sketches are random walks with loops appended one
+// to three times, so they wind around obstacles.
+#include "router/minlink.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <random>
+
+#include "geom/triangulation.h"
+#include "oracle/homotopy.h"
+#include "oracle/l1_oracle.h"
+#include "oracle/link_oracle.h"
+#include "router/tighten.h"
+#include "support/sanitized.h"
+#include "support/sketcher.h"
+#include "support/wavefront_cases.h"
+#include "support/wavefront_hand.h"
+
+namespace taut::test {
+namespace {
+
+using geom::Point;
+using Path = std::vector<Point>;
+
+oracle::QPoint to_q(const router::RPoint& p) {
+  return {mpq_class(p.x.backend().data()), mpq_class(p.y.backend().data())};
+}
+std::vector<oracle::QPoint> to_q(const router::MinLinkPath& m) {
+  std::vector<oracle::QPoint> out;
+  for (const auto& p : m.points) out.push_back(to_q(p));
+  return out;
+}
+std::string str(const std::vector<oracle::QPoint>& p) {
+  std::string s;
+  for (const auto& v : p) s += "(" + v.x.get_str() + "," + v.y.get_str() + ")";
+  return s;
+}
+std::string str(const Path& p) {
+  std::string s;
+  for (const auto& v : p) s += "(" + std::to_string(v.x) + "," + std::to_string(v.y) + ")";
+  return s;
+}
+
+struct World {
+  Scene sc;
+  geom::FreeSpaceTriangulation t;
+  std::unique_ptr<router::Tightener> tight;
+  std::unique_ptr<router::MinLinker> ml;
+  std::unique_ptr<oracle::HomotopyWords> h;
+  std::unique_ptr<oracle::LinkSearch> search;
+  explicit World(Scene s) : sc(std::move(s)) {
+    t = geom::triangulate_free_space(sc.domain, sc.obstacles);
+    if (!t.ok()) return;
+    tight = std::make_unique<router::Tightener>(t);
+    ml = std::make_unique<router::MinLinker>(t);
+    h = std::make_unique<oracle::HomotopyWords>(sc.domain, sc.obstacles);
+    search = std::make_unique<oracle::LinkSearch>(sc.domain, sc.obstacles, *h);
+  }
+};
+
+// Tightens and min-links a sketch and checks the result: same ends, free, same class. Returns
+// the path (empty when the sketch does not tighten).
+std::vector<oracle::QPoint> check(const World& w, const Path& sketch, const std::string& where, Path* taut = nullptr) {
+  const router::Tightened r = w.tight->tighten(sketch);
+  if (r.status != router::TightenStatus::Ok) return {};
+  if (taut) *taut = r.points;
+  const router::MinLinkPath m = w.ml->path(r.points);
+  const std::vector<oracle::QPoint> q = to_q(m);
+  const std::string ctx = where + " sketch " + str(sketch) + " taut " + str(r.points) + " min-link " + str(q);
+  EXPECT_GE(q.size(), 2u) << ctx;
+  if (q.size() < 2) return {};
+  EXPECT_TRUE(q.front().x == sketch.front().x && q.front().y == sketch.front().y) << ctx;
+  EXPECT_TRUE(q.back().x == sketch.back().x && q.back().y == sketch.back().y) << ctx;
+  for (std::size_t i = 0; i + 1 < q.size(); ++i)
+    EXPECT_TRUE(oracle::segment_free(q[i], q[i + 1], w.sc.domain, w.sc.obstacles)) << ctx << ": link " << i << " leaves free space";
+  EXPECT_EQ(w.h->word(std::span<const oracle::QPoint>(q)), w.h->word(sketch)) << ctx << ": another homotopy class";
+  EXPECT_LE(m.links(), r.points.size() - 1) << ctx << ": more links than the shortest path";
+  return q;
+}
+
+TEST(MinLink, HandCases) {
+  const World w(normalized({{0, 0}, {100, 100}}, {rect(40, 40, 60, 60)}));
+  ASSERT_TRUE(w.t.ok());
+  // straight
+  EXPECT_EQ(check(w, {{10, 10}, {90, 10}}, "straight").size(), 2u);
+  // over the top of the square: the shortest path bends at both top corners; two links do it
+  // (up to a point above the square, then down)
+  EXPECT_EQ(check(w, {{20, 50}, {50, 90}, {80, 50}}, "over").size(), 3u);
+  // around one corner: two links, bending on the corner
+  {
+    const auto q = check(w, {{30, 30}, {30, 70}, {70, 70}}, "corner");
+    ASSERT_EQ(q.size(), 3u);
+  }
+  // once around the square back to the start side: a loop of the class needs four links
+  {
+    // three links: a triangle round the square, its corners far out
+    Path taut;
+    const auto q = check(w, {{20, 50}, {50, 80}, {80, 50}, {50, 20}, {25, 45}}, "around", &taut);
+    EXPECT_EQ(q.size(), 4u);
+    EXPECT_EQ(w.search->fewest({20, 50}, {25, 45}, w.h->word(taut), 2), 0);
+  }
+}
+
+TEST(MinLink, SlalomBendsOncePerPillar) {
+  // pillars alternating from the bottom and the top: the shortest path turns on every pillar
+  // tip in alternation, so every edge between tips is an inflection edge and a link of its own.
+  std::vector<geom::Polygon> ps;
+  for (int i = 0; i < 4; ++i)
+    ps.push_back(i % 2 == 0 ? rect(20 + 20 * i, 0, 25 + 20 * i, 60) : rect(20 + 20 * i, 40, 25 + 20 * i, 100));
+  const World w(normalized({{0, 0}, {110, 100}}, ps));
+  ASSERT_TRUE(w.t.ok());
+  Path taut;
+  const auto q = check(w, {{5, 5}, {10, 80}, {30, 80}, {30, 20}, {50, 20}, {50, 80}, {70, 80}, {70, 20}, {90, 20}, {105, 95}}, "slalom", &taut);
+  ASSERT_FALSE(q.empty());
+  // five inflection edges (into the first tip, between the tips of neighbouring pillars, out of
+  // the last), whose extensions are pairwise distinct lines: five links
+  EXPECT_EQ(q.size(), 6u) << str(q);
+  EXPECT_EQ(w.search->fewest({5, 5}, {105, 95}, w.h->word(taut), 3), 0);
+}
+
+// Small random scenes: rectangles and right triangles on a 0..12 grid.
+Scene random_scene(std::mt19937_64& rng) {
+  auto r = [&](int lo, int hi) { return lo + static_cast<int>(rng() % static_cast<std::uint64_t>(hi - lo + 1)); };
+  std::vector<geom::Polygon> ps;
+  const int n = r(1, 3);
+  for (int i = 0; i < n; ++i) {
+    const int x0 = r(1, 8), y0 = r(1, 8), w = r(1, 3), h = r(1, 3);
+    if (r(0, 2) == 0) {
+      ps.push_back(rect(x0, y0, x0 + w, y0 + h));
+    } else {
+      // a right triangle (counter-clockwise) in one of four orientations
+      geom::Ring t;
+      switch (r(0, 3)) {
+        case 0: t = {{x0, y0}, {x0 + w, y0}, {x0, y0 + h}}; break;
+        case 1: t = {{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + h}}; break;
+        case 2: t = {{x0 + w, y0}, {x0 + w, y0 + h}, {x0, y0 + h}}; break;
+        default: t = {{x0, y0}, {x0 + w, y0 + h}, {x0, y0 + h}}; break;
+      }
+      ps.push_back({t, {}});
+    }
+  }
+  return normalized({{0, 0}, {12, 12}}, ps);
+}
+
+TEST(MinLink, RandomSketchesAgainstTheReferences) {
+  long long paths = 0, searched = 0, small = 0, same = 0, fewer_than_taut = 0, wound = 0, failures = 0;
+  const int n = sanitized_share(300, 10);
+  for (int seed = 1; seed <= n; ++seed) {
+    std::mt19937_64 rng(static_cast<std::uint64_t>(seed) * 2654435761u);
+    Scene sc;
+    try {
+      sc = random_scene(rng);
+    } catch (const std::exception&) {
+      continue;
+    }
+    const oracle::L1Reference ref(sc.domain, sc.obstacles);
+    if (!ref.problems().empty()) continue;
+    const World w(sc);
+    if (!w.t.ok()) continue;
+    std::vector<Point> pts;
+    for (int x = 0; x <= 12; ++x)
+      for (int y = 0; y <= 12; ++y)
+        if (ref.is_free({x, y}) && ref.wedges_at({x, y}).size() == 1) pts.push_back({x, y});
+    if (pts.size() < 3) continue;
+    Sketcher sk{ref, *w.h, pts, rng};
+    for (int k = 0; k < 4; ++k) {
+      Path sketch = sk.walk(2 + static_cast<int>(rng() % 4));
+      const bool loops = k % 2 == 1 && sk.add_loops(sketch);
+      if (sketch.size() < 2 || sketch.front() == sketch.back()) continue;
+      Path taut;
+      std::string obs;
+      for (const auto& o : sc.obstacles) obs += str(o.outer) + " ";
+      const std::string where = "seed " + std::to_string(seed) + " sketch " + std::to_string(k) + " obstacles " + obs;
+      const bool failed_before = ::testing::Test::HasFailure();
+      const auto q = check(w, sketch, where, &taut);
+      if (!failed_before && ::testing::Test::HasFailure()) {
+        ASSERT_LT(++failures, 5) << "stopping after 5 failures";
+      }
+      if (q.empty()) continue;
+      ++paths;
+      wound += loops;
+      const int links = static_cast<int>(q.size()) - 1;
+      fewer_than_taut += links < static_cast<int>(taut.size()) - 1;
+      if (links > 4) continue;
+      ++searched;
+      std::vector<oracle::QPoint> better;
+      const int found = w.search->fewest(sketch.front(), sketch.back(), w.h->word(sketch), links - 1, &better);
+      if (found != 0) ++failures;
+      EXPECT_EQ(found, 0) << where << " sketch " << str(sketch) << " taut " << str(taut) << ": " << links
+                          << " links, but " << str(better) << " has " << found;
+      small += links <= 3;
+      if (links <= 3) same += w.search->fewest(sketch.front(), sketch.back(), w.h->word(sketch), links) == links;
+    }
+  }
+  std::printf("%lld min-link paths (%lld from winding sketches), %lld with fewer links than the shortest path; "
+              "%lld searched exhaustively for fewer links; of the %lld with at most 3 links, %lld matched by candidate lines\n",
+              paths, wound, fewer_than_taut, searched, small, same);
+  EXPECT_GE(paths, sanitized_share(600, 10));
+}
+
+// The wavefront tests' seeded layouts: every `taut gen` kind and the degenerate families (shared
+// coordinates, collinear edges, touching blockages, rings, pinches), larger than the scenes above,
+// so only the checks that need no search: free, same class, never more links than the shortest.
+TEST(MinLink, DegenerateFamiliesStayFreeAndInClass) {
+  long long paths = 0, pinched = 0;
+  const int n = sanitized_share(300, 10);
+  for (int seed = 1; seed <= n; ++seed) {
+    WavefrontCase c;
+    try {
+      c = make_wavefront_case(static_cast<std::uint64_t>(seed));
+    } catch (const std::exception&) {
+      continue;
+    }
+    const oracle::L1Reference ref(c.domain, c.obstacles);
+    if (!ref.problems().empty()) continue;
+    const World w(Scene{c.domain, c.obstacles});
+    ASSERT_TRUE(w.t.ok()) << "seed " << seed;
+    std::vector<Point> pts;
+    for (Point p : c.candidates)
+      if (ref.is_free(p)) pts.push_back(p);
+    bool pinch = false;
+    for (const auto& o : c.obstacles)
+      for (Point v : o.outer) {
+        const std::size_t k = ref.wedges_at(v).size();
+        pinch = pinch || k > 1;
+        if (k == 1) pts.push_back(v);
+      }
+    if (pts.size() < 3) continue;
+    std::mt19937_64 rng(static_cast<std::uint64_t>(seed) * 40503 + 11);
+    Sketcher sk{ref, *w.h, pts, rng};
+    for (int k = 0; k < 6; ++k) {
+      Path sketch = sk.walk(2 + static_cast<int>(rng() % 5));
+      if (k % 2 == 1) sk.add_loops(sketch);
+      if (sketch.size() < 2 || sketch.front() == sketch.back()) continue;
+      const bool failed_before = ::testing::Test::HasFailure();
+      const auto q = check(w, sketch, "seed " + std::to_string(seed) + " (" + c.family + ") sketch " + std::to_string(k));
+      ASSERT_FALSE(!failed_before && ::testing::Test::HasFailure()) << "seed " << seed;
+      paths += !q.empty();
+      pinched += !q.empty() && pinch;
+    }
+  }
+  std::printf("%lld min-link paths on the degenerate families (%lld in layouts with pinches)\n", paths, pinched);
+  EXPECT_GE(paths, sanitized_share(900, 10));
+}
+
+}  // namespace
+}  // namespace taut::test
