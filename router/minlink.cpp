@@ -323,18 +323,24 @@ MinLinkPath MinLinker::path(std::span<const geom::Point> taut) const {
     const RPoint rc0 = rp(c0);
     auto at = [&](const Rational& s) { return RPoint{rc0.x + s * Rational(d.x), rc0.y + s * Rational(d.y)}; };
     const ZVec next_dir = zvec(up, tp);
+    // The link runs along the next inflection edge u' -> t': the end (t' = q, true), or the
+    // next chain starts at t'.
+    auto on_to_next_inflection_edge = [&] {
+      if (jm + 1 == k) {
+        out.points.push_back(rp(tp));
+        return true;
+      }
+      j = jm + 1;
+      jm = chain_end(j);
+      d = next_dir;
+      return false;
+    };
 
     // Case 1 at once: the chain is the single vertex u' and the link bends there (or already
     // runs along the next inflection edge).
     if (j == jm) {
       if (!(sgn(cross(d, next_dir)) == 0 && sgn(dot(d, next_dir)) > 0)) out.points.push_back(rc0);
-      if (jm + 1 == k) {
-        out.points.push_back(rp(tp));
-        return out;
-      }
-      j = jm + 1;
-      jm = chain_end(j);
-      d = next_dir;
+      if (on_to_next_inflection_edge()) return out;
       continue;
     }
 
@@ -411,13 +417,7 @@ MinLinkPath MinLinker::path(std::span<const geom::Point> taut) const {
     const RPoint bend = at(best->s);
     out.points.push_back(bend);
     if (best->kind == 0) {
-      if (jm + 1 == k) {
-        out.points.push_back(rp(tp));
-        return out;
-      }
-      j = jm + 1;
-      jm = chain_end(j);
-      d = next_dir;
+      if (on_to_next_inflection_edge()) return out;
     } else {
       if (sgn(best->dir.x) == 0 && sgn(best->dir.y) == 0) throw std::logic_error("MinLinker: a zero link");
       j = best->c;
