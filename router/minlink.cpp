@@ -382,6 +382,7 @@ MinLinkPath MinLinker::path(std::span<const geom::Point> taut) const {
     for (std::int32_t bv : cands) {
       // (a vertex of the chain itself can block: a later turn of a chain that winds)
       const Point b = sw.P(bv);
+      std::optional<std::vector<Fan>> b_fans;  // made when a tangent through b is found
       for (std::size_t i = j + 1; i <= jm; ++i) {
         const ZVec e = zvec(b, taut[i]);
         if (sgn(e.x) == 0 && sgn(e.y) == 0) continue;
@@ -399,7 +400,8 @@ MinLinkPath MinLinker::path(std::span<const geom::Point> taut) const {
         if (ta >= 0) continue;
         // b's obstacle reaches into the unswept side (side -sigma of the segment)
         bool blocks = true;
-        for (const Fan& f : sw.fans(bv))
+        if (!b_fans) b_fans = sw.fans(bv);
+        for (const Fan& f : *b_fans)
           if (f.contains(neg(e)) && f.contains(e) && f.holds_half_ccw_of(sigma > 0 ? neg(e) : e)) blocks = false;
         if (!blocks) continue;
         if (sw.tangent(a, j, jm, sigma) != i) continue;

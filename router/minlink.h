@@ -34,9 +34,9 @@
 // that starts at the end of an extension (case 2), so all arithmetic here is in GMP rationals
 // (Boost.Multiprecision); no predicate is decided in floating point.
 //
-// Cost. Each sweep takes time linear in the triangles its extension and chain cross times the
-// chain's length (the candidates' tangents are found by a scan, not the paper's hull deque);
-// wires with long convex chains are quadratic in the chain.
+// Cost. Each sweep gathers the candidates of the whole rest of its chain and tries each against
+// every chain vertex (a scan, not the paper's hull deque), and a chain may take several sweeps:
+// up to cubic in the length of one convex chain in the worst case (linear in the paper).
 #pragma once
 
 #include <cstddef>

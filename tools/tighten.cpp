@@ -42,6 +42,7 @@ struct NetTightening {
   std::size_t min_links = 0;
   std::vector<router::MinLinkPath> min_link;
   bool loop = false;  // minimum-link loops (section 5.2) are not computed
+  bool min_link_failed = false;  // TIGHTEN-0008
 };
 
 std::string fixed3(double v) {
@@ -209,16 +210,25 @@ void add_tighten(CLI::App& app, int& status) {
           ok = false;
           continue;
         }
+        st.loop = st.loop || res.loop;
         if (res.contractible) {  // the other lines are still lifted: their errors are said
           contractible = true;
           continue;
         }
         st.taut += router::euclidean_length(r.points);
-        st.loop = st.loop || line.front() == line.back();
-        if (args->min_link && line.front() != line.back()) {
-          if (!min_linker) min_linker = std::make_unique<router::MinLinker>(wt.triangulation());
-          st.min_link.push_back(min_linker->path(r.points));
-          st.min_links += st.min_link.back().links();
+        if (args->min_link && !res.loop && !st.min_link_failed) {
+          // an optional statistic: a failure here must not cost the tightened layout
+          try {
+            if (!min_linker) min_linker = std::make_unique<router::MinLinker>(wt.triangulation());
+            st.min_link.push_back(min_linker->path(r.points));
+            st.min_links += st.min_link.back().links();
+          } catch (const std::exception& e) {
+            st.min_link_failed = true;
+            print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0008", layout->file, in.line_numbers[k], 0,
+                                          "net \"" + net.name + "\": no minimum-link path was found (" + e.what() +
+                                              "); its min_links is null"}},
+                              args->load.quiet);
+          }
         }
         if (res.no_staircase) {
           no_staircase = true;
@@ -322,7 +332,8 @@ void add_tighten(CLI::App& app, int& status) {
             for (const router::RPoint& p : m.points) pts.push_back({p.x.str(), p.y.str()});
             paths.push_back(pts);
           }
-          nets.back()["min_links"] = s.loop ? nlohmann::ordered_json() : nlohmann::ordered_json(s.min_links);
+          nets.back()["min_links"] =
+              s.loop || s.min_link_failed ? nlohmann::ordered_json() : nlohmann::ordered_json(s.min_links);
           nets.back()["min_link_wires"] = paths;
         }
       }
@@ -354,7 +365,7 @@ void add_tighten(CLI::App& app, int& status) {
                   << fixed3(s.after);
         if (c_oriented) std::cerr << " " << orientations << " (taut " << fixed3(s.taut) << ")";
         std::cerr << ", bends " << s.bends_before << " -> " << s.bends_after;
-        if (!s.min_link.empty()) std::cerr << ", minimum links " << s.min_links;
+        if (!s.min_link.empty() && !s.loop && !s.min_link_failed) std::cerr << ", minimum links " << s.min_links;
         std::cerr << '\n';
       }
       std::cerr << args->file << ": tightened " << done << " of " << layout->nets.size() << " nets, length "

@@ -84,8 +84,9 @@ bool segment_free(const QPoint& a, const QPoint& b, const geom::Box& D, std::spa
   }
   std::sort(ts.begin(), ts.end());
   ts.erase(std::unique(ts.begin(), ts.end()), ts.end());
-  // An obstacle vertex strictly inside the segment with edges leaving it on both sides: the
-  // segment either enters material there or, where obstacle corners touch (a pinch), slips
+  // An obstacle vertex strictly inside the segment with material on both sides of it (an edge
+  // leaving on each side, or an edge along the segment whose material lies on the other side):
+  // the segment either enters material there or, where obstacle corners touch (a pinch), slips
   // between touching blockages (FORMAT.md forbids it); either way it is not free.
   for (const auto& o : obstacles) {
     std::vector<const geom::Ring*> rs{&o.outer};
@@ -101,10 +102,20 @@ bool segment_free(const QPoint& a, const QPoint& b, const geom::Box& D, std::spa
           for (const geom::Ring* r2 : rs2)
             for (std::size_t k = 0; k < r2->size(); ++k) {
               if ((*r2)[k] != (*r)[i]) continue;
-              for (Point w : {(*r2)[(k + r2->size() - 1) % r2->size()], (*r2)[(k + 1) % r2->size()]}) {
-                const int sg = sgn(cross(rx, ry, q(w).x - v.x, q(w).y - v.y));
+              // material lies left of each directed ring edge: prev -> v and v -> next
+              const Point prev = (*r2)[(k + r2->size() - 1) % r2->size()], next = (*r2)[(k + 1) % r2->size()];
+              for (int e = 0; e < 2; ++e) {
+                const QPoint w = q(e == 0 ? prev : next);
+                const int sg = sgn(cross(rx, ry, w.x - v.x, w.y - v.y));
                 left = left || sg > 0;
                 right = right || sg < 0;
+                if (sg == 0) {
+                  // an edge along the segment: its material side, seen along the segment
+                  const mpq_class ux = e == 0 ? v.x - w.x : w.x - v.x, uy = e == 0 ? v.y - w.y : w.y - v.y;
+                  const bool along = ux * rx + uy * ry > 0;  // the edge runs the segment's way
+                  left = left || along;
+                  right = right || !along;
+                }
               }
             }
         }

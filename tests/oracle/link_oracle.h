@@ -6,8 +6,9 @@
 // minus the obstacles' interiors; touching a boundary is allowed). The segment is cut at every
 // point where it meets an obstacle edge (or where an edge on its line begins or ends); every
 // piece between two cuts is then either inside an obstacle or not, decided at its midpoint. A
-// segment that passes through an obstacle vertex with edges leaving it on both sides is not free
-// either: it enters material there, or slips between blockages whose corners touch (FORMAT.md).
+// segment that passes through an obstacle vertex with material on both sides of it (edges leaving
+// on both sides, or an edge along it with its material on the other side) is not free either: it
+// enters material there, or slips between blockages that touch (FORMAT.md).
 //
 // LinkSearch: the fewest links of a path from p to q in a given homotopy class (reduced cut word,
 // oracle/homotopy.h) whose links lie on candidate lines: the first through p and another

@@ -110,6 +110,17 @@ TEST(MinLink, HandCases) {
   }
 }
 
+TEST(MinLink, ExtensionRunsPastAGrazeOnTheUnsweptSide) {
+  // Over a square: two links, bending at (50,65) above it. The first link's extension touches a
+  // triangle's tip at (44,62) with the triangle on its far side: it must run on past it (stopping
+  // there would make the links p -> (44,62) -> (60,60) -> q).
+  const World w(normalized({{0, 0}, {100, 100}}, {rect(40, 40, 60, 60), {{{44, 62}, {46, 70}, {40, 70}}, {}}}));
+  ASSERT_TRUE(w.t.ok());
+  const auto q = check(w, {{20, 50}, {40, 61}, {60, 61}, {80, 50}}, "graze");
+  ASSERT_EQ(q.size(), 3u) << str(q);
+  EXPECT_TRUE(q[1].x == 50 && q[1].y == 65) << str(q);
+}
+
 TEST(MinLink, SlalomBendsOncePerPillar) {
   // pillars alternating from the bottom and the top: the shortest path turns on every pillar
   // tip in alternation, so every edge between tips is an inflection edge and a link of its own.
@@ -124,7 +135,8 @@ TEST(MinLink, SlalomBendsOncePerPillar) {
   // five inflection edges (into the first tip, between the tips of neighbouring pillars, out of
   // the last), whose extensions are pairwise distinct lines: five links
   EXPECT_EQ(q.size(), 6u) << str(q);
-  EXPECT_EQ(w.search->fewest({5, 5}, {105, 95}, w.h->word(taut), 3), 0);
+  // (the three-link search takes seconds under the sanitizers: two links there)
+  EXPECT_EQ(w.search->fewest({5, 5}, {105, 95}, w.h->word(taut), kSanitized ? 2 : 3), 0);
 }
 
 // Small random scenes: rectangles and right triangles on a 0..12 grid.
@@ -152,8 +164,8 @@ Scene random_scene(std::mt19937_64& rng) {
 }
 
 TEST(MinLink, RandomSketchesAgainstTheReferences) {
-  long long paths = 0, searched = 0, small = 0, same = 0, fewer_than_taut = 0, wound = 0, failures = 0;
-  const int n = sanitized_share(300, 10);
+  long long paths = 0, searched = 0, small = 0, same = 0, fewer_than_taut = 0, wound = 0;
+  const int n = sanitized_share(300, 20);
   for (int seed = 1; seed <= n; ++seed) {
     std::mt19937_64 rng(static_cast<std::uint64_t>(seed) * 2654435761u);
     Scene sc;
@@ -180,11 +192,8 @@ TEST(MinLink, RandomSketchesAgainstTheReferences) {
       std::string obs;
       for (const auto& o : sc.obstacles) obs += str(o.outer) + " ";
       const std::string where = "seed " + std::to_string(seed) + " sketch " + std::to_string(k) + " obstacles " + obs;
-      const bool failed_before = ::testing::Test::HasFailure();
       const auto q = check(w, sketch, where, &taut);
-      if (!failed_before && ::testing::Test::HasFailure()) {
-        ASSERT_LT(++failures, 5) << "stopping after 5 failures";
-      }
+      ASSERT_FALSE(::testing::Test::HasFailure()) << "stopping at the first failing sketch";
       if (q.empty()) continue;
       ++paths;
       wound += loops;
@@ -194,8 +203,7 @@ TEST(MinLink, RandomSketchesAgainstTheReferences) {
       ++searched;
       std::vector<oracle::QPoint> better;
       const int found = w.search->fewest(sketch.front(), sketch.back(), w.h->word(sketch), links - 1, &better);
-      if (found != 0) ++failures;
-      EXPECT_EQ(found, 0) << where << " sketch " << str(sketch) << " taut " << str(taut) << ": " << links
+      ASSERT_EQ(found, 0) << where << " sketch " << str(sketch) << " taut " << str(taut) << ": " << links
                           << " links, but " << str(better) << " has " << found;
       small += links <= 3;
       if (links <= 3) same += w.search->fewest(sketch.front(), sketch.back(), w.h->word(sketch), links) == links;
@@ -204,7 +212,10 @@ TEST(MinLink, RandomSketchesAgainstTheReferences) {
   std::printf("%lld min-link paths (%lld from winding sketches), %lld with fewer links than the shortest path; "
               "%lld searched exhaustively for fewer links; of the %lld with at most 3 links, %lld matched by candidate lines\n",
               paths, wound, fewer_than_taut, searched, small, same);
-  EXPECT_GE(paths, sanitized_share(600, 10));
+  EXPECT_GE(paths, sanitized_share(600, 20));
+  // the search is not vacuous: its lines reach the router's count almost always (708 of 721 on
+  // the Release tree's scenes; the rest need a link from an extension's end)
+  EXPECT_GE(same * 100, small * 95);
 }
 
 // The wavefront tests' seeded layouts: every `taut gen` kind and the degenerate families (shared
@@ -241,9 +252,8 @@ TEST(MinLink, DegenerateFamiliesStayFreeAndInClass) {
       Path sketch = sk.walk(2 + static_cast<int>(rng() % 5));
       if (k % 2 == 1) sk.add_loops(sketch);
       if (sketch.size() < 2 || sketch.front() == sketch.back()) continue;
-      const bool failed_before = ::testing::Test::HasFailure();
       const auto q = check(w, sketch, "seed " + std::to_string(seed) + " (" + c.family + ") sketch " + std::to_string(k));
-      ASSERT_FALSE(!failed_before && ::testing::Test::HasFailure()) << "seed " << seed;
+      ASSERT_FALSE(::testing::Test::HasFailure()) << "seed " << seed;
       paths += !q.empty();
       pinched += !q.empty() && pinch;
     }
