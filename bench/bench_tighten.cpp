@@ -14,10 +14,10 @@
 // largest size, the time per sleeve triangle bucketed by sleeve length (growth against sleeve
 // length: flat means linear). `online_s`: the same sketches fed point by point to
 // router::OnlineTightener with the current path read after every point (a path per point, so
-// it is expected to cost more than one tightening at the end). Then, once per size, the time to
-// write the first 1,000 taut wires as rectilinear staircases (router::c_oriented, one run, with
-// the staircase search budget `taut tighten` uses, 2^12; TAUT_STAIR_WORK=N sets another), and
-// their minimum-link paths (router::MinLinker: time, links against the shortest wire's, and
+// it is expected to cost more than one tightening at the end). Then the time to write every taut
+// wire in rectilinear and in octilinear directions (router::c_oriented: the fewest-link
+// staircases of the class, best of R, as a ratio to tightening them), and the minimum-link paths
+// of the first 1,000 (router::MinLinker: time, links against the shortest wire's, and
 // the longest exact coordinate written out). Targets (issue #5): funnel >= 10^7 triangles/s; 10^4 wires on a
 // 10^5-vertex layout under 10 s.
 //
@@ -150,27 +150,30 @@ int main(int argc, char** argv) {
           }
         },
         reps);
-    // rectilinear output: each taut wire written as the fewest-link staircase of its class
-    taut::router::StaircaseOptions so{std::size_t{1} << 12};  // the budget `taut tighten` uses
-    if (const char* w = std::getenv("TAUT_STAIR_WORK")) so.max_work_per_search = std::strtoull(w, nullptr, 10);
-    const taut::router::StaircaseBuilder sb(D, b.norm.obstacles, so);
+    // rectilinear and octilinear output: each taut wire written as the fewest-link staircase of
+    // the class's shortest c-oriented paths (StaircaseBuilder::staircase_in_class; its search
+    // budget is not used)
+    const taut::router::StaircaseBuilder sb(D, b.norm.obstacles);
     std::vector<std::vector<Point>> taut_paths;
-    for (const auto& sk : sketches) {  // the first 1,000 (the staircase search is the slow part)
-      if (taut_paths.size() == 1000) break;
-      taut_paths.push_back(tight.tighten(sk).points);
-    }
-    int c_missing = 0, c_unproven = 0;
-    const double t_rect = seconds_of(
-        [&] {
-          c_missing = c_unproven = 0;
-          for (const auto& t : taut_paths) {
-            const auto c = taut::router::c_oriented(tight, sb, t, taut::router::StaircaseStyle::Rectilinear);
-            c_missing += c.points.empty();
-            c_unproven += !c.points.empty() && !(c.through_cuts && c.complete);
-            sink = sink + static_cast<std::int64_t>(c.points.size());
-          }
-        },
-        1);
+    for (const auto& sk : sketches) taut_paths.push_back(tight.tighten(sk).points);
+    int c_missing[2] = {0, 0};
+    long long c_links[2] = {0, 0};
+    double t_c[2] = {0, 0};
+    for (int o = 0; o < 2; ++o)
+      t_c[o] = seconds_of(
+          [&] {
+            c_missing[o] = 0;
+            c_links[o] = 0;
+            for (const auto& t : taut_paths) {
+              const auto c = taut::router::c_oriented(
+                  tight, sb, t, o == 0 ? taut::router::StaircaseStyle::Rectilinear : taut::router::StaircaseStyle::Octilinear);
+              c_missing[o] += c.points.empty();
+              if (!c.points.empty()) c_links[o] += static_cast<long long>(c.points.size()) - 1;
+              sink = sink + static_cast<std::int64_t>(c.points.size());
+            }
+          },
+          reps);
+    taut_paths.resize(std::min<std::size_t>(taut_paths.size(), 1000));  // min-link: the first 1,000
     // minimum-link paths of the same taut wires (router::MinLinker, exact rationals)
     const taut::router::MinLinker ml(tri);
     long long ml_links = 0, taut_links = 0;
@@ -203,12 +206,13 @@ int main(int argc, char** argv) {
                 tris.size(), static_cast<long long>(crossings), static_cast<long long>(sleeve_tris), t_tighten,
                 t_tighten / t_pass, t_funnel, static_cast<double>(sleeve_tris) / t_funnel, t_funnel / t_pass, t_online,
                 t_online / t_tighten, failures);
-    std::printf("%9s rectilinear output of the first %zu taut wires: %.3f s (%.1f ms per wire, %.0f x tightening one), "
-                "%d without a staircase, %d with the fewest links not proven\n",
-                "", taut_paths.size(), t_rect, t_rect / static_cast<double>(taut_paths.size()) * 1e3,
-                t_rect / static_cast<double>(taut_paths.size()) / (t_tighten / static_cast<double>(sketches.size())),
-                c_missing, c_unproven);
-    std::printf("%9s minimum-link paths of the same wires: %.3f s (%.2f ms per wire, %.1f x tightening one), "
+    for (int o = 0; o < 2; ++o)
+      std::printf("%9s %s output of the %zu taut wires: %.3f s (%.3f ms per wire, %.1f x tightening one), "
+                  "%d without a lattice staircase in the class, %.2f links per wire\n",
+                  "", o == 0 ? "rectilinear" : "octilinear", sketches.size(), t_c[o],
+                  t_c[o] / static_cast<double>(sketches.size()) * 1e3, t_c[o] / t_tighten, c_missing[o],
+                  static_cast<double>(c_links[o]) / static_cast<double>(sketches.size() - static_cast<std::size_t>(c_missing[o])));
+    std::printf("%9s minimum-link paths of the first 1,000 wires: %.3f s (%.2f ms per wire, %.1f x tightening one), "
                 "%.2f links per wire against %.2f for the shortest, longest coordinate %zu characters\n",
                 "", t_minlink, t_minlink / static_cast<double>(taut_paths.size()) * 1e3,
                 t_minlink / static_cast<double>(taut_paths.size()) / (t_tighten / static_cast<double>(sketches.size())),

@@ -1,6 +1,7 @@
 #include "router/staircase.h"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <unordered_map>
 #include <utility>
@@ -720,6 +721,250 @@ LinkSolution solve_link(Workspace& ws, Point a, Point b, StaircaseStyle style, b
   return s;
 }
 
+// ---- One piece of a taut path, in its class (c-oriented output, router/tighten.h) ----
+//
+// alpha runs from a to b with every segment strictly inside the cone of the frame's two
+// directions, so in frame coordinates (u along d[0], v along d[1]; a = (0,0), b = (U,V)) it is
+// a strictly increasing function v = alpha(u). A staircase from a to b of the same length is
+// monotone in u and v inside the box [0,U] x [0,V], and it is in alpha's class exactly when
+// every obstacle point of the box lies on the same side of it as of alpha (the region between
+// two monotone paths with equal ends holds no obstacle point iff they are homotopic; an obstacle
+// cannot cross either path). For an obstacle point s above alpha that means: the staircase does
+// not enter the open quadrant {u < s.u, v > s.v}; below: not {u > s.u, v < s.v}. So the
+// staircases of the class are the monotone lattice paths of F = box minus those open quadrants,
+// where "above" and "below" are taken over the obstacle edges clipped to the box (an interior
+// point's quadrant lies in the quadrant of the edge point its down-right (up-left) ray meets
+// first; that point is in the box and on the same side). Every monotone path in F is free: an
+// obstacle's interior lies in such quadrants, a point on an edge is touched only from its free
+// side, and a pinch between two obstacles of one side is passed only on their common free side.
+//
+// F is a staircase polygon: a run along u never enters an "above" quadrant and a run along v
+// never a "below" one, so each run goes as far as the other side allows, and the greedy that
+// alternates maximal runs (capped at b, floored to the lattice) reaches b with the fewest links
+// for its first direction (each of its turns dominates the same turn of any other staircase).
+// Its last direction is then fixed by parity; the other last direction would cost a link more,
+// which a joint saves at most once, so the DP over pieces loses nothing without it.
+struct ClipWall {
+  std::array<i64, 2> p{}, q{};   // frame coordinates of the edge's ends ([0] = u, [1] = v)
+  i128 n0 = 0, d0 = 1, n1 = 1, d1 = 1;  // the part inside the box: t in [n0/d0, n1/d1]
+  std::array<i64, 2> lo{}, hi{};  // per coordinate: floor of the least, ceiling of the greatest
+};
+
+i128 floor_frac(i128 c, i128 d) { return c >= 0 ? c / d : -((-c + d - 1) / d); }  // d > 0
+
+// a/b < c/d for d's > 0
+bool frac_less(i128 a, i128 b, i128 c, i128 d) { return a * d < c * b; }
+
+class PieceSolver {
+ public:
+  PieceSolver(Workspace& ws, const Frame& fr, std::span<const Point> alpha) : fr_(fr) {
+    for (const Point p : alpha) {
+      au_.push_back(fr.u_of(p));
+      av_.push_back(fr.v_of(p));
+    }
+    lim_ = fr.lim;
+    const Box r{{std::min(fr.a.x, fr.b.x), std::min(fr.a.y, fr.b.y)},
+                {std::max(fr.a.x, fr.b.x), std::max(fr.a.y, fr.b.y)}};
+    for (const std::uint32_t id : ws.im().index.edges_in_box(r)) {
+      const Segment& e = ws.im().index.edge(id);
+      ClipWall w;
+      w.p = {fr.u_of(e.a), fr.v_of(e.a)};
+      w.q = {fr.u_of(e.b), fr.v_of(e.b)};
+      if (!clip(w)) continue;
+      for (int c = 0; c < 2; ++c) {
+        const i128 e0 = at(w, c, w.n0, w.d0), e1 = at(w, c, w.n1, w.d1);
+        const i128 f0 = floor_frac(e0, w.d0), f1 = floor_frac(e1, w.d1);
+        const i128 g0 = -floor_frac(-e0, w.d0), g1 = -floor_frac(-e1, w.d1);
+        w.lo[c] = static_cast<i64>(std::min(f0, f1));
+        w.hi[c] = static_cast<i64>(std::max(g0, g1));
+      }
+      // runs along u meet the walls below alpha, runs along v those above
+      (side_of(w) > 0 ? walls_[1] : walls_[0]).push_back(w);
+    }
+    for (int k = 0; k < 2; ++k)
+      std::sort(walls_[k].begin(), walls_[k].end(), [k](const ClipWall& x, const ClipWall& y) { return x.lo[k] < y.lo[k]; });
+  }
+
+  // The greedy staircase leaving a along d[first]: its points (frame), or empty when it gets stuck.
+  std::vector<std::array<i64, 2>> greedy(int first) const {
+    std::vector<std::array<i64, 2>> pts{{0, 0}};
+    std::array<i64, 2> pos{0, 0};
+    // the walls that can still stop a run: positions only grow, so a wall that lies wholly at or
+    // below pos in the other coordinate never stops a run of this greedy again
+    std::array<std::vector<std::uint32_t>, 2> live;
+    for (int k = 0; k < 2; ++k)
+      for (std::uint32_t i = 0; i < walls_[k].size(); ++i) live[k].push_back(i);
+    for (int k = first;; k = 1 - k) {
+      const i64 r = reach(k, pos, live[k]);
+      if (r <= pos[k]) return {};  // stuck (or a first run of length 0)
+      pos[k] = r;
+      pts.push_back(pos);
+      if (pos[0] == lim_[0] && pos[1] == lim_[1]) return pts;
+    }
+  }
+
+ private:
+  // Clip the frame segment to the box; false when nothing of it is inside.
+  bool clip(ClipWall& w) const {
+    for (int k = 0; k < 2; ++k) {
+      const i64 dq = w.q[k] - w.p[k];
+      if (dq == 0) {
+        if (w.p[k] < 0 || w.p[k] > lim_[k]) return false;
+        continue;
+      }
+      // t where the coordinate is 0 and lim: (0 - p)/dq, (lim - p)/dq
+      i128 na = -i128{w.p[k]}, nb = i128{lim_[k]} - w.p[k], d = dq;
+      if (d < 0) {
+        na = -na;
+        nb = -nb;
+        d = -d;
+      }
+      if (na > nb) std::swap(na, nb);
+      if (frac_less(w.n0, w.d0, na, d)) {
+        w.n0 = na;
+        w.d0 = d;
+      }
+      if (frac_less(nb, d, w.n1, w.d1)) {
+        w.n1 = nb;
+        w.d1 = d;
+      }
+    }
+    return !frac_less(w.n1, w.d1, w.n0, w.d0);
+  }
+
+  // Coordinate k at parameter n/d, as a fraction over d.
+  static i128 at(const ClipWall& w, int k, i128 n, i128 d) { return i128{w.p[k]} * d + n * (w.q[k] - w.p[k]); }
+
+  // Sign of (point - alpha) in v at the point's u: the point is (X/D, Y/D), 0 <= X/D <= U.
+  int side_of_point(i128 X, i128 Y, i128 D) const {
+    // the segment of alpha over u: the last vertex with au <= u (not the very last one)
+    std::size_t lo = 0, hi = au_.size() - 1;  // invariant: au[lo] <= u, answer in [lo, hi)
+    while (hi - lo > 1) {
+      const std::size_t mid = (lo + hi) / 2;
+      if (i128{au_[mid]} * D <= X) lo = mid;
+      else hi = mid;
+    }
+    const i128 du = au_[lo + 1] - au_[lo], dv = av_[lo + 1] - av_[lo];
+    const i128 s = (Y - i128{av_[lo]} * D) * du - (X - i128{au_[lo]} * D) * dv;
+    return (s > 0) - (s < 0);
+  }
+
+  // +1: the wall lies above alpha (larger v), -1: below. Walls do not cross alpha (it is free),
+  // so the sign of any point off alpha decides; alpha's vertices are the only places where the
+  // difference bends, so the clipped ends and the vertices between them are enough. A wall
+  // along alpha: the side of its obstacle (on the left of the edge; the frame keeps orientation
+  // when det = +1).
+  int side_of(const ClipWall& w) const {
+    for (const auto& [n, d] : {std::pair{w.n0, w.d0}, std::pair{w.n1, w.d1}}) {
+      const int s = side_of_point(at(w, 0, n, d), at(w, 1, n, d), d);
+      if (s != 0) return s;
+    }
+    const i64 du = w.q[0] - w.p[0], dv = w.q[1] - w.p[1];
+    if (du != 0) {
+      // alpha's vertices strictly between the clipped ends' u
+      const i128 ua = at(w, 0, w.n0, w.d0), ub = at(w, 0, w.n1, w.d1);
+      const bool a_first = frac_less(ua, w.d0, ub, w.d1);
+      const i128 lo_n = a_first ? ua : ub, lo_d = a_first ? w.d0 : w.d1;
+      const i128 hi_n = a_first ? ub : ua, hi_d = a_first ? w.d1 : w.d0;
+      // au is strictly increasing: the vertices with lo < au < hi form one run
+      auto j = static_cast<std::size_t>(
+          std::partition_point(au_.begin(), au_.end(), [&](i64 u) { return i128{u} * lo_d <= lo_n; }) - au_.begin());
+      for (; j < au_.size() && i128{au_[j]} * hi_d < hi_n; ++j) {
+        // the wall's v at u = au[j] against av[j]
+        const i128 s = ((i128{w.p[1]} - av_[j]) * du + (i128{au_[j]} - w.p[0]) * dv) * (du > 0 ? 1 : -1);
+        if (s != 0) return s > 0 ? 1 : -1;
+      }
+    }
+    const bool left_in_frame = fr_.det > 0;
+    const bool with_alpha = du > 0 || (du == 0 && dv > 0);
+    return left_in_frame == with_alpha ? 1 : -1;
+  }
+
+  // The farthest coordinate k a run along d[k] from pos reaches (floored, capped at lim): a run
+  // along u is stopped by walls below alpha that rise above pos.v, one along v by walls above
+  // alpha that reach right of pos.u.
+  // `live`: indices into walls_[k] in the order of lo[k]; the scan stops at the first wall that
+  // cannot beat the best so far, and drops those that can never stop a run again.
+  i64 reach(int k, const std::array<i64, 2>& pos, std::vector<std::uint32_t>& live) const {
+    const int o = 1 - k;
+    i64 best = lim_[k];
+    std::size_t kept = 0, i = 0;
+    for (; i < live.size(); ++i) {
+      const ClipWall& w = walls_[k][live[i]];
+      if (w.lo[k] >= best) break;
+      if (w.hi[o] <= pos[o]) continue;  // dropped
+      live[kept++] = live[i];
+      const i128 c0 = at(w, o, w.n0, w.d0), c1 = at(w, o, w.n1, w.d1);
+      const bool in0 = c0 > i128{pos[o]} * w.d0, in1 = c1 > i128{pos[o]} * w.d1;
+      if (!in0 && !in1) continue;
+      // the closure of {t in [t0, t1] : coordinate o > pos[o]}: its ends
+      i128 sn0 = w.n0, sd0 = w.d0, sn1 = w.n1, sd1 = w.d1;
+      if (!in0 || !in1) {
+        const i128 dq = w.q[o] - w.p[o];  // nonzero: the ends differ in o
+        i128 n = i128{pos[o]} - w.p[o], d = dq;
+        if (d < 0) {
+          n = -n;
+          d = -d;
+        }
+        if (!in0) {
+          sn0 = n;
+          sd0 = d;
+        } else {
+          sn1 = n;
+          sd1 = d;
+        }
+      }
+      for (const auto& [n, d] : {std::pair{sn0, sd0}, std::pair{sn1, sd1}}) {
+        const i128 f = floor_frac(at(w, k, n, d), d);
+        if (f < best) best = static_cast<i64>(f);
+      }
+    }
+    if (kept != i) live.erase(live.begin() + static_cast<std::ptrdiff_t>(kept), live.begin() + static_cast<std::ptrdiff_t>(i));
+    return best;
+  }
+
+  const Frame& fr_;
+  std::vector<i64> au_, av_;
+  std::array<i64, 2> lim_{};
+  std::array<std::vector<ClipWall>, 2> walls_;  // [0]: below alpha, [1]: above
+};
+
+// One piece (alpha from a to b, every segment strictly inside one cone of the style) in its class.
+LinkSolution solve_piece(Workspace& ws, std::span<const Point> alpha, StaircaseStyle style) {
+  const Point a = alpha.front(), b = alpha.back();
+  LinkSolution s;
+  const i64 dx = i64{b.x} - a.x, dy = i64{b.y} - a.y;
+  const i64 sx = sgn(dx), sy = sgn(dy), ax = std::abs(dx), ay = std::abs(dy);
+  std::array<Dir, 2> d;
+  if (style == StaircaseStyle::Rectilinear) d = {Dir{sx, 0}, Dir{0, sy}};
+  else if (ax > ay) d = {Dir{sx, 0}, Dir{sx, sy}};
+  else d = {Dir{0, sy}, Dir{sx, sy}};
+  s.d = d;
+  ++ws.stats().links;
+  Frame fr;
+  fr.a = a;
+  fr.b = b;
+  fr.d = d;
+  fr.det = static_cast<i64>(cross(d[0], d[1]));
+  fr.lim = {fr.u_of(b), fr.v_of(b)};
+  for (int k = 0; k < 2; ++k) {
+    s.start_wedge[k] = ws.at(a).wedge_of(d[k]);
+    s.end_wedge[k] = ws.at(b).wedge_of(neg(d[k]));
+  }
+  const PieceSolver solver(ws, fr, alpha);
+  for (int f = 0; f < 2; ++f) {
+    if (s.start_wedge[f] < 0) continue;
+    const std::vector<std::array<i64, 2>> g = solver.greedy(f);
+    if (g.empty()) continue;
+    const int links = static_cast<int>(g.size()) - 1;
+    const int l = (links % 2 == 1) ? f : 1 - f;
+    if (s.end_wedge[l] < 0) continue;
+    s.bends[f][l] = links - 1;
+    for (const auto& p : g) s.path[f][l].push_back(fr.at(p[0], p[1]));
+  }
+  return s;
+}
+
 // Drop repeated points and points where the direction does not change.
 std::vector<Point> simplify(const std::vector<Point>& in) {
   std::vector<Point> out;
@@ -729,6 +974,69 @@ std::vector<Point> simplify(const std::vector<Point>& in) {
       out.back() = p;
     else
       out.push_back(p);
+  }
+  return out;
+}
+
+// The links' staircases joined: a DP over the links, state = (first, last) option of the current
+// link; joints cost one bend when the arrival and departure directions differ and need one wedge
+// at the joint. Then a defensive re-check of the whole polyline.
+std::optional<std::vector<Point>> join_links(Workspace& ws, const std::vector<LinkSolution>& sol) {
+  const std::size_t m = sol.size();
+  constexpr int kInf = std::numeric_limits<int>::max() / 4;
+  struct Cell {
+    int cost = kInf;
+    int prev = -1;  // option index f * 2 + l of the previous link
+  };
+  std::vector<std::array<Cell, 4>> dp(m);
+  for (std::size_t i = 0; i < m; ++i) {
+    const LinkSolution& s = sol[i];
+    for (int f = 0; f < 2; ++f)
+      for (int l = 0; l < 2; ++l) {
+        if (s.bends[f][l] < 0) continue;
+        Cell& c = dp[i][f * 2 + l];
+        if (i == 0) {
+          c.cost = s.bends[f][l];
+          continue;
+        }
+        const LinkSolution& p = sol[i - 1];
+        for (int pf = 0; pf < 2; ++pf)
+          for (int pl = 0; pl < 2; ++pl) {
+            const Cell& pc = dp[i - 1][pf * 2 + pl];
+            if (pc.cost >= kInf) continue;
+            if (p.end_wedge[pl] != s.start_wedge[f]) continue;  // both >= 0 here
+            const int joint = same_direction(p.d[pl], s.d[f]) ? 0 : 1;
+            const int total = pc.cost + joint + s.bends[f][l];
+            if (total < c.cost) c = {total, pf * 2 + pl};
+          }
+      }
+  }
+  int best = -1;
+  for (int o = 0; o < 4; ++o)
+    if (dp[m - 1][o].cost < kInf && (best < 0 || dp[m - 1][o].cost < dp[m - 1][best].cost)) best = o;
+  if (best < 0) return std::nullopt;
+  std::vector<int> choice(m);
+  for (std::size_t i = m; i-- > 0;) {
+    choice[i] = best;
+    best = dp[i][best].prev;
+  }
+  std::vector<Point> out;
+  for (std::size_t i = 0; i < m; ++i) {
+    const std::vector<Point>& p = sol[i].path[choice[i] / 2][choice[i] % 2];
+    out.insert(out.end(), p.begin(), p.end());
+  }
+  out = simplify(out);
+
+  // Defensive re-check of the final polyline with the general segment test (long segments,
+  // joints merged): a failure here would be a bug, reported as "no path" rather than a wrong one.
+  for (std::size_t i = 0; i + 1 < out.size(); ++i) {
+    const Dir fwd = dir(out[i], out[i + 1]);
+    const WedgeMap& w = ws.at(out[i]);
+    const int wf = w.wedge_of(fwd);
+    if (wf < 0) return std::nullopt;
+    if (i > 0 && w.wedge_of(dir(out[i], out[i - 1])) != wf) return std::nullopt;
+    if (!ws.segment_ok(out[i], out[i + 1])) return std::nullopt;
+    if (ws.at(out[i + 1]).wedge_of(neg(fwd)) < 0) return std::nullopt;
   }
   return out;
 }
@@ -799,64 +1107,37 @@ std::optional<std::vector<Point>> StaircaseBuilder::staircase(std::span<const Po
     sol.push_back(solve_link(ws, pts[i], pts[i + 1], style, false, joints));
   }
 
-  // DP over links: state = (first, last) option of the current link; joints cost one bend
-  // when the arrival and departure directions differ and need one wedge at the joint.
-  constexpr int kInf = std::numeric_limits<int>::max() / 4;
-  struct Cell {
-    int cost = kInf;
-    int prev = -1;  // option index f * 2 + l of the previous link
-  };
-  std::vector<std::array<Cell, 4>> dp(m);
-  for (std::size_t i = 0; i < m; ++i) {
-    const LinkSolution& s = sol[i];
-    for (int f = 0; f < 2; ++f)
-      for (int l = 0; l < 2; ++l) {
-        if (s.bends[f][l] < 0) continue;
-        Cell& c = dp[i][f * 2 + l];
-        if (i == 0) {
-          c.cost = s.bends[f][l];
-          continue;
-        }
-        const LinkSolution& p = sol[i - 1];
-        for (int pf = 0; pf < 2; ++pf)
-          for (int pl = 0; pl < 2; ++pl) {
-            const Cell& pc = dp[i - 1][pf * 2 + pl];
-            if (pc.cost >= kInf) continue;
-            if (p.end_wedge[pl] != s.start_wedge[f]) continue;  // both >= 0 here
-            const int joint = same_direction(p.d[pl], s.d[f]) ? 0 : 1;
-            const int total = pc.cost + joint + s.bends[f][l];
-            if (total < c.cost) c = {total, pf * 2 + pl};
-          }
-      }
-  }
-  int best = -1;
-  for (int o = 0; o < 4; ++o)
-    if (dp[m - 1][o].cost < kInf && (best < 0 || dp[m - 1][o].cost < dp[m - 1][best].cost)) best = o;
-  if (best < 0) return std::nullopt;
-  std::vector<int> choice(m);
-  for (std::size_t i = m; i-- > 0;) {
-    choice[i] = best;
-    best = dp[i][best].prev;
-  }
-  std::vector<Point> out;
-  for (std::size_t i = 0; i < m; ++i) {
-    const std::vector<Point>& p = sol[i].path[choice[i] / 2][choice[i] % 2];
-    out.insert(out.end(), p.begin(), p.end());
-  }
-  out = simplify(out);
+  return join_links(ws, sol);
+}
 
-  // Defensive re-check of the final polyline with the general segment test (long segments,
-  // joints merged): a failure here would be a bug, reported as "no path" rather than a wrong one.
-  for (std::size_t i = 0; i + 1 < out.size(); ++i) {
-    const Dir fwd = dir(out[i], out[i + 1]);
-    const WedgeMap& w = ws.at(out[i]);
-    const int wf = w.wedge_of(fwd);
-    if (wf < 0) return std::nullopt;
-    if (i > 0 && w.wedge_of(dir(out[i], out[i - 1])) != wf) return std::nullopt;
-    if (!ws.segment_ok(out[i], out[i + 1])) return std::nullopt;
-    if (ws.at(out[i + 1]).wedge_of(neg(fwd)) < 0) return std::nullopt;
+std::optional<std::vector<Point>> StaircaseBuilder::staircase_in_class(std::span<const Point> taut,
+                                                                       std::span<const std::size_t> cuts,
+                                                                       StaircaseStyle style,
+                                                                       StaircaseStats* stats) const {
+  StaircaseStats local;
+  StaircaseStats& st = stats ? *stats : local;
+  if (taut.empty() || cuts.size() < 2 || cuts.front() != 0 || cuts.back() != taut.size() - 1)
+    return std::nullopt;
+  for (const Point p : taut)
+    if (!impl_->in_domain(p)) return std::nullopt;
+  if (!impl_->point_free(taut.front())) return std::nullopt;
+  Workspace ws(*impl_, st);
+  std::vector<LinkSolution> sol;
+  sol.reserve(cuts.size() - 1);
+  for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+    const std::size_t i0 = cuts[k], i1 = cuts[k + 1];
+    if (i1 <= i0) return std::nullopt;
+    const Point a = taut[i0], b = taut[i1];
+    const i64 dx = i64{b.x} - a.x, dy = i64{b.y} - a.y;
+    const bool straight = dx == 0 || dy == 0 || (style == StaircaseStyle::Octilinear && std::abs(dx) == std::abs(dy));
+    if (straight) {
+      if (i1 != i0 + 1) return std::nullopt;  // a piece along a basis direction is one segment
+      sol.push_back(solve_link(ws, a, b, style, false, 3));
+    } else {
+      sol.push_back(solve_piece(ws, taut.subspan(i0, i1 - i0 + 1), style));
+    }
   }
-  return out;
+  return join_links(ws, sol);
 }
 
 }  // namespace taut::router

@@ -129,6 +129,19 @@ class StaircaseBuilder {
                                                     StaircaseStyle style,
                                                     StaircaseStats* stats = nullptr) const;
 
+  // c-oriented output of a Euclidean taut path (router::c_oriented): `taut` is the shortest path
+  // of its class, `cuts` the indices (first 0, last taut.size() - 1) of its points where the
+  // tangent is a basis direction (Lemma 6.3), so between two cuts every segment lies strictly
+  // inside one cone of the style, or the piece is one segment along a basis direction. Each
+  // piece gets the staircase with the fewest links among those of its class (same length, the
+  // same side of every blockage; see "One piece of a taut path" in staircase.cpp: exact, no
+  // search budget), joined by the DP. nullopt: some piece has no lattice staircase in its class
+  // (sloped blockages), or the pieces cannot be joined (pinches at a cut).
+  std::optional<std::vector<geom::Point>> staircase_in_class(std::span<const geom::Point> taut,
+                                                             std::span<const std::size_t> cuts,
+                                                             StaircaseStyle style,
+                                                             StaircaseStats* stats = nullptr) const;
+
   // Per-link table (diagnostics and tests).
   LinkTable link_table(geom::Point a, geom::Point b, StaircaseStyle style) const;
   // A point is free: in the domain, in no obstacle's interior, and with a free wedge.

@@ -687,68 +687,11 @@ int cone_of(Point a, Point b, StaircaseStyle style) {
 
 }  // namespace
 
-namespace {
-
-// Length additivity of a -> m -> b against a -> b in the style's metric: m lies in the link's
-// box (rectilinear) or parallelogram of its cone (octilinear), so staircases through m keep
-// the length.
-bool keeps_length(Point a, Point m, Point b, StaircaseStyle style) {
-  auto len = [style](Point p, Point q) {
-    const i64 dx = std::abs(i64{q.x} - p.x), dy = std::abs(i64{q.y} - p.y);
-    if (style == StaircaseStyle::Rectilinear) return std::pair<i64, i64>{dx + dy, 0};
-    return std::pair<i64, i64>{std::max(dx, dy) - std::min(dx, dy), std::min(dx, dy)};
-  };
-  const auto [p1, q1] = len(a, m);
-  const auto [p2, q2] = len(m, b);
-  const auto [p0, q0] = len(a, b);
-  return p1 + p2 == p0 && q1 + q2 == q0;  // a + b*sqrt2 equal exactly (a, b integers)
-}
-
-struct Stairs {
-  const Tightener& tight;
-  const StaircaseBuilder& sb;
-  StaircaseStyle style;
-  StaircaseStats st;
-  bool same_class(const std::vector<Point>& s, const std::vector<Point>& want) {
-    const Tightened t = tight.tighten(s);
-    return t.status == TightenStatus::Ok && t.points == want;
-  }
-  // A staircase for the free segment a -> b in its class: the search's fewest-bend staircase
-  // when it is in the class; else the link is split at a lattice point m near the segment with
-  // a -> m -> b in the same class and of the same length, recursively.
-  bool link(Point a, Point b, std::vector<Point>& out, int depth) {
-    const std::vector<Point> want{a, b};
-    if (auto s = sb.staircase(want, style, &st); s && same_class(*s, want)) {
-      out.insert(out.end(), s->begin() + 1, s->end());
-      return true;
-    }
-    if (depth > 64) return false;
-    const i64 dx = i64{b.x} - a.x, dy = i64{b.y} - a.y;
-    for (const auto& [num, den] : {std::pair{1, 2}, std::pair{1, 3}, std::pair{2, 3}, std::pair{1, 4}, std::pair{3, 4}}) {
-      // the point of the segment at num/den, rounded down and up in each coordinate
-      const i64 fx = i64{a.x} + (dx * num - ((dx * num) % den + den) % den) / den;
-      const i64 fy = i64{a.y} + (dy * num - ((dy * num) % den + den) % den) / den;
-      for (int r = 0; r < 4; ++r) {
-        const Point m{static_cast<geom::Coord>(fx + (r & 1)), static_cast<geom::Coord>(fy + (r >> 1))};
-        if (m == a || m == b || !keeps_length(a, m, b, style)) continue;
-        if (!same_class({a, m, b}, want)) continue;
-        // the first split point that keeps the class is taken (no backtracking: bounded work)
-        return link(a, m, out, depth + 1) && link(m, b, out, depth + 1);
-      }
-    }
-    return false;
-  }
-};
-
-
-}  // namespace
-
 COriented c_oriented(const Tightener& tight, const StaircaseBuilder& sb, std::span<const Point> taut,
                      StaircaseStyle style) {
   COriented r;
   if (taut.size() <= 1) {
     r.points.assign(taut.begin(), taut.end());
-    r.through_cuts = true;
     return r;
   }
   std::vector<std::size_t> cut_at{0};  // indices of the cuts in taut
@@ -757,40 +700,15 @@ COriented c_oriented(const Tightener& tight, const StaircaseBuilder& sb, std::sp
     if (c0 < 0 || c1 < 0 || c0 != c1) cut_at.push_back(i);
   }
   cut_at.push_back(taut.size() - 1);
-  std::vector<Point> cuts;
-  for (std::size_t i : cut_at) cuts.push_back(taut[i]);
-  const std::vector<Point> want(taut.begin(), taut.end());
-  Stairs stairs{tight, sb, style, {}};
-  if (auto s = sb.staircase(cuts, style, &stairs.st); s && stairs.same_class(*s, want)) {
-    r.points = std::move(*s);
-    r.through_cuts = true;
-    r.complete = stairs.st.budget_hits == 0 && stairs.st.greedy_links == 0;
+  // Each piece is built in its class (StaircaseBuilder::staircase_in_class); tightening the
+  // result back to `taut` checks that (a class's shortest path is unique), so a bug there shows
+  // as a missing wire, never as a wire in another class.
+  std::optional<std::vector<Point>> s = sb.staircase_in_class(taut, cut_at, style);
+  if (!s) return r;
+  const Tightened back = tight.tighten(*s);
+  if (back.status != TightenStatus::Ok || !std::equal(back.points.begin(), back.points.end(), taut.begin(), taut.end()))
     return r;
-  }
-  // Piece by piece (a piece runs between two cuts), each in its class; a piece whose staircase
-  // is not is done link by link (split where the search's staircase is not in the class either).
-  stairs.st = StaircaseStats{};
-  std::vector<Point> out{taut.front()};
-  for (std::size_t k = 0; k + 1 < cut_at.size(); ++k) {
-    const std::size_t i0 = cut_at[k], i1 = cut_at[k + 1];
-    if (i1 > i0 + 1) {
-      const std::vector<Point> piece(taut.begin() + static_cast<std::ptrdiff_t>(i0),
-                                     taut.begin() + static_cast<std::ptrdiff_t>(i1) + 1);
-      if (auto s = sb.staircase(std::vector<Point>{taut[i0], taut[i1]}, style, &stairs.st);
-          s && stairs.same_class(*s, piece)) {
-        out.insert(out.end(), s->begin() + 1, s->end());
-        continue;
-      }
-    }
-    for (std::size_t i = i0; i < i1; ++i)
-      if (!stairs.link(taut[i], taut[i + 1], out, 0)) return r;
-  }
-  out = simplified(out);
-  for (std::size_t i = 1; i + 1 < out.size(); ++i)
-    if (!sb.turn_ok(out[i - 1], out[i], out[i + 1])) return r;
-  if (!stairs.same_class(out, want)) return r;
-  r.points = std::move(out);
-  r.complete = stairs.st.budget_hits == 0 && stairs.st.greedy_links == 0;
+  r.points = std::move(*s);
   return r;
 }
 

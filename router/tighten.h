@@ -175,19 +175,16 @@ class OnlineTightener {
 // the class, and every least path passes through the points where the Euclidean path's tangent
 // is a basis direction (Lemma 6.3): its vertices where consecutive links are not strictly
 // inside one cone between neighbouring directions, and the ends of links along a direction.
-// Between two such cuts the links all lie strictly inside one cone, so any monotone staircase of
-// that cone's two directions from cut to cut has the same length (Lemma 6.1). The staircases
-// are router::StaircaseBuilder's (the fewest bends per link with exact integer search, joints
-// chosen by its DP) on the path of the cuts alone; a staircase may then pass a blockage on the
-// other side than the Euclidean path does, so the result is checked to tighten back to `taut`
-// (the same class: the class's shortest path is unique). If it does not, the staircases are
-// searched through every bend of `taut` instead (same length; the fewest links not proven), and
-// if that fails too the result is empty.
+// Between two such cuts the links all lie strictly inside one cone, so the least paths there
+// are the monotone staircases of that cone's two directions (Lemma 6.1) that pass every
+// blockage on the side the Euclidean path does; StaircaseBuilder::staircase_in_class builds the
+// one with the fewest links per piece (section 6.4's sweep of fixed orientations, exact) and
+// joins the pieces with the fewest links. The result is checked to tighten back to `taut`.
+// Empty when some piece has no lattice staircase in its class (sloped blockages can pinch
+// every one).
 struct COriented {
-  std::vector<geom::Point> points;  // empty: no staircase in the class was found
-  bool through_cuts = false;  // the staircases join the cuts only: the fewest links of any
-                              // shortest c-oriented path in the class when `complete`
-  bool complete = true;       // no staircase search ran out of budget
+  std::vector<geom::Point> points;  // empty: no staircase in the class was found; else the
+                                    // fewest links of the class's shortest c-oriented paths
 };
 COriented c_oriented(const Tightener& tight, const StaircaseBuilder& sb, std::span<const geom::Point> taut,
                      StaircaseStyle style);

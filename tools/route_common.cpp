@@ -47,13 +47,7 @@ WireTightener::WireTightener(const geom::NormalizedObstacles& norm, const std::s
     throw std::logic_error("the free space of normalized blockages could not be triangulated:" + why);
   }
   tight_ = std::make_unique<router::Tightener>(tri_);
-  // A smaller search budget than routing's: a piece between cuts of a long tightened wire can
-  // span hundreds of blockages, and a search that runs out falls back to the link-by-link
-  // staircases (measured, bench_tighten at 9,216 vertices: 143 ms per wire with routing's 2^18,
-  // 15 ms with 2^12, the same wires proven fewest).
-  if (orientations_ != "any")
-    sb_ = std::make_unique<router::StaircaseBuilder>(norm.domain, norm.obstacles,
-                                                     router::StaircaseOptions{std::size_t{1} << 12});
+  if (orientations_ != "any") sb_ = std::make_unique<router::StaircaseBuilder>(norm.domain, norm.obstacles);
 }
 
 bool WireTightener::is_loop(std::span<const geom::Point> line) {
@@ -92,7 +86,6 @@ WireTightener::Result WireTightener::run(std::span<const geom::Point> line) cons
       r.points.clear();
       return r;
     }
-    r.fewest_links = c.through_cuts && c.complete;
     r.points = std::move(c.points);
   }
   if (r.points.size() == 1) r.points.push_back(r.points[0]);

@@ -45,7 +45,6 @@ class WireTightener {
     bool no_staircase = false;        // c-oriented: no lattice staircase in the class (TIGHTEN-0004)
     bool loop = false;                // the line was closed: `points` is the shortest closed loop
     bool contractible = false;        // a loop that winds around nothing (TIGHTEN-0005)
-    bool fewest_links = true;         // c-oriented: the fewest links are proven
   };
   // A closed line (last point = first, around some other point) is a loop: the shortest closed
   // loop of its free homotopy class (Tightener::tighten_loop).

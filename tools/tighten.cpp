@@ -35,7 +35,6 @@ namespace {
 struct NetTightening {
   std::string source;  // "sketch" or "wires"
   double before = 0, taut = 0, after = 0;
-  bool fewest_links = true;
   long bends_before = 0, bends_after = 0;
   std::size_t sleeve = 0, crossings = 0;
   // --min-link: the minimum-link path of each open wire's class (exact rational bends)
@@ -234,7 +233,6 @@ void add_tighten(CLI::App& app, int& status) {
           no_staircase = true;
           continue;
         }
-        st.fewest_links = st.fewest_links && res.fewest_links;
         std::vector<geom::Point> pts = std::move(res.points);
         st.before += router::euclidean_length(line);
         st.after += router::euclidean_length(pts);
@@ -323,7 +321,7 @@ void add_tighten(CLI::App& app, int& status) {
                         {"bends_after", s.bends_after},
                         {"sleeve_triangles", s.sleeve},
                         {"crossings", s.crossings},
-                        {"fewest_links", s.fewest_links}});
+                        {"fewest_links", true}});  // always: kept for scripts that read it
         if (args->min_link) {
           // exact bends as "p/q" strings (a double would not be the point)
           nlohmann::ordered_json paths = nlohmann::ordered_json::array();
