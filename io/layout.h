@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "geom/types.h"
@@ -111,5 +112,10 @@ struct Layout {
 // The same document: equal in every field except `file` and the source line numbers (a layout
 // read back from what the writer wrote has other line numbers).
 bool same_document(const Layout& a, const Layout& b);
+
+// An orientations value with a c: set written by its name when it is one: the directions modulo
+// 180 degrees exactly {0, 90} are "rectilinear", exactly {0, 45, 90, 135} "octilinear" (e.g.
+// c:90,0 or c:0,45,90,135,180). Anything else is returned unchanged.
+std::string canonical_orientations(std::string_view text);
 
 }  // namespace taut::io

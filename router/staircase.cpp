@@ -747,55 +747,34 @@ LinkSolution solve_link(Workspace& ws, Point a, Point b, StaircaseStyle style, b
 struct ClipWall {
   std::array<i64, 2> p{}, q{};   // frame coordinates of the edge's ends ([0] = u, [1] = v)
   i128 n0 = 0, d0 = 1, n1 = 1, d1 = 1;  // the part inside the box: t in [n0/d0, n1/d1]
-  std::array<i64, 2> lo{}, hi{};  // per coordinate: floor of the least, ceiling of the greatest
+  int side = 0;                  // +1: above alpha, -1: below
 };
-
-i128 floor_frac(i128 c, i128 d) { return c >= 0 ? c / d : -((-c + d - 1) / d); }  // d > 0
 
 // a/b < c/d for d's > 0
 bool frac_less(i128 a, i128 b, i128 c, i128 d) { return a * d < c * b; }
+i128 floor_frac(i128 c, i128 d) { return c >= 0 ? c / d : -((-c + d - 1) / d); }  // d > 0
 
+// The walls are gathered lazily: a run along u from pos can only be stopped by points below
+// alpha with v > pos.v, and those with u below the answer B lie in [pos.u, B] x [pos.v, alpha(B)]
+// (below alpha, and alpha increases); a run along v symmetrically. So each run queries the
+// R-tree for boxes of growing length until the answer falls inside, and each edge is clipped and
+// classified once per piece. The work follows the staircase, not the piece's whole box.
 class PieceSolver {
  public:
-  PieceSolver(Workspace& ws, const Frame& fr, std::span<const Point> alpha) : fr_(fr) {
+  PieceSolver(Workspace& ws, const Frame& fr, std::span<const Point> alpha) : index_(ws.im().index), fr_(fr) {
     for (const Point p : alpha) {
-      au_.push_back(fr.u_of(p));
-      av_.push_back(fr.v_of(p));
+      a_[0].push_back(fr.u_of(p));
+      a_[1].push_back(fr.v_of(p));
     }
     lim_ = fr.lim;
-    const Box r{{std::min(fr.a.x, fr.b.x), std::min(fr.a.y, fr.b.y)},
-                {std::max(fr.a.x, fr.b.x), std::max(fr.a.y, fr.b.y)}};
-    for (const std::uint32_t id : ws.im().index.edges_in_box(r)) {
-      const Segment& e = ws.im().index.edge(id);
-      ClipWall w;
-      w.p = {fr.u_of(e.a), fr.v_of(e.a)};
-      w.q = {fr.u_of(e.b), fr.v_of(e.b)};
-      if (!clip(w)) continue;
-      for (int c = 0; c < 2; ++c) {
-        const i128 e0 = at(w, c, w.n0, w.d0), e1 = at(w, c, w.n1, w.d1);
-        const i128 f0 = floor_frac(e0, w.d0), f1 = floor_frac(e1, w.d1);
-        const i128 g0 = -floor_frac(-e0, w.d0), g1 = -floor_frac(-e1, w.d1);
-        w.lo[c] = static_cast<i64>(std::min(f0, f1));
-        w.hi[c] = static_cast<i64>(std::max(g0, g1));
-      }
-      // runs along u meet the walls below alpha, runs along v those above
-      (side_of(w) > 0 ? walls_[1] : walls_[0]).push_back(w);
-    }
-    for (int k = 0; k < 2; ++k)
-      std::sort(walls_[k].begin(), walls_[k].end(), [k](const ClipWall& x, const ClipWall& y) { return x.lo[k] < y.lo[k]; });
   }
 
   // The greedy staircase leaving a along d[first]: its points (frame), or empty when it gets stuck.
-  std::vector<std::array<i64, 2>> greedy(int first) const {
+  std::vector<std::array<i64, 2>> greedy(int first) {
     std::vector<std::array<i64, 2>> pts{{0, 0}};
     std::array<i64, 2> pos{0, 0};
-    // the walls that can still stop a run: positions only grow, so a wall that lies wholly at or
-    // below pos in the other coordinate never stops a run of this greedy again
-    std::array<std::vector<std::uint32_t>, 2> live;
-    for (int k = 0; k < 2; ++k)
-      for (std::uint32_t i = 0; i < walls_[k].size(); ++i) live[k].push_back(i);
     for (int k = first;; k = 1 - k) {
-      const i64 r = reach(k, pos, live[k]);
+      const i64 r = reach(k, pos);
       if (r <= pos[k]) return {};  // stuck (or a first run of length 0)
       pos[k] = r;
       pts.push_back(pos);
@@ -838,14 +817,14 @@ class PieceSolver {
   // Sign of (point - alpha) in v at the point's u: the point is (X/D, Y/D), 0 <= X/D <= U.
   int side_of_point(i128 X, i128 Y, i128 D) const {
     // the segment of alpha over u: the last vertex with au <= u (not the very last one)
-    std::size_t lo = 0, hi = au_.size() - 1;  // invariant: au[lo] <= u, answer in [lo, hi)
+    std::size_t lo = 0, hi = a_[0].size() - 1;  // invariant: au[lo] <= u, answer in [lo, hi)
     while (hi - lo > 1) {
       const std::size_t mid = (lo + hi) / 2;
-      if (i128{au_[mid]} * D <= X) lo = mid;
+      if (i128{a_[0][mid]} * D <= X) lo = mid;
       else hi = mid;
     }
-    const i128 du = au_[lo + 1] - au_[lo], dv = av_[lo + 1] - av_[lo];
-    const i128 s = (Y - i128{av_[lo]} * D) * du - (X - i128{au_[lo]} * D) * dv;
+    const i128 du = a_[0][lo + 1] - a_[0][lo], dv = a_[1][lo + 1] - a_[1][lo];
+    const i128 s = (Y - i128{a_[1][lo]} * D) * du - (X - i128{a_[0][lo]} * D) * dv;
     return (s > 0) - (s < 0);
   }
 
@@ -868,10 +847,10 @@ class PieceSolver {
       const i128 hi_n = a_first ? ub : ua, hi_d = a_first ? w.d1 : w.d0;
       // au is strictly increasing: the vertices with lo < au < hi form one run
       auto j = static_cast<std::size_t>(
-          std::partition_point(au_.begin(), au_.end(), [&](i64 u) { return i128{u} * lo_d <= lo_n; }) - au_.begin());
-      for (; j < au_.size() && i128{au_[j]} * hi_d < hi_n; ++j) {
+          std::partition_point(a_[0].begin(), a_[0].end(), [&](i64 u) { return i128{u} * lo_d <= lo_n; }) - a_[0].begin());
+      for (; j < a_[0].size() && i128{a_[0][j]} * hi_d < hi_n; ++j) {
         // the wall's v at u = au[j] against av[j]
-        const i128 s = ((i128{w.p[1]} - av_[j]) * du + (i128{au_[j]} - w.p[0]) * dv) * (du > 0 ? 1 : -1);
+        const i128 s = ((i128{w.p[1]} - a_[1][j]) * du + (i128{a_[0][j]} - w.p[0]) * dv) * (du > 0 ? 1 : -1);
         if (s != 0) return s > 0 ? 1 : -1;
       }
     }
@@ -880,53 +859,93 @@ class PieceSolver {
     return left_in_frame == with_alpha ? 1 : -1;
   }
 
+  // The wall of edge `id`, clipped to the box and classified (nullptr: it misses the box).
+  const ClipWall* wall(std::uint32_t id) {
+    const auto [it, fresh] = cache_.try_emplace(id, -1);
+    if (fresh) {
+      const Segment& e = index_.edge(id);
+      ClipWall w;
+      w.p = {fr_.u_of(e.a), fr_.v_of(e.a)};
+      w.q = {fr_.u_of(e.b), fr_.v_of(e.b)};
+      if (clip(w)) {
+        w.side = side_of(w);
+        it->second = static_cast<int>(walls_.size());
+        walls_.push_back(w);
+      }
+    }
+    return it->second < 0 ? nullptr : &walls_[static_cast<std::size_t>(it->second)];
+  }
+
+  // Alpha's coordinate 1-k where its coordinate k is c (0 <= c <= lim[k]), rounded up.
+  i64 alpha_ceil(int k, i64 c) const {
+    const std::vector<i64>& ak = a_[k];
+    const std::vector<i64>& ao = a_[1 - k];
+    if (c >= ak.back()) return ao.back();
+    const std::size_t i = static_cast<std::size_t>(std::upper_bound(ak.begin(), ak.end(), c) - ak.begin()) - 1;
+    const i128 num = i128{ao[i]} * (ak[i + 1] - ak[i]) + i128{c - ak[i]} * (ao[i + 1] - ao[i]);
+    return static_cast<i64>(-floor_frac(-num, ak[i + 1] - ak[i]));
+  }
+
+  // How far a run along d[k] from pos may go because of wall w (floored; lim when w does not
+  // stop it): the least coordinate k over w's points whose other coordinate exceeds pos's.
+  i64 wall_reach(const ClipWall& w, int k, const std::array<i64, 2>& pos) const {
+    const int o = 1 - k;
+    const i128 c0 = at(w, o, w.n0, w.d0), c1 = at(w, o, w.n1, w.d1);
+    const bool in0 = c0 > i128{pos[o]} * w.d0, in1 = c1 > i128{pos[o]} * w.d1;
+    if (!in0 && !in1) return lim_[k];
+    // the closure of {t in [t0, t1] : coordinate o > pos[o]}: its ends
+    i128 sn0 = w.n0, sd0 = w.d0, sn1 = w.n1, sd1 = w.d1;
+    if (!in0 || !in1) {
+      const i128 dq = w.q[o] - w.p[o];  // nonzero: the ends differ in o
+      i128 n = i128{pos[o]} - w.p[o], d = dq;
+      if (d < 0) {
+        n = -n;
+        d = -d;
+      }
+      if (!in0) {
+        sn0 = n;
+        sd0 = d;
+      } else {
+        sn1 = n;
+        sd1 = d;
+      }
+    }
+    const i128 f = std::min(floor_frac(at(w, k, sn0, sd0), sd0), floor_frac(at(w, k, sn1, sd1), sd1));
+    return f < lim_[k] ? static_cast<i64>(f) : lim_[k];
+  }
+
   // The farthest coordinate k a run along d[k] from pos reaches (floored, capped at lim): a run
   // along u is stopped by walls below alpha that rise above pos.v, one along v by walls above
   // alpha that reach right of pos.u.
-  // `live`: indices into walls_[k] in the order of lo[k]; the scan stops at the first wall that
-  // cannot beat the best so far, and drops those that can never stop a run again.
-  i64 reach(int k, const std::array<i64, 2>& pos, std::vector<std::uint32_t>& live) const {
-    const int o = 1 - k;
+  i64 reach(int k, const std::array<i64, 2>& pos) {
+    const int o = 1 - k, want = k == 0 ? -1 : 1;
     i64 best = lim_[k];
-    std::size_t kept = 0, i = 0;
-    for (; i < live.size(); ++i) {
-      const ClipWall& w = walls_[k][live[i]];
-      if (w.lo[k] >= best) break;
-      if (w.hi[o] <= pos[o]) continue;  // dropped
-      live[kept++] = live[i];
-      const i128 c0 = at(w, o, w.n0, w.d0), c1 = at(w, o, w.n1, w.d1);
-      const bool in0 = c0 > i128{pos[o]} * w.d0, in1 = c1 > i128{pos[o]} * w.d1;
-      if (!in0 && !in1) continue;
-      // the closure of {t in [t0, t1] : coordinate o > pos[o]}: its ends
-      i128 sn0 = w.n0, sd0 = w.d0, sn1 = w.n1, sd1 = w.d1;
-      if (!in0 || !in1) {
-        const i128 dq = w.q[o] - w.p[o];  // nonzero: the ends differ in o
-        i128 n = i128{pos[o]} - w.p[o], d = dq;
-        if (d < 0) {
-          n = -n;
-          d = -d;
-        }
-        if (!in0) {
-          sn0 = n;
-          sd0 = d;
-        } else {
-          sn1 = n;
-          sd1 = d;
-        }
+    for (i64 step = 32;; step *= 4) {
+      const i64 B = std::min(lim_[k], pos[k] + step);
+      std::array<i64, 2> lo{}, hi{};
+      lo[k] = pos[k];
+      hi[k] = B;
+      lo[o] = pos[o];
+      hi[o] = std::max(pos[o], std::min(lim_[o], alpha_ceil(k, B)));
+      Box box{fr_.at(lo[0], lo[1]), fr_.at(lo[0], lo[1])};
+      for (const Point c : {fr_.at(hi[0], lo[1]), fr_.at(lo[0], hi[1]), fr_.at(hi[0], hi[1])}) {
+        box.lo = {std::min(box.lo.x, c.x), std::min(box.lo.y, c.y)};
+        box.hi = {std::max(box.hi.x, c.x), std::max(box.hi.y, c.y)};
       }
-      for (const auto& [n, d] : {std::pair{sn0, sd0}, std::pair{sn1, sd1}}) {
-        const i128 f = floor_frac(at(w, k, n, d), d);
-        if (f < best) best = static_cast<i64>(f);
-      }
+      index_.edges_in_box(box, ids_);
+      for (const std::uint32_t id : ids_)
+        if (const ClipWall* w = wall(id); w && w->side == want) best = std::min(best, wall_reach(*w, k, pos));
+      if (best <= B || B == lim_[k]) return best;
     }
-    if (kept != i) live.erase(live.begin() + static_cast<std::ptrdiff_t>(kept), live.begin() + static_cast<std::ptrdiff_t>(i));
-    return best;
   }
 
+  const geom::ObstacleIndex& index_;
   const Frame& fr_;
-  std::vector<i64> au_, av_;
+  std::array<std::vector<i64>, 2> a_;  // alpha's vertices: u and v (both strictly increasing)
   std::array<i64, 2> lim_{};
-  std::array<std::vector<ClipWall>, 2> walls_;  // [0]: below alpha, [1]: above
+  std::vector<ClipWall> walls_;
+  std::unordered_map<std::uint32_t, int> cache_;  // edge id -> index in walls_, -1: misses the box
+  std::vector<std::uint32_t> ids_;
 };
 
 // One piece (alpha from a to b, every segment strictly inside one cone of the style) in its class.
@@ -951,7 +970,7 @@ LinkSolution solve_piece(Workspace& ws, std::span<const Point> alpha, StaircaseS
     s.start_wedge[k] = ws.at(a).wedge_of(d[k]);
     s.end_wedge[k] = ws.at(b).wedge_of(neg(d[k]));
   }
-  const PieceSolver solver(ws, fr, alpha);
+  PieceSolver solver(ws, fr, alpha);
   for (int f = 0; f < 2; ++f) {
     if (s.start_wedge[f] < 0) continue;
     const std::vector<std::array<i64, 2>> g = solver.greedy(f);

@@ -70,7 +70,8 @@ void add_routing_options(CLI::App* sub, RoutingOptions& options) {
   sub->add_option("--metric", options.metric, "l1 (default); combined and link are not available yet");
   sub->add_option("--orientations", options.orientations,
                   "rectilinear or octilinear (spm also: any, epsilon-approximate Euclidean distances); "
-                  "default: orientations of <rules>, else rectilinear (c: sets are not available yet)");
+                  "default: orientations of <rules>, else rectilinear; c: sets only as another name of those "
+                  "two (c:0,90 or c:0,45,90,135)");
   sub->add_option("--bend-cost", options.bend_cost, "C of the combined metric (not available yet)");
 }
 
@@ -86,7 +87,8 @@ bool check_routing_options(const RoutingOptions& options, const io::Layout& layo
                                   "available in this version");
     return false;
   }
-  auto available = [&](const std::string& o) {
+  auto available = [&](const std::string& text) {
+    const std::string o = io::canonical_orientations(text);
     return o == "rectilinear" || o == "octilinear" || (options.allow_any && o == "any");
   };
   if (!options.orientations.empty() && !available(options.orientations)) {
@@ -113,8 +115,8 @@ bool check_routing_options(const RoutingOptions& options, const io::Layout& layo
 }
 
 std::string routing_orientations(const RoutingOptions& options, const io::Layout& layout) {
-  if (!options.orientations.empty()) return options.orientations;
-  return layout.rules ? layout.rules->orientations : std::string("rectilinear");
+  if (!options.orientations.empty()) return io::canonical_orientations(options.orientations);
+  return layout.rules ? io::canonical_orientations(layout.rules->orientations) : std::string("rectilinear");
 }
 
 std::optional<io::Layout> load_routing_layout(const std::string& path, const LoadOptions& load,

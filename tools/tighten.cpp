@@ -81,11 +81,12 @@ void add_tighten(CLI::App& app, int& status) {
   sub->callback([args, &status] {
     using Clock = std::chrono::steady_clock;
     const auto t0 = Clock::now();
-    const std::string& o = args->orientations;
+    const std::string o = io::canonical_orientations(args->orientations);
     if (!o.empty() && o != "any" && o != "rectilinear" && o != "octilinear") {
       print_usage_error("CLI-0027", "tighten: --orientations " + o +
-                                        ": only rectilinear, octilinear and any are available (c: sets "
-                                        "have directions without integer steps)");
+                                        ": only rectilinear, octilinear and any are available (a c: set "
+                                        "other than c:0,90 and c:0,45,90,135 has directions without "
+                                        "integer steps, and wire vertices are integers)");
       status = kInvalid;
       return;
     }
@@ -96,11 +97,12 @@ void add_tighten(CLI::App& app, int& status) {
     }
     std::string orientations = o;
     if (orientations.empty()) {
-      orientations = layout->rules ? layout->rules->orientations : "rectilinear";
+      orientations = layout->rules ? io::canonical_orientations(layout->rules->orientations) : "rectilinear";
       if (orientations != "any" && orientations != "rectilinear" && orientations != "octilinear") {
         print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0003", layout->file, layout->rules->line, 0,
                                       "<rules orientations=\"" + orientations +
-                                          "\">: c: direction sets are not available; tightened wires are "
+                                          "\">: c: direction sets other than c:0,90 and c:0,45,90,135 are not "
+                                          "available (their directions have no integer steps); tightened wires are "
                                           "written at any angle"}},
                           args->load.quiet);
         orientations = "any";

@@ -99,6 +99,45 @@ TEST(OctPath, RulesChooseOctilinearAndTheOptionOverrides) {
   EXPECT_EQ(jl["cost"].get<std::int64_t>(), 40);
 }
 
+// A c: set whose directions are those of rectilinear or octilinear (modulo 180 degrees, in any
+// order, repeated) is that set, from the command line and from <rules>; any other is refused.
+TEST(OctPath, CSetsThatNameTheTwoSets) {
+  const std::string body = R"(  <blockage id="b"><rect x0="10" y0="-5" x1="20" y1="5"/></blockage>
+)";
+  const std::string plain = layout_file("cset_plain", body);
+  auto json_of = [](const std::vector<std::string>& args) {
+    const auto r = run_taut(args);
+    EXPECT_EQ(r.status, 0) << r.err;
+    return r.status == 0 ? nlohmann::json::parse(r.out) : nlohmann::json();
+  };
+  const std::vector<std::string> q = {"--from", "0,0", "--to", "30,0", "--json"};
+  auto with = [&](std::vector<std::string> head, const std::vector<std::string>& tail) {
+    head.insert(head.end(), tail.begin(), tail.end());
+    return head;
+  };
+  const auto oct = json_of(with({"path", plain, "--orientations", "octilinear"}, q));
+  const auto rect = json_of(with({"path", plain, "--orientations", "rectilinear"}, q));
+  ASSERT_EQ(exact_of(oct["length_exact"]), (Root2{20, 10}));
+  ASSERT_EQ(rect["cost"].get<std::int64_t>(), 40);
+  for (const std::string set : {"c:0,45,90,135", "c:135,90,45,0", "c:0,45,90,135,180,225", "c:0.0,45.00,90,135"})
+    EXPECT_EQ(json_of(with({"path", plain, "--orientations", set}, q)), oct) << set;
+  for (const std::string set : {"c:0,90", "c:90,0", "c:0,90,180,270", "c:270,180"})
+    EXPECT_EQ(json_of(with({"path", plain, "--orientations", set}, q)), rect) << set;
+  const std::string rules = layout_file("cset_rules", "  <rules orientations=\"c:90,0,45,135\"/>\n" + body);
+  EXPECT_EQ(json_of(with({"path", rules}, q)), oct);
+  // a route written with such rules says which set it used
+  const std::string dir = temp_dir("cset_route");
+  const std::string net = R"(  <net name="n"><pin name="a" x="0" y="0"/><pin name="b" x="30" y="0"/></net>
+)";
+  const auto r = run_taut({"route", layout_file("cset_route", "  <rules orientations=\"c:0,90,180\"/>\n" + body + net),
+                           "-o", dir + "/r.xml", "-q"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(read_text(dir + "/r.xml").find("orientations=\"rectilinear\""), std::string::npos);
+  const auto bad = run_taut(with({"path", plain, "--orientations", "c:0,60,120"}, q));
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("[CLI-0021]"), std::string::npos) << bad.err;
+}
+
 TEST(OctPath, UnreachableAndBlockedEndsExit1WithNullCost) {
   const std::string file = layout_file("oct_unreach", R"(  <boundary x0="0" y0="0" x1="100" y1="100"/>
   <blockage id="ring"><polygon points="40,40 60,40 60,60 40,60"><hole points="45,45 55,45 55,55 45,55"/></polygon></blockage>

@@ -482,6 +482,21 @@ TEST(Tighten, CSetInTheRulesIsWrittenAtAnyAngle) {
   EXPECT_EQ(run.status, 0) << run.err;
   EXPECT_NE(run.err.find("warning: [TIGHTEN-0003]"), std::string::npos) << run.err;
   EXPECT_EQ(wires_of(dir + "/t.xml", "n"), (std::vector<Path>{{{10, 50}, {40, 60}, {60, 60}, {90, 50}}}));
+  // c:0,90 is another name of the rectilinear directions: the same as --orientations rectilinear
+  std::string rect_rules = read_text(file);
+  rect_rules.replace(rect_rules.find("c:0,60,120"), 10, "c:90,0");
+  const std::string rfile = layout_file("tighten_cset_rect", "");
+  write_text(rfile, rect_rules);
+  const auto r1 = run_taut({"tighten", rfile, "-o", dir + "/r1.xml"});
+  ASSERT_EQ(r1.status, 0) << r1.err;
+  EXPECT_EQ(r1.err.find("TIGHTEN-0003"), std::string::npos) << r1.err;
+  const auto r2 = run_taut({"tighten", file, "-o", dir + "/r2.xml", "--orientations", "c:0,90,180"});
+  ASSERT_EQ(r2.status, 0) << r2.err;
+  const auto r3 = run_taut({"tighten", file, "-o", dir + "/r3.xml", "--orientations", "rectilinear"});
+  ASSERT_EQ(r3.status, 0) << r3.err;
+  EXPECT_EQ(wires_of(dir + "/r1.xml", "n"), wires_of(dir + "/r3.xml", "n"));
+  EXPECT_EQ(wires_of(dir + "/r2.xml", "n"), wires_of(dir + "/r3.xml", "n"));
+  EXPECT_EQ(wires_of(dir + "/r3.xml", "n"), (std::vector<Path>{{{10, 50}, {10, 60}, {90, 60}, {90, 50}}}));
 }
 
 TEST(Tighten, BadInputExit2AndWritesNothing) {
@@ -510,7 +525,7 @@ TEST(Tighten, BadInputExit2AndWritesNothing) {
   run = run_taut({"tighten", layout_file("tighten_bad_pinch", pinch), "-o", dir + "/t.xml"});
   EXPECT_EQ(run.status, 2) << run.err;
   EXPECT_NE(run.err.find("passes through a point where blockages touch at or after 60,60"), std::string::npos) << run.err;
-  // c: sets are not available
+  // c: sets other than the rectilinear and octilinear directions are not available
   run = run_taut({"tighten", file, "-o", dir + "/t.xml", "--orientations", "c:0,60,120"});
   EXPECT_EQ(run.status, 2) << run.err;
   EXPECT_NE(run.err.find("[CLI-0027]"), std::string::npos) << run.err;

@@ -565,3 +565,19 @@ TEST(ReaderSpeed, ManyRects) {
   EXPECT_TRUE(v.empty());
   std::printf("[ speed    ] %d rects (%zu bytes): read %.3f s, validate %.3f s\n", n, doc.size(), read_s, val_s);
 }
+
+namespace {
+
+TEST(Orientations, CSetsThatNameRectilinearOrOctilinear) {
+  using taut::io::canonical_orientations;
+  EXPECT_EQ(canonical_orientations("c:0,90"), "rectilinear");
+  EXPECT_EQ(canonical_orientations("c:270,180,90.0"), "rectilinear");
+  EXPECT_EQ(canonical_orientations("c:0,45,90,135"), "octilinear");
+  EXPECT_EQ(canonical_orientations("c:225,315,0,90,90"), "octilinear");
+  // anything else is left as written
+  for (const char* other : {"c:0,60,120", "c:0,45,90", "c:0,90,45.5", "c:0", "c:", "c:0,,90", "c:-90,0", "c:0,9e1",
+                            "rectilinear", "octilinear", "any", "bogus"})
+    EXPECT_EQ(canonical_orientations(other), other);
+}
+
+}  // namespace

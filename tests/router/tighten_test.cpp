@@ -622,7 +622,7 @@ TEST(Tighten, RegressionSeeds) {
 
 TEST(Tighten, RandomSketchesAgainstTheReferences) {
   Totals tot;
-  const std::uint64_t n = static_cast<std::uint64_t>(sanitized_share(900, 10));
+  const std::uint64_t n = static_cast<std::uint64_t>(sanitized_share(900, 20));
   for (std::uint64_t seed = 1; seed <= n; ++seed) {
     check_seed(seed, tot);
     if (::testing::Test::HasFatalFailure()) {
@@ -640,9 +640,9 @@ TEST(Tighten, RandomSketchesAgainstTheReferences) {
               "octilinear %lld paths (%lld missing, %lld confirmed, %lld diagonal links)\n",
               tot.c_paths[0], tot.c_missing[0], tot.c_missing_proven[0], tot.c_paths[1], tot.c_missing[1],
               tot.c_missing_proven[1], tot.c_sloped[1]);
-  EXPECT_GE(tot.sketches, sanitized_share(6000, 10));
-  EXPECT_GE(tot.winding, sanitized_share(2000, 10));
-  EXPECT_GE(tot.global_class, sanitized_share(1500, 10));
+  EXPECT_GE(tot.sketches, sanitized_share(6000, 20));
+  EXPECT_GE(tot.winding, sanitized_share(2000, 20));
+  EXPECT_GE(tot.global_class, sanitized_share(1500, 20));
 }
 
 }  // namespace
