@@ -761,7 +761,8 @@ i128 floor_frac(i128 c, i128 d) { return c >= 0 ? c / d : -((-c + d - 1) / d); }
 // classified once per piece. The work follows the staircase, not the piece's whole box.
 class PieceSolver {
  public:
-  PieceSolver(Workspace& ws, const Frame& fr, std::span<const Point> alpha) : index_(ws.im().index), fr_(fr) {
+  PieceSolver(Workspace& ws, const Frame& fr, std::span<const Point> alpha)
+      : index_(ws.im().index), fr_(fr), first_slab_(std::max<i64>(1, ws.im().options.first_slab)) {
     for (const Point p : alpha) {
       a_[0].push_back(fr.u_of(p));
       a_[1].push_back(fr.v_of(p));
@@ -920,11 +921,15 @@ class PieceSolver {
   i64 reach(int k, const std::array<i64, 2>& pos) {
     const int o = 1 - k, want = k == 0 ? -1 : 1;
     i64 best = lim_[k];
-    for (i64 step = 32;; step *= 4) {
+    // slabs [from, B] of doubling width: a wall point that stops the run before B lies in one of
+    // the slabs so far, each only as tall as alpha allows at its right side
+    i64 from = pos[k];
+    for (i64 step = first_slab_;; step *= 2) {
       const i64 B = std::min(lim_[k], pos[k] + step);
       std::array<i64, 2> lo{}, hi{};
-      lo[k] = pos[k];
+      lo[k] = from;
       hi[k] = B;
+      from = B;
       lo[o] = pos[o];
       hi[o] = std::max(pos[o], std::min(lim_[o], alpha_ceil(k, B)));
       Box box{fr_.at(lo[0], lo[1]), fr_.at(lo[0], lo[1])};
@@ -941,6 +946,7 @@ class PieceSolver {
 
   const geom::ObstacleIndex& index_;
   const Frame& fr_;
+  i64 first_slab_;
   std::array<std::vector<i64>, 2> a_;  // alpha's vertices: u and v (both strictly increasing)
   std::array<i64, 2> lim_{};
   std::vector<ClipWall> walls_;

@@ -81,6 +81,9 @@ struct StaircaseOptions {
   // about 1-10 microseconds per unit. When none of them finishes, a depth-first fallback with
   // 4x this budget returns some free staircase (bends not proven minimal).
   std::size_t max_work_per_search = std::size_t{1} << 18;
+  // staircase_in_class: the width of the first slab a run gathers its walls from (doubled per
+  // slab). Only speed depends on it; the tests set 1 so that small layouts use many slabs.
+  std::int64_t first_slab = 32;
 };
 
 struct StaircaseStats {

@@ -423,7 +423,10 @@ TEST(Tighten, COrientedFewestLinksAgainstExhaustiveSearch) {
     if (!ref.problems().empty()) continue;
     const Scenery st = setup(sc.domain, sc.obstacles);
     ASSERT_TRUE(st.t.ok());
-    const router::StaircaseBuilder sb(sc.domain, sc.obstacles);
+    // first slab 1: the pieces gather their walls from many slabs even in these small layouts
+    router::StaircaseOptions so;
+    so.first_slab = 1;
+    const router::StaircaseBuilder sb(sc.domain, sc.obstacles, so);
     const oracle::HomotopyWords h(sc.domain, sc.obstacles);
     std::vector<Point> pts;
     for (int x = 0; x <= 9; ++x)
