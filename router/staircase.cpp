@@ -924,8 +924,8 @@ class PieceSolver {
     // slabs [from, B] of doubling width: a wall point that stops the run before B lies in one of
     // the slabs so far, each only as tall as alpha allows at its right side
     i64 from = pos[k];
-    for (i64 step = first_slab_;; step *= 2) {
-      const i64 B = std::min(lim_[k], pos[k] + step);
+    for (i64 step = first_slab_;; step = std::min(step, lim_[k]) * 2) {
+      const i64 B = pos[k] + std::min(step, lim_[k] - pos[k]);
       std::array<i64, 2> lo{}, hi{};
       lo[k] = from;
       hi[k] = B;

@@ -113,7 +113,8 @@ std::string WireTightener::failure_text(const io::Layout& layout, const std::str
 
 std::string no_staircase_reason(const std::string& orientations) {
   return "no " + orientations + " wire with integer vertices follows the taut wire's class at its length "
-         "(sloped blockages pinch every lattice staircase); --orientations any writes it";
+         "(sloped blockages pinch every lattice staircase, or an end sits in a sloped corner that no direction "
+         "of the set leaves); --orientations any writes it";
 }
 
 }  // namespace taut::cli
