@@ -410,6 +410,22 @@ int fewest_bends_any_length(const oracle::L1Reference& ref, const oracle::Homoto
 // touching at corners and edges, octilinear diamonds and 45-degree triangles, T-pinches (a tip on
 // the middle of a rectangle's edge), sloped slivers. Every c-oriented wire against the exhaustive
 // search: the same bends, and a missing wire only when the search finds none either.
+// Lattice points of [0, N]^2 that are free with one wedge (where the sketches start, end and bend).
+std::vector<Point> single_wedge_points(const oracle::L1Reference& ref, int N) {
+  std::vector<Point> pts;
+  for (int x = 0; x <= N; ++x)
+    for (int y = 0; y <= N; ++y)
+      if (ref.is_free({x, y}) && ref.wedges_at({x, y}).size() == 1) pts.push_back({x, y});
+  return pts;
+}
+
+// First slab 1: the pieces gather their walls from many slabs even in small layouts.
+router::StaircaseBuilder many_slabs(const Scene& sc) {
+  router::StaircaseOptions so;
+  so.first_slab = 1;
+  return router::StaircaseBuilder(sc.domain, sc.obstacles, so);
+}
+
 // A polygon from its vertices in either orientation (counter-clockwise as normalization wants).
 geom::Polygon poly(std::vector<Point> r) {
   if (geom::twice_area(r) < 0) std::reverse(r.begin(), r.end());
@@ -512,15 +528,10 @@ TEST(Tighten, COrientedFewestLinksOnDegenerateScenes) {
       if (!ref.problems().empty()) continue;
       const Scenery st = setup(sc.domain, sc.obstacles);
       ASSERT_TRUE(st.t.ok());
-      router::StaircaseOptions so;
-      so.first_slab = 1;
-      const router::StaircaseBuilder sb(sc.domain, sc.obstacles, so);
+      const router::StaircaseBuilder sb = many_slabs(sc);
       const oracle::HomotopyWords& h = *hp;
       ++scenes;
-      std::vector<Point> pts;
-      for (int x = 0; x <= N; ++x)
-        for (int y = 0; y <= N; ++y)
-          if (ref.is_free({x, y}) && ref.wedges_at({x, y}).size() == 1) pts.push_back({x, y});
+      std::vector<Point> pts = single_wedge_points(ref, N);
       if (pts.size() < 3) continue;
       std::mt19937_64 rng64(static_cast<std::uint64_t>(seed) * 1000003u + static_cast<std::uint64_t>(kind));
       Sketcher sk{ref, h, pts, rng64};
@@ -577,15 +588,9 @@ TEST(Tighten, COrientedFewestLinksAgainstExhaustiveSearch) {
     if (!ref.problems().empty()) continue;
     const Scenery st = setup(sc.domain, sc.obstacles);
     ASSERT_TRUE(st.t.ok());
-    // first slab 1: the pieces gather their walls from many slabs even in these small layouts
-    router::StaircaseOptions so;
-    so.first_slab = 1;
-    const router::StaircaseBuilder sb(sc.domain, sc.obstacles, so);
+    const router::StaircaseBuilder sb = many_slabs(sc);
     const oracle::HomotopyWords h(sc.domain, sc.obstacles);
-    std::vector<Point> pts;
-    for (int x = 0; x <= 9; ++x)
-      for (int y = 0; y <= 9; ++y)
-        if (ref.is_free({x, y}) && ref.wedges_at({x, y}).size() == 1) pts.push_back({x, y});
+    std::vector<Point> pts = single_wedge_points(ref, 9);
     if (pts.size() < 3) continue;
     Sketcher sk{ref, h, pts, rng};
     for (int t = 0; t < 3; ++t) {
