@@ -7,7 +7,8 @@
 // they are and every vertex is an integer. A sketch or wire that leaves free space is an input
 // error (TIGHTEN-0001, file:line, nothing written); a net with nothing to tighten (TIGHTEN-0002)
 // or with no integer staircase in its class (TIGHTEN-0004) is written as failed (exit status 1).
-// `c:` direction sets are refused (CLI-0027) or, from <rules>, replaced by `any` (TIGHTEN-0003).
+// `c:0,90` and `c:0,45,90,135` name rectilinear and octilinear (io::canonical_orientations); other
+// `c:` sets are refused (CLI-0027) or, from <rules>, replaced by `any` (TIGHTEN-0003).
 // --min-link adds each open wire's minimum-link path of its class (router/minlink.h, any angle,
 // exact rational bends) to --stats and --svg; it is not written as a wire (FORMAT.md coordinates
 // are integers).
