@@ -639,6 +639,39 @@ class LinkSolver {
 
 i64 sgn(i64 v) { return (v > 0) - (v < 0); }
 
+// The unit steps of a link a -> b: the two directions of its cone (d[0] == d[1] when the link
+// itself lies along one of the style's directions: `straight`).
+struct LinkDirs {
+  std::array<Dir, 2> d;
+  bool straight = false;
+};
+LinkDirs link_dirs(Point a, Point b, StaircaseStyle style) {
+  const i64 dx = i64{b.x} - a.x, dy = i64{b.y} - a.y;
+  const i64 sx = sgn(dx), sy = sgn(dy), ax = std::abs(dx), ay = std::abs(dy);
+  LinkDirs r;
+  r.straight = dx == 0 || dy == 0 || (style == StaircaseStyle::Octilinear && ax == ay);
+  if (r.straight) r.d = {Dir{sx, sy}, Dir{sx, sy}};
+  else if (style == StaircaseStyle::Rectilinear) r.d = {Dir{sx, 0}, Dir{0, sy}};
+  else if (ax > ay) r.d = {Dir{sx, 0}, Dir{sx, sy}};
+  else r.d = {Dir{0, sy}, Dir{sx, sy}};
+  return r;
+}
+
+// The frame of a non-straight link, with the wedges its two directions leave a and reach b in.
+Frame link_frame(Workspace& ws, Point a, Point b, const std::array<Dir, 2>& d, LinkSolution& s) {
+  Frame fr;
+  fr.a = a;
+  fr.b = b;
+  fr.d = d;
+  fr.det = static_cast<i64>(cross(d[0], d[1]));  // +-1
+  fr.lim = {fr.u_of(b), fr.v_of(b)};
+  for (int k = 0; k < 2; ++k) {
+    s.start_wedge[k] = ws.at(a).wedge_of(d[k]);
+    s.end_wedge[k] = ws.at(b).wedge_of(neg(d[k]));
+  }
+  return fr;
+}
+
 // Solve one link (a != b). Joints: which ends of the link are joints with a neighbouring
 // link (bit 0: at a, bit 1: at b); ignored when exact (every (first, last) pair to its
 // optimum, for link_table). Otherwise a pair is only searched below the best pair found so
@@ -647,20 +680,7 @@ i64 sgn(i64 v) { return (v > 0) - (v < 0); }
 LinkSolution solve_link(Workspace& ws, Point a, Point b, StaircaseStyle style, bool exact,
                         int joints) {
   LinkSolution s;
-  const i64 dx = i64{b.x} - a.x, dy = i64{b.y} - a.y;
-  const i64 sx = sgn(dx), sy = sgn(dy), ax = std::abs(dx), ay = std::abs(dy);
-  std::array<Dir, 2> d;
-  bool straight = false;
-  if (style == StaircaseStyle::Rectilinear) {
-    d = {Dir{sx, 0}, Dir{0, sy}};
-    straight = dx == 0 || dy == 0;
-    if (straight) d[0] = d[1] = Dir{sx, sy};
-  } else {
-    straight = dx == 0 || dy == 0 || ax == ay;
-    if (straight) d = {Dir{sx, sy}, Dir{sx, sy}};
-    else if (ax > ay) d = {Dir{sx, 0}, Dir{sx, sy}};
-    else d = {Dir{0, sy}, Dir{sx, sy}};
-  }
+  const auto [d, straight] = link_dirs(a, b, style);
   s.d = d;
   if (straight) {
     s.nd = 1;
@@ -678,16 +698,7 @@ LinkSolution solve_link(Workspace& ws, Point a, Point b, StaircaseStyle style, b
     return s;
   }
   ++ws.stats().links;
-  Frame fr;
-  fr.a = a;
-  fr.b = b;
-  fr.d = d;
-  fr.det = static_cast<i64>(cross(d[0], d[1]));  // +-1
-  fr.lim = {fr.u_of(b), fr.v_of(b)};
-  for (int k = 0; k < 2; ++k) {
-    s.start_wedge[k] = ws.at(a).wedge_of(d[k]);
-    s.end_wedge[k] = ws.at(b).wedge_of(neg(d[k]));
-  }
+  const Frame fr = link_frame(ws, a, b, d, s);
   LinkSolver solver(ws, fr);
   constexpr int kNoBound = std::numeric_limits<int>::max() / 4;
   // The turning pairs first (an L is their best case), so the others get a bound early.
@@ -958,24 +969,9 @@ class PieceSolver {
 LinkSolution solve_piece(Workspace& ws, std::span<const Point> alpha, StaircaseStyle style) {
   const Point a = alpha.front(), b = alpha.back();
   LinkSolution s;
-  const i64 dx = i64{b.x} - a.x, dy = i64{b.y} - a.y;
-  const i64 sx = sgn(dx), sy = sgn(dy), ax = std::abs(dx), ay = std::abs(dy);
-  std::array<Dir, 2> d;
-  if (style == StaircaseStyle::Rectilinear) d = {Dir{sx, 0}, Dir{0, sy}};
-  else if (ax > ay) d = {Dir{sx, 0}, Dir{sx, sy}};
-  else d = {Dir{0, sy}, Dir{sx, sy}};
-  s.d = d;
+  s.d = link_dirs(a, b, style).d;  // not straight: the caller checked
   ++ws.stats().links;
-  Frame fr;
-  fr.a = a;
-  fr.b = b;
-  fr.d = d;
-  fr.det = static_cast<i64>(cross(d[0], d[1]));
-  fr.lim = {fr.u_of(b), fr.v_of(b)};
-  for (int k = 0; k < 2; ++k) {
-    s.start_wedge[k] = ws.at(a).wedge_of(d[k]);
-    s.end_wedge[k] = ws.at(b).wedge_of(neg(d[k]));
-  }
+  const Frame fr = link_frame(ws, a, b, s.d, s);
   PieceSolver solver(ws, fr, alpha);
   for (int f = 0; f < 2; ++f) {
     if (s.start_wedge[f] < 0) continue;
@@ -1153,9 +1149,7 @@ std::optional<std::vector<Point>> StaircaseBuilder::staircase_in_class(std::span
     const std::size_t i0 = cuts[k], i1 = cuts[k + 1];
     if (i1 <= i0) return std::nullopt;
     const Point a = taut[i0], b = taut[i1];
-    const i64 dx = i64{b.x} - a.x, dy = i64{b.y} - a.y;
-    const bool straight = dx == 0 || dy == 0 || (style == StaircaseStyle::Octilinear && std::abs(dx) == std::abs(dy));
-    if (straight) {
+    if (link_dirs(a, b, style).straight) {
       if (i1 != i0 + 1) return std::nullopt;  // a piece along a basis direction is one segment
       sol.push_back(solve_link(ws, a, b, style, false, 3));
     } else {

@@ -20,6 +20,7 @@
 #include <cstdio>
 #include <deque>
 #include <map>
+#include <optional>
 #include <memory>
 #include <random>
 #include <tuple>
@@ -133,6 +134,13 @@ struct Totals {
 };
 
 
+router::StaircaseStyle style_of(int o) { return o == 0 ? router::StaircaseStyle::Rectilinear : router::StaircaseStyle::Octilinear; }
+
+// The exact length of a path in style o: (axis steps, diagonal steps); rectilinear has no diagonals.
+std::pair<std::int64_t, std::int64_t> style_length(const Path& p, int o) {
+  return o == 0 ? std::pair{l1_length(p), std::int64_t{0}} : oct_length(p);
+}
+
 // The c-oriented form of a tightened path, judged by the references.
 int fewest_bends_exhaustive(const oracle::L1Reference& ref, const oracle::HomotopyWords& h, const geom::Box& D, Point a,
                             Point b, std::int64_t axis, std::int64_t diag, const std::vector<int>& word, bool oct);
@@ -142,7 +150,7 @@ void check_c_oriented(const router::Tightener& tight, const router::StaircaseBui
                       const std::vector<geom::Polygon>& obstacles, const Path& sketch,
                       const Path& taut, const std::string& where, Totals& tot) {
   for (int k = 0; k < 2; ++k) {
-    const auto style = k == 0 ? router::StaircaseStyle::Rectilinear : router::StaircaseStyle::Octilinear;
+    const auto style = style_of(k);
     const router::COriented c = router::c_oriented(tight, sb, taut, style);
     if (c.points.empty()) {
       // only where sloped blockage edges can leave a link with no lattice staircase at all
@@ -161,7 +169,7 @@ void check_c_oriented(const router::Tightener& tight, const router::StaircaseBui
                            << ": no staircase in the class, among blockages whose edges are all in the set";
       ++tot.c_missing[k];
       // and when the wire is short, the exhaustive search agrees that there is none
-      const auto [axis, diag] = k == 0 ? std::pair{l1_length(taut), std::int64_t{0}} : oct_length(taut);
+      const auto [axis, diag] = style_length(taut, k);
       if (axis + diag <= 36) {
         EXPECT_EQ(fewest_bends_exhaustive(ref, h, domain, taut.front(), taut.back(), axis, diag, h.word(sketch), k == 1), -1)
             << where << (k == 0 ? " rectilinear" : " octilinear") << " taut " << str(taut)
@@ -410,6 +418,21 @@ int fewest_bends_any_length(const oracle::L1Reference& ref, const oracle::Homoto
 // touching at corners and edges, octilinear diamonds and 45-degree triangles, T-pinches (a tip on
 // the middle of a rectangle's edge), sloped slivers. Every c-oriented wire against the exhaustive
 // search: the same bends, and a missing wire only when the search finds none either.
+// A random sketch (a walk of `legs` legs, with loops appended when asked) and its taut path;
+// nullopt when the sketch is closed or does not tighten.
+struct TautSketch {
+  Path sketch;
+  router::Tightened taut;
+};
+std::optional<TautSketch> taut_sketch(Sketcher& sk, const router::Tightener& tight, int legs, bool loops) {
+  TautSketch r{sk.walk(legs), {}};
+  if (loops) sk.add_loops(r.sketch);
+  if (r.sketch.size() < 2 || r.sketch.front() == r.sketch.back()) return std::nullopt;
+  r.taut = tight.tighten(r.sketch);
+  if (r.taut.status != router::TightenStatus::Ok) return std::nullopt;
+  return r;
+}
+
 // Lattice points of [0, N]^2 that are free with one wedge (where the sketches start, end and bend).
 std::vector<Point> single_wedge_points(const oracle::L1Reference& ref, int N) {
   std::vector<Point> pts;
@@ -536,16 +559,14 @@ TEST(Tighten, COrientedFewestLinksOnDegenerateScenes) {
       std::mt19937_64 rng64(static_cast<std::uint64_t>(seed) * 1000003u + static_cast<std::uint64_t>(kind));
       Sketcher sk{ref, h, pts, rng64};
       for (int t = 0; t < 6; ++t) {
-        Path sketch = sk.walk(2 + static_cast<int>(rng64() % 4));
-        if (t >= 4) sk.add_loops(sketch);
-        if (sketch.size() < 2 || sketch.front() == sketch.back()) continue;
-        const router::Tightened tt = st.tight->tighten(sketch);
-        if (tt.status != router::TightenStatus::Ok) continue;
+        const auto ts = taut_sketch(sk, *st.tight, 2 + static_cast<int>(rng64() % 4), t >= 4);
+        if (!ts) continue;
+        const Path& sketch = ts->sketch;
+        const router::Tightened& tt = ts->taut;
         const std::vector<int> w = h.word(sketch);
         for (int o = 0; o < 2; ++o) {
-          const auto style = o == 0 ? router::StaircaseStyle::Rectilinear : router::StaircaseStyle::Octilinear;
-          const router::COriented c = router::c_oriented(*st.tight, sb, tt.points, style);
-          const auto [axis, dg] = o == 0 ? std::pair{l1_length(tt.points), std::int64_t{0}} : oct_length(tt.points);
+          const router::COriented c = router::c_oriented(*st.tight, sb, tt.points, style_of(o));
+          const auto [axis, dg] = style_length(tt.points, o);
           if (axis + dg > (kSanitized ? 24 : 30)) continue;
           const int want = fewest_bends_exhaustive(ref, h, sc.domain, sketch.front(), sketch.back(), axis, dg, w, o == 1);
           const std::string where = "seed " + std::to_string(seed) + " kind " + std::to_string(kind) +
@@ -594,24 +615,17 @@ TEST(Tighten, COrientedFewestLinksAgainstExhaustiveSearch) {
     if (pts.size() < 3) continue;
     Sketcher sk{ref, h, pts, rng};
     for (int t = 0; t < 3; ++t) {
-      Path sketch = sk.walk(2 + r(0, 3));
-      if (t == 2) sk.add_loops(sketch);
-      if (sketch.size() < 2 || sketch.front() == sketch.back()) continue;
-      const router::Tightened tt = st.tight->tighten(sketch);
-      if (tt.status != router::TightenStatus::Ok) continue;
+      const auto ts = taut_sketch(sk, *st.tight, 2 + r(0, 3), t == 2);
+      if (!ts) continue;
+      const Path& sketch = ts->sketch;
+      const router::Tightened& tt = ts->taut;
       const std::vector<int> w = h.word(sketch);
       for (int o = 0; o < 2; ++o) {
-        const auto style = o == 0 ? router::StaircaseStyle::Rectilinear : router::StaircaseStyle::Octilinear;
-        const router::COriented c = router::c_oriented(*st.tight, sb, tt.points, style);
+        const router::COriented c = router::c_oriented(*st.tight, sb, tt.points, style_of(o));
         const std::string where = "seed " + std::to_string(seed) + (o ? " octilinear" : " rectilinear") + " sketch " +
                                   str(sketch) + " taut " + str(tt.points) + " c-oriented " + str(c.points);
         ASSERT_FALSE(c.points.empty()) << where;
-        std::int64_t axis = 0, dg = 0;
-        if (o == 0) {
-          axis = l1_length(tt.points);
-        } else {
-          std::tie(axis, dg) = oct_length(tt.points);
-        }
+        const auto [axis, dg] = style_length(tt.points, o);
         // keep the search small (smaller under the sanitizers, where its maps cost most of the time)
         if (axis + dg > (kSanitized ? 24 : 36)) continue;
         const int want = fewest_bends_exhaustive(ref, h, sc.domain, sketch.front(), sketch.back(), axis, dg, w, o == 1);
