@@ -704,10 +704,12 @@ class Reader {
   void read_routes(const xmlNode* n, Routes& r) {
     r.line = line_of(n);
     Attrs a;
-    attrs(n, "routes", {"tool", "metric", "orientations"}, a);
+    attrs(n, "routes", {"tool", "metric", "orientations", "bend-cost"}, a);
     if (a.present[0]) r.tool = std::string(a.value[0]);
     if (a.present[1]) r.metric = std::string(a.value[1]);
     if (a.present[2]) r.orientations = std::string(a.value[2]);
+    std::int64_t c = 0;
+    if (a.present[3] && integer(n, Ctx("routes"), "bend-cost", a.value[3], c, 0)) r.bend_cost = c;
     for (const xmlNode* c = n->children; c; c = c->next) {
       if (!is_element(c, "routes")) continue;
       if (name_of(c) != "route") {

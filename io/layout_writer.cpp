@@ -262,6 +262,7 @@ std::string layout_to_xml(const Layout& layout) {
     o.attr("tool", rs.tool);
     if (!rs.metric.empty()) o.attr("metric", rs.metric);
     if (!rs.orientations.empty()) o.attr("orientations", rs.orientations);
+    if (rs.bend_cost) o.attr("bend-cost", *rs.bend_cost);
     if (rs.routes.empty()) {
       out += "/>\n";
     } else {

@@ -67,24 +67,51 @@ std::optional<geom::Point> parse_point_option(const std::string& name, const std
 }
 
 void add_routing_options(CLI::App* sub, RoutingOptions& options) {
-  sub->add_option("--metric", options.metric, "l1 (default); combined and link are not available yet");
+  sub->add_option("--metric", options.metric,
+                  "l1 (default: shortest), combined (length + C x bends, C from --bend-cost or <rules> "
+                  "bend-cost) or link (fewest bends, then shortest); combined and link: rectilinear "
+                  "wires, `path` only in this version");
   sub->add_option("--orientations", options.orientations,
                   "rectilinear or octilinear (spm also: any, epsilon-approximate Euclidean distances); "
                   "default: orientations of <rules>, else rectilinear; c: sets only as another name of those "
                   "two (c:0,90 or c:0,45,90,135)");
-  sub->add_option("--bend-cost", options.bend_cost, "C of the combined metric (not available yet)");
+  sub->add_option("--bend-cost", options.bend_cost,
+                  "C >= 0 of --metric combined (an integer in DBU per bend, at most 2^31; default: <rules> "
+                  "bend-cost, else 0)");
+}
+
+std::int64_t routing_bend_cost(const RoutingOptions& options, const io::Layout& layout) {
+  if (options.bend_cost) return *options.bend_cost;
+  return layout.rules ? layout.rules->bend_cost : 0;
 }
 
 bool check_routing_options(const RoutingOptions& options, const io::Layout& layout, bool quiet) {
-  if (options.metric != "l1") {
-    print_usage_error("CLI-0020", "--metric " + options.metric +
-                                      ": only the l1 metric is available in this version "
-                                      "(combined and link come with bend-aware routing)");
+  const bool bends = options.metric == "combined" || options.metric == "link";
+  if (options.metric != "l1" && !bends) {
+    print_usage_error("CLI-0020", "--metric " + options.metric + ": expected l1, combined or link");
     return false;
   }
-  if (options.bend_cost) {
-    print_usage_error("CLI-0020", "--bend-cost applies to the combined metric, which is not "
-                                  "available in this version");
+  if (bends && !options.allow_bends) {
+    print_usage_error("CLI-0020", "--metric " + options.metric +
+                                      ": route does not weigh bends yet (taut path does); route with "
+                                      "--metric l1");
+    return false;
+  }
+  if (options.bend_cost && options.metric != "combined") {
+    print_usage_error("CLI-0020", "--bend-cost applies to --metric combined (this run: --metric " +
+                                      options.metric + ")");
+    return false;
+  }
+  if (options.bend_cost && (*options.bend_cost < 0 || *options.bend_cost > kMaxBendCost)) {
+    print_usage_error("CLI-0020", "--bend-cost " + std::to_string(*options.bend_cost) +
+                                      ": expected an integer from 0 to 2^31");
+    return false;
+  }
+  if (bends && !options.bend_cost && layout.rules && layout.rules->bend_cost > kMaxBendCost &&
+      options.metric == "combined") {
+    print_diagnostics({Diagnostic{Severity::Error, "CLI-0020", layout.file, layout.rules->line, 0,
+                                  "<rules> bend-cost=" + std::to_string(layout.rules->bend_cost) +
+                                      ": the combined metric takes at most 2^31 (pass --bend-cost)"}});
     return false;
   }
   auto available = [&](const std::string& text) {
@@ -105,11 +132,17 @@ bool check_routing_options(const RoutingOptions& options, const io::Layout& layo
                                       "--orientations octilinear to route anyway"}});
     return false;
   }
-  if (layout.rules && layout.rules->bend_cost > 0)
+  if (bends && routing_orientations(options, layout) != "rectilinear") {
+    print_usage_error("CLI-0021", "--metric " + options.metric +
+                                      " routes rectilinear wires only (bends of octilinear wires are not "
+                                      "weighed yet); pass --orientations rectilinear");
+    return false;
+  }
+  if (!bends && layout.rules && layout.rules->bend_cost > 0)
     print_diagnostics({Diagnostic{Severity::Warning, "CLI-0024", layout.file, layout.rules->line, 0,
                                   "<rules> bend-cost=" + std::to_string(layout.rules->bend_cost) +
-                                      " is not honoured yet: wires are shortest in L1 and bends "
-                                      "are not weighed against length"}},
+                                      " is not weighed by the l1 metric: wires are shortest in L1 "
+                                      "(taut path --metric combined weighs it)"}},
                       quiet);
   return true;
 }

@@ -43,8 +43,9 @@ std::optional<geom::Point> parse_point(const std::string& text);
 std::optional<geom::Point> parse_point_option(const std::string& name, const std::string& text);
 
 // The routing options of `path` and `route` (CLI.md). This version routes the l1 metric with
-// rectilinear output; any other request is refused with a message naming what is missing
-// (never silently routed another way).
+// rectilinear or octilinear output, and (`path`) the combined and link metrics with rectilinear
+// output; any other request is refused with a message naming what is missing (never silently
+// routed another way).
 struct RoutingOptions {
   std::string metric = "l1";
   std::string orientations;  // empty: from <rules> (default rectilinear)
@@ -52,7 +53,14 @@ struct RoutingOptions {
   // `spm` only: orientations "any" is accepted (distances are then epsilon-approximate
   // Euclidean ones, from a fixed-orientation norm).
   bool allow_any = false;
+  // `path` only (this version): --metric combined and link (rectilinear wires).
+  bool allow_bends = false;
 };
+// The combined metric's C: --bend-cost, else <rules> bend-cost, else 0.
+std::int64_t routing_bend_cost(const RoutingOptions& options, const io::Layout& layout);
+// The largest bend cost accepted (the router adds C times the bends in 128 bits; the limit keeps
+// the cost printable and far from overflow).
+inline constexpr std::int64_t kMaxBendCost = std::int64_t{1} << 31;
 // Checks the options against what is implemented and the layout's <rules>; prints and returns
 // false when routing must not start (exit status 2). A bend cost in <rules> is reported as a
 // warning (it only matters to the combined metric).

@@ -1,12 +1,15 @@
-// taut path FILE --from X,Y --to X,Y [--orientations rectilinear|octilinear] [--json]: one exact
-// shortest wire among the layout's blockages (rectilinear: L1 length; octilinear: the length
-// a + b*sqrt2 of the shortest path in 0/45/90/135 degrees), with integer vertices; its cost,
-// length, bends, points.
+// taut path FILE --from X,Y --to X,Y [--orientations rectilinear|octilinear]
+// [--metric l1|combined|link] [--bend-cost C] [--json]: one exact shortest wire among the
+// layout's blockages (rectilinear: L1 length; octilinear: the length a + b*sqrt2 of the shortest
+// path in 0/45/90/135 degrees; combined: L1 length + C x bends; link: fewest bends, then
+// shortest), with integer vertices; its cost, length, bends, points.
 #include <iostream>
 
 #include <nlohmann/json.hpp>
 
 #include "geom/predicates.h"
+#include "io/layout_geometry.h"
+#include "router/bend_router.h"
 #include "router/l1_router.h"
 #include "router/oct_router.h"
 #include "tools/cli.h"
@@ -14,6 +17,75 @@
 #include "tools/route_common.h"
 
 namespace taut::cli {
+
+namespace {
+
+// The JSON of `path` when there is no wire (CLI.md: "cost":null and a reason).
+void no_wire_json(nlohmann::ordered_json& j, const std::string& reason) {
+  j["cost"] = nullptr;
+  j["length"] = nullptr;
+  j["bends"] = nullptr;
+  j["points"] = nlohmann::ordered_json::array();
+  j["reason"] = reason;
+}
+
+// --metric combined / link: BendRouter among the rectilinear cover of the blockages.
+int bend_path(const io::Layout& layout, const RoutingOptions& routing, geom::Point from, geom::Point to,
+              bool json, bool quiet) {
+  const bool link = routing.metric == "link";
+  const std::int64_t c = link ? 0 : routing_bend_cost(routing, layout);
+  const geom::Point ends[2] = {from, to};
+  const BendObstacles obs = bend_obstacles(layout, ends, routing.metric, quiet);
+  const geom::NormalizedObstacles& norm = obs.norm;
+  const router::BendRouter router(norm.domain, norm.obstacles);
+  const router::BendPath p = router.path(from, to, link ? router::BendMetric::Link : router::BendMetric::Combined, c);
+
+  nlohmann::ordered_json j;
+  j["metric"] = routing.metric;
+  if (!link) j["bend_cost"] = c;
+  std::string code, reason;
+  auto not_free = [&](geom::Point q) { return obs.why_not_free(layout, q); };
+  switch (p.status) {
+    case router::WireStatus::Ok: break;
+    case router::WireStatus::SourceNotFree:
+      code = "ROUTE-0001", reason = "--from " + point_text(from) + " " + not_free(from);
+      break;
+    case router::WireStatus::TargetNotFree:
+      code = "ROUTE-0001", reason = "--to " + point_text(to) + " " + not_free(to);
+      break;
+    default:
+      code = "ROUTE-0002", reason = point_text(to) + " cannot be reached from " + point_text(from) +
+                                    ": blockages wall one of them in";
+      if (!obs.covered.empty()) reason += " (the rectilinear covers of sloped blockages count, ROUTE-0008)";
+      break;
+  }
+  int status = kOk;
+  if (p.status == router::WireStatus::Ok) {
+    const __int128 cost = p.cost(link ? router::BendMetric::Link : router::BendMetric::Combined, c);
+    const auto cost64 = static_cast<std::int64_t>(cost);  // length < 2^62 and C * bends < 2^62 here
+    j["cost"] = cost64;
+    j["length"] = p.length;
+    j["bends"] = p.bends;
+    auto pts = nlohmann::ordered_json::array();
+    for (const geom::Point q : p.points) pts.push_back({q.x, q.y});
+    j["points"] = pts;
+    if (!json) {
+      std::cout << "cost " << cost64 << " (" << routing.metric;
+      if (!link) std::cout << ", bend cost " << c;
+      std::cout << "), length " << p.length << ", " << p.bends << (p.bends == 1 ? " bend:" : " bends:");
+      for (const geom::Point q : p.points) std::cout << ' ' << point_text(q);
+      std::cout << '\n';
+    }
+  } else {
+    no_wire_json(j, reason);
+    print_usage_error(code, reason);
+    status = kIncomplete;
+  }
+  if (json) std::cout << j.dump() << '\n';
+  return status;
+}
+
+}  // namespace
 
 void add_path(CLI::App& app, int& status) {
   struct Args {
@@ -28,6 +100,7 @@ void add_path(CLI::App& app, int& status) {
   sub->add_option("--to", args->to, "end point X,Y")->required();
   sub->add_flag("--json", args->json, "print one JSON document on stdout");
   add_routing_options(sub, args->routing);
+  args->routing.allow_bends = true;
   add_input_options(sub, args->file, args->load, "do not print warnings");
   sub->callback([args, &status] {
     const auto from = parse_point_option("--from", args->from);
@@ -42,6 +115,10 @@ void add_path(CLI::App& app, int& status) {
       return;
     }
     const geom::Point ends[2] = {*from, *to};
+    if (args->routing.metric != "l1") {
+      status = bend_path(*layout, args->routing, *from, *to, args->json, args->load.quiet);
+      return;
+    }
     const geom::NormalizedObstacles norm = routing_obstacles(*layout, ends);
     const bool oct = routing_orientations(args->routing, *layout) == "octilinear";
     // One wire record for both orientations: the length exactly as a + b*sqrt2 (b = 0 for L1).
@@ -102,11 +179,7 @@ void add_path(CLI::App& app, int& status) {
         std::cout << '\n';
       }
     } else {
-      j["cost"] = nullptr;
-      j["length"] = nullptr;
-      j["bends"] = nullptr;
-      j["points"] = nlohmann::ordered_json::array();
-      j["reason"] = reason;
+      no_wire_json(j, reason);
       if (w.status == router::WireStatus::NoIntegerStaircase) {
         j[oct ? "octilinear_distance" : "l1_distance"] = length_json(*w.length);
         if (oct) j["length_exact"] = {w.length->a, w.length->b};

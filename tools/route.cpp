@@ -22,6 +22,7 @@
 #include "io/layout_writer.h"
 #include "io/stats_json.h"
 #include "io/svg.h"
+#include "router/bend_router.h"
 #include "router/l1_router.h"
 #include "router/oct_router.h"
 #include "router/version.h"
@@ -37,20 +38,29 @@ struct NetResult {
   std::string code;  // ROUTE-xxxx when failed
 };
 
+// A net written as failed, with the code and reason that stderr names.
+NetResult failed(const io::Net& net, const char* code, std::string reason) {
+  NetResult r;
+  r.route.net = net.name;
+  r.route.status = "failed";
+  r.route.reason = std::move(reason);
+  r.code = code;
+  return r;
+}
+// ROUTE-0006 for a net of fewer than two pins, else nothing.
+std::optional<NetResult> too_few_pins(const io::Net& net) {
+  if (net.pins.size() >= 2) return std::nullopt;
+  return failed(net, "ROUTE-0006", "the net has " + std::to_string(net.pins.size()) + " pin(s); a wire needs two");
+}
+
 // Router: router::L1Router (rectilinear wires) or router::OctRouter (octilinear).
 template <class Router>
 NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router) {
   constexpr bool oct = Router::kOctilinear;
   NetResult r;
   r.route.net = net.name;
-  auto fail = [&](const char* code, std::string reason) {
-    r.route.status = "failed";
-    r.route.reason = std::move(reason);
-    r.code = code;
-    return r;
-  };
-  if (net.pins.size() < 2)
-    return fail("ROUTE-0006", "the net has " + std::to_string(net.pins.size()) + " pin(s); a wire needs two");
+  auto fail = [&](const char* code, std::string reason) { return failed(net, code, std::move(reason)); };
+  if (auto few = too_few_pins(net)) return *few;
   auto pin_geometry = [](const io::Pin& pin) {
     geom::Polygon g;
     if (pin.point)
@@ -153,6 +163,41 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router
   return finish({io::Wire{w.points}});
 }
 
+// --metric combined / link (router::BendRouter): nets of two point pins.
+NetResult route_net_bends(const io::Layout& layout, const io::Net& net, const BendObstacles& obs,
+                          const router::BendRouter& router, router::BendMetric metric, std::int64_t bend_cost) {
+  NetResult r;
+  r.route.net = net.name;
+  auto fail = [&](const char* code, std::string reason) { return failed(net, code, std::move(reason)); };
+  if (auto few = too_few_pins(net)) return *few;
+  if (net.pins.size() > 2 || !net.pins[0].point || !net.pins[1].point)
+    return fail("ROUTE-0009", std::string("with --metric ") + (metric == router::BendMetric::Link ? "link" : "combined") +
+                                  " only nets of two point pins are routed in this version (this net has " +
+                                  std::to_string(net.pins.size()) + " pins" +
+                                  (net.pins.size() == 2 ? ", a shape among them" : "") + ")");
+  const io::Pin& a = net.pins[0];
+  const io::Pin& b = net.pins[1];
+  const router::BendPath p = router.path(*a.point, *b.point, metric, bend_cost);
+  switch (p.status) {
+    case router::WireStatus::Ok: break;
+    case router::WireStatus::SourceNotFree:
+      return fail("ROUTE-0001", "pin \"" + a.name + "\" at " + point_text(*a.point) + " " + obs.why_not_free(layout, *a.point));
+    case router::WireStatus::TargetNotFree:
+      return fail("ROUTE-0001", "pin \"" + b.name + "\" at " + point_text(*b.point) + " " + obs.why_not_free(layout, *b.point));
+    default:
+      return fail("ROUTE-0002", "pins \"" + a.name + "\" and \"" + b.name +
+                                    "\" are in different parts of free space: blockages (or the rectilinear "
+                                    "covers of sloped ones) wall one of them in");
+  }
+  std::vector<geom::Point> pts = p.points;
+  if (pts.size() == 1) pts.push_back(pts[0]);  // pins at one point
+  r.route.status = "routed";
+  r.route.length = io::format_total_length({pts});
+  r.route.bends = p.bends;
+  r.route.wires = {io::Wire{pts}};
+  return r;
+}
+
 }  // namespace
 
 void add_route(CLI::App& app, int& status) {
@@ -168,6 +213,7 @@ void add_route(CLI::App& app, int& status) {
   sub->add_option("--svg", args->svg, "also draw the routed layout as SVG");
   sub->add_option("--stats", args->stats, "also write statistics as JSON");
   add_routing_options(sub, args->routing);
+  args->routing.allow_bends = true;
   sub->add_flag("--tighten", args->tighten,
                 "then pull every wire taut in its class and write it with the fewest links (a net with a "
                 "<sketch> follows its sketch), as taut tighten does");
@@ -180,109 +226,145 @@ void add_route(CLI::App& app, int& status) {
       status = kInvalid;
       return;
     }
-    std::vector<geom::Point> sketch_points;  // --tighten: sketches must fit in the domain
-    if (args->tighten)
-      for (const io::Net& net : layout->nets)
-        if (net.sketch) sketch_points.insert(sketch_points.end(), net.sketch->points.begin(), net.sketch->points.end());
-    const geom::NormalizedObstacles norm = routing_obstacles(*layout, sketch_points);
-    const bool octilinear = routing_orientations(args->routing, *layout) == "octilinear";
-    std::optional<router::L1Router> l1;
-    std::optional<router::OctRouter> oct;
-    if (octilinear)
-      oct.emplace(norm.domain, norm.obstacles);
-    else
-      l1.emplace(norm.domain, norm.obstacles);
-    const auto t1 = Clock::now();
-
+    const bool bends = args->routing.metric != "l1";
+    if (bends && args->tighten) {
+      print_usage_error("CLI-0020", "--tighten makes every wire shortest in L1 in its class; it does not apply "
+                                    "to --metric " + args->routing.metric);
+      status = kInvalid;
+      return;
+    }
     io::Routes routes;
     routes.tool = "taut " + std::string(router::version());
-    routes.metric = "l1";
-    routes.orientations = octilinear ? "octilinear" : "rectilinear";
     std::size_t routed = 0;
-    // With --tighten a two-pin net's sketch, or a loop sketch on any net, is what gets tightened.
-    auto follows_sketch = [&](const io::Net& net) {
-      return args->tighten && net.sketch && (net.pins.size() == 2 || WireTightener::is_loop(net.sketch->points));
-    };
-    for (const io::Net& net : layout->nets) {
-      NetResult r = l1 ? route_net(*layout, net, *l1) : route_net(*layout, net, *oct);
-      if (r.route.status == "routed") {
-        ++routed;
-        if (net.sketch && !follows_sketch(net))  // said, not dropped silently
-          print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0007", layout->file, net.sketch->line, 0,
-                                        "net \"" + net.name + "\": the wire is the shortest of any "
-                                        "homotopy class and does not follow the <sketch> (--tighten or "
-                                        "taut tighten pull the sketch taut in its class)"}},
-                            args->load.quiet);
-      } else if (!(follows_sketch(net) && WireTightener::is_loop(net.sketch->points))) {  // a loop net is tightened below
-        print_diagnostics({Diagnostic{Severity::Warning, r.code, layout->file, net.line, 0,
-                                      "net \"" + net.name + "\" not routed: " + *r.route.reason}},
-                          args->load.quiet);
-      }
-      routes.routes.push_back(std::move(r.route));
-    }
-    if (args->tighten) {
-      // Every routed wire pulled taut in its class and written with the fewest links (its L1 or
-      // octilinear length cannot grow: the routed wire is a staircase of the class); a net with a
-      // sketch gets its sketch tightened instead, which fixes its class.
-      const WireTightener wt(norm, octilinear ? "octilinear" : "rectilinear");
-      std::vector<Diagnostic> errors;
-      for (std::size_t i = 0; i < layout->nets.size(); ++i) {
-        const io::Net& net = layout->nets[i];
-        io::Route& route = routes.routes[i];
-        std::vector<io::Wire> wires;
-        if (follows_sketch(net)) {
-          const auto res = wt.run(net.sketch->points);
-          if (res.taut.status != router::TightenStatus::Ok) {
-            errors.push_back(Diagnostic{Severity::Error, "TIGHTEN-0001", layout->file, net.sketch->line, 0,
-                                        WireTightener::failure_text(*layout, net.name, "sketch", net.sketch->points,
-                                                                    res.taut)});
-            continue;
-          }
-          if (res.no_staircase || res.contractible) {
-            if (route.status == "routed") --routed;
-            route = io::Route{};
-            route.net = net.name;
-            route.status = "failed";
-            route.reason = res.contractible
-                               ? std::string("the loop sketch winds around no blockage: it can be pulled to a point")
-                               : no_staircase_reason(octilinear ? "octilinear" : "rectilinear") + " (the net's <sketch>)";
-            print_diagnostics({Diagnostic{Severity::Warning, res.contractible ? "TIGHTEN-0005" : "TIGHTEN-0004",
-                                          layout->file, net.sketch->line, 0, "net \"" + net.name + "\": " + *route.reason}},
+    auto t1 = Clock::now();
+    if (bends) {
+      const BendObstacles obs = bend_obstacles(*layout, {}, args->routing.metric, args->load.quiet);
+      const geom::NormalizedObstacles& norm = obs.norm;
+      const router::BendRouter br(norm.domain, norm.obstacles);
+      const bool link = args->routing.metric == "link";
+      const std::int64_t c = link ? 0 : routing_bend_cost(args->routing, *layout);
+      routes.metric = args->routing.metric;
+      routes.orientations = "rectilinear";
+      if (!link) routes.bend_cost = c;
+      t1 = Clock::now();
+      for (const io::Net& net : layout->nets) {
+        NetResult r = route_net_bends(*layout, net, obs, br, link ? router::BendMetric::Link : router::BendMetric::Combined, c);
+        if (r.route.status == "routed") {
+          ++routed;
+          if (net.sketch)
+            print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0007", layout->file, net.sketch->line, 0,
+                                          "net \"" + net.name + "\": the wire is the best of any homotopy class "
+                                          "under --metric " + args->routing.metric + " and does not follow the <sketch>"}},
                               args->load.quiet);
+        } else {
+          print_diagnostics({Diagnostic{Severity::Warning, r.code, layout->file, net.line, 0,
+                                        "net \"" + net.name + "\" not routed: " + *r.route.reason}},
+                            args->load.quiet);
+        }
+        routes.routes.push_back(std::move(r.route));
+      }
+    } else {
+      std::vector<geom::Point> sketch_points;  // --tighten: sketches must fit in the domain
+      if (args->tighten)
+        for (const io::Net& net : layout->nets)
+          if (net.sketch) sketch_points.insert(sketch_points.end(), net.sketch->points.begin(), net.sketch->points.end());
+      const geom::NormalizedObstacles norm = routing_obstacles(*layout, sketch_points);
+      const bool octilinear = routing_orientations(args->routing, *layout) == "octilinear";
+      std::optional<router::L1Router> l1;
+      std::optional<router::OctRouter> oct;
+      if (octilinear)
+        oct.emplace(norm.domain, norm.obstacles);
+      else
+        l1.emplace(norm.domain, norm.obstacles);
+      t1 = Clock::now();
+
+      routes.metric = "l1";
+      routes.orientations = octilinear ? "octilinear" : "rectilinear";
+      // With --tighten a two-pin net's sketch, or a loop sketch on any net, is what gets tightened.
+      auto follows_sketch = [&](const io::Net& net) {
+        return args->tighten && net.sketch && (net.pins.size() == 2 || WireTightener::is_loop(net.sketch->points));
+      };
+      for (const io::Net& net : layout->nets) {
+        NetResult r = l1 ? route_net(*layout, net, *l1) : route_net(*layout, net, *oct);
+        if (r.route.status == "routed") {
+          ++routed;
+          if (net.sketch && !follows_sketch(net))  // said, not dropped silently
+            print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0007", layout->file, net.sketch->line, 0,
+                                          "net \"" + net.name + "\": the wire is the shortest of any "
+                                          "homotopy class and does not follow the <sketch> (--tighten or "
+                                          "taut tighten pull the sketch taut in its class)"}},
+                              args->load.quiet);
+        } else if (!(follows_sketch(net) && WireTightener::is_loop(net.sketch->points))) {  // a loop net is tightened below
+          print_diagnostics({Diagnostic{Severity::Warning, r.code, layout->file, net.line, 0,
+                                        "net \"" + net.name + "\" not routed: " + *r.route.reason}},
+                            args->load.quiet);
+        }
+        routes.routes.push_back(std::move(r.route));
+      }
+      if (args->tighten) {
+        // Every routed wire pulled taut in its class and written with the fewest links (its L1 or
+        // octilinear length cannot grow: the routed wire is a staircase of the class); a net with a
+        // sketch gets its sketch tightened instead, which fixes its class.
+        const WireTightener wt(norm, octilinear ? "octilinear" : "rectilinear");
+        std::vector<Diagnostic> errors;
+        for (std::size_t i = 0; i < layout->nets.size(); ++i) {
+          const io::Net& net = layout->nets[i];
+          io::Route& route = routes.routes[i];
+          std::vector<io::Wire> wires;
+          if (follows_sketch(net)) {
+            const auto res = wt.run(net.sketch->points);
+            if (res.taut.status != router::TightenStatus::Ok) {
+              errors.push_back(Diagnostic{Severity::Error, "TIGHTEN-0001", layout->file, net.sketch->line, 0,
+                                          WireTightener::failure_text(*layout, net.name, "sketch", net.sketch->points,
+                                                                      res.taut)});
+              continue;
+            }
+            if (res.no_staircase || res.contractible) {
+              if (route.status == "routed") --routed;
+              route = io::Route{};
+              route.net = net.name;
+              route.status = "failed";
+              route.reason = res.contractible
+                                 ? std::string("the loop sketch winds around no blockage: it can be pulled to a point")
+                                 : no_staircase_reason(octilinear ? "octilinear" : "rectilinear") + " (the net's <sketch>)";
+              print_diagnostics({Diagnostic{Severity::Warning, res.contractible ? "TIGHTEN-0005" : "TIGHTEN-0004",
+                                            layout->file, net.sketch->line, 0, "net \"" + net.name + "\": " + *route.reason}},
+                                args->load.quiet);
+              continue;
+            }
+            wires.push_back(io::Wire{res.points});
+            if (route.status != "routed") ++routed;
+          } else if (route.status == "routed") {
+            for (const io::Wire& w : route.wires) {
+              const auto res = wt.run(w.points);
+              // a routed wire is in free space; when no staircase is found, or the one found has
+              // more bends (its fewest links not proven), the routed one stays
+              const bool better = !res.points.empty() && geom::count_bends(res.points) <= geom::count_bends(w.points);
+              wires.push_back(better ? io::Wire{res.points} : w);
+            }
+          } else {
             continue;
           }
-          wires.push_back(io::Wire{res.points});
-          if (route.status != "routed") ++routed;
-        } else if (route.status == "routed") {
-          for (const io::Wire& w : route.wires) {
-            const auto res = wt.run(w.points);
-            // a routed wire is in free space; when no staircase is found, or the one found has
-            // more bends (its fewest links not proven), the routed one stays
-            const bool better = !res.points.empty() && geom::count_bends(res.points) <= geom::count_bends(w.points);
-            wires.push_back(better ? io::Wire{res.points} : w);
+          std::vector<std::vector<geom::Point>> lines;
+          long bends = 0;
+          for (const io::Wire& w : wires) {
+            lines.push_back(w.points);
+            bends += geom::count_bends(w.points);
           }
-        } else {
-          continue;
+          route = io::Route{};
+          route.net = net.name;
+          route.status = "routed";
+          route.length = io::format_total_length(lines);
+          route.bends = bends;
+          route.wires = std::move(wires);
         }
-        std::vector<std::vector<geom::Point>> lines;
-        long bends = 0;
-        for (const io::Wire& w : wires) {
-          lines.push_back(w.points);
-          bends += geom::count_bends(w.points);
+        if (!errors.empty()) {
+          print_diagnostics(errors);
+          status = kInvalid;
+          return;
         }
-        route = io::Route{};
-        route.net = net.name;
-        route.status = "routed";
-        route.length = io::format_total_length(lines);
-        route.bends = bends;
-        route.wires = std::move(wires);
       }
-      if (!errors.empty()) {
-        print_diagnostics(errors);
-        status = kInvalid;
-        return;
-      }
-    }
+    }  // the l1 metric
     const auto t2 = Clock::now();
     io::Layout out = *layout;
     out.routes = std::move(routes);

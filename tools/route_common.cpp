@@ -5,6 +5,8 @@
 
 #include "geom/predicates.h"
 #include "io/layout_geometry.h"
+#include "router/bend_router.h"
+#include "tools/cli.h"
 
 namespace taut::cli {
 
@@ -12,6 +14,40 @@ geom::NormalizedObstacles routing_obstacles(const io::Layout& layout,
                                             std::span<const geom::Point> extra) {
   const geom::Box domain = io::routing_domain(layout, extra);
   return geom::normalize_obstacles(io::blockage_polygons(layout), domain);
+}
+
+BendObstacles bend_obstacles(const io::Layout& layout, std::span<const geom::Point> extra, const std::string& metric,
+                             bool quiet) {
+  BendObstacles b;
+  b.polygons = io::blockage_polygons(layout, &b.owner);
+  const std::vector<geom::Polygon> cover = router::rectilinear_cover(b.polygons, &b.covered);
+  std::size_t last = layout.blockages.size();
+  for (const std::size_t i : b.covered) {
+    if (b.owner[i] == last) continue;  // shapes of one blockage are consecutive
+    last = b.owner[i];
+    const io::Blockage& blk = layout.blockages[last];
+    print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0008", layout.file, blk.line, 0,
+                                  "blockage \"" + blk.id + "\" has sloped edges: --metric " + metric +
+                                      " routes around its rectilinear cover (the bounding box of every sloped "
+                                      "edge is added to it)"}},
+                      quiet);
+  }
+  b.norm = geom::normalize_obstacles(cover, io::routing_domain(layout, extra));
+  return b;
+}
+
+std::string BendObstacles::why_not_free(const io::Layout& layout, geom::Point q) const {
+  for (const std::size_t i : covered) {
+    if (geom::locate(q, polygons[i]) == geom::Location::Inside) break;  // the blockage itself
+    const geom::Polygon only[1] = {polygons[i]};
+    for (const geom::Polygon& box : router::rectilinear_cover(only))
+      if (geom::locate(q, box) != geom::Location::Outside) {
+        const io::Blockage& blk = layout.blockages[owner[i]];
+        return "lies in the rectilinear cover of sloped blockage \"" + blk.id + "\" (" + layout.file + ":" +
+               std::to_string(blk.line) + "; ROUTE-0008)";
+      }
+  }
+  return cli::why_not_free(layout, q);
 }
 
 std::string point_text(geom::Point p) { return std::to_string(p.x) + "," + std::to_string(p.y); }

@@ -21,6 +21,21 @@ namespace taut::cli {
 geom::NormalizedObstacles routing_obstacles(const io::Layout& layout,
                                             std::span<const geom::Point> extra = {});
 
+// --metric combined / link route rectilinear wires among rectilinear obstacles: every blockage
+// with a sloped edge is replaced by its rectilinear cover (router::rectilinear_cover), with a
+// warning naming it (ROUTE-0008, once per blockage; not printed when quiet), then everything is
+// normalized inside io::routing_domain(layout, extra).
+struct BendObstacles {
+  geom::NormalizedObstacles norm;
+  std::vector<geom::Polygon> polygons;  // the blockage shapes (io::blockage_polygons)
+  std::vector<std::size_t> owner;       // blockage index of each shape
+  std::vector<std::size_t> covered;     // shapes with a sloped edge
+  // Why p is not free for these metrics: why_not_free(), or the cover of a sloped blockage.
+  std::string why_not_free(const io::Layout& layout, geom::Point p) const;
+};
+BendObstacles bend_obstacles(const io::Layout& layout, std::span<const geom::Point> extra, const std::string& metric,
+                             bool quiet);
+
 // Why point p (an end of a wanted wire) is not in free space, naming the blockage or the
 // boundary: "lies inside blockage "ram0" (demo.xml:19)".
 std::string why_not_free(const io::Layout& layout, geom::Point p);

@@ -166,14 +166,19 @@ TEST(Path, RequestsThisVersionCannotServeExit2AndPrintNothing) {
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
       {{"path", kDemo, "--from", "1.5,3", "--to", "1,1"}, "CLI-0022"},
       {{"path", kDemo, "--from", "1,1", "--to", "1073741824,0"}, "CLI-0022"},
-      {{"path", kDemo, "--from", "1,1", "--to", "5,5", "--metric", "link"}, "CLI-0020"},
+      {{"path", kDemo, "--from", "1,1", "--to", "5,5", "--metric", "bends"}, "CLI-0020"},
       {{"path", kDemo, "--from", "1,1", "--to", "5,5", "--bend-cost", "3"}, "CLI-0020"},
+      {{"path", kDemo, "--from", "1,1", "--to", "5,5", "--metric", "link", "--bend-cost", "3"}, "CLI-0020"},
+      {{"path", kDemo, "--from", "1,1", "--to", "5,5", "--metric", "combined", "--bend-cost", "-1"}, "CLI-0020"},
+      {{"path", kDemo, "--from", "1,1", "--to", "5,5", "--metric", "combined", "--bend-cost", "2147483649"}, "CLI-0020"},
+      {{"path", kDemo, "--from", "1,1", "--to", "5,5", "--metric", "combined", "--orientations", "octilinear"}, "CLI-0021"},
       {{"path", kDemo, "--from", "1,1", "--to", "5,5", "--orientations", "any"}, "CLI-0021"},
       {{"path", kDemo, "--from", "1,1", "--to", "5,5", "--orientations", "c:0,45,90"}, "CLI-0021"},
       {{"path", kDemo, "--from", "1,1", "--to", "5,5", "--orientations", "c:0,90,22.5"}, "CLI-0021"},
       {{"path", oct, "--from", "1,1", "--to", "5,5", "--json"}, oct + ":2: error: [CLI-0021]"},
       {{"path", kDemo, "--from", "1,1"}, "CLI-0001"},
-      {{"route", kDemo, "-o", dir + "/x.xml", "--metric", "combined"}, "CLI-0020"},
+      {{"route", kDemo, "-o", dir + "/x.xml", "--metric", "combined", "--tighten"}, "CLI-0020"},
+      {{"route", kDemo, "-o", dir + "/x.xml", "--metric", "link", "--orientations", "octilinear"}, "CLI-0021"},
       {{"route", oct, "-o", dir + "/x.xml"}, "CLI-0021"},
   };
   for (const auto& [args, code] : cases) {

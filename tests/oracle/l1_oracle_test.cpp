@@ -23,6 +23,7 @@
 #include "geom/normalize.h"
 #include "geom/predicates.h"
 #include "oracle/union_oracle.h"
+#include "support/reach.h"
 
 namespace {
 
@@ -101,16 +102,7 @@ class Grid {
   std::array<int, 4> wedges(Point p) const {
     const std::array<bool, 4> f = {cell_free(p.x, p.y), cell_free(p.x - 1, p.y),
                                    cell_free(p.x - 1, p.y - 1), cell_free(p.x, p.y - 1)};
-    std::array<int, 4> label = {-1, -1, -1, -1};
-    for (int i = 0; i < 4; ++i)
-      if (f[i]) label[i] = i;
-    // Union neighbours in the 4-cycle (twice around suffices for 4 elements).
-    for (int round = 0; round < 2; ++round)
-      for (int i = 0; i < 4; ++i) {
-        const int j = (i + 1) % 4;
-        if (f[i] && f[j]) label[i] = label[j] = std::min(label[i], label[j]);
-      }
-    return label;
+    return taut::test::cell_wedge_labels(f);
   }
   int wedge_count(Point p) const {
     const auto l = wedges(p);

@@ -5,11 +5,28 @@
 // of tests/oracle/ (distances(), is_free(), wedges_at()).
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <vector>
 
 #include "geom/types.h"
 
 namespace taut::test {
+
+// The cell-lattice references' wedges at a lattice point: given whether each of the four unit
+// cells around it (NE, NW, SW, SE) is free, a label per cell, equal for free cells joined
+// through a shared free side (the 4-cycle of cells), -1 for a blocked cell.
+inline std::array<int, 4> cell_wedge_labels(const std::array<bool, 4>& f) {
+  std::array<int, 4> label = {-1, -1, -1, -1};
+  for (int i = 0; i < 4; ++i)
+    if (f[i]) label[i] = i;
+  for (int round = 0; round < 2; ++round)  // twice around the 4-cycle suffices
+    for (int i = 0; i < 4; ++i) {
+      const int j = (i + 1) % 4;
+      if (f[i] && f[j]) label[i] = label[j] = std::min(label[i], label[j]);
+    }
+  return label;
+}
 
 // Every ring vertex of the obstacles (outer rings and holes, in ring order; repeats kept).
 inline std::vector<geom::Point> obstacle_vertices(const std::vector<geom::Polygon>& obstacles) {

@@ -1,0 +1,110 @@
+// Bend-aware routing benchmark (issue #6): the modified visibility graph of router/bend_router.h
+// against the number of obstacle vertices n (generated rectilinear layouts, seed 42): its size
+// (nodes, tracks, straight and L edges), build time, and per-query time for the combined metric
+// (C = 1000) and the link metric. Machines here are noisy, so times are also printed as ratios
+// to baselines measured in the same run: `sort` (std::sort of the n vertices, an n log n unit)
+// and `l1` (one exact L1 query of router::L1Router, Mitchell's wavefront, on the same pairs:
+// the query the combined metric generalises). The growth exponent between consecutive sizes is
+// log(t2 / t1) / log(n2 / n1).
+//
+//   bench_bends [--sizes N,N,...] [--queries Q] [--kind rects|maze]
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "bench/bench_util.h"
+#include "router/bend_router.h"
+#include "router/l1_router.h"
+
+namespace {
+
+using taut::bench::seconds_of;
+using taut::geom::Point;
+
+struct Row {
+  std::int64_t n = 0;
+  double sort = 0, build = 0, combined = 0, link = 0, l1 = 0;
+  taut::router::BendGraphStats stats;
+  std::size_t edges = 0;
+  int found = 0, queries = 0;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::int64_t> sizes = {100, 1000, 10000, 100000};
+  int queries = 20;
+  std::string kind_name = "rects";
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--sizes") && i + 1 < argc) sizes = taut::bench::parse_list(argv[++i]);
+    else if (!std::strcmp(argv[i], "--queries") && i + 1 < argc) queries = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--kind") && i + 1 < argc) kind_name = argv[++i];
+    else {
+      std::fprintf(stderr, "usage: %s [--sizes N,N,...] [--queries Q] [--kind rects|maze]\n", argv[0]);
+      return 2;
+    }
+  }
+  const auto kind = taut::io::parse_gen_kind(kind_name);
+  if (!kind) {
+    std::fprintf(stderr, "unknown kind %s\n", kind_name.c_str());
+    return 2;
+  }
+  std::printf("taut bend benchmark: kind=%s, %d queries per size (pairs of spread obstacle vertices), one thread\n",
+              kind_name.c_str(), queries);
+  std::printf("%8s %8s %9s %10s %10s | %9s %9s | %10s %10s %10s | %8s %8s %8s\n", "n", "nodes", "tracks",
+              "straight", "L-edges", "build(s)", "/sort", "comb(ms)", "link(ms)", "l1(ms)", "comb/l1",
+              "link/l1", "found");
+  std::vector<Row> rows;
+  for (const std::int64_t size : sizes) {
+    const taut::bench::BenchLayout b = taut::bench::bench_layout(*kind, size);
+    Row row;
+    row.n = static_cast<std::int64_t>(b.points.size());
+    row.sort = taut::bench::sort_seconds(b.points);
+    std::unique_ptr<taut::router::BendRouter> router;
+    row.build = seconds_of([&] { router = std::make_unique<taut::router::BendRouter>(b.norm.domain, b.norm.obstacles); }, 1);
+    row.stats = router->stats();
+    // query pairs: spread vertices, the first half against the second half
+    std::vector<std::pair<Point, Point>> pairs;
+    const std::size_t m = b.targets.size();
+    for (int q = 0; q < queries && m >= 2; ++q)
+      pairs.emplace_back(b.targets[static_cast<std::size_t>(q) % (m / 2)], b.targets[m / 2 + static_cast<std::size_t>(q) % (m - m / 2)]);
+    row.queries = static_cast<int>(pairs.size());
+    int found = 0;
+    row.combined = seconds_of([&] {
+                     found = 0;
+                     for (const auto& [s, t] : pairs)
+                       found += router->path(s, t, taut::router::BendMetric::Combined, 1000).status ==
+                                taut::router::WireStatus::Ok;
+                   }, 1) / std::max<std::size_t>(1, pairs.size());
+    row.found = found;
+    row.link = seconds_of([&] {
+                 for (const auto& [s, t] : pairs) (void)router->path(s, t, taut::router::BendMetric::Link, 0);
+               }, 1) / std::max<std::size_t>(1, pairs.size());
+    taut::router::L1Router l1(b.norm.domain, b.norm.obstacles);
+    row.l1 = seconds_of([&] {
+               for (const auto& [s, t] : pairs) (void)l1.shortest(s, t);
+             }, 1) / std::max<std::size_t>(1, pairs.size());
+    const auto& st = row.stats;
+    std::printf("%8lld %8zu %9zu %10zu %10zu | %9.3f %9.1f | %10.2f %10.2f %10.2f | %8.2f %8.2f %5d/%d\n",
+                static_cast<long long>(row.n), st.nodes, st.tracks, st.straight_edges, st.l_edges, row.build,
+                row.build / row.sort, row.combined * 1e3, row.link * 1e3, row.l1 * 1e3, row.combined / row.l1,
+                row.link / row.l1, row.found, row.queries);
+    std::fflush(stdout);
+    rows.push_back(row);
+  }
+  std::printf("\ngrowth exponents between consecutive sizes (1.0 = linear):\n");
+  std::printf("%8s -> %8s | %8s %8s %8s %8s\n", "n1", "n2", "edges", "build", "combined", "l1");
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const Row& a = rows[i - 1];
+    const Row& b = rows[i];
+    const double dn = std::log(static_cast<double>(b.n) / static_cast<double>(a.n));
+    const double ea = static_cast<double>(a.stats.straight_edges + a.stats.l_edges + a.stats.nodes);
+    const double eb = static_cast<double>(b.stats.straight_edges + b.stats.l_edges + b.stats.nodes);
+    std::printf("%8lld -> %8lld | %8.2f %8.2f %8.2f %8.2f\n", static_cast<long long>(a.n), static_cast<long long>(b.n),
+                std::log(eb / ea) / dn, std::log(b.build / a.build) / dn, std::log(b.combined / a.combined) / dn,
+                std::log(b.l1 / a.l1) / dn);
+  }
+  return 0;
+}

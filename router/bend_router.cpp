@@ -1,0 +1,560 @@
+#include "router/bend_router.h"
+
+#include <algorithm>
+#include <boost/graph/compressed_sparse_row_graph.hpp>
+#include <boost/graph/dijkstra_shortest_paths.hpp>
+#include <boost/property_map/property_map.hpp>
+#include <limits>
+#include <map>
+#include <string>
+#include <stdexcept>
+#include <unordered_map>
+#include <utility>
+
+#include "geom/index.h"
+#include "geom/predicates.h"
+
+namespace taut::router {
+
+namespace {
+
+using geom::Box;
+using geom::Coord;
+using geom::i128;
+using geom::i64;
+using geom::Point;
+using geom::Polygon;
+
+// Axis directions, counter-clockwise: E, N, W, S. Quadrant q lies between direction q and
+// direction q + 1: NE, NW, SW, SE. Direction k borders quadrants k - 1 and k.
+constexpr Point kStep[4] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+constexpr geom::Direction kRay[4] = {geom::Direction::E, geom::Direction::N, geom::Direction::W,
+                                     geom::Direction::S};
+int opposite(int k) { return (k + 2) & 3; }
+bool horizontal(int k) { return (k & 1) == 0; }
+
+// The axis direction of b - a (a != b, axis-parallel).
+int axis_dir(Point a, Point b) {
+  if (b.y == a.y) return b.x > a.x ? 0 : 2;
+  return b.y > a.y ? 1 : 3;
+}
+
+std::uint64_t key(Point p) {
+  return (std::uint64_t{static_cast<std::uint32_t>(p.x)} << 32) | static_cast<std::uint32_t>(p.y);
+}
+
+// Quadrants outside the domain (material for the wedges).
+unsigned outside_quadrants(const Box& d, Point p) {
+  unsigned m = 0;
+  if (p.x >= d.hi.x) m |= 0b1001;  // NE, SE
+  if (p.x <= d.lo.x) m |= 0b0110;  // NW, SW
+  if (p.y >= d.hi.y) m |= 0b0011;  // NE, NW
+  if (p.y <= d.lo.y) m |= 0b1100;  // SW, SE
+  return m;
+}
+
+// The wedges of a point from its material quadrants: maximal cyclic runs of free quadrants
+// (neighbouring free quadrants meet along the axis ray between them). Each wedge as a
+// quadrant mask.
+std::vector<unsigned> wedges_of(unsigned material) {
+  const unsigned free = ~material & 15u;
+  std::vector<unsigned> out;
+  if (free == 0) return out;
+  if (free == 15) return {15u};
+  // start at a free quadrant whose clockwise neighbour is material
+  int start = 0;
+  while (!((free >> start) & 1u) || ((free >> ((start + 3) & 3)) & 1u)) ++start;
+  unsigned cur = 0;
+  for (int i = 0; i < 4; ++i) {
+    const int q = (start + i) & 3;
+    if ((free >> q) & 1u) {
+      cur |= 1u << q;
+    } else if (cur) {
+      out.push_back(cur);
+      cur = 0;
+    }
+  }
+  if (cur) out.push_back(cur);
+  return out;
+}
+
+// Direction k leaves a point into wedge w (a quadrant mask) when a quadrant beside it is in w.
+bool in_wedge(unsigned w, int k) { return ((w >> k) & 1u) || ((w >> ((k + 3) & 3)) & 1u); }
+
+// The material quadrants around a point from the obstacle edges at it. An edge leaving the
+// point along ray k (out) has its material on its left, quadrant k, and free space in quadrant
+// k - 1; an edge arriving along ray k (in: the point is its end) the other way round.
+struct Sides {
+  int state[4] = {-1, -1, -1, -1};  // -1 unknown, 0 free, 1 material
+  unsigned rays = 0;                // rays that carry an edge
+  void set(int q, int v) {
+    if (state[q] >= 0 && state[q] != v) throw std::invalid_argument("BendRouter: obstacle edges disagree about a side");
+    state[q] = v;
+  }
+  void add(int k, bool out) {
+    rays |= 1u << k;
+    set(k, out ? 1 : 0);
+    set((k + 3) & 3, out ? 0 : 1);
+  }
+  unsigned quadrants() {
+    for (int round = 0; round < 4; ++round)
+      for (int q = 0; q < 4; ++q) {
+        if (state[q] >= 0) continue;
+        if (!((rays >> q) & 1u) && state[(q + 3) & 3] >= 0) state[q] = state[(q + 3) & 3];
+        else if (!((rays >> ((q + 1) & 3)) & 1u) && state[(q + 1) & 3] >= 0) state[q] = state[(q + 1) & 3];
+      }
+    unsigned m = 0;
+    for (int q = 0; q < 4; ++q) {
+      if (state[q] < 0) throw std::invalid_argument("BendRouter: a point with no edge beside it");
+      if (state[q] == 1) m |= 1u << q;
+    }
+    return m;
+  }
+};
+
+// (length + C * bends, bends) for Combined, (bends, length) for Link: compared
+// lexicographically, added componentwise.
+struct Cost {
+  i128 first = 0;
+  i64 second = 0;
+  friend bool operator<(const Cost& a, const Cost& b) {
+    return a.first != b.first ? a.first < b.first : a.second < b.second;
+  }
+  friend bool operator==(const Cost&, const Cost&) = default;
+};
+const Cost kInf{std::numeric_limits<i128>::max(), std::numeric_limits<i64>::max()};
+
+}  // namespace
+
+struct BendRouter::Impl {
+  Box domain;
+  std::vector<Polygon> obstacles;
+  geom::ObstacleIndex index;
+
+  // A node: a point with one of its wedges (graph vertices 2i: h-node, 2i + 1: v-node).
+  struct Node {
+    Point p;
+    unsigned wedge = 0;
+  };
+  std::vector<Node> nodes;
+  std::unordered_map<std::uint64_t, std::vector<std::int32_t>> vertex_nodes;  // obstacle vertex -> nodes
+
+  // A track: from node `from` in direction `dir` to `end` (a free point); `to` >= 0 when it
+  // ends on a vertex (that vertex's node whose wedge holds the way back), else -1.
+  struct Track {
+    std::int32_t from = 0;
+    int dir = 0;
+    Point start, end;
+    std::int32_t to = -1;
+  };
+  std::vector<Track> tracks;
+
+  struct Edge {
+    std::int32_t u, v;  // graph vertices
+    i64 length;
+    int bends;
+  };
+  std::vector<Edge> edges;
+  BendGraphStats stats;
+
+  Impl(const Box& d, std::span<const Polygon> obs) : domain(d), obstacles(obs.begin(), obs.end()), index(obs) {}
+
+  bool is_vertex(Point p) const { return vertex_nodes.count(key(p)) != 0; }
+
+  // The node of vertex p whose wedge holds direction k; -1 when none does.
+  std::int32_t vertex_node(Point p, int k) const {
+    const auto it = vertex_nodes.find(key(p));
+    if (it == vertex_nodes.end()) return -1;
+    for (const std::int32_t n : it->second)
+      if (in_wedge(nodes[static_cast<std::size_t>(n)].wedge, k)) return n;
+    return -1;
+  }
+
+  // Material quadrants of a point that is not an obstacle vertex: the domain's outside, the
+  // side of every obstacle edge through it, or all four when it lies inside an obstacle.
+  unsigned point_material(Point p) const {
+    if (p.x < domain.lo.x || p.x > domain.hi.x || p.y < domain.lo.y || p.y > domain.hi.y) return 15u;
+    const std::vector<std::uint32_t> through = index.edges_in_box(Box{p, p});
+    if (through.empty()) {
+      for (const Polygon& poly : obstacles)
+        if (geom::locate(p, poly) == geom::Location::Inside) return 15u;
+      return outside_quadrants(domain, p);
+    }
+    Sides sides;
+    for (const std::uint32_t id : through) {  // p lies inside each (it is not a vertex)
+      const geom::Segment& e = index.edge(id);
+      sides.add(axis_dir(p, e.b), true);
+      sides.add(axis_dir(p, e.a), false);
+    }
+    return sides.quadrants() | outside_quadrants(domain, p);
+  }
+
+  // The track from node n at point p in direction k (k in its wedge).
+  Track shoot(std::int32_t n, Point p, int k) const {
+    Track t;
+    t.from = n;
+    t.dir = k;
+    t.start = p;
+    // distance to the domain side
+    i64 limit = 0;
+    switch (k) {
+      case 0: limit = i64{domain.hi.x} - p.x; break;
+      case 1: limit = i64{domain.hi.y} - p.y; break;
+      case 2: limit = i64{p.x} - domain.lo.x; break;
+      default: limit = i64{p.y} - domain.lo.y; break;
+    }
+    const geom::RayHit h = index.shoot(p, kRay[k], geom::RayOptions{true});
+    i64 reach = limit;
+    bool hit = false;
+    if (h.hit()) {
+      // axis rays: integer parameter (den 1, see geom/index.h)
+      const i64 at = h.t.num / h.t.den;
+      if (at <= limit) reach = at, hit = true;
+    }
+    t.end = Point{static_cast<Coord>(p.x + kStep[k].x * reach), static_cast<Coord>(p.y + kStep[k].y * reach)};
+    if (hit && is_vertex(t.end)) {
+      t.to = vertex_node(t.end, opposite(k));
+      if (t.to < 0)
+        throw std::logic_error("BendRouter: a track from " + std::to_string(p.x) + "," + std::to_string(p.y) +
+                               " arrives at vertex " + std::to_string(t.end.x) + "," + std::to_string(t.end.y) +
+                               " outside its wedges");
+    }
+    return t;
+  }
+
+  // Appends the edges of a node's own tracks that end on vertices (straight edges).
+  void straight_edges(const Track& t, std::vector<Edge>& out) const {
+    if (t.to < 0 || t.end == t.start) return;
+    const int vv = horizontal(t.dir) ? 0 : 1;
+    const i64 len = std::abs(i64{t.end.x} - t.start.x) + std::abs(i64{t.end.y} - t.start.y);
+    out.push_back({2 * t.from + vv, 2 * t.to + vv, len, 0});
+  }
+
+  // The L edge of a horizontal and a vertical track when they cross at a corner that is neither
+  // end's origin nor a vertex (then the straight edges and a turn there make the same path).
+  bool l_edge(const Track& h, const Track& v, Point s, Point t, Edge& e) const {
+    const Coord x = v.start.x, y = h.start.y;
+    if (x < std::min(h.start.x, h.end.x) || x > std::max(h.start.x, h.end.x)) return false;
+    if (y < std::min(v.start.y, v.end.y) || y > std::max(v.start.y, v.end.y)) return false;
+    const Point c{x, y};
+    if (c == h.start || c == v.start || c == s || c == t || is_vertex(c)) return false;
+    e = {2 * h.from, 2 * v.from + 1,
+         std::abs(i64{x} - h.start.x) + std::abs(i64{y} - v.start.y), 1};
+    return true;
+  }
+
+  void build() {
+    // nodes: every obstacle vertex with its wedges. Each ring edge at a vertex says which of the
+    // two quadrants beside it is material (the left of the directed edge); a quadrant with no
+    // edge on either side is what its neighbour across the edgeless ray is. Pairing the in- and
+    // out-edges of one ring visit would be wrong where a ring touches itself (a pinch).
+    std::unordered_map<std::uint64_t, Sides> material;
+    std::vector<Point> order;
+    auto ring_material = [&](const geom::Ring& r) {
+      const std::size_t m = r.size();
+      for (std::size_t i = 0; i < m; ++i) {
+        const Point v = r[i], prev = r[(i + m - 1) % m], next = r[(i + 1) % m];
+        if (v.x != prev.x && v.y != prev.y) throw std::invalid_argument("BendRouter: an obstacle edge is not axis-parallel");
+        if (v == prev || v == next) throw std::invalid_argument("BendRouter: a ring repeats a vertex");
+        auto [it, fresh] = material.try_emplace(key(v));
+        if (fresh) order.push_back(v);
+        it->second.add(axis_dir(v, next), true);
+        it->second.add(axis_dir(v, prev), false);
+      }
+    };
+    for (const Polygon& poly : obstacles) {
+      ring_material(poly.outer);
+      for (const geom::Ring& h : poly.holes) ring_material(h);
+    }
+    std::sort(order.begin(), order.end());
+    for (const Point v : order) {
+      const unsigned m = material[key(v)].quadrants() | outside_quadrants(domain, v);
+      auto& list = vertex_nodes[key(v)];
+      for (const unsigned w : wedges_of(m)) {
+        list.push_back(static_cast<std::int32_t>(nodes.size()));
+        nodes.push_back({v, w});
+      }
+    }
+    stats.vertices = order.size();
+    stats.nodes = nodes.size();
+
+    for (std::int32_t n = 0; n < static_cast<std::int32_t>(nodes.size()); ++n) {
+      edges.push_back({2 * n, 2 * n + 1, 0, 1});  // the turn
+      for (int k = 0; k < 4; ++k)
+        if (in_wedge(nodes[static_cast<std::size_t>(n)].wedge, k)) tracks.push_back(shoot(n, nodes[static_cast<std::size_t>(n)].p, k));
+    }
+    stats.tracks = tracks.size();
+    for (const Track& t : tracks)
+      if (t.dir == 0 || t.dir == 1) straight_edges(t, edges);  // W and S give the same edges
+    stats.straight_edges = edges.size() - nodes.size();
+
+    // L edges: one sweep over x, the horizontal tracks alive in a tree on y
+    struct Event {
+      Coord x;
+      int kind;  // 0 insert horizontal, 1 query vertical, 2 remove horizontal
+      std::int32_t track;
+    };
+    std::vector<Event> ev;
+    for (std::int32_t i = 0; i < static_cast<std::int32_t>(tracks.size()); ++i) {
+      const Track& t = tracks[static_cast<std::size_t>(i)];
+      if (t.end == t.start) continue;
+      if (horizontal(t.dir)) {
+        ev.push_back({std::min(t.start.x, t.end.x), 0, i});
+        ev.push_back({std::max(t.start.x, t.end.x), 2, i});
+      } else {
+        ev.push_back({t.start.x, 1, i});
+      }
+    }
+    std::sort(ev.begin(), ev.end(), [](const Event& a, const Event& b) {
+      return a.x != b.x ? a.x < b.x : a.kind != b.kind ? a.kind < b.kind : a.track < b.track;
+    });
+    std::multimap<Coord, std::int32_t> alive;
+    std::vector<std::multimap<Coord, std::int32_t>::iterator> where(tracks.size());
+    const Point none{geom::kMaxCoord, geom::kMaxCoord};  // no query point in the static graph
+    const std::size_t before = edges.size();
+    for (const Event& e : ev) {
+      const Track& t = tracks[static_cast<std::size_t>(e.track)];
+      if (e.kind == 0) {
+        where[static_cast<std::size_t>(e.track)] = alive.emplace(t.start.y, e.track);
+      } else if (e.kind == 2) {
+        alive.erase(where[static_cast<std::size_t>(e.track)]);
+      } else {
+        const Coord lo = std::min(t.start.y, t.end.y), hi = std::max(t.start.y, t.end.y);
+        for (auto it = alive.lower_bound(lo); it != alive.end() && it->first <= hi; ++it) {
+          Edge edge{};
+          if (l_edge(tracks[static_cast<std::size_t>(it->second)], t, none, none, edge)) edges.push_back(edge);
+        }
+      }
+    }
+    stats.l_edges = edges.size() - before;
+  }
+
+  BendPath path(Point s, Point t, BendMetric metric, i64 bend_cost) const;
+};
+
+BendPath BendRouter::Impl::path(Point s, Point t, BendMetric metric, i64 bend_cost) const {
+  BendPath out;
+  // The query ends: an obstacle vertex uses its nodes; another free point gets a node of its own
+  // (its one wedge) with its tracks.
+  std::vector<Node> qnodes;
+  std::vector<Track> qtracks;
+  std::vector<std::int32_t> ends[2];
+  const Point q[2] = {s, t};
+  const std::int32_t base = static_cast<std::int32_t>(nodes.size());
+  for (int i = 0; i < 2; ++i) {
+    const auto it = vertex_nodes.find(key(q[i]));
+    if (it != vertex_nodes.end()) {
+      ends[i] = it->second;
+    } else if (i == 1 && s == t && !qnodes.empty()) {
+      ends[1] = ends[0];
+    } else {
+      const std::vector<unsigned> w = wedges_of(point_material(q[i]));
+      if (!w.empty()) {
+        ends[i].push_back(base + static_cast<std::int32_t>(qnodes.size()));
+        qnodes.push_back({q[i], w.front()});
+      }
+    }
+    if (ends[i].empty()) {
+      out.status = i == 0 ? WireStatus::SourceNotFree : WireStatus::TargetNotFree;
+      return out;
+    }
+  }
+  if (s == t) {
+    out.status = WireStatus::Ok;
+    out.points = {s};
+    return out;
+  }
+  auto node_at = [&](std::int32_t n) -> const Node& {
+    return n < base ? nodes[static_cast<std::size_t>(n)] : qnodes[static_cast<std::size_t>(n - base)];
+  };
+
+  // query tracks
+  std::vector<Edge> qedges;
+  for (std::size_t j = 0; j < qnodes.size(); ++j) {
+    const std::int32_t n = base + static_cast<std::int32_t>(j);
+    qedges.push_back({2 * n, 2 * n + 1, 0, 1});
+    for (int k = 0; k < 4; ++k) {
+      if (!in_wedge(qnodes[j].wedge, k)) continue;
+      const Track tr = shoot(n, qnodes[j].p, k);
+      qtracks.push_back(tr);
+    }
+  }
+  for (const Track& a : qtracks) {
+    straight_edges(a, qedges);
+    if (a.end == a.start) continue;
+    for (const Track& b : tracks) {
+      if (horizontal(a.dir) == horizontal(b.dir) || b.end == b.start) continue;
+      Edge e{};
+      if (horizontal(a.dir) ? l_edge(a, b, s, t, e) : l_edge(b, a, s, t, e)) qedges.push_back(e);
+    }
+  }
+  // between the two query points
+  for (const Track& a : qtracks) {
+    if (a.from != base || a.end == a.start) continue;  // from s (when s has a node of its own)
+    const Point lo{std::min(a.start.x, a.end.x), std::min(a.start.y, a.end.y)};
+    const Point hi{std::max(a.start.x, a.end.x), std::max(a.start.y, a.end.y)};
+    for (const std::int32_t tn : ends[1]) {
+      if (tn < base) continue;  // t is a vertex: a's track or the built graph reaches it
+      if (t.x >= lo.x && t.x <= hi.x && t.y >= lo.y && t.y <= hi.y) {
+        const int vv = horizontal(a.dir) ? 0 : 1;
+        qedges.push_back({2 * a.from + vv, 2 * tn + vv, std::abs(i64{t.x} - s.x) + std::abs(i64{t.y} - s.y), 0});
+      }
+    }
+    for (const Track& b : qtracks) {
+      if (b.from == base || horizontal(a.dir) == horizontal(b.dir) || b.end == b.start) continue;
+      Edge e{};
+      if (horizontal(a.dir) ? l_edge(a, b, s, t, e) : l_edge(b, a, s, t, e)) qedges.push_back(e);
+    }
+  }
+
+  // the graph: built edges, query edges, a source joined to the start nodes
+  const std::int32_t total_nodes = base + static_cast<std::int32_t>(qnodes.size());
+  const std::int32_t source = 2 * total_nodes;
+  const std::size_t nv = static_cast<std::size_t>(source) + 1;
+  auto weight = [&](const Edge& e) {
+    return metric == BendMetric::Link ? Cost{e.bends, e.length}
+                                      : Cost{i128{e.length} + i128{bend_cost} * e.bends, e.bends};
+  };
+  std::vector<std::pair<std::int32_t, std::int32_t>> arcs;
+  std::vector<Cost> w;
+  arcs.reserve(2 * (edges.size() + qedges.size()) + 2 * ends[0].size());
+  w.reserve(arcs.capacity());
+  for (const std::vector<Edge>* list : {&edges, static_cast<const std::vector<Edge>*>(&qedges)})
+    for (const Edge& e : *list) {
+      const Cost c = weight(e);
+      arcs.emplace_back(e.u, e.v), w.push_back(c);
+      arcs.emplace_back(e.v, e.u), w.push_back(c);
+    }
+  for (const std::int32_t n : ends[0]) {
+    arcs.emplace_back(source, 2 * n), w.push_back(Cost{});
+    arcs.emplace_back(source, 2 * n + 1), w.push_back(Cost{});
+  }
+  using Graph = boost::compressed_sparse_row_graph<boost::directedS, boost::no_property, Cost>;
+  // the CSR constructor wants the arcs sorted by source
+  std::vector<std::size_t> perm(arcs.size());
+  for (std::size_t i = 0; i < perm.size(); ++i) perm[i] = i;
+  std::stable_sort(perm.begin(), perm.end(), [&](std::size_t a, std::size_t b) { return arcs[a].first < arcs[b].first; });
+  std::vector<std::pair<std::int32_t, std::int32_t>> sarcs(arcs.size());
+  std::vector<Cost> sw(arcs.size());
+  for (std::size_t i = 0; i < perm.size(); ++i) sarcs[i] = arcs[perm[i]], sw[i] = w[perm[i]];
+  const Graph g(boost::edges_are_sorted, sarcs.begin(), sarcs.end(), sw.begin(), nv);
+
+  std::vector<char> is_target(nv, 0);
+  for (const std::int32_t n : ends[1]) is_target[static_cast<std::size_t>(2 * n)] = is_target[static_cast<std::size_t>(2 * n + 1)] = 1;
+  std::vector<Cost> dist(nv, kInf);
+  std::vector<std::size_t> pred(nv);
+  struct Found {
+    std::size_t v;
+  };
+  struct Stop : boost::default_dijkstra_visitor {
+    const std::vector<char>* target;
+    void examine_vertex(std::size_t u, const Graph&) const {
+      if ((*target)[u]) throw Found{u};
+    }
+  };
+  Stop vis;
+  vis.target = &is_target;
+  std::size_t reached = nv;
+  const auto combine = [](const Cost& a, const Cost& b) {
+    if (a == kInf || b == kInf) return kInf;
+    return Cost{a.first + b.first, a.second + b.second};
+  };
+  try {
+    boost::dijkstra_shortest_paths(g, static_cast<std::size_t>(source),
+                                   boost::predecessor_map(boost::make_iterator_property_map(pred.begin(), boost::get(boost::vertex_index, g)))
+                                       .distance_map(boost::make_iterator_property_map(dist.begin(), boost::get(boost::vertex_index, g)))
+                                       .weight_map(boost::get(boost::edge_bundle, g))
+                                       .distance_compare(std::less<Cost>())
+                                       .distance_combine(combine)
+                                       .distance_inf(kInf)
+                                       .distance_zero(Cost{})
+                                       .visitor(vis));
+  } catch (const Found& f) {
+    reached = f.v;
+  }
+  if (reached == nv) {
+    out.status = WireStatus::Unreachable;
+    return out;
+  }
+
+  // the walk back to the source, then its points
+  std::vector<std::size_t> walk;
+  for (std::size_t v = reached; v != static_cast<std::size_t>(source); v = pred[v]) {
+    walk.push_back(v);
+    if (walk.size() > nv) throw std::logic_error("BendRouter: predecessor cycle");
+  }
+  std::reverse(walk.begin(), walk.end());
+  std::vector<Point> pts;
+  pts.push_back(node_at(static_cast<std::int32_t>(walk.front() / 2)).p);
+  for (std::size_t i = 1; i < walk.size(); ++i) {
+    const Node& a = node_at(static_cast<std::int32_t>(walk[i - 1] / 2));
+    const Node& b = node_at(static_cast<std::int32_t>(walk[i] / 2));
+    const bool ah = walk[i - 1] % 2 == 0, bh = walk[i] % 2 == 0;
+    if (a.p == b.p) continue;  // a turn
+    if (ah != bh) pts.push_back(ah ? Point{b.p.x, a.p.y} : Point{a.p.x, b.p.y});
+    pts.push_back(b.p);
+  }
+  // drop repeated and collinear points
+  std::vector<Point> clean;
+  for (const Point p : pts) {
+    if (!clean.empty() && clean.back() == p) continue;
+    if (clean.size() >= 2) {
+      const Point a = clean[clean.size() - 2], b = clean.back();
+      if (geom::orientation(a, b, p) == 0 && (i64{b.x} - a.x) * (i64{p.x} - b.x) + (i64{b.y} - a.y) * (i64{p.y} - b.y) > 0) {
+        clean.back() = p;
+        continue;
+      }
+    }
+    clean.push_back(p);
+  }
+  out.points = std::move(clean);
+  out.bends = geom::count_bends(out.points);
+  out.length = 0;
+  for (std::size_t i = 1; i < out.points.size(); ++i)
+    out.length += std::abs(i64{out.points[i].x} - out.points[i - 1].x) + std::abs(i64{out.points[i].y} - out.points[i - 1].y);
+  const Cost got = weight(Edge{0, 0, out.length, static_cast<int>(out.bends)});
+  if (!(got == dist[reached]))
+    throw std::logic_error("BendRouter: the path's cost differs from the graph's distance");
+  out.status = WireStatus::Ok;
+  return out;
+}
+
+BendRouter::BendRouter(const Box& domain, std::span<const Polygon> obstacles)
+    : impl_(std::make_unique<Impl>(domain, obstacles)) {
+  impl_->build();
+}
+BendRouter::~BendRouter() = default;
+BendRouter::BendRouter(BendRouter&&) noexcept = default;
+BendRouter& BendRouter::operator=(BendRouter&&) noexcept = default;
+
+BendPath BendRouter::path(Point from, Point to, BendMetric metric, std::int64_t bend_cost) const {
+  if (metric == BendMetric::Combined && (bend_cost < 0 || bend_cost > (i64{1} << 31)))
+    throw std::invalid_argument("BendRouter: the bend cost must lie in [0, 2^31]");
+  return impl_->path(from, to, metric, bend_cost);
+}
+
+const BendGraphStats& BendRouter::stats() const { return impl_->stats; }
+
+std::vector<Polygon> rectilinear_cover(std::span<const Polygon> polygons, std::vector<std::size_t>* covered) {
+  std::vector<Polygon> out;
+  for (std::size_t i = 0; i < polygons.size(); ++i) {
+    const Polygon& p = polygons[i];
+    out.push_back(p);
+    bool sloped = false;
+    auto boxes = [&](const geom::Ring& r) {
+      for (std::size_t j = 0; j < r.size(); ++j) {
+        const Point a = r[j], b = r[(j + 1) % r.size()];
+        if (a.x == b.x || a.y == b.y) continue;
+        sloped = true;
+        const Coord x0 = std::min(a.x, b.x), x1 = std::max(a.x, b.x), y0 = std::min(a.y, b.y), y1 = std::max(a.y, b.y);
+        out.push_back(Polygon{{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, {}});
+      }
+    };
+    boxes(p.outer);
+    for (const geom::Ring& h : p.holes) boxes(h);
+    if (sloped && covered) covered->push_back(i);
+  }
+  return out;
+}
+
+}  // namespace taut::router

@@ -1,0 +1,109 @@
+// Bend-aware rectilinear paths (issue #6; de Berg, van Kreveld, Nilsson, Overmars, seeds/003):
+// the cost of a rectilinear path is its L1 length plus C times its bends (the combined metric,
+// C >= 0; C = 0 is L1), or its bends first and its length second (the link metric, the limit of
+// large C). Obstacles are rectilinear polygons (every edge horizontal or vertical); other
+// blockages are replaced by rectilinear_cover() before they get here.
+//
+//   BendRouter r(normalized.domain, normalized.obstacles);       // rectilinear obstacles
+//   BendPath p = r.path({0, 0}, {90, 40}, BendMetric::Combined, 7);
+//   if (p.status == WireStatus::Ok) use(p.points, p.length, p.bends);
+//
+// Why a graph is exact (Lemma 2.1). Some optimal path has every link but the first and the last
+// touching an obstacle vertex: a middle link that touches none can be slid, without raising the
+// length or the bends, until it does (or until a neighbouring link vanishes). Cutting such a
+// path at the touched vertices leaves pieces of at most two links ("simple steps"): from the
+// start to the first vertex, between consecutive vertices, from the last vertex to the end.
+//
+// The modified visibility graph (section 3). Every node is a point with a wedge (a vertex where
+// blockages touch has one node per wedge: FORMAT.md forbids passing between them) split into an
+// h-node (the path is horizontal there) and a v-node (vertical). Edges:
+//   - straight: p_h - r_h (p_v - r_v) when the horizontal (vertical) segment pr is free;
+//   - a turn at a point: p_h - p_v, no length, one bend;
+//   - an L: p_h - r_v when the path p -> (r.x, p.y) -> r is free and its corner is not itself a
+//     vertex (then it is the straight edges and the turn there), length |pr|_1, one bend.
+// The walks of this graph are exactly the paths made of simple steps, with their cost: a walk's
+// bends are its turn and L edges (a walk that reverses on itself is never shortest). Dijkstra
+// (Boost.Graph) on it, with the cost ordered lexicographically as (length + C * bends, bends)
+// or (bends, length), gives the optimum with its tie broken the same way every time.
+//
+// Construction (the two plane sweeps of section 3, as tracks). From every node, in every
+// direction its wedge allows, a track: the free segment until the first vertex (it ends there,
+// as an edge to that vertex's node: the vertex's own tracks go on), a blockage edge crossed, or
+// the domain side (exact ray shooting, geom::ObstacleIndex). The L edges are the crossings of a
+// horizontal and a vertical track, found by one sweep over x with the horizontal tracks in a
+// search tree on y: O(n log n + k) for n vertices and k edges (k is quadratic in the worst case).
+// The tracks and edges among the obstacle vertices are built once; a query adds its two ends'
+// tracks, their crossings with the built tracks (a scan), and runs Dijkstra.
+//
+// Free space: the closed domain minus the open obstacles, as for the L1 router: a path may run
+// along blockage edges and turn on their vertices, never through a point where two blockages
+// touch (nor along an obstacle edge that lies flush on the domain side).
+//
+// Not yet (issue #6): the eight initial-step structures of section 4 that answer a query from a
+// fixed target in O(log n); de Berg's link distance in a rectilinear polygon and the diameter.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "geom/types.h"
+#include "router/l1_router.h"  // WireStatus
+
+namespace taut::router {
+
+enum class BendMetric {
+  Combined,  // length + C * bends, then fewer bends
+  Link,      // fewer bends, then shorter
+};
+
+struct BendPath {
+  WireStatus status = WireStatus::Unreachable;  // Ok, SourceNotFree, TargetNotFree or Unreachable
+  std::int64_t length = 0;                      // L1 length (Ok)
+  std::int64_t bends = 0;                       // bends of `points` (Ok)
+  std::vector<geom::Point> points;              // from, bends..., to; integer; {from} when equal
+  // What the metric minimised: length + C * bends (Combined) or bends (Link).
+  __int128 cost(BendMetric metric, std::int64_t bend_cost) const {
+    return metric == BendMetric::Link ? __int128{bends} : __int128{length} + __int128{bend_cost} * bends;
+  }
+};
+
+struct BendGraphStats {
+  std::size_t vertices = 0;  // obstacle vertices (a pinch vertex counted once)
+  std::size_t nodes = 0;     // point-wedge nodes (each an h- and a v-node in the graph)
+  std::size_t tracks = 0;
+  std::size_t straight_edges = 0;
+  std::size_t l_edges = 0;
+};
+
+class BendRouter {
+ public:
+  // Obstacles as geom::normalize_obstacles() returns them; every edge horizontal or vertical
+  // (std::invalid_argument otherwise). The domain is the closed routing box.
+  BendRouter(const geom::Box& domain, std::span<const geom::Polygon> obstacles);
+  ~BendRouter();
+  BendRouter(BendRouter&&) noexcept;
+  BendRouter& operator=(BendRouter&&) noexcept;
+
+  // An optimal rectilinear path from `from` to `to` under the metric (bend_cost >= 0 and at most
+  // 2^31 for Combined; ignored for Link). Thread-safe (const).
+  BendPath path(geom::Point from, geom::Point to, BendMetric metric, std::int64_t bend_cost) const;
+
+  const BendGraphStats& stats() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// A rectilinear cover of polygons (any edges): each polygon with a sloped edge, together with
+// the bounding box of every sloped edge of its rings (outer and holes). The union of the result
+// (geom::normalize_obstacles) contains every input polygon and its boundary is rectilinear: a
+// sloped edge meets its own box's boundary only at its two ends. Polygons without a sloped edge
+// are passed through. `covered` (if not null) receives the indices of the polygons that had one.
+std::vector<geom::Polygon> rectilinear_cover(std::span<const geom::Polygon> polygons,
+                                             std::vector<std::size_t>* covered = nullptr);
+
+}  // namespace taut::router

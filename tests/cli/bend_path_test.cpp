@@ -1,0 +1,227 @@
+// `taut path --metric combined|link` (issue #6) end to end: the JSON and text output, the cost
+// it states, the rules' bend cost as the default, the trade between length and bends on the demo
+// (exact at the tie), sloped blockages routed around their rectilinear cover with a warning
+// naming the blockage and its line, and the refusals. Every answer is checked against
+// oracle::BendReference (a Hanan-grid state-graph Dijkstra, independent of router::BendRouter)
+// on the same rectilinear cover, and every wire with the reference's path check.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "geom/normalize.h"
+#include "io/layout_geometry.h"
+#include "io/layout_reader.h"
+#include "oracle/bend_oracle.h"
+#include "router/bend_router.h"
+#include "support/run.h"
+
+namespace taut {
+namespace {
+
+using geom::Point;
+using test::run_taut;
+
+const std::string kDemo = std::string(TAUT_SOURCE_DIR) + "/designs/demo.xml";
+
+std::string pt(Point p) { return std::to_string(p.x) + "," + std::to_string(p.y); }
+
+std::vector<Point> points_of(const nlohmann::json& a) {
+  std::vector<Point> v;
+  for (const auto& p : a) v.push_back({p[0].get<geom::Coord>(), p[1].get<geom::Coord>()});
+  return v;
+}
+
+// The reference on the layout's blockages as `path` sees them: the rectilinear cover, normalized
+// in the routing domain of the layout and the two ends.
+struct Ref {
+  geom::NormalizedObstacles norm;
+  std::unique_ptr<oracle::BendReference> ref;
+};
+Ref reference_for(const std::string& file, std::vector<Point> ends) {
+  const io::ReadResult rr = io::read_layout(file);
+  EXPECT_TRUE(rr.layout.has_value());
+  Ref r;
+  r.norm = geom::normalize_obstacles(router::rectilinear_cover(io::blockage_polygons(*rr.layout)),
+                                     io::routing_domain(*rr.layout, ends));
+  r.ref = std::make_unique<oracle::BendReference>(r.norm.domain, r.norm.obstacles);
+  return r;
+}
+
+// Runs `taut path --json` and checks its answer against the reference.
+nlohmann::json check_path(const std::string& file, Point a, Point b, const std::vector<std::string>& metric,
+                          bool link, std::int64_t c) {
+  std::vector<std::string> args = {"path", file, "--from", pt(a), "--to", pt(b), "--json", "-q"};
+  args.insert(args.end(), metric.begin(), metric.end());
+  const auto run = run_taut(args);
+  EXPECT_EQ(run.status, 0) << run.err;
+  const auto j = nlohmann::json::parse(run.out);
+  const Ref r = reference_for(file, {a, b});
+  const auto want = r.ref->best(a, b, link, c);
+  EXPECT_TRUE(want.has_value());
+  if (!want || run.status != 0) return j;
+  EXPECT_EQ(j["metric"], link ? "link" : "combined");
+  EXPECT_EQ(j["length"].get<std::int64_t>(), want->length);
+  EXPECT_EQ(j["bends"].get<std::int64_t>(), want->bends);
+  EXPECT_EQ(j["cost"].get<std::int64_t>(), link ? want->bends : want->length + c * want->bends);
+  if (!link) {
+    EXPECT_EQ(j["bend_cost"].get<std::int64_t>(), c);
+  }
+  const std::vector<Point> w = points_of(j["points"]);
+  EXPECT_EQ(w.front(), a);
+  EXPECT_EQ(w.back(), b);
+  const auto got = r.ref->check_path(w);
+  EXPECT_TRUE(got.has_value()) << "the wire leaves free space";
+  if (got) {
+    EXPECT_EQ(got->length, want->length);
+    EXPECT_EQ(got->bends, want->bends);
+  }
+  return j;
+}
+
+TEST(BendPath, DemoTradesLengthForBendsExactlyAtTheTie) {
+  // From the demo's lower-left corner into the pocket beside the L-shaped blockage: the shortest
+  // wire (15500) needs 3 bends, the best 2-bend wire is 4000 longer. So C = 3999 keeps 3 bends,
+  // C = 4000 ties (27500 either way; the tie goes to fewer bends) and takes 2.
+  const Point a{500, 500}, b{5500, 8000};
+  const auto l1 = check_path(kDemo, a, b, {"--metric", "combined", "--bend-cost", "0"}, false, 0);
+  EXPECT_EQ(l1["length"], 15500);
+  EXPECT_EQ(l1["bends"], 3);
+  const auto below = check_path(kDemo, a, b, {"--metric", "combined", "--bend-cost", "3999"}, false, 3999);
+  EXPECT_EQ(below["bends"], 3);
+  const auto tie = check_path(kDemo, a, b, {"--metric", "combined", "--bend-cost", "4000"}, false, 4000);
+  EXPECT_EQ(tie["bends"], 2);
+  EXPECT_EQ(tie["cost"], 27500);
+  const auto link = check_path(kDemo, a, b, {"--metric", "link"}, true, 0);
+  EXPECT_EQ(link["bends"], 2);
+  EXPECT_EQ(link["length"], 19500);
+  EXPECT_EQ(link.count("bend_cost"), 0u);
+  // the L1 metric on the same pair: the same length as combined with C = 0
+  const auto r = run_taut({"path", kDemo, "--from", pt(a), "--to", pt(b), "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["length"], 15500);
+}
+
+TEST(BendPath, DemoPairsAgainstTheReference) {
+  const std::vector<std::pair<Point, Point>> pairs = {
+      {{500, 500}, {10000, 10000}}, {{1000, 6000}, {11000, 6000}}, {{9500, 3000}, {14500, 3000}},
+      {{1000, 13000}, {21000, 5000}}, {{8000, 4000}, {12000, 4600}},  // from the pinch of ram1 and io
+      {{0, 0}, {24000, 14000}},       {{500, 3500}, {10500, 10500}}};
+  for (const auto& [a, b] : pairs) {
+    SCOPED_TRACE(pt(a) + " -> " + pt(b));
+    for (const std::int64_t c : {0, 1, 7, 1000, 1000000}) {
+      SCOPED_TRACE("C = " + std::to_string(c));
+      check_path(kDemo, a, b, {"--metric", "combined", "--bend-cost", std::to_string(c)}, false, c);
+    }
+    check_path(kDemo, a, b, {"--metric", "link"}, true, 0);
+  }
+}
+
+TEST(BendPath, TextOutputRulesBendCostAndTheSlopedBlockageWarning) {
+  const std::string dir = test::temp_dir("bend_path");
+  const std::string file = dir + "/rules.xml";
+  test::write_text(file,
+                   "<layout name=\"r\" version=\"1\">\n"
+                   "  <boundary x0=\"0\" y0=\"0\" x1=\"100\" y1=\"100\"/>\n"
+                   "  <rules bend-cost=\"25\"/>\n"
+                   "  <blockage id=\"wall\"><rect x0=\"40\" y0=\"0\" x1=\"60\" y1=\"80\"/></blockage>\n"
+                   "  <blockage id=\"tri\"><polygon points=\"70,10 90,10 90,30\"/></blockage>\n"
+                   "</layout>\n");
+  // the rules' bend cost is the default; the triangle is routed around its cover, with a warning
+  const auto r = run_taut({"path", file, "--from", "10,10", "--to", "95,5", "--metric", "combined"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find(file + ":5: warning: [ROUTE-0008] blockage \"tri\" has sloped edges"), std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.out.rfind("cost ", 0), 0u) << r.out;
+  EXPECT_NE(r.out.find("(combined, bend cost 25)"), std::string::npos) << r.out;
+  const auto j = check_path(file, {10, 10}, {95, 5}, {"--metric", "combined"}, false, 25);
+  // -q silences the warning
+  const auto quiet = run_taut({"path", file, "--from", "10,10", "--to", "95,5", "--metric", "combined", "-q"});
+  EXPECT_TRUE(quiet.err.empty()) << quiet.err;
+  // --bend-cost overrides the rules
+  check_path(file, {10, 10}, {95, 5}, {"--metric", "combined", "--bend-cost", "0"}, false, 0);
+  // the l1 metric warns that it does not weigh the rules' bend cost
+  const auto l1 = run_taut({"path", file, "--from", "10,10", "--to", "95,5"});
+  EXPECT_EQ(l1.status, 0);
+  EXPECT_NE(l1.err.find("CLI-0024"), std::string::npos) << l1.err;
+  // a point inside the triangle's cover but outside the triangle is not free for this metric
+  const auto in_cover = run_taut({"path", file, "--from", "10,10", "--to", "72,28", "--metric", "link", "--json"});
+  EXPECT_EQ(in_cover.status, 1);
+  EXPECT_NE(in_cover.err.find("ROUTE-0001"), std::string::npos) << in_cover.err;
+  EXPECT_NE(in_cover.err.find("cover of sloped blockage \"tri\""), std::string::npos) << in_cover.err;
+  const auto jc = nlohmann::json::parse(in_cover.out);
+  EXPECT_TRUE(jc["cost"].is_null());
+  // walled in: exit 1, cost null
+  const std::string walled = dir + "/walled.xml";
+  test::write_text(walled,
+                   "<layout name=\"w\" version=\"1\">\n"
+                   "  <boundary x0=\"0\" y0=\"0\" x1=\"100\" y1=\"100\"/>\n"
+                   "  <blockage id=\"wall\"><rect x0=\"40\" y0=\"0\" x1=\"60\" y1=\"100\"/></blockage>\n"
+                   "</layout>\n");
+  const auto u = run_taut({"path", walled, "--from", "10,10", "--to", "90,90", "--metric", "link", "--json"});
+  EXPECT_EQ(u.status, 1);
+  EXPECT_NE(u.err.find("ROUTE-0002"), std::string::npos) << u.err;
+  EXPECT_TRUE(nlohmann::json::parse(u.out)["cost"].is_null());
+}
+
+// The README's two pictures are what `taut route` draws now, and the routed files say what they
+// were routed with and pass `taut check`.
+TEST(BendRoute, BendsDesignPicturesAndRoutes) {
+  const std::string dir = test::temp_dir("bend_route");
+  const std::string design = std::string(TAUT_SOURCE_DIR) + "/designs/bends.xml";
+  struct Case {
+    std::string c;
+    std::int64_t length, bends;
+  };
+  for (const Case& k : {Case{"0", 20000, 7}, Case{"5000", 23000, 4}}) {
+    SCOPED_TRACE("C = " + k.c);
+    const std::string xml = dir + "/b" + k.c + ".xml", svg = dir + "/b" + k.c + ".svg";
+    const auto r = run_taut({"route", design, "-q", "--metric", "combined", "--bend-cost", k.c, "-o", xml, "--svg", svg});
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(test::read_text(svg), test::read_text(std::string(TAUT_SOURCE_DIR) + "/docs/bends-c" + k.c + ".svg"))
+        << "docs/bends-c" << k.c << ".svg is not what taut draws now: copy " << svg;
+    const io::ReadResult rr = io::read_layout(xml);
+    ASSERT_TRUE(rr.layout && rr.layout->routes);
+    EXPECT_EQ(rr.layout->routes->metric, "combined");
+    EXPECT_EQ(rr.layout->routes->bend_cost.value_or(-1), std::stoll(k.c));
+    ASSERT_EQ(rr.layout->routes->routes.size(), 1u);
+    const io::Route& route = rr.layout->routes->routes[0];
+    EXPECT_EQ(route.bends.value_or(-1), k.bends);
+    ASSERT_EQ(route.wires.size(), 1u);
+    // the same wire as `path` gives, checked against the reference
+    const std::vector<Point>& w = route.wires[0].points;
+    const Ref ref = reference_for(design, {w.front(), w.back()});
+    const auto want = ref.ref->best(w.front(), w.back(), false, std::stoll(k.c));
+    ASSERT_TRUE(want.has_value());
+    EXPECT_EQ(want->length, k.length);
+    EXPECT_EQ(want->bends, k.bends);
+    const auto got = ref.ref->check_path(w);
+    ASSERT_TRUE(got.has_value());
+    EXPECT_EQ(got->length, k.length);
+    EXPECT_EQ(got->bends, k.bends);
+    const auto check = run_taut({"check", xml});
+    EXPECT_EQ(check.status, 0) << check.out << check.err;
+  }
+  // link: no bend-cost attribute; route --tighten does not combine with it
+  const auto l = run_taut({"route", design, "-q", "--metric", "link", "-o", dir + "/link.xml"});
+  ASSERT_EQ(l.status, 0) << l.err;
+  const io::ReadResult rl = io::read_layout(dir + "/link.xml");
+  ASSERT_TRUE(rl.layout && rl.layout->routes);
+  EXPECT_EQ(rl.layout->routes->metric, "link");
+  EXPECT_FALSE(rl.layout->routes->bend_cost.has_value());
+  EXPECT_EQ(rl.layout->routes->routes[0].bends.value_or(-1), 4);
+  const auto t = run_taut({"route", design, "--metric", "link", "--tighten", "-o", dir + "/t.xml"});
+  EXPECT_EQ(t.status, 2);
+  EXPECT_NE(t.err.find("CLI-0020"), std::string::npos) << t.err;
+  EXPECT_FALSE(test::file_exists(dir + "/t.xml"));
+  // the demo: two-pin point nets routed, the others named (ROUTE-0009) and written as failed
+  const auto d = run_taut({"route", kDemo, "--metric", "combined", "--bend-cost", "1000", "-o", dir + "/demo.xml"});
+  EXPECT_EQ(d.status, 1);
+  EXPECT_NE(d.err.find("[ROUTE-0009] net \"clk\" not routed"), std::string::npos) << d.err;
+  EXPECT_NE(d.err.find("[ROUTE-0009] net \"bump\" not routed"), std::string::npos) << d.err;
+  EXPECT_NE(d.err.find("[ROUTE-0008] blockage \"tri\""), std::string::npos) << d.err;
+  const auto dc = run_taut({"check", dir + "/demo.xml"});
+  EXPECT_EQ(dc.status, 0) << dc.out << dc.err;
+}
+
+}  // namespace
+}  // namespace taut
