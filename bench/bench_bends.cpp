@@ -28,7 +28,7 @@ struct Row {
   double sort = 0, build = 0, combined = 0, link = 0, l1 = 0;
   taut::router::BendGraphStats stats;
   std::size_t edges = 0;
-  int found = 0, queries = 0;
+  int found = 0, l1_found = 0, queries = 0;
 };
 
 }  // namespace
@@ -55,7 +55,7 @@ int main(int argc, char** argv) {
               kind_name.c_str(), queries);
   std::printf("%8s %8s %9s %10s %10s | %9s %9s | %10s %10s %10s | %8s %8s %8s\n", "n", "nodes", "tracks",
               "straight", "L-edges", "build(s)", "/sort", "comb(ms)", "link(ms)", "l1(ms)", "comb/l1",
-              "link/l1", "found");
+              "link/l1", "found (l1)");
   std::vector<Row> rows;
   for (const std::int64_t size : sizes) {
     const taut::bench::BenchLayout b = taut::bench::bench_layout(*kind, size);
@@ -84,13 +84,14 @@ int main(int argc, char** argv) {
                }, 1) / std::max<std::size_t>(1, pairs.size());
     taut::router::L1Router l1(b.norm.domain, b.norm.obstacles);
     row.l1 = seconds_of([&] {
-               for (const auto& [s, t] : pairs) (void)l1.shortest(s, t);
+               row.l1_found = 0;
+               for (const auto& [s, t] : pairs) row.l1_found += l1.shortest(s, t).status == taut::router::WireStatus::Ok;
              }, 1) / std::max<std::size_t>(1, pairs.size());
     const auto& st = row.stats;
-    std::printf("%8lld %8zu %9zu %10zu %10zu | %9.3f %9.1f | %10.2f %10.2f %10.2f | %8.2f %8.2f %5d/%d\n",
+    std::printf("%8lld %8zu %9zu %10zu %10zu | %9.3f %9.1f | %10.2f %10.2f %10.2f | %8.2f %8.2f %5d/%d (%d)\n",
                 static_cast<long long>(row.n), st.nodes, st.tracks, st.straight_edges, st.l_edges, row.build,
                 row.build / row.sort, row.combined * 1e3, row.link * 1e3, row.l1 * 1e3, row.combined / row.l1,
-                row.link / row.l1, row.found, row.queries);
+                row.link / row.l1, row.found, row.queries, row.l1_found);
     std::fflush(stdout);
     rows.push_back(row);
   }

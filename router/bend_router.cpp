@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <boost/graph/compressed_sparse_row_graph.hpp>
 #include <boost/graph/dijkstra_shortest_paths.hpp>
+#include <boost/property_map/function_property_map.hpp>
 #include <boost/property_map/property_map.hpp>
+#include <functional>
+#include <optional>
 #include <limits>
 #include <map>
 #include <string>
@@ -124,6 +127,14 @@ struct Cost {
 };
 const Cost kInf{std::numeric_limits<i128>::max(), std::numeric_limits<i64>::max()};
 
+// The built graph: graph vertex 2i is node i's h-node, 2i + 1 its v-node; both directions of
+// every edge, each with its length and bends (the cost is made per query from the metric).
+struct EdgeCost {
+  i64 length = 0;
+  i64 bends = 0;
+};
+using Graph = boost::compressed_sparse_row_graph<boost::directedS, boost::no_property, EdgeCost>;
+
 }  // namespace
 
 struct BendRouter::Impl {
@@ -155,6 +166,7 @@ struct BendRouter::Impl {
     int bends;
   };
   std::vector<Edge> edges;
+  Graph graph;
   BendGraphStats stats;
 
   Impl(const Box& d, std::span<const Polygon> obs) : domain(d), obstacles(obs.begin(), obs.end()), index(obs) {}
@@ -327,6 +339,19 @@ struct BendRouter::Impl {
       }
     }
     stats.l_edges = edges.size() - before;
+
+    std::vector<std::pair<std::size_t, std::size_t>> arcs;
+    std::vector<EdgeCost> costs;
+    arcs.reserve(2 * edges.size());
+    costs.reserve(2 * edges.size());
+    for (const Edge& e : edges) {
+      const auto u = static_cast<std::size_t>(e.u), v = static_cast<std::size_t>(e.v);
+      arcs.emplace_back(u, v), costs.push_back({e.length, e.bends});
+      arcs.emplace_back(v, u), costs.push_back({e.length, e.bends});
+    }
+    graph = Graph(boost::edges_are_unsorted_multi_pass, arcs.begin(), arcs.end(), costs.begin(), 2 * nodes.size());
+    edges.clear();
+    edges.shrink_to_fit();
   }
 
   BendPath path(Point s, Point t, BendMetric metric, i64 bend_cost) const;
@@ -364,9 +389,6 @@ BendPath BendRouter::Impl::path(Point s, Point t, BendMetric metric, i64 bend_co
     out.points = {s};
     return out;
   }
-  auto node_at = [&](std::int32_t n) -> const Node& {
-    return n < base ? nodes[static_cast<std::size_t>(n)] : qnodes[static_cast<std::size_t>(n - base)];
-  };
 
   // query tracks
   std::vector<Edge> qedges;
@@ -407,92 +429,148 @@ BendPath BendRouter::Impl::path(Point s, Point t, BendMetric metric, i64 bend_co
     }
   }
 
-  // the graph: built edges, query edges, a source joined to the start nodes
+  // Dijkstra on the built graph only: the query ends are not in it. A start node that is not a
+  // vertex enters through its edges (each neighbour starts at that edge's cost), an end node that
+  // is not a vertex is reached through its edges (each neighbour offers its distance plus the
+  // edge), and an edge between the two ends is a candidate of its own.
   const std::int32_t total_nodes = base + static_cast<std::int32_t>(qnodes.size());
-  const std::int32_t source = 2 * total_nodes;
-  const std::size_t nv = static_cast<std::size_t>(source) + 1;
-  auto weight = [&](const Edge& e) {
-    return metric == BendMetric::Link ? Cost{e.bends, e.length}
-                                      : Cost{i128{e.length} + i128{bend_cost} * e.bends, e.bends};
+  auto weight = [&](i64 length, i64 bends) {
+    return metric == BendMetric::Link ? Cost{bends, length} : Cost{i128{length} + i128{bend_cost} * bends, bends};
   };
-  std::vector<std::pair<std::int32_t, std::int32_t>> arcs;
-  std::vector<Cost> w;
-  arcs.reserve(2 * (edges.size() + qedges.size()) + 2 * ends[0].size());
-  w.reserve(arcs.capacity());
-  for (const std::vector<Edge>* list : {&edges, static_cast<const std::vector<Edge>*>(&qedges)})
-    for (const Edge& e : *list) {
-      const Cost c = weight(e);
-      arcs.emplace_back(e.u, e.v), w.push_back(c);
-      arcs.emplace_back(e.v, e.u), w.push_back(c);
+  const std::int32_t built = 2 * base;  // graph vertices of the built graph
+  auto is_end = [&](int i, std::int32_t gv) {
+    return std::find(ends[i].begin(), ends[i].end(), gv / 2) != ends[i].end();
+  };
+  struct Entry {
+    std::int32_t gv;     // a vertex of the built graph
+    std::int32_t query;  // the query graph vertex it is joined to (-1: it is an end itself)
+    Cost w;
+  };
+  std::vector<Entry> starts, finishes;
+  struct Direct {
+    std::int32_t from, to;  // query graph vertices
+    Cost w;
+  };
+  std::optional<Direct> direct;
+  for (int i = 0; i < 2; ++i)
+    for (const std::int32_t n : ends[i])
+      if (n < base)
+        for (const std::int32_t gv : {2 * n, 2 * n + 1}) (i == 0 ? starts : finishes).push_back({gv, -1, Cost{}});
+  for (const Edge& e : qedges) {
+    const Cost w = weight(e.length, e.bends);
+    for (const auto& [a, b] : {std::pair{e.u, e.v}, std::pair{e.v, e.u}}) {
+      if (a < built || !is_end(0, a)) continue;  // a: the start's own node
+      if (b < built) {
+        starts.push_back({b, a, w});
+      } else if (is_end(1, b) && !is_end(0, b) && (!direct || w < direct->w)) {
+        direct = Direct{a, b, w};
+      }
     }
-  for (const std::int32_t n : ends[0]) {
-    arcs.emplace_back(source, 2 * n), w.push_back(Cost{});
-    arcs.emplace_back(source, 2 * n + 1), w.push_back(Cost{});
+    for (const auto& [a, b] : {std::pair{e.u, e.v}, std::pair{e.v, e.u}})
+      if (a >= built && is_end(1, a) && !is_end(0, a) && b < built) finishes.push_back({b, a, w});
   }
-  using Graph = boost::compressed_sparse_row_graph<boost::directedS, boost::no_property, Cost>;
-  // the CSR constructor wants the arcs sorted by source
-  std::vector<std::size_t> perm(arcs.size());
-  for (std::size_t i = 0; i < perm.size(); ++i) perm[i] = i;
-  std::stable_sort(perm.begin(), perm.end(), [&](std::size_t a, std::size_t b) { return arcs[a].first < arcs[b].first; });
-  std::vector<std::pair<std::int32_t, std::int32_t>> sarcs(arcs.size());
-  std::vector<Cost> sw(arcs.size());
-  for (std::size_t i = 0; i < perm.size(); ++i) sarcs[i] = arcs[perm[i]], sw[i] = w[perm[i]];
-  const Graph g(boost::edges_are_sorted, sarcs.begin(), sarcs.end(), sw.begin(), nv);
+  (void)total_nodes;
 
-  std::vector<char> is_target(nv, 0);
-  for (const std::int32_t n : ends[1]) is_target[static_cast<std::size_t>(2 * n)] = is_target[static_cast<std::size_t>(2 * n + 1)] = 1;
+  const std::size_t nv = static_cast<std::size_t>(built);
   std::vector<Cost> dist(nv, kInf);
   std::vector<std::size_t> pred(nv);
-  struct Found {
-    std::size_t v;
-  };
-  struct Stop : boost::default_dijkstra_visitor {
-    const std::vector<char>* target;
+  for (std::size_t v = 0; v < nv; ++v) pred[v] = v;
+  std::vector<std::size_t> sources;
+  std::vector<std::int32_t> entered_from(nv, -2);  // the start's query vertex, -1 an end itself
+  for (const Entry& e : starts) {
+    const auto v = static_cast<std::size_t>(e.gv);
+    if (e.w < dist[v]) {
+      if (dist[v] == kInf) sources.push_back(v);
+      dist[v] = e.w;
+      entered_from[v] = e.query;
+    }
+  }
+  // finishes by graph vertex (several end edges may reach one vertex)
+  std::unordered_map<std::size_t, std::vector<std::size_t>> finish_at;
+  for (std::size_t i = 0; i < finishes.size(); ++i) finish_at[static_cast<std::size_t>(finishes[i].gv)].push_back(i);
+  Cost best = direct ? direct->w : kInf;
+  std::optional<std::size_t> best_finish;  // index into finishes; none: the direct edge (or nothing)
+  struct Stop {};
+  struct Visitor : boost::default_dijkstra_visitor {
+    const std::vector<Cost>* dist;
+    const std::vector<Entry>* finishes;
+    const std::unordered_map<std::size_t, std::vector<std::size_t>>* finish_at;
+    Cost* best;
+    std::optional<std::size_t>* best_finish;
+    std::function<Cost(const Cost&, const Cost&)> add;
     void examine_vertex(std::size_t u, const Graph&) const {
-      if ((*target)[u]) throw Found{u};
+      if (!((*dist)[u] < *best)) throw Stop{};
+      const auto it = finish_at->find(u);
+      if (it == finish_at->end()) return;
+      for (const std::size_t i : it->second) {
+        const Cost c = add((*dist)[u], (*finishes)[i].w);
+        if (c < *best) *best = c, *best_finish = i;
+      }
     }
   };
-  Stop vis;
-  vis.target = &is_target;
-  std::size_t reached = nv;
   const auto combine = [](const Cost& a, const Cost& b) {
     if (a == kInf || b == kInf) return kInf;
     return Cost{a.first + b.first, a.second + b.second};
   };
+  Visitor vis;
+  vis.dist = &dist;
+  vis.finishes = &finishes;
+  vis.finish_at = &finish_at;
+  vis.best = &best;
+  vis.best_finish = &best_finish;
+  vis.add = combine;
+  const auto index = boost::get(boost::vertex_index, graph);
+  const auto wmap = boost::make_function_property_map<Graph::edge_descriptor, Cost>(
+      [&](const Graph::edge_descriptor& e) {
+        const EdgeCost& c = graph[e];
+        return weight(c.length, c.bends);
+      });
+  std::vector<boost::default_color_type> color(nv, boost::white_color);
   try {
-    boost::dijkstra_shortest_paths(g, static_cast<std::size_t>(source),
-                                   boost::predecessor_map(boost::make_iterator_property_map(pred.begin(), boost::get(boost::vertex_index, g)))
-                                       .distance_map(boost::make_iterator_property_map(dist.begin(), boost::get(boost::vertex_index, g)))
-                                       .weight_map(boost::get(boost::edge_bundle, g))
-                                       .distance_compare(std::less<Cost>())
-                                       .distance_combine(combine)
-                                       .distance_inf(kInf)
-                                       .distance_zero(Cost{})
-                                       .visitor(vis));
-  } catch (const Found& f) {
-    reached = f.v;
+    if (!sources.empty())
+      boost::dijkstra_shortest_paths_no_init(
+          graph, sources.begin(), sources.end(), boost::make_iterator_property_map(pred.begin(), index),
+          boost::make_iterator_property_map(dist.begin(), index), wmap, index, std::less<Cost>(), combine, Cost{}, vis,
+          boost::make_iterator_property_map(color.begin(), index));
+  } catch (const Stop&) {
   }
-  if (reached == nv) {
+  if (best == kInf) {
     out.status = WireStatus::Unreachable;
     return out;
   }
 
-  // the walk back to the source, then its points
-  std::vector<std::size_t> walk;
-  for (std::size_t v = reached; v != static_cast<std::size_t>(source); v = pred[v]) {
-    walk.push_back(v);
-    if (walk.size() > nv) throw std::logic_error("BendRouter: predecessor cycle");
+  // the walk: the start's query vertex (if any), built vertices back from the finish, the end's
+  // query vertex (if any); as (point, horizontal?) pairs
+  std::vector<std::pair<Point, bool>> walk;
+  auto add_gv = [&](std::int32_t gv) {
+    const Node& nd = gv < built ? nodes[static_cast<std::size_t>(gv / 2)] : qnodes[static_cast<std::size_t>(gv / 2 - base)];
+    walk.emplace_back(nd.p, gv % 2 == 0);
+  };
+  if (!best_finish) {
+    add_gv(direct->from);
+    add_gv(direct->to);
+  } else {
+    const Entry& fin = finishes[*best_finish];
+    std::vector<std::size_t> back;
+    for (std::size_t v = static_cast<std::size_t>(fin.gv);; v = pred[v]) {
+      back.push_back(v);
+      if (pred[v] == v) break;
+      if (back.size() > nv) throw std::logic_error("BendRouter: predecessor cycle");
+    }
+    std::reverse(back.begin(), back.end());
+    const std::int32_t from = entered_from[back.front()];
+    if (from >= 0) add_gv(from);
+    for (const std::size_t v : back) add_gv(static_cast<std::int32_t>(v));
+    if (fin.query >= 0) add_gv(fin.query);
   }
-  std::reverse(walk.begin(), walk.end());
   std::vector<Point> pts;
-  pts.push_back(node_at(static_cast<std::int32_t>(walk.front() / 2)).p);
+  pts.push_back(walk.front().first);
   for (std::size_t i = 1; i < walk.size(); ++i) {
-    const Node& a = node_at(static_cast<std::int32_t>(walk[i - 1] / 2));
-    const Node& b = node_at(static_cast<std::int32_t>(walk[i] / 2));
-    const bool ah = walk[i - 1] % 2 == 0, bh = walk[i] % 2 == 0;
-    if (a.p == b.p) continue;  // a turn
-    if (ah != bh) pts.push_back(ah ? Point{b.p.x, a.p.y} : Point{a.p.x, b.p.y});
-    pts.push_back(b.p);
+    const auto [a, ah] = walk[i - 1];
+    const auto [b, bh] = walk[i];
+    if (a == b) continue;  // a turn
+    if (ah != bh) pts.push_back(ah ? Point{b.x, a.y} : Point{a.x, b.y});
+    pts.push_back(b);
   }
   // drop repeated and collinear points
   std::vector<Point> clean;
@@ -512,8 +590,8 @@ BendPath BendRouter::Impl::path(Point s, Point t, BendMetric metric, i64 bend_co
   out.length = 0;
   for (std::size_t i = 1; i < out.points.size(); ++i)
     out.length += std::abs(i64{out.points[i].x} - out.points[i - 1].x) + std::abs(i64{out.points[i].y} - out.points[i - 1].y);
-  const Cost got = weight(Edge{0, 0, out.length, static_cast<int>(out.bends)});
-  if (!(got == dist[reached]))
+  const Cost got = weight(out.length, out.bends);
+  if (!(got == best))
     throw std::logic_error("BendRouter: the path's cost differs from the graph's distance");
   out.status = WireStatus::Ok;
   return out;

@@ -32,8 +32,11 @@
 // the domain side (exact ray shooting, geom::ObstacleIndex). The L edges are the crossings of a
 // horizontal and a vertical track, found by one sweep over x with the horizontal tracks in a
 // search tree on y: O(n log n + k) for n vertices and k edges (k is quadratic in the worst case).
-// The tracks and edges among the obstacle vertices are built once; a query adds its two ends'
-// tracks, their crossings with the built tracks (a scan), and runs Dijkstra.
+// The tracks and edges among the obstacle vertices are built once, into a compressed sparse row
+// graph (the metric's cost is computed per edge when a query reads it). A query end that is not a
+// vertex gets its own tracks and their crossings with the built tracks (a scan); Dijkstra runs
+// on the built graph from the start's neighbours, and stops when the best offer of the end's
+// neighbours is below every distance left.
 //
 // Free space: the closed domain minus the open obstacles, as for the L1 router: a path may run
 // along blockage edges and turn on their vertices, never through a point where two blockages
