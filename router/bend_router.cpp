@@ -12,6 +12,7 @@
 #include <string>
 #include <stdexcept>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 
 #include "geom/index.h"
@@ -354,129 +355,184 @@ struct BendRouter::Impl {
     edges.shrink_to_fit();
   }
 
+  // One Dijkstra run from s to every sink: per sink its walk (points, each with whether the
+  // wire is horizontal there) and its chain of built graph vertices (walk[leads[k] + i] is
+  // chains[k][i]).
+  struct Search {
+    WireStatus status = WireStatus::Ok;
+    std::size_t failed = 0;  // the sink (or 0 for the source) when not Ok
+    std::vector<std::vector<std::pair<Point, bool>>> walks;
+    std::vector<std::vector<std::size_t>> chains;
+    std::vector<std::size_t> leads;
+  };
+  Search search(Point s, std::span<const Point> sinks, BendMetric metric, i64 bend_cost) const;
   BendPath path(Point s, Point t, BendMetric metric, i64 bend_cost) const;
+  BendTree tree(Point source, std::span<const Point> sinks, BendMetric metric, i64 bend_cost) const;
 };
 
-BendPath BendRouter::Impl::path(Point s, Point t, BendMetric metric, i64 bend_cost) const {
-  BendPath out;
-  // The query ends: an obstacle vertex uses its nodes; another free point gets a node of its own
-  // (its one wedge) with its tracks.
-  std::vector<Node> qnodes;
-  std::vector<Track> qtracks;
-  std::vector<std::int32_t> ends[2];
-  const Point q[2] = {s, t};
+namespace {
+
+// A walk of the graph as (point, horizontal there?) pairs, made into the wire's points: an L
+// edge gets its corner, repeated and collinear points go.
+std::vector<Point> walk_points(const std::vector<std::pair<Point, bool>>& walk) {
+  std::vector<Point> pts;
+  pts.push_back(walk.front().first);
+  for (std::size_t i = 1; i < walk.size(); ++i) {
+    const auto [a, ah] = walk[i - 1];
+    const auto [b, bh] = walk[i];
+    if (a == b) continue;  // a turn
+    if (ah != bh) pts.push_back(ah ? Point{b.x, a.y} : Point{a.x, b.y});
+    pts.push_back(b);
+  }
+  std::vector<Point> clean;
+  for (const Point p : pts) {
+    if (!clean.empty() && clean.back() == p) continue;
+    if (clean.size() >= 2) {
+      const Point a = clean[clean.size() - 2], b = clean.back();
+      if (geom::orientation(a, b, p) == 0 && (i64{b.x} - a.x) * (i64{p.x} - b.x) + (i64{b.y} - a.y) * (i64{p.y} - b.y) > 0) {
+        clean.back() = p;
+        continue;
+      }
+    }
+    clean.push_back(p);
+  }
+  return clean;
+}
+
+i64 l1_length(const std::vector<Point>& pts) {
+  i64 len = 0;
+  for (std::size_t i = 1; i < pts.size(); ++i)
+    len += std::abs(i64{pts[i].x} - pts[i - 1].x) + std::abs(i64{pts[i].y} - pts[i - 1].y);
+  return len;
+}
+
+}  // namespace
+
+BendRouter::Impl::Search BendRouter::Impl::search(Point s, std::span<const Point> sinks, BendMetric metric,
+                                                  i64 bend_cost) const {
+  Search out;
+  // The query points (0: the source, then the sinks): an obstacle vertex uses its nodes; another
+  // free point gets a node of its own (its one wedge) with its tracks.
+  std::vector<Point> q = {s};
+  q.insert(q.end(), sinks.begin(), sinks.end());
   const std::int32_t base = static_cast<std::int32_t>(nodes.size());
-  for (int i = 0; i < 2; ++i) {
+  const std::int32_t built = 2 * base;  // graph vertices of the built graph
+  std::vector<Node> qnodes;
+  std::vector<std::vector<std::int32_t>> ends(q.size());  // nodes of each query point
+  for (std::size_t i = 0; i < q.size(); ++i) {
     const auto it = vertex_nodes.find(key(q[i]));
     if (it != vertex_nodes.end()) {
       ends[i] = it->second;
-    } else if (i == 1 && s == t && !qnodes.empty()) {
-      ends[1] = ends[0];
     } else {
-      const std::vector<unsigned> w = wedges_of(point_material(q[i]));
-      if (!w.empty()) {
-        ends[i].push_back(base + static_cast<std::int32_t>(qnodes.size()));
-        qnodes.push_back({q[i], w.front()});
+      const auto same = std::find_if(qnodes.begin(), qnodes.end(), [&](const Node& n) { return n.p == q[i]; });
+      if (same != qnodes.end()) {
+        ends[i] = {base + static_cast<std::int32_t>(same - qnodes.begin())};
+      } else {
+        const std::vector<unsigned> w = wedges_of(point_material(q[i]));
+        if (!w.empty()) {
+          ends[i].push_back(base + static_cast<std::int32_t>(qnodes.size()));
+          qnodes.push_back({q[i], w.front()});
+        }
       }
     }
     if (ends[i].empty()) {
       out.status = i == 0 ? WireStatus::SourceNotFree : WireStatus::TargetNotFree;
+      out.failed = i == 0 ? 0 : i - 1;
       return out;
     }
   }
-  if (s == t) {
-    out.status = WireStatus::Ok;
-    out.points = {s};
-    return out;
-  }
+  auto weight = [&](i64 length, i64 bends) {
+    return metric == BendMetric::Link ? Cost{bends, length} : Cost{i128{length} + i128{bend_cost} * bends, bends};
+  };
+  auto node_of = [&](std::int32_t gv) -> const Node& {
+    return gv < built ? nodes[static_cast<std::size_t>(gv / 2)] : qnodes[static_cast<std::size_t>(gv / 2 - base)];
+  };
+  auto is_end = [&](std::size_t i, std::int32_t gv) {
+    return std::find(ends[i].begin(), ends[i].end(), gv / 2) != ends[i].end();
+  };
 
-  // query tracks
+  // the query nodes' tracks and edges: straight to the vertex a track ends on, L with the built
+  // tracks, and straight or L between two query nodes
+  std::vector<Track> qtracks;
+  for (std::size_t j = 0; j < qnodes.size(); ++j)
+    for (int k = 0; k < 4; ++k)
+      if (in_wedge(qnodes[j].wedge, k)) qtracks.push_back(shoot(base + static_cast<std::int32_t>(j), qnodes[j].p, k));
   std::vector<Edge> qedges;
-  for (std::size_t j = 0; j < qnodes.size(); ++j) {
-    const std::int32_t n = base + static_cast<std::int32_t>(j);
-    qedges.push_back({2 * n, 2 * n + 1, 0, 1});
-    for (int k = 0; k < 4; ++k) {
-      if (!in_wedge(qnodes[j].wedge, k)) continue;
-      const Track tr = shoot(n, qnodes[j].p, k);
-      qtracks.push_back(tr);
-    }
-  }
-  for (const Track& a : qtracks) {
+  const Point none{geom::kMaxCoord, geom::kMaxCoord};
+  for (std::size_t i = 0; i < qtracks.size(); ++i) {
+    const Track& a = qtracks[i];
     straight_edges(a, qedges);
     if (a.end == a.start) continue;
     for (const Track& b : tracks) {
       if (horizontal(a.dir) == horizontal(b.dir) || b.end == b.start) continue;
       Edge e{};
-      if (horizontal(a.dir) ? l_edge(a, b, s, t, e) : l_edge(b, a, s, t, e)) qedges.push_back(e);
+      if (horizontal(a.dir) ? l_edge(a, b, none, none, e) : l_edge(b, a, none, none, e)) qedges.push_back(e);
     }
-  }
-  // between the two query points
-  for (const Track& a : qtracks) {
-    if (a.from != base || a.end == a.start) continue;  // from s (when s has a node of its own)
-    const Point lo{std::min(a.start.x, a.end.x), std::min(a.start.y, a.end.y)};
-    const Point hi{std::max(a.start.x, a.end.x), std::max(a.start.y, a.end.y)};
-    for (const std::int32_t tn : ends[1]) {
-      if (tn < base) continue;  // t is a vertex: a's track or the built graph reaches it
-      if (t.x >= lo.x && t.x <= hi.x && t.y >= lo.y && t.y <= hi.y) {
+    for (std::size_t j = 0; j < qtracks.size(); ++j) {
+      const Track& b = qtracks[j];
+      if (b.from == a.from) continue;
+      if (b.dir == opposite(a.dir)) {
+        // b's point on a's track: a straight edge (each pair once: from the smaller node)
+        const Point p = b.start;
+        const bool on = a.from < b.from && std::min(a.start.x, a.end.x) <= p.x && p.x <= std::max(a.start.x, a.end.x) &&
+                        std::min(a.start.y, a.end.y) <= p.y && p.y <= std::max(a.start.y, a.end.y);
         const int vv = horizontal(a.dir) ? 0 : 1;
-        qedges.push_back({2 * a.from + vv, 2 * tn + vv, std::abs(i64{t.x} - s.x) + std::abs(i64{t.y} - s.y), 0});
+        if (on) qedges.push_back({2 * a.from + vv, 2 * b.from + vv, l1_length({a.start, p}), 0});
+      } else if (horizontal(a.dir) && !horizontal(b.dir) && b.end != b.start) {
+        Edge e{};
+        if (l_edge(a, b, none, none, e)) qedges.push_back(e);
       }
-    }
-    for (const Track& b : qtracks) {
-      if (b.from == base || horizontal(a.dir) == horizontal(b.dir) || b.end == b.start) continue;
-      Edge e{};
-      if (horizontal(a.dir) ? l_edge(a, b, s, t, e) : l_edge(b, a, s, t, e)) qedges.push_back(e);
     }
   }
 
-  // Dijkstra on the built graph only: the query ends are not in it. A start node that is not a
-  // vertex enters through its edges (each neighbour starts at that edge's cost), an end node that
-  // is not a vertex is reached through its edges (each neighbour offers its distance plus the
-  // edge), and an edge between the two ends is a candidate of its own.
-  const std::int32_t total_nodes = base + static_cast<std::int32_t>(qnodes.size());
-  auto weight = [&](i64 length, i64 bends) {
-    return metric == BendMetric::Link ? Cost{bends, length} : Cost{i128{length} + i128{bend_cost} * bends, bends};
-  };
-  const std::int32_t built = 2 * base;  // graph vertices of the built graph
-  auto is_end = [&](int i, std::int32_t gv) {
-    return std::find(ends[i].begin(), ends[i].end(), gv / 2) != ends[i].end();
-  };
+  // Dijkstra on the built graph only: a query node that is a start enters it through its edges
+  // (each neighbour starts at that edge's cost), a sink that is not a vertex is reached through
+  // its edges (each neighbour offers its distance plus the edge), and an edge between the source
+  // and a sink is an offer of its own.
   struct Entry {
     std::int32_t gv;     // a vertex of the built graph
-    std::int32_t query;  // the query graph vertex it is joined to (-1: it is an end itself)
+    std::int32_t query;  // the query graph vertex it is joined to (-1: it is the point itself)
     Cost w;
   };
-  std::vector<Entry> starts, finishes;
-  struct Direct {
-    std::int32_t from, to;  // query graph vertices
-    Cost w;
+  std::vector<Entry> starts;
+  std::vector<std::vector<Entry>> finishes(sinks.size());
+  struct Offer {
+    Cost cost = kInf;
+    std::optional<std::size_t> finish;     // index into finishes[k]
+    std::int32_t direct_from = -1, direct_to = -1;  // an edge between the source and the sink
   };
-  std::optional<Direct> direct;
-  for (int i = 0; i < 2; ++i)
-    for (const std::int32_t n : ends[i])
+  std::vector<Offer> offers(sinks.size());
+  for (const std::int32_t n : ends[0])
+    if (n < base)
+      for (const std::int32_t gv : {2 * n, 2 * n + 1}) starts.push_back({gv, -1, Cost{}});
+  for (std::size_t k = 0; k < sinks.size(); ++k) {
+    if (q[k + 1] == s) offers[k].cost = Cost{};  // a sink at the source
+    for (const std::int32_t n : ends[k + 1])
       if (n < base)
-        for (const std::int32_t gv : {2 * n, 2 * n + 1}) (i == 0 ? starts : finishes).push_back({gv, -1, Cost{}});
+        for (const std::int32_t gv : {2 * n, 2 * n + 1}) finishes[k].push_back({gv, -1, Cost{}});
+  }
   for (const Edge& e : qedges) {
     const Cost w = weight(e.length, e.bends);
     for (const auto& [a, b] : {std::pair{e.u, e.v}, std::pair{e.v, e.u}}) {
-      if (a < built || !is_end(0, a)) continue;  // a: the start's own node
-      if (b < built) {
-        starts.push_back({b, a, w});
-      } else if (is_end(1, b) && !is_end(0, b) && (!direct || w < direct->w)) {
-        direct = Direct{a, b, w};
+      if (a < built) continue;
+      if (is_end(0, a) && b < built) starts.push_back({b, a, w});
+      for (std::size_t k = 0; k < sinks.size(); ++k) {
+        if (!is_end(k + 1, a) || is_end(0, a)) continue;
+        if (b < built) {
+          finishes[k].push_back({b, a, w});
+        } else if (is_end(0, b) && w < offers[k].cost) {
+          offers[k] = Offer{w, std::nullopt, b, a};
+        }
       }
     }
-    for (const auto& [a, b] : {std::pair{e.u, e.v}, std::pair{e.v, e.u}})
-      if (a >= built && is_end(1, a) && !is_end(0, a) && b < built) finishes.push_back({b, a, w});
   }
-  (void)total_nodes;
 
   const std::size_t nv = static_cast<std::size_t>(built);
   std::vector<Cost> dist(nv, kInf);
   std::vector<std::size_t> pred(nv);
   for (std::size_t v = 0; v < nv; ++v) pred[v] = v;
   std::vector<std::size_t> sources;
-  std::vector<std::int32_t> entered_from(nv, -2);  // the start's query vertex, -1 an end itself
+  std::vector<std::int32_t> entered_from(nv, -1);  // the source's query vertex; -1: a source vertex
   for (const Entry& e : starts) {
     const auto v = static_cast<std::size_t>(e.gv);
     if (e.w < dist[v]) {
@@ -485,39 +541,40 @@ BendPath BendRouter::Impl::path(Point s, Point t, BendMetric metric, i64 bend_co
       entered_from[v] = e.query;
     }
   }
-  // finishes by graph vertex (several end edges may reach one vertex)
-  std::unordered_map<std::size_t, std::vector<std::size_t>> finish_at;
-  for (std::size_t i = 0; i < finishes.size(); ++i) finish_at[static_cast<std::size_t>(finishes[i].gv)].push_back(i);
-  Cost best = direct ? direct->w : kInf;
-  std::optional<std::size_t> best_finish;  // index into finishes; none: the direct edge (or nothing)
-  struct Stop {};
-  struct Visitor : boost::default_dijkstra_visitor {
-    const std::vector<Cost>* dist;
-    const std::vector<Entry>* finishes;
-    const std::unordered_map<std::size_t, std::vector<std::size_t>>* finish_at;
-    Cost* best;
-    std::optional<std::size_t>* best_finish;
-    std::function<Cost(const Cost&, const Cost&)> add;
-    void examine_vertex(std::size_t u, const Graph&) const {
-      if (!((*dist)[u] < *best)) throw Stop{};
-      const auto it = finish_at->find(u);
-      if (it == finish_at->end()) return;
-      for (const std::size_t i : it->second) {
-        const Cost c = add((*dist)[u], (*finishes)[i].w);
-        if (c < *best) *best = c, *best_finish = i;
-      }
-    }
-  };
+  std::unordered_map<std::size_t, std::vector<std::pair<std::size_t, std::size_t>>> finish_at;  // -> (sink, entry)
+  for (std::size_t k = 0; k < sinks.size(); ++k)
+    for (std::size_t i = 0; i < finishes[k].size(); ++i)
+      finish_at[static_cast<std::size_t>(finishes[k][i].gv)].emplace_back(k, i);
   const auto combine = [](const Cost& a, const Cost& b) {
     if (a == kInf || b == kInf) return kInf;
     return Cost{a.first + b.first, a.second + b.second};
+  };
+  struct Stop {};
+  struct Visitor : boost::default_dijkstra_visitor {
+    const std::vector<Cost>* dist;
+    const std::vector<std::vector<Entry>>* finishes;
+    const std::unordered_map<std::size_t, std::vector<std::pair<std::size_t, std::size_t>>>* finish_at;
+    std::vector<Offer>* offers;
+    std::function<Cost(const Cost&, const Cost&)> add;
+    void examine_vertex(std::size_t u, const Graph&) const {
+      const Cost& d = (*dist)[u];
+      // every sink's best offer is at most what is left: done
+      bool done = true;
+      for (const Offer& o : *offers) done = done && !(d < o.cost);
+      if (done) throw Stop{};
+      const auto it = finish_at->find(u);
+      if (it == finish_at->end()) return;
+      for (const auto& [k, i] : it->second) {
+        const Cost c = add(d, (*finishes)[k][i].w);
+        if (c < (*offers)[k].cost) (*offers)[k] = Offer{c, i, -1, -1};
+      }
+    }
   };
   Visitor vis;
   vis.dist = &dist;
   vis.finishes = &finishes;
   vis.finish_at = &finish_at;
-  vis.best = &best;
-  vis.best_finish = &best_finish;
+  vis.offers = &offers;
   vis.add = combine;
   const auto index = boost::get(boost::vertex_index, graph);
   const auto wmap = boost::make_function_property_map<Graph::edge_descriptor, Cost>(
@@ -534,66 +591,112 @@ BendPath BendRouter::Impl::path(Point s, Point t, BendMetric metric, i64 bend_co
           boost::make_iterator_property_map(color.begin(), index));
   } catch (const Stop&) {
   }
-  if (best == kInf) {
-    out.status = WireStatus::Unreachable;
-    return out;
-  }
 
-  // the walk: the start's query vertex (if any), built vertices back from the finish, the end's
-  // query vertex (if any); as (point, horizontal?) pairs
-  std::vector<std::pair<Point, bool>> walk;
-  auto add_gv = [&](std::int32_t gv) {
-    const Node& nd = gv < built ? nodes[static_cast<std::size_t>(gv / 2)] : qnodes[static_cast<std::size_t>(gv / 2 - base)];
-    walk.emplace_back(nd.p, gv % 2 == 0);
-  };
-  if (!best_finish) {
-    add_gv(direct->from);
-    add_gv(direct->to);
-  } else {
-    const Entry& fin = finishes[*best_finish];
-    std::vector<std::size_t> back;
-    for (std::size_t v = static_cast<std::size_t>(fin.gv);; v = pred[v]) {
-      back.push_back(v);
-      if (pred[v] == v) break;
-      if (back.size() > nv) throw std::logic_error("BendRouter: predecessor cycle");
+  // each sink's walk: the source's query vertex (if any), the built vertices from the root of
+  // the predecessor tree to the finish, the sink's query vertex (if any)
+  out.walks.resize(sinks.size());
+  out.chains.resize(sinks.size());
+  out.leads.assign(sinks.size(), 0);
+  for (std::size_t k = 0; k < sinks.size(); ++k) {
+    const Offer& o = offers[k];
+    if (o.cost == kInf) {
+      out.status = WireStatus::Unreachable;
+      out.failed = k;
+      return out;
     }
-    std::reverse(back.begin(), back.end());
-    const std::int32_t from = entered_from[back.front()];
-    if (from >= 0) add_gv(from);
-    for (const std::size_t v : back) add_gv(static_cast<std::int32_t>(v));
-    if (fin.query >= 0) add_gv(fin.query);
+    auto& walk = out.walks[k];
+    auto add_gv = [&](std::int32_t gv) { walk.emplace_back(node_of(gv).p, gv % 2 == 0); };
+    if (q[k + 1] == s) {
+      walk.emplace_back(s, true);
+    } else if (!o.finish) {
+      add_gv(o.direct_from);
+      add_gv(o.direct_to);
+    } else {
+      const Entry& fin = finishes[k][*o.finish];
+      std::vector<std::size_t> back;
+      for (std::size_t v = static_cast<std::size_t>(fin.gv);; v = pred[v]) {
+        back.push_back(v);
+        if (pred[v] == v) break;
+        if (back.size() > nv) throw std::logic_error("BendRouter: predecessor cycle");
+      }
+      std::reverse(back.begin(), back.end());
+      const std::int32_t from = entered_from[back.front()];
+      if (from >= 0) add_gv(from);
+      out.leads[k] = from >= 0 ? 1 : 0;
+      for (const std::size_t v : back) add_gv(static_cast<std::int32_t>(v));
+      if (fin.query >= 0) add_gv(fin.query);
+      out.chains[k] = std::move(back);
+    }
+    // the wire must cost what Dijkstra says
+    const std::vector<Point> pts = walk_points(walk);
+    if (!(weight(l1_length(pts), geom::count_bends(pts)) == o.cost))
+      throw std::logic_error("BendRouter: a wire's cost differs from the graph's distance");
   }
-  std::vector<Point> pts;
-  pts.push_back(walk.front().first);
-  for (std::size_t i = 1; i < walk.size(); ++i) {
-    const auto [a, ah] = walk[i - 1];
-    const auto [b, bh] = walk[i];
-    if (a == b) continue;  // a turn
-    if (ah != bh) pts.push_back(ah ? Point{b.x, a.y} : Point{a.x, b.y});
-    pts.push_back(b);
-  }
-  // drop repeated and collinear points
-  std::vector<Point> clean;
-  for (const Point p : pts) {
-    if (!clean.empty() && clean.back() == p) continue;
-    if (clean.size() >= 2) {
-      const Point a = clean[clean.size() - 2], b = clean.back();
-      if (geom::orientation(a, b, p) == 0 && (i64{b.x} - a.x) * (i64{p.x} - b.x) + (i64{b.y} - a.y) * (i64{p.y} - b.y) > 0) {
-        clean.back() = p;
+  out.status = WireStatus::Ok;
+  return out;
+}
+
+BendPath BendRouter::Impl::path(Point s, Point t, BendMetric metric, i64 bend_cost) const {
+  BendPath out;
+  const Point sinks[1] = {t};
+  const Search r = search(s, sinks, metric, bend_cost);
+  out.status = r.status;
+  if (r.status != WireStatus::Ok) return out;
+  out.points = walk_points(r.walks[0]);
+  out.bends = geom::count_bends(out.points);
+  out.length = l1_length(out.points);
+  return out;
+}
+
+BendTree BendRouter::Impl::tree(Point source, std::span<const Point> sinks, BendMetric metric, i64 bend_cost) const {
+  BendTree out;
+  const Search r = search(source, sinks, metric, bend_cost);
+  out.status = r.status;
+  out.failed = r.failed;
+  if (r.status != WireStatus::Ok) return out;
+  // The chains of built vertices form the predecessor tree: each sink's wire starts at the last
+  // vertex of its chain that an earlier sink's chain passed (its walk from there on), else at
+  // the source; a first stretch that runs along an earlier wire from there is cut off.
+  std::unordered_set<std::size_t> seen;
+  std::vector<std::pair<Point, Point>> metal;  // segments written so far
+  for (std::size_t k = 0; k < sinks.size(); ++k) {
+    const auto& walk = r.walks[k];
+    out.paths.push_back(walk_points(walk));
+    const auto& chain = r.chains[k];
+    std::size_t start = 0;  // index into walk
+    for (std::size_t i = chain.size(); i-- > 0;)
+      if (seen.count(chain[i])) {
+        start = r.leads[k] + i;
+        break;
+      }
+    seen.insert(chain.begin(), chain.end());
+    std::vector<Point> w = walk_points({walk.begin() + static_cast<std::ptrdiff_t>(start), walk.end()});
+    while (w.size() >= 2) {
+      const Point p = w[0], n = w[1];
+      const i64 len = l1_length({p, n});
+      const int dx = (n.x > p.x) - (n.x < p.x), dy = (n.y > p.y) - (n.y < p.y);
+      i64 along = 0;  // how far an earlier segment runs from p towards n
+      for (const auto& [a, b] : metal)
+        for (const auto& [from, to] : {std::pair{a, b}, std::pair{b, a}}) {
+          const int ex = (to.x > from.x) - (to.x < from.x), ey = (to.y > from.y) - (to.y < from.y);
+          if (ex != dx || ey != dy) continue;
+          // p on the segment, the segment going on past p in the same direction
+          const bool on = dx != 0 ? from.y == p.y && std::min(from.x, to.x) <= p.x && p.x < std::max(from.x, to.x)
+                                  : from.x == p.x && std::min(from.y, to.y) <= p.y && p.y < std::max(from.y, to.y);
+          if (on) along = std::max(along, l1_length({p, to}));
+        }
+      if (along == 0) break;
+      if (along >= len) {
+        w.erase(w.begin());
         continue;
       }
+      w[0] = Point{static_cast<Coord>(p.x + dx * along), static_cast<Coord>(p.y + dy * along)};
+      break;
     }
-    clean.push_back(p);
+    if (w.size() == 1 && k > 0) continue;  // the sink lies on earlier metal
+    for (std::size_t i = 1; i < w.size(); ++i) metal.emplace_back(w[i - 1], w[i]);
+    out.wires.push_back(std::move(w));
   }
-  out.points = std::move(clean);
-  out.bends = geom::count_bends(out.points);
-  out.length = 0;
-  for (std::size_t i = 1; i < out.points.size(); ++i)
-    out.length += std::abs(i64{out.points[i].x} - out.points[i - 1].x) + std::abs(i64{out.points[i].y} - out.points[i - 1].y);
-  const Cost got = weight(out.length, out.bends);
-  if (!(got == best))
-    throw std::logic_error("BendRouter: the path's cost differs from the graph's distance");
-  out.status = WireStatus::Ok;
   return out;
 }
 
@@ -609,6 +712,12 @@ BendPath BendRouter::path(Point from, Point to, BendMetric metric, std::int64_t 
   if (metric == BendMetric::Combined && (bend_cost < 0 || bend_cost > (i64{1} << 31)))
     throw std::invalid_argument("BendRouter: the bend cost must lie in [0, 2^31]");
   return impl_->path(from, to, metric, bend_cost);
+}
+
+BendTree BendRouter::tree(Point source, std::span<const Point> sinks, BendMetric metric, std::int64_t bend_cost) const {
+  if (metric == BendMetric::Combined && (bend_cost < 0 || bend_cost > (i64{1} << 31)))
+    throw std::invalid_argument("BendRouter: the bend cost must lie in [0, 2^31]");
+  return impl_->tree(source, sinks, metric, bend_cost);
 }
 
 const BendGraphStats& BendRouter::stats() const { return impl_->stats; }

@@ -73,6 +73,20 @@ struct BendPath {
   }
 };
 
+// A net of one source and several sinks (points): every sink is reached from the source along
+// the wires by an optimal path of the metric (the predecessor tree of one Dijkstra run, so paths
+// share their common start), written as wires that meet at branch points: the first from the
+// source, each other from where its path leaves the wires already written. A stretch is written
+// once where a wire leaves along an earlier one from its branch point; wires of two sinks can
+// still touch or overlap elsewhere (the sum of their lengths then counts that stretch twice).
+struct BendTree {
+  WireStatus status = WireStatus::Unreachable;  // Ok, SourceNotFree, TargetNotFree or Unreachable
+  std::size_t failed = 0;                       // the sink that is not free or not reached
+  std::vector<std::vector<geom::Point>> wires;  // Ok: integer, rectilinear
+  std::vector<std::vector<geom::Point>> paths;  // Ok: per sink, its optimal path from the source
+                                                // (on the wires; as BendRouter::path would give)
+};
+
 struct BendGraphStats {
   std::size_t vertices = 0;  // obstacle vertices (a pinch vertex counted once)
   std::size_t nodes = 0;     // point-wedge nodes (each an h- and a v-node in the graph)
@@ -93,6 +107,11 @@ class BendRouter {
   // An optimal rectilinear path from `from` to `to` under the metric (bend_cost >= 0 and at most
   // 2^31 for Combined; ignored for Link). Thread-safe (const).
   BendPath path(geom::Point from, geom::Point to, BendMetric metric, std::int64_t bend_cost) const;
+
+  // The tree of one source and several sinks (BendTree above); sinks may repeat or coincide with
+  // the source.
+  BendTree tree(geom::Point source, std::span<const geom::Point> sinks, BendMetric metric,
+                std::int64_t bend_cost) const;
 
   const BendGraphStats& stats() const;
 

@@ -163,25 +163,25 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router
   return finish({io::Wire{w.points}});
 }
 
-// --metric combined / link (router::BendRouter): nets of two point pins.
+// --metric combined / link (router::BendRouter): nets of point pins. Two pins: the best wire;
+// more: the tree of best paths from the first pin (router::BendTree).
 NetResult route_net_bends(const io::Layout& layout, const io::Net& net, const BendObstacles& obs,
                           const router::BendRouter& router, router::BendMetric metric, std::int64_t bend_cost) {
-  NetResult r;
-  r.route.net = net.name;
   auto fail = [&](const char* code, std::string reason) { return failed(net, code, std::move(reason)); };
   if (auto few = too_few_pins(net)) return *few;
-  if (net.pins.size() > 2 || !net.pins[0].point || !net.pins[1].point)
-    return fail("ROUTE-0009", std::string("with --metric ") + (metric == router::BendMetric::Link ? "link" : "combined") +
-                                  " only nets of two point pins are routed in this version (this net has " +
-                                  std::to_string(net.pins.size()) + " pins" +
-                                  (net.pins.size() == 2 ? ", a shape among them" : "") + ")");
+  for (const io::Pin& pin : net.pins)
+    if (!pin.point)
+      return fail("ROUTE-0009", std::string("pin \"") + pin.name + "\" is a shape: with --metric " +
+                                    (metric == router::BendMetric::Link ? "link" : "combined") +
+                                    " only point pins are routed in this version");
+  std::vector<geom::Point> sinks;
+  for (std::size_t i = 1; i < net.pins.size(); ++i) sinks.push_back(*net.pins[i].point);
   const io::Pin& a = net.pins[0];
-  const io::Pin& b = net.pins[1];
-  const router::BendPath p = router.path(*a.point, *b.point, metric, bend_cost);
-  switch (p.status) {
+  const router::BendTree t = router.tree(*a.point, sinks, metric, bend_cost);
+  const io::Pin& b = net.pins[t.status == router::WireStatus::SourceNotFree ? 0 : t.failed + 1];
+  switch (t.status) {
     case router::WireStatus::Ok: break;
     case router::WireStatus::SourceNotFree:
-      return fail("ROUTE-0001", "pin \"" + a.name + "\" at " + point_text(*a.point) + " " + obs.why_not_free(layout, *a.point));
     case router::WireStatus::TargetNotFree:
       return fail("ROUTE-0001", "pin \"" + b.name + "\" at " + point_text(*b.point) + " " + obs.why_not_free(layout, *b.point));
     default:
@@ -189,12 +189,19 @@ NetResult route_net_bends(const io::Layout& layout, const io::Net& net, const Be
                                     "\" are in different parts of free space: blockages (or the rectilinear "
                                     "covers of sloped ones) wall one of them in");
   }
-  std::vector<geom::Point> pts = p.points;
-  if (pts.size() == 1) pts.push_back(pts[0]);  // pins at one point
+  NetResult r;
+  r.route.net = net.name;
+  std::vector<std::vector<geom::Point>> lines;
+  long bends = 0;
+  for (std::vector<geom::Point> w : t.wires) {
+    if (w.size() == 1) w.push_back(w[0]);  // pins at one point
+    bends += geom::count_bends(w);
+    r.route.wires.push_back(io::Wire{w});
+    lines.push_back(std::move(w));
+  }
   r.route.status = "routed";
-  r.route.length = io::format_total_length({pts});
-  r.route.bends = p.bends;
-  r.route.wires = {io::Wire{pts}};
+  r.route.length = io::format_total_length(lines);
+  r.route.bends = bends;
   return r;
 }
 

@@ -465,6 +465,125 @@ TEST(BendRouter, MatchesReferenceOnRandomLayouts) {
 }
 
 // ---------------------------------------------------------------------------------------------
+// Trees: one source, several sinks (BendRouter::tree).
+
+// Whether the axis-parallel segment ab lies on the union of the wires' segments.
+bool on_metal(Point a, Point b, const std::vector<std::vector<Point>>& wires) {
+  if (a == b) {
+    for (const auto& w : wires)
+      for (std::size_t i = 0; i + 1 < w.size(); ++i)
+        if (geom::on_segment(a, w[i], w[i + 1])) return true;
+    return std::any_of(wires.begin(), wires.end(), [&](const auto& w) { return w.size() == 1 && w[0] == a; });
+  }
+  const bool horiz = a.y == b.y;
+  const i64 lo = horiz ? std::min(a.x, b.x) : std::min(a.y, b.y), hi = horiz ? std::max(a.x, b.x) : std::max(a.y, b.y);
+  std::vector<std::pair<i64, i64>> spans;  // the wires' stretches on ab's line
+  for (const auto& w : wires)
+    for (std::size_t i = 0; i + 1 < w.size(); ++i) {
+      const Point p = w[i], q = w[i + 1];
+      if (horiz && p.y == a.y && q.y == a.y) spans.emplace_back(std::min(p.x, q.x), std::max(p.x, q.x));
+      if (!horiz && p.x == a.x && q.x == a.x) spans.emplace_back(std::min(p.y, q.y), std::max(p.y, q.y));
+    }
+  std::sort(spans.begin(), spans.end());
+  i64 reach = lo;
+  for (const auto& [x0, x1] : spans) {
+    if (x0 > reach) break;
+    reach = std::max(reach, x1);
+  }
+  return reach >= hi;
+}
+
+// "" when the tree of `source` to `sinks` agrees with the reference, else what differs.
+std::string check_tree(const BendReference& ref, const BendRouter& router, Point source, const std::vector<Point>& sinks,
+                       bool link, i64 C, i64& trees_ok) {
+  std::ostringstream head;
+  head << "tree from " << str(source) << " to";
+  for (const Point p : sinks) head << " " << str(p);
+  head << " " << metric_name(link) << (link ? "" : " C = " + std::to_string(C)) << ": ";
+  router::BendTree t;
+  try {
+    t = router.tree(source, sinks, link ? BendMetric::Link : BendMetric::Combined, C);
+  } catch (const std::exception& e) {
+    return head.str() + "router threw: " + e.what();
+  }
+  // the expected status: the source, then the first sink not free, then the first unreachable
+  WireStatus expected = WireStatus::Ok;
+  std::size_t failed = 0;
+  std::vector<std::optional<BendAnswer>> want;
+  if (!ref.l1().is_free(source)) expected = WireStatus::SourceNotFree;
+  for (std::size_t k = 0; k < sinks.size() && expected == WireStatus::Ok; ++k)
+    if (!ref.l1().is_free(sinks[k])) expected = WireStatus::TargetNotFree, failed = k;
+  for (std::size_t k = 0; k < sinks.size(); ++k) want.push_back(ref.best(source, sinks[k], link, C));
+  for (std::size_t k = 0; k < sinks.size() && expected == WireStatus::Ok; ++k)
+    if (!want[k]) expected = WireStatus::Unreachable, failed = k;
+  if (t.status != expected) return head.str() + "status " + str(t.status) + ", expected " + str(expected);
+  if (expected != WireStatus::Ok) {
+    if (expected != WireStatus::SourceNotFree && t.failed != failed)
+      return head.str() + "failed sink " + std::to_string(t.failed) + ", expected " + std::to_string(failed);
+    return "";
+  }
+  if (t.paths.size() != sinks.size() || t.wires.empty()) return head.str() + "wrong number of paths or no wire";
+  for (std::size_t i = 0; i < t.wires.size(); ++i) {
+    const auto& w = t.wires[i];
+    if (!ref.check_path(w)) return head.str() + "wire " + std::to_string(i) + " is not legal";
+    // the first wire starts at the source, every other on the wires before it
+    const std::vector<std::vector<Point>> before(t.wires.begin(), t.wires.begin() + static_cast<std::ptrdiff_t>(i));
+    if (i == 0 ? w.front() != source : !on_metal(w.front(), w.front(), before))
+      return head.str() + "wire " + std::to_string(i) + " starts at " + str(w.front()) + ", off the tree";
+  }
+  for (std::size_t k = 0; k < sinks.size(); ++k) {
+    const auto& p = t.paths[k];
+    if (p.empty() || p.front() != source || p.back() != sinks[k]) return head.str() + "path " + std::to_string(k) + " has wrong ends";
+    const auto m = ref.check_path(p);
+    if (!m) return head.str() + "path " + std::to_string(k) + " is not legal";
+    if (*m != *want[k]) return head.str() + "path " + std::to_string(k) + " measures " + str(m) + ", the optimum is " + str(want[k]);
+    for (std::size_t i = 0; i + 1 < p.size(); ++i)
+      if (!on_metal(p[i], p[i + 1], t.wires)) return head.str() + "path " + std::to_string(k) + " leaves the wires at " + str(p[i]);
+    if (p.size() == 1 && !on_metal(p[0], p[0], t.wires)) return head.str() + "sink " + std::to_string(k) + " is not on the wires";
+  }
+  ++trees_ok;
+  return "";
+}
+
+TEST(BendRouter, TreesMatchTheReference) {
+  const i64 count = sanitized_share(600, 12);
+  i64 trees = 0, trees_ok = 0, shared = 0;
+  int failed = 0;
+  for (i64 i = 0; i < count; ++i) {
+    const std::uint64_t seed = kBaseSeed + 50000 + static_cast<std::uint64_t>(i);
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const Instance in = make_instance(seed);
+    const BendRouter router(in.domain, in.obstacles);
+    const BendReference ref(in.domain, in.obstacles);
+    if (in.pairs.size() < 2) continue;
+    std::mt19937_64 rng(seed);
+    for (int round = 0; round < 3; ++round) {
+      const Point source = in.pairs[rng() % in.pairs.size()].first;
+      std::vector<Point> sinks;
+      const std::size_t n = 2 + rng() % 4;
+      for (std::size_t k = 0; k < n; ++k) {
+        const auto& pr = in.pairs[rng() % in.pairs.size()];
+        sinks.push_back(rng() % 2 ? pr.first : pr.second);
+      }
+      const bool link = rng() % 3 == 0;
+      const i64 C = link ? 0 : std::vector<i64>{0, 1, 7, 1000}[rng() % 4];
+      ++trees;
+      const i64 before = trees_ok;
+      const std::string r = check_tree(ref, router, source, sinks, link, C, trees_ok);
+      if (!r.empty() && failed++ < 5) ADD_FAILURE() << "seed " << seed << ": " << describe(in.domain, in.obstacles) << "\n  " << r;
+      if (trees_ok > before) {
+        const auto t = router.tree(source, sinks, link ? BendMetric::Link : BendMetric::Combined, C);
+        shared += t.wires.size() < sinks.size();
+      }
+    }
+  }
+  std::printf("%lld trees, %lld of them joined every sink, %lld with fewer wires than sinks\n", static_cast<long long>(trees),
+              static_cast<long long>(trees_ok), static_cast<long long>(shared));
+  EXPECT_EQ(failed, 0);
+  EXPECT_GE(trees_ok, sanitized_share(300, 12));
+}
+
+// ---------------------------------------------------------------------------------------------
 // Crops of Moving AI maps: blocked cells (10 DBU each) that touch along edges and at corners
 // everywhere, clipped to a window of the map.
 
