@@ -5,9 +5,11 @@
 // to baselines measured in the same run: `sort` (std::sort of the n vertices, an n log n unit)
 // and `l1` (one exact L1 query of router::L1Router, Mitchell's wavefront, on the same pairs:
 // the query the combined metric generalises). The growth exponent between consecutive sizes is
-// log(t2 / t1) / log(n2 / n1).
+// log(t2 / t1) / log(n2 / n1). Up to --ref-max vertices (default 200) the brute-force
+// state-graph reference (tests/oracle/bend_oracle.h: Hanan grid x direction) answers the same
+// combined queries in the same run, and its answers are compared.
 //
-//   bench_bends [--sizes N,N,...] [--queries Q] [--kind rects|maze]
+//   bench_bends [--sizes N,N,...] [--queries Q] [--kind rects|maze] [--ref-max N]
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -15,6 +17,7 @@
 #include <vector>
 
 #include "bench/bench_util.h"
+#include "oracle/bend_oracle.h"
 #include "router/bend_router.h"
 #include "router/l1_router.h"
 
@@ -25,7 +28,8 @@ using taut::geom::Point;
 
 struct Row {
   std::int64_t n = 0;
-  double sort = 0, build = 0, combined = 0, link = 0, l1 = 0;
+  double sort = 0, build = 0, combined = 0, link = 0, l1 = 0, ref = -1;
+  int ref_agree = 0;
   taut::router::BendGraphStats stats;
   std::size_t edges = 0;
   int found = 0, l1_found = 0, queries = 0;
@@ -37,12 +41,14 @@ int main(int argc, char** argv) {
   std::vector<std::int64_t> sizes = {100, 1000, 10000, 100000};
   int queries = 20;
   std::string kind_name = "rects";
+  std::int64_t ref_max = 200;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--sizes") && i + 1 < argc) sizes = taut::bench::parse_list(argv[++i]);
     else if (!std::strcmp(argv[i], "--queries") && i + 1 < argc) queries = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--kind") && i + 1 < argc) kind_name = argv[++i];
+    else if (!std::strcmp(argv[i], "--ref-max") && i + 1 < argc) ref_max = std::atoll(argv[++i]);
     else {
-      std::fprintf(stderr, "usage: %s [--sizes N,N,...] [--queries Q] [--kind rects|maze]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--sizes N,N,...] [--queries Q] [--kind rects|maze] [--ref-max N]\n", argv[0]);
       return 2;
     }
   }
@@ -87,11 +93,27 @@ int main(int argc, char** argv) {
                row.l1_found = 0;
                for (const auto& [s, t] : pairs) row.l1_found += l1.shortest(s, t).status == taut::router::WireStatus::Ok;
              }, 1) / std::max<std::size_t>(1, pairs.size());
+    if (row.n <= ref_max) {
+      const taut::oracle::BendReference ref(b.norm.domain, b.norm.obstacles);
+      row.ref = seconds_of([&] {
+                  row.ref_agree = 0;
+                  for (const auto& [s, t] : pairs) {
+                    const auto want = ref.best(s, t, false, 1000);
+                    const auto got = router->path(s, t, taut::router::BendMetric::Combined, 1000);
+                    row.ref_agree += want ? got.status == taut::router::WireStatus::Ok && got.length == want->length &&
+                                                got.bends == want->bends
+                                          : got.status != taut::router::WireStatus::Ok;
+                  }
+                }, 1) / std::max<std::size_t>(1, pairs.size());
+    }
     const auto& st = row.stats;
     std::printf("%8lld %8zu %9zu %10zu %10zu | %9.3f %9.1f | %10.2f %10.2f %10.2f | %8.2f %8.2f %5d/%d (%d)\n",
                 static_cast<long long>(row.n), st.nodes, st.tracks, st.straight_edges, st.l_edges, row.build,
                 row.build / row.sort, row.combined * 1e3, row.link * 1e3, row.l1 * 1e3, row.combined / row.l1,
                 row.link / row.l1, row.found, row.queries, row.l1_found);
+    if (row.ref >= 0)
+      std::printf("%8s reference: %.2f ms per query (%.0f x combined), %d of %d answers equal\n", "", row.ref * 1e3,
+                  row.ref / row.combined, row.ref_agree, row.queries);
     std::fflush(stdout);
     rows.push_back(row);
   }
