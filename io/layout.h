@@ -93,7 +93,9 @@ struct Routes {
   std::string orientations;  // attribute as written (may be empty)
   std::vector<Route> routes;
   int line = 0;
-  std::optional<std::int64_t> bend_cost;  // metric="combined": the C the wires were routed with (last: aggregate init stays)
+  // metric="combined": the C the wires were routed with (the last field, so that aggregate
+  // initialisation written before it existed still compiles)
+  std::optional<std::int64_t> bend_cost;
   friend bool operator==(const Routes&, const Routes&) = default;
 };
 

@@ -245,12 +245,12 @@ struct BendRouter::Impl {
 
   // The L edge of a horizontal and a vertical track when they cross at a corner that is neither
   // end's origin nor a vertex (then the straight edges and a turn there make the same path).
-  bool l_edge(const Track& h, const Track& v, Point s, Point t, Edge& e) const {
+  bool l_edge(const Track& h, const Track& v, Edge& e) const {
     const Coord x = v.start.x, y = h.start.y;
     if (x < std::min(h.start.x, h.end.x) || x > std::max(h.start.x, h.end.x)) return false;
     if (y < std::min(v.start.y, v.end.y) || y > std::max(v.start.y, v.end.y)) return false;
     const Point c{x, y};
-    if (c == h.start || c == v.start || c == s || c == t || is_vertex(c)) return false;
+    if (c == h.start || c == v.start || is_vertex(c)) return false;
     e = {2 * h.from, 2 * v.from + 1,
          std::abs(i64{x} - h.start.x) + std::abs(i64{y} - v.start.y), 1};
     return true;
@@ -323,7 +323,6 @@ struct BendRouter::Impl {
     });
     std::multimap<Coord, std::int32_t> alive;
     std::vector<std::multimap<Coord, std::int32_t>::iterator> where(tracks.size());
-    const Point none{geom::kMaxCoord, geom::kMaxCoord};  // no query point in the static graph
     const std::size_t before = edges.size();
     for (const Event& e : ev) {
       const Track& t = tracks[static_cast<std::size_t>(e.track)];
@@ -335,7 +334,7 @@ struct BendRouter::Impl {
         const Coord lo = std::min(t.start.y, t.end.y), hi = std::max(t.start.y, t.end.y);
         for (auto it = alive.lower_bound(lo); it != alive.end() && it->first <= hi; ++it) {
           Edge edge{};
-          if (l_edge(tracks[static_cast<std::size_t>(it->second)], t, none, none, edge)) edges.push_back(edge);
+          if (l_edge(tracks[static_cast<std::size_t>(it->second)], t, edge)) edges.push_back(edge);
         }
       }
     }
@@ -458,7 +457,6 @@ BendRouter::Impl::Search BendRouter::Impl::search(Point s, std::span<const Point
     for (int k = 0; k < 4; ++k)
       if (in_wedge(qnodes[j].wedge, k)) qtracks.push_back(shoot(base + static_cast<std::int32_t>(j), qnodes[j].p, k));
   std::vector<Edge> qedges;
-  const Point none{geom::kMaxCoord, geom::kMaxCoord};
   for (std::size_t i = 0; i < qtracks.size(); ++i) {
     const Track& a = qtracks[i];
     straight_edges(a, qedges);
@@ -466,7 +464,7 @@ BendRouter::Impl::Search BendRouter::Impl::search(Point s, std::span<const Point
     for (const Track& b : tracks) {
       if (horizontal(a.dir) == horizontal(b.dir) || b.end == b.start) continue;
       Edge e{};
-      if (horizontal(a.dir) ? l_edge(a, b, none, none, e) : l_edge(b, a, none, none, e)) qedges.push_back(e);
+      if (horizontal(a.dir) ? l_edge(a, b, e) : l_edge(b, a, e)) qedges.push_back(e);
     }
     for (std::size_t j = 0; j < qtracks.size(); ++j) {
       const Track& b = qtracks[j];
@@ -480,7 +478,7 @@ BendRouter::Impl::Search BendRouter::Impl::search(Point s, std::span<const Point
         if (on) qedges.push_back({2 * a.from + vv, 2 * b.from + vv, l1_length({a.start, p}), 0});
       } else if (horizontal(a.dir) && !horizontal(b.dir) && b.end != b.start) {
         Edge e{};
-        if (l_edge(a, b, none, none, e)) qedges.push_back(e);
+        if (l_edge(a, b, e)) qedges.push_back(e);
       }
     }
   }

@@ -70,14 +70,14 @@ void add_routing_options(CLI::App* sub, RoutingOptions& options) {
   sub->add_option("--metric", options.metric,
                   "l1 (default: shortest), combined (length + C x bends, C from --bend-cost or <rules> "
                   "bend-cost) or link (fewest bends, then shortest); combined and link: rectilinear "
-                  "wires, `path` only in this version");
+                  "wires (route: nets of point pins)");
   sub->add_option("--orientations", options.orientations,
                   "rectilinear or octilinear (spm also: any, epsilon-approximate Euclidean distances); "
                   "default: orientations of <rules>, else rectilinear; c: sets only as another name of those "
                   "two (c:0,90 or c:0,45,90,135)");
   sub->add_option("--bend-cost", options.bend_cost,
-                  "C >= 0 of --metric combined (an integer in DBU per bend, at most 2^31; default: <rules> "
-                  "bend-cost, else 0)");
+                  "C >= 0 of --metric combined (an integer in DBU per bend, at most 2^30 - 1; default: "
+                  "<rules> bend-cost, else 0)");
 }
 
 std::int64_t routing_bend_cost(const RoutingOptions& options, const io::Layout& layout) {
@@ -92,9 +92,7 @@ bool check_routing_options(const RoutingOptions& options, const io::Layout& layo
     return false;
   }
   if (bends && !options.allow_bends) {
-    print_usage_error("CLI-0020", "--metric " + options.metric +
-                                      ": route does not weigh bends yet (taut path does); route with "
-                                      "--metric l1");
+    print_usage_error("CLI-0020", "--metric " + options.metric + ": this command takes --metric l1 only");
     return false;
   }
   if (options.bend_cost && options.metric != "combined") {
@@ -104,14 +102,7 @@ bool check_routing_options(const RoutingOptions& options, const io::Layout& layo
   }
   if (options.bend_cost && (*options.bend_cost < 0 || *options.bend_cost > kMaxBendCost)) {
     print_usage_error("CLI-0020", "--bend-cost " + std::to_string(*options.bend_cost) +
-                                      ": expected an integer from 0 to 2^31");
-    return false;
-  }
-  if (bends && !options.bend_cost && layout.rules && layout.rules->bend_cost > kMaxBendCost &&
-      options.metric == "combined") {
-    print_diagnostics({Diagnostic{Severity::Error, "CLI-0020", layout.file, layout.rules->line, 0,
-                                  "<rules> bend-cost=" + std::to_string(layout.rules->bend_cost) +
-                                      ": the combined metric takes at most 2^31 (pass --bend-cost)"}});
+                                      ": expected an integer from 0 to 2^30 - 1");
     return false;
   }
   auto available = [&](const std::string& text) {
@@ -133,9 +124,14 @@ bool check_routing_options(const RoutingOptions& options, const io::Layout& layo
     return false;
   }
   if (bends && routing_orientations(options, layout) != "rectilinear") {
-    print_usage_error("CLI-0021", "--metric " + options.metric +
-                                      " routes rectilinear wires only (bends of octilinear wires are not "
-                                      "weighed yet); pass --orientations rectilinear");
+    const std::string why = "--metric " + options.metric +
+                            " routes rectilinear wires only (bends of octilinear wires are not weighed yet)";
+    if (options.orientations.empty() && layout.rules)  // the orientations come from the file
+      print_diagnostics({Diagnostic{Severity::Error, "CLI-0021", layout.file, layout.rules->line, 0,
+                                    why + ": <rules> orientations=\"" + layout.rules->orientations +
+                                        "\"; pass --orientations rectilinear to route anyway"}});
+    else
+      print_usage_error("CLI-0021", why + "; pass --orientations rectilinear");
     return false;
   }
   if (!bends && layout.rules && layout.rules->bend_cost > 0)

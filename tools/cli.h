@@ -53,14 +53,14 @@ struct RoutingOptions {
   // `spm` only: orientations "any" is accepted (distances are then epsilon-approximate
   // Euclidean ones, from a fixed-orientation norm).
   bool allow_any = false;
-  // `path` only (this version): --metric combined and link (rectilinear wires).
+  // `path` and `route`: --metric combined and link (rectilinear wires).
   bool allow_bends = false;
 };
 // The combined metric's C: --bend-cost, else <rules> bend-cost, else 0.
 std::int64_t routing_bend_cost(const RoutingOptions& options, const io::Layout& layout);
-// The largest bend cost accepted (the router adds C times the bends in 128 bits; the limit keeps
-// the cost printable and far from overflow).
-inline constexpr std::int64_t kMaxBendCost = std::int64_t{1} << 31;
+// The largest bend cost accepted: what a layout file can hold (FORMAT.md's number limit, 2^30 - 1),
+// so a routed file's <routes bend-cost> reads back.
+inline constexpr std::int64_t kMaxBendCost = geom::kMaxCoord;
 // Checks the options against what is implemented and the layout's <rules>; prints and returns
 // false when routing must not start (exit status 2). A bend cost in <rules> is reported as a
 // warning (it only matters to the combined metric).

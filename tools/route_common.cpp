@@ -37,6 +37,9 @@ BendObstacles bend_obstacles(const io::Layout& layout, std::span<const geom::Poi
 }
 
 std::string BendObstacles::why_not_free(const io::Layout& layout, geom::Point q) const {
+  // a blockage or the boundary first (as for l1); the cover only when neither explains it
+  const std::string plain = cli::why_not_free(layout, q);
+  if (plain.rfind("is not in free space", 0) != 0) return plain;
   for (const std::size_t i : covered) {
     if (geom::locate(q, polygons[i]) == geom::Location::Inside) break;  // the blockage itself
     const geom::Polygon only[1] = {polygons[i]};
@@ -47,7 +50,7 @@ std::string BendObstacles::why_not_free(const io::Layout& layout, geom::Point q)
                std::to_string(blk.line) + "; ROUTE-0008)";
       }
   }
-  return cli::why_not_free(layout, q);
+  return plain;
 }
 
 std::string point_text(geom::Point p) { return std::to_string(p.x) + "," + std::to_string(p.y); }

@@ -158,6 +158,20 @@ TEST(BendPath, TextOutputRulesBendCostAndTheSlopedBlockageWarning) {
   EXPECT_NE(in_cover.err.find("cover of sloped blockage \"tri\""), std::string::npos) << in_cover.err;
   const auto jc = nlohmann::json::parse(in_cover.out);
   EXPECT_TRUE(jc["cost"].is_null());
+  // octilinear orientations from the rules: refused with the rules' file:line
+  const std::string oct = dir + "/oct.xml";
+  test::write_text(oct,
+                   "<layout name=\"o\" version=\"1\">\n"
+                   "  <rules orientations=\"octilinear\"/>\n"
+                   "</layout>\n");
+  const auto ro = run_taut({"path", oct, "--from", "0,0", "--to", "5,5", "--metric", "link"});
+  EXPECT_EQ(ro.status, 2);
+  EXPECT_NE(ro.err.find(oct + ":2: error: [CLI-0021]"), std::string::npos) << ro.err;
+  EXPECT_EQ(run_taut({"path", oct, "--from", "0,0", "--to", "5,5", "--metric", "link", "--orientations", "rectilinear"}).status, 0);
+  // the largest bend cost is written and read back
+  const auto big = run_taut({"route", file, "-q", "--metric", "combined", "--bend-cost", "1073741823", "-o", dir + "/big.xml"});
+  EXPECT_EQ(big.status, 0) << big.err;
+  EXPECT_EQ(run_taut({"check", dir + "/big.xml"}).status, 0);
   // walled in: exit 1, cost null
   const std::string walled = dir + "/walled.xml";
   test::write_text(walled,

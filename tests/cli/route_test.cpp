@@ -170,7 +170,7 @@ TEST(Path, RequestsThisVersionCannotServeExit2AndPrintNothing) {
       {{"path", kDemo, "--from", "1,1", "--to", "5,5", "--bend-cost", "3"}, "CLI-0020"},
       {{"path", kDemo, "--from", "1,1", "--to", "5,5", "--metric", "link", "--bend-cost", "3"}, "CLI-0020"},
       {{"path", kDemo, "--from", "1,1", "--to", "5,5", "--metric", "combined", "--bend-cost", "-1"}, "CLI-0020"},
-      {{"path", kDemo, "--from", "1,1", "--to", "5,5", "--metric", "combined", "--bend-cost", "2147483649"}, "CLI-0020"},
+      {{"path", kDemo, "--from", "1,1", "--to", "5,5", "--metric", "combined", "--bend-cost", "1073741824"}, "CLI-0020"},
       {{"path", kDemo, "--from", "1,1", "--to", "5,5", "--metric", "combined", "--orientations", "octilinear"}, "CLI-0021"},
       {{"path", kDemo, "--from", "1,1", "--to", "5,5", "--orientations", "any"}, "CLI-0021"},
       {{"path", kDemo, "--from", "1,1", "--to", "5,5", "--orientations", "c:0,45,90"}, "CLI-0021"},

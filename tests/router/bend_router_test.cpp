@@ -464,6 +464,34 @@ TEST(BendRouter, MatchesReferenceOnRandomLayouts) {
   EXPECT_GE(tally.metric_matters, sanitized_share(100, 12));
 }
 
+// At the coordinate limit: the best wire turns at the domain's corner (2^30 - 1, 2^30 - 1), which
+// a sentinel point once hid from the L edges (found in review: 2 bends instead of 1).
+TEST(BendRouter, CornersAtTheCoordinateLimit) {
+  constexpr geom::Coord A = geom::kMaxCoord, B = 715827882, C3 = 357913941;
+  for (int mirror = 0; mirror < 4; ++mirror) {
+    SCOPED_TRACE("mirror " + std::to_string(mirror));
+    const int sx = mirror & 1 ? -1 : 1, sy = mirror & 2 ? -1 : 1;
+    auto m = [&](Point p) { return Point{sx * p.x, sy * p.y}; };
+    auto rect = [&](Point a, Point b) {
+      const Point p = m(a), q = m(b);
+      return Polygon{rect_ring({{std::min(p.x, q.x), std::min(p.y, q.y)}, {std::max(p.x, q.x), std::max(p.y, q.y)}}), {}};
+    };
+    const std::vector<Polygon> in = {rect({-B, -A}, {B, -B}), rect({-C3, 0}, {C3, B})};
+    const auto norm = geom::normalize_obstacles(in, Box{{-A, -A}, {A, A}});
+    const BendRouter router(norm.domain, norm.obstacles);
+    const BendReference ref(norm.domain, norm.obstacles);
+    Tally tally;
+    for (const bool link : {false, true})
+      for (const i64 C : {i64{0}, i64{1}, i64{1} << 31}) {
+        if (link && C) continue;
+        std::optional<BendAnswer> want;
+        EXPECT_EQ(check_query(ref, router, m({-A, A}), m({A, -A}), link, C, tally, &want), "");
+        ASSERT_TRUE(want.has_value());
+        EXPECT_EQ(want->bends, 1);
+      }
+  }
+}
+
 // ---------------------------------------------------------------------------------------------
 // Trees: one source, several sinks (BendRouter::tree).
 
