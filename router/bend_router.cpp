@@ -43,6 +43,9 @@ int axis_dir(Point a, Point b) {
   return b.y > a.y ? 1 : 3;
 }
 
+// The L1 distance of two points (int64: coordinates are below 2^30).
+i64 dist1(Point a, Point b) { return std::abs(i64{b.x} - a.x) + std::abs(i64{b.y} - a.y); }
+
 std::uint64_t key(Point p) {
   return (std::uint64_t{static_cast<std::uint32_t>(p.x)} << 32) | static_cast<std::uint32_t>(p.y);
 }
@@ -127,6 +130,11 @@ struct Cost {
   friend bool operator==(const Cost&, const Cost&) = default;
 };
 const Cost kInf{std::numeric_limits<i128>::max(), std::numeric_limits<i64>::max()};
+// Costs add componentwise; the infinite cost absorbs.
+Cost add_costs(const Cost& a, const Cost& b) {
+  if (a == kInf || b == kInf) return kInf;
+  return Cost{a.first + b.first, a.second + b.second};
+}
 
 // The built graph: graph vertex 2i is node i's h-node, 2i + 1 its v-node; both directions of
 // every edge, each with its length and bends (the cost is made per query from the metric).
@@ -239,8 +247,7 @@ struct BendRouter::Impl {
   void straight_edges(const Track& t, std::vector<Edge>& out) const {
     if (t.to < 0 || t.end == t.start) return;
     const int vv = horizontal(t.dir) ? 0 : 1;
-    const i64 len = std::abs(i64{t.end.x} - t.start.x) + std::abs(i64{t.end.y} - t.start.y);
-    out.push_back({2 * t.from + vv, 2 * t.to + vv, len, 0});
+    out.push_back({2 * t.from + vv, 2 * t.to + vv, dist1(t.start, t.end), 0});
   }
 
   // The L edge of a horizontal and a vertical track when they cross at a corner that is neither
@@ -252,7 +259,7 @@ struct BendRouter::Impl {
     const Point c{x, y};
     if (c == h.start || c == v.start || is_vertex(c)) return false;
     e = {2 * h.from, 2 * v.from + 1,
-         std::abs(i64{x} - h.start.x) + std::abs(i64{y} - v.start.y), 1};
+         dist1(h.start, c) + dist1(c, v.start), 1};
     return true;
   }
 
@@ -400,8 +407,7 @@ std::vector<Point> walk_points(const std::vector<std::pair<Point, bool>>& walk) 
 
 i64 l1_length(const std::vector<Point>& pts) {
   i64 len = 0;
-  for (std::size_t i = 1; i < pts.size(); ++i)
-    len += std::abs(i64{pts[i].x} - pts[i - 1].x) + std::abs(i64{pts[i].y} - pts[i - 1].y);
+  for (std::size_t i = 1; i < pts.size(); ++i) len += dist1(pts[i - 1], pts[i]);
   return len;
 }
 
@@ -475,7 +481,7 @@ BendRouter::Impl::Search BendRouter::Impl::search(Point s, std::span<const Point
         const bool on = a.from < b.from && std::min(a.start.x, a.end.x) <= p.x && p.x <= std::max(a.start.x, a.end.x) &&
                         std::min(a.start.y, a.end.y) <= p.y && p.y <= std::max(a.start.y, a.end.y);
         const int vv = horizontal(a.dir) ? 0 : 1;
-        if (on) qedges.push_back({2 * a.from + vv, 2 * b.from + vv, l1_length({a.start, p}), 0});
+        if (on) qedges.push_back({2 * a.from + vv, 2 * b.from + vv, dist1(a.start, p), 0});
       } else if (horizontal(a.dir) && !horizontal(b.dir) && b.end != b.start) {
         Edge e{};
         if (l_edge(a, b, e)) qedges.push_back(e);
@@ -543,17 +549,12 @@ BendRouter::Impl::Search BendRouter::Impl::search(Point s, std::span<const Point
   for (std::size_t k = 0; k < sinks.size(); ++k)
     for (std::size_t i = 0; i < finishes[k].size(); ++i)
       finish_at[static_cast<std::size_t>(finishes[k][i].gv)].emplace_back(k, i);
-  const auto combine = [](const Cost& a, const Cost& b) {
-    if (a == kInf || b == kInf) return kInf;
-    return Cost{a.first + b.first, a.second + b.second};
-  };
   struct Stop {};
   struct Visitor : boost::default_dijkstra_visitor {
     const std::vector<Cost>* dist;
     const std::vector<std::vector<Entry>>* finishes;
     const std::unordered_map<std::size_t, std::vector<std::pair<std::size_t, std::size_t>>>* finish_at;
     std::vector<Offer>* offers;
-    std::function<Cost(const Cost&, const Cost&)> add;
     void examine_vertex(std::size_t u, const Graph&) const {
       const Cost& d = (*dist)[u];
       // every sink's best offer is at most what is left: done
@@ -563,7 +564,7 @@ BendRouter::Impl::Search BendRouter::Impl::search(Point s, std::span<const Point
       const auto it = finish_at->find(u);
       if (it == finish_at->end()) return;
       for (const auto& [k, i] : it->second) {
-        const Cost c = add(d, (*finishes)[k][i].w);
+        const Cost c = add_costs(d, (*finishes)[k][i].w);
         if (c < (*offers)[k].cost) (*offers)[k] = Offer{c, i, -1, -1};
       }
     }
@@ -573,7 +574,6 @@ BendRouter::Impl::Search BendRouter::Impl::search(Point s, std::span<const Point
   vis.finishes = &finishes;
   vis.finish_at = &finish_at;
   vis.offers = &offers;
-  vis.add = combine;
   const auto index = boost::get(boost::vertex_index, graph);
   const auto wmap = boost::make_function_property_map<Graph::edge_descriptor, Cost>(
       [&](const Graph::edge_descriptor& e) {
@@ -585,7 +585,7 @@ BendRouter::Impl::Search BendRouter::Impl::search(Point s, std::span<const Point
     if (!sources.empty())
       boost::dijkstra_shortest_paths_no_init(
           graph, sources.begin(), sources.end(), boost::make_iterator_property_map(pred.begin(), index),
-          boost::make_iterator_property_map(dist.begin(), index), wmap, index, std::less<Cost>(), combine, Cost{}, vis,
+          boost::make_iterator_property_map(dist.begin(), index), wmap, index, std::less<Cost>(), add_costs, Cost{}, vis,
           boost::make_iterator_property_map(color.begin(), index));
   } catch (const Stop&) {
   }
@@ -671,7 +671,7 @@ BendTree BendRouter::Impl::tree(Point source, std::span<const Point> sinks, Bend
     std::vector<Point> w = walk_points({walk.begin() + static_cast<std::ptrdiff_t>(start), walk.end()});
     while (w.size() >= 2) {
       const Point p = w[0], n = w[1];
-      const i64 len = l1_length({p, n});
+      const i64 len = dist1(p, n);
       const int dx = (n.x > p.x) - (n.x < p.x), dy = (n.y > p.y) - (n.y < p.y);
       i64 along = 0;  // how far an earlier segment runs from p towards n
       for (const auto& [a, b] : metal)
@@ -681,7 +681,7 @@ BendTree BendRouter::Impl::tree(Point source, std::span<const Point> sinks, Bend
           // p on the segment, the segment going on past p in the same direction
           const bool on = dx != 0 ? from.y == p.y && std::min(from.x, to.x) <= p.x && p.x < std::max(from.x, to.x)
                                   : from.x == p.x && std::min(from.y, to.y) <= p.y && p.y < std::max(from.y, to.y);
-          if (on) along = std::max(along, l1_length({p, to}));
+          if (on) along = std::max(along, dist1(p, to));
         }
       if (along == 0) break;
       if (along >= len) {

@@ -41,7 +41,6 @@ std::string BendObstacles::why_not_free(const io::Layout& layout, geom::Point q)
   const std::string plain = cli::why_not_free(layout, q);
   if (plain.rfind("is not in free space", 0) != 0) return plain;
   for (const std::size_t i : covered) {
-    if (geom::locate(q, polygons[i]) == geom::Location::Inside) break;  // the blockage itself
     const geom::Polygon only[1] = {polygons[i]};
     for (const geom::Polygon& box : router::rectilinear_cover(only))
       if (geom::locate(q, box) != geom::Location::Outside) {

@@ -26,6 +26,7 @@
 #include "oracle/l1_oracle.h"
 #include "support/sanitized.h"
 #include "support/reach.h"
+#include "support/random_shapes.h"
 
 namespace {
 
@@ -334,12 +335,7 @@ std::vector<Box> random_blocks(std::mt19937& rng, const Box& domain, bool walls)
     if (!out.empty() && uni(0, 2) == 0) {  // diagonal to a corner of the previous one: a pinch
       const Box o = out.back();
       const int w = uni(1, 3), h = uni(1, 3);
-      switch (uni(0, 3)) {
-        case 0: b = {o.hi, {o.hi.x + w, o.hi.y + h}}; break;
-        case 1: b = {{o.lo.x - w, o.hi.y}, {o.lo.x, o.hi.y + h}}; break;
-        case 2: b = {{o.lo.x - w, o.lo.y - h}, o.lo}; break;
-        default: b = {{o.hi.x, o.lo.y - h}, {o.hi.x + w, o.lo.y}}; break;
-      }
+      b = taut::test::corner_box(o, w, h, uni(0, 3));
     } else {
       b.lo = {uni(domain.lo.x - 1, domain.hi.x - 1), uni(domain.lo.y - 1, domain.hi.y - 1)};
       b.hi = {b.lo.x + uni(1, 5), b.lo.y + uni(1, 5)};

@@ -229,12 +229,7 @@ std::vector<Shape> random_shapes(std::mt19937& rng, const Box& domain) {
       // Diagonal to a corner of the previous rectangle: a pinch (unless something fills it).
       const Box o = shapes.back().outer;
       const int w = step * uni(1, 3), h = step * uni(1, 3);
-      switch (uni(0, 3)) {
-        case 0: b = {o.hi, {o.hi.x + w, o.hi.y + h}}; break;
-        case 1: b = {{o.lo.x - w, o.hi.y}, {o.lo.x, o.hi.y + h}}; break;
-        case 2: b = {{o.lo.x - w, o.lo.y - h}, o.lo}; break;
-        default: b = {{o.hi.x, o.lo.y - h}, {o.hi.x + w, o.lo.y}}; break;
-      }
+      b = taut::test::corner_box(o, w, h, uni(0, 3));
     } else {
       b.lo = {snap(uni(domain.lo.x - 2, domain.hi.x - 1)),
               snap(uni(domain.lo.y - 2, domain.hi.y - 1))};
