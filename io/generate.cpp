@@ -269,6 +269,44 @@ void gen_maze(Builder& b, Rng& rng, i64 size) {
         b.add("w", {rect_shape(x * kCell, y * kCell + kWall, x * kCell + kWall, (y + 1) * kCell)});
 }
 
+// ---- channel -----------------------------------------------------------------------------
+// Teeth from the bottom side (y = 0) and the top side (y = H) at increasing x, on a 100-DBU grid:
+// a tooth is a rectangle or a step (an L of 6 vertices); the next tooth starts after a gap of
+// 1..12 units, or right at the last one's side (gap 0, same side only: they touch along an edge).
+// Teeth on opposite sides never share an x, and every tooth is shorter than H, so free space is
+// one simple polygon that winds around them. Heights repeat now and then (collinear edges).
+void gen_channel(Builder& b, Rng& rng, i64 size) {
+  constexpr i64 g = 100, H = 120;  // units
+  const i64 teeth = std::max<i64>(1, (size - 4) / 5);
+  i64 x = rng.range(1, 8);
+  bool top = false;
+  i64 last_h = 60;
+  for (i64 i = 0; i < teeth; ++i) {
+    const i64 w = rng.range(2, 30);
+    i64 h = rng.chance(20) ? last_h : rng.range(H / 5, H - H / 5);
+    last_h = h;
+    auto Y = [&](i64 y) { return top ? (H - y) * g : y * g; };
+    if (rng.chance(35) && w >= 4) {
+      // a step: full height on one part, lower on the other
+      const i64 cut = rng.range(1, w - 1), low = rng.range(1, h - 1);
+      const bool left_high = rng.chance(50);
+      const i64 hl = left_high ? h : low, hr = left_high ? low : h;
+      geom::Ring r = {pt(x * g, Y(0)), pt((x + w) * g, Y(0)), pt((x + w) * g, Y(hr)), pt((x + cut) * g, Y(hr)),
+                      pt((x + cut) * g, Y(hl)), pt(x * g, Y(hl))};
+      if (top) std::reverse(r.begin(), r.end());
+      b.add("t", {polygon_shape(std::move(r))});
+    } else {
+      b.add("t", {top ? rect_shape(x * g, (H - h) * g, (x + w) * g, H * g) : rect_shape(x * g, 0, (x + w) * g, h * g)});
+    }
+    x += w;
+    if (rng.chance(15)) continue;  // the next tooth touches this one, on the same side
+    x += rng.range(1, 12);
+    if (rng.chance(80)) top = !top;
+  }
+  b.grow(0, 0);
+  b.grow((x + rng.range(1, 8)) * g, H * g);
+}
+
 // ---- degenerate --------------------------------------------------------------------------
 // Motifs on a coarse grid (unit 100 DBU) in 8x8-unit tiles: shapes share x and y, have
 // collinear edges and extra collinear vertices, touch at corners and along edges (also across
@@ -394,6 +432,7 @@ std::optional<GenKind> parse_gen_kind(const std::string& name) {
   if (name == "polygons") return GenKind::Polygons;
   if (name == "maze") return GenKind::Maze;
   if (name == "degenerate") return GenKind::Degenerate;
+  if (name == "channel") return GenKind::Channel;
   return std::nullopt;
 }
 
@@ -403,11 +442,12 @@ std::string gen_kind_name(GenKind kind) {
     case GenKind::Polygons: return "polygons";
     case GenKind::Maze: return "maze";
     case GenKind::Degenerate: return "degenerate";
+    case GenKind::Channel: return "channel";
   }
   return "rects";
 }
 
-std::vector<std::string> gen_kind_names() { return {"rects", "polygons", "maze", "degenerate"}; }
+std::vector<std::string> gen_kind_names() { return {"rects", "polygons", "maze", "degenerate", "channel"}; }
 
 Layout generate_layout(const GenOptions& options) {
   Rng rng(options.seed);
@@ -418,13 +458,15 @@ Layout generate_layout(const GenOptions& options) {
     case GenKind::Polygons: gen_polygons(b, rng, size); break;
     case GenKind::Maze: gen_maze(b, rng, size); break;
     case GenKind::Degenerate: gen_degenerate(b, rng, size); break;
+    case GenKind::Channel: gen_channel(b, rng, size); break;
   }
   Layout& layout = b.layout;
   layout.name = gen_kind_name(options.kind) + "-" + std::to_string(options.size) + "-seed" +
                 std::to_string(options.seed);
   // An empty margin around the content: the routing area has a way around everything and a
   // pin always finds a free spot.
-  constexpr i64 kMargin = 1000;
+  // (A channel's boundary is its teeth's box: the teeth cut into it.)
+  const i64 kMargin = options.kind == GenKind::Channel ? 0 : 1000;
   if (b.lo_x > b.hi_x) b.lo_x = b.lo_y = b.hi_x = b.hi_y = 0;
   const i64 x0 = b.lo_x - kMargin, y0 = b.lo_y - kMargin;
   const i64 x1 = b.hi_x + kMargin, y1 = b.hi_y + kMargin;
@@ -452,7 +494,15 @@ Layout generate_layout(const GenOptions& options) {
       used.insert(p);
       return p;
     }
-    // Crowded: fall back to the empty margin on the left (x0, x0 + kMargin).
+    // Crowded: fall back to the empty margin on the left (x0, x0 + kMargin); a channel has no
+    // margin, but at least a third of its box is free: keep drawing.
+    while (kMargin == 0) {
+      const Point p = pt(rng.range(x0 + 1, x1 - 1), rng.range(y0 + 1, y1 - 1));
+      int ignored = 0;
+      if (used.count(p) || grid.locate(p, &ignored) != geom::Location::Outside) continue;
+      used.insert(p);
+      return p;
+    }
     while (true) {
       const Point p = pt(rng.range(x0 + 1, x0 + kMargin - 1), rng.range(y0 + 1, y1 - 1));
       if (used.insert(p).second) return p;

@@ -18,6 +18,10 @@ enum class GenKind {
   Maze,        // "maze": rectilinear maze walls on a grid (blockages touch along edges)
   Degenerate,  // "degenerate": coarse-grid rectangles/polygons sharing x, y, collinear edges,
                // touching at corners and along edges
+  Channel,     // "channel": teeth cutting into the boundary from below and above (rectangles and
+               // steps on a 100-DBU grid, neighbours on one side may touch), so free space is one
+               // simple rectilinear polygon: a winding channel (`taut diameter`); the boundary is
+               // the teeth's box, with no margin
 };
 std::optional<GenKind> parse_gen_kind(const std::string& name);
 std::string gen_kind_name(GenKind kind);

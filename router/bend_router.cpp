@@ -1,12 +1,15 @@
 #include "router/bend_router.h"
 
 #include <algorithm>
+#include <deque>
 #include <boost/graph/compressed_sparse_row_graph.hpp>
+#include <boost/range/iterator_range.hpp>
 #include <boost/graph/dijkstra_shortest_paths.hpp>
 #include <boost/property_map/function_property_map.hpp>
 #include <boost/property_map/property_map.hpp>
 #include <functional>
 #include <optional>
+#include <set>
 #include <limits>
 #include <map>
 #include <string>
@@ -370,8 +373,14 @@ struct BendRouter::Impl {
     std::vector<std::vector<std::pair<Point, bool>>> walks;
     std::vector<std::vector<std::size_t>> chains;
     std::vector<std::size_t> leads;
+    std::vector<BendCost> costs;  // without walks: per sink
   };
-  Search search(Point s, std::span<const Point> sinks, BendMetric metric, i64 bend_cost) const;
+  // Walks: the walks and chains. Costs: only `costs` (a sink not reached is not an error then).
+  // Bends (link metric only): only the bends of `costs` (lengths 0), by a 0-1 breadth-first
+  // search instead of Dijkstra.
+  enum class Mode { Walks, Costs, Bends };
+  Search search(Point s, std::span<const Point> sinks, BendMetric metric, i64 bend_cost,
+                Mode mode = Mode::Walks) const;
   BendPath path(Point s, Point t, BendMetric metric, i64 bend_cost) const;
   BendTree tree(Point source, std::span<const Point> sinks, BendMetric metric, i64 bend_cost) const;
 };
@@ -414,7 +423,7 @@ i64 l1_length(const std::vector<Point>& pts) {
 }  // namespace
 
 BendRouter::Impl::Search BendRouter::Impl::search(Point s, std::span<const Point> sinks, BendMetric metric,
-                                                  i64 bend_cost) const {
+                                                  i64 bend_cost, Mode mode) const {
   Search out;
   // The query points (0: the source, then the sinks): an obstacle vertex uses its nodes; another
   // free point gets a node of its own (its one wedge) with its tracks.
@@ -515,13 +524,23 @@ BendRouter::Impl::Search BendRouter::Impl::search(Point s, std::span<const Point
       if (n < base)
         for (const std::int32_t gv : {2 * n, 2 * n + 1}) finishes[k].push_back({gv, -1, Cost{}});
   }
+  // the query points at each query node (0: the source), so an edge finds its ends in O(1)
+  std::unordered_map<std::int32_t, std::vector<std::size_t>> at_node;
+  for (std::size_t i = 0; i < q.size(); ++i)
+    for (const std::int32_t n : ends[i])
+      if (n >= base) at_node[n].push_back(i);
   for (const Edge& e : qedges) {
     const Cost w = weight(e.length, e.bends);
     for (const auto& [a, b] : {std::pair{e.u, e.v}, std::pair{e.v, e.u}}) {
       if (a < built) continue;
-      if (is_end(0, a) && b < built) starts.push_back({b, a, w});
-      for (std::size_t k = 0; k < sinks.size(); ++k) {
-        if (!is_end(k + 1, a) || is_end(0, a)) continue;
+      const auto it = at_node.find(a / 2);
+      if (it == at_node.end()) continue;
+      if (it->second.front() == 0) {  // the source's node: an entry (a sink there is at the source)
+        if (b < built) starts.push_back({b, a, w});
+        continue;
+      }
+      for (const std::size_t i : it->second) {
+        const std::size_t k = i - 1;
         if (b < built) {
           finishes[k].push_back({b, a, w});
         } else if (is_end(0, b) && w < offers[k].cost) {
@@ -529,6 +548,49 @@ BendRouter::Impl::Search BendRouter::Impl::search(Point s, std::span<const Point
         }
       }
     }
+  }
+
+  if (mode == Mode::Bends) {
+    // 0-1 breadth-first search on bends (every edge has 0 or 1; the entries too, pushed in
+    // order: 0 at the front, 1 at the back, so the deque stays sorted)
+    constexpr i64 kNone = std::numeric_limits<i64>::max();
+    const std::size_t nv = static_cast<std::size_t>(built);
+    std::vector<i64> db(nv, kNone);
+    std::vector<char> done(nv, 0);
+    std::deque<std::size_t> dq;
+    for (const Entry& e : starts) {
+      const auto v = static_cast<std::size_t>(e.gv);
+      const auto b = static_cast<i64>(e.w.first);
+      if (b >= db[v]) continue;
+      db[v] = b;
+      if (b == 0) dq.push_front(v);
+      else dq.push_back(v);
+    }
+    while (!dq.empty()) {
+      const std::size_t u = dq.front();
+      dq.pop_front();
+      if (done[u]) continue;
+      done[u] = 1;
+      for (const auto e : boost::make_iterator_range(boost::out_edges(u, graph))) {
+        const std::size_t v = boost::target(e, graph);
+        const i64 b = graph[e].bends;
+        if (db[u] + b >= db[v]) continue;
+        db[v] = db[u] + b;
+        if (b == 0) dq.push_front(v);
+        else dq.push_back(v);
+      }
+    }
+    for (std::size_t k = 0; k < sinks.size(); ++k) {
+      i64 best = offers[k].cost == kInf ? kNone : static_cast<i64>(offers[k].cost.first);
+      for (const Entry& f : finishes[k])
+        if (db[static_cast<std::size_t>(f.gv)] != kNone)
+          best = std::min(best, db[static_cast<std::size_t>(f.gv)] + static_cast<i64>(f.w.first));
+      BendCost c;
+      c.reached = best != kNone;
+      c.bends = c.reached ? best : 0;
+      out.costs.push_back(c);
+    }
+    return out;
   }
 
   const std::size_t nv = static_cast<std::size_t>(built);
@@ -549,23 +611,36 @@ BendRouter::Impl::Search BendRouter::Impl::search(Point s, std::span<const Point
   for (std::size_t k = 0; k < sinks.size(); ++k)
     for (std::size_t i = 0; i < finishes[k].size(); ++i)
       finish_at[static_cast<std::size_t>(finishes[k][i].gv)].emplace_back(k, i);
+  // The offers made so far (a multiset, so the largest is at hand with many sinks) and how many
+  // sinks have none yet.
+  std::multiset<Cost> offered;
+  std::size_t unoffered = 0;
+  for (const Offer& o : offers) {
+    if (o.cost == kInf) ++unoffered;
+    else offered.insert(o.cost);
+  }
   struct Stop {};
   struct Visitor : boost::default_dijkstra_visitor {
     const std::vector<Cost>* dist;
     const std::vector<std::vector<Entry>>* finishes;
     const std::unordered_map<std::size_t, std::vector<std::pair<std::size_t, std::size_t>>>* finish_at;
     std::vector<Offer>* offers;
+    std::multiset<Cost>* offered;
+    std::size_t* unoffered;
     void examine_vertex(std::size_t u, const Graph&) const {
       const Cost& d = (*dist)[u];
       // every sink's best offer is at most what is left: done
-      bool done = true;
-      for (const Offer& o : *offers) done = done && !(d < o.cost);
-      if (done) throw Stop{};
+      if (*unoffered == 0 && !(d < *offered->rbegin())) throw Stop{};
       const auto it = finish_at->find(u);
       if (it == finish_at->end()) return;
       for (const auto& [k, i] : it->second) {
         const Cost c = add_costs(d, (*finishes)[k][i].w);
-        if (c < (*offers)[k].cost) (*offers)[k] = Offer{c, i, -1, -1};
+        Offer& o = (*offers)[k];
+        if (!(c < o.cost)) continue;
+        if (o.cost == kInf) --*unoffered;
+        else offered->erase(offered->find(o.cost));
+        offered->insert(c);
+        o = Offer{c, i, -1, -1};
       }
     }
   };
@@ -574,6 +649,8 @@ BendRouter::Impl::Search BendRouter::Impl::search(Point s, std::span<const Point
   vis.finishes = &finishes;
   vis.finish_at = &finish_at;
   vis.offers = &offers;
+  vis.offered = &offered;
+  vis.unoffered = &unoffered;
   const auto index = boost::get(boost::vertex_index, graph);
   const auto wmap = boost::make_function_property_map<Graph::edge_descriptor, Cost>(
       [&](const Graph::edge_descriptor& e) {
@@ -588,6 +665,24 @@ BendRouter::Impl::Search BendRouter::Impl::search(Point s, std::span<const Point
           boost::make_iterator_property_map(dist.begin(), index), wmap, index, std::less<Cost>(), add_costs, Cost{}, vis,
           boost::make_iterator_property_map(color.begin(), index));
   } catch (const Stop&) {
+  }
+
+  if (mode == Mode::Costs) {
+    for (const Offer& o : offers) {
+      BendCost c;
+      if (o.cost != kInf) {
+        c.reached = true;
+        if (metric == BendMetric::Link) {
+          c.bends = static_cast<i64>(o.cost.first);
+          c.length = o.cost.second;
+        } else {
+          c.bends = o.cost.second;
+          c.length = static_cast<i64>(o.cost.first - i128{bend_cost} * o.cost.second);
+        }
+      }
+      out.costs.push_back(c);
+    }
+    return out;
   }
 
   // each sink's walk: the source's query vertex (if any), the built vertices from the root of
@@ -716,6 +811,26 @@ BendTree BendRouter::tree(Point source, std::span<const Point> sinks, BendMetric
   if (metric == BendMetric::Combined && (bend_cost < 0 || bend_cost > (i64{1} << 31)))
     throw std::invalid_argument("BendRouter: the bend cost must lie in [0, 2^31]");
   return impl_->tree(source, sinks, metric, bend_cost);
+}
+
+std::vector<BendCost> BendRouter::costs(Point source, std::span<const Point> sinks, BendMetric metric,
+                                        std::int64_t bend_cost, WireStatus* status, std::size_t* failed) const {
+  if (metric == BendMetric::Combined && (bend_cost < 0 || bend_cost > (i64{1} << 31)))
+    throw std::invalid_argument("BendRouter: the bend cost must lie in [0, 2^31]");
+  Impl::Search r = impl_->search(source, sinks, metric, bend_cost, Impl::Mode::Costs);
+  if (status) *status = r.status;
+  if (failed) *failed = r.failed;
+  return std::move(r.costs);
+}
+
+std::vector<std::int64_t> BendRouter::fewest_bends(Point source, std::span<const Point> sinks, WireStatus* status,
+                                                   std::size_t* failed) const {
+  Impl::Search r = impl_->search(source, sinks, BendMetric::Link, 0, Impl::Mode::Bends);
+  if (status) *status = r.status;
+  if (failed) *failed = r.failed;
+  std::vector<std::int64_t> out;
+  for (const BendCost& c : r.costs) out.push_back(c.reached ? c.bends : -1);
+  return out;
 }
 
 const BendGraphStats& BendRouter::stats() const { return impl_->stats; }

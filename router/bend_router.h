@@ -87,6 +87,13 @@ struct BendTree {
                                                 // (on the wires; as BendRouter::path would give)
 };
 
+// What a path to one sink costs (BendRouter::costs): as path() would give, without its points.
+struct BendCost {
+  bool reached = false;  // false: no path (walled in)
+  std::int64_t length = 0;
+  std::int64_t bends = 0;
+};
+
 struct BendGraphStats {
   std::size_t vertices = 0;  // obstacle vertices (a pinch vertex counted once)
   std::size_t nodes = 0;     // point-wedge nodes (each an h- and a v-node in the graph)
@@ -112,6 +119,20 @@ class BendRouter {
   // the source.
   BendTree tree(geom::Point source, std::span<const geom::Point> sinks, BendMetric metric,
                 std::int64_t bend_cost) const;
+
+  // The cost of an optimal path from the source to each sink, from one Dijkstra run, without
+  // building the paths (what many-pair questions such as the link diameter need). status: Ok, or
+  // SourceNotFree / TargetNotFree (then *failed is that sink) and the vector is empty; a sink that
+  // is free but walled in is reported as not reached.
+  std::vector<BendCost> costs(geom::Point source, std::span<const geom::Point> sinks, BendMetric metric,
+                              std::int64_t bend_cost, WireStatus* status = nullptr,
+                              std::size_t* failed = nullptr) const;
+
+  // The fewest bends from the source to each sink (-1: not reached), by one 0-1 breadth-first
+  // search over the graph (no lengths, no paths): what link distances need, cheaper than
+  // costs(). Status as costs().
+  std::vector<std::int64_t> fewest_bends(geom::Point source, std::span<const geom::Point> sinks,
+                                         WireStatus* status = nullptr, std::size_t* failed = nullptr) const;
 
   const BendGraphStats& stats() const;
 

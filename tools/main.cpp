@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
   add_path(app, status);
   add_spm(app, status);
   add_voronoi(app, status);
+  add_diameter(app, status);
   add_render(app, status);
   add_stats(app, status);
   add_gen(app, status);

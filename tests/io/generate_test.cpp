@@ -126,14 +126,14 @@ GenOptions options(GenKind kind, std::int64_t size, int nets, std::uint64_t seed
 }
 
 const std::vector<GenKind> kKinds = {GenKind::Rects, GenKind::Polygons, GenKind::Maze,
-                                     GenKind::Degenerate};
+                                     GenKind::Degenerate, GenKind::Channel};
 
 TEST(Generate, KindNames) {
   for (const std::string& name : gen_kind_names()) {
     ASSERT_TRUE(parse_gen_kind(name).has_value()) << name;
     EXPECT_EQ(gen_kind_name(*parse_gen_kind(name)), name);
   }
-  EXPECT_EQ(gen_kind_names().size(), 4u);
+  EXPECT_EQ(gen_kind_names().size(), 5u);
   EXPECT_FALSE(parse_gen_kind("Rects").has_value());
   EXPECT_FALSE(parse_gen_kind("").has_value());
 }

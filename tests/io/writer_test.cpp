@@ -151,7 +151,7 @@ TEST(Writer, MinimalLayouts) {
   EXPECT_EQ(xml.find("<routes"), std::string::npos);
   EXPECT_TRUE(same_document(l, read_back(xml)));
   // Empty <routes> (a router that had nothing to do) stays present.
-  l.routes = Routes{"taut", "", "", {}, 0};
+  l.routes = Routes{"taut", "", "", {}, 0, std::nullopt};
   EXPECT_TRUE(same_document(l, read_back(layout_to_xml(l))));
 }
 

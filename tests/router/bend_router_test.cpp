@@ -544,6 +544,30 @@ std::string check_tree(const BendReference& ref, const BendRouter& router, Point
   for (std::size_t k = 0; k < sinks.size(); ++k) want.push_back(ref.best(source, sinks[k], link, C));
   for (std::size_t k = 0; k < sinks.size() && expected == WireStatus::Ok; ++k)
     if (!want[k]) expected = WireStatus::Unreachable, failed = k;
+  // costs() and fewest_bends() (link): the same optimum per sink from one search without paths; a
+  // sink walled in is not reached rather than an error
+  {
+    const WireStatus free_status = expected == WireStatus::Unreachable ? WireStatus::Ok : expected;
+    WireStatus cs = WireStatus::Ok;
+    std::size_t cf = 0;
+    const std::vector<router::BendCost> c =
+        router.costs(source, sinks, link ? BendMetric::Link : BendMetric::Combined, C, &cs, &cf);
+    if (cs != free_status) return head.str() + "costs(): status " + str(cs) + ", expected " + str(free_status);
+    if (cs == WireStatus::TargetNotFree && cf != failed) return head.str() + "costs(): wrong failed sink";
+    for (std::size_t k = 0; cs == WireStatus::Ok && k < sinks.size(); ++k) {
+      if (c[k].reached != want[k].has_value()) return head.str() + "costs(): sink " + std::to_string(k) + " reached?";
+      if (want[k] && (c[k].length != want[k]->length || c[k].bends != want[k]->bends))
+        return head.str() + "costs(): sink " + std::to_string(k) + " costs (" + std::to_string(c[k].length) + ", " +
+               std::to_string(c[k].bends) + "), the optimum is " + str(want[k]);
+    }
+    if (link) {
+      const std::vector<i64> fb = router.fewest_bends(source, sinks, &cs, &cf);
+      if (cs != free_status) return head.str() + "fewest_bends(): status " + str(cs);
+      for (std::size_t k = 0; cs == WireStatus::Ok && k < sinks.size(); ++k)
+        if (fb[k] != (want[k] ? want[k]->bends : -1))
+          return head.str() + "fewest_bends(): sink " + std::to_string(k) + " gets " + std::to_string(fb[k]);
+    }
+  }
   if (t.status != expected) return head.str() + "status " + str(t.status) + ", expected " + str(expected);
   if (expected != WireStatus::Ok) {
     if (expected != WireStatus::SourceNotFree && t.failed != failed)

@@ -1,0 +1,172 @@
+// Link diameter benchmark (issue #6; de Berg, seeds/002): router::LinkPolygon::diameter() on
+// generated channels (`taut gen channel`, seed 42: teeth cutting into the boundary, so free space
+// is one simple rectilinear polygon) against the polygon's vertex count n. Printed per size: the
+// polygon (vertices, convex vertices), the router graph's build time, the diameter and its time,
+// how many single-source searches the eccentricity bounds needed, and ratios to baselines
+// measured in the same run (machines here are noisy): the diameter's time over one link-metric
+// path query between the two ends it found (`/query`), and the time of the plain method that
+// searches from every convex vertex over the diameter's (`all/`, up to --all-max vertices; its
+// answer is compared). Up to --ref-max vertices the exhaustive reference
+// (tests/oracle/link_polygon_oracle.h: every pair of Hanan grid points) is timed too (`ref/`)
+// and its answer compared. The growth exponent between consecutive sizes is
+// log(t2 / t1) / log(n2 / n1).
+//
+// --shape comb measures the worst case instead: a comb whose tooth tips are all 3 links apart,
+// where the bounds prune nothing and every tip is searched from.
+//
+//   bench_diameter [--sizes N,N,...] [--all-max N] [--ref-max N] [--seed S] [--shape channel|comb]
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "bench/bench_util.h"
+#include "io/generate.h"
+#include "oracle/link_polygon_oracle.h"
+#include "router/bend_router.h"
+#include "router/link_polygon.h"
+
+namespace {
+
+using taut::bench::seconds_of;
+using taut::geom::Point;
+
+struct Row {
+  std::size_t n = 0, convex = 0, searches = 0;
+  int links = 0;
+  double build = 0, diameter = 0, query = 0, all = -1, ref = -1;
+  bool all_agree = true, ref_agree = true;
+  std::size_t edges = 0;
+};
+
+// The plain method: one search from every convex vertex to the convex vertices after it.
+int all_pairs(const taut::geom::Ring& ring) {
+  const taut::router::LinkPolygon poly(ring);
+  std::vector<Point> convex;
+  for (std::size_t i = 0; i < ring.size(); ++i)
+    if (taut::geom::orientation(ring[(i + ring.size() - 1) % ring.size()], ring[i], ring[(i + 1) % ring.size()]) > 0)
+      convex.push_back(ring[i]);
+  int best = 0;
+  for (std::size_t i = 0; i + 1 < convex.size(); ++i) {
+    const std::span<const Point> rest(convex.data() + i + 1, convex.size() - i - 1);
+    for (const int d : poly.distances(convex[i], rest)) best = std::max(best, d);
+  }
+  return best;
+}
+
+// A comb of t teeth standing on a spine (4t + 4 vertices before cleaning): every tooth tip is 3
+// links from every other, so the eccentricity bounds prune nothing and the diameter searches
+// from every tip: the worst case of the method.
+taut::geom::Ring comb(std::int64_t size) {
+  const taut::geom::Coord t = static_cast<taut::geom::Coord>(std::max<std::int64_t>(1, (size - 4) / 4)), u = 100;
+  const taut::geom::Coord X = (4 * t + 2) * u, S = 3 * u, H = 40 * u;
+  taut::geom::Ring r = {{0, 0}, {X, 0}, {X, S}};
+  for (taut::geom::Coord i = t - 1; i >= 0; --i) {
+    const taut::geom::Coord a = (2 + 4 * i) * u;
+    r.insert(r.end(), {{a + 2 * u, S}, {a + 2 * u, S + H}, {a, S + H}, {a, S}});
+  }
+  r.push_back({0, S});
+  return r;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::int64_t> sizes = {100, 1000, 10000, 100000};
+  std::int64_t all_max = 300, ref_max = 60;
+  std::uint64_t seed = 42;
+  std::string shape = "channel";
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--sizes") && i + 1 < argc) sizes = taut::bench::parse_list(argv[++i]);
+    else if (!std::strcmp(argv[i], "--all-max") && i + 1 < argc) all_max = std::atoll(argv[++i]);
+    else if (!std::strcmp(argv[i], "--ref-max") && i + 1 < argc) ref_max = std::atoll(argv[++i]);
+    else if (!std::strcmp(argv[i], "--seed") && i + 1 < argc) seed = std::strtoull(argv[++i], nullptr, 10);
+    else if (!std::strcmp(argv[i], "--shape") && i + 1 < argc) shape = argv[++i];
+    else {
+      std::fprintf(stderr, "usage: %s [--sizes N,N,...] [--all-max N] [--ref-max N] [--seed S] [--shape channel|comb]\n", argv[0]);
+      return 2;
+    }
+  }
+  if (shape != "channel" && shape != "comb") {
+    std::fprintf(stderr, "unknown shape %s\n", shape.c_str());
+    return 2;
+  }
+  if (shape == "channel")
+    std::printf("taut link diameter benchmark: generated channels (seed %llu), one thread\n",
+                static_cast<unsigned long long>(seed));
+  else
+    std::printf("taut link diameter benchmark: combs (every tooth tip 3 links from every other), one thread\n");
+  std::printf("%8s %7s %10s | %8s %9s %9s %8s | %8s %9s %9s\n", "n", "convex", "graph-edg", "build(s)", "diam(s)",
+              "diameter", "searches", "/query", "all/", "ref/");
+  std::vector<Row> rows;
+  for (const std::int64_t size : sizes) {
+    taut::router::FreeSpacePolygon f;
+    if (shape == "comb") {
+      f.status = taut::router::FreeSpacePolygon::Status::Ok;
+      f.ring = comb(size);
+    } else {
+      taut::io::GenOptions go;
+      go.kind = taut::io::GenKind::Channel;
+      go.size = size;
+      go.nets = 0;
+      go.seed = seed;
+      const taut::io::Layout layout = taut::io::generate_layout(go);
+      f = taut::router::free_space_polygon(layout.boundary->box, taut::io::blockage_polygons(layout));
+    }
+    if (f.status != taut::router::FreeSpacePolygon::Status::Ok) {
+      std::fprintf(stderr, "size %lld: free space is not a simple polygon\n", static_cast<long long>(size));
+      return 1;
+    }
+    Row row;
+    row.n = f.ring.size();
+    std::unique_ptr<taut::router::LinkPolygon> poly;
+    row.build = seconds_of([&] { poly = std::make_unique<taut::router::LinkPolygon>(f.ring); }, 1);
+    const auto& st = poly->graph_stats();
+    row.edges = st.straight_edges + st.l_edges;
+    taut::router::LinkDiameter d;
+    row.diameter = seconds_of([&] { d = poly->diameter(); }, 1);
+    row.links = d.links;
+    row.convex = d.convex_vertices;
+    row.searches = d.searches;
+    row.query = seconds_of([&] { (void)poly->path(d.from, d.to); }, 3);
+    if (static_cast<std::int64_t>(row.n) <= all_max) {
+      int all = 0;
+      row.all = seconds_of([&] { all = all_pairs(f.ring); }, 1);
+      row.all_agree = all == d.links;
+    }
+    if (static_cast<std::int64_t>(row.n) <= ref_max) {
+      int ref = 0;
+      row.ref = seconds_of([&] { ref = taut::oracle::LinkPolygonReference(f.ring).diameter().links; }, 1);
+      row.ref_agree = ref == d.links;
+    }
+    std::printf("%8zu %7zu %10zu | %8.3f %9.4f %9d %8zu | %8.1f ", row.n, row.convex, row.edges, row.build,
+                row.diameter, row.links, row.searches, row.diameter / row.query);
+    if (row.all >= 0) std::printf("%9.1f%s ", row.all / row.diameter, row.all_agree ? "" : "!");
+    else std::printf("%9s ", "-");
+    if (row.ref >= 0) std::printf("%9.1f%s", row.ref / row.diameter, row.ref_agree ? "" : "!");
+    else std::printf("%9s", "-");
+    std::printf("\n");
+    std::fflush(stdout);
+    if (!row.all_agree || !row.ref_agree) {
+      std::fprintf(stderr, "MISMATCH at n = %zu\n", row.n);
+      return 1;
+    }
+    rows.push_back(row);
+  }
+  std::printf("(/query: the diameter's time over one link path query between its ends; all/: the plain method's "
+              "time (a search from every convex vertex) over the diameter's; ref/: the exhaustive reference's time over "
+              "the diameter's; all answers equal)\n");
+  std::printf("\ngrowth exponents between consecutive sizes (1.0 = linear):\n");
+  std::printf("%8s -> %8s | %8s %8s %8s %8s\n", "n1", "n2", "edges", "build", "diameter", "searches");
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const Row& a = rows[i - 1];
+    const Row& b = rows[i];
+    const double dn = std::log(static_cast<double>(b.n) / static_cast<double>(a.n));
+    std::printf("%8zu -> %8zu | %8.2f %8.2f %8.2f %8.2f\n", a.n, b.n,
+                std::log(static_cast<double>(b.edges) / static_cast<double>(a.edges)) / dn,
+                std::log(b.build / a.build) / dn, std::log(b.diameter / a.diameter) / dn,
+                std::log(static_cast<double>(b.searches) / static_cast<double>(a.searches)) / dn);
+  }
+  return 0;
+}

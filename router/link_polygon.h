@@ -1,0 +1,104 @@
+// Rectilinear link distance inside a simple rectilinear polygon (issue #6; M. de Berg, "On
+// rectilinear link distance", seeds/002): the fewest links (axis-parallel segments) of a path
+// between two points of the polygon, paths that are shortest in links and in L1 at once, and the
+// link diameter: the largest link distance between two points of the polygon.
+//
+//   FreeSpacePolygon f = free_space_polygon(domain, blockages);   // a layout's free space
+//   if (f.status == FreeSpacePolygon::Status::Ok) {
+//     LinkPolygon p(f.ring);
+//     LinkDiameter d = p.diameter();   // d.links, d.from, d.to, d.path
+//   }
+//
+// Distances and paths. A query runs the bend-aware router (router/bend_router.h) with the link
+// metric, bends first and length second, on the polygon's complement in its bounding box
+// (distances alone: a 0-1 breadth-first search on bends over the same graph). That
+// router is exact for any rectilinear obstacles (de Berg et al., Lemma 2.1); in a simple
+// polygon some path is optimal in links and in L1 at once (de Berg, Lemma 8), so the path it
+// returns, the shortest among those with the fewest links, is L1-shortest too (the tests check
+// its length against the L1 reference).
+//
+// The diameter. It is attained at two convex vertices of the polygon (de Berg, section 4; the
+// reference test checks it over every Hanan grid point of small polygons). diameter() runs
+// searches from convex vertices to all convex vertices (BendRouter::fewest_bends: one 0-1
+// breadth-first search over the router's graph, O(V + E)), pruned by eccentricity bounds (see
+// diameter() in the .cpp): a few searches on winding channels, but k for k convex vertices in the
+// worst case (a comb whose tooth tips are all equally far apart), O(k (V + E)), where de Berg's
+// divide and conquer on the rectilinear cutting theorem takes O(n log n). That algorithm, its O(log n + l) query structure and the linear-time
+// approximation within 3 are not implemented yet (issue #6 stays open for them).
+//
+// Counting. A path of l links has l - 1 bends. d(a, a) = 0; d(a, b) = 1 when the segment ab is
+// horizontal or vertical and lies in the polygon; a rectangle has diameter 2.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "geom/types.h"
+#include "router/bend_router.h"
+
+namespace taut::router {
+
+// The free space of a bounded layout (the closed domain minus the open union of the blockages,
+// as everywhere in taut) as one simple rectilinear polygon, or why it is not one.
+struct FreeSpacePolygon {
+  enum class Status {
+    Ok,
+    Sloped,  // `blockage` has an edge that is neither horizontal nor vertical
+    Island,  // `blockage` (with those touching it) does not reach the domain side: a hole in free space
+    Pieces,  // free space falls into several pieces, or pinches to a point: `pieces` has a vertex of each
+    Empty,   // the blockages cover the domain
+  };
+  Status status = Status::Empty;
+  geom::Ring ring;                  // Ok: counter-clockwise, no repeated or collinear vertex
+  std::size_t blockage = 0;         // Sloped, Island: index into the blockage polygons
+  std::vector<geom::Point> pieces;  // Pieces: the lowest, then leftmost, vertex of each piece
+};
+// domain: a closed box with non-empty interior; blockages: valid polygons (geom/validate.h), any
+// orientation, holes allowed.
+FreeSpacePolygon free_space_polygon(const geom::Box& domain, std::span<const geom::Polygon> blockages);
+
+struct LinkPath {
+  int links = 0;                    // 0 when the ends are equal
+  std::int64_t length = 0;          // L1 length: the L1 distance between the ends in the polygon
+  std::vector<geom::Point> points;  // from, bends..., to ({from} when equal)
+};
+
+struct LinkDiameter {
+  int links = 0;         // the link diameter
+  geom::Point from, to;  // two convex vertices that far apart
+  LinkPath path;         // a path between them, fewest links and L1-shortest
+  std::size_t vertices = 0;
+  std::size_t convex_vertices = 0;
+  std::size_t searches = 0;  // single-source searches run
+};
+
+class LinkPolygon {
+ public:
+  // A simple rectilinear ring with integer vertices, either orientation (collinear and repeated
+  // consecutive vertices are dropped); std::invalid_argument when an edge is sloped or the ring is
+  // not simple.
+  explicit LinkPolygon(const geom::Ring& polygon);
+  ~LinkPolygon();
+  LinkPolygon(LinkPolygon&&) noexcept;
+  LinkPolygon& operator=(LinkPolygon&&) noexcept;
+
+  const geom::Ring& ring() const { return ring_; }  // counter-clockwise, cleaned
+  bool contains(geom::Point p) const;               // the closed polygon
+  // A path with the fewest links, L1-shortest among those; std::nullopt when an end lies outside.
+  std::optional<LinkPath> path(geom::Point a, geom::Point b) const;
+  std::optional<int> distance(geom::Point a, geom::Point b) const;
+  // The link distance from a to each target, from one search (O(1) per target beyond it);
+  // std::invalid_argument when a point lies outside.
+  std::vector<int> distances(geom::Point a, std::span<const geom::Point> targets) const;
+  LinkDiameter diameter() const;
+  const BendGraphStats& graph_stats() const;
+
+ private:
+  geom::Ring ring_;
+  std::unique_ptr<BendRouter> router_;
+};
+
+}  // namespace taut::router

@@ -1,0 +1,145 @@
+// taut diameter FILE [--json] [--svg PIC]: the rectilinear link diameter of a layout whose free
+// space is one simple rectilinear polygon (de Berg, seeds/002): the most links (axis-parallel
+// segments) a wire between two points of free space can need, the two points, and such a wire
+// (fewest links, L1-shortest).
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "io/layout_geometry.h"
+#include "io/svg.h"
+#include "router/link_polygon.h"
+#include "tools/cli.h"
+#include "tools/commands.h"
+#include "tools/route_common.h"
+
+namespace taut::cli {
+
+namespace {
+
+Diagnostic diameter_error(const io::Layout& layout, const std::string& code, int line, const std::string& message) {
+  return Diagnostic{Severity::Error, code, layout.file, line, 0, message};
+}
+
+// The free space of the layout as a simple rectilinear polygon; prints why not (exit 2).
+std::optional<geom::Ring> diameter_free_space(const io::Layout& layout) {
+  if (!layout.boundary) {
+    print_diagnostics({diameter_error(layout, "DIAM-0001", layout.line,
+                             "the layout has no <boundary>: free space is unbounded and has no link diameter")});
+    return std::nullopt;
+  }
+  std::vector<std::size_t> owner;
+  const std::vector<geom::Polygon> polys = io::blockage_polygons(layout, &owner);
+  const router::FreeSpacePolygon f = router::free_space_polygon(layout.boundary->box, polys);
+  using S = router::FreeSpacePolygon::Status;
+  auto shape_line = [&](std::size_t i) {
+    const io::Blockage& b = layout.blockages[owner[i]];
+    std::size_t first = i;
+    while (first > 0 && owner[first - 1] == owner[i]) --first;
+    return b.shapes[i - first].line;
+  };
+  switch (f.status) {
+    case S::Ok: return f.ring;
+    case S::Sloped:
+    case S::Island: {
+      const bool sloped = f.status == S::Sloped;
+      print_diagnostics({diameter_error(
+          layout, sloped ? "DIAM-0002" : "DIAM-0003", shape_line(f.blockage),
+          "blockage \"" + layout.blockages[owner[f.blockage]].id + "\" " +
+              (sloped ? "has an edge that is neither horizontal nor vertical: the link diameter is defined for "
+                        "rectilinear free space"
+                      : "does not reach the boundary (nor does a blockage touching it): free space has a hole "
+                        "around it, and the link diameter needs a simple polygon"))});
+      return std::nullopt;
+    }
+    case S::Pieces: {
+      std::string at;
+      for (std::size_t k = 0; k < f.pieces.size() && k < 4; ++k) at += (k ? ", " : "") + point_text(f.pieces[k]);
+      if (f.pieces.size() > 4) at += ", ...";
+      const std::string what = f.pieces.size() == 1
+                                   ? "free space pinches to a point (it touches itself at a vertex near " + at + ")"
+                                   : "free space falls into " + std::to_string(f.pieces.size()) +
+                                         " pieces (their lowest vertices: " + at + ")";
+      print_diagnostics({diameter_error(layout, "DIAM-0004", layout.boundary->line,
+                               what + ": the link diameter needs one simple polygon")});
+      return std::nullopt;
+    }
+    case S::Empty:
+      print_diagnostics({diameter_error(layout, "DIAM-0005", layout.boundary->line,
+                               "the blockages cover the whole boundary: there is no free space")});
+      return std::nullopt;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+void add_diameter(CLI::App& app, int& status) {
+  struct Args {
+    std::string file, svg;
+    bool json = false;
+    LoadOptions load;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* sub = app.add_subcommand(
+      "diameter",
+      "Rectilinear link diameter of a layout whose free space (boundary minus blockages) is one simple "
+      "rectilinear polygon: the most links a wire between two free points can need (nets are not used)");
+  sub->add_flag("--json", args->json, "print one JSON document on stdout");
+  sub->add_option("--svg", args->svg, "also draw the layout with the diameter's wire");
+  add_input_options(sub, args->file, args->load, "do not print warnings");
+  sub->callback([args, &status] {
+    const auto layout = load_layout(args->file, args->load);
+    if (!layout) {
+      status = kInvalid;
+      return;
+    }
+    const std::optional<geom::Ring> ring = diameter_free_space(*layout);
+    if (!ring) {
+      status = kInvalid;
+      return;
+    }
+    const router::LinkPolygon poly(*ring);
+    const router::LinkDiameter d = poly.diameter();
+    const int bends = d.links - 1;
+    if (!args->svg.empty()) {
+      io::SvgOptions so;
+      std::string pts;
+      for (const geom::Point p : d.path.points) pts += (pts.empty() ? "" : " ") + point_text(p);
+      so.overlay += "<polyline class=\"diameter\" points=\"" + pts +
+                    "\" fill=\"none\" stroke=\"#c0392b\" stroke-width=\"@2.5\"/>\n";
+      for (const geom::Point p : {d.from, d.to})
+        so.overlay += "<circle class=\"diameter-end\" cx=\"" + std::to_string(p.x) + "\" cy=\"" + std::to_string(p.y) +
+                      "\" r=\"@5\" fill=\"#c0392b\"/>\n";
+      so.caption = "link diameter " + std::to_string(d.links) + " (red: a wire with that many links)";
+      if (!write_output(args->svg, io::layout_to_svg(*layout, so))) {
+        status = kInvalid;
+        return;
+      }
+    }
+    if (args->json) {
+      nlohmann::ordered_json j;
+      j["metric"] = "link";
+      j["diameter"] = d.links;
+      j["bends"] = bends;
+      j["from"] = {d.from.x, d.from.y};
+      j["to"] = {d.to.x, d.to.y};
+      j["length"] = d.path.length;
+      auto pts = nlohmann::ordered_json::array();
+      for (const geom::Point q : d.path.points) pts.push_back({q.x, q.y});
+      j["points"] = pts;
+      j["vertices"] = d.vertices;
+      j["convex_vertices"] = d.convex_vertices;
+      std::cout << j.dump() << '\n';
+    } else {
+      std::cout << "link diameter " << d.links << " (" << bends << (bends == 1 ? " bend" : " bends") << "), from "
+                << point_text(d.from) << " to " << point_text(d.to) << "; a wire of length " << d.path.length << ":";
+      for (const geom::Point q : d.path.points) std::cout << ' ' << point_text(q);
+      std::cout << "\nfree space: a simple rectilinear polygon of " << d.vertices << " vertices ("
+                << d.convex_vertices << " convex)\n";
+    }
+    status = kOk;
+  });
+}
+
+}  // namespace taut::cli
