@@ -106,16 +106,19 @@ FreeSpacePolygon free_space_polygon(const Box& domain, std::span<const Polygon> 
     std::reverse(r.begin(), r.end());
     pieces.push_back(std::move(r));
   }
-  auto repeats = [](const Ring& r) {
-    std::vector<Point> v = r;
-    std::sort(v.begin(), v.end(), [](Point a, Point b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
-    return std::adjacent_find(v.begin(), v.end()) != v.end();
-  };
-  if (pieces.size() > 1 || repeats(pieces[0])) {
+  auto by_xy = [](Point a, Point b) { return a.y != b.y ? a.y < b.y : a.x < b.x; };
+  if (pieces.size() > 1) {
     out.status = FreeSpacePolygon::Status::Pieces;
     for (const Ring& r : pieces) out.pieces.push_back(lowest(r));
-    std::sort(out.pieces.begin(), out.pieces.end(),
-              [](Point a, Point b) { return a.y != b.y ? a.y < b.y : a.x < b.x; });
+    std::sort(out.pieces.begin(), out.pieces.end(), by_xy);
+    return out;
+  }
+  // one piece whose boundary passes a point twice: it touches itself where blockages meet
+  std::vector<Point> v = pieces[0];
+  std::sort(v.begin(), v.end(), by_xy);
+  if (const auto twice = std::adjacent_find(v.begin(), v.end()); twice != v.end()) {
+    out.status = FreeSpacePolygon::Status::Pieces;
+    out.pieces = {*twice};
     return out;
   }
   out.status = FreeSpacePolygon::Status::Ok;

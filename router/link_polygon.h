@@ -48,13 +48,14 @@ struct FreeSpacePolygon {
     Ok,
     Sloped,  // `blockage` has an edge that is neither horizontal nor vertical
     Island,  // `blockage` (with those touching it) does not reach the domain side: a hole in free space
-    Pieces,  // free space falls into several pieces, or pinches to a point: `pieces` has a vertex of each
+    Pieces,  // free space falls into several pieces (`pieces`: the lowest vertex of each), or is one
+             // piece that touches itself at a point where blockages meet (`pieces`: that point)
     Empty,   // the blockages cover the domain
   };
   Status status = Status::Empty;
   geom::Ring ring;                  // Ok: counter-clockwise, no repeated or collinear vertex
   std::size_t blockage = 0;         // Sloped, Island: index into the blockage polygons
-  std::vector<geom::Point> pieces;  // Pieces: the lowest, then leftmost, vertex of each piece
+  std::vector<geom::Point> pieces;  // Pieces: see above
 };
 // domain: a closed box with non-empty interior; blockages: valid polygons (geom/validate.h), any
 // orientation, holes allowed.

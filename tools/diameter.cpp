@@ -57,7 +57,7 @@ std::optional<geom::Ring> diameter_free_space(const io::Layout& layout) {
       for (std::size_t k = 0; k < f.pieces.size() && k < 4; ++k) at += (k ? ", " : "") + point_text(f.pieces[k]);
       if (f.pieces.size() > 4) at += ", ...";
       const std::string what = f.pieces.size() == 1
-                                   ? "free space pinches to a point (it touches itself at a vertex near " + at + ")"
+                                   ? "free space touches itself at " + at + ", where blockages meet"
                                    : "free space falls into " + std::to_string(f.pieces.size()) +
                                          " pieces (their lowest vertices: " + at + ")";
       print_diagnostics({diameter_error(layout, "DIAM-0004", layout.boundary->line,

@@ -148,7 +148,11 @@ TEST(Diameter, RefusalsNameTheFileAndLine) {
       // two blockages from opposite sides meet at one corner: free space pinches there
       {"pinch", "\n<boundary x0=\"0\" y0=\"0\" x1=\"10\" y1=\"10\"/><blockage id=\"lo\"><rect x0=\"0\" y0=\"0\" x1=\"5\" y1=\"5\"/></blockage>"
                 "<blockage id=\"hi\"><rect x0=\"5\" y0=\"5\" x1=\"10\" y1=\"10\"/></blockage>",
-       "DIAM-0004", ":3:", "pieces"},
+       "DIAM-0004", ":3:", "2 pieces"},
+      // one piece that goes round a blockage touching another at a corner: it touches itself there
+      {"selftouch", "\n<boundary x0=\"0\" y0=\"0\" x1=\"30\" y1=\"30\"/><blockage id=\"b\"><rect x0=\"20\" y0=\"0\" x1=\"30\" y1=\"10\"/></blockage>"
+                    "<blockage id=\"a\"><rect x0=\"10\" y0=\"10\" x1=\"20\" y1=\"20\"/></blockage>",
+       "DIAM-0004", ":3:", "touches itself at 20,10"},
       {"full", "\n<boundary x0=\"0\" y0=\"0\" x1=\"10\" y1=\"10\"/><blockage id=\"all\"><rect x0=\"0\" y0=\"0\" x1=\"10\" y1=\"10\"/></blockage>",
        "DIAM-0005", ":3:", "no free space"},
   };

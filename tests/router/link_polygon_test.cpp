@@ -34,10 +34,12 @@
 #include "geom/predicates.h"
 #include "io/generate.h"
 #include "io/layout_geometry.h"
+#include "io/movingai.h"
 #include "oracle/l1_oracle.h"
 #include "oracle/link_polygon_oracle.h"
 #include "router/link_polygon.h"
 #include "support/random_shapes.h"
+#include "support/run.h"
 #include "support/sanitized.h"
 
 namespace taut::test {
@@ -332,6 +334,112 @@ TEST(LinkPolygon, GeneratedChannels) {
       EXPECT_EQ(poly.diameter().links, oracle::LinkPolygonReference(f.ring).diameter().links);
     }
   }
+}
+
+// Windows of Moving AI maps (cells of 10 DBU that touch along edges and at corners everywhere):
+// free_space_polygon() against a raster of the window's cells. Blocked cells touching even at a
+// corner are one obstacle, so: a blocked 8-connected group that does not reach the window's side
+// is an island; else free cells in two or more 4-connected groups are pieces; else a lattice point
+// with blocked cells on one diagonal and free ones on the other is where free space touches
+// itself; else the free cells' union is the polygon, and its diameter is the reference's.
+TEST(LinkPolygon, MovingAiWindows) {
+  TAUT_REQUIRE_SHARED_DATA();
+  std::mt19937 rng(2026);
+  int ok = 0, islands = 0, pieces = 0, touches = 0, empty = 0;
+  for (const char* name : {"8room_000", "arena", "den520d", "maze-100-1", "random512-10-0"}) {
+    const auto r = io::load_movingai_map(shared_data_dir() + "/movingai/" + name + ".map", 10);
+    ASSERT_TRUE(r.layout && r.layout->boundary) << name;
+    const std::vector<Polygon> all = io::blockage_polygons(*r.layout);
+    const Box map = r.layout->boundary->box;
+    for (int k = 0; k < sanitized_share(60, 6); ++k) {
+      const int w = 3 + static_cast<int>(rng() % 12), h = 3 + static_cast<int>(rng() % 12);
+      const int cx = static_cast<int>(rng() % static_cast<unsigned>((map.hi.x - map.lo.x) / 10 - w + 1));
+      const int cy = static_cast<int>(rng() % static_cast<unsigned>((map.hi.y - map.lo.y) / 10 - h + 1));
+      const Box win{{map.lo.x + 10 * cx, map.lo.y + 10 * cy}, {map.lo.x + 10 * (cx + w), map.lo.y + 10 * (cy + h)}};
+      std::vector<Polygon> in;
+      for (const Polygon& p : all) {
+        const Box pb = bbox(p.outer);
+        if (pb.hi.x > win.lo.x && pb.lo.x < win.hi.x && pb.hi.y > win.lo.y && pb.lo.y < win.hi.y) in.push_back(p);
+      }
+      SCOPED_TRACE(std::string(name) + " window at cell " + std::to_string(cx) + "," + std::to_string(cy) + " size " +
+                   std::to_string(w) + "x" + std::to_string(h));
+      // the raster
+      std::vector<char> blocked(static_cast<std::size_t>(w * h), 0);
+      auto at = [&](int i, int j) -> char& { return blocked[static_cast<std::size_t>(j * w + i)]; };
+      for (int i = 0; i < w; ++i)
+        for (int j = 0; j < h; ++j) {
+          const Point c{win.lo.x + 10 * i + 5, win.lo.y + 10 * j + 5};
+          for (const Polygon& p : in) at(i, j) = at(i, j) || geom::locate(c, p) == geom::Location::Inside;
+        }
+      auto groups = [&](bool of_blocked, bool* island) {
+        std::vector<int> seen(static_cast<std::size_t>(w * h), 0);
+        int n = 0;
+        for (int s = 0; s < w * h; ++s) {
+          if (seen[static_cast<std::size_t>(s)] || (blocked[static_cast<std::size_t>(s)] != 0) != of_blocked) continue;
+          ++n;
+          bool border = false;
+          std::vector<int> stack{s};
+          seen[static_cast<std::size_t>(s)] = 1;
+          while (!stack.empty()) {
+            const int c = stack.back();
+            stack.pop_back();
+            const int i = c % w, j = c / w;
+            border = border || i == 0 || j == 0 || i == w - 1 || j == h - 1;
+            for (int di = -1; di <= 1; ++di)
+              for (int dj = -1; dj <= 1; ++dj) {
+                if ((di == 0 && dj == 0) || (!of_blocked && di != 0 && dj != 0)) continue;  // free: 4-neighbours
+                const int ni = i + di, nj = j + dj;
+                if (ni < 0 || nj < 0 || ni >= w || nj >= h) continue;
+                const int nc = nj * w + ni;
+                if (seen[static_cast<std::size_t>(nc)] || (blocked[static_cast<std::size_t>(nc)] != 0) != of_blocked) continue;
+                seen[static_cast<std::size_t>(nc)] = 1;
+                stack.push_back(nc);
+              }
+          }
+          if (of_blocked && !border) *island = true;
+        }
+        return n;
+      };
+      bool island = false;
+      groups(true, &island);
+      const int free_groups = groups(false, nullptr);
+      bool touch = false;
+      for (int i = 1; i < w; ++i)
+        for (int j = 1; j < h; ++j) {
+          const bool a = at(i - 1, j - 1), b = at(i, j - 1), c = at(i - 1, j), d = at(i, j);
+          touch = touch || (a && d && !b && !c) || (b && c && !a && !d);
+        }
+      const FreeSpacePolygon f = router::free_space_polygon(win, in);
+      if (island) {
+        EXPECT_EQ(f.status, FreeSpacePolygon::Status::Island);
+        ++islands;
+      } else if (free_groups == 0) {
+        EXPECT_EQ(f.status, FreeSpacePolygon::Status::Empty);
+        ++empty;
+      } else if (free_groups > 1) {
+        EXPECT_EQ(f.status, FreeSpacePolygon::Status::Pieces);
+        EXPECT_EQ(f.pieces.size(), static_cast<std::size_t>(free_groups));
+        ++pieces;
+      } else if (touch) {
+        EXPECT_EQ(f.status, FreeSpacePolygon::Status::Pieces);
+        EXPECT_EQ(f.pieces.size(), 1u);
+        ++touches;
+      } else {
+        ASSERT_EQ(f.status, FreeSpacePolygon::Status::Ok);
+        std::vector<Box> cells;
+        for (int i = 0; i < w; ++i)
+          for (int j = 0; j < h; ++j)
+            if (!at(i, j)) cells.push_back({{win.lo.x + 10 * i, win.lo.y + 10 * j}, {win.lo.x + 10 * (i + 1), win.lo.y + 10 * (j + 1)}});
+        EXPECT_EQ(canonical(f.ring), canonical(union_ring(cells)));
+        EXPECT_EQ(LinkPolygon(f.ring).diameter().links, oracle::LinkPolygonReference(f.ring).diameter().links);
+        ++ok;
+      }
+    }
+  }
+  std::printf("Moving AI windows: %d simple polygons (diameters checked), %d with islands, %d in pieces, %d touching "
+              "themselves, %d full\n", ok, islands, pieces, touches, empty);
+  EXPECT_GE(ok, sanitized_share(40, 6));
+  EXPECT_GE(islands + pieces + touches, sanitized_share(40, 6));
 }
 
 }  // namespace
