@@ -65,15 +65,6 @@ Ring box_ring(const Box& b) { return {b.lo, {b.hi.x, b.lo.y}, b.hi, {b.lo.x, b.h
 
 FreeSpacePolygon free_space_polygon(const Box& domain, std::span<const Polygon> blockages) {
   FreeSpacePolygon out;
-  for (std::size_t i = 0; i < blockages.size(); ++i) {
-    bool ok = rectilinear(blockages[i].outer);
-    for (const Ring& h : blockages[i].holes) ok = ok && rectilinear(h);
-    if (!ok) {
-      out.status = FreeSpacePolygon::Status::Sloped;
-      out.blockage = i;
-      return out;
-    }
-  }
   // The blockages together with a frame around the domain (its shell one unit outside, its hole
   // the domain): one obstacle holds the frame and everything that reaches the domain side; its
   // holes are the pieces of free space (the union links each piece's boundary into a ring of its
@@ -121,6 +112,41 @@ FreeSpacePolygon free_space_polygon(const Box& domain, std::span<const Polygon> 
     out.pieces = {*twice};
     return out;
   }
+  // a sloped edge of free space (sloped blockage edges outside the boundary, or covered by other
+  // blockages, do not matter): name a blockage ring with a sloped edge that meets it
+  const Ring& r = pieces[0];
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    const Point a = r[i], b = r[(i + 1) % r.size()];
+    if (a.x == b.x || a.y == b.y) continue;
+    out.status = FreeSpacePolygon::Status::Sloped;
+    out.at = a;
+    for (std::size_t k = 0; k < blockages.size(); ++k) {
+      for (int h = -1; h < static_cast<int>(blockages[k].holes.size()); ++h) {
+        const Ring& br = h < 0 ? blockages[k].outer : blockages[k].holes[static_cast<std::size_t>(h)];
+        for (std::size_t j = 0; j < br.size(); ++j) {
+          const Point c = br[j], d = br[(j + 1) % br.size()];
+          if (c.x == d.x || c.y == d.y) continue;
+          if (geom::intersect({a, b}, {c, d}) != geom::SegmentIntersection::None) {
+            out.blockage = k, out.sloped_ring = h;
+            return out;
+          }
+        }
+      }
+    }
+    // (rounding moved the edge off every input edge: name the first blockage with a sloped edge)
+    for (std::size_t k = 0; k < blockages.size(); ++k) {
+      if (!rectilinear(blockages[k].outer)) {
+        out.blockage = k, out.sloped_ring = -1;
+        return out;
+      }
+      for (std::size_t h = 0; h < blockages[k].holes.size(); ++h)
+        if (!rectilinear(blockages[k].holes[h])) {
+          out.blockage = k, out.sloped_ring = static_cast<int>(h);
+          return out;
+        }
+    }
+    return out;
+  }
   out.status = FreeSpacePolygon::Status::Ok;
   out.ring = std::move(pieces[0]);
   return out;
@@ -129,7 +155,9 @@ FreeSpacePolygon free_space_polygon(const Box& domain, std::span<const Polygon> 
 LinkPolygon::LinkPolygon(const Ring& polygon) : ring_(clean(polygon)) {
   if (ring_.size() < 4 || !rectilinear(ring_))
     throw std::invalid_argument("LinkPolygon: the ring is not a rectilinear polygon");
-  if (!geom::validate_ring(ring_).empty()) throw std::invalid_argument("LinkPolygon: the ring is not simple");
+  // the ring as given (a spike that clean() would fold away is an error, as in a layout file)
+  if (!geom::validate_ring(polygon).empty() || !geom::validate_ring(ring_).empty())
+    throw std::invalid_argument("LinkPolygon: the ring is not simple");
   if (geom::twice_area(ring_) < 0) std::reverse(ring_.begin(), ring_.end());
   // the complement of the polygon in its bounding box, as obstacles of the bend-aware router
   Box box{ring_[0], ring_[0]};

@@ -46,7 +46,8 @@ namespace taut::router {
 struct FreeSpacePolygon {
   enum class Status {
     Ok,
-    Sloped,  // `blockage` has an edge that is neither horizontal nor vertical
+    Sloped,  // free space has an edge that is neither horizontal nor vertical, at `at`, along a
+             // sloped edge of `blockage` (its ring `sloped_ring`)
     Island,  // `blockage` (with those touching it) does not reach the domain side: a hole in free space
     Pieces,  // free space falls into several pieces (`pieces`: the lowest vertex of each), or is one
              // piece that touches itself at a point where blockages meet (`pieces`: that point)
@@ -55,10 +56,13 @@ struct FreeSpacePolygon {
   Status status = Status::Empty;
   geom::Ring ring;                  // Ok: counter-clockwise, no repeated or collinear vertex
   std::size_t blockage = 0;         // Sloped, Island: index into the blockage polygons
+  int sloped_ring = -1;             // Sloped: -1 the outer ring, k hole k
+  geom::Point at;                   // Sloped: a vertex of the sloped free-space edge
   std::vector<geom::Point> pieces;  // Pieces: see above
 };
 // domain: a closed box with non-empty interior; blockages: valid polygons (geom/validate.h), any
-// orientation, holes allowed.
+// orientation, holes allowed. Checked in this order: islands, no free space, pieces, a sloped
+// edge of free space (sloped blockage edges outside the domain or under other blockages are fine).
 FreeSpacePolygon free_space_polygon(const geom::Box& domain, std::span<const geom::Polygon> blockages);
 
 struct LinkPath {
@@ -80,7 +84,7 @@ class LinkPolygon {
  public:
   // A simple rectilinear ring with integer vertices, either orientation (collinear and repeated
   // consecutive vertices are dropped); std::invalid_argument when an edge is sloped or the ring is
-  // not simple.
+  // not simple (a spike that turns back on itself included).
   explicit LinkPolygon(const geom::Ring& polygon);
   ~LinkPolygon();
   LinkPolygon(LinkPolygon&&) noexcept;
@@ -91,7 +95,8 @@ class LinkPolygon {
   // A path with the fewest links, L1-shortest among those; std::nullopt when an end lies outside.
   std::optional<LinkPath> path(geom::Point a, geom::Point b) const;
   std::optional<int> distance(geom::Point a, geom::Point b) const;
-  // The link distance from a to each target, from one search (O(1) per target beyond it);
+  // The link distance from a to each target, from one search; a target that is a polygon vertex
+  // costs O(1) beyond it, another point its own tracks and a scan of the graph's tracks.
   // std::invalid_argument when a point lies outside.
   std::vector<int> distances(geom::Point a, std::span<const geom::Point> targets) const;
   LinkDiameter diameter() const;

@@ -32,24 +32,32 @@ std::optional<geom::Ring> diameter_free_space(const io::Layout& layout) {
   const std::vector<geom::Polygon> polys = io::blockage_polygons(layout, &owner);
   const router::FreeSpacePolygon f = router::free_space_polygon(layout.boundary->box, polys);
   using S = router::FreeSpacePolygon::Status;
-  auto shape_line = [&](std::size_t i) {
-    const io::Blockage& b = layout.blockages[owner[i]];
+  auto shape_index = [&](std::size_t i) {  // the polygon's shape within its blockage
     std::size_t first = i;
     while (first > 0 && owner[first - 1] == owner[i]) --first;
-    return b.shapes[i - first].line;
+    return i - first;
   };
   switch (f.status) {
     case S::Ok: return f.ring;
-    case S::Sloped:
-    case S::Island: {
-      const bool sloped = f.status == S::Sloped;
+    case S::Sloped: {
+      const io::Blockage& b = layout.blockages[owner[f.blockage]];
+      const io::Shape& shape = b.shapes[shape_index(f.blockage)];
+      const int line = f.sloped_ring >= 0 && static_cast<std::size_t>(f.sloped_ring) < shape.hole_lines.size()
+                           ? shape.hole_lines[static_cast<std::size_t>(f.sloped_ring)]
+                           : shape.line;
       print_diagnostics({diameter_error(
-          layout, sloped ? "DIAM-0002" : "DIAM-0003", shape_line(f.blockage),
-          "blockage \"" + layout.blockages[owner[f.blockage]].id + "\" " +
-              (sloped ? "has an edge that is neither horizontal nor vertical: the link diameter is defined for "
-                        "rectilinear free space"
-                      : "does not reach the boundary (nor does a blockage touching it): free space has a hole "
-                        "around it, and the link diameter needs a simple polygon"))});
+          layout, "DIAM-0002", line,
+          "blockage \"" + b.id + "\" gives free space an edge that is neither horizontal nor vertical (at " +
+              point_text(f.at) + "): the link diameter is defined for rectilinear free space")});
+      return std::nullopt;
+    }
+    case S::Island: {
+      const io::Blockage& b = layout.blockages[owner[f.blockage]];
+      print_diagnostics({diameter_error(
+          layout, "DIAM-0003", b.shapes[shape_index(f.blockage)].line,
+          std::string(b.shapes.size() > 1 ? "a shape of blockage \"" : "blockage \"") + b.id +
+              "\" does not reach the boundary (nor does a blockage touching it): free space has a hole around it, "
+              "and the link diameter needs a simple polygon")});
       return std::nullopt;
     }
     case S::Pieces: {

@@ -131,6 +131,23 @@ TEST(Diameter, TwoWaysToWriteTheSamePolygon) {
   EXPECT_GE(links, 3);
 }
 
+// Sloped blockage edges that free space never sees: outside the boundary, or under another
+// blockage. The diameter is computed.
+TEST(Diameter, SlopedEdgesFreeSpaceDoesNotSee) {
+  const std::string f = test::layout_file("diameter_sloped_away",
+      "<boundary x0=\"0\" y0=\"0\" x1=\"10\" y1=\"10\"/>"
+      "<blockage id=\"far\"><polygon points=\"100,100 110,100 100,110\"/></blockage>"
+      "<blockage id=\"cut\"><polygon points=\"4,4 12,4 20,12 20,20 4,20\"/></blockage>"
+      "<blockage id=\"under\"><polygon points=\"0,0 3,0 0,3\"/></blockage>"
+      "<blockage id=\"over\"><rect x0=\"0\" y0=\"0\" x1=\"3\" y1=\"3\"/></blockage>");
+  const test::RunResult r = run_taut({"diameter", f, "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  const geom::Ring ring = free_ring(f);
+  EXPECT_EQ(j["diameter"].get<int>(), oracle::LinkPolygonReference(ring).diameter().links);
+  expect_legal_wire(ring, j);
+}
+
 TEST(Diameter, RefusalsNameTheFileAndLine) {
   const std::string dir = test::temp_dir("diameter_refusals");
   struct Case {
@@ -141,6 +158,14 @@ TEST(Diameter, RefusalsNameTheFileAndLine) {
        ":1:", "no <boundary>"},
       {"sloped", "<boundary x0=\"0\" y0=\"0\" x1=\"10\" y1=\"10\"/>\n<blockage id=\"tri\">\n<polygon points=\"0,0 4,0 0,4\"/></blockage>",
        "DIAM-0002", ":4:", "blockage \"tri\""},
+      // the sloped edge is a hole's, on its own line
+      {"slopedhole", "<boundary x0=\"0\" y0=\"0\" x1=\"20\" y1=\"20\"/>\n<blockage id=\"frame\"><polygon points=\"0,0 20,0 20,20 0,20\">\n"
+                     "<hole points=\"2,2 18,2 18,18 10,18 2,10\"/></polygon></blockage>",
+       "DIAM-0002", ":4:", "blockage \"frame\" gives free space an edge"},
+      // one shape of a blockage is an island, its other shape reaches the boundary
+      {"shapeisland", "<boundary x0=\"0\" y0=\"0\" x1=\"10\" y1=\"10\"/>\n<blockage id=\"m\"><rect x0=\"0\" y0=\"0\" x1=\"2\" y1=\"2\"/>\n"
+                      "<rect x0=\"5\" y0=\"5\" x1=\"6\" y1=\"6\"/></blockage>",
+       "DIAM-0003", ":4:", "a shape of blockage \"m\""},
       {"island", "<boundary x0=\"0\" y0=\"0\" x1=\"10\" y1=\"10\"/>\n<blockage id=\"isle\"><rect x0=\"3\" y0=\"3\" x1=\"5\" y1=\"5\"/></blockage>",
        "DIAM-0003", ":3:", "blockage \"isle\""},
       {"pieces", "\n<boundary x0=\"0\" y0=\"0\" x1=\"10\" y1=\"10\"/><blockage id=\"wall\"><rect x0=\"4\" y0=\"0\" x1=\"5\" y1=\"10\"/></blockage>",

@@ -310,7 +310,8 @@ TEST(LinkPolygon, HandCases) {
   const FreeSpacePolygon f = router::free_space_polygon({{-M, -M}, {M, M}}, cut);
   ASSERT_EQ(f.status, FreeSpacePolygon::Status::Ok);
   EXPECT_EQ(canonical(f.ring), canonical(big.ring()));
-  // not rectilinear, not simple
+  // not rectilinear, not simple, a spike (which dropping collinear vertices would fold away)
+  EXPECT_THROW(LinkPolygon({{0, 0}, {10, 0}, {10, 10}, {5, 10}, {5, 15}, {5, 10}, {0, 10}}), std::invalid_argument);
   EXPECT_THROW(LinkPolygon({{0, 0}, {10, 0}, {0, 10}}), std::invalid_argument);
   EXPECT_THROW(LinkPolygon({{0, 0}, {4, 0}, {4, 4}, {2, 4}, {2, 0}, {0, 0}, {0, -2}, {-2, -2}, {-2, 0}}),
                std::invalid_argument);
