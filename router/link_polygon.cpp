@@ -50,10 +50,10 @@ Ring clean(const Ring& in) {
   return r;
 }
 
-Point lowest(const Ring& r) {
-  return *std::min_element(r.begin(), r.end(),
-                           [](Point a, Point b) { return a.y != b.y ? a.y < b.y : a.x < b.x; });
-}
+// Lowest, then leftmost, first.
+bool lower(Point a, Point b) { return a.y != b.y ? a.y < b.y : a.x < b.x; }
+
+Point lowest(const Ring& r) { return *std::min_element(r.begin(), r.end(), lower); }
 
 // A box around `b` grown by one: the frame's shell. It may reach 2^30, one past the coordinate
 // limit, which the union's integer arithmetic handles; it is clipped away again.
@@ -97,16 +97,15 @@ FreeSpacePolygon free_space_polygon(const Box& domain, std::span<const Polygon> 
     std::reverse(r.begin(), r.end());
     pieces.push_back(std::move(r));
   }
-  auto by_xy = [](Point a, Point b) { return a.y != b.y ? a.y < b.y : a.x < b.x; };
   if (pieces.size() > 1) {
     out.status = FreeSpacePolygon::Status::Pieces;
     for (const Ring& r : pieces) out.pieces.push_back(lowest(r));
-    std::sort(out.pieces.begin(), out.pieces.end(), by_xy);
+    std::sort(out.pieces.begin(), out.pieces.end(), lower);
     return out;
   }
   // one piece whose boundary passes a point twice: it touches itself where blockages meet
   std::vector<Point> v = pieces[0];
-  std::sort(v.begin(), v.end(), by_xy);
+  std::sort(v.begin(), v.end(), lower);
   if (const auto twice = std::adjacent_find(v.begin(), v.end()); twice != v.end()) {
     out.status = FreeSpacePolygon::Status::Pieces;
     out.pieces = {*twice};
@@ -182,9 +181,12 @@ LinkPolygon& LinkPolygon::operator=(LinkPolygon&&) noexcept = default;
 
 bool LinkPolygon::contains(Point p) const { return geom::locate(p, ring_) != geom::Location::Outside; }
 
+// The router's free space is the closed polygon (its complement's open interior and the rim
+// outside the box are not free), so its status says when an end lies outside: no second
+// point-in-polygon test per query.
 std::optional<LinkPath> LinkPolygon::path(Point a, Point b) const {
-  if (!contains(a) || !contains(b)) return std::nullopt;
   const BendPath p = router_->path(a, b, BendMetric::Link, 0);
+  if (p.status == WireStatus::SourceNotFree || p.status == WireStatus::TargetNotFree) return std::nullopt;
   if (p.status != WireStatus::Ok)
     throw std::logic_error("LinkPolygon: no path between two points of a simple polygon");
   LinkPath out;
@@ -195,20 +197,22 @@ std::optional<LinkPath> LinkPolygon::path(Point a, Point b) const {
 }
 
 std::optional<int> LinkPolygon::distance(Point a, Point b) const {
-  if (!contains(a) || !contains(b)) return std::nullopt;
   const Point sinks[1] = {b};
-  return distances(a, sinks)[0];
+  std::optional<std::vector<int>> d = search(a, sinks);
+  if (!d) return std::nullopt;
+  return (*d)[0];
 }
 
 std::vector<int> LinkPolygon::distances(Point a, std::span<const Point> targets) const {
-  // the router's free space is the closed polygon (its complement's open interior and the
-  // outside of the box are not free), so its status says which end lies outside
+  std::optional<std::vector<int>> d = search(a, targets);
+  if (!d) throw std::invalid_argument("LinkPolygon::distances: a point lies outside the polygon");
+  return std::move(*d);
+}
+
+std::optional<std::vector<int>> LinkPolygon::search(Point a, std::span<const Point> targets) const {
   WireStatus status = WireStatus::Ok;
   const std::vector<std::int64_t> c = router_->fewest_bends(a, targets, &status);
-  if (status == WireStatus::SourceNotFree)
-    throw std::invalid_argument("LinkPolygon::distances: the source lies outside the polygon");
-  if (status == WireStatus::TargetNotFree)
-    throw std::invalid_argument("LinkPolygon::distances: a target lies outside the polygon");
+  if (status == WireStatus::SourceNotFree || status == WireStatus::TargetNotFree) return std::nullopt;
   std::vector<int> out;
   for (std::size_t i = 0; i < targets.size(); ++i) {
     if (c[i] < 0) throw std::logic_error("LinkPolygon: no path between two points of a simple polygon");
@@ -220,11 +224,7 @@ std::vector<int> LinkPolygon::distances(Point a, std::span<const Point> targets)
 LinkDiameter LinkPolygon::diameter() const {
   LinkDiameter out;
   out.vertices = ring_.size();
-  std::vector<Point> convex;
-  for (std::size_t i = 0; i < ring_.size(); ++i) {
-    const Point a = ring_[(i + ring_.size() - 1) % ring_.size()], b = ring_[i], c = ring_[(i + 1) % ring_.size()];
-    if (geom::orientation(a, b, c) > 0) convex.push_back(b);
-  }
+  const std::vector<Point> convex = convex_corners();
   out.convex_vertices = convex.size();
   // Exact by bounding eccentricities (Takes and Kosters, "Determining the diameter of small world
   // networks", 2011): link distance is a metric (two paths joined have at most the sum of their
@@ -270,6 +270,15 @@ LinkDiameter LinkPolygon::diameter() const {
   out.path = *path(out.from, out.to);
   if (out.path.links != out.links) throw std::logic_error("LinkPolygon: the diameter's path disagrees with its search");
   return out;
+}
+
+std::vector<Point> LinkPolygon::convex_corners() const {
+  std::vector<Point> convex;
+  for (std::size_t i = 0; i < ring_.size(); ++i) {
+    const Point a = ring_[(i + ring_.size() - 1) % ring_.size()], b = ring_[i], c = ring_[(i + 1) % ring_.size()];
+    if (geom::orientation(a, b, c) > 0) convex.push_back(b);
+  }
+  return convex;
 }
 
 const BendGraphStats& LinkPolygon::graph_stats() const { return router_->stats(); }

@@ -100,9 +100,13 @@ class LinkPolygon {
   // std::invalid_argument when a point lies outside.
   std::vector<int> distances(geom::Point a, std::span<const geom::Point> targets) const;
   LinkDiameter diameter() const;
+  // The vertices with an interior angle of 90 degrees, in ring order.
+  std::vector<geom::Point> convex_corners() const;
   const BendGraphStats& graph_stats() const;
 
  private:
+  // distances() of points that may lie outside: std::nullopt then.
+  std::optional<std::vector<int>> search(geom::Point a, std::span<const geom::Point> targets) const;
   geom::Ring ring_;
   std::unique_ptr<BendRouter> router_;
 };

@@ -14,6 +14,7 @@
 #include "oracle/l1_oracle.h"
 #include "oracle/link_polygon_oracle.h"
 #include "router/link_polygon.h"
+#include "support/polygon_frame.h"
 #include "support/run.h"
 
 namespace taut {
@@ -61,19 +62,9 @@ void expect_legal_wire(const geom::Ring& ring, const nlohmann::json& j) {
     EXPECT_EQ(ref.distance(a, b), std::optional<int>(a == b ? 0 : 1)) << pt(a) << " " << pt(b);
   }
   EXPECT_EQ(len, j["length"].get<std::int64_t>());
-  // L1-shortest: the L1 reference on the polygon's complement in a box around it
-  geom::Box box{ring[0], ring[0]};
-  for (const Point p : ring) {
-    box.lo = {std::min(box.lo.x, p.x), std::min(box.lo.y, p.y)};
-    box.hi = {std::max(box.hi.x, p.x), std::max(box.hi.y, p.y)};
-  }
-  geom::Ring hole(ring.rbegin(), ring.rend());
-  const geom::Box outer{{box.lo.x - 1, box.lo.y - 1}, {box.hi.x + 1, box.hi.y + 1}};
-  const geom::Polygon frame[1] = {geom::Polygon{
-      {outer.lo, {outer.hi.x, outer.lo.y}, outer.hi, {outer.lo.x, outer.hi.y}}, {hole}}};
-  const geom::NormalizedObstacles norm = geom::normalize_obstacles(frame, box);
-  const oracle::L1Reference l1(norm.domain, norm.obstacles);
-  EXPECT_EQ(l1.distance(pts.front(), pts.back()), std::optional<std::int64_t>(len));
+  // L1-shortest: the L1 reference inside the polygon
+  const test::L1InPolygon l1(ring);
+  EXPECT_EQ(l1.ref->distance(pts.front(), pts.back()), std::optional<std::int64_t>(len));
 }
 
 TEST(Diameter, DesignMatchesTheExhaustiveReference) {

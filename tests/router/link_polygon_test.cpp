@@ -38,6 +38,7 @@
 #include "oracle/l1_oracle.h"
 #include "oracle/link_polygon_oracle.h"
 #include "router/link_polygon.h"
+#include "support/polygon_frame.h"
 #include "support/random_shapes.h"
 #include "support/run.h"
 #include "support/sanitized.h"
@@ -60,40 +61,6 @@ std::string ring_text(const Ring& r) {
   s << "}";
   return s.str();
 }
-
-Box bbox(const Ring& r) {
-  Box b{r[0], r[0]};
-  for (const Point p : r) {
-    b.lo = {std::min(b.lo.x, p.x), std::min(b.lo.y, p.y)};
-    b.hi = {std::max(b.hi.x, p.x), std::max(b.hi.y, p.y)};
-  }
-  return b;
-}
-
-Ring box_ring(const Box& b) { return {b.lo, {b.hi.x, b.lo.y}, b.hi, {b.lo.x, b.hi.y}}; }
-
-// The ring rotated to start at its lowest-then-leftmost vertex, counter-clockwise.
-Ring canonical(Ring r) {
-  if (geom::twice_area(r) < 0) std::reverse(r.begin(), r.end());
-  const auto it = std::min_element(r.begin(), r.end(), [](Point a, Point b) { return a.y != b.y ? a.y < b.y : a.x < b.x; });
-  std::rotate(r.begin(), it, r.end());
-  return r;
-}
-
-// The L1 reference on the polygon's complement in a box around it.
-struct L1InPolygon {
-  geom::NormalizedObstacles norm;
-  std::unique_ptr<oracle::L1Reference> ref;
-  explicit L1InPolygon(const Ring& ring) {
-    const Box b = bbox(ring);
-    Ring hole(ring.rbegin(), ring.rend());
-    if (geom::twice_area(hole) > 0) std::reverse(hole.begin(), hole.end());
-    const Box outer{{b.lo.x - 1, b.lo.y - 1}, {b.hi.x + 1, b.hi.y + 1}};
-    const Polygon frame[1] = {Polygon{box_ring(outer), {hole}}};
-    norm = geom::normalize_obstacles(frame, b);
-    ref = std::make_unique<oracle::L1Reference>(norm.domain, norm.obstacles);
-  }
-};
 
 // A path the router printed: from a to b, `links` segments, each axis-parallel and inside the
 // polygon (the reference's distance of its two ends is 1: one free straight link), and of L1
@@ -204,7 +171,7 @@ TEST(LinkPolygon, RandomPolygonsMatchTheReference) {
     EXPECT_EQ(l1.ref->distance(d.from, d.to), std::optional<std::int64_t>(d.path.length));
 
     // query pairs
-    const Box b = bbox(ring);
+    const Box b = ring_box(ring);
     auto random_point = [&]() -> Point {
       switch (rng() % 4) {
         case 0: return ring[rng() % ring.size()];
@@ -359,7 +326,7 @@ TEST(LinkPolygon, MovingAiWindows) {
       const Box win{{map.lo.x + 10 * cx, map.lo.y + 10 * cy}, {map.lo.x + 10 * (cx + w), map.lo.y + 10 * (cy + h)}};
       std::vector<Polygon> in;
       for (const Polygon& p : all) {
-        const Box pb = bbox(p.outer);
+        const Box pb = ring_box(p.outer);
         if (pb.hi.x > win.lo.x && pb.lo.x < win.hi.x && pb.hi.y > win.lo.y && pb.lo.y < win.hi.y) in.push_back(p);
       }
       SCOPED_TRACE(std::string(name) + " window at cell " + std::to_string(cx) + "," + std::to_string(cy) + " size " +
