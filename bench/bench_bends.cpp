@@ -7,7 +7,10 @@
 // the query the combined metric generalises). The growth exponent between consecutive sizes is
 // log(t2 / t1) / log(n2 / n1). Up to --ref-max vertices (default 200) the brute-force
 // state-graph reference (tests/oracle/bend_oracle.h: Hanan grid x direction) answers the same
-// combined queries in the same run, and its answers are compared.
+// combined queries in the same run, and its answers are compared. `shape`: the same pairs with each
+// end a square pin at that vertex (the largest of side domain/100, /200, ... that overlaps no
+// obstacle; a wire may end anywhere on it: the search starts from the square's candidate points),
+// combined metric, as a ratio to the point query.
 //
 //   bench_bends [--sizes N,N,...] [--queries Q] [--kind rects|maze] [--ref-max N]
 #include <cmath>
@@ -28,7 +31,7 @@ using taut::geom::Point;
 
 struct Row {
   std::int64_t n = 0;
-  double sort = 0, build = 0, combined = 0, link = 0, l1 = 0, ref = -1;
+  double sort = 0, build = 0, combined = 0, link = 0, l1 = 0, ref = -1, shape = 0;
   int ref_agree = 0;
   taut::router::BendGraphStats stats;
   std::size_t edges = 0;
@@ -59,9 +62,9 @@ int main(int argc, char** argv) {
   }
   std::printf("taut bend benchmark: kind=%s, %d queries per size (pairs of spread obstacle vertices), one thread\n",
               kind_name.c_str(), queries);
-  std::printf("%8s %8s %9s %10s %10s | %9s %9s | %10s %10s %10s | %8s %8s %8s\n", "n", "nodes", "tracks",
+  std::printf("%8s %8s %9s %10s %10s | %9s %9s | %10s %10s %10s | %8s %8s %8s | %10s\n", "n", "nodes", "tracks",
               "straight", "L-edges", "build(s)", "/sort", "comb(ms)", "link(ms)", "l1(ms)", "comb/l1",
-              "link/l1", "found (l1)");
+              "link/l1", "found (l1)", "shape/comb");
   std::vector<Row> rows;
   for (const std::int64_t size : sizes) {
     const taut::bench::BenchLayout b = taut::bench::bench_layout(*kind, size);
@@ -88,6 +91,24 @@ int main(int argc, char** argv) {
     row.link = seconds_of([&] {
                  for (const auto& [s, t] : pairs) (void)router->path(s, t, taut::router::BendMetric::Link, 0);
                }, 1) / std::max<std::size_t>(1, pairs.size());
+    // square pins at the pairs' ends
+    auto square_at = [&](Point p) {
+      const taut::geom::Box& d = b.norm.domain;
+      for (std::int64_t side = std::max<std::int64_t>(1, (std::int64_t{d.hi.x} - d.lo.x) / 100); side >= 1; side /= 2)
+        for (const auto& [sx, sy] : {std::pair{1, 1}, std::pair{-1, 1}, std::pair{-1, -1}, std::pair{1, -1}}) {
+          const auto q = [&](std::int64_t dx, std::int64_t dy) {
+            return Point{static_cast<taut::geom::Coord>(p.x + sx * dx), static_cast<taut::geom::Coord>(p.y + sy * dy)};
+          };
+          taut::geom::Polygon sq{{q(0, 0), q(side, 0), q(side, side), q(0, side)}, {}};
+          if (!router->pin_meets_obstacle(sq)) return sq;
+        }
+      return taut::geom::Polygon{{p}, {}};
+    };
+    std::vector<std::pair<taut::geom::Polygon, taut::geom::Polygon>> pins;
+    for (const auto& [s, t] : pairs) pins.emplace_back(square_at(s), square_at(t));
+    row.shape = seconds_of([&] {
+                  for (const auto& [s, t] : pins) (void)router->path(s, t, taut::router::BendMetric::Combined, 1000);
+                }, 1) / std::max<std::size_t>(1, pins.size());
     taut::router::L1Router l1(b.norm.domain, b.norm.obstacles);
     row.l1 = seconds_of([&] {
                row.l1_found = 0;
@@ -107,10 +128,10 @@ int main(int argc, char** argv) {
                 }, 1) / std::max<std::size_t>(1, pairs.size());
     }
     const auto& st = row.stats;
-    std::printf("%8lld %8zu %9zu %10zu %10zu | %9.3f %9.1f | %10.2f %10.2f %10.2f | %8.2f %8.2f %5d/%d (%d)\n",
+    std::printf("%8lld %8zu %9zu %10zu %10zu | %9.3f %9.1f | %10.2f %10.2f %10.2f | %8.2f %8.2f %5d/%d (%d) | %10.2f\n",
                 static_cast<long long>(row.n), st.nodes, st.tracks, st.straight_edges, st.l_edges, row.build,
                 row.build / row.sort, row.combined * 1e3, row.link * 1e3, row.l1 * 1e3, row.combined / row.l1,
-                row.link / row.l1, row.found, row.queries, row.l1_found);
+                row.link / row.l1, row.found, row.queries, row.l1_found, row.shape / row.combined);
     if (row.ref >= 0)
       std::printf("%8s reference: %.2f ms per query (%.0f x combined), %d of %d answers equal\n", "", row.ref * 1e3,
                   row.ref / row.combined, row.ref_agree, row.queries);

@@ -20,6 +20,7 @@
 
 #include "geom/index.h"
 #include "geom/predicates.h"
+#include "router/pin_shapes.h"
 
 namespace taut::router {
 
@@ -181,9 +182,19 @@ struct BendRouter::Impl {
   Graph graph;
   BendGraphStats stats;
 
-  Impl(const Box& d, std::span<const Polygon> obs) : domain(d), obstacles(obs.begin(), obs.end()), index(obs) {}
+  PinShapes pins;
+
+  Impl(const Box& d, std::span<const Polygon> obs)
+      : domain(d), obstacles(obs.begin(), obs.end()), index(obs), pins(obs, corners(d)) {}
+  static std::vector<Point> corners(const Box& d) { return {d.lo, {d.hi.x, d.lo.y}, d.hi, {d.lo.x, d.hi.y}}; }
 
   bool is_vertex(Point p) const { return vertex_nodes.count(key(p)) != 0; }
+  // p is in free space (a vertex with a wedge, or another point with free quadrants).
+  bool is_free(Point p) const {
+    const auto it = vertex_nodes.find(key(p));
+    if (it != vertex_nodes.end()) return !it->second.empty();
+    return !wedges_of(point_material(p)).empty();
+  }
 
   // The node of vertex p whose wedge holds direction k; -1 when none does.
   std::int32_t vertex_node(Point p, int k) const {
@@ -378,11 +389,26 @@ struct BendRouter::Impl {
   // Walks: the walks and chains. Costs: only `costs` (a sink not reached is not an error then).
   // Bends (link metric only): only the bends of `costs` (lengths 0), by a 0-1 breadth-first
   // search instead of Dijkstra.
+  // The source and each sink is a set of points, any of which will do (a point pin is one, a
+  // shape pin its candidates): the search starts from every free source point at cost 0 and
+  // takes the best of a sink's points. A set with no free point is not free.
   enum class Mode { Walks, Costs, Bends };
+  Search search(std::span<const Point> sources, std::span<const std::vector<Point>> sinks, BendMetric metric,
+                i64 bend_cost, Mode mode = Mode::Walks) const;
   Search search(Point s, std::span<const Point> sinks, BendMetric metric, i64 bend_cost,
-                Mode mode = Mode::Walks) const;
+                Mode mode = Mode::Walks) const {
+    std::vector<std::vector<Point>> sets;
+    sets.reserve(sinks.size());
+    for (const Point t : sinks) sets.push_back({t});
+    return search({&s, 1}, sets, metric, bend_cost, mode);
+  }
   BendPath path(Point s, Point t, BendMetric metric, i64 bend_cost) const;
-  BendTree tree(Point source, std::span<const Point> sinks, BendMetric metric, i64 bend_cost) const;
+  BendTree tree(std::span<const Point> sources, std::span<const std::vector<Point>> sinks, BendMetric metric,
+                i64 bend_cost) const;
+  // The candidate sets of pins (PinShapes::candidates; a point pin is its point; pins that
+  // share a point get it in both sets).
+  void pin_sets(const Polygon& source, std::span<const Polygon> sinks, std::vector<Point>& from,
+                std::vector<std::vector<Point>>& to) const;
 };
 
 namespace {
@@ -422,13 +448,16 @@ i64 l1_length(const std::vector<Point>& pts) {
 
 }  // namespace
 
-BendRouter::Impl::Search BendRouter::Impl::search(Point s, std::span<const Point> sinks, BendMetric metric,
+BendRouter::Impl::Search BendRouter::Impl::search(std::span<const Point> sources,
+                                                  std::span<const std::vector<Point>> sinks, BendMetric metric,
                                                   i64 bend_cost, Mode mode) const {
   Search out;
-  // The query points (0: the source, then the sinks): an obstacle vertex uses its nodes; another
-  // free point gets a node of its own (its one wedge) with its tracks.
-  std::vector<Point> q = {s};
-  q.insert(q.end(), sinks.begin(), sinks.end());
+  // The query points (group 0: the source's, group k + 1: sink k's): an obstacle vertex uses its
+  // nodes; another free point gets a node of its own (its one wedge) with its tracks.
+  std::vector<Point> q(sources.begin(), sources.end());
+  std::vector<std::size_t> group(q.size(), 0);
+  for (std::size_t k = 0; k < sinks.size(); ++k)
+    for (const Point t : sinks[k]) q.push_back(t), group.push_back(k + 1);
   const std::int32_t base = static_cast<std::int32_t>(nodes.size());
   const std::int32_t built = 2 * base;  // graph vertices of the built graph
   std::vector<Node> qnodes;
@@ -449,20 +478,30 @@ BendRouter::Impl::Search BendRouter::Impl::search(Point s, std::span<const Point
         }
       }
     }
-    if (ends[i].empty()) {
-      out.status = i == 0 ? WireStatus::SourceNotFree : WireStatus::TargetNotFree;
-      out.failed = i == 0 ? 0 : i - 1;
-      return out;
-    }
   }
+  {
+    std::vector<char> has_free(sinks.size() + 1, 0);
+    for (std::size_t i = 0; i < q.size(); ++i)
+      if (!ends[i].empty()) has_free[group[i]] = 1;
+    for (std::size_t g = 0; g <= sinks.size(); ++g)
+      if (!has_free[g]) {
+        out.status = g == 0 ? WireStatus::SourceNotFree : WireStatus::TargetNotFree;
+        out.failed = g == 0 ? 0 : g - 1;
+        return out;
+      }
+  }
+  // the query nodes that hold a source point
+  std::vector<char> source_qnode(qnodes.size(), 0);
+  for (std::size_t i = 0; i < q.size(); ++i)
+    if (group[i] == 0)
+      for (const std::int32_t n : ends[i])
+        if (n >= base) source_qnode[static_cast<std::size_t>(n - base)] = 1;
+  auto is_source_qnode = [&](std::int32_t n) { return n >= base && source_qnode[static_cast<std::size_t>(n - base)]; };
   auto weight = [&](i64 length, i64 bends) {
     return metric == BendMetric::Link ? Cost{bends, length} : Cost{i128{length} + i128{bend_cost} * bends, bends};
   };
   auto node_of = [&](std::int32_t gv) -> const Node& {
     return gv < built ? nodes[static_cast<std::size_t>(gv / 2)] : qnodes[static_cast<std::size_t>(gv / 2 - base)];
-  };
-  auto is_end = [&](std::size_t i, std::int32_t gv) {
-    return std::find(ends[i].begin(), ends[i].end(), gv / 2) != ends[i].end();
   };
 
   // the query nodes' tracks and edges: straight to the vertex a track ends on, L with the built
@@ -513,16 +552,24 @@ BendRouter::Impl::Search BendRouter::Impl::search(Point s, std::span<const Point
     Cost cost = kInf;
     std::optional<std::size_t> finish;     // index into finishes[k]
     std::int32_t direct_from = -1, direct_to = -1;  // an edge between the source and the sink
+    std::optional<Point> shared;           // a free point of the source and the sink
   };
   std::vector<Offer> offers(sinks.size());
-  for (const std::int32_t n : ends[0])
-    if (n < base)
-      for (const std::int32_t gv : {2 * n, 2 * n + 1}) starts.push_back({gv, -1, Cost{}});
-  for (std::size_t k = 0; k < sinks.size(); ++k) {
-    if (q[k + 1] == s) offers[k].cost = Cost{};  // a sink at the source
-    for (const std::int32_t n : ends[k + 1])
+  std::unordered_set<std::uint64_t> free_sources;
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    if (ends[i].empty()) continue;  // not free
+    if (group[i] == 0) free_sources.insert(key(q[i]));
+    for (const std::int32_t n : ends[i])
       if (n < base)
-        for (const std::int32_t gv : {2 * n, 2 * n + 1}) finishes[k].push_back({gv, -1, Cost{}});
+        for (const std::int32_t gv : {2 * n, 2 * n + 1}) {
+          if (group[i] == 0) starts.push_back({gv, -1, Cost{}});
+          else finishes[group[i] - 1].push_back({gv, -1, Cost{}});
+        }
+  }
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    if (group[i] == 0 || ends[i].empty() || !free_sources.count(key(q[i]))) continue;
+    Offer& o = offers[group[i] - 1];
+    if (!o.shared) o = Offer{Cost{}, std::nullopt, -1, -1, q[i]};  // a sink at the source
   }
   // the query points at each query node (0: the source), so an edge finds its ends in O(1)
   std::unordered_map<std::int32_t, std::vector<std::size_t>> at_node;
@@ -535,16 +582,16 @@ BendRouter::Impl::Search BendRouter::Impl::search(Point s, std::span<const Point
       if (a < built) continue;
       const auto it = at_node.find(a / 2);
       if (it == at_node.end()) continue;
-      if (it->second.front() == 0) {  // the source's node: an entry (a sink there is at the source)
+      if (is_source_qnode(a / 2)) {  // a source's node: an entry (a sink there is at the source)
         if (b < built) starts.push_back({b, a, w});
         continue;
       }
       for (const std::size_t i : it->second) {
-        const std::size_t k = i - 1;
+        const std::size_t k = group[i] - 1;
         if (b < built) {
           finishes[k].push_back({b, a, w});
-        } else if (is_end(0, b) && w < offers[k].cost) {
-          offers[k] = Offer{w, std::nullopt, b, a};
+        } else if (is_source_qnode(b / 2) && w < offers[k].cost) {
+          offers[k] = Offer{w, std::nullopt, b, a, std::nullopt};
         }
       }
     }
@@ -597,12 +644,12 @@ BendRouter::Impl::Search BendRouter::Impl::search(Point s, std::span<const Point
   std::vector<Cost> dist(nv, kInf);
   std::vector<std::size_t> pred(nv);
   for (std::size_t v = 0; v < nv; ++v) pred[v] = v;
-  std::vector<std::size_t> sources;
+  std::vector<std::size_t> roots;  // the graph vertices Dijkstra starts from
   std::vector<std::int32_t> entered_from(nv, -1);  // the source's query vertex; -1: a source vertex
   for (const Entry& e : starts) {
     const auto v = static_cast<std::size_t>(e.gv);
     if (e.w < dist[v]) {
-      if (dist[v] == kInf) sources.push_back(v);
+      if (dist[v] == kInf) roots.push_back(v);
       dist[v] = e.w;
       entered_from[v] = e.query;
     }
@@ -640,7 +687,7 @@ BendRouter::Impl::Search BendRouter::Impl::search(Point s, std::span<const Point
         if (o.cost == kInf) --*unoffered;
         else offered->erase(offered->find(o.cost));
         offered->insert(c);
-        o = Offer{c, i, -1, -1};
+        o = Offer{c, i, -1, -1, std::nullopt};
       }
     }
   };
@@ -659,9 +706,9 @@ BendRouter::Impl::Search BendRouter::Impl::search(Point s, std::span<const Point
       });
   std::vector<boost::default_color_type> color(nv, boost::white_color);
   try {
-    if (!sources.empty())
+    if (!roots.empty())
       boost::dijkstra_shortest_paths_no_init(
-          graph, sources.begin(), sources.end(), boost::make_iterator_property_map(pred.begin(), index),
+          graph, roots.begin(), roots.end(), boost::make_iterator_property_map(pred.begin(), index),
           boost::make_iterator_property_map(dist.begin(), index), wmap, index, std::less<Cost>(), add_costs, Cost{}, vis,
           boost::make_iterator_property_map(color.begin(), index));
   } catch (const Stop&) {
@@ -699,8 +746,8 @@ BendRouter::Impl::Search BendRouter::Impl::search(Point s, std::span<const Point
     }
     auto& walk = out.walks[k];
     auto add_gv = [&](std::int32_t gv) { walk.emplace_back(node_of(gv).p, gv % 2 == 0); };
-    if (q[k + 1] == s) {
-      walk.emplace_back(s, true);
+    if (o.shared) {
+      walk.emplace_back(*o.shared, true);
     } else if (!o.finish) {
       add_gv(o.direct_from);
       add_gv(o.direct_to);
@@ -741,9 +788,10 @@ BendPath BendRouter::Impl::path(Point s, Point t, BendMetric metric, i64 bend_co
   return out;
 }
 
-BendTree BendRouter::Impl::tree(Point source, std::span<const Point> sinks, BendMetric metric, i64 bend_cost) const {
+BendTree BendRouter::Impl::tree(std::span<const Point> sources, std::span<const std::vector<Point>> sinks,
+                                BendMetric metric, i64 bend_cost) const {
   BendTree out;
-  const Search r = search(source, sinks, metric, bend_cost);
+  const Search r = search(sources, sinks, metric, bend_cost);
   out.status = r.status;
   out.failed = r.failed;
   if (r.status != WireStatus::Ok) return out;
@@ -786,11 +834,37 @@ BendTree BendRouter::Impl::tree(Point source, std::span<const Point> sinks, Bend
       w[0] = Point{static_cast<Coord>(p.x + dx * along), static_cast<Coord>(p.y + dy * along)};
       break;
     }
-    if (w.size() == 1 && k > 0) continue;  // the sink lies on earlier metal
+    if (w.size() == 1) continue;  // the sink lies on earlier metal or on the source pin
     for (std::size_t i = 1; i < w.size(); ++i) metal.emplace_back(w[i - 1], w[i]);
     out.wires.push_back(std::move(w));
   }
+  if (out.wires.empty() && !out.paths.empty()) out.wires.push_back(out.paths[0]);  // all at the source
   return out;
+}
+
+void BendRouter::Impl::pin_sets(const Polygon& source, std::span<const Polygon> sinks, std::vector<Point>& from,
+                                std::vector<std::vector<Point>>& to) const {
+  // the source's candidates see every sink's vertices
+  Polygon all_sinks;
+  for (const Polygon& s : sinks) {
+    all_sinks.outer.insert(all_sinks.outer.end(), s.outer.begin(), s.outer.end());
+    for (const geom::Ring& h : s.holes) all_sinks.outer.insert(all_sinks.outer.end(), h.begin(), h.end());
+  }
+  // free candidates only, so that a shared point is a free one
+  auto free_only = [&](std::vector<Point> v) {
+    v.erase(std::remove_if(v.begin(), v.end(), [&](Point p) { return !is_free(p); }), v.end());
+    return v;
+  };
+  from = free_only(pins.candidates(source, all_sinks));
+  to.clear();
+  for (const Polygon& s : sinks) {
+    to.push_back(free_only(pins.candidates(s, source)));
+    // pins that meet: their shared point in both sets (search() offers it at no cost)
+    if (const auto p = shared_point(from, source, to.back(), s)) {
+      if (!std::binary_search(from.begin(), from.end(), *p)) from.insert(std::upper_bound(from.begin(), from.end(), *p), *p);
+      to.back().push_back(*p);
+    }
+  }
 }
 
 BendRouter::BendRouter(const Box& domain, std::span<const Polygon> obstacles)
@@ -810,7 +884,41 @@ BendPath BendRouter::path(Point from, Point to, BendMetric metric, std::int64_t 
 BendTree BendRouter::tree(Point source, std::span<const Point> sinks, BendMetric metric, std::int64_t bend_cost) const {
   if (metric == BendMetric::Combined && (bend_cost < 0 || bend_cost > (i64{1} << 31)))
     throw std::invalid_argument("BendRouter: the bend cost must lie in [0, 2^31]");
-  return impl_->tree(source, sinks, metric, bend_cost);
+  std::vector<std::vector<Point>> sets;
+  sets.reserve(sinks.size());
+  for (const Point t : sinks) sets.push_back({t});
+  return impl_->tree({&source, 1}, sets, metric, bend_cost);
+}
+
+BendTree BendRouter::tree(const Polygon& source, std::span<const Polygon> sinks, BendMetric metric,
+                          std::int64_t bend_cost) const {
+  if (metric == BendMetric::Combined && (bend_cost < 0 || bend_cost > (i64{1} << 31)))
+    throw std::invalid_argument("BendRouter: the bend cost must lie in [0, 2^31]");
+  auto check = [](const Polygon& pin) {
+    if (!pin_shape_supported(pin))
+      throw std::invalid_argument("BendRouter: a pin edge is not horizontal, vertical or at 45 degrees");
+  };
+  check(source);
+  for (const Polygon& s : sinks) check(s);
+  std::vector<Point> from;
+  std::vector<std::vector<Point>> to;
+  impl_->pin_sets(source, sinks, from, to);
+  return impl_->tree(from, to, metric, bend_cost);
+}
+
+BendPath BendRouter::path(const Polygon& from, const Polygon& to, BendMetric metric, std::int64_t bend_cost) const {
+  BendPath out;
+  const BendTree t = tree(from, {&to, 1}, metric, bend_cost);
+  out.status = t.status;
+  if (t.status != WireStatus::Ok) return out;
+  out.points = t.paths[0];
+  out.bends = geom::count_bends(out.points);
+  out.length = l1_length(out.points);
+  return out;
+}
+
+std::optional<std::size_t> BendRouter::pin_meets_obstacle(const Polygon& pin) const {
+  return impl_->pins.meets_obstacle(pin);
 }
 
 std::vector<BendCost> BendRouter::costs(Point source, std::span<const Point> sinks, BendMetric metric,

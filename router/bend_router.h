@@ -49,6 +49,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -119,6 +120,23 @@ class BendRouter {
   // the source.
   BendTree tree(geom::Point source, std::span<const geom::Point> sinks, BendMetric metric,
                 std::int64_t bend_cost) const;
+
+  // Pins that are points or shapes (an outer ring of one point, or a closed polygon with holes
+  // whose every edge is horizontal, vertical or at 45 degrees: pin_shape_supported(), else
+  // std::invalid_argument; a shape must not overlap an obstacle: pin_meets_obstacle()). A wire
+  // may start anywhere on `from` (the source) and end anywhere on `to` (each sink): the optimum
+  // over all such points, exact (router/pin_shapes.h: PinShapes::candidates says why a finite
+  // set of candidate points holds an optimal end; the search starts from all of the source's at
+  // no cost and takes the best of each sink's). Pins that share a point are joined there by a
+  // wire of that one point. In a tree the paths may start at different points of the source
+  // pin; a sink that touches the source gets no wire of its own unless every sink does.
+  // SourceNotFree / TargetNotFree: no point of that pin is free.
+  BendPath path(const geom::Polygon& from, const geom::Polygon& to, BendMetric metric, std::int64_t bend_cost) const;
+  BendTree tree(const geom::Polygon& source, std::span<const geom::Polygon> sinks, BendMetric metric,
+                std::int64_t bend_cost) const;
+  // The first obstacle (index into the constructor's obstacles) whose interior meets the
+  // interior of a shape pin (PinShapes::meets_obstacle); nullopt for a point pin.
+  std::optional<std::size_t> pin_meets_obstacle(const geom::Polygon& pin) const;
 
   // The cost of an optimal path from the source to each sink, from one Dijkstra run, without
   // building the paths (what many-pair questions such as the link diameter need). status: Ok, or

@@ -11,39 +11,9 @@ namespace taut::router {
 using geom::i64;
 using geom::Point;
 
-namespace {
-geom::Box ring_box(const geom::Ring& r) {
-  geom::Box b{r[0], r[0]};
-  for (const Point v : r) {
-    b.lo = {std::min(b.lo.x, v.x), std::min(b.lo.y, v.y)};
-    b.hi = {std::max(b.hi.x, v.x), std::max(b.hi.y, v.y)};
-  }
-  return b;
-}
-}  // namespace
-
 template <class W>
 BasicRouter<W>::BasicRouter(const geom::Box& domain, std::span<const geom::Polygon> obstacles)
-    : wavefront_(domain, obstacles), staircase_(domain, obstacles) {
-  auto add = [&](const geom::Ring& r) {
-    for (const Point v : r) {
-      xs_.push_back(v.x);
-      ys_.push_back(v.y);
-    }
-  };
-  for (const geom::Polygon& p : obstacles) {
-    add(p.outer);
-    for (const geom::Ring& h : p.holes) add(h);
-  }
-  auto distinct = [](auto& v) {
-    std::sort(v.begin(), v.end());
-    v.erase(std::unique(v.begin(), v.end()), v.end());
-  };
-  distinct(xs_);
-  distinct(ys_);
-  obstacles_.assign(obstacles.begin(), obstacles.end());
-  for (const geom::Polygon& p : obstacles_) obstacle_boxes_.push_back(ring_box(p.outer));
-}
+    : wavefront_(domain, obstacles), staircase_(domain, obstacles), pins_(obstacles) {}
 
 template <class W>
 typename BasicRouter<W>::Wire BasicRouter<W>::shortest(geom::Point from, geom::Point to) {
@@ -81,143 +51,16 @@ typename BasicRouter<W>::Wire BasicRouter<W>::finish(std::optional<std::size_t> 
 }
 
 namespace {
-template <class F>
-void for_each_edge(const geom::Polygon& pin, F f) {
-  auto ring_edges = [&](const geom::Ring& r) {
-    if (r.size() < 2) return;
-    for (std::size_t i = 0; i < r.size(); ++i) f(r[i], r[(i + 1) % r.size()]);
-  };
-  ring_edges(pin.outer);
-  for (const geom::Ring& h : pin.holes) ring_edges(h);
-}
-bool is_point(const geom::Polygon& pin) { return pin.outer.size() == 1 && pin.holes.empty(); }
-
-// The closed pin holds p.
-bool in_pin(Point p, const geom::Polygon& pin) {
-  return is_point(pin) ? p == pin.outer[0] : geom::locate(p, pin) != geom::Location::Outside;
-}
-// A point two pins share, from their candidates: the first of a's candidates lying in b, else
-// the first of b's lying in a (a candidate of one pin lies in the other whenever they meet, by
-// the same projections).
-std::optional<Point> shared_point(std::span<const Point> a_cands, const geom::Polygon& a,
-                                  std::span<const Point> b_cands, const geom::Polygon& b) {
-  for (const Point p : a_cands)
-    if (in_pin(p, b)) return p;
-  for (const Point p : b_cands)
-    if (in_pin(p, a)) return p;
-  return std::nullopt;
-}
 // Drops the points the wavefront does not find free.
 template <class Wavefront>
 void keep_free(std::vector<Point>& v, const Wavefront& wf) {
   v.erase(std::remove_if(v.begin(), v.end(), [&](Point p) { return !wf.is_free(p); }), v.end());
 }
-
-// Where the point (x2 / 2, y2 / 2) lies with respect to a ring: exact in __int128 (the doubled
-// coordinates of a midpoint exceed the int64 predicates' range). Crossing number with the
-// half-open rule; on an edge is Boundary.
-geom::Location locate_half(i64 x2, i64 y2, std::span<const Point> ring) {
-  bool in = false;
-  for (std::size_t i = 0; i < ring.size(); ++i) {
-    const Point a = ring[i], b = ring[(i + 1) % ring.size()];
-    const i64 ax = 2 * i64{a.x}, ay = 2 * i64{a.y}, bx = 2 * i64{b.x}, by = 2 * i64{b.y};
-    const geom::i128 o = geom::i128{bx - ax} * (y2 - ay) - geom::i128{by - ay} * (x2 - ax);
-    if (o == 0 && std::min(ax, bx) <= x2 && x2 <= std::max(ax, bx) && std::min(ay, by) <= y2 &&
-        y2 <= std::max(ay, by))
-      return geom::Location::Boundary;
-    if ((ay > y2) != (by > y2)) {  // the edge straddles the horizontal line through the point
-      const bool crosses_right = by > ay ? o > 0 : o < 0;  // point left of the upward edge
-      if (crosses_right) in = !in;
-    }
-  }
-  return in ? geom::Location::Inside : geom::Location::Outside;
-}
-geom::Location locate_half(i64 x2, i64 y2, const geom::Polygon& poly) {
-  const geom::Location outer = locate_half(x2, y2, poly.outer);
-  if (outer != geom::Location::Inside) return outer;
-  for (const geom::Ring& h : poly.holes) {
-    const geom::Location l = locate_half(x2, y2, h);
-    if (l == geom::Location::Boundary) return l;
-    if (l == geom::Location::Inside) return geom::Location::Outside;
-  }
-  return geom::Location::Inside;
-}
-
-// Do the interiors of polygons p and q meet (a common area, not only touching)? Both with
-// outer rings counter-clockwise and holes clockwise (interior on the left of every edge).
-// Exact. They do iff two edges cross properly, or two edges overlap collinearly in the same
-// direction (the interiors lie on the same side: this alone catches p == q), or a vertex of one
-// lies strictly inside the other, or an edge of one, cut at the other's vertices on it, has a
-// piece whose midpoint lies strictly inside the other: otherwise no point of either boundary is
-// interior to the other, and two connected interiors that meet would then coincide.
-bool interiors_meet(const geom::Polygon& p, const geom::Polygon& q) {
-  std::vector<geom::Segment> ep, eq;
-  for_each_edge(p, [&](Point a, Point b) { ep.push_back({a, b}); });
-  for_each_edge(q, [&](Point a, Point b) { eq.push_back({a, b}); });
-  for (const geom::Segment& e : ep)
-    for (const geom::Segment& f : eq) {
-      const geom::SegmentIntersection r = geom::intersect(e, f);
-      if (r == geom::SegmentIntersection::Proper) return true;
-      if (r == geom::SegmentIntersection::Overlap && geom::dot(e.a, e.b, f.a, f.b) > 0) return true;
-    }
-  auto vertex_inside = [](const geom::Polygon& a, const geom::Polygon& b) {
-    bool hit = false;
-    auto test = [&](const geom::Ring& r) {
-      for (const Point v : r) hit = hit || geom::locate(v, b) == geom::Location::Inside;
-    };
-    test(a.outer);
-    for (const geom::Ring& h : a.holes) test(h);
-    return hit;
-  };
-  if (vertex_inside(p, q) || vertex_inside(q, p)) return true;
-  auto piece_inside = [](const std::vector<geom::Segment>& edges, const geom::Polygon& other) {
-    std::vector<Point> cuts;
-    for (const geom::Segment& e : edges) {
-      cuts = {e.a, e.b};
-      for_each_edge(other, [&](Point v, Point) {
-        if (geom::on_segment(v, e.a, e.b)) cuts.push_back(v);
-      });
-      std::sort(cuts.begin(), cuts.end());  // collinear points: (x, y) order is along the edge
-      cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
-      for (std::size_t i = 0; i + 1 < cuts.size(); ++i)
-        if (locate_half(i64{cuts[i].x} + cuts[i + 1].x, i64{cuts[i].y} + cuts[i + 1].y, other) ==
-            geom::Location::Inside)
-          return true;
-    }
-    return false;
-  };
-  return piece_inside(ep, q) || piece_inside(eq, p);
-}
 }  // namespace
 
 template <class W>
 std::optional<std::size_t> BasicRouter<W>::pin_meets_obstacle(const geom::Polygon& pin) const {
-  if (is_point(pin)) return std::nullopt;
-  geom::Polygon p = pin;  // interior on the left of every edge
-  if (geom::twice_area(p.outer) < 0) std::reverse(p.outer.begin(), p.outer.end());
-  for (geom::Ring& h : p.holes)
-    if (geom::twice_area(h) > 0) std::reverse(h.begin(), h.end());
-  const geom::Box b = ring_box(p.outer);
-  for (std::size_t i = 0; i < obstacles_.size(); ++i) {
-    const geom::Box& o = obstacle_boxes_[i];
-    if (o.hi.x < b.lo.x || o.lo.x > b.hi.x || o.hi.y < b.lo.y || o.lo.y > b.hi.y) continue;
-    if (interiors_meet(p, obstacles_[i])) return i;
-  }
-  return std::nullopt;
-}
-
-bool pin_shape_supported(const geom::Polygon& pin) {
-  if (is_point(pin)) return true;
-  if (pin.outer.size() < 3) return false;
-  for (const geom::Ring& h : pin.holes)
-    if (h.size() < 3) return false;
-  bool ok = true;
-  for_each_edge(pin, [&](Point a, Point b) {
-    const i64 dx = i64{b.x} - a.x, dy = i64{b.y} - a.y;
-    if (dx == 0 && dy == 0) ok = false;
-    if (dx != 0 && dy != 0 && dx != dy && dx != -dy) ok = false;
-  });
-  return ok;
+  return pins_.meets_obstacle(pin);
 }
 
 template <class W>
@@ -225,50 +68,18 @@ bool BasicRouter<W>::supports_pin(const geom::Polygon& pin) {
   if (!pin_shape_supported(pin)) return false;
   bool ok = true;
   if (kOctilinear)
-    for_each_edge(pin, [&](Point a, Point b) { ok = ok && (a.x == b.x || a.y == b.y); });
+    for_each_pin_edge(pin, [&](Point a, Point b) { ok = ok && (a.x == b.x || a.y == b.y); });
   return ok;
 }
 
 template <class W>
 std::vector<Point> BasicRouter<W>::pin_candidates(const geom::Polygon& pin, const geom::Polygon& other) const {
-  std::vector<Point> out(pin.outer.begin(), pin.outer.end());
-  for (const geom::Ring& h : pin.holes) out.insert(out.end(), h.begin(), h.end());
-  if (is_point(pin)) return out;
-  std::vector<Point> others(other.outer.begin(), other.outer.end());
-  for (const geom::Ring& h : other.holes) others.insert(others.end(), h.begin(), h.end());
-  for_each_edge(pin, [&](Point a, Point b) {
-    const i64 dx = i64{b.x} - a.x, dy = i64{b.y} - a.y;
-    // The edge's point at row y (not horizontal) or column x (not vertical): exact, |dx| = |dy|
-    // on a 45-degree edge.
-    auto at_y = [&](i64 y) {
-      return Point{static_cast<geom::Coord>(a.x + (dx == 0 ? 0 : (y - a.y) * dx / dy)), static_cast<geom::Coord>(y)};
-    };
-    auto at_x = [&](i64 x) {
-      return Point{static_cast<geom::Coord>(x), static_cast<geom::Coord>(a.y + (dy == 0 ? 0 : (x - a.x) * dy / dx))};
-    };
-    const i64 ylo = std::min(a.y, b.y), yhi = std::max(a.y, b.y);
-    const i64 xlo = std::min(a.x, b.x), xhi = std::max(a.x, b.x);
-    if (dy != 0) {  // horizontal projections: one per row of obstacle vertices in the edge's range
-      for (auto it = std::lower_bound(ys_.begin(), ys_.end(), ylo); it != ys_.end() && *it <= yhi; ++it)
-        out.push_back(at_y(*it));
-      for (const Point o : others)
-        if (o.y >= ylo && o.y <= yhi) out.push_back(at_y(o.y));
-    }
-    if (dx != 0) {  // vertical projections: one per column
-      for (auto it = std::lower_bound(xs_.begin(), xs_.end(), xlo); it != xs_.end() && *it <= xhi; ++it)
-        out.push_back(at_x(*it));
-      for (const Point o : others)
-        if (o.x >= xlo && o.x <= xhi) out.push_back(at_x(o.x));
-    }
-  });
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
+  return pins_.candidates(pin, other);
 }
 
 template <class W>
 typename BasicRouter<W>::Wire BasicRouter<W>::shortest(const geom::Polygon& from, const geom::Polygon& to) {
-  if (is_point(from) && is_point(to)) return shortest(from.outer[0], to.outer[0]);
+  if (is_point_pin(from) && is_point_pin(to)) return shortest(from.outer[0], to.outer[0]);
   Wire w;
   std::vector<Point> sources = pin_candidates(from, to), targets = pin_candidates(to, from);
   keep_free(sources, wavefront_);

@@ -30,6 +30,7 @@
 
 #include "geom/root2.h"
 #include "geom/types.h"
+#include "router/pin_shapes.h"
 #include "router/staircase.h"
 #include "router/wavefront.h"
 
@@ -96,35 +97,16 @@ class BasicRouter {
   };
   Tree tree(const geom::Polygon& source, std::span<const geom::Polygon> sinks);
 
-  // The points of pin `pin` a shortest wire from it may be taken to start at: its vertices, and
-  // the horizontal and vertical projections onto its edges of every obstacle vertex and of every
-  // vertex of `other` (the other pin). Why that suffices: a shortest path leaves the pin at s
-  // straight towards its first bend r (an obstacle vertex, or a point of the other pin when it
-  // runs straight there), so s minimises |s - r|_1 over the part of an edge that r sees; along
-  // an edge that is a convex piecewise-linear function whose breakpoints are the projections of
-  // r, so its minimum is at a projection, at an edge end, or where the sight of r ends at an
-  // obstacle vertex v on the segment r-s (the path through v is as short, and v takes r's
-  // place). When r is a point of the other pin the pair (s, r) minimises |s - r|_1 over two
-  // edges, which is attained with s or r a vertex, the other its projection or a vertex too. For
-  // edges at 0, 45 or 90 degrees every candidate is an integer point. Sorted, distinct.
-  // Octilinear: the same candidates, for horizontal and vertical edges. Along a horizontal edge
-  // the octilinear length of s - r, max(|dx|, |dy|) + (sqrt2 - 1) min(|dx|, |dy|) with |dy|
-  // fixed, is convex and least where dx = 0, at r's vertical projection (likewise for vertical
-  // edges), so the argument above holds as it is; for two pins, (s, r) is least with one at an
-  // edge end and the other at its projection, or where they meet. Along a 45-degree edge the
-  // least point is r's projection along the other diagonal, which can be a half-integer point:
-  // an integer wire end then cannot reach the infimum and the candidates above do not cover
-  // the best integer end, which is why such pins are not taken (supports_pin()).
+  // The points of pin `pin` a shortest wire from it may be taken to start at (and why those:
+  // PinShapes::candidates, router/pin_shapes.h).
   std::vector<geom::Point> pin_candidates(const geom::Polygon& pin, const geom::Polygon& other) const;
 
   // Whether shortest(pin, pin) takes this pin: pin_shape_supported(), and for the octilinear
   // router only horizontal and vertical edges.
   static bool supports_pin(const geom::Polygon& pin);
 
-  // The first obstacle (index into the constructor's obstacles) whose interior meets the
-  // interior of a shape pin, exactly; nullopt for a point pin or a shape that at most touches
-  // obstacles. shortest() needs shapes that do not: a shape partly under a blockage may be left
-  // through the blockage's edges, which pin_candidates() does not cover.
+  // The first obstacle whose interior meets the interior of a shape pin
+  // (PinShapes::meets_obstacle).
   std::optional<std::size_t> pin_meets_obstacle(const geom::Polygon& pin) const;
 
   bool is_free(geom::Point p) const { return wavefront_.is_free(p); }
@@ -136,10 +118,8 @@ class BasicRouter {
   Wire finish(std::optional<std::size_t> target);
 
   Wavefront wavefront_;
-  std::vector<geom::Coord> xs_, ys_;  // the distinct x and y of obstacle vertices, ascending
-  std::vector<geom::Polygon> obstacles_;
-  std::vector<geom::Box> obstacle_boxes_;
   StaircaseBuilder staircase_;
+  PinShapes pins_;
   StaircaseStats staircase_stats_;
 };
 
@@ -158,10 +138,5 @@ const char* to_string(WireStatus status);
 // horizontal, vertical and 45-degree segments (the only ones staircases have); segments at other
 // angles are kept as they are. Exact (integer arithmetic).
 std::vector<std::vector<geom::Point>> without_overlaps(std::span<const std::vector<geom::Point>> wires);
-
-// A pin the router takes: a point (one vertex, no holes), or rings of at least 3 vertices whose
-// every edge (closing ones included) has non-zero length and is horizontal, vertical or at 45
-// degrees.
-bool pin_shape_supported(const geom::Polygon& pin);
 
 }  // namespace taut::router

@@ -163,27 +163,35 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router
   return finish({io::Wire{w.points}});
 }
 
-// --metric combined / link (router::BendRouter): nets of point pins. Two pins: the best wire;
-// more: the tree of best paths from the first pin (router::BendTree).
+// --metric combined / link (router::BendRouter): nets of point and shape pins. Two pins: the
+// best wire; more: the tree of best paths from the first pin (router::BendTree).
 NetResult route_net_bends(const io::Layout& layout, const io::Net& net, const BendObstacles& obs,
                           const router::BendRouter& router, router::BendMetric metric, std::int64_t bend_cost) {
   auto fail = [&](const char* code, std::string reason) { return failed(net, code, std::move(reason)); };
   if (auto few = too_few_pins(net)) return *few;
-  for (const io::Pin& pin : net.pins)
-    if (!pin.point)
-      return fail("ROUTE-0009", std::string("pin \"") + pin.name + "\" is a shape: with --metric " +
-                                    (metric == router::BendMetric::Link ? "link" : "combined") +
-                                    " only point pins are routed in this version");
-  std::vector<geom::Point> sinks;
-  for (std::size_t i = 1; i < net.pins.size(); ++i) sinks.push_back(*net.pins[i].point);
+  std::vector<geom::Polygon> geometry;
+  for (const io::Pin& pin : net.pins) {
+    geom::Polygon g;
+    if (pin.point) g.outer = {*pin.point};
+    else g = io::shape_polygon(*pin.shape);
+    if (!router::pin_shape_supported(g))
+      return fail("ROUTE-0005", "pin \"" + pin.name + "\" has a shape edge that is not horizontal, vertical or at 45 "
+                                                   "degrees; such shape pins are not routed yet");
+    if (router.pin_meets_obstacle(g)) return fail("ROUTE-0005", "pin \"" + pin.name + "\" " + obs.why_under(layout, g));
+    geometry.push_back(std::move(g));
+  }
+  const router::BendTree t =
+      router.tree(geometry[0], std::span<const geom::Polygon>(geometry).subspan(1), metric, bend_cost);
   const io::Pin& a = net.pins[0];
-  const router::BendTree t = router.tree(*a.point, sinks, metric, bend_cost);
   const io::Pin& b = net.pins[t.status == router::WireStatus::SourceNotFree ? 0 : t.failed + 1];
   switch (t.status) {
     case router::WireStatus::Ok: break;
     case router::WireStatus::SourceNotFree:
     case router::WireStatus::TargetNotFree:
-      return fail("ROUTE-0001", "pin \"" + b.name + "\" at " + point_text(*b.point) + " " + obs.why_not_free(layout, *b.point));
+      if (b.point)
+        return fail("ROUTE-0001", "pin \"" + b.name + "\" at " + point_text(*b.point) + " " + obs.why_not_free(layout, *b.point));
+      return fail("ROUTE-0001", "pin \"" + b.name + "\" has no free point (its shape lies in blockages, their rectilinear "
+                                                  "covers or outside the boundary)");
     default:
       return fail("ROUTE-0002", "pins \"" + a.name + "\" and \"" + b.name +
                                     "\" are in different parts of free space: blockages (or the rectilinear "

@@ -1,11 +1,13 @@
 #include "tools/route_common.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <stdexcept>
 
 #include "geom/predicates.h"
 #include "io/layout_geometry.h"
 #include "router/bend_router.h"
+#include "router/pin_shapes.h"
 #include "tools/cli.h"
 
 namespace taut::cli {
@@ -50,6 +52,33 @@ std::string BendObstacles::why_not_free(const io::Layout& layout, geom::Point q)
       }
   }
   return plain;
+}
+
+std::string BendObstacles::why_under(const io::Layout& layout, const geom::Polygon& pin) const {
+  auto at = [&](std::size_t i) {
+    const io::Blockage& blk = layout.blockages[owner[i]];
+    return "\"" + blk.id + "\" (" + layout.file + ":" + std::to_string(blk.line) + ")";
+  };
+  auto ccw = [](geom::Polygon p) {  // PinShapes wants outer rings counter-clockwise, holes clockwise
+    if (geom::twice_area(p.outer) < 0) std::reverse(p.outer.begin(), p.outer.end());
+    for (geom::Ring& h : p.holes)
+      if (geom::twice_area(h) > 0) std::reverse(h.begin(), h.end());
+    return p;
+  };
+  const std::string rest = "; shape pins that overlap blockages are not routed yet (ones that touch them are)";
+  for (std::size_t i = 0; i < polygons.size(); ++i) {
+    const geom::Polygon only[1] = {ccw(polygons[i])};
+    if (router::PinShapes(only).meets_obstacle(pin)) return "lies partly under blockage " + at(i) + rest;
+  }
+  for (const std::size_t i : covered) {
+    const geom::Polygon only[1] = {polygons[i]};
+    std::vector<geom::Polygon> cover;
+    for (const geom::Polygon& p : router::rectilinear_cover(only)) cover.push_back(ccw(p));
+    if (router::PinShapes(cover).meets_obstacle(pin))
+      return "lies partly under the rectilinear cover of sloped blockage " + at(i) +
+             " (these metrics route around the bounding boxes of its sloped edges; ROUTE-0008)" + rest;
+  }
+  return "lies partly under a blockage" + rest;
 }
 
 std::string point_text(geom::Point p) { return std::to_string(p.x) + "," + std::to_string(p.y); }

@@ -32,6 +32,9 @@ struct BendObstacles {
   std::vector<std::size_t> covered;     // shapes with a sloped edge
   // Why p is not free for these metrics: why_not_free(), or the cover of a sloped blockage.
   std::string why_not_free(const io::Layout& layout, geom::Point p) const;
+  // Why a shape pin is refused when its interior meets an obstacle: "lies partly under blockage
+  // "ram0" (demo.xml:19); ...", or under the rectilinear cover of a sloped one.
+  std::string why_under(const io::Layout& layout, const geom::Polygon& pin) const;
 };
 BendObstacles bend_obstacles(const io::Layout& layout, std::span<const geom::Point> extra, const std::string& metric,
                              bool quiet);

@@ -69,21 +69,34 @@ bool BendReference::step_free(Point a, Point b) const {
 }
 
 std::optional<BendAnswer> BendReference::best(Point s, Point t, bool link, std::int64_t C) const {
-  return search(s, t, link, C, false);
+  return search({&s, 1}, {&t, 1}, link, C, false);
 }
 
 std::optional<BendAnswer> BendReference::best_on_lattice(Point s, Point t, bool link,
                                                          std::int64_t C) const {
-  return search(s, t, link, C, true);
+  return search({&s, 1}, {&t, 1}, link, C, true);
 }
 
-std::optional<BendAnswer> BendReference::search(Point s, Point t, bool link, std::int64_t C,
-                                                bool lattice) const {
-  if (!ref_.is_free(s) || !ref_.is_free(t)) return std::nullopt;
-  if (s == t) return BendAnswer{0, 0};
+std::optional<BendAnswer> BendReference::best_between_on_lattice(std::span<const Point> S,
+                                                                 std::span<const Point> T, bool link,
+                                                                 std::int64_t C) const {
+  return search(S, T, link, C, true);
+}
+
+std::optional<BendAnswer> BendReference::search(std::span<const Point> S_all, std::span<const Point> T_all,
+                                                bool link, std::int64_t C, bool lattice) const {
+  std::vector<Point> S, T;
+  for (const Point p : S_all)
+    if (ref_.is_free(p)) S.push_back(p);
+  for (const Point p : T_all)
+    if (ref_.is_free(p)) T.push_back(p);
+  if (S.empty() || T.empty()) return std::nullopt;
+  for (const Point p : S)
+    if (std::find(T.begin(), T.end(), p) != T.end()) return BendAnswer{0, 0};
 
   std::vector<Coord> xs = xs_, ys = ys_;
-  xs.push_back(s.x), xs.push_back(t.x), ys.push_back(s.y), ys.push_back(t.y);
+  for (const Point p : S) xs.push_back(p.x), ys.push_back(p.y);
+  for (const Point p : T) xs.push_back(p.x), ys.push_back(p.y);
   if (lattice) {
     for (Coord x = domain_.lo.x; x <= domain_.hi.x; ++x) xs.push_back(x);
     for (Coord y = domain_.lo.y; y <= domain_.hi.y; ++y) ys.push_back(y);
@@ -119,10 +132,13 @@ std::optional<BendAnswer> BendReference::search(Point s, Point t, bool link, std
   std::vector<bool> done(states, false);
   using Item = std::pair<Key, std::size_t>;
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
-  const int sx = at(xs, s.x), sy = at(ys, s.y), tx = at(xs, t.x), ty = at(ys, t.y);
-  const std::size_t start = point_index(sx, sy) * 5 + kNone;
-  dist[start] = Cost{};
-  queue.push({key(Cost{}), start});
+  std::vector<char> target(points, 0);
+  for (const Point p : T) target[point_index(at(xs, p.x), at(ys, p.y))] = 1;
+  for (const Point p : S) {
+    const std::size_t start = point_index(at(xs, p.x), at(ys, p.y)) * 5 + kNone;
+    dist[start] = Cost{};
+    queue.push({key(Cost{}), start});
+  }
   while (!queue.empty()) {
     const std::size_t st = queue.top().second;
     queue.pop();
@@ -132,7 +148,7 @@ std::optional<BendAnswer> BendReference::search(Point s, Point t, bool link, std
     const int din = static_cast<int>(st % 5);
     const std::size_t pi = st / 5;
     const int ix = static_cast<int>(pi % nx), iy = static_cast<int>(pi / nx);
-    if (ix == tx && iy == ty) return BendAnswer{c.length, c.bends};  // the first settled at t
+    if (target[pi]) return BendAnswer{c.length, c.bends};  // the first settled at a target
     for (int d = 0; d < 4; ++d) {
       if (din != kNone && d == (din + 2) % 4) continue;  // no reversal
       if (!step_ok(ix, iy, d)) continue;

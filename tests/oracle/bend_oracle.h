@@ -70,6 +70,13 @@ class BendReference {
   std::optional<BendAnswer> best_on_lattice(geom::Point s, geom::Point t, bool link,
                                             std::int64_t C) const;
 
+  // The best from any point of S to any point of T (free ones; nullopt when S or T has none or
+  // no target is reached; {0, 0} when they share a free point), on the lattice as
+  // best_on_lattice(): a path may start in any direction at every point of S.
+  std::optional<BendAnswer> best_between_on_lattice(std::span<const geom::Point> S,
+                                                    std::span<const geom::Point> T, bool link,
+                                                    std::int64_t C) const;
+
   // The L1 length and bends of a path (its points, consecutive repeats ignored) when every
   // segment is horizontal or vertical, the path never reverses on itself (a 180 degree turn is
   // rejected) and the whole path is legal under the free-space rules above; else nullopt. A bend
@@ -80,8 +87,8 @@ class BendReference {
   const L1Reference& l1() const { return ref_; }
 
  private:
-  std::optional<BendAnswer> search(geom::Point s, geom::Point t, bool link, std::int64_t C,
-                                   bool lattice) const;
+  std::optional<BendAnswer> search(std::span<const geom::Point> S, std::span<const geom::Point> T, bool link,
+                                   std::int64_t C, bool lattice) const;
 
   const std::vector<Wedge>& wedges_at(geom::Point p) const;
   bool step_free(geom::Point a, geom::Point b) const;  // L1Reference::visible(a, b)

@@ -127,6 +127,20 @@ struct Tally {
 
 const char* metric_name(bool link) { return link ? "link" : "combined"; }
 
+// "" when `got` is the status the reference implies (is some point of each end free? is a path
+// found?), else what differs; counts the answers without a path in the tally.
+template <class Tally_>
+std::string status_check(WireStatus got, bool s_free, bool t_free, bool found, Tally_& tally) {
+  const WireStatus expected = !s_free  ? WireStatus::SourceNotFree
+                              : !t_free ? WireStatus::TargetNotFree
+                              : !found  ? WireStatus::Unreachable
+                                        : WireStatus::Ok;
+  if (got != expected) return "status " + str(got) + ", expected " + str(expected);
+  tally.not_free += expected == WireStatus::SourceNotFree || expected == WireStatus::TargetNotFree;
+  tally.unreachable += expected == WireStatus::Unreachable;
+  return "";
+}
+
 // "" when the router's answer for s -> t agrees with the reference, else what differs.
 std::string check_query(const BendReference& ref, const BendRouter& router, Point s, Point t, bool link, i64 C,
                         Tally& tally, std::optional<BendAnswer>* answer = nullptr) {
@@ -143,17 +157,10 @@ std::string check_query(const BendReference& ref, const BendRouter& router, Poin
   head << "query " << str(s) << " -> " << str(t) << " " << metric_name(link) << (link ? "" : " C = " + std::to_string(C))
        << ": reference " << str(want) << ", router " << str(got) << "\n  ";
   ++tally.queries;
-  const bool s_free = ref.l1().is_free(s), t_free = ref.l1().is_free(t);
-  const WireStatus expected = !s_free   ? WireStatus::SourceNotFree
-                              : !t_free ? WireStatus::TargetNotFree
-                              : !want   ? WireStatus::Unreachable
-                                        : WireStatus::Ok;
-  if (got.status != expected) return head.str() + "status " + str(got.status) + ", expected " + str(expected);
-  if (!want) {
-    tally.not_free += expected != WireStatus::Unreachable;
-    tally.unreachable += expected == WireStatus::Unreachable;
-    return "";
-  }
+  if (const std::string r = status_check(got.status, ref.l1().is_free(s), ref.l1().is_free(t), want.has_value(), tally);
+      !r.empty())
+    return head.str() + r;
+  if (!want) return "";
   ++tally.ok;
   tally.with_bends += want->bends > 0;
   if (got.length != want->length || got.bends != want->bends) return head.str() + "the cost differs from the reference's optimum";
@@ -633,6 +640,211 @@ TEST(BendRouter, TreesMatchTheReference) {
               static_cast<long long>(trees_ok), static_cast<long long>(shared));
   EXPECT_EQ(failed, 0);
   EXPECT_GE(trees_ok, sanitized_share(300, 12));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Shape pins (BendRouter::path and tree on geom::Polygon pins): a wire may start and end anywhere
+// on a pin. The reference searches from EVERY integer point of the closed source shape to every
+// integer point of the sink's, on the full integer lattice (BendReference::
+// best_between_on_lattice), so it knows nothing of the router's candidate points
+// (router/pin_shapes.h): equal costs check that the candidates hold an optimal end. Layouts:
+// the random instances above that are not scaled (a lattice of at most 18 x 18), pins drawn
+// there: points, rectangles, L shapes, rectangles with a hole, diamonds and right triangles with
+// 45-degree edges, small and large, many touching blockages, some touching or overlapping each
+// other or lying partly outside the domain; shapes that overlap a blockage are dropped
+// (pin_meets_obstacle; such pins are refused by route, ROUTE-0005) and counted.
+
+// The integer points of a closed pin (point or shape) inside the box.
+std::vector<Point> pin_lattice(const Polygon& pin, const Box& box) {
+  if (pin.outer.size() == 1 && pin.holes.empty()) return {pin.outer[0]};
+  std::vector<Point> out;
+  for (geom::Coord x = box.lo.x - 1; x <= box.hi.x + 1; ++x)
+    for (geom::Coord y = box.lo.y - 1; y <= box.hi.y + 1; ++y)
+      if (geom::locate({x, y}, pin) != geom::Location::Outside) out.push_back({x, y});
+  return out;
+}
+
+std::string pin_str(const Polygon& p) {
+  std::string s = "{" + ring_str(p.outer);
+  for (const Ring& h : p.holes) s += ", hole " + ring_str(h);
+  return s + "}";
+}
+
+// A random pin near the lattice `grid` (rectangles, L, a rectangle with a hole, a diamond, a
+// 45-degree triangle, or a point), often placed against an obstacle vertex.
+Polygon random_pin(std::mt19937_64& rng, const Box& grid, std::span<const Polygon> obstacles) {
+  auto uni = [&](int lo, int hi) { return lo + static_cast<int>(rng() % static_cast<std::uint64_t>(hi - lo + 1)); };
+  Point o{uni(grid.lo.x, grid.hi.x), uni(grid.lo.y, grid.hi.y)};
+  if (!obstacles.empty() && uni(0, 2) == 0) {  // at an obstacle vertex
+    const Ring& r = obstacles[rng() % obstacles.size()].outer;
+    o = r[rng() % r.size()];
+  }
+  const int w = uni(1, 4), h = uni(1, 4);
+  const int sx = uni(0, 1) ? 1 : -1, sy = uni(0, 1) ? 1 : -1;  // which way from o
+  auto at = [&](int dx, int dy) { return Point{o.x + sx * dx, o.y + sy * dy}; };
+  Polygon p;
+  switch (uni(0, 6)) {
+    case 0: p.outer = {o}; break;
+    case 1: p.outer = {at(0, 0), at(w, 0), at(w, h), at(0, h)}; break;
+    case 2: {  // an L
+      const int w2 = uni(1, 4), h2 = uni(1, 4);
+      p.outer = {at(0, 0), at(w + w2, 0), at(w + w2, h), at(w, h), at(w, h + h2), at(0, h + h2)};
+      break;
+    }
+    case 3: {  // a rectangle with a hole
+      const int W = uni(3, 6), H = uni(3, 6);
+      p.outer = {at(0, 0), at(W, 0), at(W, H), at(0, H)};
+      p.holes = {{at(1, 1), at(W - 1, 1), at(W - 1, H - 1), at(1, H - 1)}};
+      break;
+    }
+    case 4: {  // a diamond around o
+      const int r = uni(1, 3);
+      p.outer = {{o.x + r, o.y}, {o.x, o.y + r}, {o.x - r, o.y}, {o.x, o.y - r}};
+      break;
+    }
+    case 5: p.outer = {at(0, 0), at(w, 0), at(0, w)}; break;  // a right triangle, 45-degree hypotenuse
+    default: {  // a hexagon with two 45-degree edges
+      const int c = uni(1, std::min(w, h));
+      p.outer = {at(c, 0), at(w + c, 0), at(w + c, h), at(w, h + c), at(0, h + c), at(0, c)};
+      break;
+    }
+  }
+  return p;
+}
+
+struct PinTally {
+  i64 layouts = 0, queries = 0, ok = 0, not_free = 0, unreachable = 0, shared = 0, from_inside_edge = 0;
+  i64 dropped = 0, trees = 0, trees_ok = 0;
+};
+
+// The router's wire from pin a to pin b against the reference; "" when they agree.
+std::string check_pin_query(const BendReference& ref, const BendRouter& router, const Box& domain, const Polygon& a,
+                            const Polygon& b, bool link, i64 C, PinTally& tally) {
+  const std::vector<Point> A = pin_lattice(a, domain), B = pin_lattice(b, domain);
+  const std::optional<BendAnswer> want = ref.best_between_on_lattice(A, B, link, C);
+  std::ostringstream head;
+  head << "pins " << pin_str(a) << " -> " << pin_str(b) << " " << metric_name(link)
+       << (link ? "" : " C = " + std::to_string(C)) << ": reference " << str(want) << ", ";
+  BendPath got;
+  try {
+    got = router.path(a, b, link ? BendMetric::Link : BendMetric::Combined, C);
+  } catch (const std::exception& e) {
+    return head.str() + "router threw: " + e.what();
+  }
+  head << "router " << str(got) << "\n  ";
+  ++tally.queries;
+  auto any_free = [&](const std::vector<Point>& v) {
+    return std::any_of(v.begin(), v.end(), [&](Point p) { return ref.l1().is_free(p); });
+  };
+  if (const std::string r = status_check(got.status, any_free(A), any_free(B), want.has_value(), tally); !r.empty())
+    return head.str() + r;
+  if (!want) return "";
+  ++tally.ok;
+  tally.shared += want->length == 0;
+  if (got.length != want->length || got.bends != want->bends) return head.str() + "the cost differs from the reference's optimum";
+  if (got.points.empty() || geom::locate(got.points.front(), a) == geom::Location::Outside ||
+      geom::locate(got.points.back(), b) == geom::Location::Outside)
+    if (!(a.outer.size() == 1 && got.points.front() == a.outer[0]) && !(b.outer.size() == 1 && got.points.back() == b.outer[0]))
+      return head.str() + "the wire does not run from pin to pin";
+  const std::optional<BendAnswer> measured = ref.check_path(got.points);
+  if (!measured) return head.str() + "the path is not legal (check_path)";
+  if (*measured != *want) return head.str() + "the path measures " + str(measured);
+  // a start that is no vertex of the shape: the candidates at work
+  if (a.outer.size() > 1 && std::find(a.outer.begin(), a.outer.end(), got.points.front()) == a.outer.end()) ++tally.from_inside_edge;
+  return "";
+}
+
+// A tree from a source pin to sink pins: every sink's path is optimal, legal and on the wires,
+// and every wire starts on the source pin or on an earlier wire.
+std::string check_pin_tree(const BendReference& ref, const BendRouter& router, const Box& domain, const Polygon& source,
+                           const std::vector<Polygon>& sinks, bool link, i64 C, PinTally& tally) {
+  std::ostringstream head;
+  head << "tree from " << pin_str(source) << " to";
+  for (const Polygon& p : sinks) head << " " << pin_str(p);
+  head << " " << metric_name(link) << (link ? "" : " C = " + std::to_string(C)) << ": ";
+  ++tally.trees;
+  router::BendTree t;
+  try {
+    t = router.tree(source, sinks, link ? BendMetric::Link : BendMetric::Combined, C);
+  } catch (const std::exception& e) {
+    return head.str() + "router threw: " + e.what();
+  }
+  const std::vector<Point> S = pin_lattice(source, domain);
+  std::vector<std::optional<BendAnswer>> want;
+  for (const Polygon& p : sinks) want.push_back(ref.best_between_on_lattice(S, pin_lattice(p, domain), link, C));
+  const bool all = std::all_of(want.begin(), want.end(), [](const auto& w) { return w.has_value(); });
+  if ((t.status == WireStatus::Ok) != all) return head.str() + "status " + str(t.status) + ", reference reaches all: " + (all ? "yes" : "no");
+  if (!all) return "";
+  auto in_shape = [](Point p, const Polygon& g) { return geom::locate(p, g) != geom::Location::Outside; };
+  for (std::size_t k = 0; k < sinks.size(); ++k) {
+    const auto& p = t.paths[k];
+    if (p.empty() || !in_shape(p.front(), source) || !in_shape(p.back(), sinks[k]))
+      return head.str() + "path " + std::to_string(k) + " does not run from the source pin to its sink";
+    const auto m = ref.check_path(p);
+    if (!m) return head.str() + "path " + std::to_string(k) + " is not legal";
+    if (*m != *want[k]) return head.str() + "path " + std::to_string(k) + " measures " + str(m) + ", the optimum is " + str(want[k]);
+    for (std::size_t i = 0; i + 1 < p.size(); ++i)
+      if (!on_metal(p[i], p[i + 1], t.wires)) return head.str() + "path " + std::to_string(k) + " leaves the wires at " + str(p[i]);
+  }
+  for (std::size_t i = 0; i < t.wires.size(); ++i) {
+    const auto& w = t.wires[i];
+    if (!ref.check_path(w)) return head.str() + "wire " + std::to_string(i) + " is not legal";
+    const std::vector<std::vector<Point>> before(t.wires.begin(), t.wires.begin() + static_cast<std::ptrdiff_t>(i));
+    if (!in_shape(w.front(), source) && !on_metal(w.front(), w.front(), before))
+      return head.str() + "wire " + std::to_string(i) + " starts at " + str(w.front()) + ", off the tree";
+  }
+  ++tally.trees_ok;
+  return "";
+}
+
+TEST(BendRouter, ShapePinsMatchTheReference) {
+  const i64 layouts = sanitized_share(500, 10);
+  PinTally tally;
+  int failed = 0;
+  for (std::uint64_t seed = kBaseSeed + 70000; tally.layouts < layouts; ++seed) {
+    const Instance in = make_instance(seed);
+    if (in.domain.hi.x - in.domain.lo.x > 18 || in.domain.hi.y - in.domain.lo.y > 18) continue;  // scaled
+    ++tally.layouts;
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const BendRouter router(in.domain, in.obstacles);
+    const BendReference ref(in.domain, in.obstacles);
+    std::mt19937_64 rng(seed);
+    std::vector<Polygon> pins;
+    while (pins.size() < 5) {
+      Polygon p = random_pin(rng, in.domain, in.obstacles);
+      if (router.pin_meets_obstacle(p)) {
+        ++tally.dropped;
+        continue;
+      }
+      pins.push_back(std::move(p));
+    }
+    for (int q = 0; q < 4; ++q) {
+      const Polygon& a = pins[rng() % pins.size()];
+      const Polygon& b = pins[rng() % pins.size()];
+      for (const bool link : {false, true})
+        for (const i64 C : link ? std::vector<i64>{0} : std::vector<i64>{0, 1, 7, 1000}) {
+          const std::string r = check_pin_query(ref, router, in.domain, a, b, link, C, tally);
+          if (!r.empty() && failed++ < 5)
+            ADD_FAILURE() << "seed " << seed << ": " << describe(in.domain, in.obstacles) << "\n  " << r;
+        }
+    }
+    const bool link = rng() % 3 == 0;
+    const i64 C = link ? 0 : std::vector<i64>{0, 1, 7, 1000}[rng() % 4];
+    const std::vector<Polygon> sinks(pins.begin() + 1, pins.begin() + 2 + static_cast<std::ptrdiff_t>(rng() % 3));
+    const std::string r = check_pin_tree(ref, router, in.domain, pins[0], sinks, link, C, tally);
+    if (!r.empty() && failed++ < 5) ADD_FAILURE() << "seed " << seed << ": " << describe(in.domain, in.obstacles) << "\n  " << r;
+  }
+  std::printf("%lld layouts, %lld pin queries (%lld Ok, %lld of them pins that meet, %lld starting inside a shape's edge; "
+              "%lld not free, %lld unreachable), %lld shapes dropped (under a blockage), %lld trees (%lld joined)\n",
+              static_cast<long long>(tally.layouts), static_cast<long long>(tally.queries), static_cast<long long>(tally.ok),
+              static_cast<long long>(tally.shared), static_cast<long long>(tally.from_inside_edge),
+              static_cast<long long>(tally.not_free), static_cast<long long>(tally.unreachable),
+              static_cast<long long>(tally.dropped), static_cast<long long>(tally.trees), static_cast<long long>(tally.trees_ok));
+  EXPECT_EQ(failed, 0);
+  EXPECT_GE(tally.ok, sanitized_share(5000, 10));
+  EXPECT_GE(tally.from_inside_edge, sanitized_share(500, 10));
+  EXPECT_GE(tally.shared, sanitized_share(100, 10));
+  EXPECT_GE(tally.trees_ok, sanitized_share(300, 10));
 }
 
 // ---------------------------------------------------------------------------------------------

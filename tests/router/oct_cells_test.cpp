@@ -308,12 +308,15 @@ std::string check_seed(std::uint64_t seed, Tally& tally) {
 TEST(OctCells, PiecesMatchTheReference) {
   Tally t;
   std::vector<std::uint64_t> seeds;
-  // Under the sanitizers a twentieth of the seeds (GMP arithmetic there is about 4 times slower:
-  // 50 seeds took 110 s of the sanitizer tree; 10 seeds take 15 s alone).
+  // 70 seeds in the Release tree (200 took 85 s, the longest test of make test, which CI runs in
+  // 20 minutes; TAUT_OCT_CELLS_SEEDS=N runs seeds 1..N), 10 under the sanitizers (GMP arithmetic
+  // there is about 4 times slower: 50 seeds took 110 s of the sanitizer tree).
+  std::uint64_t count = kSanitized ? 10 : 70;
+  if (const char* e = std::getenv("TAUT_OCT_CELLS_SEEDS")) count = std::strtoull(e, nullptr, 10);
   if (const char* e = std::getenv("TAUT_OCT_CELLS_SEED")) {
     seeds.push_back(std::strtoull(e, nullptr, 10));
   } else {
-    for (std::uint64_t s = 1; s <= static_cast<std::uint64_t>(sanitized_share(200, 20)); ++s) seeds.push_back(s);
+    for (std::uint64_t s = 1; s <= count; ++s) seeds.push_back(s);
   }
   int failures = 0;
   for (const std::uint64_t seed : seeds) {
@@ -331,12 +334,13 @@ TEST(OctCells, PiecesMatchTheReference) {
               static_cast<long long>(t.irrational_vertices), static_cast<long long>(t.probes),
               static_cast<long long>(t.reached), static_cast<long long>(t.bisector_edges),
               static_cast<long long>(t.wall_edges));
-  if (seeds.size() > 1) {
-    EXPECT_GE(t.instances, sanitized_share(150, 20));
-    EXPECT_GE(t.full_area, sanitized_share(50, 20));
-    EXPECT_GE(t.irrational_vertices, sanitized_share(1000, 20));
-    EXPECT_GE(t.reached, sanitized_share(7000, 20));
-    EXPECT_GE(t.bisector_edges, sanitized_share(1000, 20));
+  if (seeds.size() > 1) {  // the sample exercises what it should (per seed, below the measured rates)
+    const auto n = static_cast<long long>(seeds.size());
+    EXPECT_GE(t.instances, n * 3 / 4);
+    EXPECT_GE(t.full_area, n / 4);
+    EXPECT_GE(t.irrational_vertices, n * 20);
+    EXPECT_GE(t.reached, n * 35);
+    EXPECT_GE(t.bisector_edges, n * 20);
   }
 }
 
