@@ -943,7 +943,12 @@ std::vector<std::int64_t> BendRouter::fewest_bends(Point source, std::span<const
 
 const BendGraphStats& BendRouter::stats() const { return impl_->stats; }
 
-std::vector<Polygon> rectilinear_cover(std::span<const Polygon> polygons, std::vector<std::size_t>* covered) {
+std::vector<Polygon> rectilinear_cover(std::span<const Polygon> polygons, std::vector<std::size_t>* covered, int pieces) {
+  if (pieces < 1 || pieces > kMaxCoverPieces)
+    throw std::invalid_argument("rectilinear_cover: pieces must lie in [1, " + std::to_string(kMaxCoverPieces) + "]");
+  // floor and ceiling of n / d (d > 0)
+  auto floor_div = [](i64 n, i64 d) { return n >= 0 ? n / d : -((-n + d - 1) / d); };
+  auto ceil_div = [&](i64 n, i64 d) { return -floor_div(-n, d); };
   std::vector<Polygon> out;
   for (std::size_t i = 0; i < polygons.size(); ++i) {
     const Polygon& p = polygons[i];
@@ -954,8 +959,17 @@ std::vector<Polygon> rectilinear_cover(std::span<const Polygon> polygons, std::v
         const Point a = r[j], b = r[(j + 1) % r.size()];
         if (a.x == b.x || a.y == b.y) continue;
         sloped = true;
-        const Coord x0 = std::min(a.x, b.x), x1 = std::max(a.x, b.x), y0 = std::min(a.y, b.y), y1 = std::max(a.y, b.y);
-        out.push_back(Polygon{{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, {}});
+        const i64 dx = i64{b.x} - a.x, dy = i64{b.y} - a.y;
+        // k pieces, each no narrower than one unit in both directions' larger extent
+        const i64 k = std::min<i64>(pieces, std::max(std::abs(dx), std::abs(dy)));
+        for (i64 m = 0; m < k; ++m) {
+          // the piece from a + (b - a) m / k to a + (b - a) (m + 1) / k, its box rounded outwards
+          const i64 x0 = a.x + floor_div(std::min(dx * m, dx * (m + 1)), k), x1 = a.x + ceil_div(std::max(dx * m, dx * (m + 1)), k);
+          const i64 y0 = a.y + floor_div(std::min(dy * m, dy * (m + 1)), k), y1 = a.y + ceil_div(std::max(dy * m, dy * (m + 1)), k);
+          const auto X0 = static_cast<Coord>(x0), X1 = static_cast<Coord>(x1);
+          const auto Y0 = static_cast<Coord>(y0), Y1 = static_cast<Coord>(y1);
+          out.push_back(Polygon{{{X0, Y0}, {X1, Y0}, {X1, Y1}, {X0, Y1}}, {}});
+        }
       }
     };
     boxes(p.outer);

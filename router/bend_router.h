@@ -160,11 +160,20 @@ class BendRouter {
 };
 
 // A rectilinear cover of polygons (any edges): each polygon with a sloped edge, together with
-// the bounding box of every sloped edge of its rings (outer and holes). The union of the result
-// (geom::normalize_obstacles) contains every input polygon and its boundary is rectilinear: a
-// sloped edge meets its own box's boundary only at its two ends. Polygons without a sloped edge
-// are passed through. `covered` (if not null) receives the indices of the polygons that had one.
+// boxes along every sloped edge of its rings (outer and holes): the edge is cut into `pieces`
+// equal pieces (fewer when it spans fewer units in x and in y), and each piece's bounding box,
+// rounded outwards to integers, is added. The union of the result (geom::normalize_obstacles)
+// contains every input polygon and its boundary is rectilinear: a sloped edge lies inside the
+// union of its boxes, touching their boundary only at its two ends and at cut points where two
+// boxes meet corner to corner. The cover never grows with more pieces: every piece's box lies in
+// the edge's own bounding box (pieces = 1), and the area it adds beyond the polygon is about
+// 1/pieces of that box's. Polygons without a sloped edge are passed through. `covered` (if not
+// null) receives the indices of the polygons that had one. pieces in [1, kMaxCoverPieces], else
+// std::invalid_argument.
+inline constexpr int kDefaultCoverPieces = 16;
+inline constexpr int kMaxCoverPieces = 4096;
 std::vector<geom::Polygon> rectilinear_cover(std::span<const geom::Polygon> polygons,
-                                             std::vector<std::size_t>* covered = nullptr);
+                                             std::vector<std::size_t>* covered = nullptr,
+                                             int pieces = kDefaultCoverPieces);
 
 }  // namespace taut::router

@@ -8,6 +8,7 @@
 #include "io/atomic_file.h"
 #include "io/layout_reader.h"
 #include "io/validate_layout.h"
+#include "router/bend_router.h"
 
 namespace taut::cli {
 
@@ -78,6 +79,10 @@ void add_routing_options(CLI::App* sub, RoutingOptions& options) {
   sub->add_option("--bend-cost", options.bend_cost,
                   "C >= 0 of --metric combined (an integer in DBU per bend, at most 2^30 - 1; default: "
                   "<rules> bend-cost, else 0)");
+  sub->add_option("--cover-pieces", options.cover_pieces,
+                  "K of --metric combined and link: a blockage with sloped edges is routed around its "
+                  "rectilinear cover, the blockage plus the bounding boxes of K equal pieces of every "
+                  "sloped edge (1 to 4096; default 16; 1: one box per edge)");
 }
 
 std::int64_t routing_bend_cost(const RoutingOptions& options, const io::Layout& layout) {
@@ -103,6 +108,16 @@ bool check_routing_options(const RoutingOptions& options, const io::Layout& layo
   if (options.bend_cost && (*options.bend_cost < 0 || *options.bend_cost > kMaxBendCost)) {
     print_usage_error("CLI-0020", "--bend-cost " + std::to_string(*options.bend_cost) +
                                       ": expected an integer from 0 to 2^30 - 1");
+    return false;
+  }
+  if (options.cover_pieces && !bends) {
+    print_usage_error("CLI-0020", "--cover-pieces applies to --metric combined and link (this run: --metric " +
+                                      options.metric + ")");
+    return false;
+  }
+  if (options.cover_pieces && (*options.cover_pieces < 1 || *options.cover_pieces > router::kMaxCoverPieces)) {
+    print_usage_error("CLI-0020", "--cover-pieces " + std::to_string(*options.cover_pieces) +
+                                      ": expected an integer from 1 to " + std::to_string(router::kMaxCoverPieces));
     return false;
   }
   auto available = [&](const std::string& text) {

@@ -50,6 +50,9 @@ struct RoutingOptions {
   std::string metric = "l1";
   std::string orientations;  // empty: from <rules> (default rectilinear)
   std::optional<std::int64_t> bend_cost;
+  // --cover-pieces K (combined and link): each sloped blockage edge is covered by the boxes of K
+  // pieces (router::rectilinear_cover; default router::kDefaultCoverPieces).
+  std::optional<std::int64_t> cover_pieces;
   // `spm` only: orientations "any" is accepted (distances are then epsilon-approximate
   // Euclidean ones, from a fixed-orientation norm).
   bool allow_any = false;

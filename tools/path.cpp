@@ -35,7 +35,7 @@ int bend_path(const io::Layout& layout, const RoutingOptions& routing, geom::Poi
   const bool link = routing.metric == "link";
   const std::int64_t c = link ? 0 : routing_bend_cost(routing, layout);
   const geom::Point ends[2] = {from, to};
-  const BendObstacles obs = bend_obstacles(layout, ends, routing.metric, quiet);
+  const BendObstacles obs = bend_obstacles(layout, ends, routing.metric, quiet, static_cast<int>(routing.cover_pieces.value_or(router::kDefaultCoverPieces)));
   const geom::NormalizedObstacles& norm = obs.norm;
   const router::BendRouter router(norm.domain, norm.obstacles);
   const router::BendPath p = router.path(from, to, link ? router::BendMetric::Link : router::BendMetric::Combined, c);

@@ -253,7 +253,8 @@ void add_route(CLI::App& app, int& status) {
     std::size_t routed = 0;
     auto t1 = Clock::now();
     if (bends) {
-      const BendObstacles obs = bend_obstacles(*layout, {}, args->routing.metric, args->load.quiet);
+      const BendObstacles obs = bend_obstacles(*layout, {}, args->routing.metric, args->load.quiet,
+                                               static_cast<int>(args->routing.cover_pieces.value_or(router::kDefaultCoverPieces)));
       const geom::NormalizedObstacles& norm = obs.norm;
       const router::BendRouter br(norm.domain, norm.obstacles);
       const bool link = args->routing.metric == "link";

@@ -19,10 +19,11 @@ geom::NormalizedObstacles routing_obstacles(const io::Layout& layout,
 }
 
 BendObstacles bend_obstacles(const io::Layout& layout, std::span<const geom::Point> extra, const std::string& metric,
-                             bool quiet) {
+                             bool quiet, int pieces) {
   BendObstacles b;
+  b.pieces = pieces;
   b.polygons = io::blockage_polygons(layout, &b.owner);
-  const std::vector<geom::Polygon> cover = router::rectilinear_cover(b.polygons, &b.covered);
+  const std::vector<geom::Polygon> cover = router::rectilinear_cover(b.polygons, &b.covered, pieces);
   std::size_t last = layout.blockages.size();
   for (const std::size_t i : b.covered) {
     if (b.owner[i] == last) continue;  // shapes of one blockage are consecutive
@@ -30,8 +31,9 @@ BendObstacles bend_obstacles(const io::Layout& layout, std::span<const geom::Poi
     const io::Blockage& blk = layout.blockages[last];
     print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0008", layout.file, blk.line, 0,
                                   "blockage \"" + blk.id + "\" has sloped edges: --metric " + metric +
-                                      " routes around its rectilinear cover (the bounding box of every sloped "
-                                      "edge is added to it)"}},
+                                      " routes around its rectilinear cover (every sloped edge cut into " +
+                                      std::to_string(pieces) + " pieces, the bounding box of each added to it; "
+                                      "--cover-pieces sets how many)"}},
                       quiet);
   }
   b.norm = geom::normalize_obstacles(cover, io::routing_domain(layout, extra));
@@ -44,7 +46,7 @@ std::string BendObstacles::why_not_free(const io::Layout& layout, geom::Point q)
   if (plain.rfind("is not in free space", 0) != 0) return plain;
   for (const std::size_t i : covered) {
     const geom::Polygon only[1] = {polygons[i]};
-    for (const geom::Polygon& box : router::rectilinear_cover(only))
+    for (const geom::Polygon& box : router::rectilinear_cover(only, nullptr, pieces))
       if (geom::locate(q, box) != geom::Location::Outside) {
         const io::Blockage& blk = layout.blockages[owner[i]];
         return "lies in the rectilinear cover of sloped blockage \"" + blk.id + "\" (" + layout.file + ":" +
@@ -73,10 +75,10 @@ std::string BendObstacles::why_under(const io::Layout& layout, const geom::Polyg
   for (const std::size_t i : covered) {
     const geom::Polygon only[1] = {polygons[i]};
     std::vector<geom::Polygon> cover;
-    for (const geom::Polygon& p : router::rectilinear_cover(only)) cover.push_back(ccw(p));
+    for (const geom::Polygon& p : router::rectilinear_cover(only, nullptr, pieces)) cover.push_back(ccw(p));
     if (router::PinShapes(cover).meets_obstacle(pin))
       return "lies partly under the rectilinear cover of sloped blockage " + at(i) +
-             " (these metrics route around the bounding boxes of its sloped edges; ROUTE-0008)" + rest;
+             " (these metrics route around boxes along its sloped edges; ROUTE-0008)" + rest;
   }
   return "lies partly under a blockage" + rest;
 }

@@ -12,6 +12,7 @@
 #include "geom/root2.h"
 #include "io/layout.h"
 #include "geom/triangulation.h"
+#include "router/bend_router.h"
 #include "router/l1_router.h"
 #include "router/tighten.h"
 
@@ -30,6 +31,7 @@ struct BendObstacles {
   std::vector<geom::Polygon> polygons;  // the blockage shapes (io::blockage_polygons)
   std::vector<std::size_t> owner;       // blockage index of each shape
   std::vector<std::size_t> covered;     // shapes with a sloped edge
+  int pieces = router::kDefaultCoverPieces;  // of each sloped edge, in the cover
   // Why p is not free for these metrics: why_not_free(), or the cover of a sloped blockage.
   std::string why_not_free(const io::Layout& layout, geom::Point p) const;
   // Why a shape pin is refused when its interior meets an obstacle: "lies partly under blockage
@@ -37,7 +39,7 @@ struct BendObstacles {
   std::string why_under(const io::Layout& layout, const geom::Polygon& pin) const;
 };
 BendObstacles bend_obstacles(const io::Layout& layout, std::span<const geom::Point> extra, const std::string& metric,
-                             bool quiet);
+                             bool quiet, int pieces = router::kDefaultCoverPieces);
 
 // Why point p (an end of a wanted wire) is not in free space, naming the blockage or the
 // boundary: "lies inside blockage "ram0" (demo.xml:19)".

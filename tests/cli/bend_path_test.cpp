@@ -151,8 +151,16 @@ TEST(BendPath, TextOutputRulesBendCostAndTheSlopedBlockageWarning) {
   const auto l1 = run_taut({"path", file, "--from", "10,10", "--to", "95,5"});
   EXPECT_EQ(l1.status, 0);
   EXPECT_NE(l1.err.find("CLI-0024"), std::string::npos) << l1.err;
-  // a point inside the triangle's cover but outside the triangle is not free for this metric
-  const auto in_cover = run_taut({"path", file, "--from", "10,10", "--to", "72,28", "--metric", "link", "--json"});
+  // a point inside the triangle's cover but outside the triangle is not free for this metric: with
+  // one box per sloped edge (--cover-pieces 1) the whole square under the hypotenuse is covered;
+  // with the default 16 pieces only boxes of 2 x 2 along it, so (72, 28) is free and (71, 11), on
+  // the hypotenuse, is not
+  check_path(file, {10, 10}, {72, 28}, {"--metric", "link"}, true, 0);
+  const auto on_edge = run_taut({"path", file, "--from", "10,10", "--to", "71,11", "--metric", "link", "--json"});
+  EXPECT_EQ(on_edge.status, 1);
+  EXPECT_NE(on_edge.err.find("cover of sloped blockage \"tri\""), std::string::npos) << on_edge.err;
+  const auto in_cover =
+      run_taut({"path", file, "--from", "10,10", "--to", "72,28", "--metric", "link", "--json", "--cover-pieces", "1"});
   EXPECT_EQ(in_cover.status, 1);
   EXPECT_NE(in_cover.err.find("ROUTE-0001"), std::string::npos) << in_cover.err;
   EXPECT_NE(in_cover.err.find("cover of sloped blockage \"tri\""), std::string::npos) << in_cover.err;
@@ -291,7 +299,7 @@ TEST(BendRoute, BendsDesignPicturesAndRoutes) {
   <blockage id="wall"><rect x0="40" y0="0" x1="50" y1="60"/></blockage>
   <blockage id="ramp"><polygon points="60,70 90,70 90,90"/></blockage>
   <net name="under"><pin name="a" x="10" y="10"/><pin name="b"><rect x0="45" y0="58" x1="55" y1="62"/></pin></net>
-  <net name="cover"><pin name="a" x="10" y="10"/><pin name="b"><rect x0="62" y0="85" x1="66" y1="89"/></pin></net>
+  <net name="cover"><pin name="a" x="10" y="10"/><pin name="b"><rect x0="75" y0="81" x1="76" y1="82"/></pin></net>
   <net name="slope"><pin name="a" x="10" y="10"/><pin name="b"><polygon points="20,20 30,20 30,25"/></pin></net>
   <net name="touch"><pin name="a" x="10" y="10"/><pin name="b"><rect x0="50" y0="20" x1="60" y1="30"/></pin></net>
 </layout>

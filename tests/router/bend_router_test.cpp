@@ -921,16 +921,18 @@ TEST(BendRouter, MovingAiCropsMatchTheReference) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// rectilinear_cover on random triangles: the normalized union of the cover has only horizontal
-// and vertical edges and contains every triangle (every lattice point in or on a triangle, and
-// every unit cell centre inside one, is in the closed union: checked on coordinates doubled so
-// the centres are lattice points, with the union reference of oracle/union_oracle.h); every
-// triangle is reported as covered; and the router, built on the cover, agrees with the reference.
+// rectilinear_cover on random triangles, with 1, 2, 3 and 16 pieces per sloped edge: the
+// normalized union of the cover has only horizontal and vertical edges and contains every
+// triangle (every lattice point in or on a triangle, and every unit cell centre inside one, is in
+// the closed union: checked on coordinates doubled so the centres are lattice points, with the
+// union reference of oracle/union_oracle.h); it lies inside the one-box-per-edge cover (pieces =
+// 1) and is often smaller; every triangle is reported as covered; and the router, built on the
+// cover, agrees with the reference.
 
 TEST(BendRouter, RectilinearCoverContainsTheTriangles) {
   Tally tally;
   int failed = 0;
-  i64 points_checked = 0;
+  i64 points_checked = 0, finer = 0;
   const int count = static_cast<int>(sanitized_share(300, 6));
   for (int it = 0; it < count; ++it) {
     const unsigned seed = 5200 + static_cast<unsigned>(it);
@@ -938,46 +940,67 @@ TEST(BendRouter, RectilinearCoverContainsTheTriangles) {
     std::mt19937 rng(seed);
     const Box domain{{0, 0}, {12, 12}};
     const std::vector<Polygon> tris = random_triangles(rng, domain, 4);
-    std::vector<std::size_t> covered;
-    const std::vector<Polygon> cover = router::rectilinear_cover(tris, &covered);
-    std::vector<std::size_t> all(tris.size());
-    for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
-    ASSERT_EQ(covered, all);  // every triangle has a sloped edge
-    const auto norm = geom::normalize_obstacles(cover, domain);
-    for (const Polygon& p : norm.obstacles) {
-      auto straight = [](const Ring& r) {
-        for (std::size_t i = 0; i < r.size(); ++i)
-          if (r[i].x != r[(i + 1) % r.size()].x && r[i].y != r[(i + 1) % r.size()].y) return false;
-        return true;
-      };
-      ASSERT_TRUE(straight(p.outer)) << "a sloped outer edge in " << describe(norm.domain, norm.obstacles);
-      for (const Ring& h : p.holes) ASSERT_TRUE(straight(h)) << "a sloped hole edge in " << describe(norm.domain, norm.obstacles);
-    }
-    std::vector<Polygon> doubled;
-    for (const Polygon& p : norm.obstacles) doubled.push_back(oracle::scaled(p, 2));
-    for (const Polygon& t : tris) {
-      const Polygon t2 = oracle::scaled(t, 2);
-      for (int y = 0; y <= 24; ++y)
-        for (int x = 0; x <= 24; ++x) {
-          const geom::Location l = geom::locate(Point{x, y}, t2);
-          // Lattice points (even, even) in or on the triangle; other points strictly inside.
-          const bool must = (x % 2 == 0 && y % 2 == 0) ? l != geom::Location::Outside : l == geom::Location::Inside;
-          if (!must) continue;
-          ++points_checked;
-          ASSERT_TRUE(oracle::in_obstacles({x, y}, doubled)) << "(" << x << "/2, " << y << "/2) of a triangle is not covered";
+    std::vector<Polygon> coarse;  // pieces = 1, doubled
+    i64 coarse_points = 0;
+    for (const int pieces : {1, 2, 3, 16}) {
+      SCOPED_TRACE("pieces " + std::to_string(pieces));
+      std::vector<std::size_t> covered;
+      const std::vector<Polygon> cover = router::rectilinear_cover(tris, &covered, pieces);
+      std::vector<std::size_t> all(tris.size());
+      for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
+      ASSERT_EQ(covered, all);  // every triangle has a sloped edge
+      const auto norm = geom::normalize_obstacles(cover, domain);
+      for (const Polygon& p : norm.obstacles) {
+        auto straight = [](const Ring& r) {
+          for (std::size_t i = 0; i < r.size(); ++i)
+            if (r[i].x != r[(i + 1) % r.size()].x && r[i].y != r[(i + 1) % r.size()].y) return false;
+          return true;
+        };
+        ASSERT_TRUE(straight(p.outer)) << "a sloped outer edge in " << describe(norm.domain, norm.obstacles);
+        for (const Ring& h : p.holes) ASSERT_TRUE(straight(h)) << "a sloped hole edge in " << describe(norm.domain, norm.obstacles);
+      }
+      std::vector<Polygon> doubled;
+      for (const Polygon& p : norm.obstacles) doubled.push_back(oracle::scaled(p, 2));
+      for (const Polygon& t : tris) {
+        const Polygon t2 = oracle::scaled(t, 2);
+        for (int y = 0; y <= 24; ++y)
+          for (int x = 0; x <= 24; ++x) {
+            const geom::Location l = geom::locate(Point{x, y}, t2);
+            // Lattice points (even, even) in or on the triangle; other points strictly inside.
+            const bool must = (x % 2 == 0 && y % 2 == 0) ? l != geom::Location::Outside : l == geom::Location::Inside;
+            if (!must) continue;
+            ++points_checked;
+            ASSERT_TRUE(oracle::in_obstacles({x, y}, doubled)) << "(" << x << "/2, " << y << "/2) of a triangle is not covered";
+          }
+      }
+      // inside the coarse cover, and how much of the half-lattice it covers
+      i64 points = 0;
+      for (int y = -2; y <= 26; ++y)
+        for (int x = -2; x <= 26; ++x) {
+          if (!oracle::in_obstacles({x, y}, doubled)) continue;
+          ++points;
+          if (pieces > 1) {
+            ASSERT_TRUE(oracle::in_obstacles({x, y}, coarse)) << "(" << x << "/2, " << y << "/2) is outside the coarse cover";
+          }
         }
+      if (pieces == 1) coarse = doubled, coarse_points = points;
+      if (pieces == 16) finer += points < coarse_points;
+      if (pieces != std::vector<int>{1, 2, 3, 16}[static_cast<std::size_t>(it) % 4]) continue;
+      // The router takes the cover, and agrees with the reference on it.
+      const BendReference ref(norm.domain, norm.obstacles);
+      const BendRouter router(norm.domain, norm.obstacles);
+      std::vector<std::pair<Point, Point>> pairs;
+      auto uni = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+      for (int q = 0; q < 3; ++q) pairs.push_back({{uni(0, 12), uni(0, 12)}, {uni(0, 12), uni(0, 12)}});
+      const std::string r = check_pairs(ref, router, pairs, tally, "seed " + std::to_string(seed) + ": " + describe(norm.domain, norm.obstacles) + "\n");
+      if (!r.empty() && failed++ < 3) ADD_FAILURE() << r;
     }
-    // The router takes the cover, and agrees with the reference on it.
-    const BendReference ref(norm.domain, norm.obstacles);
-    const BendRouter router(norm.domain, norm.obstacles);
-    std::vector<std::pair<Point, Point>> pairs;
-    auto uni = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
-    for (int q = 0; q < 3; ++q) pairs.push_back({{uni(0, 12), uni(0, 12)}, {uni(0, 12), uni(0, 12)}});
-    const std::string r = check_pairs(ref, router, pairs, tally, "seed " + std::to_string(seed) + ": " + describe(norm.domain, norm.obstacles) + "\n");
-    if (!r.empty() && failed++ < 3) ADD_FAILURE() << r;
   }
+  std::printf("%d layouts of triangles, %lld points checked, the 16-piece cover smaller than the one-box cover in %lld\n",
+              count, static_cast<long long>(points_checked), static_cast<long long>(finer));
   EXPECT_EQ(failed, 0);
-  EXPECT_GT(points_checked, count * 20);
+  EXPECT_GT(points_checked, count * 80);
+  EXPECT_GT(finer, count / 2);
   EXPECT_GT(tally.ok, count);
 }
 
