@@ -10,7 +10,11 @@
 // combined queries in the same run, and its answers are compared. `shape`: the same pairs with each
 // end a square pin at that vertex (the largest of side domain/100, /200, ... that overlaps no
 // obstacle; a wire may end anywhere on it: the search starts from the square's candidate points),
-// combined metric, as a ratio to the point query.
+// combined metric, as a ratio to the point query. `map`: section 4's structure for one fixed
+// target (router::BendTargetMap: a Dijkstra run from the target and eight slab trees), its build
+// time as a ratio to one graph query, its size in envelope pieces per vertex, and a query from
+// every vertex and from as many lattice points (cost only) as a ratio of the graph query's time
+// to the map's.
 //
 //   bench_bends [--sizes N,N,...] [--queries Q] [--kind rects|maze] [--ref-max N]
 #include <cmath>
@@ -31,7 +35,9 @@ using taut::geom::Point;
 
 struct Row {
   std::int64_t n = 0;
-  double sort = 0, build = 0, combined = 0, link = 0, l1 = 0, ref = -1, shape = 0;
+  double sort = 0, build = 0, combined = 0, link = 0, l1 = 0, ref = -1, shape = 0, map_build = 0, map_query = 0;
+  double map_pieces = 0;
+  int map_agree = 0, map_checked = 0;
   int ref_agree = 0;
   taut::router::BendGraphStats stats;
   std::size_t edges = 0;
@@ -62,9 +68,9 @@ int main(int argc, char** argv) {
   }
   std::printf("taut bend benchmark: kind=%s, %d queries per size (pairs of spread obstacle vertices), one thread\n",
               kind_name.c_str(), queries);
-  std::printf("%8s %8s %9s %10s %10s | %9s %9s | %10s %10s %10s | %8s %8s %8s | %10s\n", "n", "nodes", "tracks",
+  std::printf("%8s %8s %9s %10s %10s | %9s %9s | %10s %10s %10s | %8s %8s %8s | %10s | %9s %9s %9s %9s %9s\n", "n", "nodes", "tracks",
               "straight", "L-edges", "build(s)", "/sort", "comb(ms)", "link(ms)", "l1(ms)", "comb/l1",
-              "link/l1", "found (l1)", "shape/comb");
+              "link/l1", "found (l1)", "shape/comb", "map(s)", "/comb", "pieces/n", "query(us)", "comb/query");
   std::vector<Row> rows;
   for (const std::int64_t size : sizes) {
     const taut::bench::BenchLayout b = taut::bench::bench_layout(*kind, size);
@@ -109,6 +115,35 @@ int main(int argc, char** argv) {
     row.shape = seconds_of([&] {
                   for (const auto& [s, t] : pins) (void)router->path(s, t, taut::router::BendMetric::Combined, 1000);
                 }, 1) / std::max<std::size_t>(1, pins.size());
+    // section 4: the map of the first pair's target, queried from every vertex and lattice points
+    {
+      const Point target = pairs.empty() ? b.points.front() : pairs.front().second;
+      std::unique_ptr<taut::router::BendTargetMap> map;
+      row.map_build = seconds_of([&] { map = std::make_unique<taut::router::BendTargetMap>(*router, target, taut::router::BendMetric::Combined, 1000); }, 1);
+      row.map_pieces = static_cast<double>(map->pieces()) / static_cast<double>(std::max<std::int64_t>(1, row.n));
+      std::vector<Point> qs(b.points.begin(), b.points.end());
+      const taut::geom::Box& d = b.norm.domain;
+      std::uint64_t s = 7;
+      for (std::size_t i = 0; i < b.points.size(); ++i) {
+        s = s * 6364136223846793005ULL + 1442695040888963407ULL;
+        const auto fx = static_cast<std::int64_t>((s >> 33) % static_cast<std::uint64_t>(std::int64_t{d.hi.x} - d.lo.x + 1));
+        const auto fy = static_cast<std::int64_t>((s >> 13) % static_cast<std::uint64_t>(std::int64_t{d.hi.y} - d.lo.y + 1));
+        qs.push_back({static_cast<taut::geom::Coord>(d.lo.x + fx), static_cast<taut::geom::Coord>(d.lo.y + fy)});
+      }
+      std::int64_t sink = 0;
+      row.map_query = seconds_of([&] {
+                        for (const Point q : qs) sink += map->cost(q).length;
+                      }, 1) / static_cast<double>(qs.size());
+      // the graph query answers the same (on a sample)
+      for (std::size_t i = 0; i < qs.size(); i += std::max<std::size_t>(1, qs.size() / 20)) {
+        const auto want = router->path(qs[i], target, taut::router::BendMetric::Combined, 1000);
+        taut::router::WireStatus st{};
+        const auto got = map->cost(qs[i], &st);
+        ++row.map_checked;
+        row.map_agree += st == want.status && (st != taut::router::WireStatus::Ok || (got.length == want.length && got.bends == want.bends));
+      }
+      if (sink == 42) std::printf(" ");
+    }
     taut::router::L1Router l1(b.norm.domain, b.norm.obstacles);
     row.l1 = seconds_of([&] {
                row.l1_found = 0;
@@ -128,10 +163,12 @@ int main(int argc, char** argv) {
                 }, 1) / std::max<std::size_t>(1, pairs.size());
     }
     const auto& st = row.stats;
-    std::printf("%8lld %8zu %9zu %10zu %10zu | %9.3f %9.1f | %10.2f %10.2f %10.2f | %8.2f %8.2f %5d/%d (%d) | %10.2f\n",
+    std::printf("%8lld %8zu %9zu %10zu %10zu | %9.3f %9.1f | %10.2f %10.2f %10.2f | %8.2f %8.2f %5d/%d (%d) | %10.2f | %9.3f %9.1f %9.1f %9.2f %9.0f\n",
                 static_cast<long long>(row.n), st.nodes, st.tracks, st.straight_edges, st.l_edges, row.build,
                 row.build / row.sort, row.combined * 1e3, row.link * 1e3, row.l1 * 1e3, row.combined / row.l1,
-                row.link / row.l1, row.found, row.queries, row.l1_found, row.shape / row.combined);
+                row.link / row.l1, row.found, row.queries, row.l1_found, row.shape / row.combined, row.map_build,
+                row.map_build / row.combined, row.map_pieces, row.map_query * 1e6, row.combined / row.map_query);
+    std::printf("%8s map answers equal to the graph query's on %d of %d sampled points\n", "", row.map_agree, row.map_checked);
     if (row.ref >= 0)
       std::printf("%8s reference: %.2f ms per query (%.0f x combined), %d of %d answers equal\n", "", row.ref * 1e3,
                   row.ref / row.combined, row.ref_agree, row.queries);
@@ -139,16 +176,16 @@ int main(int argc, char** argv) {
     rows.push_back(row);
   }
   std::printf("\ngrowth exponents between consecutive sizes (1.0 = linear):\n");
-  std::printf("%8s -> %8s | %8s %8s %8s %8s\n", "n1", "n2", "edges", "build", "combined", "l1");
+  std::printf("%8s -> %8s | %8s %8s %8s %8s %8s %8s\n", "n1", "n2", "edges", "build", "combined", "l1", "map", "map-q");
   for (std::size_t i = 1; i < rows.size(); ++i) {
     const Row& a = rows[i - 1];
     const Row& b = rows[i];
     const double dn = std::log(static_cast<double>(b.n) / static_cast<double>(a.n));
     const double ea = static_cast<double>(a.stats.straight_edges + a.stats.l_edges + a.stats.nodes);
     const double eb = static_cast<double>(b.stats.straight_edges + b.stats.l_edges + b.stats.nodes);
-    std::printf("%8lld -> %8lld | %8.2f %8.2f %8.2f %8.2f\n", static_cast<long long>(a.n), static_cast<long long>(b.n),
+    std::printf("%8lld -> %8lld | %8.2f %8.2f %8.2f %8.2f %8.2f %8.2f\n", static_cast<long long>(a.n), static_cast<long long>(b.n),
                 std::log(eb / ea) / dn, std::log(b.build / a.build) / dn, std::log(b.combined / a.combined) / dn,
-                std::log(b.l1 / a.l1) / dn);
+                std::log(b.l1 / a.l1) / dn, std::log(b.map_build / a.map_build) / dn, std::log(b.map_query / a.map_query) / dn);
   }
   return 0;
 }

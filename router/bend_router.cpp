@@ -385,6 +385,14 @@ struct BendRouter::Impl {
     std::vector<std::vector<std::size_t>> chains;
     std::vector<std::size_t> leads;
     std::vector<BendCost> costs;  // without walks: per sink
+    // All: the whole Dijkstra from the source (no sinks): per built graph vertex its cost, its
+    // predecessor (itself at a root) and the source's query vertex it was entered from (-1: the
+    // source is that vertex); the source's query node and tracks when it is no vertex.
+    std::vector<Cost> dist;
+    std::vector<std::size_t> pred;
+    std::vector<std::int32_t> entered_from;
+    std::vector<Node> qnodes;
+    std::vector<Track> qtracks;
   };
   // Walks: the walks and chains. Costs: only `costs` (a sink not reached is not an error then).
   // Bends (link metric only): only the bends of `costs` (lengths 0), by a 0-1 breadth-first
@@ -392,7 +400,8 @@ struct BendRouter::Impl {
   // The source and each sink is a set of points, any of which will do (a point pin is one, a
   // shape pin its candidates): the search starts from every free source point at cost 0 and
   // takes the best of a sink's points. A set with no free point is not free.
-  enum class Mode { Walks, Costs, Bends };
+  // All: see Search.
+  enum class Mode { Walks, Costs, Bends, All };
   Search search(std::span<const Point> sources, std::span<const std::vector<Point>> sinks, BendMetric metric,
                 i64 bend_cost, Mode mode = Mode::Walks) const;
   Search search(Point s, std::span<const Point> sinks, BendMetric metric, i64 bend_cost,
@@ -674,7 +683,9 @@ BendRouter::Impl::Search BendRouter::Impl::search(std::span<const Point> sources
     std::vector<Offer>* offers;
     std::multiset<Cost>* offered;
     std::size_t* unoffered;
+    bool all = false;  // settle every vertex
     void examine_vertex(std::size_t u, const Graph&) const {
+      if (all) return;
       const Cost& d = (*dist)[u];
       // every sink's best offer is at most what is left: done
       if (*unoffered == 0 && !(d < *offered->rbegin())) throw Stop{};
@@ -698,6 +709,7 @@ BendRouter::Impl::Search BendRouter::Impl::search(std::span<const Point> sources
   vis.offers = &offers;
   vis.offered = &offered;
   vis.unoffered = &unoffered;
+  vis.all = mode == Mode::All;
   const auto index = boost::get(boost::vertex_index, graph);
   const auto wmap = boost::make_function_property_map<Graph::edge_descriptor, Cost>(
       [&](const Graph::edge_descriptor& e) {
@@ -714,6 +726,14 @@ BendRouter::Impl::Search BendRouter::Impl::search(std::span<const Point> sources
   } catch (const Stop&) {
   }
 
+  if (mode == Mode::All) {
+    out.dist = std::move(dist);
+    out.pred = std::move(pred);
+    out.entered_from = std::move(entered_from);
+    out.qnodes = std::move(qnodes);
+    out.qtracks = std::move(qtracks);
+    return out;
+  }
   if (mode == Mode::Costs) {
     for (const Offer& o : offers) {
       BendCost c;
@@ -942,6 +962,308 @@ std::vector<std::int64_t> BendRouter::fewest_bends(Point source, std::span<const
 }
 
 const BendGraphStats& BendRouter::stats() const { return impl_->stats; }
+
+// ---------------------------------------------------------------------------------------------
+// BendTargetMap (section 4)
+
+namespace {
+
+// One slab tree: items (a vertex's track crossing the query axis) sorted by u (the coordinate
+// along the query interval), a segment tree over them whose every node holds the lower envelope
+// of its items' keys along v as pieces: from v0 on (up to the next piece) the best item, or -1.
+struct SlabTree {
+  struct Item {
+    Coord u;
+    Coord vlo, vhi;  // the closed range of v the item covers
+    Cost key;
+    std::int32_t gv;  // the built graph vertex the step arrives at
+  };
+  struct Piece {
+    Coord v0;
+    std::int32_t item;  // -1: none
+  };
+  std::vector<Item> items;  // sorted by u
+  std::vector<std::vector<Piece>> env;  // env[n] for segment tree node n (leaves at size + i)
+  std::size_t size = 0;
+
+  bool better(std::int32_t a, std::int32_t b) const {
+    if (a < 0) return false;
+    if (b < 0) return true;
+    const Item& x = items[static_cast<std::size_t>(a)];
+    const Item& y = items[static_cast<std::size_t>(b)];
+    if (x.key < y.key) return true;
+    if (y.key < x.key) return false;
+    return x.gv < y.gv;  // ties: the same answer every time
+  }
+  // The envelope of two envelopes.
+  std::vector<Piece> merge(const std::vector<Piece>& a, const std::vector<Piece>& b) const {
+    std::vector<Piece> out;
+    std::size_t i = 0, j = 0;
+    std::int32_t ca = -1, cb = -1;  // current items of a and b
+    while (i < a.size() || j < b.size()) {
+      Coord v;
+      if (j >= b.size() || (i < a.size() && a[i].v0 <= b[j].v0)) v = a[i].v0;
+      else v = b[j].v0;
+      while (i < a.size() && a[i].v0 == v) ca = a[i++].item;
+      while (j < b.size() && b[j].v0 == v) cb = b[j++].item;
+      const std::int32_t best = better(cb, ca) ? cb : ca;
+      if (out.empty() ? best >= 0 : out.back().item != best) {
+        if (!out.empty() && out.back().v0 == v) out.back().item = best;
+        else out.push_back({v, best});
+      }
+    }
+    return out;
+  }
+  void build(std::vector<Item> all) {
+    std::sort(all.begin(), all.end(), [](const Item& a, const Item& b) { return a.u < b.u; });
+    items = std::move(all);
+    size = items.size();
+    env.assign(2 * size, {});
+    for (std::size_t i = 0; i < size; ++i) {
+      const Item& it = items[i];
+      env[size + i] = {{it.vlo, static_cast<std::int32_t>(i)}};
+      env[size + i].push_back({static_cast<Coord>(it.vhi + 1), -1});  // |v| < 2^30
+    }
+    for (std::size_t n = size; n-- > 1;) env[n] = merge(env[2 * n], env[2 * n + 1]);
+  }
+  // The best item with u in [ulo, uhi] whose range holds v; -1: none.
+  std::int32_t query(Coord ulo, Coord uhi, Coord v) const {
+    if (ulo > uhi || size == 0) return -1;
+    auto lo = static_cast<std::size_t>(std::lower_bound(items.begin(), items.end(), ulo, [](const Item& a, Coord x) { return a.u < x; }) - items.begin());
+    auto hi = static_cast<std::size_t>(std::upper_bound(items.begin(), items.end(), uhi, [](Coord x, const Item& a) { return x < a.u; }) - items.begin());
+    std::int32_t best = -1;
+    auto look = [&](std::size_t n) {
+      const std::vector<Piece>& e = env[n];
+      auto it = std::upper_bound(e.begin(), e.end(), v, [](Coord x, const Piece& p) { return x < p.v0; });
+      if (it == e.begin()) return;
+      const std::int32_t cand = std::prev(it)->item;
+      if (better(cand, best)) best = cand;
+    };
+    for (lo += size, hi += size; lo < hi; lo >>= 1, hi >>= 1) {
+      if (lo & 1) look(lo++);
+      if (hi & 1) look(--hi);
+    }
+    return best;
+  }
+  std::size_t pieces() const {
+    std::size_t s = 0;
+    for (const auto& e : env) s += e.size();
+    return s;
+  }
+};
+
+}  // namespace
+
+struct BendTargetMap::Impl {
+  using Node = BendRouter::Impl::Node;
+  using Track = BendRouter::Impl::Track;
+  using Edge = BendRouter::Impl::Edge;
+  const BendRouter::Impl* r = nullptr;
+  Point target;
+  BendMetric metric = BendMetric::Combined;
+  i64 bend_cost = 0;
+  WireStatus status = WireStatus::Ok;
+  BendRouter::Impl::Search settled;  // Mode::All from the target
+  std::int32_t base = 0;             // the first query node's index (the target's, if any)
+  // slab trees by kind: first link direction a, second b (a perpendicular to b): index 2a + (b
+  // is a + 1 (mod 4) ? 0 : 1)
+  SlabTree slabs[8];
+
+  Cost weight(i64 length, i64 bends) const {
+    return metric == BendMetric::Link ? Cost{bends, length} : Cost{i128{length} + i128{bend_cost} * bends, bends};
+  }
+  // The cost with `shift` added to its length component.
+  Cost shifted(Cost c, i64 shift) const {
+    if (metric == BendMetric::Link) c.second += shift;
+    else c.first += shift;
+    return c;
+  }
+  static int kind(int a, int b) { return 2 * a + (b == ((a + 1) & 3) ? 0 : 1); }
+  const Node& node_of(std::int32_t gv) const {
+    return gv < 2 * base ? r->nodes[static_cast<std::size_t>(gv / 2)]
+                         : settled.qnodes[static_cast<std::size_t>(gv / 2 - base)];
+  }
+
+  // The best first step from q: its cost and the walk to the target.
+  struct Best {
+    Cost cost = kInf;
+    std::vector<std::pair<Point, bool>> walk;  // the first points, before the chain
+    std::int32_t gv = -1;                      // the built graph vertex the chain starts at, or -1
+  };
+  WireStatus best(Point q, Best& out) const;
+};
+
+WireStatus BendTargetMap::Impl::best(Point q, Best& b) const {
+  using Track = BendRouter::Impl::Track;
+  using Edge = BendRouter::Impl::Edge;
+  if (status != WireStatus::Ok) return status;
+  const std::vector<Cost>& dist = settled.dist;
+  auto consider = [&](Cost c, std::vector<std::pair<Point, bool>> walk, std::int32_t gv) {
+    if (c == kInf || !(c < b.cost)) return;
+    b.cost = c;
+    b.walk = std::move(walk);
+    b.gv = gv;
+  };
+  if (q == target) {
+    consider(Cost{}, {{q, true}}, -1);
+    return WireStatus::Ok;
+  }
+  const auto vit = r->vertex_nodes.find(key(q));
+  if (vit != r->vertex_nodes.end()) {  // a vertex: its own nodes' costs
+    if (vit->second.empty()) return WireStatus::SourceNotFree;
+    for (const std::int32_t n : vit->second)
+      for (const std::int32_t gv : {2 * n, 2 * n + 1}) consider(dist[static_cast<std::size_t>(gv)], {}, gv);
+    return b.cost == kInf ? WireStatus::Unreachable : WireStatus::Ok;
+  }
+  const std::vector<unsigned> w = wedges_of(r->point_material(q));
+  if (w.empty()) return WireStatus::SourceNotFree;
+  const std::int32_t qn = -1;  // q's node id in its tracks (unused as a graph vertex)
+  std::vector<Track> tracks;
+  for (int k = 0; k < 4; ++k)
+    if (in_wedge(w.front(), k)) tracks.push_back(r->shoot(qn, q, k));
+  for (const Track& t : tracks) {
+    if (t.end == t.start) continue;
+    const bool h = horizontal(t.dir);
+    const i64 len = dist1(t.start, t.end);
+    // straight to the vertex the track ends on
+    if (t.to >= 0) {
+      const std::int32_t gv = 2 * t.to + (h ? 0 : 1);
+      consider(add_costs(dist[static_cast<std::size_t>(gv)], weight(len, 0)), {{q, h}}, gv);
+    }
+    // an L: the corners on the track, after q and before a vertex it ends on
+    const int a = t.dir;
+    const Coord step = h ? kStep[a].x : kStep[a].y;
+    const Coord from = h ? q.x + step : q.y + step;
+    const Coord to = (h ? t.end.x : t.end.y) - (r->is_vertex(t.end) ? step : 0);
+    const Coord ulo = std::min(from, to), uhi = std::max(from, to);
+    if ((i64{to} - from) * step < 0) continue;  // no corner
+    for (const int bdir : {(a + 1) & 3, (a + 3) & 3}) {
+      const SlabTree& s = slabs[kind(a, bdir)];
+      const std::int32_t i = s.query(ulo, uhi, h ? q.y : q.x);
+      if (i < 0) continue;
+      const SlabTree::Item& it = s.items[static_cast<std::size_t>(i)];
+      // cost: key + C - (kStep[a] + kStep[b]) . q in the length
+      const Point sv{kStep[a].x + kStep[bdir].x, kStep[a].y + kStep[bdir].y};
+      const i64 sq = i64{sv.x} * q.x + i64{sv.y} * q.y;
+      consider(add_costs(shifted(it.key, -sq), weight(0, 1)), {{q, h}}, it.gv);
+    }
+  }
+  // straight or L to the target itself, when it is no vertex
+  if (!settled.qtracks.empty()) {
+    for (const Track& t : tracks) {
+      if (t.end == t.start) continue;
+      const bool on = std::min(t.start.x, t.end.x) <= target.x && target.x <= std::max(t.start.x, t.end.x) &&
+                      std::min(t.start.y, t.end.y) <= target.y && target.y <= std::max(t.start.y, t.end.y);
+      if (on) consider(weight(dist1(q, target), 0), {{q, horizontal(t.dir)}, {target, horizontal(t.dir)}}, -1);
+      for (const Track& u : settled.qtracks) {
+        if (horizontal(t.dir) == horizontal(u.dir) || u.end == u.start) continue;
+        Edge e{};
+        const bool th = horizontal(t.dir);
+        if (th ? r->l_edge(t, u, e) : r->l_edge(u, t, e))
+          consider(weight(e.length, 1), {{q, th}, {target, !th}}, -1);
+      }
+    }
+  }
+  return b.cost == kInf ? WireStatus::Unreachable : WireStatus::Ok;
+}
+
+BendTargetMap::BendTargetMap(const BendRouter& router, Point target, BendMetric metric, std::int64_t bend_cost)
+    : impl_(std::make_unique<Impl>()) {
+  if (metric == BendMetric::Combined && (bend_cost < 0 || bend_cost > (i64{1} << 31)))
+    throw std::invalid_argument("BendTargetMap: the bend cost must lie in [0, 2^31]");
+  Impl& m = *impl_;
+  m.r = router.impl_.get();
+  m.target = target;
+  m.metric = metric;
+  m.bend_cost = metric == BendMetric::Link ? 0 : bend_cost;
+  m.base = static_cast<std::int32_t>(m.r->nodes.size());
+  m.settled = m.r->search({&target, 1}, {}, metric, m.bend_cost, BendRouter::Impl::Mode::All);
+  if (m.settled.status != WireStatus::Ok) {
+    m.status = WireStatus::TargetNotFree;
+    return;
+  }
+  // the slab trees: every built track of positive length is a candidate second link, arriving
+  // at its start (the vertex) in the direction opposite to it
+  std::vector<SlabTree::Item> items[8];
+  for (const BendRouter::Impl::Track& t : m.r->tracks) {
+    if (t.end == t.start) continue;
+    const int bdir = opposite(t.dir);  // the second link's direction
+    const std::int32_t gv = 2 * t.from + (horizontal(bdir) ? 0 : 1);
+    const Cost d = m.settled.dist[static_cast<std::size_t>(gv)];
+    if (d == kInf) continue;
+    const Point p = t.start;
+    // the corner runs along the track, after p and before a vertex it ends on
+    const bool h = horizontal(t.dir);
+    const Coord step = h ? kStep[t.dir].x : kStep[t.dir].y;
+    const Coord from = (h ? p.x : p.y) + step;
+    const Coord to = (h ? t.end.x : t.end.y) - (m.r->is_vertex(t.end) ? step : 0);
+    if ((i64{to} - from) * step < 0) continue;
+    for (const int a : {(bdir + 1) & 3, (bdir + 3) & 3}) {  // the first link's direction
+      const Point sv{kStep[a].x + kStep[bdir].x, kStep[a].y + kStep[bdir].y};
+      const i64 sp = i64{sv.x} * p.x + i64{sv.y} * p.y;
+      // the query runs along a's axis (u) at the corner's other coordinate (v: along the track)
+      items[Impl::kind(a, bdir)].push_back(
+          {horizontal(a) ? p.x : p.y, std::min(from, to), std::max(from, to), m.shifted(d, sp), gv});
+    }
+  }
+  for (int k = 0; k < 8; ++k) m.slabs[k].build(std::move(items[k]));
+}
+
+BendTargetMap::~BendTargetMap() = default;
+BendTargetMap::BendTargetMap(BendTargetMap&&) noexcept = default;
+BendTargetMap& BendTargetMap::operator=(BendTargetMap&&) noexcept = default;
+
+WireStatus BendTargetMap::status() const { return impl_->status; }
+
+BendCost BendTargetMap::cost(Point q, WireStatus* status) const {
+  Impl::Best b;
+  const WireStatus s = impl_->best(q, b);
+  if (status) *status = s;
+  BendCost c;
+  if (s != WireStatus::Ok) return c;
+  c.reached = true;
+  if (impl_->metric == BendMetric::Link) {
+    c.bends = static_cast<i64>(b.cost.first);
+    c.length = b.cost.second;
+  } else {
+    c.bends = b.cost.second;
+    c.length = static_cast<i64>(b.cost.first - i128{impl_->bend_cost} * b.cost.second);
+  }
+  return c;
+}
+
+BendPath BendTargetMap::path(Point q) const {
+  const Impl& m = *impl_;
+  Impl::Best b;
+  BendPath out;
+  out.status = m.best(q, b);
+  if (out.status != WireStatus::Ok) return out;
+  std::vector<std::pair<Point, bool>> walk = b.walk;
+  if (b.gv >= 0) {
+    // the chain of the Dijkstra run from the target: predecessors lead back to it
+    std::size_t v = static_cast<std::size_t>(b.gv);
+    for (std::size_t guard = 0;; ++guard) {
+      if (guard > m.settled.pred.size()) throw std::logic_error("BendTargetMap: predecessor cycle");
+      walk.emplace_back(m.node_of(static_cast<std::int32_t>(v)).p, v % 2 == 0);
+      if (m.settled.pred[v] == v) break;
+      v = m.settled.pred[v];
+    }
+    const std::int32_t from = m.settled.entered_from[v];
+    if (from >= 0) walk.emplace_back(m.node_of(from).p, from % 2 == 0);
+  }
+  out.points = walk_points(walk);
+  out.bends = geom::count_bends(out.points);
+  out.length = l1_length(out.points);
+  if (!(m.weight(out.length, out.bends) == b.cost))
+    throw std::logic_error("BendTargetMap: a wire's cost differs from the structure's");
+  return out;
+}
+
+std::size_t BendTargetMap::pieces() const {
+  std::size_t s = 0;
+  for (const SlabTree& t : impl_->slabs) s += t.pieces();
+  return s;
+}
 
 std::vector<Polygon> rectilinear_cover(std::span<const Polygon> polygons, std::vector<std::size_t>* covered, int pieces) {
   if (pieces < 1 || pieces > kMaxCoverPieces)

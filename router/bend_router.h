@@ -155,6 +155,50 @@ class BendRouter {
   const BendGraphStats& stats() const;
 
  private:
+  friend class BendTargetMap;
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Many queries to one fixed target (section 4 of de Berg, van Kreveld, Nilsson, Overmars): the
+// cost of an optimal path from any query point to the target in O(log^2 n) time, its path in
+// time proportional to its links, after O(E log n) preprocessing (one Dijkstra run from the
+// target over the graph) and O(n log n) storage.
+//
+// An optimal path from a query point q that is no vertex leaves q by a "simple step" to the
+// first vertex p it touches (Lemma 2.1): straight along one of q's four tracks to the vertex the
+// track ends on, or an L of eight kinds (first link W, E, N or S, then turning one of two ways)
+// whose corner is no vertex, or straight or L to the target itself. For an L of a given kind,
+// say left then down, the candidates p are the vertices whose upward track crosses q's leftward
+// track, and the cost is (q.x - p.x) + (q.y - p.y) + C + dist(p), so the best p minimises
+// dist(p) - p.x - p.y among the vertical segments (p's upward tracks) that cross a horizontal
+// query interval (q's leftward track). The paper's slab tree: the vertices in x order at the
+// leaves of a balanced tree, each node holding the lower envelope of its vertices' keys along
+// y (a piecewise-constant function, linear in the node's vertices: a Davenport-Schinzel
+// sequence); a query takes the O(log n) nodes that cover the interval and looks up y in each
+// (a binary search: O(log^2 n); the paper's fractional cascading would make it O(log n)). The
+// intervals are found by ray shooting in the R-tree (the paper's interval finding structure).
+// Exact, and equal to BendRouter::path's cost for every query (tested against it and the
+// reference).
+class BendTargetMap {
+ public:
+  // bend_cost as for BendRouter::path. The router must outlive the map.
+  BendTargetMap(const BendRouter& router, geom::Point target, BendMetric metric, std::int64_t bend_cost);
+  ~BendTargetMap();
+  BendTargetMap(BendTargetMap&&) noexcept;
+  BendTargetMap& operator=(BendTargetMap&&) noexcept;
+
+  // Ok, or TargetNotFree when the target is not free (then every query says so).
+  WireStatus status() const;
+  // The cost of an optimal path from q to the target (as BendRouter::path(q, target) gives it);
+  // *status (if not null): Ok, SourceNotFree, TargetNotFree, or Unreachable (reached false).
+  BendCost cost(geom::Point q, WireStatus* status = nullptr) const;
+  // An optimal path from q to the target, as BendRouter::path gives one (its cost equal).
+  BendPath path(geom::Point q) const;
+  // Pieces stored in the eight slab trees' envelopes (the structure's size).
+  std::size_t pieces() const;
+
+ private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

@@ -643,6 +643,82 @@ TEST(BendRouter, TreesMatchTheReference) {
 }
 
 // ---------------------------------------------------------------------------------------------
+// BendTargetMap (section 4: many queries to one fixed target by slab trees): on the random
+// instances, a target from the instance's pairs and every query point of the instance plus
+// every lattice point of a coarse grid over the domain (inside obstacles, on edges, at pinches,
+// outside the domain), in the combined metric with C in {0, 1, 7, 1000} and in the link metric:
+// the status and the cost equal the reference's, and path() gives a legal path from q to the
+// target with exactly that cost.
+
+TEST(BendRouter, TargetMapMatchesTheReference) {
+  const i64 count = sanitized_share(250, 10);
+  i64 queries = 0, ok = 0, corners = 0, pieces = 0;
+  int failed = 0;
+  for (i64 i = 0; i < count; ++i) {
+    const std::uint64_t seed = kBaseSeed + 90000 + static_cast<std::uint64_t>(i);
+    const Instance in = make_instance(seed);
+    const BendRouter router(in.domain, in.obstacles);
+    const BendReference ref(in.domain, in.obstacles);
+    std::mt19937_64 rng(seed);
+    const Point target = in.pairs[rng() % in.pairs.size()].second;
+    std::vector<Point> qs;
+    for (const auto& [s, t] : in.pairs) qs.push_back(s), qs.push_back(t);
+    const i64 w = i64{in.domain.hi.x} - in.domain.lo.x, h = i64{in.domain.hi.y} - in.domain.lo.y;
+    for (int gy = -1; gy <= 6; ++gy)
+      for (int gx = -1; gx <= 6; ++gx)
+        qs.push_back({static_cast<geom::Coord>(in.domain.lo.x + w * gx / 5), static_cast<geom::Coord>(in.domain.lo.y + h * gy / 5)});
+    for (const bool link : {false, true})
+      for (const i64 C : link ? std::vector<i64>{0} : std::vector<i64>{0, 1, 7, 1000}) {
+        const BendMetric metric = link ? BendMetric::Link : BendMetric::Combined;
+        const router::BendTargetMap map(router, target, metric, C);
+        pieces += static_cast<i64>(map.pieces());
+        const bool target_free = ref.l1().is_free(target);
+        if ((map.status() == WireStatus::Ok) != target_free) {
+          if (failed++ < 5) ADD_FAILURE() << "seed " << seed << ": target " << str(target) << " status " << str(map.status());
+          continue;
+        }
+        for (const Point q : qs) {
+          ++queries;
+          const std::optional<BendAnswer> want = target_free ? ref.best(q, target, link, C) : std::nullopt;
+          WireStatus st = WireStatus::Ok;
+          const router::BendCost got = map.cost(q, &st);
+          const WireStatus expected = !target_free ? WireStatus::TargetNotFree
+                                      : !ref.l1().is_free(q) ? WireStatus::SourceNotFree
+                                      : !want ? WireStatus::Unreachable
+                                              : WireStatus::Ok;
+          std::ostringstream head;
+          head << "seed " << seed << ": " << describe(in.domain, in.obstacles) << "\n  target " << str(target) << " from "
+               << str(q) << " " << metric_name(link) << (link ? "" : " C = " + std::to_string(C)) << ": reference "
+               << str(want) << ", map status " << str(st) << " length " << got.length << " bends " << got.bends << "\n  ";
+          if (st != expected) {
+            if (failed++ < 5) ADD_FAILURE() << head.str() << "status differs";
+            continue;
+          }
+          if (!want) continue;
+          ++ok;
+          if (got.length != want->length || got.bends != want->bends) {
+            if (failed++ < 5) ADD_FAILURE() << head.str() << "cost differs";
+            continue;
+          }
+          const BendPath p = map.path(q);
+          const std::optional<BendAnswer> m = ref.check_path(p.points);
+          if (p.points.empty() || p.points.front() != q || p.points.back() != target || !m || *m != *want) {
+            if (failed++ < 5) ADD_FAILURE() << head.str() << "path " << str(p) << " measures " << str(m);
+            continue;
+          }
+          corners += p.bends > 0;
+        }
+      }
+  }
+  std::printf("%lld instances, %lld target-map queries (%lld answered), %lld with bends, %lld envelope pieces\n",
+              static_cast<long long>(count), static_cast<long long>(queries), static_cast<long long>(ok),
+              static_cast<long long>(corners), static_cast<long long>(pieces));
+  EXPECT_EQ(failed, 0);
+  EXPECT_GE(ok, sanitized_share(25000, 10));
+  EXPECT_GE(corners, sanitized_share(20000, 10));
+}
+
+// ---------------------------------------------------------------------------------------------
 // Shape pins (BendRouter::path and tree on geom::Polygon pins): a wire may start and end anywhere
 // on a pin. The reference searches from EVERY integer point of the closed source shape to every
 // integer point of the sink's, on the full integer lattice (BendReference::
@@ -844,7 +920,7 @@ TEST(BendRouter, ShapePinsMatchTheReference) {
   EXPECT_GE(tally.ok, sanitized_share(5000, 10));
   EXPECT_GE(tally.from_inside_edge, sanitized_share(500, 10));
   EXPECT_GE(tally.shared, sanitized_share(100, 10));
-  EXPECT_GE(tally.trees_ok, sanitized_share(300, 10));
+  EXPECT_GE(tally.trees_ok, sanitized_share(200, 10));
 }
 
 // ---------------------------------------------------------------------------------------------
