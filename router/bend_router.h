@@ -42,8 +42,9 @@
 // along blockage edges and turn on their vertices, never through a point where two blockages
 // touch (nor along an obstacle edge that lies flush on the domain side).
 //
-// Not yet (issue #6): the eight initial-step structures of section 4 that answer a query from a
-// fixed target in O(log n); de Berg's link distance in a rectilinear polygon and the diameter.
+// Section 4 (many queries to one fixed target): BendTargetMap below. Shape pins: path() and
+// tree() on geom::Polygon pins (router/pin_shapes.h). Link distance in a simple rectilinear
+// polygon and its diameter: router/link_polygon.h.
 #pragma once
 
 #include <cstddef>

@@ -3,6 +3,9 @@
 // layout's blockages (rectilinear: L1 length; octilinear: the length a + b*sqrt2 of the shortest
 // path in 0/45/90/135 degrees; combined: L1 length + C x bends; link: fewest bends, then
 // shortest), with integer vertices; its cost, length, bends, points.
+// taut path FILE --from-file F --to X,Y --metric combined|link [--json]: the best wire from each
+// point of F (one X,Y per line) to one target, from router::BendTargetMap (a Dijkstra run from
+// the target and eight slab trees, then O(log^2 n) per point).
 #include <iostream>
 
 #include <nlohmann/json.hpp>
@@ -85,24 +88,116 @@ int bend_path(const io::Layout& layout, const RoutingOptions& routing, geom::Poi
   return status;
 }
 
+// --from-file with --metric combined / link: one line (or one JSON record) per source point,
+// in the file's order; a source not free or walled in gets its reason, and the exit status 1.
+int bend_paths_to(const io::Layout& layout, const RoutingOptions& routing, const std::vector<geom::Point>& from,
+                  geom::Point to, bool json, bool quiet) {
+  const bool link = routing.metric == "link";
+  const std::int64_t c = link ? 0 : routing_bend_cost(routing, layout);
+  std::vector<geom::Point> ends = from;
+  ends.push_back(to);
+  const BendObstacles obs = bend_obstacles(layout, ends, routing.metric, quiet,
+                                           static_cast<int>(routing.cover_pieces.value_or(router::kDefaultCoverPieces)));
+  const router::BendRouter router(obs.norm.domain, obs.norm.obstacles);
+  const router::BendMetric metric = link ? router::BendMetric::Link : router::BendMetric::Combined;
+  const router::BendTargetMap map(router, to, metric, c);
+  nlohmann::ordered_json j;
+  j["metric"] = routing.metric;
+  if (!link) j["bend_cost"] = c;
+  j["to"] = {to.x, to.y};
+  auto paths = nlohmann::ordered_json::array();
+  int status = kOk;
+  if (map.status() != router::WireStatus::Ok) {
+    print_usage_error("ROUTE-0001", "--to " + point_text(to) + " " + obs.why_not_free(layout, to));
+    status = kIncomplete;
+  }
+  for (const geom::Point q : from) {
+    nlohmann::ordered_json r;
+    r["from"] = {q.x, q.y};
+    const router::BendPath p = map.status() == router::WireStatus::Ok ? map.path(q) : router::BendPath{};
+    if (map.status() == router::WireStatus::Ok && p.status == router::WireStatus::Ok) {
+      const auto cost = static_cast<std::int64_t>(p.cost(metric, c));
+      r["cost"] = cost;
+      r["length"] = p.length;
+      r["bends"] = p.bends;
+      auto pts = nlohmann::ordered_json::array();
+      for (const geom::Point v : p.points) pts.push_back({v.x, v.y});
+      r["points"] = pts;
+      if (!json) {
+        std::cout << point_text(q) << ": cost " << cost << ", length " << p.length << ", " << p.bends
+                  << (p.bends == 1 ? " bend:" : " bends:");
+        for (const geom::Point v : p.points) std::cout << ' ' << point_text(v);
+        std::cout << '\n';
+      }
+    } else {
+      std::string code = "ROUTE-0001", reason;
+      if (map.status() != router::WireStatus::Ok) {
+        reason = "--to " + point_text(to) + " " + obs.why_not_free(layout, to);
+      } else if (p.status == router::WireStatus::SourceNotFree) {
+        reason = point_text(q) + " " + obs.why_not_free(layout, q);
+      } else {
+        code = "ROUTE-0002";
+        reason = point_text(to) + " cannot be reached from " + point_text(q) + ": blockages wall one of them in";
+      }
+      no_wire_json(r, reason);
+      if (map.status() == router::WireStatus::Ok) print_usage_error(code, reason);
+      if (!json) std::cout << point_text(q) << ": no wire (" << code << ")\n";
+      status = kIncomplete;
+    }
+    paths.push_back(std::move(r));
+  }
+  j["paths"] = std::move(paths);
+  if (json) std::cout << j.dump() << '\n';
+  return status;
+}
+
 }  // namespace
 
 void add_path(CLI::App& app, int& status) {
   struct Args {
-    std::string file, from, to;
+    std::string file, from, to, from_file;
     bool json = false;
     RoutingOptions routing;
     LoadOptions load;
   };
   auto args = std::make_shared<Args>();
   CLI::App* sub = app.add_subcommand("path", "One shortest wire between two points among the blockages");
-  sub->add_option("--from", args->from, "start point X,Y")->required();
+  sub->add_option("--from", args->from, "start point X,Y");
+  sub->add_option("--from-file", args->from_file,
+                  "many start points to the one --to (one X,Y per line; blank lines and # comments skipped), "
+                  "--metric combined or link: the best wire from each, from one structure for the target");
   sub->add_option("--to", args->to, "end point X,Y")->required();
   sub->add_flag("--json", args->json, "print one JSON document on stdout");
   add_routing_options(sub, args->routing);
   args->routing.allow_bends = true;
   add_input_options(sub, args->file, args->load, "do not print warnings");
   sub->callback([args, &status] {
+    if (args->from.empty() == args->from_file.empty()) {
+      print_usage_error("CLI-0022", "give --from X,Y or --from-file F (one of them)");
+      status = kInvalid;
+      return;
+    }
+    if (!args->from_file.empty()) {
+      if (args->routing.metric == "l1") {
+        print_usage_error("CLI-0020", "--from-file takes --metric combined or link (for L1 distances from many "
+                                      "points to one, taut spm --source TARGET --query-file F)");
+        status = kInvalid;
+        return;
+      }
+      const auto to = parse_point_option("--to", args->to);
+      std::vector<geom::Point> from;
+      if (!to || !read_point_file(args->from_file, from)) {
+        status = kInvalid;
+        return;
+      }
+      const auto layout = load_routing_layout(args->file, args->load, args->routing);
+      if (!layout) {
+        status = kInvalid;
+        return;
+      }
+      status = bend_paths_to(*layout, args->routing, from, *to, args->json, args->load.quiet);
+      return;
+    }
     const auto from = parse_point_option("--from", args->from);
     const auto to = from ? parse_point_option("--to", args->to) : std::nullopt;
     if (!from || !to) {

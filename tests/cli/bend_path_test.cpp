@@ -124,6 +124,71 @@ TEST(BendPath, DemoPairsAgainstTheReference) {
   }
 }
 
+// --from-file: many sources to one target (router::BendTargetMap): each record in the file's
+// order, equal to the reference's optimum and legal; a source inside a blockage gets its reason
+// (ROUTE-0001) and the exit status 1; usage errors exit 2 with nothing on stdout.
+TEST(BendPath, ManySourcesToOneTarget) {
+  const std::string dir = test::temp_dir("bend_from_file");
+  const std::string pts = dir + "/from.txt";
+  const std::vector<Point> from = {{500, 500}, {1000, 6000}, {9500, 3000}, {24000, 14000}, {10000, 10000}, {8000, 4000}};
+  std::string text = "# sources\n";
+  for (const Point p : from) text += pt(p) + "\n\n";
+  test::write_text(pts, text);
+  const Point to{10500, 10500};
+  const Ref ref = reference_for(kDemo, {});
+  for (const bool link : {false, true}) {
+    SCOPED_TRACE(link ? "link" : "combined");
+    std::vector<std::string> args = {"path", kDemo, "--from-file", pts, "--to", pt(to), "--json", "-q"};
+    if (link) args.insert(args.end(), {"--metric", "link"});
+    else args.insert(args.end(), {"--metric", "combined", "--bend-cost", "700"});
+    const auto r = run_taut(args);
+    EXPECT_EQ(r.status, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["to"], nlohmann::json::array({to.x, to.y}));
+    ASSERT_EQ(j["paths"].size(), from.size());
+    for (std::size_t i = 0; i < from.size(); ++i) {
+      const auto& rec = j["paths"][i];
+      EXPECT_EQ(rec["from"], nlohmann::json::array({from[i].x, from[i].y}));
+      const auto want = ref.ref->best(from[i], to, link, 700);
+      ASSERT_TRUE(want.has_value());
+      EXPECT_EQ(rec["length"].get<std::int64_t>(), want->length) << pt(from[i]);
+      EXPECT_EQ(rec["bends"].get<std::int64_t>(), want->bends) << pt(from[i]);
+      EXPECT_EQ(rec["cost"].get<std::int64_t>(), link ? want->bends : want->length + 700 * want->bends);
+      const std::vector<Point> w = points_of(rec["points"]);
+      ASSERT_FALSE(w.empty());
+      EXPECT_EQ(w.front(), from[i]);
+      EXPECT_EQ(w.back(), to);
+      const auto got = ref.ref->check_path(w);
+      ASSERT_TRUE(got.has_value()) << "the wire leaves free space";
+      EXPECT_EQ(*got, *want);
+    }
+  }
+  // a source inside a blockage: its record has a reason, the others are answered, exit status 1
+  test::write_text(pts, "500,500\n5000,3000\n");
+  const auto bad = run_taut({"path", kDemo, "--from-file", pts, "--to", pt(to), "--metric", "link", "--json"});
+  EXPECT_EQ(bad.status, 1);
+  EXPECT_NE(bad.err.find("ROUTE-0001"), std::string::npos) << bad.err;
+  const auto jb = nlohmann::json::parse(bad.out);
+  ASSERT_EQ(jb["paths"].size(), 2u);
+  EXPECT_TRUE(jb["paths"][0]["cost"].is_number());
+  EXPECT_TRUE(jb["paths"][1]["cost"].is_null());
+  EXPECT_NE(jb["paths"][1]["reason"].get<std::string>().find("inside blockage"), std::string::npos) << bad.out;
+  // usage: both or neither of --from and --from-file, the l1 metric, a bad line
+  test::write_text(dir + "/bad.txt", "1,2\n3;4\n");
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"path", kDemo, "--from", "1,1", "--from-file", pts, "--to", "5,5", "--metric", "link"}, "CLI-0022"},
+      {{"path", kDemo, "--to", "5,5", "--metric", "link"}, "CLI-0022"},
+      {{"path", kDemo, "--from-file", pts, "--to", "5,5"}, "CLI-0020"},
+      {{"path", kDemo, "--from-file", dir + "/bad.txt", "--to", "5,5", "--metric", "link"}, dir + "/bad.txt:2: error: [CLI-0025]"},
+  };
+  for (const auto& [args, code] : cases) {
+    const auto r = run_taut(args);
+    EXPECT_EQ(r.status, 2) << code;
+    EXPECT_TRUE(r.out.empty()) << r.out;
+    EXPECT_NE(r.err.find(code), std::string::npos) << r.err;
+  }
+}
+
 TEST(BendPath, TextOutputRulesBendCostAndTheSlopedBlockageWarning) {
   const std::string dir = test::temp_dir("bend_path");
   const std::string file = dir + "/rules.xml";
