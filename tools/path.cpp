@@ -32,6 +32,22 @@ void no_wire_json(nlohmann::ordered_json& j, const std::string& reason) {
   j["reason"] = reason;
 }
 
+// A bend-aware wire's fields in `path --json`: cost, length, bends, points.
+void wire_json(nlohmann::ordered_json& j, std::int64_t cost, const router::BendPath& p) {
+  j["cost"] = cost;
+  j["length"] = p.length;
+  j["bends"] = p.bends;
+  auto pts = nlohmann::ordered_json::array();
+  for (const geom::Point q : p.points) pts.push_back({q.x, q.y});
+  j["points"] = pts;
+}
+// "length L, B bends: x,y x,y ..." of a bend-aware wire.
+std::string wire_text(const router::BendPath& p) {
+  std::string s = "length " + std::to_string(p.length) + ", " + std::to_string(p.bends) + (p.bends == 1 ? " bend:" : " bends:");
+  for (const geom::Point q : p.points) s += ' ' + point_text(q);
+  return s;
+}
+
 // --metric combined / link: BendRouter among the rectilinear cover of the blockages.
 int bend_path(const io::Layout& layout, const RoutingOptions& routing, geom::Point from, geom::Point to,
               bool json, bool quiet) {
@@ -66,18 +82,11 @@ int bend_path(const io::Layout& layout, const RoutingOptions& routing, geom::Poi
   if (p.status == router::WireStatus::Ok) {
     const __int128 cost = p.cost(link ? router::BendMetric::Link : router::BendMetric::Combined, c);
     const auto cost64 = static_cast<std::int64_t>(cost);  // length < 2^62 and C * bends < 2^62 here
-    j["cost"] = cost64;
-    j["length"] = p.length;
-    j["bends"] = p.bends;
-    auto pts = nlohmann::ordered_json::array();
-    for (const geom::Point q : p.points) pts.push_back({q.x, q.y});
-    j["points"] = pts;
+    wire_json(j, cost64, p);
     if (!json) {
       std::cout << "cost " << cost64 << " (" << routing.metric;
       if (!link) std::cout << ", bend cost " << c;
-      std::cout << "), length " << p.length << ", " << p.bends << (p.bends == 1 ? " bend:" : " bends:");
-      for (const geom::Point q : p.points) std::cout << ' ' << point_text(q);
-      std::cout << '\n';
+      std::cout << "), " << wire_text(p) << '\n';
     }
   } else {
     no_wire_json(j, reason);
@@ -117,18 +126,8 @@ int bend_paths_to(const io::Layout& layout, const RoutingOptions& routing, const
     const router::BendPath p = map.status() == router::WireStatus::Ok ? map.path(q) : router::BendPath{};
     if (map.status() == router::WireStatus::Ok && p.status == router::WireStatus::Ok) {
       const auto cost = static_cast<std::int64_t>(p.cost(metric, c));
-      r["cost"] = cost;
-      r["length"] = p.length;
-      r["bends"] = p.bends;
-      auto pts = nlohmann::ordered_json::array();
-      for (const geom::Point v : p.points) pts.push_back({v.x, v.y});
-      r["points"] = pts;
-      if (!json) {
-        std::cout << point_text(q) << ": cost " << cost << ", length " << p.length << ", " << p.bends
-                  << (p.bends == 1 ? " bend:" : " bends:");
-        for (const geom::Point v : p.points) std::cout << ' ' << point_text(v);
-        std::cout << '\n';
-      }
+      wire_json(r, cost, p);
+      if (!json) std::cout << point_text(q) << ": cost " << cost << ", " << wire_text(p) << '\n';
     } else {
       std::string code = "ROUTE-0001", reason;
       if (map.status() != router::WireStatus::Ok) {
@@ -177,36 +176,25 @@ void add_path(CLI::App& app, int& status) {
       status = kInvalid;
       return;
     }
-    if (!args->from_file.empty()) {
-      if (args->routing.metric == "l1") {
-        print_usage_error("CLI-0020", "--from-file takes --metric combined or link (for L1 distances from many "
-                                      "points to one, taut spm --source TARGET --query-file F)");
-        status = kInvalid;
-        return;
-      }
-      const auto to = parse_point_option("--to", args->to);
-      std::vector<geom::Point> from;
-      if (!to || !read_point_file(args->from_file, from)) {
-        status = kInvalid;
-        return;
-      }
-      const auto layout = load_routing_layout(args->file, args->load, args->routing);
-      if (!layout) {
-        status = kInvalid;
-        return;
-      }
-      status = bend_paths_to(*layout, args->routing, from, *to, args->json, args->load.quiet);
-      return;
-    }
-    const auto from = parse_point_option("--from", args->from);
-    const auto to = from ? parse_point_option("--to", args->to) : std::nullopt;
-    if (!from || !to) {
+    const bool many = !args->from_file.empty();
+    if (many && args->routing.metric == "l1") {
+      print_usage_error("CLI-0020", "--from-file takes --metric combined or link (for L1 distances from many "
+                                    "points to one, taut spm --source TARGET --query-file F)");
       status = kInvalid;
       return;
     }
-    const auto layout = load_routing_layout(args->file, args->load, args->routing);
+    std::vector<geom::Point> sources;
+    const auto from = many ? std::optional<geom::Point>(geom::Point{}) : parse_point_option("--from", args->from);
+    const auto to = from ? parse_point_option("--to", args->to) : std::nullopt;
+    const auto layout = from && to && (!many || read_point_file(args->from_file, sources))
+                            ? load_routing_layout(args->file, args->load, args->routing)
+                            : std::nullopt;
     if (!layout) {
       status = kInvalid;
+      return;
+    }
+    if (many) {
+      status = bend_paths_to(*layout, args->routing, sources, *to, args->json, args->load.quiet);
       return;
     }
     const geom::Point ends[2] = {*from, *to};
