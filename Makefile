@@ -35,7 +35,8 @@ run: build
 	$(BUILD)/tools/taut route designs/bends.xml -q --metric combined --bend-cost 0 -o out/bends.c0.xml --svg out/bends.c0.svg
 	$(BUILD)/tools/taut route designs/bends.xml -q --metric combined --bend-cost 5000 -o out/bends.c5000.xml --svg out/bends.c5000.svg
 	$(BUILD)/tools/taut diameter designs/diameter.xml --json --svg out/diameter.svg > out/diameter.json
-	@echo "wrote out/demo.routed.xml, out/demo.svg, out/demo.stats.json, out/demo.check.json, octilinear wires in out/demo.oct.routed.xml, out/demo.oct.svg, the pins' Voronoi diagram in out/demo.cells.xml, out/demo.voronoi.svg, designs/wind.xml's sketches tightened in out/wind.tightened.xml, out/wind.svg, out/wind.stats.json, and designs/bends.xml routed with bend costs 0 and 5000 in out/bends.c0.xml, out/bends.c0.svg, out/bends.c5000.xml, out/bends.c5000.svg, and designs/diameter.xml's link diameter in out/diameter.json, out/diameter.svg"
+	$(BUILD)/tools/taut route designs/demo.xml -q --metric combined --bend-cost 1000 -o out/demo.bends.xml --svg out/demo.bends.svg
+	@echo "wrote out/demo.routed.xml, out/demo.svg, out/demo.stats.json, out/demo.check.json, octilinear wires in out/demo.oct.routed.xml, out/demo.oct.svg, the pins' Voronoi diagram in out/demo.cells.xml, out/demo.voronoi.svg, designs/wind.xml's sketches tightened in out/wind.tightened.xml, out/wind.svg, out/wind.stats.json, and designs/bends.xml routed with bend costs 0 and 5000 in out/bends.c0.xml, out/bends.c0.svg, out/bends.c5000.xml, out/bends.c5000.svg, and designs/diameter.xml's link diameter in out/diameter.json, out/diameter.svg, and designs/demo.xml routed with length + 1000 x bends (shape pins included) in out/demo.bends.xml, out/demo.bends.svg"
 
 # The two trees build and test side by side (each with JOBS jobs): one's serial tails (a big
 # file compiling alone, links, a slow test) overlap the other's work. Output is kept per step.
