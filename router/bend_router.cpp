@@ -185,8 +185,7 @@ struct BendRouter::Impl {
   PinShapes pins;
 
   Impl(const Box& d, std::span<const Polygon> obs)
-      : domain(d), obstacles(obs.begin(), obs.end()), index(obs), pins(obs, corners(d)) {}
-  static std::vector<Point> corners(const Box& d) { return {d.lo, {d.hi.x, d.lo.y}, d.hi, {d.lo.x, d.hi.y}}; }
+      : domain(d), obstacles(obs.begin(), obs.end()), index(obs), pins(obs, d) {}
 
   bool is_vertex(Point p) const { return vertex_nodes.count(key(p)) != 0; }
   // p is in free space (a vertex with a wedge, or another point with free quadrants).
@@ -880,7 +879,7 @@ void BendRouter::Impl::pin_sets(const Polygon& source, std::span<const Polygon> 
   for (const Polygon& s : sinks) {
     to.push_back(free_only(pins.candidates(s, source)));
     // pins that meet: their shared point in both sets (search() offers it at no cost)
-    if (const auto p = shared_point(from, source, to.back(), s)) {
+    if (const auto p = shared_point(from, source, to.back(), s, [&](Point q) { return is_free(q); })) {
       if (!std::binary_search(from.begin(), from.end(), *p)) from.insert(std::upper_bound(from.begin(), from.end(), *p), *p);
       to.back().push_back(*p);
     }

@@ -13,7 +13,7 @@ using geom::Point;
 
 template <class W>
 BasicRouter<W>::BasicRouter(const geom::Box& domain, std::span<const geom::Polygon> obstacles)
-    : wavefront_(domain, obstacles), staircase_(domain, obstacles), pins_(obstacles) {}
+    : wavefront_(domain, obstacles), staircase_(domain, obstacles), pins_(obstacles, domain) {}
 
 template <class W>
 typename BasicRouter<W>::Wire BasicRouter<W>::shortest(geom::Point from, geom::Point to) {
@@ -93,7 +93,7 @@ typename BasicRouter<W>::Wire BasicRouter<W>::shortest(const geom::Polygon& from
     return w;
   }
   // Pins that share a point: a wire of one point there.
-  if (const auto p = shared_point(sources, from, targets, to)) {
+  if (const auto p = shared_point(sources, from, targets, to, [&](Point q) { return wavefront_.is_free(q); })) {
     w.length = Len{};
     w.polygonal = {*p};
     w.points = {*p};
@@ -138,7 +138,7 @@ typename BasicRouter<W>::Tree BasicRouter<W>::tree(const geom::Polygon& source,
       t.failed = i;
       return t;
     }
-    if (const auto touch = shared_point(c, sinks[i], sources, source)) {
+    if (const auto touch = shared_point(c, sinks[i], sources, source, [&](Point q) { return wavefront_.is_free(q); })) {
       t.distance[i] = Len{};
       if (!touch_point) touch_point = touch;
       continue;

@@ -103,12 +103,47 @@ bool in_pin(Point p, const geom::Polygon& pin) {
 }
 
 std::optional<Point> shared_point(std::span<const Point> a_cands, const geom::Polygon& a,
-                                  std::span<const Point> b_cands, const geom::Polygon& b) {
+                                  std::span<const Point> b_cands, const geom::Polygon& b,
+                                  const std::function<bool(Point)>& usable) {
   for (const Point p : a_cands)
-    if (in_pin(p, b)) return p;
+    if (in_pin(p, b) && usable(p)) return p;
   for (const Point p : b_cands)
-    if (in_pin(p, a)) return p;
-  return std::nullopt;
+    if (in_pin(p, a) && usable(p)) return p;
+  if (is_point_pin(a) || is_point_pin(b)) return std::nullopt;
+  // where an edge of a meets an edge of b: p + d t (d a unit step, 0 <= t <= its length), the
+  // crossing's parameters over D = cross(d1, d2) in {+-1, +-2}
+  std::optional<Point> found;
+  auto unit = [](Point p, Point q, Point& d, i64& len) {
+    const i64 dx = i64{q.x} - p.x, dy = i64{q.y} - p.y;
+    d = {static_cast<geom::Coord>((dx > 0) - (dx < 0)), static_cast<geom::Coord>((dy > 0) - (dy < 0))};
+    len = std::max(std::abs(dx), std::abs(dy));
+  };
+  for_each_pin_edge(a, [&](Point p1, Point q1) {
+    if (found) return;
+    Point d1;
+    i64 l1 = 0;
+    unit(p1, q1, d1, l1);
+    for_each_pin_edge(b, [&](Point p2, Point q2) {
+      if (found) return;
+      Point d2;
+      i64 l2 = 0;
+      unit(p2, q2, d2, l2);
+      i64 D = i64{d1.x} * d2.y - i64{d1.y} * d2.x;
+      if (D == 0) return;  // parallel: a shared stretch ends at a vertex, tried above
+      const i64 wx = i64{p2.x} - p1.x, wy = i64{p2.y} - p1.y;
+      i64 n1 = wx * d2.y - wy * d2.x, n2 = wx * d1.y - wy * d1.x;  // t1 = n1 / D, t2 = n2 / D
+      if (D < 0) D = -D, n1 = -n1, n2 = -n2;
+      if (n1 < 0 || n1 > l1 * D || n2 < 0 || n2 > l2 * D) return;
+      const i64 X = i64{p1.x} * D + d1.x * n1, Y = i64{p1.y} * D + d1.y * n1;  // the crossing times D
+      auto floor_div = [](i64 n, i64 k) { return n >= 0 ? n / k : -((-n + k - 1) / k); };
+      for (const i64 x : {floor_div(X, D), floor_div(X + D - 1, D)})
+        for (const i64 y : {floor_div(Y, D), floor_div(Y + D - 1, D)}) {
+          const Point p{static_cast<geom::Coord>(x), static_cast<geom::Coord>(y)};
+          if (!found && in_pin(p, a) && in_pin(p, b) && usable(p)) found = p;
+        }
+    });
+  });
+  return found;
 }
 
 bool pin_shape_supported(const geom::Polygon& pin) {
@@ -125,8 +160,8 @@ bool pin_shape_supported(const geom::Polygon& pin) {
   return ok;
 }
 
-PinShapes::PinShapes(std::span<const geom::Polygon> obstacles, std::span<const Point> more)
-    : obstacles_(obstacles.begin(), obstacles.end()) {
+PinShapes::PinShapes(std::span<const geom::Polygon> obstacles, std::optional<geom::Box> domain)
+    : domain_(domain), obstacles_(obstacles.begin(), obstacles.end()) {
   auto add = [&](const geom::Ring& r) {
     for (const Point v : r) {
       xs_.push_back(v.x);
@@ -138,9 +173,9 @@ PinShapes::PinShapes(std::span<const geom::Polygon> obstacles, std::span<const P
     for (const geom::Ring& h : p.holes) add(h);
     boxes_.push_back(ring_box(p.outer));
   }
-  for (const Point v : more) {
-    xs_.push_back(v.x);
-    ys_.push_back(v.y);
+  if (domain_) {
+    for (const geom::Coord x : {domain_->lo.x, domain_->hi.x}) xs_.push_back(x);
+    for (const geom::Coord y : {domain_->lo.y, domain_->hi.y}) ys_.push_back(y);
   }
   auto distinct = [](auto& v) {
     std::sort(v.begin(), v.end());
@@ -171,6 +206,16 @@ std::vector<Point> PinShapes::candidates(const geom::Polygon& pin, const geom::P
   if (is_point_pin(pin)) return out;
   std::vector<Point> others(other.outer.begin(), other.outer.end());
   for (const geom::Ring& h : other.holes) others.insert(others.end(), h.begin(), h.end());
+  if (domain_ && !is_point_pin(other))  // where the other pin's edges cross the domain's sides
+    for_each_pin_edge(other, [&](Point a, Point b) {
+      const i64 dx = i64{b.x} - a.x, dy = i64{b.y} - a.y;
+      for (const i64 x : {i64{domain_->lo.x}, i64{domain_->hi.x}})
+        if (dx != 0 && std::min(a.x, b.x) < x && x < std::max(a.x, b.x))
+          others.push_back({static_cast<geom::Coord>(x), static_cast<geom::Coord>(a.y + (x - a.x) * dy / dx)});
+      for (const i64 y : {i64{domain_->lo.y}, i64{domain_->hi.y}})
+        if (dy != 0 && std::min(a.y, b.y) < y && y < std::max(a.y, b.y))
+          others.push_back({static_cast<geom::Coord>(a.x + (y - a.y) * dx / dy), static_cast<geom::Coord>(y)});
+    });
   for_each_pin_edge(pin, [&](Point a, Point b) {
     const i64 dx = i64{b.x} - a.x, dy = i64{b.y} - a.y;
     // The edge's point at row y (not horizontal) or column x (not vertical): exact, |dx| = |dy|

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <span>
 #include <vector>
@@ -36,23 +37,33 @@ bool in_pin(geom::Point p, const geom::Polygon& pin);
 // included) has non-zero length and is horizontal, vertical or at 45 degrees.
 bool pin_shape_supported(const geom::Polygon& pin);
 
-// A point two pins share, from their candidates: the first of a's candidates lying in b, else
-// the first of b's lying in a (a candidate of one pin lies in the other whenever they meet, by
-// the same projections).
+// An integer point two pins share for which `usable` holds (the routers: a free point), or
+// nullopt: the first of a's candidates lying in b, else the first of b's lying in a, else a
+// point where an edge of a meets an edge of b. Why that finds one whenever the pins share a
+// usable integer point away from the free space's own boundary: their intersection is a polygon
+// with edges at 0, 45 and 90 degrees whose vertices are vertices of one pin lying in the other
+// (candidates), crossings of an axis-parallel edge with another edge (integer: projections of a
+// vertex, so candidates too), or crossings of a 45-degree edge with a 135-degree one, which can
+// be half-integer points (x - y and x + y of different parity): then the integer points a half
+// diagonal away along each of the two edges are on the intersection's boundary (its edges run
+// at least that far), so those neighbours are tried.
 std::optional<geom::Point> shared_point(std::span<const geom::Point> a_cands, const geom::Polygon& a,
-                                        std::span<const geom::Point> b_cands, const geom::Polygon& b);
+                                        std::span<const geom::Point> b_cands, const geom::Polygon& b,
+                                        const std::function<bool(geom::Point)>& usable);
 
 // Shape pins among one set of obstacles.
 class PinShapes {
  public:
-  // Obstacles as geom::normalize_obstacles() returns them; `more`: points whose rows and columns
-  // are projected as the obstacle vertices' are (the bend router's domain corners).
-  explicit PinShapes(std::span<const geom::Polygon> obstacles, std::span<const geom::Point> more = {});
+  // Obstacles as geom::normalize_obstacles() returns them; the domain (the closed routing box),
+  // when there is one: its corners' rows and columns are projected as the obstacle vertices' are,
+  // and so are the points where the other pin's edges cross its sides.
+  explicit PinShapes(std::span<const geom::Polygon> obstacles, std::optional<geom::Box> domain = std::nullopt);
 
   // The points of pin `pin` an optimal wire from it may be taken to start at: its vertices, and
-  // the horizontal and vertical projections onto its edges of every obstacle vertex and of every
-  // vertex of `other` (the other pin, or every other pin). Sorted, distinct; for edges at 0, 45
-  // or 90 degrees every candidate is an integer point.
+  // the horizontal and vertical projections onto its edges of every obstacle vertex, domain
+  // corner, vertex of `other` (the other pin, or every other pin) and point where an edge of
+  // `other` crosses a domain side. Sorted, distinct; for edges at 0, 45 or 90 degrees every
+  // candidate is an integer point.
   //
   // Why that suffices, for L1 (and octilinear) length: a shortest path leaves the pin at s
   // straight towards its first bend r (an obstacle vertex, or a point of the other pin when it
@@ -77,8 +88,9 @@ class PinShapes {
   // a vertex of the pin, or the first link meets an obstacle vertex (s is then that vertex's
   // projection), or the second link vanishes (one bend fewer: go on with the shorter path). A
   // path of one link from pin to pin slides with both ends on their edges: it stops at a vertex
-  // of one pin (the other end is that vertex's projection) or at an obstacle vertex (both ends
-  // are its projections). Such paths never leave the closed free space: what they sweep holds no
+  // of one pin (the other end is that vertex's projection), where one end leaves the domain (a
+  // pin may reach past it: the end is a domain side's crossing with its edge, the other end that
+  // crossing's projection) or at an obstacle vertex (both ends are its projections). Such paths never leave the closed free space: what they sweep holds no
   // obstacle vertex until they stop, and an obstacle edge cannot cross the pin's edge, since the
   // pin does not overlap obstacles (meets_obstacle()). The bend router's tests check this
   // against a search from every integer point of the shapes.
@@ -92,6 +104,7 @@ class PinShapes {
 
  private:
   std::vector<geom::Coord> xs_, ys_;  // the distinct x and y of obstacle vertices, ascending
+  std::optional<geom::Box> domain_;
   std::vector<geom::Polygon> obstacles_;
   std::vector<geom::Box> boxes_;
 };

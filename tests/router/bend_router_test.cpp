@@ -51,6 +51,7 @@
 #include "oracle/bend_oracle.h"
 #include "oracle/union_oracle.h"
 #include "router/bend_router.h"
+#include "router/l1_router.h"
 #include "support/random_shapes.h"
 #include "support/run.h"
 #include "support/sanitized.h"
@@ -747,7 +748,8 @@ std::string pin_str(const Polygon& p) {
 }
 
 // A random pin near the lattice `grid` (rectangles, L, a rectangle with a hole, a diamond, a
-// 45-degree triangle, or a point), often placed against an obstacle vertex.
+// 45-degree triangle, a long strip along a diagonal, or a point), often placed against an
+// obstacle vertex.
 Polygon random_pin(std::mt19937_64& rng, const Box& grid, std::span<const Polygon> obstacles) {
   auto uni = [&](int lo, int hi) { return lo + static_cast<int>(rng() % static_cast<std::uint64_t>(hi - lo + 1)); };
   Point o{uni(grid.lo.x, grid.hi.x), uni(grid.lo.y, grid.hi.y)};
@@ -759,8 +761,18 @@ Polygon random_pin(std::mt19937_64& rng, const Box& grid, std::span<const Polygo
   const int sx = uni(0, 1) ? 1 : -1, sy = uni(0, 1) ? 1 : -1;  // which way from o
   auto at = [&](int dx, int dy) { return Point{o.x + sx * dx, o.y + sy * dy}; };
   Polygon p;
-  switch (uni(0, 6)) {
+  switch (uni(0, 8)) {
     case 0: p.outer = {o}; break;
+    case 7: {  // a long strip along a diagonal, short edges vertical (often reaching out of the domain)
+      const int len = uni(3, 12), wd = uni(1, 3), s = sx * sy;
+      p.outer = {{o.x - len, o.y - s * len}, {o.x + len, o.y + s * len}, {o.x + len, o.y + s * len + wd}, {o.x - len, o.y - s * len + wd}};
+      break;
+    }
+    case 8: {  // the same with horizontal short edges
+      const int len = uni(3, 12), wd = uni(1, 3), s = sx * sy;
+      p.outer = {{o.x - len, o.y - s * len}, {o.x - len + wd, o.y - s * len}, {o.x + len + wd, o.y + s * len}, {o.x + len, o.y + s * len}};
+      break;
+    }
     case 1: p.outer = {at(0, 0), at(w, 0), at(w, h), at(0, h)}; break;
     case 2: {  // an L
       const int w2 = uni(1, 4), h2 = uni(1, 4);
@@ -871,6 +883,38 @@ std::string check_pin_tree(const BendReference& ref, const BendRouter& router, c
   }
   ++tally.trees_ok;
   return "";
+}
+
+// Cases the review found (2026-11-24): two strips along crossing diagonals share integer points
+// although their candidates do not (the crossings are half-integer points); and a one-link wire
+// between strips reaching out of the domain, whose slide stops where one end leaves the domain
+// (the other end is that crossing's projection). Each against the lattice reference, and the
+// L1 router on the first.
+TEST(BendRouter, ShapePinRegressions) {
+  struct Case {
+    Box domain;
+    Polygon a, b;
+    bool link;
+    i64 C;
+  };
+  const std::vector<Case> cases = {
+      {{{0, 0}, {5, 5}}, {{{0, 0}, {4, 4}, {4, 5}, {0, 1}}, {}}, {{{4, 0}, {5, 0}, {1, 4}, {0, 4}}, {}}, false, 1},
+      {{{0, 0}, {5, 5}}, {{{0, 0}, {4, 4}, {4, 5}, {0, 1}}, {}}, {{{4, 0}, {5, 0}, {1, 4}, {0, 4}}, {}}, true, 0},
+      {{{0, 0}, {3, 3}}, {{{-5, -2}, {-3, -2}, {3, 4}, {1, 4}}, {}}, {{{0, -1}, {2, -1}, {6, 3}, {4, 3}}, {}}, false, 1},
+      {{{-1, -1}, {12, 10}}, {{{2, 10}, {0, 10}, {-9, 1}, {-7, 1}}, {}}, {{{9, 6}, {11, 6}, {16, 11}, {14, 11}}, {}}, true, 0},
+  };
+  PinTally tally;
+  for (const Case& k : cases) {
+    const BendRouter router(k.domain, {});
+    const BendReference ref(k.domain, {});
+    const std::string r = check_pin_query(ref, router, k.domain, k.a, k.b, k.link, k.C, tally);
+    EXPECT_TRUE(r.empty()) << r;
+  }
+  // the L1 router joins the crossing strips at a shared point
+  router::L1Router l1(cases[0].domain, {});
+  const router::L1Wire w = l1.shortest(cases[0].a, cases[0].b);
+  ASSERT_EQ(w.status, WireStatus::Ok);
+  EXPECT_EQ(w.length.value_or(-1), 0);
 }
 
 TEST(BendRouter, ShapePinsMatchTheReference) {
