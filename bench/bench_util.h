@@ -31,6 +31,13 @@ inline double seconds_of(const std::function<void()>& f, int reps) {
   return best;
 }
 
+// Keeps a value the timed code computed from being optimized away (like benchmark::DoNotOptimize:
+// the compiler must assume the value is read).
+template <class T>
+inline void keep(const T& value) {
+  asm volatile("" : : "r,m"(value) : "memory");
+}
+
 // Peak resident set of the process so far, MiB.
 inline double peak_rss_mib() {
   rusage ru{};

@@ -26,6 +26,10 @@ inline constexpr int sign(i64 v) { return (v > 0) - (v < 0); }
 inline constexpr int sign(i128 v) { return (v > 0) - (v < 0); }
 inline constexpr int orientation(Point a, Point b, Point c) { return sign(orient(a, b, c)); }
 
+// Integer division rounded down / up (d > 0), exact for every numerator; C++'s / rounds towards 0.
+inline constexpr i128 floor_div(i128 n, i128 d) { return n / d - (n % d != 0 && n < 0); }
+inline constexpr i128 ceil_div(i128 n, i128 d) { return -floor_div(-n, d); }
+
 // Dot product of (b - a) and (d - c).
 inline constexpr i64 dot(Point a, Point b, Point c, Point d) {
   return (i64{b.x} - a.x) * (i64{d.x} - c.x) + (i64{b.y} - a.y) * (i64{d.y} - c.y);

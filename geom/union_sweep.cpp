@@ -24,11 +24,6 @@ u128 gcd128(u128 a, u128 b) {
   return a;
 }
 u128 abs128(i128 v) { return v < 0 ? u128(-v) : u128(v); }
-i128 floor_div(i128 a, i128 b) {  // b > 0
-  i128 q = a / b;
-  if (a % b != 0 && a < 0) --q;
-  return q;
-}
 int cmp_frac(std::int64_t f1, std::int64_t d1, std::int64_t f2, std::int64_t d2) {
   const i128 l = i128{f1} * d2, r = i128{f2} * d1;
   return (l > r) - (l < r);

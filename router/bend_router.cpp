@@ -29,6 +29,8 @@ namespace {
 using geom::Box;
 using geom::Coord;
 using geom::i128;
+using geom::ceil_div;
+using geom::floor_div;
 using geom::i64;
 using geom::Point;
 using geom::Polygon;
@@ -172,6 +174,21 @@ struct BendRouter::Impl {
     std::int32_t to = -1;
   };
   std::vector<Track> tracks;
+  // The built tracks of positive length by their fixed coordinate: [0] the vertical ones by x,
+  // [1] the horizontal ones by y. A query track meets only those in its own span.
+  std::vector<std::int32_t> tracks_across[2];
+  // Calls f(track) for every built track of positive length perpendicular to a whose fixed
+  // coordinate lies in a's span.
+  template <class F>
+  void for_each_track_across(const Track& a, F&& f) const {
+    const bool h = horizontal(a.dir);
+    const std::vector<std::int32_t>& v = tracks_across[h ? 0 : 1];
+    const Coord lo = h ? std::min(a.start.x, a.end.x) : std::min(a.start.y, a.end.y);
+    const Coord hi = h ? std::max(a.start.x, a.end.x) : std::max(a.start.y, a.end.y);
+    auto fixed = [&](std::int32_t i) { const Point p = tracks[static_cast<std::size_t>(i)].start; return h ? p.x : p.y; };
+    auto it = std::partition_point(v.begin(), v.end(), [&](std::int32_t i) { return fixed(i) < lo; });
+    for (; it != v.end() && fixed(*it) <= hi; ++it) f(tracks[static_cast<std::size_t>(*it)]);
+  }
 
   struct Edge {
     std::int32_t u, v;  // graph vertices
@@ -317,6 +334,15 @@ struct BendRouter::Impl {
         if (in_wedge(nodes[static_cast<std::size_t>(n)].wedge, k)) tracks.push_back(shoot(n, nodes[static_cast<std::size_t>(n)].p, k));
     }
     stats.tracks = tracks.size();
+    for (std::int32_t i = 0; i < static_cast<std::int32_t>(tracks.size()); ++i) {
+      const Track& t = tracks[static_cast<std::size_t>(i)];
+      if (t.end != t.start) tracks_across[horizontal(t.dir) ? 1 : 0].push_back(i);
+    }
+    for (int h = 0; h < 2; ++h)
+      std::stable_sort(tracks_across[h].begin(), tracks_across[h].end(), [&](std::int32_t i, std::int32_t j) {
+        const Point p = tracks[static_cast<std::size_t>(i)].start, q = tracks[static_cast<std::size_t>(j)].start;
+        return h ? p.y < q.y : p.x < q.x;
+      });
     for (const Track& t : tracks)
       if (t.dir == 0 || t.dir == 1) straight_edges(t, edges);  // W and S give the same edges
     stats.straight_edges = edges.size() - nodes.size();
@@ -523,11 +549,10 @@ BendRouter::Impl::Search BendRouter::Impl::search(std::span<const Point> sources
     const Track& a = qtracks[i];
     straight_edges(a, qedges);
     if (a.end == a.start) continue;
-    for (const Track& b : tracks) {
-      if (horizontal(a.dir) == horizontal(b.dir) || b.end == b.start) continue;
+    for_each_track_across(a, [&](const Track& b) {
       Edge e{};
       if (horizontal(a.dir) ? l_edge(a, b, e) : l_edge(b, a, e)) qedges.push_back(e);
-    }
+    });
     for (std::size_t j = 0; j < qtracks.size(); ++j) {
       const Track& b = qtracks[j];
       if (b.from == a.from) continue;
@@ -1090,11 +1115,20 @@ struct BendTargetMap::Impl {
     std::int32_t gv = -1;                      // the built graph vertex the chain starts at, or -1
   };
   WireStatus best(Point q, Best& out) const;
+
+  // Where a corner may lie on track t (along its axis): after its start, and before the vertex
+  // it ends on, if any. Empty when the track holds no such point.
+  std::optional<std::pair<Coord, Coord>> corner_range(const Track& t) const {
+    const bool h = horizontal(t.dir);
+    const Coord step = h ? kStep[t.dir].x : kStep[t.dir].y;
+    const Coord from = (h ? t.start.x : t.start.y) + step;
+    const Coord to = (h ? t.end.x : t.end.y) - (r->is_vertex(t.end) ? step : 0);
+    if ((i64{to} - from) * step < 0) return std::nullopt;
+    return std::pair{std::min(from, to), std::max(from, to)};
+  }
 };
 
 WireStatus BendTargetMap::Impl::best(Point q, Best& b) const {
-  using Track = BendRouter::Impl::Track;
-  using Edge = BendRouter::Impl::Edge;
   if (status != WireStatus::Ok) return status;
   const std::vector<Cost>& dist = settled.dist;
   auto consider = [&](Cost c, std::vector<std::pair<Point, bool>> walk, std::int32_t gv) {
@@ -1131,14 +1165,11 @@ WireStatus BendTargetMap::Impl::best(Point q, Best& b) const {
     }
     // an L: the corners on the track, after q and before a vertex it ends on
     const int a = t.dir;
-    const Coord step = h ? kStep[a].x : kStep[a].y;
-    const Coord from = h ? q.x + step : q.y + step;
-    const Coord to = (h ? t.end.x : t.end.y) - (r->is_vertex(t.end) ? step : 0);
-    const Coord ulo = std::min(from, to), uhi = std::max(from, to);
-    if ((i64{to} - from) * step < 0) continue;  // no corner
+    const auto range = corner_range(t);
+    if (!range) continue;
     for (const int bdir : {(a + 1) & 3, (a + 3) & 3}) {
       const SlabTree& s = slabs[kind(a, bdir)];
-      const std::int32_t i = s.query(ulo, uhi, h ? q.y : q.x);
+      const std::int32_t i = s.query(range->first, range->second, h ? q.y : q.x);
       if (i < 0) continue;
       const SlabTree::Item& it = s.items[static_cast<std::size_t>(i)];
       // cost: key + C - (kStep[a] + kStep[b]) . q in the length
@@ -1191,18 +1222,14 @@ BendTargetMap::BendTargetMap(const BendRouter& router, Point target, BendMetric 
     const Cost d = m.settled.dist[static_cast<std::size_t>(gv)];
     if (d == kInf) continue;
     const Point p = t.start;
-    // the corner runs along the track, after p and before a vertex it ends on
-    const bool h = horizontal(t.dir);
-    const Coord step = h ? kStep[t.dir].x : kStep[t.dir].y;
-    const Coord from = (h ? p.x : p.y) + step;
-    const Coord to = (h ? t.end.x : t.end.y) - (m.r->is_vertex(t.end) ? step : 0);
-    if ((i64{to} - from) * step < 0) continue;
+    const auto range = m.corner_range(t);  // the corner runs along the track
+    if (!range) continue;
     for (const int a : {(bdir + 1) & 3, (bdir + 3) & 3}) {  // the first link's direction
       const Point sv{kStep[a].x + kStep[bdir].x, kStep[a].y + kStep[bdir].y};
       const i64 sp = i64{sv.x} * p.x + i64{sv.y} * p.y;
       // the query runs along a's axis (u) at the corner's other coordinate (v: along the track)
       items[Impl::kind(a, bdir)].push_back(
-          {horizontal(a) ? p.x : p.y, std::min(from, to), std::max(from, to), m.shifted(d, sp), gv});
+          {horizontal(a) ? p.x : p.y, range->first, range->second, m.shifted(d, sp), gv});
     }
   }
   for (int k = 0; k < 8; ++k) m.slabs[k].build(std::move(items[k]));
@@ -1268,8 +1295,6 @@ std::vector<Polygon> rectilinear_cover(std::span<const Polygon> polygons, std::v
   if (pieces < 1 || pieces > kMaxCoverPieces)
     throw std::invalid_argument("rectilinear_cover: pieces must lie in [1, " + std::to_string(kMaxCoverPieces) + "]");
   // floor and ceiling of n / d (d > 0)
-  auto floor_div = [](i64 n, i64 d) { return n >= 0 ? n / d : -((-n + d - 1) / d); };
-  auto ceil_div = [&](i64 n, i64 d) { return -floor_div(-n, d); };
   std::vector<Polygon> out;
   for (std::size_t i = 0; i < polygons.size(); ++i) {
     const Polygon& p = polygons[i];

@@ -6,6 +6,8 @@
 
 namespace taut::router {
 
+using geom::ceil_div;
+using geom::floor_div;
 using geom::i64;
 using geom::Point;
 
@@ -135,9 +137,8 @@ std::optional<Point> shared_point(std::span<const Point> a_cands, const geom::Po
       if (D < 0) D = -D, n1 = -n1, n2 = -n2;
       if (n1 < 0 || n1 > l1 * D || n2 < 0 || n2 > l2 * D) return;
       const i64 X = i64{p1.x} * D + d1.x * n1, Y = i64{p1.y} * D + d1.y * n1;  // the crossing times D
-      auto floor_div = [](i64 n, i64 k) { return n >= 0 ? n / k : -((-n + k - 1) / k); };
-      for (const i64 x : {floor_div(X, D), floor_div(X + D - 1, D)})
-        for (const i64 y : {floor_div(Y, D), floor_div(Y + D - 1, D)}) {
+      for (const i64 x : {floor_div(X, D), ceil_div(X, D)})
+        for (const i64 y : {floor_div(Y, D), ceil_div(Y, D)}) {
           const Point p{static_cast<geom::Coord>(x), static_cast<geom::Coord>(y)};
           if (!found && in_pin(p, a) && in_pin(p, b) && usable(p)) found = p;
         }

@@ -18,6 +18,7 @@ using geom::Point;
 using geom::Polygon;
 using geom::Segment;
 using geom::SegmentIntersection;
+using geom::floor_div;
 
 namespace {
 
@@ -51,12 +52,6 @@ bool strictly_inside(Dir from, Dir d, Dir to) {
   if (cd != ct) return cd < ct;
   if (cd == 2) return false;  // both opposite to `from`: d == to
   return cross(d, to) > 0;
-}
-
-i128 floor_div(i128 n, i128 d) {  // d > 0
-  i128 q = n / d;
-  if ((n % d != 0) && (n < 0)) --q;
-  return q;
 }
 
 struct PointHash {

@@ -23,6 +23,8 @@ namespace taut::router {
 namespace {
 
 using geom::Box;
+using geom::ceil_div;
+using geom::floor_div;
 using geom::i128;
 using geom::i64;
 using geom::Point;
@@ -535,8 +537,6 @@ inline bool region_hull(const RegionT<M>& r, const Box& frame, Box& out) {
     np = nn;
   }
   if (np == 0) return false;
-  auto floor_div = [](i128 n, i128 d) { return n >= 0 ? n / d : -((-n + d - 1) / d); };
-  auto ceil_div = [&](i128 n, i128 d) { return -floor_div(-n, d); };
   i128 bxlo = xhi, bxhi = xlo, bylo = yhi, byhi = ylo;
   for (int i = 0; i < np; ++i) {
     bxlo = std::min(bxlo, floor_div(poly[i].xn, poly[i].den));

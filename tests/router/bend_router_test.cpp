@@ -830,10 +830,11 @@ std::string check_pin_query(const BendReference& ref, const BendRouter& router, 
   ++tally.ok;
   tally.shared += want->length == 0;
   if (got.length != want->length || got.bends != want->bends) return head.str() + "the cost differs from the reference's optimum";
-  if (got.points.empty() || geom::locate(got.points.front(), a) == geom::Location::Outside ||
-      geom::locate(got.points.back(), b) == geom::Location::Outside)
-    if (!(a.outer.size() == 1 && got.points.front() == a.outer[0]) && !(b.outer.size() == 1 && got.points.back() == b.outer[0]))
-      return head.str() + "the wire does not run from pin to pin";
+  auto on_pin = [](Point p, const Polygon& pin) {  // a point pin is one vertex
+    return pin.outer.size() == 1 ? p == pin.outer[0] : geom::locate(p, pin) != geom::Location::Outside;
+  };
+  if (got.points.empty() || !on_pin(got.points.front(), a) || !on_pin(got.points.back(), b))
+    return head.str() + "the wire does not run from pin to pin";
   const std::optional<BendAnswer> measured = ref.check_path(got.points);
   if (!measured) return head.str() + "the path is not legal (check_path)";
   if (*measured != *want) return head.str() + "the path measures " + str(measured);
