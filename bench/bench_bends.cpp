@@ -14,7 +14,9 @@
 // target (router::BendTargetMap: a Dijkstra run from the target and eight slab trees), its build
 // time as a ratio to one graph query, its size in envelope pieces per vertex, and a query from
 // every vertex and from as many lattice points (cost only) as a ratio of the graph query's time
-// to the map's.
+// to the map's; and the same map with the target's square pin as the target (its candidate
+// points are the Dijkstra run's sources; a query adds its straight shots onto the square), as
+// ratios to the point target's.
 //
 //   bench_bends [--sizes N,N,...] [--queries Q] [--kind rects|maze] [--ref-max N]
 #include <cmath>
@@ -36,7 +38,7 @@ using taut::geom::Point;
 struct Row {
   std::int64_t n = 0;
   double sort = 0, build = 0, combined = 0, link = 0, l1 = 0, ref = -1, shape = 0, map_build = 0, map_query = 0;
-  double map_pieces = 0;
+  double map_pieces = 0, pin_map_build = 0, pin_map_query = 0;
   int map_agree = 0, map_checked = 0;
   int ref_agree = 0;
   taut::router::BendGraphStats stats;
@@ -142,6 +144,13 @@ int main(int argc, char** argv) {
         ++row.map_checked;
         row.map_agree += st == want.status && (st != taut::router::WireStatus::Ok || (got.length == want.length && got.bends == want.bends));
       }
+      // the same with the target's square pin as the target (its candidates are the sources)
+      const taut::geom::Polygon pin = square_at(target);
+      std::unique_ptr<taut::router::BendTargetMap> pin_map;
+      row.pin_map_build = seconds_of([&] { pin_map = std::make_unique<taut::router::BendTargetMap>(*router, pin, taut::router::BendMetric::Combined, 1000); }, 1);
+      row.pin_map_query = seconds_of([&] {
+                            for (const Point q : qs) sink += pin_map->cost(q).length;
+                          }, 1) / static_cast<double>(qs.size());
       taut::bench::keep(sink);
     }
     taut::router::L1Router l1(b.norm.domain, b.norm.obstacles);
@@ -169,6 +178,8 @@ int main(int argc, char** argv) {
                 row.link / row.l1, row.found, row.queries, row.l1_found, row.shape / row.combined, row.map_build,
                 row.map_build / row.combined, row.map_pieces, row.map_query * 1e6, row.combined / row.map_query);
     std::printf("%8s map answers equal to the graph query's on %d of %d sampled points\n", "", row.map_agree, row.map_checked);
+    std::printf("%8s map to the target's square pin: build %.3f s (%.2f x the point's), query %.2f us (%.2f x the point's)\n", "",
+                row.pin_map_build, row.pin_map_build / row.map_build, row.pin_map_query * 1e6, row.pin_map_query / row.map_query);
     if (row.ref >= 0)
       std::printf("%8s reference: %.2f ms per query (%.0f x combined), %d of %d answers equal\n", "", row.ref * 1e3,
                   row.ref / row.combined, row.ref_agree, row.queries);

@@ -1083,7 +1083,8 @@ struct BendTargetMap::Impl {
   using Track = BendRouter::Impl::Track;
   using Edge = BendRouter::Impl::Edge;
   const BendRouter::Impl* r = nullptr;
-  Point target;
+  Point target;                  // a point target (or the shape's first vertex)
+  std::optional<Polygon> shape;  // a shape target: its candidates are the search's sources
   BendMetric metric = BendMetric::Combined;
   i64 bend_cost = 0;
   WireStatus status = WireStatus::Ok;
@@ -1115,6 +1116,10 @@ struct BendTargetMap::Impl {
     std::int32_t gv = -1;                      // the built graph vertex the chain starts at, or -1
   };
   WireStatus best(Point q, Best& out) const;
+  void build(std::span<const Point> sources);
+  bool at_target(Point q) const { return shape ? in_pin(q, *shape) : q == target; }
+  // The first point of the target on the closed segment from a to b (a not on it), or nullopt.
+  std::optional<Point> first_on_target(Point a, Point b) const;
 
   // Where a corner may lie on track t (along its axis): after its start, and before the vertex
   // it ends on, if any. Empty when the track holds no such point.
@@ -1137,7 +1142,8 @@ WireStatus BendTargetMap::Impl::best(Point q, Best& b) const {
     b.walk = std::move(walk);
     b.gv = gv;
   };
-  if (q == target) {
+  if (at_target(q)) {
+    if (shape && !r->is_free(q)) return WireStatus::SourceNotFree;
     consider(Cost{}, {{q, true}}, -1);
     return WireStatus::Ok;
   }
@@ -1178,61 +1184,106 @@ WireStatus BendTargetMap::Impl::best(Point q, Best& b) const {
       consider(add_costs(shifted(it.key, -sq), weight(0, 1)), {{q, h}}, it.gv);
     }
   }
-  // straight or L to the target itself, when it is no vertex
-  if (!settled.qtracks.empty()) {
-    for (const Track& t : tracks) {
-      if (t.end == t.start) continue;
-      const bool on = std::min(t.start.x, t.end.x) <= target.x && target.x <= std::max(t.start.x, t.end.x) &&
-                      std::min(t.start.y, t.end.y) <= target.y && target.y <= std::max(t.start.y, t.end.y);
-      if (on) consider(weight(dist1(q, target), 0), {{q, horizontal(t.dir)}, {target, horizontal(t.dir)}}, -1);
-      for (const Track& u : settled.qtracks) {
-        if (horizontal(t.dir) == horizontal(u.dir) || u.end == u.start) continue;
-        Edge e{};
-        const bool th = horizontal(t.dir);
-        if (th ? r->l_edge(t, u, e) : r->l_edge(u, t, e))
-          consider(weight(e.length, 1), {{q, th}, {target, !th}}, -1);
-      }
-    }
+  // straight to the target itself (an L to a source that is no vertex is in the slab trees)
+  for (const Track& t : tracks) {
+    if (t.end == t.start) continue;
+    if (const auto x = first_on_target(t.start, t.end))
+      consider(weight(dist1(q, *x), 0), {{q, horizontal(t.dir)}, {*x, horizontal(t.dir)}}, -1);
   }
   return b.cost == kInf ? WireStatus::Unreachable : WireStatus::Ok;
 }
 
-BendTargetMap::BendTargetMap(const BendRouter& router, Point target, BendMetric metric, std::int64_t bend_cost)
-    : impl_(std::make_unique<Impl>()) {
-  if (metric == BendMetric::Combined && (bend_cost < 0 || bend_cost > (i64{1} << 31)))
-    throw std::invalid_argument("BendTargetMap: the bend cost must lie in [0, 2^31]");
-  Impl& m = *impl_;
-  m.r = router.impl_.get();
-  m.target = target;
-  m.metric = metric;
-  m.bend_cost = metric == BendMetric::Link ? 0 : bend_cost;
-  m.base = static_cast<std::int32_t>(m.r->nodes.size());
-  m.settled = m.r->search({&target, 1}, {}, metric, m.bend_cost, BendRouter::Impl::Mode::All);
-  if (m.settled.status != WireStatus::Ok) {
-    m.status = WireStatus::TargetNotFree;
+std::optional<Point> BendTargetMap::Impl::first_on_target(Point a, Point b) const {
+  if (!shape) {
+    const bool on = std::min(a.x, b.x) <= target.x && target.x <= std::max(a.x, b.x) &&
+                    std::min(a.y, b.y) <= target.y && target.y <= std::max(a.y, b.y);
+    return on ? std::optional<Point>(target) : std::nullopt;
+  }
+  // a horizontal or vertical segment from a point outside the shape: its first point on the
+  // closed shape is on an edge (a crossing, or the nearer end of a collinear overlap); edges are
+  // at 0, 45 or 90 degrees, so every such point is an integer point
+  std::optional<Point> best;
+  auto offer = [&](Point p) {
+    if (!best || dist1(a, p) < dist1(a, *best)) best = p;
+  };
+  const bool h = a.y == b.y;
+  const Coord lo = h ? std::min(a.x, b.x) : std::min(a.y, b.y), hi = h ? std::max(a.x, b.x) : std::max(a.y, b.y);
+  const Coord fixed = h ? a.y : a.x;
+  for_each_pin_edge(*shape, [&](Point e0, Point e1) {
+    // the edge in (along, across) coordinates of the segment
+    const i64 s0 = h ? e0.x : e0.y, c0 = h ? e0.y : e0.x, s1 = h ? e1.x : e1.y, c1 = h ? e1.y : e1.x;
+    auto at = [&](i64 along) { return h ? Point{static_cast<Coord>(along), fixed} : Point{fixed, static_cast<Coord>(along)}; };
+    if (c0 == fixed && c1 == fixed) {  // collinear: the overlap's nearer end
+      const i64 olo = std::max<i64>(lo, std::min(s0, s1)), ohi = std::min<i64>(hi, std::max(s0, s1));
+      if (olo <= ohi) offer(at(olo)), offer(at(ohi));
+      return;
+    }
+    if ((c0 - fixed) * (c1 - fixed) > 0 || c0 == c1) return;
+    const i64 along = s0 + (fixed - c0) * (s1 - s0) / (c1 - c0);  // exact: |ds| is 0 or |dc|
+    if (lo <= along && along <= hi) offer(at(along));
+  });
+  return best;
+}
+
+void BendTargetMap::Impl::build(std::span<const Point> sources) {
+  base = static_cast<std::int32_t>(r->nodes.size());
+  settled = r->search(sources, {}, metric, bend_cost, BendRouter::Impl::Mode::All);
+  if (settled.status != WireStatus::Ok) {
+    status = WireStatus::TargetNotFree;
     return;
   }
-  // the slab trees: every built track of positive length is a candidate second link, arriving
-  // at its start (the vertex) in the direction opposite to it
+  // the slab trees: every track of positive length is a candidate second link, arriving at its
+  // start in the direction opposite to it: the built tracks (their start a vertex, at its cost)
+  // and the tracks of the sources that are no vertex (at cost 0)
   std::vector<SlabTree::Item> items[8];
-  for (const BendRouter::Impl::Track& t : m.r->tracks) {
-    if (t.end == t.start) continue;
+  auto add = [&](const Track& t, Cost d, std::int32_t gv) {
+    const auto range = corner_range(t);  // the corner runs along the track
+    if (!range) return;
     const int bdir = opposite(t.dir);  // the second link's direction
-    const std::int32_t gv = 2 * t.from + (horizontal(bdir) ? 0 : 1);
-    const Cost d = m.settled.dist[static_cast<std::size_t>(gv)];
-    if (d == kInf) continue;
     const Point p = t.start;
-    const auto range = m.corner_range(t);  // the corner runs along the track
-    if (!range) continue;
     for (const int a : {(bdir + 1) & 3, (bdir + 3) & 3}) {  // the first link's direction
       const Point sv{kStep[a].x + kStep[bdir].x, kStep[a].y + kStep[bdir].y};
       const i64 sp = i64{sv.x} * p.x + i64{sv.y} * p.y;
       // the query runs along a's axis (u) at the corner's other coordinate (v: along the track)
-      items[Impl::kind(a, bdir)].push_back(
-          {horizontal(a) ? p.x : p.y, range->first, range->second, m.shifted(d, sp), gv});
+      items[kind(a, bdir)].push_back({horizontal(a) ? p.x : p.y, range->first, range->second, shifted(d, sp), gv});
     }
+  };
+  for (const Track& t : r->tracks) {
+    if (t.end == t.start) continue;
+    const std::int32_t gv = 2 * t.from + (horizontal(opposite(t.dir)) ? 0 : 1);
+    const Cost d = settled.dist[static_cast<std::size_t>(gv)];
+    if (d != kInf) add(t, d, gv);
   }
-  for (int k = 0; k < 8; ++k) m.slabs[k].build(std::move(items[k]));
+  for (const Track& t : settled.qtracks)
+    if (t.end != t.start) add(t, Cost{}, 2 * t.from + (horizontal(opposite(t.dir)) ? 0 : 1));
+  for (int k = 0; k < 8; ++k) slabs[k].build(std::move(items[k]));
+}
+
+BendTargetMap::BendTargetMap(const BendRouter& router, Point target, BendMetric metric, std::int64_t bend_cost)
+    : BendTargetMap(router, Polygon{{target}, {}}, metric, bend_cost) {}
+
+BendTargetMap::BendTargetMap(const BendRouter& router, const Polygon& target, BendMetric metric, std::int64_t bend_cost)
+    : impl_(std::make_unique<Impl>()) {
+  if (metric == BendMetric::Combined && (bend_cost < 0 || bend_cost > (i64{1} << 31)))
+    throw std::invalid_argument("BendTargetMap: the bend cost must lie in [0, 2^31]");
+  if (target.outer.empty()) throw std::invalid_argument("BendTargetMap: an empty target");
+  if (!is_point_pin(target) && !pin_shape_supported(target))
+    throw std::invalid_argument("BendTargetMap: a target shape's edges must be horizontal, vertical or at 45 degrees");
+  Impl& m = *impl_;
+  m.r = router.impl_.get();
+  m.target = target.outer.front();
+  m.metric = metric;
+  m.bend_cost = metric == BendMetric::Link ? 0 : bend_cost;
+  if (is_point_pin(target)) {
+    m.build({&m.target, 1});
+    return;
+  }
+  m.shape = target;
+  // the shape's candidates (PinShapes: with q's own projections, which first_on_target covers:
+  // a wire ending at one of them is straight) that are free
+  std::vector<Point> sources = m.r->pins.candidates(target, Polygon{});
+  sources.erase(std::remove_if(sources.begin(), sources.end(), [&](Point p) { return !m.r->is_free(p); }), sources.end());
+  m.build(sources);
 }
 
 BendTargetMap::~BendTargetMap() = default;
@@ -1265,7 +1316,9 @@ BendPath BendTargetMap::path(Point q) const {
   out.status = m.best(q, b);
   if (out.status != WireStatus::Ok) return out;
   std::vector<std::pair<Point, bool>> walk = b.walk;
-  if (b.gv >= 0) {
+  if (b.gv >= 2 * m.base) {  // an L to a source that is no vertex
+    walk.emplace_back(m.node_of(b.gv).p, b.gv % 2 == 0);
+  } else if (b.gv >= 0) {
     // the chain of the Dijkstra run from the target: predecessors lead back to it
     std::size_t v = static_cast<std::size_t>(b.gv);
     for (std::size_t guard = 0;; ++guard) {

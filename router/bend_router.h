@@ -185,6 +185,14 @@ class BendTargetMap {
  public:
   // bend_cost as for BendRouter::path. The router must outlive the map.
   BendTargetMap(const BendRouter& router, geom::Point target, BendMetric metric, std::int64_t bend_cost);
+  // A pin as the target (router/pin_shapes.h: a point, or a shape with edges at 0, 45 or 90
+  // degrees, else std::invalid_argument): the best path from q to any point of it, as
+  // BendRouter::path(point pin q, target) gives it. One Dijkstra run from the shape's free
+  // candidate points; a query adds q's straight shots onto the shape (the candidates that depend
+  // on q: a wire ending at q's projection onto the shape is straight). A q on the shape costs 0
+  // when it is free. A shape that meets a blockage is not refused here (pin_meets_obstacle):
+  // wires then leave it only from its free candidates.
+  BendTargetMap(const BendRouter& router, const geom::Polygon& target, BendMetric metric, std::int64_t bend_cost);
   ~BendTargetMap();
   BendTargetMap(BendTargetMap&&) noexcept;
   BendTargetMap& operator=(BendTargetMap&&) noexcept;

@@ -6,6 +6,9 @@
 // taut path FILE --from-file F --to X,Y --metric combined|link [--json]: the best wire from each
 // point of F (one X,Y per line) to one target, from router::BendTargetMap (a Dijkstra run from
 // the target and eight slab trees, then O(log^2 n) per point).
+// --to-pin NET PIN instead of --to: the wire ends anywhere on that pin of the layout (a point or
+// a shape, as taut route takes it).
+#include <functional>
 #include <iostream>
 
 #include <nlohmann/json.hpp>
@@ -48,16 +51,89 @@ std::string wire_text(const router::BendPath& p) {
   return s;
 }
 
+// Where the wanted wires end: --to X,Y, or --to-pin NET PIN (a point or a shape of the layout).
+struct Target {
+  geom::Polygon pin;                 // a point pin for --to and for a point pin
+  std::optional<geom::Point> point;  // set for a point
+  std::string label;                 // "--to 5,5" or "pin "pad" of net "clk" (demo.xml:29)"
+  std::string name;                  // "5,5" or "pin "pad" of net "clk""
+  std::vector<geom::Point> vertices() const {
+    std::vector<geom::Point> v(pin.outer.begin(), pin.outer.end());
+    for (const geom::Ring& h : pin.holes) v.insert(v.end(), h.begin(), h.end());
+    return v;
+  }
+  // Why the target is not free: the point's reason, or that no point of the shape is.
+  std::string not_free(const std::function<std::string(geom::Point)>& why) const {
+    return label + " " + (point ? why(*point) : "has no free point (its shape lies in blockages or outside the boundary)");
+  }
+};
+
+// --to-pin NET PIN of the layout; CLI-0028 when there is no such pin.
+std::optional<Target> pin_target(const io::Layout& layout, const std::string& net, const std::string& pin) {
+  for (const io::Net& n : layout.nets) {
+    if (n.name != net) continue;
+    std::string names;
+    for (const io::Pin& p : n.pins) {
+      if (p.name != pin) {
+        names += (names.empty() ? "\"" : ", \"") + p.name + "\"";
+        continue;
+      }
+      Target t;
+      if (p.point) t.pin.outer = {*p.point}, t.point = *p.point;
+      else t.pin = io::shape_polygon(*p.shape);
+      t.name = "pin \"" + pin + "\" of net \"" + net + "\"";
+      t.label = t.name + " (" + layout.file + ":" + std::to_string(p.line) + ")";
+      return t;
+    }
+    print_usage_error("CLI-0028", "--to-pin: net \"" + net + "\" (" + layout.file + ":" + std::to_string(n.line) +
+                                      ") has no pin \"" + pin + "\"" + (names.empty() ? "" : "; its pins: " + names));
+    return std::nullopt;
+  }
+  print_usage_error("CLI-0028", "--to-pin: " + layout.file + " has no net \"" + net + "\"");
+  return std::nullopt;
+}
+
+// A shape the routers do not take as a target: ROUTE-0005 with the reason, else "".
+std::string shape_refusal(const Target& t, bool octilinear, const std::function<bool(const geom::Polygon&)>& meets,
+                          const std::function<std::string()>& why_under) {
+  if (t.point) return "";
+  if (!router::pin_shape_supported(t.pin))
+    return t.label + " has a shape edge that is not horizontal, vertical or at 45 degrees; such shape pins are not "
+                     "routed yet";
+  if (octilinear && !router::OctRouter::supports_pin(t.pin))
+    return t.label + " has a shape edge at 45 degrees; octilinear wires are routed to shapes with horizontal and "
+                     "vertical edges only in this version (rectilinear wires take 45-degree edges)";
+  if (meets(t.pin)) return t.label + " " + why_under();
+  return "";
+}
+
 // --metric combined / link: BendRouter among the rectilinear cover of the blockages.
-int bend_path(const io::Layout& layout, const RoutingOptions& routing, geom::Point from, geom::Point to,
+int bend_path(const io::Layout& layout, const RoutingOptions& routing, geom::Point from, const Target& target,
               bool json, bool quiet) {
   const bool link = routing.metric == "link";
   const std::int64_t c = link ? 0 : routing_bend_cost(routing, layout);
-  const geom::Point ends[2] = {from, to};
+  std::vector<geom::Point> ends = target.vertices();
+  ends.push_back(from);
   const BendObstacles obs = bend_obstacles(layout, ends, routing.metric, quiet, static_cast<int>(routing.cover_pieces.value_or(router::kDefaultCoverPieces)));
   const geom::NormalizedObstacles& norm = obs.norm;
   const router::BendRouter router(norm.domain, norm.obstacles);
-  const router::BendPath p = router.path(from, to, link ? router::BendMetric::Link : router::BendMetric::Combined, c);
+  const router::BendMetric metric = link ? router::BendMetric::Link : router::BendMetric::Combined;
+  const std::string refused = shape_refusal(
+      target, false, [&](const geom::Polygon& g) { return router.pin_meets_obstacle(g).has_value(); },
+      [&] { return obs.why_under(layout, target.pin); });
+  if (!refused.empty()) {
+    print_usage_error("ROUTE-0005", refused);
+    if (json) {
+      nlohmann::ordered_json j;
+      j["metric"] = routing.metric;
+      if (!link) j["bend_cost"] = c;
+      no_wire_json(j, refused);
+      std::cout << j.dump() << '\n';
+    }
+    return kIncomplete;
+  }
+  const router::BendPath p = target.point ? router.path(from, *target.point, metric, c)
+                                          : router.path(geom::Polygon{{from}, {}}, target.pin, metric, c);
 
   nlohmann::ordered_json j;
   j["metric"] = routing.metric;
@@ -70,10 +146,10 @@ int bend_path(const io::Layout& layout, const RoutingOptions& routing, geom::Poi
       code = "ROUTE-0001", reason = "--from " + point_text(from) + " " + not_free(from);
       break;
     case router::WireStatus::TargetNotFree:
-      code = "ROUTE-0001", reason = "--to " + point_text(to) + " " + not_free(to);
+      code = "ROUTE-0001", reason = target.not_free(not_free);
       break;
     default:
-      code = "ROUTE-0002", reason = point_text(to) + " cannot be reached from " + point_text(from) +
+      code = "ROUTE-0002", reason = target.name + " cannot be reached from " + point_text(from) +
                                     ": blockages wall one of them in";
       if (!obs.covered.empty()) reason += " (the rectilinear covers of sloped blockages count, ROUTE-0008)";
       break;
@@ -100,24 +176,43 @@ int bend_path(const io::Layout& layout, const RoutingOptions& routing, geom::Poi
 // --from-file with --metric combined / link: one line (or one JSON record) per source point,
 // in the file's order; a source not free or walled in gets its reason, and the exit status 1.
 int bend_paths_to(const io::Layout& layout, const RoutingOptions& routing, const std::vector<geom::Point>& from,
-                  geom::Point to, bool json, bool quiet) {
+                  const Target& target, const std::vector<std::string>& to_pin, bool json, bool quiet) {
   const bool link = routing.metric == "link";
   const std::int64_t c = link ? 0 : routing_bend_cost(routing, layout);
   std::vector<geom::Point> ends = from;
-  ends.push_back(to);
+  for (const geom::Point v : target.vertices()) ends.push_back(v);
   const BendObstacles obs = bend_obstacles(layout, ends, routing.metric, quiet,
                                            static_cast<int>(routing.cover_pieces.value_or(router::kDefaultCoverPieces)));
   const router::BendRouter router(obs.norm.domain, obs.norm.obstacles);
   const router::BendMetric metric = link ? router::BendMetric::Link : router::BendMetric::Combined;
-  const router::BendTargetMap map(router, to, metric, c);
   nlohmann::ordered_json j;
   j["metric"] = routing.metric;
   if (!link) j["bend_cost"] = c;
-  j["to"] = {to.x, to.y};
+  if (to_pin.empty()) j["to"] = {target.point->x, target.point->y};
+  else j["to_pin"] = {{"net", to_pin[0]}, {"pin", to_pin[1]}};
+  const std::string refused = shape_refusal(
+      target, false, [&](const geom::Polygon& g) { return router.pin_meets_obstacle(g).has_value(); },
+      [&] { return obs.why_under(layout, target.pin); });
+  if (!refused.empty()) {  // no structure: every record says why
+    print_usage_error("ROUTE-0005", refused);
+    auto paths = nlohmann::ordered_json::array();
+    for (const geom::Point q : from) {
+      nlohmann::ordered_json r;
+      r["from"] = {q.x, q.y};
+      no_wire_json(r, refused);
+      paths.push_back(std::move(r));
+      if (!json) std::cout << point_text(q) << ": no wire (ROUTE-0005)\n";
+    }
+    j["paths"] = std::move(paths);
+    if (json) std::cout << j.dump() << '\n';
+    return kIncomplete;
+  }
+  const router::BendTargetMap map(router, target.pin, metric, c);
   auto paths = nlohmann::ordered_json::array();
   int status = kOk;
+  auto why = [&](geom::Point q) { return obs.why_not_free(layout, q); };
   if (map.status() != router::WireStatus::Ok) {
-    print_usage_error("ROUTE-0001", "--to " + point_text(to) + " " + obs.why_not_free(layout, to));
+    print_usage_error("ROUTE-0001", target.not_free(why));
     status = kIncomplete;
   }
   for (const geom::Point q : from) {
@@ -131,12 +226,12 @@ int bend_paths_to(const io::Layout& layout, const RoutingOptions& routing, const
     } else {
       std::string code = "ROUTE-0001", reason;
       if (map.status() != router::WireStatus::Ok) {
-        reason = "--to " + point_text(to) + " " + obs.why_not_free(layout, to);
+        reason = target.not_free(why);
       } else if (p.status == router::WireStatus::SourceNotFree) {
         reason = point_text(q) + " " + obs.why_not_free(layout, q);
       } else {
         code = "ROUTE-0002";
-        reason = point_text(to) + " cannot be reached from " + point_text(q) + ": blockages wall one of them in";
+        reason = target.name + " cannot be reached from " + point_text(q) + ": blockages wall one of them in";
       }
       no_wire_json(r, reason);
       if (map.status() == router::WireStatus::Ok) print_usage_error(code, reason);
@@ -155,6 +250,7 @@ int bend_paths_to(const io::Layout& layout, const RoutingOptions& routing, const
 void add_path(CLI::App& app, int& status) {
   struct Args {
     std::string file, from, to, from_file;
+    std::vector<std::string> to_pin;
     bool json = false;
     RoutingOptions routing;
     LoadOptions load;
@@ -165,7 +261,10 @@ void add_path(CLI::App& app, int& status) {
   sub->add_option("--from-file", args->from_file,
                   "many start points to the one --to (one X,Y per line; blank lines and # comments skipped), "
                   "--metric combined or link: the best wire from each, from one structure for the target");
-  sub->add_option("--to", args->to, "end point X,Y")->required();
+  sub->add_option("--to", args->to, "end point X,Y");
+  sub->add_option("--to-pin", args->to_pin,
+                  "end on a pin of the layout instead (NET PIN: a point, or anywhere on a shape)")
+      ->expected(2);
   sub->add_flag("--json", args->json, "print one JSON document on stdout");
   add_routing_options(sub, args->routing);
   args->routing.allow_bends = true;
@@ -173,6 +272,11 @@ void add_path(CLI::App& app, int& status) {
   sub->callback([args, &status] {
     if (args->from.empty() == args->from_file.empty()) {
       print_usage_error("CLI-0022", "give --from X,Y or --from-file F (one of them)");
+      status = kInvalid;
+      return;
+    }
+    if (args->to.empty() == args->to_pin.empty()) {
+      print_usage_error("CLI-0022", "give --to X,Y or --to-pin NET PIN (one of them)");
       status = kInvalid;
       return;
     }
@@ -185,7 +289,8 @@ void add_path(CLI::App& app, int& status) {
     }
     std::vector<geom::Point> sources;
     const auto from = many ? std::optional<geom::Point>(geom::Point{}) : parse_point_option("--from", args->from);
-    const auto to = from ? parse_point_option("--to", args->to) : std::nullopt;
+    const bool by_pin = !args->to_pin.empty();
+    const auto to = !from ? std::nullopt : by_pin ? std::optional<geom::Point>(geom::Point{}) : parse_point_option("--to", args->to);
     const auto layout = from && to && (!many || read_point_file(args->from_file, sources))
                             ? load_routing_layout(args->file, args->load, args->routing)
                             : std::nullopt;
@@ -193,23 +298,56 @@ void add_path(CLI::App& app, int& status) {
       status = kInvalid;
       return;
     }
+    std::optional<Target> target;
+    if (by_pin) {
+      target = pin_target(*layout, args->to_pin[0], args->to_pin[1]);
+    } else {
+      target = Target{geom::Polygon{{*to}, {}}, *to, "--to " + point_text(*to), point_text(*to)};
+    }
+    if (!target) {
+      status = kInvalid;
+      return;
+    }
     if (many) {
-      status = bend_paths_to(*layout, args->routing, sources, *to, args->json, args->load.quiet);
+      status = bend_paths_to(*layout, args->routing, sources, *target, args->to_pin, args->json, args->load.quiet);
       return;
     }
-    const geom::Point ends[2] = {*from, *to};
     if (args->routing.metric != "l1") {
-      status = bend_path(*layout, args->routing, *from, *to, args->json, args->load.quiet);
+      status = bend_path(*layout, args->routing, *from, *target, args->json, args->load.quiet);
       return;
     }
+    std::vector<geom::Point> ends = target->vertices();
+    ends.push_back(*from);
     const geom::NormalizedObstacles norm = routing_obstacles(*layout, ends);
     const bool oct = routing_orientations(args->routing, *layout) == "octilinear";
     // One wire record for both orientations: the length exactly as a + b*sqrt2 (b = 0 for L1).
     router::BasicWire<geom::Root2> w;
+    const geom::Polygon from_pin{{*from}, {}};
+    auto refuse = [&](const std::string& reason) {
+      print_usage_error("ROUTE-0005", reason);
+      if (args->json) {
+        nlohmann::ordered_json j;
+        j["metric"] = "l1";
+        if (oct) j["orientations"] = "octilinear";
+        no_wire_json(j, reason);
+        std::cout << j.dump() << '\n';
+      }
+      status = kIncomplete;
+    };
+    const std::string under = "lies partly under a blockage; shape pins that overlap blockages are not routed yet (ones "
+                              "that touch them are)";
     if (oct) {
-      w = router::OctRouter(norm.domain, norm.obstacles).shortest(*from, *to);
+      router::OctRouter r(norm.domain, norm.obstacles);
+      const std::string refused = shape_refusal(
+          *target, true, [&](const geom::Polygon& g) { return r.pin_meets_obstacle(g).has_value(); }, [&] { return under; });
+      if (!refused.empty()) return refuse(refused);
+      w = target->point ? r.shortest(*from, *target->point) : r.shortest(from_pin, target->pin);
     } else {
-      router::L1Wire l = router::L1Router(norm.domain, norm.obstacles).shortest(*from, *to);
+      router::L1Router r(norm.domain, norm.obstacles);
+      const std::string refused = shape_refusal(
+          *target, false, [&](const geom::Polygon& g) { return r.pin_meets_obstacle(g).has_value(); }, [&] { return under; });
+      if (!refused.empty()) return refuse(refused);
+      router::L1Wire l = target->point ? r.shortest(*from, *target->point) : r.shortest(from_pin, target->pin);
       w = {l.status, std::nullopt, std::move(l.polygonal), std::move(l.points)};
       if (l.length) w.length = geom::Root2{*l.length, 0};
     }
@@ -230,10 +368,10 @@ void add_path(CLI::App& app, int& status) {
         code = "ROUTE-0001", reason = "--from " + point_text(*from) + " " + why_not_free(*layout, *from);
         break;
       case router::WireStatus::TargetNotFree:
-        code = "ROUTE-0001", reason = "--to " + point_text(*to) + " " + why_not_free(*layout, *to);
+        code = "ROUTE-0001", reason = target->not_free([&](geom::Point q) { return why_not_free(*layout, q); });
         break;
       case router::WireStatus::Unreachable:
-        code = "ROUTE-0002", reason = point_text(*to) + " cannot be reached from " + point_text(*from) +
+        code = "ROUTE-0002", reason = target->name + " cannot be reached from " + point_text(*from) +
                                       ": blockages wall one of them in";
         break;
       case router::WireStatus::NoIntegerStaircase:

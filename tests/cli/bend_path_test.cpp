@@ -193,6 +193,139 @@ TEST(BendPath, ManySourcesToOneTarget) {
   }
 }
 
+// --to-pin NET PIN: wires end anywhere on a pin of the layout. A small layout (so the
+// reference can search from every integer point of the pin: best_between_on_lattice) with a
+// diamond, an L-shaped pin and a point pin; every record of --from-file (BendTargetMap on the
+// shape) and every --from wire (l1 too: combined with C = 0 gives the L1 length) against it;
+// then the refusals: a shape under a blockage (ROUTE-0005, records with reasons, exit 1), no such
+// net or pin (CLI-0028, exit 2, nothing on stdout), --to with --to-pin (CLI-0022).
+TEST(BendPath, ToAPinOfTheLayout) {
+  const std::string dir = test::temp_dir("bend_to_pin");
+  const std::string file = dir + "/pins.xml";
+  test::write_text(file, R"(<?xml version="1.0" encoding="UTF-8"?>
+<layout name="pins" version="1" dbu-per-micron="1000">
+  <boundary x0="0" y0="0" x1="30" y1="24"/>
+  <blockage id="a"><rect x0="4" y0="4" x1="12" y1="8"/></blockage>
+  <blockage id="b"><polygon points="16,2 26,2 26,12 22,12 22,6 16,6"/></blockage>
+  <blockage id="c"><rect x0="8" y0="12" x1="14" y1="20"/></blockage>
+  <net name="n">
+    <pin name="bump"><polygon points="18,14 21,17 18,20 15,17"/></pin>
+    <pin name="ell"><polygon points="24,16 28,16 28,22 26,22 26,18 24,18"/></pin>
+    <pin name="dot" x="2" y="22"/>
+    <pin name="under"><rect x0="10" y0="6" x1="14" y1="10"/></pin>
+  </net>
+</layout>
+)");
+  const io::ReadResult rr = io::read_layout(file);
+  ASSERT_TRUE(rr.layout.has_value());
+  const geom::NormalizedObstacles norm = geom::normalize_obstacles(io::blockage_polygons(*rr.layout), io::routing_domain(*rr.layout, {}));
+  const oracle::BendReference ref(norm.domain, norm.obstacles);
+  auto lattice = [&](const geom::Polygon& pin) {
+    std::vector<Point> out;
+    for (geom::Coord x = norm.domain.lo.x; x <= norm.domain.hi.x; ++x)
+      for (geom::Coord y = norm.domain.lo.y; y <= norm.domain.hi.y; ++y)
+        if (geom::locate({x, y}, pin) != geom::Location::Outside) out.push_back({x, y});
+    return out;
+  };
+  const std::map<std::string, geom::Polygon> pins = {
+      {"bump", geom::Polygon{{{18, 14}, {21, 17}, {18, 20}, {15, 17}}, {}}},
+      {"ell", geom::Polygon{{{24, 16}, {28, 16}, {28, 22}, {26, 22}, {26, 18}, {24, 18}}, {}}},
+      {"dot", geom::Polygon{{{2, 22}}, {}}}};
+  std::vector<Point> from;
+  for (geom::Coord y = 0; y <= 24; y += 3)
+    for (geom::Coord x = 1; x <= 30; x += 4) from.push_back({x, y});
+  std::string text;
+  for (const Point p : from) text += pt(p) + "\n";
+  const std::string pts = dir + "/from.txt";
+  test::write_text(pts, text);
+  int answered = 0, inside = 0;
+  for (const auto& [name, pin] : pins) {
+    const std::vector<Point> T = name == "dot" ? std::vector<Point>{pin.outer[0]} : lattice(pin);
+    for (const bool link : {false, true}) {
+      SCOPED_TRACE(name + (link ? " link" : " combined"));
+      const std::int64_t c = link ? 0 : 3;
+      std::vector<std::string> args = {"path", file, "--from-file", pts, "--to-pin", "n", name, "--json", "-q"};
+      if (link) args.insert(args.end(), {"--metric", "link"});
+      else args.insert(args.end(), {"--metric", "combined", "--bend-cost", "3"});
+      const auto r = run_taut(args);
+      EXPECT_EQ(r.status, 1) << r.err;  // some sources lie inside blockages
+      const auto j = nlohmann::json::parse(r.out);
+      EXPECT_EQ(j["to_pin"], nlohmann::json({{"net", "n"}, {"pin", name}}));
+      ASSERT_EQ(j["paths"].size(), from.size());
+      for (std::size_t i = 0; i < from.size(); ++i) {
+        const auto& rec = j["paths"][i];
+        const Point q[1] = {from[i]};
+        const auto want = ref.best_between_on_lattice(q, T, link, c);
+        if (!want) {
+          EXPECT_TRUE(rec["cost"].is_null()) << pt(from[i]);
+          EXPECT_FALSE(ref.l1().is_free(from[i]) && rec["reason"].get<std::string>().find("inside") != std::string::npos);
+          ++inside;
+          continue;
+        }
+        ASSERT_TRUE(rec["cost"].is_number()) << pt(from[i]) << " " << rec.dump();
+        ++answered;
+        EXPECT_EQ(rec["length"].get<std::int64_t>(), want->length) << pt(from[i]);
+        EXPECT_EQ(rec["bends"].get<std::int64_t>(), want->bends) << pt(from[i]);
+        const std::vector<Point> w = points_of(rec["points"]);
+        ASSERT_FALSE(w.empty());
+        EXPECT_EQ(w.front(), from[i]);
+        EXPECT_NE(std::find(T.begin(), T.end(), w.back()), T.end()) << "the wire ends off the pin: " << pt(w.back());
+        const auto got = ref.check_path(w);
+        ASSERT_TRUE(got.has_value()) << "the wire leaves free space";
+        EXPECT_EQ(*got, *want);
+      }
+    }
+    // one source, every metric; l1 against the reference's length with C = 0
+    for (const Point a : {Point{1, 1}, Point{29, 1}, Point{15, 22}}) {
+      const Point q[1] = {a};
+      for (const std::vector<std::string>& metric : std::vector<std::vector<std::string>>{
+               {"--metric", "l1"}, {"--metric", "combined", "--bend-cost", "3"}, {"--metric", "link"}}) {
+        const bool link = metric[1] == "link";
+        const auto want = ref.best_between_on_lattice(q, T, link, metric[1] == "combined" ? 3 : 0);
+        ASSERT_TRUE(want.has_value());
+        std::vector<std::string> args = {"path", file, "--from", pt(a), "--to-pin", "n", name, "--json", "-q"};
+        args.insert(args.end(), metric.begin(), metric.end());
+        const auto r = run_taut(args);
+        ASSERT_EQ(r.status, 0) << r.err;
+        const auto j = nlohmann::json::parse(r.out);
+        EXPECT_EQ(j["length"].get<std::int64_t>(), want->length) << pt(a) << " to " << name << " " << metric[1];
+        if (metric[1] != "l1") {
+          EXPECT_EQ(j["bends"].get<std::int64_t>(), want->bends) << pt(a) << " to " << name << " " << metric[1];
+        }
+        const std::vector<Point> w = points_of(j["points"]);
+        EXPECT_NE(std::find(T.begin(), T.end(), w.back()), T.end());
+        EXPECT_TRUE(ref.check_path(w).has_value());
+      }
+    }
+  }
+  EXPECT_GE(answered, 300);
+  EXPECT_GE(inside, 20);
+  // a shape under a blockage: every record says why, exit 1
+  const auto under = run_taut({"path", file, "--from-file", pts, "--to-pin", "n", "under", "--metric", "link", "--json", "-q"});
+  EXPECT_EQ(under.status, 1);
+  EXPECT_NE(under.err.find("ROUTE-0005"), std::string::npos) << under.err;
+  EXPECT_NE(under.err.find("pin \"under\" of net \"n\" (" + file + ":11) lies partly under blockage \"a\""), std::string::npos) << under.err;
+  const auto ju = nlohmann::json::parse(under.out);
+  ASSERT_EQ(ju["paths"].size(), from.size());
+  for (const auto& rec : ju["paths"]) EXPECT_TRUE(rec["cost"].is_null());
+  const auto under_l1 = run_taut({"path", file, "--from", "1,1", "--to-pin", "n", "under"});
+  EXPECT_EQ(under_l1.status, 1);
+  EXPECT_NE(under_l1.err.find("ROUTE-0005"), std::string::npos) << under_l1.err;
+  // usage errors: exit 2, nothing on stdout
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"path", file, "--from", "1,1", "--to-pin", "m", "bump"}, "CLI-0028] --to-pin: " + file + " has no net \"m\""},
+      {{"path", file, "--from", "1,1", "--to-pin", "n", "pad", "--metric", "link"}, "CLI-0028] --to-pin: net \"n\" (" + file + ":7) has no pin \"pad\"; its pins: \"bump\", \"ell\", \"dot\", \"under\""},
+      {{"path", file, "--from", "1,1", "--to", "2,2", "--to-pin", "n", "bump"}, "CLI-0022"},
+      {{"path", file, "--from", "1,1"}, "CLI-0022"},
+  };
+  for (const auto& [args, code] : cases) {
+    const auto r = run_taut(args);
+    EXPECT_EQ(r.status, 2) << code;
+    EXPECT_TRUE(r.out.empty()) << r.out;
+    EXPECT_NE(r.err.find(code), std::string::npos) << r.err;
+  }
+}
+
 TEST(BendPath, TextOutputRulesBendCostAndTheSlopedBlockageWarning) {
   const std::string dir = test::temp_dir("bend_path");
   const std::string file = dir + "/rules.xml";

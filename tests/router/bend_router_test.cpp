@@ -37,6 +37,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <initializer_list>
 #include <optional>
 #include <random>
@@ -651,6 +652,31 @@ TEST(BendRouter, TreesMatchTheReference) {
 // the status and the cost equal the reference's, and path() gives a legal path from q to the
 // target with exactly that cost.
 
+// One query of a BendTargetMap against the reference's answer `want` (nullopt: none): its
+// status, cost, and a legal path of that cost from q that ends where `ends_ok` says. "" when
+// they agree; *path (when answered) receives the path.
+std::string check_map_query(const router::BendTargetMap& map, const BendReference& ref, Point q, bool target_free,
+                            const std::optional<BendAnswer>& want, const std::function<bool(Point)>& ends_ok,
+                            const std::string& at, BendPath* path) {
+  WireStatus st = WireStatus::Ok;
+  const router::BendCost got = map.cost(q, &st);
+  const WireStatus expected = !target_free ? WireStatus::TargetNotFree
+                              : !ref.l1().is_free(q) ? WireStatus::SourceNotFree
+                              : !want ? WireStatus::Unreachable
+                                      : WireStatus::Ok;
+  std::ostringstream head;
+  head << at << " from " << str(q) << ": reference " << str(want) << ", map status " << str(st) << " length "
+       << got.length << " bends " << got.bends << "\n  ";
+  if (st != expected) return head.str() + "status differs";
+  if (!want) return "";
+  if (got.length != want->length || got.bends != want->bends) return head.str() + "cost differs";
+  *path = map.path(q);
+  const std::optional<BendAnswer> m = ref.check_path(path->points);
+  if (path->points.empty() || path->points.front() != q || !ends_ok(path->points.back()) || !m || *m != *want)
+    return head.str() + "path " + str(*path) + " measures " + str(m);
+  return "";
+}
+
 TEST(BendRouter, TargetMapMatchesTheReference) {
   const i64 count = sanitized_share(250, 10);
   i64 queries = 0, ok = 0, corners = 0, pieces = 0;
@@ -678,35 +704,19 @@ TEST(BendRouter, TargetMapMatchesTheReference) {
           if (failed++ < 5) ADD_FAILURE() << "seed " << seed << ": target " << str(target) << " status " << str(map.status());
           continue;
         }
+        const std::string at = "seed " + std::to_string(seed) + ": " + describe(in.domain, in.obstacles) + "\n  target " +
+                               str(target) + " " + metric_name(link) + (link ? "" : " C = " + std::to_string(C));
         for (const Point q : qs) {
           ++queries;
           const std::optional<BendAnswer> want = target_free ? ref.best(q, target, link, C) : std::nullopt;
-          WireStatus st = WireStatus::Ok;
-          const router::BendCost got = map.cost(q, &st);
-          const WireStatus expected = !target_free ? WireStatus::TargetNotFree
-                                      : !ref.l1().is_free(q) ? WireStatus::SourceNotFree
-                                      : !want ? WireStatus::Unreachable
-                                              : WireStatus::Ok;
-          std::ostringstream head;
-          head << "seed " << seed << ": " << describe(in.domain, in.obstacles) << "\n  target " << str(target) << " from "
-               << str(q) << " " << metric_name(link) << (link ? "" : " C = " + std::to_string(C)) << ": reference "
-               << str(want) << ", map status " << str(st) << " length " << got.length << " bends " << got.bends << "\n  ";
-          if (st != expected) {
-            if (failed++ < 5) ADD_FAILURE() << head.str() << "status differs";
+          BendPath p;
+          const std::string r = check_map_query(map, ref, q, target_free, want, [&](Point e) { return e == target; }, at, &p);
+          if (!r.empty()) {
+            if (failed++ < 5) ADD_FAILURE() << r;
             continue;
           }
           if (!want) continue;
           ++ok;
-          if (got.length != want->length || got.bends != want->bends) {
-            if (failed++ < 5) ADD_FAILURE() << head.str() << "cost differs";
-            continue;
-          }
-          const BendPath p = map.path(q);
-          const std::optional<BendAnswer> m = ref.check_path(p.points);
-          if (p.points.empty() || p.points.front() != q || p.points.back() != target || !m || *m != *want) {
-            if (failed++ < 5) ADD_FAILURE() << head.str() << "path " << str(p) << " measures " << str(m);
-            continue;
-          }
           corners += p.bends > 0;
         }
       }
@@ -966,6 +976,80 @@ TEST(BendRouter, ShapePinsMatchTheReference) {
   EXPECT_GE(tally.from_inside_edge, sanitized_share(500, 10));
   EXPECT_GE(tally.shared, sanitized_share(100, 10));
   EXPECT_GE(tally.trees_ok, sanitized_share(200, 10));
+}
+
+// BendTargetMap with a pin as the target: a shape (or a point) from random_pin, queries from
+// points of the lattice around the layout, the obstacle vertices and points on and beside the
+// target's edges; each against the reference's search from the query point to EVERY integer
+// point of the target (best_between_on_lattice), which knows nothing of the candidates or of
+// the straight shots the map adds per query.
+TEST(BendRouter, TargetMapOnShapePinsMatchesTheReference) {
+  const i64 layouts = sanitized_share(300, 10);
+  i64 done = 0, queries = 0, ok = 0, on_shape = 0, straight = 0, corners = 0;
+  int failed = 0;
+  for (std::uint64_t seed = kBaseSeed + 95000; done < layouts; ++seed) {
+    const Instance in = make_instance(seed);
+    if (in.domain.hi.x - in.domain.lo.x > 18 || in.domain.hi.y - in.domain.lo.y > 18) continue;  // scaled
+    const BendRouter router(in.domain, in.obstacles);
+    std::mt19937_64 rng(seed);
+    Polygon target = random_pin(rng, in.domain, in.obstacles);
+    if (router.pin_meets_obstacle(target)) continue;
+    ++done;
+    const BendReference ref(in.domain, in.obstacles);
+    const std::vector<Point> T = pin_lattice(target, in.domain);
+    auto is_point = [](const Polygon& pin) { return pin.outer.size() == 1 && pin.holes.empty(); };
+    const bool target_free = std::any_of(T.begin(), T.end(), [&](Point p) { return ref.l1().is_free(p); });
+    std::vector<Point> qs;
+    for (int k = 0; k < 16; ++k)
+      qs.push_back({in.domain.lo.x - 1 + static_cast<geom::Coord>(rng() % static_cast<std::uint64_t>(in.domain.hi.x - in.domain.lo.x + 3)),
+                    in.domain.lo.y - 1 + static_cast<geom::Coord>(rng() % static_cast<std::uint64_t>(in.domain.hi.y - in.domain.lo.y + 3))});
+    for (int k = 0; k < 8 && !in.obstacles.empty(); ++k) {
+      const Ring& r = in.obstacles[rng() % in.obstacles.size()].outer;
+      qs.push_back(r[rng() % r.size()]);
+    }
+    for (int k = 0; k < 6; ++k) {  // on the target or one step beside it
+      const Point t = T[rng() % T.size()];
+      qs.push_back({t.x + static_cast<geom::Coord>(rng() % 3) - 1, t.y + static_cast<geom::Coord>(rng() % 3) - 1});
+    }
+    for (const bool link : {false, true})
+      for (const i64 C : link ? std::vector<i64>{0} : std::vector<i64>{0, 1, 7, 1000}) {
+        const BendMetric metric = link ? BendMetric::Link : BendMetric::Combined;
+        const router::BendTargetMap map(router, target, metric, C);
+        std::ostringstream at;
+        at << "seed " << seed << ": " << describe(in.domain, in.obstacles) << "\n  target " << pin_str(target) << " "
+           << metric_name(link) << (link ? "" : " C = " + std::to_string(C));
+        if ((map.status() == WireStatus::Ok) != target_free) {
+          if (failed++ < 5) ADD_FAILURE() << at.str() << ": map status " << str(map.status());
+          continue;
+        }
+        auto on_target = [&](Point e) {
+          return is_point(target) ? e == target.outer[0] : geom::locate(e, target) != geom::Location::Outside;
+        };
+        for (const Point q : qs) {
+          ++queries;
+          const Point qq[1] = {q};
+          const std::optional<BendAnswer> want = target_free ? ref.best_between_on_lattice(qq, T, link, C) : std::nullopt;
+          BendPath p;
+          const std::string r = check_map_query(map, ref, q, target_free, want, on_target, at.str(), &p);
+          if (!r.empty()) {
+            if (failed++ < 5) ADD_FAILURE() << r;
+            continue;
+          }
+          if (!want) continue;
+          ++ok;
+          on_shape += want->length == 0;
+          straight += want->length > 0 && p.bends == 0;
+          corners += p.bends > 0;
+        }
+      }
+  }
+  std::printf("%lld layouts, %lld queries to a pin (%lld answered: %lld on it, %lld straight, %lld with bends)\n",
+              static_cast<long long>(done), static_cast<long long>(queries), static_cast<long long>(ok),
+              static_cast<long long>(on_shape), static_cast<long long>(straight), static_cast<long long>(corners));
+  EXPECT_EQ(failed, 0);
+  EXPECT_GE(ok, sanitized_share(10000, 10));
+  EXPECT_GE(straight, sanitized_share(1000, 10));
+  EXPECT_GE(corners, sanitized_share(3000, 10));
 }
 
 // ---------------------------------------------------------------------------------------------
