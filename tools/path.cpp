@@ -5,7 +5,7 @@
 // shortest), with integer vertices; its cost, length, bends, points.
 // taut path FILE --from-file F --to X,Y --metric combined|link [--json]: the best wire from each
 // point of F (one X,Y per line) to one target, from router::BendTargetMap (a Dijkstra run from
-// the target and eight slab trees, then O(log^2 n) per point).
+// the target and eight slab trees with fractional cascading, then O(log n) per point).
 // --to-pin NET PIN instead of --to: the wire ends anywhere on that pin of the layout (a point or
 // a shape, as taut route takes it).
 #include <functional>
@@ -275,8 +275,13 @@ void add_path(CLI::App& app, int& status) {
       status = kInvalid;
       return;
     }
-    if (args->to.empty() == args->to_pin.empty()) {
-      print_usage_error("CLI-0022", "give --to X,Y or --to-pin NET PIN (one of them)");
+    if (args->to.empty() && args->to_pin.empty()) {  // a missing option, as CLI11 reports one
+      print_usage_error("CLI-0001", "--to X,Y or --to-pin NET PIN is required");
+      status = kInvalid;
+      return;
+    }
+    if (!args->to.empty() && !args->to_pin.empty()) {
+      print_usage_error("CLI-0022", "give --to X,Y or --to-pin NET PIN, not both");
       status = kInvalid;
       return;
     }

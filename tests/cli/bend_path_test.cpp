@@ -316,7 +316,7 @@ TEST(BendPath, ToAPinOfTheLayout) {
       {{"path", file, "--from", "1,1", "--to-pin", "m", "bump"}, "CLI-0028] --to-pin: " + file + " has no net \"m\""},
       {{"path", file, "--from", "1,1", "--to-pin", "n", "pad", "--metric", "link"}, "CLI-0028] --to-pin: net \"n\" (" + file + ":7) has no pin \"pad\"; its pins: \"bump\", \"ell\", \"dot\", \"under\""},
       {{"path", file, "--from", "1,1", "--to", "2,2", "--to-pin", "n", "bump"}, "CLI-0022"},
-      {{"path", file, "--from", "1,1"}, "CLI-0022"},
+      {{"path", file, "--from", "1,1"}, "CLI-0001] --to X,Y or --to-pin NET PIN is required"},
   };
   for (const auto& [args, code] : cases) {
     const auto r = run_taut(args);
