@@ -38,7 +38,7 @@ using taut::geom::Point;
 struct Row {
   std::int64_t n = 0;
   double sort = 0, build = 0, combined = 0, link = 0, l1 = 0, ref = -1, shape = 0, map_build = 0, map_query = 0;
-  double map_pieces = 0, map_entries = 0, map_mib = 0, pin_map_build = 0, pin_map_query = 0;
+  double map_pieces = 0, map_mib = 0, pin_map_build = 0, pin_map_query = 0;
   int map_agree = 0, map_checked = 0;
   int ref_agree = 0;
   taut::router::BendGraphStats stats;
@@ -125,7 +125,6 @@ int main(int argc, char** argv) {
       row.map_build = seconds_of([&] { map = std::make_unique<taut::router::BendTargetMap>(*router, target, taut::router::BendMetric::Combined, 1000); }, 1);
       row.map_mib = static_cast<double>(taut::bench::heap_in_use() - heap0) / (1024.0 * 1024.0);
       row.map_pieces = static_cast<double>(map->pieces()) / static_cast<double>(std::max<std::int64_t>(1, row.n));
-      row.map_entries = static_cast<double>(map->catalog_entries()) / static_cast<double>(std::max<std::int64_t>(1, row.n));
       std::vector<Point> qs(b.points.begin(), b.points.end());
       const taut::geom::Box& d = b.norm.domain;
       std::uint64_t s = 7;
@@ -180,8 +179,8 @@ int main(int argc, char** argv) {
                 row.build / row.sort, row.combined * 1e3, row.link * 1e3, row.l1 * 1e3, row.combined / row.l1,
                 row.link / row.l1, row.found, row.queries, row.l1_found, row.shape / row.combined, row.map_build,
                 row.map_build / row.combined, row.map_pieces, row.map_query * 1e6, row.combined / row.map_query);
-    std::printf("%8s map answers equal to the graph query's on %d of %d sampled points; catalogs %.1f entries per vertex "
-                "(fractional cascading), %.1f MiB in all\n", "", row.map_agree, row.map_checked, row.map_entries, row.map_mib);
+    std::printf("%8s map answers equal to the graph query's on %d of %d sampled points; %.1f MiB in all\n", "",
+                row.map_agree, row.map_checked, row.map_mib);
     std::printf("%8s map to the target's square pin: build %.3f s (%.2f x the point's), query %.2f us (%.2f x the point's)\n", "",
                 row.pin_map_build, row.pin_map_build / row.map_build, row.pin_map_query * 1e6, row.pin_map_query / row.map_query);
     if (row.ref >= 0)

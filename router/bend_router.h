@@ -162,7 +162,7 @@ class BendRouter {
 };
 
 // Many queries to one fixed target (section 4 of de Berg, van Kreveld, Nilsson, Overmars): the
-// cost of an optimal path from any query point to the target in O(log n) time, its path in
+// cost of an optimal path from any query point to the target in O(log^2 n) time, its path in
 // time proportional to its links, after O(E log n) preprocessing (one Dijkstra run from the
 // target over the graph) and O(n log n) storage.
 //
@@ -176,10 +176,10 @@ class BendRouter {
 // query interval (q's leftward track). The paper's slab tree: the vertices in x order at the
 // leaves of a balanced tree, each node holding the lower envelope of its vertices' keys along
 // y (a piecewise-constant function, linear in the node's vertices: a Davenport-Schinzel
-// sequence); a query takes the O(log n) nodes that cover the interval and looks up y in each,
-// with fractional cascading as in the paper: one binary search at the root, then O(1) per node,
-// so O(log n) in all. The intervals are found by ray shooting in the R-tree (the paper's
-// interval finding structure).
+// sequence); a query takes the O(log n) nodes that cover the interval and looks up y in each
+// (a binary search: O(log^2 n). The paper's fractional cascading makes it O(log n); it was built
+// and measured slower here, see SlabTree in the .cpp). The intervals are found by ray shooting
+// in the R-tree (the paper's interval finding structure).
 // Exact, and equal to BendRouter::path's cost for every query (tested against it and the
 // reference).
 class BendTargetMap {
@@ -205,10 +205,8 @@ class BendTargetMap {
   BendCost cost(geom::Point q, WireStatus* status = nullptr) const;
   // An optimal path from q to the target, as BendRouter::path gives one (its cost equal).
   BendPath path(geom::Point q) const;
-  // Breakpoints of the eight slab trees' envelopes (the structure's size before cascading), and
-  // the entries of their catalogs (what is stored: the breakpoints and the cascaded samples).
+  // Pieces stored in the eight slab trees' envelopes (the structure's size).
   std::size_t pieces() const;
-  std::size_t catalog_entries() const;
 
  private:
   struct Impl;

@@ -5,7 +5,7 @@
 // shortest), with integer vertices; its cost, length, bends, points.
 // taut path FILE --from-file F --to X,Y --metric combined|link [--json]: the best wire from each
 // point of F (one X,Y per line) to one target, from router::BendTargetMap (a Dijkstra run from
-// the target and eight slab trees with fractional cascading, then O(log n) per point).
+// the target and eight slab trees, then O(log^2 n) per point).
 // --to-pin NET PIN instead of --to: the wire ends anywhere on that pin of the layout (a point or
 // a shape, as taut route takes it).
 #include <functional>
