@@ -3,6 +3,7 @@
 #include <gmpxx.h>
 
 #include <algorithm>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 
@@ -39,6 +40,12 @@ std::optional<Height> crossing(const QPoint& a, const QPoint& b, i64 X, int sigm
   return Height{a.y + (x - a.x) * s, sigma > 0 ? s : mpq_class(-s)};
 }
 
+std::vector<const geom::Ring*> rings_of(const geom::Polygon& p) {
+  std::vector<const geom::Ring*> rs{&p.outer};
+  for (const auto& h : p.holes) rs.push_back(&h);
+  return rs;
+}
+
 }  // namespace
 
 struct HomotopyWords::Impl {
@@ -50,34 +57,46 @@ struct HomotopyWords::Impl {
   std::vector<Cut> cuts;
 };
 
-HomotopyWords::HomotopyWords(const geom::Box& domain, std::span<const geom::Polygon> obstacles)
-    : impl_(new Impl) {
+HomotopyWords::HomotopyWords(const geom::Box& domain, std::span<const geom::Polygon> obstacles) {
+  auto impl = std::make_unique<Impl>();  // not leaked when the constructor throws
   std::vector<std::pair<Point, Point>> edges;
-  for (const auto& p : obstacles) {
-    std::vector<const geom::Ring*> rs{&p.outer};
-    for (const auto& h : p.holes) rs.push_back(&h);
-    for (const geom::Ring* r : rs)
+  for (const auto& p : obstacles)
+    for (const geom::Ring* r : rings_of(p))
       for (std::size_t i = 0; i < r->size(); ++i) edges.push_back({(*r)[i], (*r)[(i + 1) % r->size()]});
-  }
   for (const auto& p : obstacles) {
     const geom::Ring& r = p.outer;
-    std::size_t t = 0;
-    for (std::size_t i = 1; i < r.size(); ++i)
-      if (r[i].y > r[t].y || (r[i].y == r[t].y && r[i].x > r[t].x)) t = i;
-    const Point v = r[t], prev = r[(t + r.size() - 1) % r.size()], next = r[(t + 1) % r.size()];
-    // counter-clockwise ring: the interior at v runs counter-clockwise from v->next to v->prev,
-    // inside the lower half-plane; it reaches x > v.x iff v->prev does
-    const int sigma = prev.x > v.x ? 1 : -1;
-    const Point side = sigma > 0 ? prev : next;
-    const auto base = crossing(v, side, v.x, sigma);
-    if (!base) throw std::logic_error("HomotopyWords: the top vertex's edge misses its cut line");
-    Impl::Cut c{v.x, sigma, *base, Height{mpq_class(static_cast<long>(domain.hi.y)), 0}};
-    for (const auto& [a, b] : edges) {
-      const auto h = crossing(a, b, v.x, sigma);
-      if (h && less(c.base, *h) && less(*h, c.end)) c.end = *h;
+    if (r.empty()) throw std::invalid_argument("HomotopyWords: an obstacle with an empty outer ring");
+    Point v = r[0];
+    for (const Point q : r)
+      if (q.y > v.y || (q.y == v.y && q.x > v.x)) v = q;
+    // The cut's base is the obstacle's topmost crossing of the line x = v.x + sigma e, found
+    // among all of its edges: the ring may pass through v more than once (lobes pinched at v),
+    // in either orientation, with repeated or collinear vertices, so v's ring neighbours say
+    // nothing. The base is at v (height v.y) iff an edge through v reaches that side; then
+    // free space lies just above it (nothing of the obstacle is above v), and on the right
+    // side when an edge through v reaches x > v.x, else on the left.
+    std::optional<Impl::Cut> cut;
+    for (const int sigma : {1, -1}) {
+      std::optional<Height> base;
+      for (const geom::Ring* ring : rings_of(p))
+        for (std::size_t i = 0; i < ring->size(); ++i) {
+          const auto h = crossing((*ring)[i], (*ring)[(i + 1) % ring->size()], v.x, sigma);
+          if (h && (!base || less(*base, *h))) base = h;
+        }
+      if (base && base->y0 == v.y) {
+        cut = Impl::Cut{v.x, sigma, *base, Height{mpq_class(static_cast<long>(domain.hi.y)), 0}};
+        break;
+      }
     }
-    impl_->cuts.push_back(c);
+    if (!cut)  // only vertical edges at v: a zero-width spike, not a valid polygon
+      throw std::invalid_argument("HomotopyWords: an obstacle's top vertex has no edge to either side");
+    for (const auto& [a, b] : edges) {
+      const auto h = crossing(a, b, cut->X, cut->sigma);
+      if (h && less(cut->base, *h) && less(*h, cut->end)) cut->end = *h;
+    }
+    impl->cuts.push_back(*cut);
   }
+  impl_ = impl.release();
 }
 
 HomotopyWords::~HomotopyWords() { delete impl_; }

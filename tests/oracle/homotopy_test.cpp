@@ -3,13 +3,21 @@
 // tests' seeded layouts (every `taut gen` kind, degenerate families), invariance under
 // homotopy moves: replacing a segment a-b by a-c-b where the triangle abc holds no obstacle
 // point, and inserting a there-and-back excursion, never changes the reduced word, while a
-// loop around one obstacle changes it.
+// loop around one obstacle changes it. Obstacles whose ring passes through its top vertex
+// twice (lobes pinched there: the constructor once threw on them, or cut inside the obstacle),
+// by hand and in seeded random layouts whose rings are also reversed, rotated, and given
+// repeated and collinear vertices: a loop around each obstacle crosses its cut once, and free
+// triangles give the empty word.
 #include "oracle/homotopy.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <memory>
+#include <numeric>
 #include <random>
 
+#include "geom/predicates.h"
 #include "oracle/l1_oracle.h"
 #include "support/reach.h"
 #include "support/sanitized.h"
@@ -54,6 +62,188 @@ TEST(HomotopyWords, TopVertexWithTheObstacleToItsLeft) {
   EXPECT_NE(h.word(over), h.word(under));
   EXPECT_EQ(h.word(Path{{10, 50}, {60, 60}, {90, 40}}), h.word(over));  // through the top vertex
   EXPECT_EQ(h.word(Path{{10, 50}, {20, 20}, {60, 20}, {90, 40}}), h.word(under));  // along the bottom
+}
+
+// The signed number of times a word crosses the cut of obstacle k (its letter k + 1).
+int crossings_of(const std::vector<int>& w, std::size_t k) {
+  int n = 0;
+  for (int l : w) n += l == static_cast<int>(k + 1) ? 1 : l == -static_cast<int>(k + 1) ? -1 : 0;
+  return n;
+}
+
+TEST(HomotopyWords, TopVertexWhereTwoLobesTouch) {
+  // Two triangles touching at their common top vertex (1,1) are one obstacle whose ring passes
+  // through (1,1) twice. The old constructor took the ring neighbours of the first visit,
+  // (1,0) and (2,0), as the sides of the interior: they bound the free wedge between the lobes,
+  // and the edge it picked missed the cut line (std::logic_error).
+  const Scene sc = normalized({{-2, -2}, {5, 4}}, {geom::Polygon{{{0, 0}, {1, 0}, {1, 1}}, {}},
+                                                   geom::Polygon{{{1, 1}, {2, 0}, {3, 0}}, {}}});
+  ASSERT_EQ(sc.obstacles.size(), 1u);
+  ASSERT_EQ(sc.obstacles[0].outer, (geom::Ring{{0, 0}, {1, 0}, {1, 1}, {2, 0}, {3, 0}, {1, 1}}));
+  const oracle::HomotopyWords h(sc.domain, sc.obstacles);
+  ASSERT_EQ(h.cut_count(), 1u);
+  const Path around{{-1, -1}, {4, -1}, {4, 3}, {-1, 3}, {-1, -1}};
+  EXPECT_EQ(h.word(around), std::vector<int>{-1});
+  EXPECT_EQ(h.word(Path(around.rbegin(), around.rend())), std::vector<int>{1});
+  const Path over{{-1, 1}, {-1, 3}, {4, 3}, {4, 1}}, under{{-1, 1}, {-1, -1}, {4, -1}, {4, 1}};
+  EXPECT_NE(h.word(over), h.word(under));
+  EXPECT_TRUE(h.word(Path{{0, 2}, {3, 2}, {2, 3}, {0, 2}}).empty());  // over the cut and back, above (1,1)
+  EXPECT_TRUE(h.word(Path{{4, 1}, {3, 1}, {4, -1}, {4, 1}}).empty());   // right of the lobes
+}
+
+TEST(HomotopyWords, TopVertexWhereTwoLobesTouchMirrored) {
+  // The mirror image. Here the old constructor did not throw but was wrong: the first visit of
+  // (2,2) has neighbours (4,0) and (6,0), so it started the cut at x = 2 + e on the left lobe's
+  // edge (2,2)-(4,0), and the cut ended at once on the right lobe's edge (2,2)-(6,0) across the
+  // notch between the lobes: it never reached the outside, and a loop around the obstacle had
+  // the empty word.
+  const Scene sc = normalized({{-2, -2}, {9, 5}}, {geom::Polygon{{{0, 0}, {4, 0}, {2, 2}}, {}},
+                                                   geom::Polygon{{{2, 2}, {6, 0}, {8, 0}}, {}}});
+  ASSERT_EQ(sc.obstacles.size(), 1u);
+  ASSERT_EQ(sc.obstacles[0].outer, (geom::Ring{{0, 0}, {4, 0}, {2, 2}, {6, 0}, {8, 0}, {2, 2}}));
+  const oracle::HomotopyWords h(sc.domain, sc.obstacles);
+  const Path around{{-1, -1}, {9, -1}, {9, 4}, {-1, 4}, {-1, -1}};
+  EXPECT_EQ(h.word(around), std::vector<int>{-1});
+  EXPECT_EQ(h.word(Path(around.rbegin(), around.rend())), std::vector<int>{1});
+  const Path over{{-1, 1}, {-1, 4}, {9, 4}, {9, 1}}, under{{-1, 1}, {-1, -1}, {9, -1}, {9, 1}};
+  EXPECT_NE(h.word(over), h.word(under));
+}
+
+// Seeded layouts of the kind above: a 3 x 3 grid of 24 x 24 cells, most holding an obstacle
+// made of 2 or 3 lobes (triangles, sometimes quadrilaterals) that touch only at their common
+// top vertex v (each lobe lies in its own angular sector below v, sectors from 12 directions
+// including straight down and horizontally left), normalized into one pinched ring. Each ring
+// is then reversed (1 in 2), rotated, and given a repeated and a collinear vertex (1 in 3 each):
+// the oracle must not rely on normalization's orientation or cleaning. Checks: no throw; the
+// loop round each cell crosses that obstacle's cut exactly once (letter -(k + 1) net for
+// counter-clockwise, so its word is nontrivial); random triangles in a cell that meet no lobe
+// (half of them with corners near v, in the notches between lobes) have the empty word.
+TEST(HomotopyWords, RandomObstaclesPinchedAtTheirTopVertex) {
+  const int S = 24, G = 3;
+  static constexpr Point dirs[] = {{-1, 0}, {-3, -1}, {-2, -1}, {-1, -1}, {-1, -2}, {-1, -3},
+                                   {0, -1}, {1, -3},  {1, -2},  {1, -1},  {2, -1},  {3, -1}};  // by angle
+  const std::uint64_t layouts = static_cast<std::uint64_t>(sanitized_share(3000, 10));
+  i64 obstacles = 0, reversed = 0, repeated = 0, collinear = 0, triangles = 0;
+  for (std::uint64_t seed = 1; seed <= layouts; ++seed) {
+    std::mt19937_64 rng(seed);
+    auto r = [&](int lo, int hi) { return lo + static_cast<int>(rng() % static_cast<std::uint64_t>(hi - lo + 1)); };
+    struct Cell {
+      int x0, y0;
+      Point v;
+      std::vector<geom::Ring> lobes;
+    };
+    std::vector<Cell> cells;
+    std::vector<geom::Polygon> inputs;
+    for (int i = 0; i < G; ++i)
+      for (int j = 0; j < G; ++j) {
+        if (r(0, 3) == 0) continue;
+        Cell c{i * S, j * S, {i * S + r(8, 16), j * S + r(16, 20)}, {}};
+        const int L = r(2, 3);
+        std::vector<int> idx(std::size(dirs));
+        std::iota(idx.begin(), idx.end(), 0);
+        std::shuffle(idx.begin(), idx.end(), rng);
+        idx.resize(static_cast<std::size_t>(2 * L));
+        std::sort(idx.begin(), idx.end());
+        auto reach = [&](Point d) {  // x within v.x -+ 6, y down to v.y - 14: inside the cell
+          const int t = std::min(d.x ? 6 / std::abs(d.x) : 99, d.y ? 14 / std::abs(d.y) : 99);
+          const int k = r(1, t);
+          return Point{c.v.x + k * d.x, c.v.y + k * d.y};
+        };
+        for (int l = 0; l < L; ++l) {
+          const Point a = reach(dirs[idx[2 * l]]), b = reach(dirs[idx[2 * l + 1]]);
+          const Point m{a.x + b.x - c.v.x, a.y + b.y - c.v.y};
+          const bool quad = r(0, 2) == 0 && m.x >= c.x0 + 2 && m.x <= c.x0 + S - 2 && m.y >= c.y0 + 2;
+          geom::Ring lobe = quad ? geom::Ring{c.v, a, m, b} : geom::Ring{c.v, a, b};
+          if (geom::twice_area(lobe) < 0) std::reverse(lobe.begin(), lobe.end());
+          c.lobes.push_back(lobe);
+          inputs.push_back({lobe, {}});
+        }
+        cells.push_back(c);
+      }
+    if (cells.empty()) continue;
+    const std::string where = "seed " + std::to_string(seed);
+    Scene sc = normalized({{0, 0}, {G * S, G * S}}, inputs);
+    ASSERT_EQ(sc.obstacles.size(), cells.size()) << where;
+    // which obstacle each cell holds; then unnormalize the rings
+    std::vector<std::size_t> of(cells.size());
+    for (std::size_t ci = 0; ci < cells.size(); ++ci) {
+      const auto it = std::find_if(sc.obstacles.begin(), sc.obstacles.end(), [&](const geom::Polygon& p) {
+        return std::count(p.outer.begin(), p.outer.end(), cells[ci].v) >= 2;  // pinched there
+      });
+      ASSERT_NE(it, sc.obstacles.end()) << where;
+      of[ci] = static_cast<std::size_t>(it - sc.obstacles.begin());
+    }
+    for (geom::Polygon& p : sc.obstacles) {
+      geom::Ring& ring = p.outer;
+      if (r(0, 1)) std::reverse(ring.begin(), ring.end()), ++reversed;
+      std::rotate(ring.begin(), ring.begin() + r(0, static_cast<int>(ring.size()) - 1), ring.end());
+      if (r(0, 2) == 0) {
+        const auto i = static_cast<std::ptrdiff_t>(r(0, static_cast<int>(ring.size()) - 1));
+        ring.insert(ring.begin() + i, ring[static_cast<std::size_t>(i)]);
+        ++repeated;
+      }
+      if (r(0, 2) == 0) {  // the midpoint of an edge with even steps
+        for (std::size_t i = 0; i < ring.size(); ++i) {
+          const Point a = ring[i], b = ring[(i + 1) % ring.size()];
+          if (a != b && (a.x - b.x) % 2 == 0 && (a.y - b.y) % 2 == 0) {
+            ring.insert(ring.begin() + static_cast<std::ptrdiff_t>(i) + 1, Point{(a.x + b.x) / 2, (a.y + b.y) / 2});
+            ++collinear;
+            break;
+          }
+        }
+      }
+    }
+    std::unique_ptr<oracle::HomotopyWords> hp;
+    try {
+      hp = std::make_unique<oracle::HomotopyWords>(sc.domain, sc.obstacles);
+    } catch (const std::exception& e) {
+      FAIL() << where << ": " << e.what();
+    }
+    const oracle::HomotopyWords& h = *hp;
+    ASSERT_EQ(h.cut_count(), sc.obstacles.size()) << where;
+    for (std::size_t ci = 0; ci < cells.size(); ++ci) {
+      const Cell& c = cells[ci];
+      ++obstacles;
+      const Path around{{c.x0 + 1, c.y0 + 1}, {c.x0 + S - 1, c.y0 + 1}, {c.x0 + S - 1, c.y0 + S - 1},
+                        {c.x0 + 1, c.y0 + S - 1}, {c.x0 + 1, c.y0 + 1}};
+      const std::vector<int> w = h.word(around);
+      ASSERT_FALSE(w.empty()) << where << " cell " << ci;
+      ASSERT_EQ(crossings_of(w, of[ci]), -1) << where << " cell " << ci;
+      ASSERT_EQ(crossings_of(h.word(Path(around.rbegin(), around.rend())), of[ci]), 1) << where << " cell " << ci;
+      // free triangles: no lobe vertex in the closed triangle, no side meeting a lobe edge, and
+      // a corner outside every lobe
+      auto inside = [](Point a, Point b, Point c2, Point p) {
+        const int s1 = geom::orientation(a, b, p), s2 = geom::orientation(b, c2, p), s3 = geom::orientation(c2, a, p);
+        return (s1 >= 0 && s2 >= 0 && s3 >= 0) || (s1 <= 0 && s2 <= 0 && s3 <= 0);
+      };
+      for (int t = 0; t < 30; ++t) {
+        auto pick = [&] {
+          if (t % 2) return Point{std::clamp(c.v.x + r(-3, 3), c.x0 + 1, c.x0 + S - 1), c.v.y + r(-3, 3)};
+          return Point{c.x0 + r(1, S - 1), c.y0 + r(1, S - 1)};
+        };
+        const Point a = pick(), b = pick(), d = pick();
+        if (geom::orientation(a, b, d) == 0) continue;
+        bool free = true;
+        for (const geom::Ring& lobe : c.lobes) {
+          free = free && geom::locate(a, lobe) == geom::Location::Outside;
+          for (std::size_t i = 0; free && i < lobe.size(); ++i) {
+            const geom::Segment e{lobe[i], lobe[(i + 1) % lobe.size()]};
+            free = !inside(a, b, d, e.a) && geom::intersect({a, b}, e) == geom::SegmentIntersection::None &&
+                   geom::intersect({b, d}, e) == geom::SegmentIntersection::None &&
+                   geom::intersect({d, a}, e) == geom::SegmentIntersection::None;
+          }
+        }
+        if (!free) continue;
+        ++triangles;
+        ASSERT_TRUE(h.word(Path{a, b, d, a}).empty()) << where << " cell " << ci << " triangle " << str(Path{a, b, d, a});
+      }
+    }
+  }
+  std::printf("%lld obstacles (rings: %lld reversed, %lld with a repeated, %lld with a collinear vertex), %lld free triangles\n",
+              static_cast<long long>(obstacles), static_cast<long long>(reversed), static_cast<long long>(repeated),
+              static_cast<long long>(collinear), static_cast<long long>(triangles));
+  EXPECT_GE(obstacles, sanitized_share(15000, 10));
+  EXPECT_GE(triangles, sanitized_share(100000, 10));
 }
 
 // A homotopy move keeps the word when the triangle a, c, b is free: its sides are allowed
