@@ -11,6 +11,10 @@
 // and its answer compared. The growth exponent between consecutive sizes is
 // log(t2 / t1) / log(n2 / n1).
 //
+// Also the cut tree of the rectilinear polygon cutting theorem (router/link_cut.h, section 2: the
+// divide and conquer under the paper's query structure and exact diameter), its build time as a
+// ratio to the router graph's and its depth against log_{4/3} n.
+//
 // --shape comb measures the worst case instead: a comb whose tooth tips are all 3 links apart,
 // where the bounds prune nothing and every tip is searched from.
 //
@@ -25,6 +29,7 @@
 #include "io/generate.h"
 #include "oracle/link_polygon_oracle.h"
 #include "router/bend_router.h"
+#include "router/link_cut.h"
 #include "router/link_polygon.h"
 
 namespace {
@@ -35,7 +40,9 @@ using taut::geom::Point;
 struct Row {
   std::size_t n = 0, convex = 0, searches = 0;
   int links = 0;
-  double build = 0, diameter = 0, query = 0, all = -1, ref = -1;
+  double build = 0, diameter = 0, query = 0, all = -1, ref = -1, cuts = 0;
+  int depth = 0;
+  std::size_t tree_nodes = 0;
   bool all_agree = true, ref_agree = true;
   std::size_t edges = 0;
 };
@@ -127,6 +134,11 @@ int main(int argc, char** argv) {
     row.convex = d.convex_vertices;
     row.searches = d.searches;
     row.query = seconds_of([&] { (void)poly->path(d.from, d.to); }, 3);
+    // the rectilinear cutting theorem's tree (router/link_cut.h), on the polygon's cleaned ring
+    std::unique_ptr<taut::router::CutTree> tree;
+    row.cuts = seconds_of([&] { tree = std::make_unique<taut::router::CutTree>(poly->ring()); }, 1);
+    row.depth = tree->depth();
+    row.tree_nodes = tree->nodes().size();
     if (static_cast<std::int64_t>(row.n) <= all_max) {
       int all = 0;
       row.all = seconds_of([&] { all = all_pairs(*poly); }, 1);
@@ -144,6 +156,8 @@ int main(int argc, char** argv) {
     if (row.ref >= 0) std::printf("%9.1f%s", row.ref / row.diameter, row.ref_agree ? "" : "!");
     else std::printf("%9s", "-");
     std::printf("\n");
+    std::printf("%8s cut tree (section 2): %.3f s (%.2f x the graph's build), %zu nodes, depth %d (log_4/3 n = %.1f)\n", "",
+                row.cuts, row.cuts / row.build, row.tree_nodes, row.depth, std::log(static_cast<double>(row.n)) / std::log(4.0 / 3.0));
     std::fflush(stdout);
     if (!row.all_agree || !row.ref_agree) {
       std::fprintf(stderr, "MISMATCH at n = %zu\n", row.n);
@@ -155,15 +169,15 @@ int main(int argc, char** argv) {
               "time (a search from every convex vertex) over the diameter's; ref/: the exhaustive reference's time over "
               "the diameter's; all answers equal)\n");
   std::printf("\ngrowth exponents between consecutive sizes (1.0 = linear):\n");
-  std::printf("%8s -> %8s | %8s %8s %8s %8s\n", "n1", "n2", "edges", "build", "diameter", "searches");
+  std::printf("%8s -> %8s | %8s %8s %8s %8s %8s\n", "n1", "n2", "edges", "build", "diameter", "searches", "cut-tree");
   for (std::size_t i = 1; i < rows.size(); ++i) {
     const Row& a = rows[i - 1];
     const Row& b = rows[i];
     const double dn = std::log(static_cast<double>(b.n) / static_cast<double>(a.n));
-    std::printf("%8zu -> %8zu | %8.2f %8.2f %8.2f %8.2f\n", a.n, b.n,
+    std::printf("%8zu -> %8zu | %8.2f %8.2f %8.2f %8.2f %8.2f\n", a.n, b.n,
                 std::log(static_cast<double>(b.edges) / static_cast<double>(a.edges)) / dn,
                 std::log(b.build / a.build) / dn, std::log(b.diameter / a.diameter) / dn,
-                std::log(static_cast<double>(b.searches) / static_cast<double>(a.searches)) / dn);
+                std::log(static_cast<double>(b.searches) / static_cast<double>(a.searches)) / dn, std::log(b.cuts / a.cuts) / dn);
   }
   return 0;
 }

@@ -1,0 +1,231 @@
+// router::balanced_cut and router::CutTree (de Berg's rectilinear polygon cutting theorem,
+// seeds/002 section 2) against a brute-force search that shares only geom's types and
+// predicates with them: every candidate cut segment is walked in unit steps with exact
+// half-unit membership tests (doubled coordinates, geom::locate), its parts are built by walking
+// the ring and counted after dropping straight vertices by hand. Checked on every node of the
+// cut tree of random polyominoes stretched to share x and y everywhere (collinear edges, long
+// straight runs), thin winding walks, combs and spirals:
+//   - the cut starts at a reflex vertex, runs through the open interior and ends on the boundary;
+//   - the two parts are simple counter-clockwise rectilinear rings without straight vertices,
+//     and their areas add up to the polygon's;
+//   - both have at most 3n/4 + 2 vertices (Theorem 2, weights 1);
+//   - no candidate leaves a smaller larger part (the choice is the best of all extensions);
+//   - the tree's leaves are rectangles and its depth is O(log n).
+#include "router/link_cut.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+#include "geom/predicates.h"
+#include "support/random_shapes.h"
+#include "support/sanitized.h"
+
+namespace taut::test {
+namespace {
+
+using geom::Point;
+using geom::Ring;
+using i64 = std::int64_t;
+
+std::string str(const Ring& r) {
+  std::string s;
+  for (const Point p : r) s += "(" + std::to_string(p.x) + "," + std::to_string(p.y) + ")";
+  return s;
+}
+
+// The closed polygon holds the point (X/2, Y/2): doubled coordinates.
+bool holds2(const Ring& r, i64 X, i64 Y) {
+  Ring d;
+  for (const Point p : r) d.push_back({static_cast<geom::Coord>(2 * p.x), static_cast<geom::Coord>(2 * p.y)});
+  return geom::locate({static_cast<geom::Coord>(X), static_cast<geom::Coord>(Y)}, geom::Polygon{d, {}}) != geom::Location::Outside;
+}
+bool inside2(const Ring& r, i64 X, i64 Y) {
+  Ring d;
+  for (const Point p : r) d.push_back({static_cast<geom::Coord>(2 * p.x), static_cast<geom::Coord>(2 * p.y)});
+  return geom::locate({static_cast<geom::Coord>(X), static_cast<geom::Coord>(Y)}, geom::Polygon{d, {}}) == geom::Location::Inside;
+}
+
+// Ring vertices that are not straight, by hand.
+std::size_t corners(const Ring& r) {
+  std::size_t c = 0;
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    const Point a = r[(i + r.size() - 1) % r.size()], b = r[i], e = r[(i + 1) % r.size()];
+    const bool straight = (a.x == b.x && b.x == e.x) || (a.y == b.y && b.y == e.y);
+    c += !straight;
+  }
+  return c;
+}
+
+// Every extension of every reflex vertex, walked in half steps until it first touches the
+// boundary; the larger part's corners for each. Returns the least such count (SIZE_MAX: none).
+std::size_t best_by_brute_force(const Ring& r) {
+  const std::size_t n = r.size();
+  std::size_t best = SIZE_MAX;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point a = r[(i + n - 1) % n], v = r[i], b = r[(i + 1) % n];
+    const i64 cross = (i64{v.x} - a.x) * (i64{b.y} - v.y) - (i64{v.y} - a.y) * (i64{b.x} - v.x);
+    if (cross >= 0) continue;  // convex
+    const Point din{static_cast<geom::Coord>((v.x > a.x) - (v.x < a.x)), static_cast<geom::Coord>((v.y > a.y) - (v.y < a.y))};
+    const Point dout{static_cast<geom::Coord>((b.x > v.x) - (b.x < v.x)), static_cast<geom::Coord>((b.y > v.y) - (b.y < v.y))};
+    for (const Point d : {din, Point{static_cast<geom::Coord>(-dout.x), static_cast<geom::Coord>(-dout.y)}}) {
+      // half steps from v: the first point on the boundary ends the segment
+      i64 k = 1;
+      while (inside2(r, 2 * v.x + k * d.x, 2 * v.y + k * d.y)) ++k;
+      if (k % 2) return SIZE_MAX - 1;  // a half-integer end: impossible for integer rings
+      const Point to{static_cast<geom::Coord>(v.x + k / 2 * d.x), static_cast<geom::Coord>(v.y + k / 2 * d.y)};
+      // the parts: walk the ring from v forward to `to` (closing along the cut), and the rest
+      std::size_t j = n;
+      bool at_vertex = false;
+      for (std::size_t e = 0; e < n && j == n; ++e)
+        if (r[e] == to) j = e, at_vertex = true;
+      for (std::size_t e = 0; e < n && j == n; ++e)
+        if (geom::on_segment(to, r[e], r[(e + 1) % n])) j = e;
+      if (j == n) return SIZE_MAX - 2;
+      Ring left, right;
+      for (std::size_t e = i;; e = (e + 1) % n) {
+        left.push_back(r[e]);
+        if (e == j) break;
+      }
+      if (!at_vertex) left.push_back(to), right.push_back(to);
+      for (std::size_t e = at_vertex ? j : (j + 1) % n;; e = (e + 1) % n) {
+        right.push_back(r[e]);
+        if (e == i) break;
+      }
+      best = std::min(best, std::max(corners(left), corners(right)));
+    }
+  }
+  return best;
+}
+
+// Checks one cut of ring r; "" when right.
+std::string check_cut(const Ring& r, const router::CutTree::Node& node, const Ring& left, const Ring& right) {
+  const router::PolygonCut& c = *node.cut;
+  const std::size_t n = r.size();
+  if (c.vertex >= n || r[c.vertex] != c.from) return "the cut does not start at its vertex";
+  const Point a = r[(c.vertex + n - 1) % n], b = r[(c.vertex + 1) % n];
+  if (geom::orientation(a, c.from, b) >= 0) return "the cut starts at a convex vertex";
+  if (c.from.x != c.to.x && c.from.y != c.to.y) return "the cut is not axis-parallel";
+  // open interior inside, end on the boundary
+  const i64 len = std::abs(i64{c.to.x} - c.from.x) + std::abs(i64{c.to.y} - c.from.y);
+  const i64 dx = (c.to.x > c.from.x) - (c.to.x < c.from.x), dy = (c.to.y > c.from.y) - (c.to.y < c.from.y);
+  for (i64 k = 1; k < 2 * len; ++k)
+    if (!inside2(r, 2 * c.from.x + k * dx, 2 * c.from.y + k * dy)) return "the cut leaves the open interior";
+  if (!holds2(r, 2 * c.to.x, 2 * c.to.y) || inside2(r, 2 * c.to.x, 2 * c.to.y)) return "the cut does not end on the boundary";
+  for (const Ring* p : {&left, &right}) {
+    if (p->size() < 4 || corners(*p) != p->size()) return "a part has straight vertices or too few: " + str(*p);
+    for (std::size_t i = 0; i < p->size(); ++i) {
+      const Point u = (*p)[i], w = (*p)[(i + 1) % p->size()];
+      if (u.x != w.x && u.y != w.y) return "a part has a sloped edge: " + str(*p);
+    }
+    if (geom::twice_area(*p) <= 0) return "a part is not counter-clockwise: " + str(*p);
+  }
+  if (geom::twice_area(left) + geom::twice_area(right) != geom::twice_area(r)) return "the parts' areas do not add up";
+  const std::size_t big = std::max(left.size(), right.size());
+  if (4 * big > 3 * n + 8) return "a part has more than 3n/4 + 2 vertices: " + std::to_string(big) + " of " + std::to_string(n);
+  const std::size_t brute = best_by_brute_force(r);
+  if (brute != big) return "the brute force's best cut leaves " + std::to_string(brute) + " vertices in the larger part, the cut " + std::to_string(big);
+  return "";
+}
+
+struct Tally {
+  long long polygons = 0, cuts = 0, at_vertex = 0, max_depth_excess = 0;
+  int failed = 0;
+};
+
+void check_tree(const Ring& ring, const std::string& what, Tally& t) {
+  ++t.polygons;
+  const router::CutTree tree(ring);
+  const auto& nodes = tree.nodes();
+  for (const auto& node : nodes) {
+    if (!node.cut) {
+      if (node.polygon.size() != 4 && t.failed++ < 5) ADD_FAILURE() << what << ": a leaf is no rectangle: " << str(node.polygon);
+      continue;
+    }
+    ++t.cuts;
+    const Ring& left = nodes[static_cast<std::size_t>(node.left)].polygon;
+    const Ring& right = nodes[static_cast<std::size_t>(node.right)].polygon;
+    t.at_vertex += std::find(node.polygon.begin(), node.polygon.end(), node.cut->to) != node.polygon.end();
+    const std::string r = check_cut(node.polygon, node, left, right);
+    if (!r.empty() && t.failed++ < 5) ADD_FAILURE() << what << ": polygon " << str(node.polygon) << "\n  cut " << node.cut->from.x << "," << node.cut->from.y << " -> " << node.cut->to.x << "," << node.cut->to.y << ": " << r;
+  }
+  // depth: parts of at most 3n/4 + 2 vertices reach 4 within log_{4/3} n + a few levels
+  const double bound = std::log(static_cast<double>(ring.size())) / std::log(4.0 / 3.0) + 4;
+  if (tree.depth() > bound && t.failed++ < 5) ADD_FAILURE() << what << ": depth " << tree.depth() << " for " << ring.size() << " vertices";
+}
+
+TEST(CutTree, RandomPolyominoesAgainstTheBruteForce) {
+  const int count = static_cast<int>(sanitized_share(1500, 10));
+  Tally t;
+  for (int seed = 1; seed <= count; ++seed) {
+    std::mt19937 rng(static_cast<unsigned>(seed));
+    const int side = 3 + seed % 10, cells = 4 + seed % 90, stretch = 1 + seed % 4;
+    const Ring ring = random_rectilinear_polygon(rng, side, cells, stretch, {static_cast<geom::Coord>(seed % 7) - 3, -5});
+    check_tree(ring, "seed " + std::to_string(seed), t);
+  }
+  for (int seed = 1; seed <= count / 3; ++seed) {
+    std::mt19937 rng(static_cast<unsigned>(100000 + seed));
+    check_tree(random_thin_polygon(rng, 1 + seed % 3).ring, "thin seed " + std::to_string(seed), t);
+  }
+  std::printf("%lld polygons, %lld cuts (%lld ending at a vertex)\n", t.polygons, t.cuts, t.at_vertex);
+  EXPECT_EQ(t.failed, 0);
+  EXPECT_GE(t.cuts, sanitized_share(8000, 10));
+  EXPECT_GE(t.at_vertex, sanitized_share(2000, 10));
+}
+
+// Shapes with many reflex vertices in a row: combs, square spirals of width-1 corridors and
+// staircases.
+TEST(CutTree, CombsSpiralsAndStaircases) {
+  Tally t;
+  for (int teeth = 1; teeth <= 40; ++teeth) {
+    // a bar with teeth of three heights standing on it
+    std::vector<geom::Box> boxes = {{{0, 0}, {static_cast<geom::Coord>(4 * teeth - 2), 1}}};
+    for (int k = 0; k < teeth; ++k)
+      boxes.push_back({{static_cast<geom::Coord>(4 * k), 1}, {static_cast<geom::Coord>(4 * k + 2), static_cast<geom::Coord>(6 + k % 3)}});
+    check_tree(union_ring(boxes), "comb of " + std::to_string(teeth), t);
+  }
+  for (int turns = 1; turns <= 12; ++turns) {
+    // a square spiral corridor of width 1: walk the centre line and take its boundary
+    std::vector<geom::Box> cells;
+    int x = 0, y = 0, dx = 1, dy = 0;
+    for (int leg = 1; leg <= 2 * turns; ++leg) {
+      for (int s = 0; s < 2 * leg; ++s) {
+        cells.push_back({{static_cast<geom::Coord>(x), static_cast<geom::Coord>(y)}, {static_cast<geom::Coord>(x + 1), static_cast<geom::Coord>(y + 1)}});
+        x += dx, y += dy;
+      }
+      std::swap(dx, dy);
+      dx = -dx;
+    }
+    check_tree(union_ring(cells), "spiral of " + std::to_string(turns), t);
+  }
+  for (int steps = 1; steps <= 30; ++steps) {
+    Ring r = {{0, 0}};
+    for (int k = 0; k < steps; ++k) {
+      r.push_back({static_cast<geom::Coord>(2 * k + 2), static_cast<geom::Coord>(2 * k)});
+      r.push_back({static_cast<geom::Coord>(2 * k + 2), static_cast<geom::Coord>(2 * k + 2)});
+    }
+    r.push_back({0, static_cast<geom::Coord>(2 * steps)});
+    check_tree(r, "staircase of " + std::to_string(steps), t);
+  }
+  std::printf("%lld polygons, %lld cuts\n", t.polygons, t.cuts);
+  EXPECT_EQ(t.failed, 0);
+}
+
+TEST(CutTree, RectangleIsALeafAndBadInputIsRefused) {
+  const router::CutTree tree(Ring{{0, 0}, {5, 0}, {5, 3}, {0, 3}});
+  ASSERT_EQ(tree.nodes().size(), 1u);
+  EXPECT_FALSE(tree.nodes()[0].cut.has_value());
+  EXPECT_EQ(tree.depth(), 0);
+  EXPECT_THROW(router::balanced_cut(Ring{{0, 0}, {1, 0}, {0, 1}}), std::invalid_argument);
+  // an L: one reflex vertex, two extensions; both leave a rectangle and a rectangle
+  const auto cut = router::balanced_cut(Ring{{0, 0}, {4, 0}, {4, 2}, {2, 2}, {2, 4}, {0, 4}});
+  ASSERT_TRUE(cut.has_value());
+  EXPECT_EQ(cut->from, (Point{2, 2}));
+  EXPECT_EQ(cut->left.size(), 4u);
+  EXPECT_EQ(cut->right.size(), 4u);
+}
+
+}  // namespace
+}  // namespace taut::test
