@@ -172,7 +172,11 @@ TEST(L1Map, MatchesTheReferenceOnRandomLayouts) {
 TEST(L1Map, MovingAiMapsMatchTheWavefront) {
   TAUT_REQUIRE_SHARED_DATA();
   int maps = 0;
-  for (const char* name : {"8room_000", "arena", "brc202d", "den520d", "lak303d", "maze-100-1", "random512-10-0"}) {
+  // three of the maps under the sanitizers (arena, with the reference, among them)
+  const std::vector<const char*> names = kSanitized ? std::vector<const char*>{"arena", "maze-100-1", "random512-10-0"}
+                                                    : std::vector<const char*>{"8room_000", "arena", "brc202d", "den520d",
+                                                                               "lak303d", "maze-100-1", "random512-10-0"};
+  for (const char* name : names) {
     SCOPED_TRACE(name);
     const GridMapCase g = check_map_on_grid_map<router::L1Map, router::L1Wavefront>(name, 11, 3000);
     EXPECT_EQ(g.mismatches, 0);
@@ -182,7 +186,7 @@ TEST(L1Map, MovingAiMapsMatchTheWavefront) {
     }
     ++maps;
   }
-  EXPECT_EQ(maps, 7);
+  EXPECT_EQ(maps, static_cast<int>(names.size()));
 }
 
 // Hand-worked degenerate cases (each answer worked out in the comment, and the reference agrees).
