@@ -1,6 +1,7 @@
 #include "router/bend_router.h"
 
 #include <algorithm>
+#include <array>
 #include <deque>
 #include <boost/graph/compressed_sparse_row_graph.hpp>
 #include <boost/range/iterator_range.hpp>
@@ -10,6 +11,7 @@
 #include <functional>
 #include <optional>
 #include <set>
+#include <span>
 #include <limits>
 #include <map>
 #include <string>
@@ -1035,7 +1037,11 @@ struct SlabTree {
     std::int32_t item;  // -1: none
   };
   std::vector<Item> items;  // sorted by u
-  std::vector<std::vector<Piece>> env;  // env[n] for segment tree node n (leaves at size + i)
+  // Node n's envelope (n in [1, size): inner nodes, children 2n and 2n + 1) is the len[n]
+  // pieces from env[at[n]] on, all in one array; a leaf (node size + i) is item i alone, not
+  // stored.
+  std::vector<Piece> env;
+  std::vector<std::uint32_t> at, len;
   std::size_t size = 0;
 
   bool better(std::int32_t a, std::int32_t b) const {
@@ -1048,7 +1054,7 @@ struct SlabTree {
     return x.gv < y.gv;  // ties: the same answer every time
   }
   // The envelope of two envelopes.
-  std::vector<Piece> merge(const std::vector<Piece>& a, const std::vector<Piece>& b) const {
+  std::vector<Piece> merge(std::span<const Piece> a, std::span<const Piece> b) const {
     std::vector<Piece> out;
     std::size_t i = 0, j = 0;
     std::int32_t ca = -1, cb = -1;  // current items of a and b
@@ -1066,17 +1072,36 @@ struct SlabTree {
     }
     return out;
   }
+  // A leaf's envelope: its item over [vlo, vhi].
+  std::array<Piece, 2> leaf(std::size_t i) const {
+    return {Piece{items[i].vlo, static_cast<std::int32_t>(i)}, Piece{static_cast<Coord>(items[i].vhi + 1), -1}};  // |v| < 2^30
+  }
   void build(std::vector<Item> all) {
     std::sort(all.begin(), all.end(), [](const Item& a, const Item& b) { return a.u < b.u; });
     items = std::move(all);
     size = items.size();
-    env.assign(2 * size, {});
-    for (std::size_t i = 0; i < size; ++i) {
-      const Item& it = items[i];
-      env[size + i] = {{it.vlo, static_cast<std::int32_t>(i)}};
-      env[size + i].push_back({static_cast<Coord>(it.vhi + 1), -1});  // |v| < 2^30
+    // inner nodes from the last to the first (children before parents), each envelope appended
+    // to the one array
+    at.assign(size, 0);
+    len.assign(size, 0);
+    env.clear();
+    for (std::size_t n = size; n-- > 1;) {
+      std::array<Piece, 2> sa, sb;
+      auto span_of = [&](std::size_t c, std::array<Piece, 2>& scratch) -> std::span<const Piece> {
+        if (c >= size) {
+          scratch = leaf(c - size);
+          return scratch;
+        }
+        return {env.data() + at[c], env.data() + at[c] + len[c]};
+      };
+      const std::vector<Piece> m = merge(span_of(2 * n, sa), span_of(2 * n + 1, sb));
+      if (env.size() + m.size() > std::numeric_limits<std::uint32_t>::max())
+        throw std::length_error("BendTargetMap: a slab tree past 2^32 pieces");
+      at[n] = static_cast<std::uint32_t>(env.size());
+      len[n] = static_cast<std::uint32_t>(m.size());
+      env.insert(env.end(), m.begin(), m.end());
     }
-    for (std::size_t n = size; n-- > 1;) env[n] = merge(env[2 * n], env[2 * n + 1]);
+    env.shrink_to_fit();
   }
   // The best item with u in [ulo, uhi] whose range holds v; -1: none.
   std::int32_t query(Coord ulo, Coord uhi, Coord v) const {
@@ -1085,9 +1110,16 @@ struct SlabTree {
     auto hi = static_cast<std::size_t>(std::upper_bound(items.begin(), items.end(), uhi, [](Coord x, const Item& a) { return x < a.u; }) - items.begin());
     std::int32_t best = -1;
     auto look = [&](std::size_t n) {
-      const std::vector<Piece>& e = env[n];
-      auto it = std::upper_bound(e.begin(), e.end(), v, [](Coord x, const Piece& p) { return x < p.v0; });
-      if (it == e.begin()) return;
+      if (n >= size) {  // a leaf: its item, where it covers v
+        const Item& it = items[n - size];
+        const auto cand = static_cast<std::int32_t>(n - size);
+        if (it.vlo <= v && v <= it.vhi && better(cand, best)) best = cand;
+        return;
+      }
+      const Piece* b = env.data() + at[n];
+      const Piece* e = b + len[n];
+      const Piece* it = std::upper_bound(b, e, v, [](Coord x, const Piece& p) { return x < p.v0; });
+      if (it == b) return;
       const std::int32_t cand = std::prev(it)->item;
       if (better(cand, best)) best = cand;
     };
@@ -1097,11 +1129,7 @@ struct SlabTree {
     }
     return best;
   }
-  std::size_t pieces() const {
-    std::size_t s = 0;
-    for (const auto& e : env) s += e.size();
-    return s;
-  }
+  std::size_t pieces() const { return env.size() + 2 * size; }  // the leaves' two pieces counted
 };
 
 }  // namespace
