@@ -1190,7 +1190,9 @@ struct BendTargetMap::Impl {
 };
 
 WireStatus BendTargetMap::Impl::best(Point q, Best& b) const {
-  if (status != WireStatus::Ok) return status;
+  // a free point of the target costs 0, even when no candidate of a shape target is free (a
+  // shape under blockages with a free spot inside), as BendRouter::path gives it
+  if (status != WireStatus::Ok && !(shape && at_target(q) && r->is_free(q))) return status;
   const std::vector<Cost>& dist = settled.dist;
   auto consider = [&](Cost c, std::vector<std::pair<Point, bool>> walk, std::int32_t gv) {
     if (c == kInf || !(c < b.cost)) return;

@@ -198,7 +198,9 @@ class BendTargetMap {
   BendTargetMap(BendTargetMap&&) noexcept;
   BendTargetMap& operator=(BendTargetMap&&) noexcept;
 
-  // Ok, or TargetNotFree when the target is not free (then every query says so).
+  // Ok, or TargetNotFree when the target is not free (then every query says so, except that a
+  // free query point on a shape target costs 0: a shape lying under blockages whose candidate
+  // points are all covered can still hold free points).
   WireStatus status() const;
   // The cost of an optimal path from q to the target (as BendRouter::path(q, target) gives it);
   // *status (if not null): Ok, SourceNotFree, TargetNotFree, or Unreachable (reached false).

@@ -56,6 +56,11 @@ struct Candidate {
 std::optional<PolygonCut> balanced_cut(const Ring& polygon) {
   const std::size_t n = polygon.size();
   if (n < 4) throw std::invalid_argument("balanced_cut: a polygon needs at least 4 vertices");
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point a = polygon[(i + n - 1) % n], v = polygon[i], b = polygon[(i + 1) % n];
+    if (v.x != b.x && v.y != b.y) throw std::invalid_argument("balanced_cut: an edge is not axis-parallel");
+    if (geom::orientation(a, v, b) == 0) throw std::invalid_argument("balanced_cut: a repeated or straight vertex");
+  }
   const geom::Polygon poly{polygon, {}};
   const geom::ObstacleIndex index({&poly, 1});
   std::optional<Candidate> best;

@@ -42,7 +42,9 @@ struct PolygonCut {
 };
 
 // The polygon: a simple rectilinear ring, counter-clockwise, without repeated or collinear
-// vertices (LinkPolygon::ring() is one). nullopt for a rectangle (no reflex vertex).
+// vertices (LinkPolygon::ring() is one); std::invalid_argument for a sloped edge, a repeated or
+// straight vertex, or a clockwise ring (found when an extension leaves it). nullopt for a
+// rectangle (no reflex vertex).
 std::optional<PolygonCut> balanced_cut(const geom::Ring& polygon);
 
 class CutTree {

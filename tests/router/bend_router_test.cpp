@@ -1052,6 +1052,35 @@ TEST(BendRouter, TargetMapOnShapePinsMatchesTheReference) {
   EXPECT_GE(corners, sanitized_share(3000, 10));
 }
 
+// The review's case: a shape target lying over a blockage whose only free spot is a hole in it,
+// so no candidate of the shape is free (the map is TargetNotFree) while a query point in the hole
+// lies on the target and is free: it costs 0, as BendRouter::path gives it.
+TEST(BendRouter, TargetMapOnAShapeWithoutAFreeCandidate) {
+  const Box domain{{0, 0}, {10, 10}};
+  const std::vector<Polygon> blockages = {Polygon{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{{4, 4}, {4, 6}, {6, 6}, {6, 4}}}}};
+  const geom::NormalizedObstacles norm = geom::normalize_obstacles(blockages, domain);
+  const BendRouter router(norm.domain, norm.obstacles);
+  const Polygon pin{{{-1, -1}, {11, -1}, {11, 11}, {-1, 11}}, {}};
+  for (const bool link : {false, true}) {
+    const BendMetric metric = link ? BendMetric::Link : BendMetric::Combined;
+    const router::BendTargetMap map(router, pin, metric, 7);
+    EXPECT_EQ(map.status(), WireStatus::TargetNotFree);
+    for (const Point q : {Point{5, 5}, Point{4, 5}, Point{6, 6}}) {
+      WireStatus st{};
+      const router::BendCost c = map.cost(q, &st);
+      EXPECT_EQ(st, WireStatus::Ok) << str(q);
+      EXPECT_EQ(c.length, 0);
+      EXPECT_EQ(c.bends, 0);
+      const BendPath want = router.path(Polygon{{q}, {}}, pin, metric, 7);
+      EXPECT_EQ(want.status, WireStatus::Ok);
+      EXPECT_EQ(map.path(q).points, std::vector<Point>{q});
+    }
+    WireStatus st{};
+    (void)map.cost({2, 2}, &st);  // inside the blockage
+    EXPECT_EQ(st, WireStatus::TargetNotFree);
+  }
+}
+
 // ---------------------------------------------------------------------------------------------
 // Crops of Moving AI maps: blocked cells (10 DBU each) that touch along edges and at corners
 // everywhere, clipped to a window of the map.

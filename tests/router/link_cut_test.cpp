@@ -219,6 +219,10 @@ TEST(CutTree, RectangleIsALeafAndBadInputIsRefused) {
   EXPECT_FALSE(tree.nodes()[0].cut.has_value());
   EXPECT_EQ(tree.depth(), 0);
   EXPECT_THROW(router::balanced_cut(Ring{{0, 0}, {1, 0}, {0, 1}}), std::invalid_argument);
+  // a straight vertex (the review's case: it used to reach the internal count check)
+  EXPECT_THROW(router::balanced_cut(Ring{{0, 0}, {5, 0}, {9, 0}, {9, 9}, {6, 9}, {6, 3}, {3, 3}, {3, 9}, {0, 9}}),
+               std::invalid_argument);
+  EXPECT_THROW(router::balanced_cut(Ring{{0, 0}, {4, 0}, {4, 4}, {2, 6}, {0, 4}}), std::invalid_argument);  // sloped
   // an L: one reflex vertex, two extensions; both leave a rectangle and a rectangle
   const auto cut = router::balanced_cut(Ring{{0, 0}, {4, 0}, {4, 2}, {2, 2}, {2, 4}, {0, 4}});
   ASSERT_TRUE(cut.has_value());
