@@ -1,6 +1,7 @@
 #include "oracle/link_polygon_oracle.h"
 
 #include <algorithm>
+#include <utility>
 #include <cstddef>
 #include <deque>
 #include <stdexcept>
@@ -119,10 +120,61 @@ LinkPolygonReference::Grid LinkPolygonReference::make_grid(std::vector<Coord> xs
 }
 
 std::vector<int> LinkPolygonReference::bfs(const Grid& g, int source) const {
+  const std::vector<int> cost = bfs_states(g, source);
+  std::vector<int> links(g.point.size(), -1);
+  for (std::size_t k = 0; k < links.size(); ++k) {
+    if (!g.point[k]) continue;
+    const int best = std::min(cost[2 * k], cost[2 * k + 1]);
+    if (best >= kUnreached) throw std::logic_error("LinkPolygonReference: a point of P is unreachable");
+    links[k] = best;
+  }
+  links[static_cast<std::size_t>(source)] = 0;
+  return links;
+}
+
+std::vector<LinkPolygonReference::Arrival> LinkPolygonReference::arrival_links(Point a, Point e0, Point e1) const {
+  if (e0.x != e1.x && e0.y != e1.y) throw std::invalid_argument("arrival_links: the segment is not axis-parallel");
+  if (!contains(a) || !contains(e0) || !contains(e1)) throw std::invalid_argument("arrival_links: outside P");
+  std::vector<Coord> xs = grid_.xs, ys = grid_.ys;
+  xs.insert(xs.end(), {a.x, e0.x, e1.x});
+  ys.insert(ys.end(), {a.y, e0.y, e1.y});
+  const Grid g = make_grid(std::move(xs), std::move(ys));
+  auto index = [&](Point p) {
+    const auto i = std::lower_bound(g.xs.begin(), g.xs.end(), p.x) - g.xs.begin();
+    const auto j = std::lower_bound(g.ys.begin(), g.ys.end(), p.y) - g.ys.begin();
+    return static_cast<int>(i * g.ny() + j);
+  };
+  const std::vector<int> cost = bfs_states(g, index(a));
+  const bool vertical = e0.x == e1.x;  // then the last link is horizontal (o = 0)
+  std::vector<Arrival> out;
+  auto visit = [&](Point x) {
+    const auto k = static_cast<std::size_t>(2 * index(x));
+    const int perp = x == a ? 0 : cost[k + (vertical ? 0 : 1)], along = x == a ? 0 : cost[k + (vertical ? 1 : 0)];
+    out.push_back({x, perp >= kUnreached ? -1 : perp, along >= kUnreached ? -1 : along});
+  };
+  if (vertical) {
+    const int step = e1.y >= e0.y ? 1 : -1;
+    auto j = std::lower_bound(g.ys.begin(), g.ys.end(), std::min(e0.y, e1.y));
+    std::vector<Coord> along;
+    for (; j != g.ys.end() && *j <= std::max(e0.y, e1.y); ++j) along.push_back(*j);
+    if (step < 0) std::reverse(along.begin(), along.end());
+    for (const Coord y : along) visit({e0.x, y});
+  } else {
+    const int step = e1.x >= e0.x ? 1 : -1;
+    auto i = std::lower_bound(g.xs.begin(), g.xs.end(), std::min(e0.x, e1.x));
+    std::vector<Coord> along;
+    for (; i != g.xs.end() && *i <= std::max(e0.x, e1.x); ++i) along.push_back(*i);
+    if (step < 0) std::reverse(along.begin(), along.end());
+    for (const Coord x : along) visit({x, e0.y});
+  }
+  return out;
+}
+
+std::vector<int> LinkPolygonReference::bfs_states(const Grid& g, int source) const {
   // states 2 * point + o, o = 0 horizontal, 1 vertical; cost = links so far
   const int ny = g.ny();
   const int states = 2 * g.nx() * ny;
-  constexpr int kInf = 1 << 30;
+  constexpr int kInf = kUnreached;
   std::vector<int> cost(static_cast<std::size_t>(states), kInf);
   std::deque<int> queue;
   cost[2 * source] = cost[2 * source + 1] = 1;
@@ -150,15 +202,7 @@ std::vector<int> LinkPolygonReference::bfs(const Grid& g, int source) const {
       if (j + 1 < ny && g.vstep[k]) relax(2 * (k + 1) + 1, 0);
     }
   }
-  std::vector<int> links(g.point.size(), -1);
-  for (std::size_t k = 0; k < links.size(); ++k) {
-    if (!g.point[k]) continue;
-    const int best = std::min(cost[2 * k], cost[2 * k + 1]);
-    if (best >= kInf) throw std::logic_error("LinkPolygonReference: a point of P is unreachable");
-    links[k] = best;
-  }
-  links[static_cast<std::size_t>(source)] = 0;
-  return links;
+  return cost;
 }
 
 std::optional<int> LinkPolygonReference::distance(Point a, Point b) const {

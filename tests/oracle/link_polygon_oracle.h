@@ -50,6 +50,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "geom/types.h"
@@ -70,6 +71,17 @@ class LinkPolygonReference {
   // d(a, b) in links; std::nullopt when a or b is outside P. Any integer points: their x and y
   // are added to the grid for that query.
   std::optional<int> distance(geom::Point a, geom::Point b) const;
+
+  // de Berg's e(a, d) (section 3): for every grid point x of the axis-parallel segment e0-e1
+  // (which must lie in P; the grid: the polygon's vertex x's and y's, a's and the segment's ends),
+  // in order from e0, the least links of a path from a to x whose last link runs perpendicular to
+  // the segment, and of one whose last link runs along it (0 when a == x; -1 when there is none).
+  // e(a, d) is the set of x whose perpendicular count is at most d.
+  struct Arrival {
+    geom::Point x;
+    int perpendicular = -1, along = -1;
+  };
+  std::vector<Arrival> arrival_links(geom::Point a, geom::Point e0, geom::Point e1) const;
 
   struct Diameter {
     int links = 0;
@@ -100,6 +112,10 @@ class LinkPolygonReference {
   // Links from grid point `source` (index i * ny + j, usable) to every grid point: 0 at the
   // source, -1 where unusable.
   std::vector<int> bfs(const Grid& g, int source) const;
+  // The same search's cost per state (2 * point + o, o = 0 horizontal, 1 vertical: links of a
+  // path arriving at the point along o); unreached states kUnreached.
+  std::vector<int> bfs_states(const Grid& g, int source) const;
+  static constexpr int kUnreached = 1 << 30;
   // Closed P at (x2 / 2, y2 / 2).
   bool contains2(std::int64_t x2, std::int64_t y2) const;
   int index_of(geom::Point p) const;  // p's index in grid_ (p on the vertex grid)

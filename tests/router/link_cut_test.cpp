@@ -18,8 +18,10 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <tuple>
 
 #include "geom/predicates.h"
+#include "oracle/link_polygon_oracle.h"
 #include "support/random_shapes.h"
 #include "support/sanitized.h"
 
@@ -211,6 +213,129 @@ TEST(CutTree, CombsSpiralsAndStaircases) {
   }
   std::printf("%lld polygons, %lld cuts\n", t.polygons, t.cuts);
   EXPECT_EQ(t.failed, 0);
+}
+
+// What the query structure and the exact diameter will build on these cuts (de Berg section 3,
+// Lemma 2), checked on the brute-force reference alone (oracle::LinkPolygonReference::
+// arrival_links: for a point a and every grid point x of a node's cut e, the least links from a
+// arriving at x perpendicular to e, and along it). For vertices s and t on the two sides of e:
+//  - exact by the separator: d(s, t) is the least, over points x of e and the two ways of
+//    arriving, of the two counts, less one when both arrive the same way (the link through x is
+//    counted twice);
+//  - e(s, d) (the points reached perpendicularly within d links) is an interval of e, for
+//    d = d_s and d_s + 1, with d_s the least perpendicular count;
+//  - the paper's Lemma 2, d(s, t) = d_s + d_t + (-1 / 0 / +1 by how e(s, .) and e(t, .) meet),
+//    holds unless a best path runs along e: a cut extends an edge of its vertex, so a path can
+//    reach e's end along that edge, which the lemma's perpendicular arrivals do not count. The
+//    test counts those pairs (the query structure must add the arrivals along e at its two ends).
+TEST(CutTree, LemmaTwoOnTheCuts) {
+  const int count = static_cast<int>(sanitized_share(400, 10));
+  long long pairs = 0, minus = 0, zero = 0, plus = 0, along = 0;
+  int failed = 0;
+  auto fail = [&](const std::string& m) {
+    if (failed++ < 5) ADD_FAILURE() << m;
+  };
+  for (int seed = 1; seed <= count; ++seed) {
+    std::mt19937 rng(static_cast<unsigned>(5000 + seed));
+    const Ring ring = seed % 3 == 0 ? random_thin_polygon(rng, 1 + seed % 2).ring
+                                    : random_rectilinear_polygon(rng, 3 + seed % 4, 6 + seed % 14, 1 + seed % 3, {0, 0});
+    if (ring.size() > 28) continue;
+    const router::CutTree tree(ring);
+    const auto& nodes = tree.nodes();
+    for (const auto& node : nodes) {
+      if (!node.cut || node.depth > 1) continue;
+      const oracle::LinkPolygonReference ref(node.polygon);
+      const Point e0 = node.cut->from, e1 = node.cut->to;
+      const std::string at = "seed " + std::to_string(seed) + ": polygon " + str(node.polygon) + " cut " + std::to_string(e0.x) + "," +
+                             std::to_string(e0.y) + " -> " + std::to_string(e1.x) + "," + std::to_string(e1.y);
+      struct Side {
+        Point v;
+        int d = -1;  // least perpendicular count
+        std::vector<oracle::LinkPolygonReference::Arrival> arr;
+      };
+      auto sides_of = [&](const Ring& part) {
+        std::vector<Side> out;
+        for (const Point v : part) {
+          if (geom::on_segment(v, e0, e1)) continue;
+          Side sd{v, -1, ref.arrival_links(v, e0, e1)};
+          for (const auto& a : sd.arr)
+            if (a.perpendicular >= 0 && (sd.d < 0 || a.perpendicular < sd.d)) sd.d = a.perpendicular;
+          out.push_back(std::move(sd));
+        }
+        return out;
+      };
+      const std::vector<Side> L = sides_of(nodes[static_cast<std::size_t>(node.left)].polygon);
+      const std::vector<Side> R = sides_of(nodes[static_cast<std::size_t>(node.right)].polygon);
+      // the points with a perpendicular count <= d: [first, last] and whether contiguous
+      auto interval = [](const Side& sd, int d) {
+        int first = -1, last = -1, n = 0;
+        for (int i = 0; i < static_cast<int>(sd.arr.size()); ++i) {
+          const int l = sd.arr[static_cast<std::size_t>(i)].perpendicular;
+          if (l >= 0 && l <= d) {
+            if (first < 0) first = i;
+            last = i, ++n;
+          }
+        }
+        return std::tuple{first, last, first < 0 || n == last - first + 1};
+      };
+      for (const std::vector<Side>* side : {&L, &R})
+        for (const Side& sd : *side) {
+          if (sd.d < 0) {
+            fail(at + ": no perpendicular arrival from " + std::to_string(sd.v.x) + "," + std::to_string(sd.v.y));
+            continue;
+          }
+          for (const int d : {sd.d, sd.d + 1})
+            if (!std::get<2>(interval(sd, d)))
+              fail(at + ": e(v, " + std::to_string(d) + ") of v = " + std::to_string(sd.v.x) + "," + std::to_string(sd.v.y) + " is not an interval");
+        }
+      auto meet = [&](const Side& a, int da, const Side& b, int db) {
+        const auto [a0, a1, aok] = interval(a, da);
+        const auto [b0, b1, bok] = interval(b, db);
+        return a0 >= 0 && b0 >= 0 && std::max(a0, b0) <= std::min(a1, b1);
+      };
+      for (const Side& s : L)
+        for (const Side& t : R) {
+          if (s.d < 0 || t.d < 0) continue;
+          const std::optional<int> want = ref.distance(s.v, t.v);
+          ++pairs;
+          const std::string pair = at + ": d(" + std::to_string(s.v.x) + "," + std::to_string(s.v.y) + " ; " + std::to_string(t.v.x) +
+                                   "," + std::to_string(t.v.y) + ") = " + std::to_string(want ? *want : -1);
+          // the separator formula, over every point of e and both ways of arriving
+          int best = -1;
+          for (std::size_t i = 0; i < s.arr.size() && i < t.arr.size(); ++i) {
+            const int sa[2] = {s.arr[i].perpendicular, s.arr[i].along}, ta[2] = {t.arr[i].perpendicular, t.arr[i].along};
+            for (int os = 0; os < 2; ++os)
+              for (int ot = 0; ot < 2; ++ot)
+                if (sa[os] >= 0 && ta[ot] >= 0 && (best < 0 || sa[os] + ta[ot] - (os == ot ? 1 : 0) < best))
+                  best = sa[os] + ta[ot] - (os == ot ? 1 : 0);
+          }
+          if (!want || best != *want) {
+            fail(pair + ", the separator formula gives " + std::to_string(best));
+            continue;
+          }
+          int delta = 1;
+          if (meet(s, s.d, t, t.d)) delta = -1;
+          else if (meet(s, s.d + 1, t, t.d) || meet(s, s.d, t, t.d + 1)) delta = 0;
+          (delta < 0 ? minus : delta == 0 ? zero : plus) += 1;
+          if (*want == s.d + t.d + delta) continue;
+          // outside the lemma only when one of them reaches an end of e along e's line within its
+          // perpendicular distance (from the boundary edge the cut extends)
+          auto along_at_end = [&](const Side& sd) {
+            const auto& f = sd.arr.front();
+            const auto& b = sd.arr.back();
+            return (f.along >= 0 && f.along <= sd.d) || (b.along >= 0 && b.along <= sd.d);
+          };
+          if (along_at_end(s) || along_at_end(t)) ++along;
+          else fail(pair + ", Lemma 2 gives " + std::to_string(s.d) + " + " + std::to_string(t.d) + " + " + std::to_string(delta));
+        }
+    }
+  }
+  std::printf("%lld pairs across cuts: Lemma 2 with delta -1 %lld, 0 %lld, +1 %lld; %lld only by a path along the cut\n",
+              pairs, minus, zero, plus, along);
+  EXPECT_EQ(failed, 0);
+  EXPECT_GE(pairs, sanitized_share(10000, 10));
+  EXPECT_GE(std::min({minus, zero}), sanitized_share(1000, 10));
+  EXPECT_GE(plus, sanitized_share(50, 10));
 }
 
 TEST(CutTree, RectangleIsALeafAndBadInputIsRefused) {
