@@ -6,6 +6,7 @@
 
 #include "geom/index.h"
 #include "geom/predicates.h"
+#include "router/link_polygon.h"
 
 namespace taut::router {
 
@@ -23,23 +24,6 @@ geom::Direction ray_of(Point d) {
   if (d.x > 0) return geom::Direction::E;
   if (d.x < 0) return geom::Direction::W;
   return d.y > 0 ? geom::Direction::N : geom::Direction::S;
-}
-
-// Drops the vertices where the ring goes straight on (cyclically, until none is left).
-Ring clean(Ring r) {
-  bool changed = true;
-  while (changed && r.size() > 2) {
-    changed = false;
-    for (std::size_t i = 0; i < r.size() && r.size() > 2; ++i) {
-      const Point a = r[(i + r.size() - 1) % r.size()], b = r[i], c = r[(i + 1) % r.size()];
-      if (geom::orientation(a, b, c) == 0) {
-        r.erase(r.begin() + static_cast<std::ptrdiff_t>(i));
-        changed = true;
-        break;
-      }
-    }
-  }
-  return r;
 }
 
 // One candidate: the extension from vertex i in direction d, meeting the boundary at `to`, which
@@ -115,8 +99,8 @@ std::optional<PolygonCut> balanced_cut(const Ring& polygon) {
     right.push_back(polygon[k]);
     if (k == c.i) break;
   }
-  out.left = clean(std::move(left));
-  out.right = clean(std::move(right));
+  out.left = clean_ring(left);
+  out.right = clean_ring(right);
   if (out.left.size() != c.left || out.right.size() != c.right || out.left.size() < 4 || out.right.size() < 4)
     throw std::logic_error("balanced_cut: the parts' vertex counts differ from the count that chose the cut");
   return out;

@@ -26,29 +26,6 @@ bool rectilinear(const Ring& r) {
   return true;
 }
 
-// Repeated consecutive and collinear vertices dropped (for an axis-parallel ring every straight
-// continuation is collinear; a 180-degree turn cannot occur in a simple ring).
-Ring clean(const Ring& in) {
-  Ring r;
-  for (const Point p : in)
-    if (r.empty() || r.back() != p) r.push_back(p);
-  while (r.size() > 1 && r.front() == r.back()) r.pop_back();
-  bool changed = true;
-  while (changed && r.size() >= 3) {
-    changed = false;
-    Ring out;
-    for (std::size_t i = 0; i < r.size(); ++i) {
-      const Point a = r[(i + r.size() - 1) % r.size()], b = r[i], c = r[(i + 1) % r.size()];
-      if (geom::orientation(a, b, c) == 0) {
-        changed = true;
-        continue;
-      }
-      out.push_back(b);
-    }
-    r = std::move(out);
-  }
-  return r;
-}
 
 // Lowest, then leftmost, first.
 bool lower(Point a, Point b) { return a.y != b.y ? a.y < b.y : a.x < b.x; }
@@ -93,7 +70,7 @@ FreeSpacePolygon free_space_polygon(const Box& domain, std::span<const Polygon> 
   }
   std::vector<Ring> pieces;
   for (const Ring& h : wall->holes) {
-    Ring r = clean(h);
+    Ring r = clean_ring(h);
     std::reverse(r.begin(), r.end());
     pieces.push_back(std::move(r));
   }
@@ -151,10 +128,10 @@ FreeSpacePolygon free_space_polygon(const Box& domain, std::span<const Polygon> 
   return out;
 }
 
-LinkPolygon::LinkPolygon(const Ring& polygon) : ring_(clean(polygon)) {
+LinkPolygon::LinkPolygon(const Ring& polygon) : ring_(clean_ring(polygon)) {
   if (ring_.size() < 4 || !rectilinear(ring_))
     throw std::invalid_argument("LinkPolygon: the ring is not a rectilinear polygon");
-  // the ring as given (a spike that clean() would fold away is an error, as in a layout file)
+  // the ring as given (a spike that clean_ring() would fold away is an error, as in a layout file)
   if (!geom::validate_ring(polygon).empty() || !geom::validate_ring(ring_).empty())
     throw std::invalid_argument("LinkPolygon: the ring is not simple");
   if (geom::twice_area(ring_) < 0) std::reverse(ring_.begin(), ring_.end());
@@ -282,5 +259,29 @@ std::vector<Point> LinkPolygon::convex_corners() const {
 }
 
 const BendGraphStats& LinkPolygon::graph_stats() const { return router_->stats(); }
+
+// Repeated consecutive and collinear vertices dropped (for an axis-parallel ring every straight
+// continuation is collinear; a 180-degree turn cannot occur in a simple ring).
+Ring clean_ring(const Ring& in) {
+  Ring r;
+  for (const Point p : in)
+    if (r.empty() || r.back() != p) r.push_back(p);
+  while (r.size() > 1 && r.front() == r.back()) r.pop_back();
+  bool changed = true;
+  while (changed && r.size() >= 3) {
+    changed = false;
+    Ring out;
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      const Point a = r[(i + r.size() - 1) % r.size()], b = r[i], c = r[(i + 1) % r.size()];
+      if (geom::orientation(a, b, c) == 0) {
+        changed = true;
+        continue;
+      }
+      out.push_back(b);
+    }
+    r = std::move(out);
+  }
+  return r;
+}
 
 }  // namespace taut::router

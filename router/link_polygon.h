@@ -80,6 +80,10 @@ struct LinkDiameter {
   std::size_t searches = 0;  // single-source searches run
 };
 
+// A ring with its repeated consecutive and collinear vertices dropped (for an axis-parallel ring
+// every straight continuation is collinear; a 180-degree turn cannot occur in a simple ring).
+geom::Ring clean_ring(const geom::Ring& ring);
+
 class LinkPolygon {
  public:
   // A simple rectilinear ring with integer vertices, either orientation (collinear and repeated

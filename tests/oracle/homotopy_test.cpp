@@ -71,6 +71,17 @@ int crossings_of(const std::vector<int>& w, std::size_t k) {
   return n;
 }
 
+// One obstacle inside the box lo-hi, at mid height y: a loop around it crosses its cut once
+// (-1 counter-clockwise, +1 clockwise), and paths over and under it from one side to the other
+// differ.
+void expect_one_obstacle_loop(const oracle::HomotopyWords& h, Point lo, Point hi, geom::Coord y) {
+  const Path around{lo, {hi.x, lo.y}, hi, {lo.x, hi.y}, lo};
+  EXPECT_EQ(h.word(around), std::vector<int>{-1});
+  EXPECT_EQ(h.word(Path(around.rbegin(), around.rend())), std::vector<int>{1});
+  const Path over{{lo.x, y}, {lo.x, hi.y}, hi, {hi.x, y}}, under{{lo.x, y}, lo, {hi.x, lo.y}, {hi.x, y}};
+  EXPECT_NE(h.word(over), h.word(under));
+}
+
 TEST(HomotopyWords, TopVertexWhereTwoLobesTouch) {
   // Two triangles touching at their common top vertex (1,1) are one obstacle whose ring passes
   // through (1,1) twice. The old constructor took the ring neighbours of the first visit,
@@ -82,11 +93,7 @@ TEST(HomotopyWords, TopVertexWhereTwoLobesTouch) {
   ASSERT_EQ(sc.obstacles[0].outer, (geom::Ring{{0, 0}, {1, 0}, {1, 1}, {2, 0}, {3, 0}, {1, 1}}));
   const oracle::HomotopyWords h(sc.domain, sc.obstacles);
   ASSERT_EQ(h.cut_count(), 1u);
-  const Path around{{-1, -1}, {4, -1}, {4, 3}, {-1, 3}, {-1, -1}};
-  EXPECT_EQ(h.word(around), std::vector<int>{-1});
-  EXPECT_EQ(h.word(Path(around.rbegin(), around.rend())), std::vector<int>{1});
-  const Path over{{-1, 1}, {-1, 3}, {4, 3}, {4, 1}}, under{{-1, 1}, {-1, -1}, {4, -1}, {4, 1}};
-  EXPECT_NE(h.word(over), h.word(under));
+  expect_one_obstacle_loop(h, {-1, -1}, {4, 3}, 1);
   EXPECT_TRUE(h.word(Path{{0, 2}, {3, 2}, {2, 3}, {0, 2}}).empty());  // over the cut and back, above (1,1)
   EXPECT_TRUE(h.word(Path{{4, 1}, {3, 1}, {4, -1}, {4, 1}}).empty());   // right of the lobes
 }
@@ -102,11 +109,7 @@ TEST(HomotopyWords, TopVertexWhereTwoLobesTouchMirrored) {
   ASSERT_EQ(sc.obstacles.size(), 1u);
   ASSERT_EQ(sc.obstacles[0].outer, (geom::Ring{{0, 0}, {4, 0}, {2, 2}, {6, 0}, {8, 0}, {2, 2}}));
   const oracle::HomotopyWords h(sc.domain, sc.obstacles);
-  const Path around{{-1, -1}, {9, -1}, {9, 4}, {-1, 4}, {-1, -1}};
-  EXPECT_EQ(h.word(around), std::vector<int>{-1});
-  EXPECT_EQ(h.word(Path(around.rbegin(), around.rend())), std::vector<int>{1});
-  const Path over{{-1, 1}, {-1, 4}, {9, 4}, {9, 1}}, under{{-1, 1}, {-1, -1}, {9, -1}, {9, 1}};
-  EXPECT_NE(h.word(over), h.word(under));
+  expect_one_obstacle_loop(h, {-1, -1}, {9, 4}, 1);
 }
 
 // Seeded layouts of the kind above: a 3 x 3 grid of 24 x 24 cells, most holding an obstacle

@@ -38,17 +38,14 @@ std::string str(const Ring& r) {
   return s;
 }
 
-// The closed polygon holds the point (X/2, Y/2): doubled coordinates.
-bool holds2(const Ring& r, i64 X, i64 Y) {
+// Where the point (X/2, Y/2) lies for the closed polygon: doubled coordinates.
+geom::Location locate2(const Ring& r, i64 X, i64 Y) {
   Ring d;
   for (const Point p : r) d.push_back({static_cast<geom::Coord>(2 * p.x), static_cast<geom::Coord>(2 * p.y)});
-  return geom::locate({static_cast<geom::Coord>(X), static_cast<geom::Coord>(Y)}, geom::Polygon{d, {}}) != geom::Location::Outside;
+  return geom::locate({static_cast<geom::Coord>(X), static_cast<geom::Coord>(Y)}, geom::Polygon{d, {}});
 }
-bool inside2(const Ring& r, i64 X, i64 Y) {
-  Ring d;
-  for (const Point p : r) d.push_back({static_cast<geom::Coord>(2 * p.x), static_cast<geom::Coord>(2 * p.y)});
-  return geom::locate({static_cast<geom::Coord>(X), static_cast<geom::Coord>(Y)}, geom::Polygon{d, {}}) == geom::Location::Inside;
-}
+bool holds2(const Ring& r, i64 X, i64 Y) { return locate2(r, X, Y) != geom::Location::Outside; }
+bool inside2(const Ring& r, i64 X, i64 Y) { return locate2(r, X, Y) == geom::Location::Inside; }
 
 // Ring vertices that are not straight, by hand.
 std::size_t corners(const Ring& r) {
