@@ -1,0 +1,419 @@
+#include "router/link_reach.h"
+
+#include <algorithm>
+#include <boost/geometry/index/rtree.hpp>
+#include <limits>
+#include <map>
+#include <optional>
+#include <tuple>
+#include <stdexcept>
+#include <utility>
+
+#include "geom/bg.h"
+#include "geom/index.h"
+#include "geom/predicates.h"
+
+namespace taut::router {
+
+namespace {
+
+using geom::Coord;
+using geom::Point;
+using geom::Ring;
+using i64 = std::int64_t;
+namespace bgi = boost::geometry::index;
+
+constexpr int kNone = std::numeric_limits<int>::max();
+
+Point unit(Point a, Point b) {
+  return {static_cast<Coord>((b.x > a.x) - (b.x < a.x)), static_cast<Coord>((b.y > a.y) - (b.y < a.y))};
+}
+Point neg(Point d) { return {static_cast<Coord>(-d.x), static_cast<Coord>(-d.y)}; }
+geom::Direction ray_of(Point d) {
+  if (d.x > 0) return geom::Direction::E;
+  if (d.x < 0) return geom::Direction::W;
+  return d.y > 0 ? geom::Direction::N : geom::Direction::S;
+}
+// Rotation by -90 degrees k times: 1 (x, y) -> (y, -x), 2 (-x, -y), 3 (-y, x).
+Point rotate(Point p, int k) {
+  switch (k & 3) {
+    case 1: return {p.y, static_cast<Coord>(-p.x)};
+    case 2: return {static_cast<Coord>(-p.x), static_cast<Coord>(-p.y)};
+    case 3: return {static_cast<Coord>(-p.y), p.x};
+    default: return p;
+  }
+}
+Point transpose(Point p) { return {p.y, p.x}; }
+
+// A counter-clockwise simple rectilinear ring with its vertices looked up by position and its
+// edges in a ray-shooting index.
+class Shape {
+ public:
+  explicit Shape(Ring ring) : ring_(std::move(ring)), poly_{ring_, {}}, index_({&poly_, 1}) {
+    for (std::size_t i = 0; i < ring_.size(); ++i) vertex_.emplace(std::pair{ring_[i].x, ring_[i].y}, i);
+  }
+  const Ring& ring() const { return ring_; }
+  std::size_t size() const { return ring_.size(); }
+  const Point& at(std::size_t i) const { return ring_[i % ring_.size()]; }
+  std::optional<std::size_t> vertex(Point p) const {
+    const auto it = vertex_.find({p.x, p.y});
+    if (it == vertex_.end()) return std::nullopt;
+    return it->second;
+  }
+  bool reflex(std::size_t i) const { return geom::orientation(at(i + size() - 1), at(i), at(i + 1)) < 0; }
+  // Whether a path may leave vertex i in direction d (d in the closed interior wedge: along one of
+  // its edges, or anywhere at a reflex vertex).
+  bool can_leave(std::size_t i, Point d) const {
+    const Point a = at(i + size() - 1), v = at(i), c = at(i + 1);
+    return d == unit(v, c) || d == unit(v, a) || reflex(i);
+  }
+  // The first boundary point after p in direction d (p itself and the edges through it ignored).
+  std::pair<Point, geom::RayHit> shoot(Point p, Point d) const {
+    geom::RayHit h = index_.shoot(p, ray_of(d), {.ignore_edges_at_start = true});
+    if (!h.hit()) throw std::logic_error("link_reach: a ray leaves the polygon (not simple, or clockwise)");
+    const i64 t = h.t.num / h.t.den;
+    return {Point{static_cast<Coord>(p.x + d.x * t), static_cast<Coord>(p.y + d.y * t)}, std::move(h)};
+  }
+  // How far the closed polygon reaches from boundary point p in direction d, along edges and
+  // through reflex vertices: the far end of the maximal closed segment. `outward`: at a start
+  // inside an edge, the direction out of the polygon there.
+  Point reach(Point p, Point d, Point outward) const {
+    for (bool first = true;; first = false) {
+      if (const auto i = vertex(p)) {
+        if (!can_leave(*i, d)) return p;
+      } else if (!first || d == outward) {
+        return p;  // stopped inside an edge across the way
+      }
+      p = shoot(p, d).first;
+    }
+  }
+  std::size_t edge_of(std::uint32_t id) const { return index_.edge_ref(id).vertex; }
+
+ private:
+  Ring ring_;
+  geom::Polygon poly_;
+  geom::ObstacleIndex index_;
+  std::map<std::pair<Coord, Coord>, std::size_t> vertex_;
+};
+
+// The vertical decomposition: a cut from every reflex vertex continuing its vertical edge through
+// it, and one up from every point of `extra` (points inside floor edges: edges running +x, the
+// polygon above). Returns the open rectangles between the cuts, as closed boxes.
+std::vector<geom::Box> vertical_cells(const Shape& s, const std::vector<Point>& extra) {
+  const std::size_t n = s.size();
+  std::vector<std::vector<Coord>> splits(n);
+  for (std::size_t i = 0; i < n; ++i)
+    if (s.at(i).y == s.at(i + 1).y) splits[i] = {s.at(i).x, s.at(i + 1).x};
+  auto land = [&](Point from, Point d) {
+    const auto [q, h] = s.shoot(from, d);
+    if (s.vertex(q)) return;
+    for (const std::uint32_t id : h.edges) {
+      const std::size_t e = s.edge_of(id);
+      if (s.at(e).y == s.at(e + 1).y) splits[e].push_back(q.x);
+    }
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!s.reflex(i)) continue;
+    const Point prev = s.at(i + n - 1), v = s.at(i), next = s.at(i + 1);
+    land(v, prev.x == v.x ? unit(prev, v) : neg(unit(v, next)));
+  }
+  for (const Point p : extra) {
+    bool found = false;
+    for (std::size_t e = 0; e < n && !found; ++e) {
+      const Point a = s.at(e), b = s.at(e + 1);
+      if (a.y == p.y && b.y == p.y && a.x < p.x && p.x < b.x) splits[e].push_back(p.x), found = true;
+    }
+    if (!found) throw std::logic_error("link_reach: an end of the base is not inside a floor edge");
+    land(p, {0, 1});
+  }
+  std::map<std::pair<Coord, Coord>, std::vector<Coord>> ceilings;  // (x1, x2) -> heights
+  for (std::size_t e = 0; e < n; ++e) {
+    auto& sp = splits[e];
+    std::sort(sp.begin(), sp.end());
+    sp.erase(std::unique(sp.begin(), sp.end()), sp.end());
+    if (s.at(e).y == s.at(e + 1).y && s.at(e + 1).x < s.at(e).x)
+      for (std::size_t k = 0; k + 1 < sp.size(); ++k) ceilings[{sp[k], sp[k + 1]}].push_back(s.at(e).y);
+  }
+  for (auto& [key, ys] : ceilings) std::sort(ys.begin(), ys.end());
+  std::vector<geom::Box> cells;
+  for (std::size_t e = 0; e < n; ++e) {
+    if (!(s.at(e).y == s.at(e + 1).y && s.at(e + 1).x > s.at(e).x)) continue;
+    const Coord y = s.at(e).y;
+    const auto& sp = splits[e];
+    for (std::size_t k = 0; k + 1 < sp.size(); ++k) {
+      const auto it = ceilings.find({sp[k], sp[k + 1]});
+      const auto top = it == ceilings.end() ? nullptr : &it->second;
+      const auto up = top ? std::upper_bound(top->begin(), top->end(), y) : decltype(top->begin()){};
+      if (!top || up == top->end()) throw std::logic_error("link_reach: a floor piece has no ceiling piece above it");
+      cells.push_back({{sp[k], y}, {sp[k + 1], *up}});
+    }
+  }
+  return cells;
+}
+
+enum Kind : std::uint8_t { kVCell, kHCell, kVSeg, kHSeg };
+bool vertical(Kind k) { return k == kVCell || k == kVSeg; }
+
+struct Node {
+  Kind kind;
+  geom::Box box;  // a segment's box is degenerate in one axis
+};
+
+// Whether a path can turn from vertical node v to horizontal node h (see the header).
+bool adjacent(const Node& v, const Node& h) {
+  const geom::Box& a = v.box;
+  const geom::Box& b = h.box;
+  auto positive = [](Coord lo1, Coord hi1, Coord lo2, Coord hi2) { return std::max(lo1, lo2) < std::min(hi1, hi2); };
+  if (v.kind == kVCell && h.kind == kHCell) return positive(a.lo.x, a.hi.x, b.lo.x, b.hi.x) && positive(a.lo.y, a.hi.y, b.lo.y, b.hi.y);
+  if (v.kind == kVCell) {  // a horizontal segment at b.lo.y
+    return a.lo.y <= b.lo.y && b.lo.y <= a.hi.y && positive(a.lo.x, a.hi.x, b.lo.x, b.hi.x);
+  }
+  const Coord c = a.lo.x;  // a vertical segment
+  if (h.kind == kHCell) return b.lo.x <= c && c <= b.hi.x && positive(a.lo.y, a.hi.y, b.lo.y, b.hi.y);
+  return b.lo.x <= c && c <= b.hi.x && a.lo.y <= b.lo.y && b.lo.y <= a.hi.y;
+}
+
+// Union of closed intervals known to form one interval; throws when they do not.
+ReachInterval merge(std::vector<ReachInterval>& parts) {
+  std::sort(parts.begin(), parts.end(), [](const ReachInterval& a, const ReachInterval& b) { return a.lo < b.lo; });
+  ReachInterval out = parts.front();
+  for (const ReachInterval& p : parts) {
+    if (p.lo > out.hi) throw std::logic_error("link_reach: the points of the base a node reaches are not one interval");
+    out.hi = std::max(out.hi, p.hi);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<BaseReach> base_reach(const Ring& polygon, Point b0, Point b1) {
+  const std::size_t n = polygon.size();
+  // the frame: b's edge runs +x (the polygon above it)
+  int k = -1;
+  for (std::size_t i = 0; i < n && k < 0; ++i) {
+    const Point a = polygon[i], b = polygon[(i + 1) % n];
+    if (b0 == b1 || !geom::on_segment(b0, a, b) || !geom::on_segment(b1, a, b)) continue;
+    const Point u = unit(a, b);
+    k = u.x > 0 ? 0 : u.y > 0 ? 1 : u.x < 0 ? 2 : 3;
+  }
+  if (k < 0) throw std::invalid_argument("base_reach: the base is not a segment of positive length on an edge");
+  Ring ring;
+  ring.reserve(n);
+  for (const Point p : polygon) ring.push_back(rotate(p, k));
+  const Shape shape(ring);
+  const Point c0 = rotate(b0, k), c1 = rotate(b1, k);
+  const Coord yb = c0.y, xa = std::min(c0.x, c1.x), xb = std::max(c0.x, c1.x);
+  std::vector<Point> extra;
+  for (const Point p : {c0, c1})
+    if (!shape.vertex(p)) extra.push_back(p);
+
+  // nodes: the cells of both decompositions, then the maximal segments through the vertices and
+  // the base's ends
+  std::vector<Node> nodes;
+  for (const geom::Box& b : vertical_cells(shape, extra)) nodes.push_back({kVCell, b});
+  {
+    Ring t;
+    t.reserve(n);
+    for (std::size_t i = n; i-- > 0;) t.push_back(transpose(ring[i]));
+    for (const geom::Box& b : vertical_cells(Shape(std::move(t)), {}))
+      nodes.push_back({kHCell, {transpose(b.lo), transpose(b.hi)}});
+  }
+  std::map<std::tuple<int, Coord, Coord>, std::uint32_t> segment_ids;
+  auto segment = [&](Kind kind, Point lo, Point hi) {
+    const auto key = kind == kVSeg ? std::tuple{int{kind}, lo.x, lo.y} : std::tuple{int{kind}, lo.y, lo.x};
+    const auto [it, fresh] = segment_ids.emplace(key, static_cast<std::uint32_t>(nodes.size()));
+    if (fresh) nodes.push_back({kind, {lo, hi}});
+    return it->second;
+  };
+  struct Through {
+    std::uint32_t v, h;
+  };
+  auto through = [&](Point p) {
+    const Point down{0, -1};
+    const Point out = shape.vertex(p) ? Point{0, 0} : down;  // the base's ends inside its edge
+    const Through t{segment(kVSeg, shape.reach(p, down, out), shape.reach(p, {0, 1}, out)),
+                    segment(kHSeg, shape.reach(p, {-1, 0}, out), shape.reach(p, {1, 0}, out))};
+    return t;
+  };
+  std::vector<Through> at_vertex;
+  at_vertex.reserve(n);
+  for (const Point p : ring) at_vertex.push_back(through(p));
+  const std::uint32_t base_line = through(c0).h;
+
+  using Item = std::pair<geom::Box, std::uint32_t>;
+  std::vector<Item> vitems, hitems;
+  for (std::uint32_t i = 0; i < nodes.size(); ++i) (vertical(nodes[i].kind) ? vitems : hitems).push_back({nodes[i].box, i});
+  const bgi::rtree<Item, bgi::quadratic<16>> vtree(vitems), htree(hitems);
+  std::vector<Item> found;
+  auto neighbours = [&](std::uint32_t x, auto&& visit) {
+    found.clear();
+    const bool v = vertical(nodes[x].kind);
+    (v ? htree : vtree).query(bgi::intersects(nodes[x].box), std::back_inserter(found));
+    for (const Item& it : found) visit(it.second);
+  };
+
+  // search 1: from the base, arriving perpendicular to it
+  std::vector<int> level(nodes.size(), kNone);
+  std::vector<ReachInterval> reach(nodes.size());
+  std::vector<std::uint32_t> frontier;
+  for (std::uint32_t i = 0; i < nodes.size(); ++i) {
+    const geom::Box& b = nodes[i].box;
+    if (nodes[i].kind == kVCell && b.lo.y == yb && b.lo.x < xb && b.hi.x > xa) {
+      if (b.lo.x < xa || b.hi.x > xb) throw std::logic_error("link_reach: a cell straddles an end of the base");
+      level[i] = 1, reach[i] = {b.lo.x, b.hi.x};
+    } else if (nodes[i].kind == kVSeg && b.lo.y <= yb && yb <= b.hi.y && xa <= b.lo.x && b.lo.x <= xb) {
+      level[i] = 1, reach[i] = {b.lo.x, b.lo.x};
+    }
+    if (level[i] == 1) frontier.push_back(i);
+  }
+  std::map<std::uint32_t, std::vector<ReachInterval>> pending;
+  for (int d = 1; !frontier.empty(); ++d) {
+    pending.clear();
+    for (const std::uint32_t x : frontier)
+      neighbours(x, [&](std::uint32_t y) {
+        const bool xv = vertical(nodes[x].kind);
+        if (!adjacent(nodes[xv ? x : y], nodes[xv ? y : x])) return;
+        if (level[y] != kNone && level[y] != d + 1) return;
+        level[y] = d + 1;
+        pending[y].push_back(reach[x]);
+      });
+    frontier.clear();
+    for (auto& [y, parts] : pending) reach[y] = merge(parts), frontier.push_back(y);
+  }
+
+  // search 2: from the base's line, arriving perpendicular to it (then one link along it)
+  std::vector<int> level2(nodes.size(), kNone);
+  level2[base_line] = 0;
+  frontier = {base_line};
+  for (int d = 0; !frontier.empty(); ++d) {
+    std::vector<std::uint32_t> next;
+    for (const std::uint32_t x : frontier)
+      neighbours(x, [&](std::uint32_t y) {
+        if (level2[y] != kNone) return;
+        const bool xv = vertical(nodes[x].kind);
+        if (!adjacent(nodes[xv ? x : y], nodes[xv ? y : x])) return;
+        level2[y] = d + 1;
+        next.push_back(y);
+      });
+    frontier = std::move(next);
+  }
+
+  auto to_base = [&](ReachInterval r) {  // x in the frame -> distance from b0 along b
+    if (r.empty()) return r;
+    if (c1.x > c0.x) return ReachInterval{r.lo - c0.x, r.hi - c0.x};
+    return ReachInterval{c0.x - r.hi, c0.x - r.lo};
+  };
+  std::vector<BaseReach> out(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point p = ring[i];
+    BaseReach& r = out[i];
+    if (p.y == yb && xa <= p.x && p.x <= xb) {
+      r.links = 0, r.along = 0;
+      r.at = r.next = to_base({p.x, p.x});
+      continue;
+    }
+    const auto [v, h] = at_vertex[i];
+    const std::uint32_t best = level[v] <= level[h] ? v : h, other = best == v ? h : v;
+    if (level[best] != kNone) {
+      r.links = level[best];
+      r.at = reach[best];
+      r.next = r.at;
+      if (level[other] == r.links + 1) {
+        std::vector<ReachInterval> parts{r.at, reach[other]};
+        r.next = merge(parts);
+      }
+      r.at = to_base(r.at), r.next = to_base(r.next);
+    }
+    const int a = std::min(level2[v], level2[h]);
+    if (a != kNone) r.along = a + 1;
+    // a path that arrives along b's line may turn there in place: it reaches all of b
+    const ReachInterval all = to_base({xa, xb});
+    if (r.along >= 0 && (r.links < 0 || r.along + 1 <= r.links)) r.links = r.along + 1, r.at = all;
+    if (r.along >= 0 && r.along <= r.links) r.next = all;
+  }
+  return out;
+}
+
+int links_across(const BaseReach& s, const BaseReach& t) {
+  int best = s.links + t.links + 1;
+  if (s.at.meets(t.at)) best = s.links + t.links - 1;
+  else if (s.next.meets(t.at) || s.at.meets(t.next)) best = s.links + t.links;
+  return std::min({best, s.links + t.along, s.along + t.links, s.along + t.along - 1});
+}
+
+LinkVertexQueries::LinkVertexQueries(const Ring& polygon) : tree_(polygon) {
+  const auto& nodes = tree_.nodes();
+  for (auto& r : reach_) r.resize(nodes.size());
+  std::vector<std::map<std::pair<Coord, Coord>, std::size_t>> index(nodes.size());
+  for (std::size_t k = 0; k < nodes.size(); ++k) {
+    const auto& node = nodes[k];
+    for (std::size_t i = 0; i < node.polygon.size(); ++i) index[k].emplace(std::pair{node.polygon[i].x, node.polygon[i].y}, i);
+    if (!node.cut) continue;
+    for (int side = 0; side < 2; ++side) {
+      const auto child = static_cast<std::size_t>(side == 0 ? node.left : node.right);
+      reach_[side][k] = base_reach(nodes[child].polygon, node.cut->from, node.cut->to);
+    }
+  }
+  way_.resize(polygon.size());
+  for (std::size_t v = 0; v < polygon.size(); ++v) {
+    const Point p = polygon[v];
+    for (std::int32_t k = 0;;) {
+      const auto& node = nodes[static_cast<std::size_t>(k)];
+      if (!node.cut) {
+        way_[v].push_back({k, -2, 0});
+        break;
+      }
+      const PolygonCut& c = *node.cut;
+      if (geom::on_segment(p, c.from, c.to)) {
+        way_[v].push_back({k, -1, std::abs(i64{p.x} - c.from.x) + std::abs(i64{p.y} - c.from.y)});
+        break;
+      }
+      const std::int32_t child[2] = {node.left, node.right};
+      int side = -1;
+      for (int s = 0; s < 2 && side < 0; ++s) {
+        const auto& m = index[static_cast<std::size_t>(child[s])];
+        const auto it = m.find({p.x, p.y});
+        if (it != m.end()) {
+          side = s;
+          way_[v].push_back({k, static_cast<std::int8_t>(s), static_cast<std::int64_t>(it->second)});
+        }
+      }
+      if (side < 0) throw std::logic_error("LinkVertexQueries: a vertex off the cut is in neither part");
+      k = child[side];
+    }
+  }
+}
+
+std::size_t LinkVertexQueries::records() const {
+  std::size_t n = 0;
+  for (const auto& side : reach_)
+    for (const auto& r : side) n += r.size();
+  return n;
+}
+
+int LinkVertexQueries::links(std::size_t i, std::size_t j) const {
+  const auto& a = way_.at(i);
+  const auto& b = way_.at(j);
+  const Ring& ring = tree_.nodes()[0].polygon;
+  if (i == j) return 0;
+  const Point p = ring[i], q = ring[j];
+  for (std::size_t k = 0;; ++k) {
+    const Step& s = a[k];
+    const Step& t = b[k];
+    if (s.side == -2) return p.x == q.x || p.y == q.y ? 1 : 2;  // a rectangle
+    if (s.side == -1 && t.side == -1) return 1;                  // both on the cut
+    if (s.side == -1 || t.side == -1) {
+      // one on the cut at position pos, the other's record: arrive there perpendicular, or
+      // perpendicular elsewhere and along the cut, or along the cut's line
+      const Step& off = s.side == -1 ? t : s;
+      const std::int64_t pos = s.side == -1 ? s.index : t.index;
+      const BaseReach& r = reach_[off.side][static_cast<std::size_t>(off.node)][static_cast<std::size_t>(off.index)];
+      return std::min(r.at.contains(pos) ? r.links : r.links + 1, r.along);
+    }
+    if (s.side != t.side)
+      return links_across(reach_[s.side][static_cast<std::size_t>(s.node)][static_cast<std::size_t>(s.index)],
+                          reach_[t.side][static_cast<std::size_t>(t.node)][static_cast<std::size_t>(t.index)]);
+  }
+}
+
+}  // namespace taut::router

@@ -1,0 +1,101 @@
+// What de Berg's query structure keeps at a node of the cut tree (seeds/002, section 3.1): for
+// every vertex v of one part of a cut polygon, its link distance to the cut segment b, the parts
+// of b it reaches with that many links and with one more (Lemmas 2-4: e(v, d_v), e(v, d_v + 1)),
+// and the links of a path that reaches b running along b's line (the arrivals Lemma 2 leaves out:
+// tests/router/link_cut_test.cpp found 851 pairs across cuts that only such a path joins).
+//
+//   const std::vector<BaseReach> r = base_reach(part, cut.from, cut.to);
+//   int d = links_across(r_left[i], r_right[j]);   // d(v_i, w_j) for v_i, w_j on either side
+//
+// Closed polygon, paths may run along the boundary and through reflex vertices (what the router
+// and the reference mean by a path). Work is done in the frame where b is horizontal with the
+// polygon above it.
+//
+// How (not the paper's histogram partition, which the OCR of its figures and the degenerate
+// cases it leaves out made hard to follow exactly; this is simpler to get right and is checked
+// against the reference's own per-point counts):
+//   - the vertical decomposition (a cut up or down from every reflex vertex, continuing its
+//     vertical edge; and up from b's ends) into open rectangles "V-cells", and the horizontal one
+//     into "H-cells": inside a V-cell every vertical link spans the cell, inside an H-cell every
+//     horizontal link does; a V-cell and an H-cell that overlap always overlap across the
+//     H-cell's whole height and the V-cell's whole width (an edge bounding one would otherwise
+//     cross the other's interior);
+//   - the maximal closed segments of the polygon, both ways, through every vertex and b's ends:
+//     every link that is not inside a cell lies on one (a link on a cell's side lies on a cut or
+//     an edge, hence on a line through a vertex);
+//   - a breadth-first search over these nodes from b (a node's level: the fewest links of a path
+//     starting along it and ending perpendicular on b), adjacent when perpendicular and meeting
+//     in a point (segments) or along a piece of positive length (a cell and a segment, two cells
+//     by area). Levels alternate in parity with the node's direction. What a node reaches on b
+//     is one interval (Lemma 3), the union of what its neighbours one level down reach.
+// Cost: O(n log n) to build the nodes, plus one R-tree query per node and the adjacencies it
+// reports (O(n) on the tested layouts, quadratic for a polygon whose V- and H-cells cross like
+// a grid); the paper's histogram partition is O(n).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "geom/types.h"
+#include "router/link_cut.h"
+
+namespace taut::router {
+
+// Closed positions along b, measured from b's first end (empty when lo > hi).
+struct ReachInterval {
+  std::int64_t lo = 0, hi = -1;
+  bool empty() const { return lo > hi; }
+  bool meets(const ReachInterval& o) const { return !empty() && !o.empty() && lo <= o.hi && o.lo <= hi; }
+  bool contains(std::int64_t t) const { return lo <= t && t <= hi; }
+};
+
+struct BaseReach {
+  int links = -1;       // d(v, b): the fewest links of a path from v to a point of b whose last
+                        // link is perpendicular to b, where a path that comes along b's line may
+                        // turn on b in place (so links <= along + 1, as in the reference's
+                        // per-state counts); 0 for a vertex on b
+  ReachInterval at;     // e(v, links): the points of b such a path of `links` links reaches
+  ReachInterval next;   // e(v, links + 1) (contains `at`)
+  int along = -1;       // the fewest links of a path from v whose last link runs along b's line
+                        // over b (0 on b, 1 on that line elsewhere)
+};
+
+// polygon: a simple rectilinear ring, counter-clockwise, no repeated or collinear vertices.
+// b0-b1: an axis-parallel segment of positive length on one of its edges. One record per vertex
+// of the polygon, in ring order. std::invalid_argument for a segment that is not on an edge.
+std::vector<BaseReach> base_reach(const geom::Ring& polygon, geom::Point b0, geom::Point b1);
+
+// d(s, t) for vertices s, t off the cut, on its two sides, from their records for the same cut
+// (base_reach of each part with the cut's two ends): Lemma 2, d_s + d_t + (-1, 0 or +1 by how
+// their reach intervals meet), or a path along the cut's line from one or both sides.
+int links_across(const BaseReach& s, const BaseReach& t);
+
+// De Berg's query structure for the vertices of a simple rectilinear polygon (section 3.1): the
+// cut tree with base_reach() of both parts at every cut, and for every vertex its way down the
+// tree (the node, side and index of its record at each level, until it lies on a node's cut or
+// reaches a leaf). links(i, j) walks the two ways together to the node where they part: there
+// links_across() of the two records (or, when one lies on the cut, the other's record at that
+// point of the cut; in a leaf, a rectangle, 1 or 2). O(depth) = O(log n) per query (the paper
+// reaches O(1) with constant-time lowest common ancestors); O(n log n) records.
+//
+//   const LinkVertexQueries q(ring);   // counter-clockwise, no collinear vertices
+//   int d = q.links(i, j);              // d(ring[i], ring[j]) in links
+class LinkVertexQueries {
+ public:
+  explicit LinkVertexQueries(const geom::Ring& polygon);
+  int links(std::size_t i, std::size_t j) const;
+  const CutTree& tree() const { return tree_; }
+  std::size_t records() const;  // BaseReach records kept, over all nodes
+
+ private:
+  struct Step {
+    std::int32_t node = 0;
+    std::int8_t side = 0;  // 0 left, 1 right; -1 on the node's cut (index: position along it); -2 leaf
+    std::int64_t index = 0;
+  };
+  CutTree tree_;
+  std::vector<std::vector<BaseReach>> reach_[2];  // per node: its children's records
+  std::vector<std::vector<Step>> way_;            // per vertex of the polygon
+};
+
+}  // namespace taut::router

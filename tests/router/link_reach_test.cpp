@@ -1,0 +1,268 @@
+// router::base_reach and router::links_across (what de Berg's query structure keeps at a node of
+// the cut tree, seeds/002 section 3.1) against the brute-force reference alone:
+// oracle::LinkPolygonReference::arrival_links, a 0-1 search over the Hanan grid of the node's
+// polygon that counts, for every grid point of the cut, the fewest links of a path ending
+// perpendicular to it and of one ending along it. For every vertex of both parts of every cut of
+// the cut trees of random polyominoes (stretched so that x's and y's are shared everywhere),
+// thin winding walks, combs and spirals:
+//   - its link distance to the cut (perpendicular arrival) is the reference's least count;
+//   - the grid points its two intervals hold are exactly those the reference reaches within that
+//     many links and one more;
+//   - its along-the-line count is the reference's at every grid point of the cut;
+// and for every pair of vertices on the two sides, links_across equals the reference's d(s, t).
+#include "router/link_reach.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <random>
+
+#include "geom/predicates.h"
+#include "io/generate.h"
+#include "io/layout_geometry.h"
+#include "oracle/link_polygon_oracle.h"
+#include "router/link_cut.h"
+#include "router/link_polygon.h"
+#include "support/random_shapes.h"
+#include "support/sanitized.h"
+
+namespace taut::test {
+namespace {
+
+using geom::Point;
+using geom::Ring;
+
+std::string str(Point p) { return std::to_string(p.x) + "," + std::to_string(p.y); }
+std::string str(const Ring& r) {
+  std::string s;
+  for (const Point p : r) s += "(" + str(p) + ")";
+  return s;
+}
+
+struct Tally {
+  long long vertices = 0, grid_points = 0, pairs = 0, by_along = 0, plus_one = 0, links_3_up = 0;
+  int failed = 0;
+};
+
+// Checks every cut of `ring`'s cut tree; `at` names the case in failures.
+void check_cuts(const Ring& ring, const std::string& at, Tally& tally) {
+  auto fail = [&](const std::string& m) {
+    if (tally.failed++ < 8) ADD_FAILURE() << at << ": " << m;
+  };
+  const router::CutTree tree(ring);
+  const auto& nodes = tree.nodes();
+  for (const auto& node : nodes) {
+    if (!node.cut) continue;
+    const oracle::LinkPolygonReference ref(node.polygon);
+    const Point e0 = node.cut->from, e1 = node.cut->to;
+    const std::string cut = "polygon " + str(node.polygon) + " cut " + str(e0) + " -> " + str(e1);
+    struct Side {
+      const Ring* part;
+      std::vector<router::BaseReach> rec;
+    };
+    Side sides[2];
+    for (int k = 0; k < 2; ++k) {
+      const Ring& part = nodes[static_cast<std::size_t>(k == 0 ? node.left : node.right)].polygon;
+      sides[k].part = &part;
+      try {
+        sides[k].rec = router::base_reach(part, e0, e1);
+      } catch (const std::exception& ex) {
+        fail(cut + ": base_reach threw " + ex.what());
+        return;
+      }
+      for (std::size_t i = 0; i < part.size(); ++i) {
+        const Point v = part[i];
+        const router::BaseReach& r = sides[k].rec[i];
+        const std::string who = cut + ": vertex " + str(v);
+        if (geom::on_segment(v, e0, e1)) {
+          if (r.links != 0) fail(who + " on the cut has links " + std::to_string(r.links));
+          continue;
+        }
+        ++tally.vertices;
+        const auto arr = ref.arrival_links(v, e0, e1);
+        int d = -1;
+        for (const auto& a : arr)
+          if (a.perpendicular >= 0 && (d < 0 || a.perpendicular < d)) d = a.perpendicular;
+        if (r.links != d) {
+          fail(who + ": links " + std::to_string(r.links) + ", the reference " + std::to_string(d));
+          continue;
+        }
+        tally.links_3_up += d >= 3;
+        for (const auto& a : arr) {
+          ++tally.grid_points;
+          const std::int64_t t = std::abs(std::int64_t{a.x.x} - e0.x) + std::abs(std::int64_t{a.x.y} - e0.y);
+          const bool in_d = a.perpendicular >= 0 && a.perpendicular <= d, in_d1 = a.perpendicular >= 0 && a.perpendicular <= d + 1;
+          if (in_d != r.at.contains(t) || in_d1 != r.next.contains(t))
+            fail(who + ": at " + str(a.x) + " the reference counts " + std::to_string(a.perpendicular) + " (d " +
+                 std::to_string(d) + "), the intervals [" + std::to_string(r.at.lo) + "," + std::to_string(r.at.hi) + "] [" +
+                 std::to_string(r.next.lo) + "," + std::to_string(r.next.hi) + "] hold t = " + std::to_string(t) + ": " +
+                 std::to_string(r.at.contains(t)) + std::to_string(r.next.contains(t)));
+          if (a.along != r.along)
+            fail(who + ": along the cut to " + str(a.x) + " the reference counts " + std::to_string(a.along) + ", base_reach " +
+                 std::to_string(r.along));
+        }
+      }
+    }
+    for (std::size_t i = 0; i < sides[0].part->size(); ++i) {
+      const Point s = (*sides[0].part)[i];
+      if (geom::on_segment(s, e0, e1)) continue;
+      for (std::size_t j = 0; j < sides[1].part->size(); ++j) {
+        const Point t = (*sides[1].part)[j];
+        if (geom::on_segment(t, e0, e1)) continue;
+        const router::BaseReach &rs = sides[0].rec[i], &rt = sides[1].rec[j];
+        const std::optional<int> want = ref.distance(s, t);
+        const int got = router::links_across(rs, rt);
+        ++tally.pairs;
+        const int lemma = rs.links + rt.links + (rs.at.meets(rt.at) ? -1 : rs.next.meets(rt.at) || rs.at.meets(rt.next) ? 0 : 1);
+        tally.by_along += got < lemma;
+        tally.plus_one += got == rs.links + rt.links + 1;
+        if (!want || got != *want)
+          fail(cut + ": d(" + str(s) + " ; " + str(t) + ") = " + std::to_string(want ? *want : -1) + ", links_across " +
+               std::to_string(got));
+      }
+    }
+  }
+}
+
+TEST(BaseReach, MatchesTheReferenceOnEveryCut) {
+  const int count = kSanitized ? 150 : 600;
+  Tally tally;
+  for (int seed = 1; seed <= count; ++seed) {
+    std::mt19937 rng(static_cast<unsigned>(7000 + seed));
+    // every tenth polyomino sits against the coordinate limit (corner at 2^30 - 1 - its size)
+    const Point origin = seed % 10 == 1 ? Point{geom::kMaxCoord - 64, -geom::kMaxCoord} : Point{0, 0};
+    const Ring ring = seed % 3 == 0 ? random_thin_polygon(rng, 1 + seed % 2).ring
+                                    : random_rectilinear_polygon(rng, 3 + seed % 5, 6 + seed % 18, 1 + seed % 3, origin);
+    if (ring.size() > 40) continue;
+    check_cuts(ring, "seed " + std::to_string(seed) + " (" + std::to_string(ring.size()) + " vertices)", tally);
+  }
+  std::printf("%lld vertices against %lld grid points of their cuts (%lld at 3 links or more); %lld pairs across cuts, "
+              "%lld needing +1, %lld joined only along a cut's line\n",
+              tally.vertices, tally.grid_points, tally.links_3_up, tally.pairs, tally.plus_one, tally.by_along);
+  EXPECT_EQ(tally.failed, 0);
+  EXPECT_GE(tally.vertices, kSanitized ? 1000 : 5000);
+  EXPECT_GE(tally.links_3_up, kSanitized ? 50 : 200);
+  EXPECT_GE(tally.by_along, kSanitized ? 20 : 100);
+  EXPECT_GE(tally.plus_one, kSanitized ? 20 : 100);
+}
+
+TEST(BaseReach, HandMadeShapes) {
+  Tally tally;
+  // a comb (teeth 3 links apart) and a staircase
+  Ring comb{{0, 0}, {13, 0}, {13, 10}, {12, 10}, {12, 2}, {10, 2}, {10, 10}, {9, 10}, {9, 2}, {7, 2}, {7, 10}, {6, 10}, {6, 2},
+            {4, 2}, {4, 10}, {3, 10}, {3, 2}, {1, 2}, {1, 10}, {0, 10}};
+  check_cuts(comb, "comb", tally);
+  Ring stairs{{0, 0}, {8, 0}, {8, 1}, {7, 1}, {7, 2}, {6, 2}, {6, 3}, {5, 3}, {5, 4}, {4, 4}, {4, 5}, {0, 5}};
+  check_cuts(stairs, "staircase", tally);
+  EXPECT_EQ(tally.failed, 0);
+  EXPECT_GT(tally.pairs, 50);
+  // a segment not on an edge is refused
+  EXPECT_THROW(router::base_reach(stairs, {1, 1}, {2, 1}), std::invalid_argument);
+  EXPECT_THROW(router::base_reach(stairs, {0, 0}, {0, 0}), std::invalid_argument);
+}
+
+// The query structure: every pair of vertices against the reference on small polygons, and
+// against the graph search of LinkPolygon (the bend router's 0-1 search, another algorithm) on
+// larger ones.
+TEST(LinkVertexQueries, EveryPairMatches) {
+  const int count = kSanitized ? 100 : 400;
+  long long pairs = 0, big_pairs = 0;
+  int failed = 0, deepest = 0, largest = 0, far = 0;
+  for (int seed = 1; seed <= count; ++seed) {
+    std::mt19937 rng(static_cast<unsigned>(9000 + seed));
+    const bool big = seed % 8 == 0;
+    Ring ring = seed % 3 == 0 ? random_thin_polygon(rng, 1 + seed % 3).ring
+                              : random_rectilinear_polygon(rng, big ? 14 : 3 + seed % 6, big ? 90 : 6 + seed % 24, 1 + seed % 3, {0, 0});
+    ring = router::clean_ring(ring);
+    if (geom::twice_area(ring) < 0) std::reverse(ring.begin(), ring.end());
+    const router::LinkVertexQueries q(ring);
+    deepest = std::max(deepest, q.tree().depth());
+    largest = std::max(largest, static_cast<int>(ring.size()));
+    const std::string at = "seed " + std::to_string(seed) + " " + str(ring);
+    if (ring.size() <= 40) {
+      const oracle::LinkPolygonReference ref(ring);
+      for (std::size_t i = 0; i < ring.size(); ++i)
+        for (std::size_t j = 0; j < ring.size(); ++j) {
+          const int got = q.links(i, j);
+          const std::optional<int> want = ref.distance(ring[i], ring[j]);
+          ++pairs;
+          far += got >= 4;
+          if ((!want || got != *want) && failed++ < 8)
+            ADD_FAILURE() << at << ": d(" << str(ring[i]) << " ; " << str(ring[j]) << ") = " << (want ? *want : -1) << ", the queries "
+                          << got;
+        }
+    } else {
+      const router::LinkPolygon graph(ring);
+      for (std::size_t i = 0; i < ring.size(); ++i) {
+        const std::vector<int> want = graph.distances(ring[i], ring);
+        for (std::size_t j = 0; j < ring.size(); ++j) {
+          const int got = q.links(i, j);
+          ++big_pairs;
+          if (got != want[j] && failed++ < 8)
+            ADD_FAILURE() << at << ": d(" << str(ring[i]) << " ; " << str(ring[j]) << ") = " << want[j] << " by the graph, the queries "
+                          << got;
+        }
+      }
+    }
+  }
+  std::printf("%lld pairs against the reference (%d at 4 links or more), %lld against the graph search; up to %d vertices, depth %d\n",
+              pairs, far, big_pairs, largest, deepest);
+  EXPECT_EQ(failed, 0);
+  EXPECT_GE(pairs, kSanitized ? 10000 : 50000);
+  EXPECT_GE(big_pairs, kSanitized ? 5000 : 25000);
+}
+
+// Generated channels (`taut gen channel`: free space one winding polygon, diameters in the
+// hundreds) and a comb (every tooth tip 3 links from every other): from every tenth vertex to
+// every vertex, against the graph search.
+TEST(LinkVertexQueries, ChannelsAndACombMatchTheGraph) {
+  std::vector<std::pair<std::string, Ring>> cases;
+  for (const std::int64_t size : {kSanitized ? 200 : 1000, 300}) {
+    io::GenOptions go;
+    go.kind = io::GenKind::Channel;
+    go.size = size;
+    go.nets = 0;
+    go.seed = static_cast<std::uint64_t>(size);
+    const io::Layout layout = io::generate_layout(go);
+    const router::FreeSpacePolygon f = router::free_space_polygon(layout.boundary->box, io::blockage_polygons(layout));
+    ASSERT_EQ(f.status, router::FreeSpacePolygon::Status::Ok);
+    cases.emplace_back("channel " + std::to_string(size), f.ring);
+  }
+  const int teeth = 40;  // spine y in [0, 1], teeth of width 1 up to y = 5
+  Ring comb;
+  comb.push_back({0, 0});
+  comb.push_back({2 * teeth - 1, 0});
+  for (int t = teeth - 1; t >= 0; --t) {
+    comb.push_back({2 * t + 1, 5});
+    comb.push_back({2 * t, 5});
+    if (t > 0) {
+      comb.push_back({2 * t, 1});
+      comb.push_back({2 * t - 1, 1});
+    }
+  }
+  cases.emplace_back("comb", router::clean_ring(comb));
+  int failed = 0;
+  long long pairs = 0;
+  int diameter = 0;
+  for (const auto& [name, ring] : cases) {
+    const router::LinkVertexQueries q(ring);
+    const router::LinkPolygon graph(ring);
+    for (std::size_t i = 0; i < ring.size(); i += 10) {
+      const std::vector<int> want = graph.distances(ring[i], ring);
+      for (std::size_t j = 0; j < ring.size(); ++j) {
+        const int got = q.links(i, j);
+        ++pairs;
+        diameter = std::max(diameter, got);
+        if (got != want[j] && failed++ < 8)
+          ADD_FAILURE() << name << ": d(" << str(ring[i]) << " ; " << str(ring[j]) << ") = " << want[j] << " by the graph, the queries " << got;
+      }
+    }
+    std::printf("%s: %zu vertices, depth %d, %zu records\n", name.c_str(), ring.size(), q.tree().depth(), q.records());
+  }
+  std::printf("%lld pairs, the farthest %d links apart\n", pairs, diameter);
+  EXPECT_EQ(failed, 0);
+  EXPECT_GE(diameter, 30);
+}
+
+}  // namespace
+}  // namespace taut::test
