@@ -21,6 +21,7 @@
 //   bench_diameter [--sizes N,N,...] [--all-max N] [--ref-max N] [--seed S] [--shape channel|comb]
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -31,6 +32,7 @@
 #include "router/bend_router.h"
 #include "router/link_cut.h"
 #include "router/link_polygon.h"
+#include "router/link_reach.h"
 
 namespace {
 
@@ -41,6 +43,11 @@ struct Row {
   std::size_t n = 0, convex = 0, searches = 0;
   int links = 0;
   double build = 0, diameter = 0, query = 0, all = -1, ref = -1, cuts = 0;
+  // de Berg's structure (router/link_reach.h): its build, its diameter, one vertex-pair query
+  double qbuild = 0, qdiameter = 0, qlinks = 0, hybrid = 0;
+  bool hybrid_cut_tree = false;
+  std::size_t records = 0;
+  bool q_agree = true;
   int depth = 0;
   std::size_t tree_nodes = 0;
   bool all_agree = true, ref_agree = true;
@@ -129,7 +136,7 @@ int main(int argc, char** argv) {
     const auto& st = poly->graph_stats();
     row.edges = st.straight_edges + st.l_edges;
     taut::router::LinkDiameter d;
-    row.diameter = seconds_of([&] { d = poly->diameter(); }, 1);
+    row.diameter = seconds_of([&] { d = poly->diameter(SIZE_MAX); }, 1);  // the bounds alone
     row.links = d.links;
     row.convex = d.convex_vertices;
     row.searches = d.searches;
@@ -139,6 +146,27 @@ int main(int argc, char** argv) {
     row.cuts = seconds_of([&] { tree = std::make_unique<taut::router::CutTree>(poly->ring()); }, 1);
     row.depth = tree->depth();
     row.tree_nodes = tree->nodes().size();
+    std::unique_ptr<taut::router::LinkVertexQueries> vq;
+    row.qbuild = seconds_of([&] { vq = std::make_unique<taut::router::LinkVertexQueries>(poly->ring()); }, 1);
+    taut::router::LinkVertexQueries::Diameter qd;
+    row.qdiameter = seconds_of([&] { qd = vq->diameter(); }, 1);
+    row.q_agree = qd.links == d.links;
+    row.records = vq->records();
+    {
+      taut::router::LinkDiameter h;
+      row.hybrid = seconds_of([&] { h = poly->diameter(); }, 1);
+      row.hybrid_cut_tree = h.cut_tree;
+      row.q_agree = row.q_agree && h.links == d.links;
+    }
+    {
+      const std::size_t m = poly->ring().size();
+      long long sink = 0;
+      const int reps = 100000;
+      row.qlinks = seconds_of([&] {
+                     for (int r = 0; r < reps; ++r) sink += vq->links(static_cast<std::size_t>(r) * 7919 % m, static_cast<std::size_t>(r) * 104729 % m);
+                   }, 1) / reps;
+      taut::bench::keep(sink);
+    }
     if (static_cast<std::int64_t>(row.n) <= all_max) {
       int all = 0;
       row.all = seconds_of([&] { all = all_pairs(*poly); }, 1);
@@ -158,8 +186,15 @@ int main(int argc, char** argv) {
     std::printf("\n");
     std::printf("%8s cut tree (section 2): %.3f s (%.2f x the graph's build), %zu nodes, depth %d (log_4/3 n = %.1f)\n", "",
                 row.cuts, row.cuts / row.build, row.tree_nodes, row.depth, std::log(static_cast<double>(row.n)) / std::log(4.0 / 3.0));
+    std::printf("%8s de Berg's structure (sections 3.1, 4.1): build %.3f s (%.2f x the graph's), %zu records (%.1f per vertex); "
+                "diameter %.4f s%s (bounds / this: %.1f; with the builds: %.2f); a vertex pair %.2f us (graph query / this: %.0f); "
+                "taut diameter's default (the bounds, the cut tree after 32 searches): %.4f s by the %s\n",
+                "", row.qbuild, row.qbuild / row.build, row.records, static_cast<double>(row.records) / static_cast<double>(row.n),
+                row.qdiameter, row.q_agree ? "" : " MISMATCH", row.diameter / row.qdiameter,
+                (row.build + row.diameter) / (row.qbuild + row.qdiameter), row.qlinks * 1e6, row.query / row.qlinks, row.hybrid,
+                row.hybrid_cut_tree ? "cut tree" : "bounds");
     std::fflush(stdout);
-    if (!row.all_agree || !row.ref_agree) {
+    if (!row.all_agree || !row.ref_agree || !row.q_agree) {
       std::fprintf(stderr, "MISMATCH at n = %zu\n", row.n);
       return 1;
     }
@@ -169,15 +204,17 @@ int main(int argc, char** argv) {
               "time (a search from every convex vertex) over the diameter's; ref/: the exhaustive reference's time over "
               "the diameter's; all answers equal)\n");
   std::printf("\ngrowth exponents between consecutive sizes (1.0 = linear):\n");
-  std::printf("%8s -> %8s | %8s %8s %8s %8s %8s\n", "n1", "n2", "edges", "build", "diameter", "searches", "cut-tree");
+  std::printf("%8s -> %8s | %8s %8s %8s %8s %8s %8s %8s\n", "n1", "n2", "edges", "build", "diameter", "searches", "cut-tree",
+              "q-build", "q-diam");
   for (std::size_t i = 1; i < rows.size(); ++i) {
     const Row& a = rows[i - 1];
     const Row& b = rows[i];
     const double dn = std::log(static_cast<double>(b.n) / static_cast<double>(a.n));
-    std::printf("%8zu -> %8zu | %8.2f %8.2f %8.2f %8.2f %8.2f\n", a.n, b.n,
+    std::printf("%8zu -> %8zu | %8.2f %8.2f %8.2f %8.2f %8.2f %8.2f %8.2f\n", a.n, b.n,
                 std::log(static_cast<double>(b.edges) / static_cast<double>(a.edges)) / dn,
                 std::log(b.build / a.build) / dn, std::log(b.diameter / a.diameter) / dn,
-                std::log(static_cast<double>(b.searches) / static_cast<double>(a.searches)) / dn, std::log(b.cuts / a.cuts) / dn);
+                std::log(static_cast<double>(b.searches) / static_cast<double>(a.searches)) / dn, std::log(b.cuts / a.cuts) / dn,
+                std::log(b.qbuild / a.qbuild) / dn, std::log(b.qdiameter / a.qdiameter) / dn);
   }
   return 0;
 }

@@ -8,6 +8,7 @@
 #include "geom/normalize.h"
 #include "geom/predicates.h"
 #include "geom/validate.h"
+#include "router/link_reach.h"
 
 namespace taut::router {
 
@@ -198,7 +199,7 @@ std::optional<std::vector<int>> LinkPolygon::search(Point a, std::span<const Poi
   return out;
 }
 
-LinkDiameter LinkPolygon::diameter() const {
+LinkDiameter LinkPolygon::diameter(std::size_t search_budget) const {
   LinkDiameter out;
   out.vertices = ring_.size();
   const std::vector<Point> convex = convex_corners();
@@ -219,6 +220,15 @@ LinkDiameter LinkPolygon::diameter() const {
   out.from = out.to = convex.front();
   bool pick_high = true;
   while (left > 0) {
+    if (out.searches >= search_budget) {  // the bounds are not pruning: de Berg's divide and conquer
+      const LinkVertexQueries q(ring_);
+      const LinkVertexQueries::Diameter d = q.diameter();
+      out.links = d.links;
+      out.from = ring_[d.from];
+      out.to = ring_[d.to];
+      out.cut_tree = true;
+      break;
+    }
     std::size_t v = k;
     for (std::size_t i = 0; i < k; ++i) {
       if (!open[i]) continue;

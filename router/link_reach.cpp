@@ -1,6 +1,7 @@
 #include "router/link_reach.h"
 
 #include <algorithm>
+#include <array>
 #include <boost/geometry/index/rtree.hpp>
 #include <limits>
 #include <map>
@@ -77,15 +78,33 @@ class Shape {
   // How far the closed polygon reaches from boundary point p in direction d, along edges and
   // through reflex vertices: the far end of the maximal closed segment. `outward`: at a start
   // inside an edge, the direction out of the polygon there.
+  // Every vertex passed on the way gets the same answer, kept: a line through many vertices
+  // (a comb's spine) is walked once, not once per vertex.
   Point reach(Point p, Point d, Point outward) const {
+    const int dir = d.x > 0 ? 0 : d.y > 0 ? 1 : d.x < 0 ? 2 : 3;
+    if (far_.empty()) far_.assign(4 * size(), kUnknown);
+    std::vector<std::size_t> passed;
+    Point out = p;
     for (bool first = true;; first = false) {
       if (const auto i = vertex(p)) {
-        if (!can_leave(*i, d)) return p;
+        const Point known = far_[4 * *i + static_cast<std::size_t>(dir)];
+        if (known != kUnknown) {
+          out = known;
+          break;
+        }
+        passed.push_back(*i);
+        if (!can_leave(*i, d)) {
+          out = p;
+          break;
+        }
       } else if (!first || d == outward) {
-        return p;  // stopped inside an edge across the way
+        out = p;  // stopped inside an edge across the way
+        break;
       }
       p = shoot(p, d).first;
     }
+    for (const std::size_t i : passed) far_[4 * i + static_cast<std::size_t>(dir)] = out;
+    return out;
   }
   std::size_t edge_of(std::uint32_t id) const { return index_.edge_ref(id).vertex; }
 
@@ -94,6 +113,8 @@ class Shape {
   geom::Polygon poly_;
   geom::ObstacleIndex index_;
   std::map<std::pair<Coord, Coord>, std::size_t> vertex_;
+  static constexpr Point kUnknown{std::numeric_limits<Coord>::min(), 0};
+  mutable std::vector<Point> far_;  // reach() per vertex and direction (E, N, W, S)
 };
 
 // The vertical decomposition: a cut from every reflex vertex continuing its vertical edge through
@@ -414,6 +435,111 @@ int LinkVertexQueries::links(std::size_t i, std::size_t j) const {
       return links_across(reach_[s.side][static_cast<std::size_t>(s.node)][static_cast<std::size_t>(s.index)],
                           reach_[t.side][static_cast<std::size_t>(t.node)][static_cast<std::size_t>(t.index)]);
   }
+}
+
+namespace {
+
+// Whether some p of `ps` and q of `qs` have p.x < q.x and p.y < q.y; the pair's tags, if so.
+struct Tagged {
+  std::int64_t x, y;
+  std::size_t tag;
+};
+std::optional<std::pair<std::size_t, std::size_t>> dominated(std::vector<Tagged>& ps, std::vector<Tagged>& qs) {
+  auto by_x = [](const Tagged& a, const Tagged& b) { return a.x < b.x; };
+  std::sort(ps.begin(), ps.end(), by_x);
+  std::sort(qs.begin(), qs.end(), by_x);
+  std::size_t k = 0;
+  const Tagged* low = nullptr;  // the lowest p seen with p.x < q.x
+  for (const Tagged& q : qs) {
+    for (; k < ps.size() && ps[k].x < q.x; ++k)
+      if (!low || ps[k].y < low->y) low = &ps[k];
+    if (low && low->y < q.y) return std::pair{low->tag, q.tag};
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+LinkVertexQueries::Diameter LinkVertexQueries::diameter() const {
+  const auto& nodes = tree_.nodes();
+  const Ring& ring = nodes[0].polygon;
+  const std::size_t n = ring.size();
+  Diameter best;
+  // members[node][side]: (vertex, record index) of the convex vertices that pass the node there
+  std::vector<std::array<std::vector<std::pair<std::size_t, std::size_t>>, 2>> members(nodes.size());
+  std::vector<std::vector<std::size_t>> leaf(nodes.size());
+  for (std::size_t v = 0; v < n; ++v) {
+    if (geom::orientation(ring[(v + n - 1) % n], ring[v], ring[(v + 1) % n]) <= 0) continue;  // convex only
+    for (const Step& s : way_[v]) {
+      if (s.side >= 0) members[static_cast<std::size_t>(s.node)][static_cast<std::size_t>(s.side)].push_back({v, static_cast<std::size_t>(s.index)});
+      else if (s.side == -2) leaf[static_cast<std::size_t>(s.node)].push_back(v);
+    }
+  }
+  auto offer = [&](int links, std::size_t a, std::size_t b) {
+    if (links > best.links) best = {links, std::min(a, b), std::max(a, b)};
+  };
+  for (const auto& l : leaf)  // two corners of one rectangle
+    for (std::size_t i = 0; i < l.size(); ++i)
+      for (std::size_t j = i + 1; j < l.size(); ++j) offer(ring[l[i]].x == ring[l[j]].x || ring[l[i]].y == ring[l[j]].y ? 1 : 2, l[i], l[j]);
+  for (std::size_t k = 0; k < nodes.size(); ++k) {
+    const auto& side = members[k];
+    if (side[0].empty() || side[1].empty()) continue;
+    // groups by (d, kind), kind = min(along, d + 1) - d in {-1, 0, 1}: larger alongs change nothing
+    struct Group {
+      int d = 0, along = 0;
+      std::vector<std::size_t> at;  // indices into side[s]
+    };
+    std::map<std::pair<int, int>, Group> groups[2];
+    int top[2] = {0, 0};
+    for (int s = 0; s < 2; ++s)
+      for (const auto& [v, i] : side[s]) top[s] = std::max(top[s], reach_[s][k][i].links);
+    for (int s = 0; s < 2; ++s)
+      for (std::size_t m = 0; m < side[s].size(); ++m) {
+        const BaseReach& r = reach_[s][k][side[s][m].second];
+        if (r.links < top[s] - 3) continue;  // the top pair is at least top0 + top1 - 3 apart
+        const int along = std::min(r.along, r.links + 1);
+        Group& g = groups[s][{r.links, along}];
+        g.d = r.links, g.along = along;
+        g.at.push_back(m);
+      }
+    const auto rec = [&](int s, std::size_t m) -> const BaseReach& { return reach_[s][k][side[s][m].second]; };
+    for (const auto& [k1, g] : groups[0])
+      for (const auto& [k2, h] : groups[1]) {
+        const int sum = g.d + h.d;
+        const int along = std::min({g.d + h.along, g.along + h.d, g.along + h.along - 1});
+        if (std::min(sum + 1, along) <= best.links) continue;
+        // Lemma 2's +1: next_v misses at_w and at_v misses next_w, one wholly before the other
+        std::optional<std::pair<std::size_t, std::size_t>> w;
+        {
+          std::vector<Tagged> ps, qs;
+          for (const std::size_t m : g.at) ps.push_back({rec(0, m).next.hi, rec(0, m).at.hi, m});
+          for (const std::size_t m : h.at) qs.push_back({rec(1, m).at.lo, rec(1, m).next.lo, m});
+          w = dominated(ps, qs);
+        }
+        if (!w) {
+          std::vector<Tagged> ps, qs;
+          for (const std::size_t m : h.at) ps.push_back({rec(1, m).at.hi, rec(1, m).next.hi, m});
+          for (const std::size_t m : g.at) qs.push_back({rec(0, m).next.lo, rec(0, m).at.lo, m});
+          if (const auto x = dominated(ps, qs)) w = std::pair{x->second, x->first};
+        }
+        int delta = 1;
+        if (!w) {  // 0 when two at intervals miss each other
+          delta = 0;
+          auto lowest_hi = [&](int s, const std::vector<std::size_t>& ms) {
+            return *std::min_element(ms.begin(), ms.end(), [&](std::size_t a, std::size_t b) { return rec(s, a).at.hi < rec(s, b).at.hi; });
+          };
+          auto highest_lo = [&](int s, const std::vector<std::size_t>& ms) {
+            return *std::max_element(ms.begin(), ms.end(), [&](std::size_t a, std::size_t b) { return rec(s, a).at.lo < rec(s, b).at.lo; });
+          };
+          const std::size_t a0 = lowest_hi(0, g.at), b0 = highest_lo(1, h.at), a1 = highest_lo(0, g.at), b1 = lowest_hi(1, h.at);
+          if (rec(0, a0).at.hi < rec(1, b0).at.lo) w = std::pair{a0, b0};
+          else if (rec(1, b1).at.hi < rec(0, a1).at.lo) w = std::pair{a1, b1};
+          else delta = -1, w = std::pair{g.at.front(), h.at.front()};
+        }
+        offer(std::min(sum + delta, along), side[0][w->first].first, side[1][w->second].first);
+      }
+  }
+  return best;
 }
 
 }  // namespace taut::router

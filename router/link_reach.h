@@ -85,6 +85,20 @@ class LinkVertexQueries {
   explicit LinkVertexQueries(const geom::Ring& polygon);
   int links(std::size_t i, std::size_t j) const;
   const CutTree& tree() const { return tree_; }
+
+  // The link diameter over the polygon's convex vertices (where it is attained, de Berg section
+  // 4) by the divide and conquer of section 4.1: at every cut, the farthest pair across it from
+  // the records alone. Its link distance lies within [d_v + d_w - 3, d_v + d_w + 1] (Lemma 2
+  // and the along-the-cut paths), so only vertices within 3 of each side's largest d_v can be
+  // farther apart than the two largest; grouped by d_v and by how their along-the-cut count compares with it (3 kinds: the
+  // along paths are then the same for the whole group), a group pair's best Lemma 2 term comes
+  // from two dominance questions on the intervals' ends (Lemma 9's scan) and one comparison.
+  // O(n log^2 n) over the tree; the paper's O(n log n) keeps the ends presorted.
+  struct Diameter {
+    int links = 0;
+    std::size_t from = 0, to = 0;  // indices of two convex vertices that far apart
+  };
+  Diameter diameter() const;
   std::size_t records() const;  // BaseReach records kept, over all nodes
 
  private:

@@ -138,6 +138,8 @@ void add_diameter(CLI::App& app, int& status) {
       j["points"] = pts;
       j["vertices"] = d.vertices;
       j["convex_vertices"] = d.convex_vertices;
+      j["method"] = d.cut_tree ? "cut_tree" : "bounds";
+      j["searches"] = d.searches;
       std::cout << j.dump() << '\n';
     } else {
       std::cout << "link diameter " << d.links << " (" << bends << (bends == 1 ? " bend" : " bends") << "), from "

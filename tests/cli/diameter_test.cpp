@@ -122,6 +122,31 @@ TEST(Diameter, TwoWaysToWriteTheSamePolygon) {
   EXPECT_GE(links, 3);
 }
 
+// A comb of 40 teeth whose tips are all 3 links apart: the eccentricity bounds prune nothing, so
+// after 32 searches the command switches to de Berg's divide and conquer on the cut tree
+// ("method": "cut_tree"); the answer is the reference's. designs/diameter.xml stays with the
+// bounds ("method": "bounds", a few searches).
+TEST(Diameter, ACombSwitchesToTheCutTree) {
+  std::string body = "<boundary x0=\"0\" y0=\"0\" x1=\"79\" y1=\"5\"/>";
+  for (int t = 0; t + 1 < 40; ++t)  // the gaps between teeth [2t, 2t + 1] x [1, 5]
+    body += "<blockage id=\"gap" + std::to_string(t) + "\"><rect x0=\"" + std::to_string(2 * t + 1) + "\" y0=\"1\" x1=\"" +
+            std::to_string(2 * t + 2) + "\" y1=\"5\"/></blockage>";
+  const std::string f = test::layout_file("diameter_comb", body);
+  const test::RunResult r = run_taut({"diameter", f, "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  const geom::Ring ring = free_ring(f);
+  EXPECT_EQ(j["diameter"].get<int>(), 3);
+  EXPECT_EQ(j["diameter"].get<int>(), oracle::LinkPolygonReference(ring).diameter().links);
+  EXPECT_EQ(j["method"], "cut_tree");
+  EXPECT_EQ(j["searches"].get<int>(), 32);
+  EXPECT_EQ(j["convex_vertices"].get<int>(), 82);  // two per tooth, two at the bottom
+  expect_legal_wire(ring, j);
+  const test::RunResult d = run_taut({"diameter", kDesign, "--json"});
+  ASSERT_EQ(d.status, 0) << d.err;
+  EXPECT_EQ(nlohmann::json::parse(d.out)["method"], "bounds");
+}
+
 // Sloped blockage edges that free space never sees: outside the boundary, or under another
 // blockage. The diameter is computed.
 TEST(Diameter, SlopedEdgesFreeSpaceDoesNotSee) {

@@ -264,5 +264,46 @@ TEST(LinkVertexQueries, ChannelsAndACombMatchTheGraph) {
   EXPECT_GE(diameter, 30);
 }
 
+// The divide-and-conquer diameter: the reference's diameter over convex vertices on small
+// polygons, LinkPolygon's (eccentricity bounds over graph searches) on channels and combs; the
+// pair it names is that far apart.
+TEST(LinkVertexQueries, DiameterMatches) {
+  int failed = 0, checked = 0, largest = 0;
+  auto check = [&](const Ring& ring, int want, const std::string& at) {
+    const router::LinkVertexQueries q(ring);
+    const auto d = q.diameter();
+    ++checked;
+    largest = std::max(largest, d.links);
+    const std::size_t n = ring.size();
+    auto convex = [&](std::size_t i) { return geom::orientation(ring[(i + n - 1) % n], ring[i], ring[(i + 1) % n]) > 0; };
+    if ((d.links != want || !convex(d.from) || !convex(d.to) || q.links(d.from, d.to) != want) && failed++ < 8)
+      ADD_FAILURE() << at << ": diameter " << want << ", the cut tree's " << d.links << " between " << str(ring[d.from]) << " and "
+                    << str(ring[d.to]) << " (" << q.links(d.from, d.to) << " apart)";
+  };
+  for (int seed = 1; seed <= (kSanitized ? 150 : 600); ++seed) {
+    std::mt19937 rng(static_cast<unsigned>(11000 + seed));
+    Ring ring = seed % 3 == 0 ? random_thin_polygon(rng, 1 + seed % 3).ring
+                              : random_rectilinear_polygon(rng, 3 + seed % 6, 6 + seed % 30, 1 + seed % 3, {0, 0});
+    ring = router::clean_ring(ring);
+    if (geom::twice_area(ring) < 0) std::reverse(ring.begin(), ring.end());
+    if (ring.size() > 44) continue;
+    check(ring, oracle::LinkPolygonReference(ring).convex_vertex_diameter(), "seed " + std::to_string(seed) + " " + str(ring));
+  }
+  for (const std::int64_t size : {200, 500, 1000, 2000}) {
+    io::GenOptions go;
+    go.kind = io::GenKind::Channel;
+    go.size = size;
+    go.nets = 0;
+    go.seed = static_cast<std::uint64_t>(size + 7);
+    const io::Layout layout = io::generate_layout(go);
+    const router::FreeSpacePolygon f = router::free_space_polygon(layout.boundary->box, io::blockage_polygons(layout));
+    ASSERT_EQ(f.status, router::FreeSpacePolygon::Status::Ok);
+    check(f.ring, router::LinkPolygon(f.ring).diameter(SIZE_MAX).links, "channel " + std::to_string(size));
+  }
+  std::printf("%d polygons, diameters up to %d\n", checked, largest);
+  EXPECT_EQ(failed, 0);
+  EXPECT_GE(largest, 100);
+}
+
 }  // namespace
 }  // namespace taut::test
