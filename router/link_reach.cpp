@@ -207,7 +207,85 @@ ReachInterval merge(std::vector<ReachInterval>& parts) {
 
 }  // namespace
 
-std::vector<BaseReach> base_reach(const Ring& polygon, Point b0, Point b1) {
+using Item = std::pair<geom::Box, std::uint32_t>;
+using Tree = bgi::rtree<Item, bgi::quadratic<16>>;
+
+struct CutReach::Impl {
+  int k = 0;  // the frame: rotate(p, k) puts b's edge along +x with the polygon above it
+  Point c0, c1;
+  Coord yb = 0, xa = 0, xb = 0;
+  std::vector<Node> nodes;
+  std::vector<int> level, level2;
+  std::vector<ReachInterval> reach;
+  Tree vtree, htree;
+  std::vector<BaseReach> vertices;
+
+  ReachInterval to_base(ReachInterval r) const {  // x in the frame -> distance from b0 along b
+    if (r.empty()) return r;
+    if (c1.x > c0.x) return ReachInterval{r.lo - c0.x, r.hi - c0.x};
+    return ReachInterval{c0.x - r.hi, c0.x - r.lo};
+  }
+  // The record of a point p (in the frame) whose first links run along nodes v and h.
+  BaseReach record(Point p, std::uint32_t v, std::uint32_t h) const {
+    BaseReach r;
+    if (p.y == yb && xa <= p.x && p.x <= xb) {
+      r.links = 0, r.along = 0;
+      r.at = r.next = to_base({p.x, p.x});
+      return r;
+    }
+    // a point inside a cell standing on b reaches only its own foot with one link
+    auto reach_of = [&](std::uint32_t x) {
+      return nodes[x].kind == kVCell && level[x] == 1 ? ReachInterval{p.x, p.x} : reach[x];
+    };
+    const std::uint32_t best = level[v] <= level[h] ? v : h, other = best == v ? h : v;
+    if (level[best] != kNone) {
+      r.links = level[best];
+      r.at = reach_of(best);
+      r.next = r.at;
+      if (level[other] == r.links + 1) {
+        std::vector<ReachInterval> parts{r.at, reach_of(other)};
+        r.next = merge(parts);
+      }
+      r.at = to_base(r.at), r.next = to_base(r.next);
+    }
+    const int a = std::min(level2[v], level2[h]);
+    if (a != kNone) r.along = a + 1;
+    // a path that arrives along b's line may turn there in place: it reaches all of b
+    const ReachInterval all = to_base({xa, xb});
+    if (r.along >= 0 && (r.links < 0 || r.along + 1 <= r.links)) r.links = r.along + 1, r.at = all;
+    if (r.along >= 0 && r.along <= r.links) r.next = all;
+    return r;
+  }
+};
+
+CutReach::~CutReach() = default;
+CutReach::CutReach(CutReach&&) noexcept = default;
+CutReach& CutReach::operator=(CutReach&&) noexcept = default;
+const std::vector<BaseReach>& CutReach::vertices() const { return impl_->vertices; }
+
+std::optional<BaseReach> CutReach::at(Point q) const {
+  const Impl& m = *impl_;
+  const Point p = rotate(q, m.k);
+  const geom::Box box{p, p};
+  // the node each first link runs along: the maximal segment through p when p lies on one, else
+  // the cell whose closure holds p (p on no segment lies inside one cell's span that way)
+  auto find = [&](const Tree& tree, Kind segment_kind) -> std::optional<std::uint32_t> {
+    std::optional<std::uint32_t> cell;
+    for (auto it = tree.qbegin(bgi::intersects(box)); it != tree.qend(); ++it) {
+      if (m.nodes[it->second].kind == segment_kind) return it->second;
+      cell = it->second;
+    }
+    return cell;
+  };
+  const auto v = find(m.vtree, kVSeg), h = find(m.htree, kHSeg);
+  if (!v || !h) return std::nullopt;
+  return m.record(p, *v, *h);
+}
+
+std::vector<BaseReach> base_reach(const Ring& polygon, Point b0, Point b1) { return CutReach(polygon, b0, b1).vertices(); }
+
+CutReach::CutReach(const Ring& polygon, Point b0, Point b1) : impl_(std::make_unique<Impl>()) {
+  Impl& m = *impl_;
   const std::size_t n = polygon.size();
   // the frame: b's edge runs +x (the polygon above it)
   int k = -1;
@@ -217,6 +295,7 @@ std::vector<BaseReach> base_reach(const Ring& polygon, Point b0, Point b1) {
     const Point u = unit(a, b);
     k = u.x > 0 ? 0 : u.y > 0 ? 1 : u.x < 0 ? 2 : 3;
   }
+  m.k = k;
   if (k < 0) throw std::invalid_argument("base_reach: the base is not a segment of positive length on an edge");
   Ring ring;
   ring.reserve(n);
@@ -224,13 +303,14 @@ std::vector<BaseReach> base_reach(const Ring& polygon, Point b0, Point b1) {
   const Shape shape(ring);
   const Point c0 = rotate(b0, k), c1 = rotate(b1, k);
   const Coord yb = c0.y, xa = std::min(c0.x, c1.x), xb = std::max(c0.x, c1.x);
+  m.c0 = c0, m.c1 = c1, m.yb = yb, m.xa = xa, m.xb = xb;
   std::vector<Point> extra;
   for (const Point p : {c0, c1})
     if (!shape.vertex(p)) extra.push_back(p);
 
   // nodes: the cells of both decompositions, then the maximal segments through the vertices and
   // the base's ends
-  std::vector<Node> nodes;
+  std::vector<Node>& nodes = m.nodes;
   for (const geom::Box& b : vertical_cells(shape, extra)) nodes.push_back({kVCell, b});
   {
     Ring t;
@@ -260,11 +340,13 @@ std::vector<BaseReach> base_reach(const Ring& polygon, Point b0, Point b1) {
   at_vertex.reserve(n);
   for (const Point p : ring) at_vertex.push_back(through(p));
   const std::uint32_t base_line = through(c0).h;
+  through(c1);  // (its vertical segment: a point on the cut up from c1 lies on it)
 
-  using Item = std::pair<geom::Box, std::uint32_t>;
   std::vector<Item> vitems, hitems;
   for (std::uint32_t i = 0; i < nodes.size(); ++i) (vertical(nodes[i].kind) ? vitems : hitems).push_back({nodes[i].box, i});
-  const bgi::rtree<Item, bgi::quadratic<16>> vtree(vitems), htree(hitems);
+  m.vtree = Tree(vitems), m.htree = Tree(hitems);
+  const Tree& vtree = m.vtree;
+  const Tree& htree = m.htree;
   std::vector<Item> found;
   auto neighbours = [&](std::uint32_t x, auto&& visit) {
     found.clear();
@@ -274,8 +356,10 @@ std::vector<BaseReach> base_reach(const Ring& polygon, Point b0, Point b1) {
   };
 
   // search 1: from the base, arriving perpendicular to it
-  std::vector<int> level(nodes.size(), kNone);
-  std::vector<ReachInterval> reach(nodes.size());
+  std::vector<int>& level = m.level;
+  std::vector<ReachInterval>& reach = m.reach;
+  level.assign(nodes.size(), kNone);
+  reach.assign(nodes.size(), {});
   std::vector<std::uint32_t> frontier;
   for (std::uint32_t i = 0; i < nodes.size(); ++i) {
     const geom::Box& b = nodes[i].box;
@@ -303,7 +387,8 @@ std::vector<BaseReach> base_reach(const Ring& polygon, Point b0, Point b1) {
   }
 
   // search 2: from the base's line, arriving perpendicular to it (then one link along it)
-  std::vector<int> level2(nodes.size(), kNone);
+  std::vector<int>& level2 = m.level2;
+  level2.assign(nodes.size(), kNone);
   level2[base_line] = 0;
   frontier = {base_line};
   for (int d = 0; !frontier.empty(); ++d) {
@@ -319,40 +404,8 @@ std::vector<BaseReach> base_reach(const Ring& polygon, Point b0, Point b1) {
     frontier = std::move(next);
   }
 
-  auto to_base = [&](ReachInterval r) {  // x in the frame -> distance from b0 along b
-    if (r.empty()) return r;
-    if (c1.x > c0.x) return ReachInterval{r.lo - c0.x, r.hi - c0.x};
-    return ReachInterval{c0.x - r.hi, c0.x - r.lo};
-  };
-  std::vector<BaseReach> out(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const Point p = ring[i];
-    BaseReach& r = out[i];
-    if (p.y == yb && xa <= p.x && p.x <= xb) {
-      r.links = 0, r.along = 0;
-      r.at = r.next = to_base({p.x, p.x});
-      continue;
-    }
-    const auto [v, h] = at_vertex[i];
-    const std::uint32_t best = level[v] <= level[h] ? v : h, other = best == v ? h : v;
-    if (level[best] != kNone) {
-      r.links = level[best];
-      r.at = reach[best];
-      r.next = r.at;
-      if (level[other] == r.links + 1) {
-        std::vector<ReachInterval> parts{r.at, reach[other]};
-        r.next = merge(parts);
-      }
-      r.at = to_base(r.at), r.next = to_base(r.next);
-    }
-    const int a = std::min(level2[v], level2[h]);
-    if (a != kNone) r.along = a + 1;
-    // a path that arrives along b's line may turn there in place: it reaches all of b
-    const ReachInterval all = to_base({xa, xb});
-    if (r.along >= 0 && (r.links < 0 || r.along + 1 <= r.links)) r.links = r.along + 1, r.at = all;
-    if (r.along >= 0 && r.along <= r.links) r.next = all;
-  }
-  return out;
+  m.vertices.resize(n);
+  for (std::size_t i = 0; i < n; ++i) m.vertices[i] = m.record(ring[i], at_vertex[i].v, at_vertex[i].h);
 }
 
 int links_across(const BaseReach& s, const BaseReach& t) {
@@ -360,6 +413,56 @@ int links_across(const BaseReach& s, const BaseReach& t) {
   if (s.at.meets(t.at)) best = s.links + t.links - 1;
   else if (s.next.meets(t.at) || s.at.meets(t.next)) best = s.links + t.links;
   return std::min({best, s.links + t.along, s.along + t.links, s.along + t.along - 1});
+}
+
+int links_to_cut_point(const BaseReach& t, std::int64_t position) {
+  // arrive there perpendicular, or perpendicular elsewhere and then along the cut, or along the
+  // cut's line
+  return std::min(t.at.contains(position) ? t.links : t.links + 1, t.along);
+}
+
+LinkPointQueries::LinkPointQueries(const Ring& polygon) : tree_(polygon) {
+  const auto& nodes = tree_.nodes();
+  parts_.resize(nodes.size());
+  for (std::size_t k = 0; k < nodes.size(); ++k) {
+    const auto& node = nodes[k];
+    if (!node.cut) continue;
+    for (int side = 0; side < 2; ++side)
+      parts_[k][static_cast<std::size_t>(side)].emplace(nodes[static_cast<std::size_t>(side == 0 ? node.left : node.right)].polygon,
+                                                        node.cut->from, node.cut->to);
+  }
+}
+
+std::optional<int> LinkPointQueries::links(Point a, Point b) const {
+  const auto& nodes = tree_.nodes();
+  for (std::size_t k = 0;;) {
+    const auto& node = nodes[k];
+    if (!node.cut) {  // a rectangle (checked for containment only at the root: below, the parts did)
+      if (k == 0) {
+        const auto [lo, hi] = std::minmax_element(node.polygon.begin(), node.polygon.end(),
+                                                  [](Point p, Point q) { return std::pair{p.x, p.y} < std::pair{q.x, q.y}; });
+        for (const Point p : {a, b})
+          if (p.x < lo->x || p.x > hi->x || p.y < lo->y || p.y > hi->y) return std::nullopt;
+      }
+      return a == b ? 0 : a.x == b.x || a.y == b.y ? 1 : 2;
+    }
+    const PolygonCut& c = *node.cut;
+    const bool on_a = geom::on_segment(a, c.from, c.to), on_b = geom::on_segment(b, c.from, c.to);
+    if (on_a && on_b) return a == b ? 0 : 1;
+    auto locate = [&](Point p) -> std::optional<std::pair<int, BaseReach>> {
+      for (int side = 0; side < 2; ++side)
+        if (auto r = parts_[k][static_cast<std::size_t>(side)]->at(p)) return std::pair{side, *r};
+      return std::nullopt;
+    };
+    auto position = [&](Point p) { return std::abs(i64{p.x} - c.from.x) + std::abs(i64{p.y} - c.from.y); };
+    const auto ra = on_a ? std::nullopt : locate(a);
+    const auto rb = on_b ? std::nullopt : locate(b);
+    if ((!on_a && !ra) || (!on_b && !rb)) return std::nullopt;
+    if (on_a) return links_to_cut_point(rb->second, position(a));
+    if (on_b) return links_to_cut_point(ra->second, position(b));
+    if (ra->first != rb->first) return links_across(ra->second, rb->second);
+    k = static_cast<std::size_t>(ra->first == 0 ? node.left : node.right);
+  }
 }
 
 LinkVertexQueries::LinkVertexQueries(const Ring& polygon) : tree_(polygon) {
@@ -428,8 +531,7 @@ int LinkVertexQueries::links(std::size_t i, std::size_t j) const {
       // perpendicular elsewhere and along the cut, or along the cut's line
       const Step& off = s.side == -1 ? t : s;
       const std::int64_t pos = s.side == -1 ? s.index : t.index;
-      const BaseReach& r = reach_[off.side][static_cast<std::size_t>(off.node)][static_cast<std::size_t>(off.index)];
-      return std::min(r.at.contains(pos) ? r.links : r.links + 1, r.along);
+      return links_to_cut_point(reach_[off.side][static_cast<std::size_t>(off.node)][static_cast<std::size_t>(off.index)], pos);
     }
     if (s.side != t.side)
       return links_across(reach_[s.side][static_cast<std::size_t>(s.node)][static_cast<std::size_t>(s.index)],

@@ -33,7 +33,10 @@
 // a grid); the paper's histogram partition is O(n).
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <memory>
+#include <optional>
 #include <vector>
 
 #include "geom/types.h"
@@ -65,6 +68,23 @@ struct BaseReach {
 // of the polygon, in ring order. std::invalid_argument for a segment that is not on an edge.
 std::vector<BaseReach> base_reach(const geom::Ring& polygon, geom::Point b0, geom::Point b1);
 
+// The same search, kept: the record of any point of the polygon (section 3.2), found by locating
+// the point among the nodes (the maximal segment through it when it lies on one, else the cell
+// holding it) in an R-tree, O(log n).
+class CutReach {
+ public:
+  CutReach(const geom::Ring& polygon, geom::Point b0, geom::Point b1);  // as base_reach()
+  ~CutReach();
+  CutReach(CutReach&&) noexcept;
+  CutReach& operator=(CutReach&&) noexcept;
+  std::optional<BaseReach> at(geom::Point q) const;  // std::nullopt when q is outside
+  const std::vector<BaseReach>& vertices() const;   // base_reach()
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
 // d(s, t) for vertices s, t off the cut, on its two sides, from their records for the same cut
 // (base_reach of each part with the cut's two ends): Lemma 2, d_s + d_t + (-1, 0 or +1 by how
 // their reach intervals meet), or a path along the cut's line from one or both sides.
@@ -80,6 +100,26 @@ int links_across(const BaseReach& s, const BaseReach& t);
 //
 //   const LinkVertexQueries q(ring);   // counter-clockwise, no collinear vertices
 //   int d = q.links(i, j);              // d(ring[i], ring[j]) in links
+// d(q, t) for q on a cut at `position` (from its first end) and t off it, from t's record.
+int links_to_cut_point(const BaseReach& t, std::int64_t position);
+
+// Link distances between any two points of the polygon (section 3.2): the cut tree with both
+// parts' CutReach kept at every cut. A query goes down while both points lie on one side (each
+// located in a part by that part's R-tree), then takes links_across() of their records, or
+// links_to_cut_point() when one lies on the cut, or 0, 1 or 2 in a leaf rectangle. O(log n) per
+// level, O(log^2 n) in all (the paper: O(log n) with a monotone subdivision's point location).
+// Memory: every part's decomposition cells and segments, O(n log n).
+class LinkPointQueries {
+ public:
+  explicit LinkPointQueries(const geom::Ring& polygon);  // counter-clockwise, no collinear vertices
+  std::optional<int> links(geom::Point a, geom::Point b) const;  // std::nullopt: a or b outside
+  const CutTree& tree() const { return tree_; }
+
+ private:
+  CutTree tree_;
+  std::vector<std::array<std::optional<CutReach>, 2>> parts_;  // per node with a cut
+};
+
 class LinkVertexQueries {
  public:
   explicit LinkVertexQueries(const geom::Ring& polygon);

@@ -39,6 +39,14 @@ std::string str(const Ring& r) {
   return s;
 }
 
+// A random polyomino or, every third seed, a thin winding walk; cleaned, counter-clockwise.
+Ring random_polygon(std::mt19937& rng, int seed, int side, int cells, int stretch) {
+  Ring ring = seed % 3 == 0 ? random_thin_polygon(rng, stretch).ring : random_rectilinear_polygon(rng, side, cells, stretch, {0, 0});
+  ring = router::clean_ring(ring);
+  if (geom::twice_area(ring) < 0) std::reverse(ring.begin(), ring.end());
+  return ring;
+}
+
 struct Tally {
   long long vertices = 0, grid_points = 0, pairs = 0, by_along = 0, plus_one = 0, links_3_up = 0;
   int failed = 0;
@@ -171,10 +179,7 @@ TEST(LinkVertexQueries, EveryPairMatches) {
   for (int seed = 1; seed <= count; ++seed) {
     std::mt19937 rng(static_cast<unsigned>(9000 + seed));
     const bool big = seed % 8 == 0;
-    Ring ring = seed % 3 == 0 ? random_thin_polygon(rng, 1 + seed % 3).ring
-                              : random_rectilinear_polygon(rng, big ? 14 : 3 + seed % 6, big ? 90 : 6 + seed % 24, 1 + seed % 3, {0, 0});
-    ring = router::clean_ring(ring);
-    if (geom::twice_area(ring) < 0) std::reverse(ring.begin(), ring.end());
+    const Ring ring = random_polygon(rng, seed, big ? 14 : 3 + seed % 6, big ? 90 : 6 + seed % 24, 1 + seed % 3);
     const router::LinkVertexQueries q(ring);
     deepest = std::max(deepest, q.tree().depth());
     largest = std::max(largest, static_cast<int>(ring.size()));
@@ -264,6 +269,68 @@ TEST(LinkVertexQueries, ChannelsAndACombMatchTheGraph) {
   EXPECT_GE(diameter, 30);
 }
 
+// Any two points (section 3.2): vertices, points inside edges, points on the cuts of the tree
+// (their ends included), points on a vertex's lines, lattice points anywhere in the box (some
+// outside), against the reference's distance (nullopt outside).
+TEST(LinkPointQueries, RandomPointsMatchTheReference) {
+  const int count = kSanitized ? 60 : 300;
+  long long pairs = 0, outside = 0, on_cuts = 0;
+  int failed = 0;
+  for (int seed = 1; seed <= count; ++seed) {
+    std::mt19937 rng(static_cast<unsigned>(13000 + seed));
+    const Ring ring = random_polygon(rng, seed, 3 + seed % 5, 6 + seed % 20, 1 + seed % 4);
+    if (ring.size() > 36) continue;
+    const router::LinkPointQueries q(ring);
+    const oracle::LinkPolygonReference ref(ring);
+    geom::Coord x0 = ring[0].x, x1 = x0, y0 = ring[0].y, y1 = y0;
+    for (const Point p : ring) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+    auto between = [&](geom::Coord lo, geom::Coord hi) { return static_cast<geom::Coord>(lo + static_cast<geom::Coord>(rng() % static_cast<unsigned>(hi - lo + 1))); };
+    std::vector<Point> cut_points;
+    for (const auto& node : q.tree().nodes())
+      if (node.cut) {
+        const Point a = node.cut->from, b = node.cut->to;
+        cut_points.push_back(b);
+        cut_points.push_back({between(std::min(a.x, b.x), std::max(a.x, b.x)), between(std::min(a.y, b.y), std::max(a.y, b.y))});
+      }
+    std::vector<Point> pts;
+    for (int i = 0; i < 18; ++i) {
+      const Point v = ring[rng() % ring.size()], w = ring[(rng() % ring.size())];
+      switch (rng() % 5) {
+        case 0: pts.push_back(v); break;
+        case 1: {  // inside an edge
+          const std::size_t e = rng() % ring.size();
+          const Point a = ring[e], b = ring[(e + 1) % ring.size()];
+          pts.push_back({between(std::min(a.x, b.x), std::max(a.x, b.x)), between(std::min(a.y, b.y), std::max(a.y, b.y))});
+          break;
+        }
+        case 2:
+          if (!cut_points.empty()) {
+            pts.push_back(cut_points[rng() % cut_points.size()]);
+            break;
+          }
+          [[fallthrough]];
+        case 3: pts.push_back(rng() % 2 ? Point{v.x, w.y} : Point{v.x, between(y0, y1)}); break;  // on a vertex's line
+        default: pts.push_back({between(x0 - 1, x1 + 1), between(y0 - 1, y1 + 1)});
+      }
+    }
+    for (const Point a : pts)
+      for (const Point b : pts) {
+        const std::optional<int> want = ref.distance(a, b), got = q.links(a, b);
+        ++pairs;
+        outside += !want;
+        for (const Point c : cut_points) on_cuts += c == a;
+        if (got != want && failed++ < 8)
+          ADD_FAILURE() << "seed " << seed << " " << str(ring) << ": d(" << str(a) << " ; " << str(b) << ") = " << (want ? *want : -1)
+                        << ", the queries " << (got ? *got : -1);
+      }
+  }
+  std::printf("%lld point pairs (%lld with a point outside, %lld from a point on a cut)\n", pairs, outside, on_cuts);
+  EXPECT_EQ(failed, 0);
+  EXPECT_GE(pairs, kSanitized ? 10000 : 50000);
+  EXPECT_GE(outside, 500);
+  EXPECT_GE(on_cuts, 500);
+}
+
 // The divide-and-conquer diameter: the reference's diameter over convex vertices on small
 // polygons, LinkPolygon's (eccentricity bounds over graph searches) on channels and combs; the
 // pair it names is that far apart.
@@ -282,10 +349,7 @@ TEST(LinkVertexQueries, DiameterMatches) {
   };
   for (int seed = 1; seed <= (kSanitized ? 150 : 600); ++seed) {
     std::mt19937 rng(static_cast<unsigned>(11000 + seed));
-    Ring ring = seed % 3 == 0 ? random_thin_polygon(rng, 1 + seed % 3).ring
-                              : random_rectilinear_polygon(rng, 3 + seed % 6, 6 + seed % 30, 1 + seed % 3, {0, 0});
-    ring = router::clean_ring(ring);
-    if (geom::twice_area(ring) < 0) std::reverse(ring.begin(), ring.end());
+    const Ring ring = random_polygon(rng, seed, 3 + seed % 6, 6 + seed % 30, 1 + seed % 3);
     if (ring.size() > 44) continue;
     check(ring, oracle::LinkPolygonReference(ring).convex_vertex_diameter(), "seed " + std::to_string(seed) + " " + str(ring));
   }
