@@ -1,7 +1,8 @@
-// taut diameter FILE [--json] [--svg PIC]: the rectilinear link diameter of a layout whose free
+// taut diameter FILE [--json] [--svg PIC] [--method auto|bounds|cut-tree]: the rectilinear link diameter of a layout whose free
 // space is one simple rectilinear polygon (de Berg, seeds/002): the most links (axis-parallel
 // segments) a wire between two points of free space can need, the two points, and such a wire
 // (fewest links, L1-shortest).
+#include <cstdint>
 #include <iostream>
 
 #include <nlohmann/json.hpp>
@@ -84,7 +85,7 @@ std::optional<geom::Ring> diameter_free_space(const io::Layout& layout) {
 
 void add_diameter(CLI::App& app, int& status) {
   struct Args {
-    std::string file, svg;
+    std::string file, svg, method = "auto";
     bool json = false;
     LoadOptions load;
   };
@@ -95,8 +96,17 @@ void add_diameter(CLI::App& app, int& status) {
       "rectilinear polygon: the most links a wire between two free points can need (nets are not used)");
   sub->add_flag("--json", args->json, "print one JSON document on stdout");
   sub->add_option("--svg", args->svg, "also draw the layout with the diameter's wire");
+  sub->add_option("--method", args->method,
+                  "auto (default: link searches pruned by eccentricity bounds, de Berg's divide and conquer once 32 "
+                  "searches have not settled it), bounds (the searches only) or cut-tree (the divide and conquer only)");
   add_input_options(sub, args->file, args->load, "do not print warnings");
   sub->callback([args, &status] {
+    const std::size_t budget = args->method == "auto" ? 32 : args->method == "bounds" ? SIZE_MAX : 0;
+    if (args->method != "auto" && args->method != "bounds" && args->method != "cut-tree") {
+      print_usage_error("CLI-0029", "diameter: --method " + args->method + ": use auto, bounds or cut-tree");
+      status = kInvalid;
+      return;
+    }
     const auto layout = load_layout(args->file, args->load);
     if (!layout) {
       status = kInvalid;
@@ -108,7 +118,7 @@ void add_diameter(CLI::App& app, int& status) {
       return;
     }
     const router::LinkPolygon poly(*ring);
-    const router::LinkDiameter d = poly.diameter();
+    const router::LinkDiameter d = poly.diameter(budget);
     const int bends = d.links - 1;
     if (!args->svg.empty()) {
       io::SvgOptions so;
@@ -138,7 +148,7 @@ void add_diameter(CLI::App& app, int& status) {
       j["points"] = pts;
       j["vertices"] = d.vertices;
       j["convex_vertices"] = d.convex_vertices;
-      j["method"] = d.cut_tree ? "cut_tree" : "bounds";
+      j["method"] = d.cut_tree ? "cut-tree" : "bounds";
       j["searches"] = d.searches;
       std::cout << j.dump() << '\n';
     } else {
@@ -146,7 +156,10 @@ void add_diameter(CLI::App& app, int& status) {
                 << point_text(d.from) << " to " << point_text(d.to) << "; a wire of length " << d.path.length << ":";
       for (const geom::Point q : d.path.points) std::cout << ' ' << point_text(q);
       std::cout << "\nfree space: a simple rectilinear polygon of " << d.vertices << " vertices ("
-                << d.convex_vertices << " convex)\n";
+                << d.convex_vertices << " convex); found by "
+                << (d.cut_tree ? "de Berg's divide and conquer on the cut tree (after " + std::to_string(d.searches) + " searches)"
+                               : std::to_string(d.searches) + " link searches pruned by eccentricity bounds")
+                << "\n";
     }
     status = kOk;
   });

@@ -124,7 +124,7 @@ TEST(Diameter, TwoWaysToWriteTheSamePolygon) {
 
 // A comb of 40 teeth whose tips are all 3 links apart: the eccentricity bounds prune nothing, so
 // after 32 searches the command switches to de Berg's divide and conquer on the cut tree
-// ("method": "cut_tree"); the answer is the reference's. designs/diameter.xml stays with the
+// ("method": "cut-tree"); the answer is the reference's. designs/diameter.xml stays with the
 // bounds ("method": "bounds", a few searches).
 TEST(Diameter, ACombSwitchesToTheCutTree) {
   std::string body = "<boundary x0=\"0\" y0=\"0\" x1=\"79\" y1=\"5\"/>";
@@ -138,13 +138,30 @@ TEST(Diameter, ACombSwitchesToTheCutTree) {
   const geom::Ring ring = free_ring(f);
   EXPECT_EQ(j["diameter"].get<int>(), 3);
   EXPECT_EQ(j["diameter"].get<int>(), oracle::LinkPolygonReference(ring).diameter().links);
-  EXPECT_EQ(j["method"], "cut_tree");
+  EXPECT_EQ(j["method"], "cut-tree");
   EXPECT_EQ(j["searches"].get<int>(), 32);
   EXPECT_EQ(j["convex_vertices"].get<int>(), 82);  // two per tooth, two at the bottom
   expect_legal_wire(ring, j);
   const test::RunResult d = run_taut({"diameter", kDesign, "--json"});
   ASSERT_EQ(d.status, 0) << d.err;
   EXPECT_EQ(nlohmann::json::parse(d.out)["method"], "bounds");
+  // --method forces either: the same diameter both ways, on both layouts
+  for (const std::string& file : {f, kDesign}) {
+    int links[2] = {-1, -1};
+    for (int m = 0; m < 2; ++m) {
+      const test::RunResult x = run_taut({"diameter", file, "--json", "--method", m == 0 ? "bounds" : "cut-tree"});
+      ASSERT_EQ(x.status, 0) << x.err;
+      const nlohmann::json jx = nlohmann::json::parse(x.out);
+      EXPECT_EQ(jx["method"], m == 0 ? "bounds" : "cut-tree") << file;
+      links[m] = jx["diameter"].get<int>();
+      expect_legal_wire(free_ring(file), jx);
+    }
+    EXPECT_EQ(links[0], links[1]) << file;
+  }
+  const test::RunResult bad = run_taut({"diameter", kDesign, "--method", "fast"});
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("CLI-0029"), std::string::npos) << bad.err;
+  EXPECT_TRUE(bad.out.empty());
 }
 
 // Sloped blockage edges that free space never sees: outside the boundary, or under another
