@@ -51,14 +51,18 @@ Point transpose(Point p) { return {p.y, p.x}; }
 class Shape {
  public:
   explicit Shape(Ring ring) : ring_(std::move(ring)), poly_{ring_, {}}, index_({&poly_, 1}) {
-    for (std::size_t i = 0; i < ring_.size(); ++i) vertex_.emplace(std::pair{ring_[i].x, ring_[i].y}, i);
+    vertex_.reserve(ring_.size());
+    for (std::size_t i = 0; i < ring_.size(); ++i) vertex_.push_back({{ring_[i].x, ring_[i].y}, i});
+    std::sort(vertex_.begin(), vertex_.end());
   }
   const Ring& ring() const { return ring_; }
   std::size_t size() const { return ring_.size(); }
   const Point& at(std::size_t i) const { return ring_[i % ring_.size()]; }
   std::optional<std::size_t> vertex(Point p) const {
-    const auto it = vertex_.find({p.x, p.y});
-    if (it == vertex_.end()) return std::nullopt;
+    const std::pair<std::pair<Coord, Coord>, std::size_t> key{{p.x, p.y}, 0};
+    const auto it = std::lower_bound(vertex_.begin(), vertex_.end(), key,
+                                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    if (it == vertex_.end() || it->first != key.first) return std::nullopt;
     return it->second;
   }
   bool reflex(std::size_t i) const { return geom::orientation(at(i + size() - 1), at(i), at(i + 1)) < 0; }
@@ -112,7 +116,7 @@ class Shape {
   Ring ring_;
   geom::Polygon poly_;
   geom::ObstacleIndex index_;
-  std::map<std::pair<Coord, Coord>, std::size_t> vertex_;
+  std::vector<std::pair<std::pair<Coord, Coord>, std::size_t>> vertex_;  // sorted by position
   static constexpr Point kUnknown{std::numeric_limits<Coord>::min(), 0};
   mutable std::vector<Point> far_;  // reach() per vertex and direction (E, N, W, S)
 };
@@ -371,19 +375,22 @@ CutReach::CutReach(const Ring& polygon, Point b0, Point b1) : impl_(std::make_un
     }
     if (level[i] == 1) frontier.push_back(i);
   }
-  std::map<std::uint32_t, std::vector<ReachInterval>> pending;
+  std::vector<std::vector<ReachInterval>> pending(nodes.size());  // contributions to the next level
+  std::vector<std::uint32_t> next_frontier;
   for (int d = 1; !frontier.empty(); ++d) {
-    pending.clear();
     for (const std::uint32_t x : frontier)
       neighbours(x, [&](std::uint32_t y) {
         const bool xv = vertical(nodes[x].kind);
         if (!adjacent(nodes[xv ? x : y], nodes[xv ? y : x])) return;
         if (level[y] != kNone && level[y] != d + 1) return;
         level[y] = d + 1;
+        if (pending[y].empty()) next_frontier.push_back(y);
         pending[y].push_back(reach[x]);
       });
     frontier.clear();
-    for (auto& [y, parts] : pending) reach[y] = merge(parts), frontier.push_back(y);
+    for (const std::uint32_t y : next_frontier) reach[y] = merge(pending[y]), std::vector<ReachInterval>().swap(pending[y]);
+    frontier.swap(next_frontier);
+    next_frontier.clear();
   }
 
   // search 2: from the base's line, arriving perpendicular to it (then one link along it)
