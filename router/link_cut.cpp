@@ -16,15 +16,9 @@ using geom::Point;
 using geom::Ring;
 using i64 = std::int64_t;
 
-Point unit(Point a, Point b) {  // the direction of an axis-parallel step from a to b
-  return {static_cast<geom::Coord>((b.x > a.x) - (b.x < a.x)), static_cast<geom::Coord>((b.y > a.y) - (b.y < a.y))};
-}
-Point neg(Point d) { return {static_cast<geom::Coord>(-d.x), static_cast<geom::Coord>(-d.y)}; }
-geom::Direction ray_of(Point d) {
-  if (d.x > 0) return geom::Direction::E;
-  if (d.x < 0) return geom::Direction::W;
-  return d.y > 0 ? geom::Direction::N : geom::Direction::S;
-}
+using link_steps::neg;
+using link_steps::ray_of;
+using link_steps::unit;
 
 // One candidate: the extension from vertex i in direction d, meeting the boundary at `to`, which
 // is vertex j (at_vertex) or inside the edge from vertex j to j + 1.

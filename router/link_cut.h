@@ -28,9 +28,24 @@
 #include <optional>
 #include <vector>
 
+#include "geom/index.h"
 #include "geom/types.h"
 
 namespace taut::router {
+
+// Small helpers of the rectilinear link code (link_cut.cpp, link_reach.cpp): the unit step of an
+// axis-parallel move from a to b, a step reversed, and the ray direction of a unit step.
+namespace link_steps {
+inline geom::Point unit(geom::Point a, geom::Point b) {
+  return {static_cast<geom::Coord>((b.x > a.x) - (b.x < a.x)), static_cast<geom::Coord>((b.y > a.y) - (b.y < a.y))};
+}
+inline geom::Point neg(geom::Point d) { return {static_cast<geom::Coord>(-d.x), static_cast<geom::Coord>(-d.y)}; }
+inline geom::Direction ray_of(geom::Point d) {
+  if (d.x > 0) return geom::Direction::E;
+  if (d.x < 0) return geom::Direction::W;
+  return d.y > 0 ? geom::Direction::N : geom::Direction::S;
+}
+}  // namespace link_steps
 
 struct PolygonCut {
   geom::Point from;        // a reflex vertex of the polygon

@@ -26,15 +26,9 @@ namespace bgi = boost::geometry::index;
 
 constexpr int kNone = std::numeric_limits<int>::max();
 
-Point unit(Point a, Point b) {
-  return {static_cast<Coord>((b.x > a.x) - (b.x < a.x)), static_cast<Coord>((b.y > a.y) - (b.y < a.y))};
-}
-Point neg(Point d) { return {static_cast<Coord>(-d.x), static_cast<Coord>(-d.y)}; }
-geom::Direction ray_of(Point d) {
-  if (d.x > 0) return geom::Direction::E;
-  if (d.x < 0) return geom::Direction::W;
-  return d.y > 0 ? geom::Direction::N : geom::Direction::S;
-}
+using link_steps::neg;
+using link_steps::ray_of;
+using link_steps::unit;
 // Rotation by -90 degrees k times: 1 (x, y) -> (y, -x), 2 (-x, -y), 3 (-y, x).
 Point rotate(Point p, int k) {
   switch (k & 3) {
