@@ -27,7 +27,6 @@ bool rectilinear(const Ring& r) {
   return true;
 }
 
-
 // Lowest, then leftmost, first.
 bool lower(Point a, Point b) { return a.y != b.y ? a.y < b.y : a.x < b.x; }
 

@@ -25,8 +25,8 @@
 // worst case (a comb whose tooth tips are all equally far apart), O(k (V + E)). So after
 // `search_budget` searches (32 by default) it switches to de Berg's divide and conquer on the
 // rectilinear cutting theorem (router/link_reach.h: O(n log n) records, then the farthest pair
-// across every cut from them): about 9 times the graph's build on channels, where the bounds need
-// 3-6 searches, but n log n where the bounds need n searches (a 20,000-vertex comb: 17 s -> 1.3 s).
+// across every cut from them): 5-13 times the graph's build, where on channels the bounds need
+// 3-6 searches, but n log n where the bounds need n searches (a 20,000-vertex comb: 17 s -> 1.0 s).
 // The result says which found it. Budget 0: the cut tree always; SIZE_MAX: never.
 //
 // Counting. A path of l links has l - 1 bends. d(a, a) = 0; d(a, b) = 1 when the segment ab is

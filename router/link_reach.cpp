@@ -40,25 +40,33 @@ Point rotate(Point p, int k) {
 }
 Point transpose(Point p) { return {p.y, p.x}; }
 
+// A ring's vertices looked up by position (sorted; no two vertices of a simple ring coincide).
+class RingIndex {
+ public:
+  explicit RingIndex(const Ring& ring) {
+    sorted_.reserve(ring.size());
+    for (std::size_t i = 0; i < ring.size(); ++i) sorted_.push_back({{ring[i].x, ring[i].y}, i});
+    std::sort(sorted_.begin(), sorted_.end());
+  }
+  std::optional<std::size_t> find(Point p) const {
+    const std::pair<Coord, Coord> key{p.x, p.y};
+    const auto it = std::lower_bound(sorted_.begin(), sorted_.end(), key, [](const auto& a, const auto& k) { return a.first < k; });
+    if (it == sorted_.end() || it->first != key) return std::nullopt;
+    return it->second;
+  }
+
+ private:
+  std::vector<std::pair<std::pair<Coord, Coord>, std::size_t>> sorted_;
+};
+
 // A counter-clockwise simple rectilinear ring with its vertices looked up by position and its
 // edges in a ray-shooting index.
 class Shape {
  public:
-  explicit Shape(Ring ring) : ring_(std::move(ring)), poly_{ring_, {}}, index_({&poly_, 1}) {
-    vertex_.reserve(ring_.size());
-    for (std::size_t i = 0; i < ring_.size(); ++i) vertex_.push_back({{ring_[i].x, ring_[i].y}, i});
-    std::sort(vertex_.begin(), vertex_.end());
-  }
-  const Ring& ring() const { return ring_; }
+  explicit Shape(Ring ring) : ring_(std::move(ring)), poly_{ring_, {}}, index_({&poly_, 1}), vertex_(ring_) {}
   std::size_t size() const { return ring_.size(); }
   const Point& at(std::size_t i) const { return ring_[i % ring_.size()]; }
-  std::optional<std::size_t> vertex(Point p) const {
-    const std::pair<std::pair<Coord, Coord>, std::size_t> key{{p.x, p.y}, 0};
-    const auto it = std::lower_bound(vertex_.begin(), vertex_.end(), key,
-                                     [](const auto& a, const auto& b) { return a.first < b.first; });
-    if (it == vertex_.end() || it->first != key.first) return std::nullopt;
-    return it->second;
-  }
+  std::optional<std::size_t> vertex(Point p) const { return vertex_.find(p); }
   bool reflex(std::size_t i) const { return geom::orientation(at(i + size() - 1), at(i), at(i + 1)) < 0; }
   // Whether a path may leave vertex i in direction d (d in the closed interior wedge: along one of
   // its edges, or anywhere at a reflex vertex).
@@ -110,7 +118,7 @@ class Shape {
   Ring ring_;
   geom::Polygon poly_;
   geom::ObstacleIndex index_;
-  std::vector<std::pair<std::pair<Coord, Coord>, std::size_t>> vertex_;  // sorted by position
+  RingIndex vertex_;
   static constexpr Point kUnknown{std::numeric_limits<Coord>::min(), 0};
   mutable std::vector<Point> far_;  // reach() per vertex and direction (E, N, W, S)
 };
@@ -343,14 +351,26 @@ CutReach::CutReach(const Ring& polygon, Point b0, Point b1) : impl_(std::make_un
   std::vector<Item> vitems, hitems;
   for (std::uint32_t i = 0; i < nodes.size(); ++i) (vertical(nodes[i].kind) ? vitems : hitems).push_back({nodes[i].box, i});
   m.vtree = Tree(vitems), m.htree = Tree(hitems);
-  const Tree& vtree = m.vtree;
   const Tree& htree = m.htree;
-  std::vector<Item> found;
+  // the adjacency, found once (from the vertical nodes' side) for both searches, as compressed rows
+  std::vector<std::uint32_t> start(nodes.size() + 1, 0), adj;
+  {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    std::vector<Item> found;
+    for (const Item& v : vitems) {
+      found.clear();
+      htree.query(bgi::intersects(v.first), std::back_inserter(found));
+      for (const Item& h : found)
+        if (adjacent(nodes[v.second], nodes[h.second])) pairs.push_back({v.second, h.second});
+    }
+    for (const auto& [v, h] : pairs) ++start[v + 1], ++start[h + 1];
+    for (std::size_t i = 0; i < nodes.size(); ++i) start[i + 1] += start[i];
+    adj.resize(start.back());
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    for (const auto& [v, h] : pairs) adj[fill[v]++] = h, adj[fill[h]++] = v;
+  }
   auto neighbours = [&](std::uint32_t x, auto&& visit) {
-    found.clear();
-    const bool v = vertical(nodes[x].kind);
-    (v ? htree : vtree).query(bgi::intersects(nodes[x].box), std::back_inserter(found));
-    for (const Item& it : found) visit(it.second);
+    for (std::uint32_t i = start[x]; i < start[x + 1]; ++i) visit(adj[i]);
   };
 
   // search 1: from the base, arriving perpendicular to it
@@ -374,8 +394,6 @@ CutReach::CutReach(const Ring& polygon, Point b0, Point b1) : impl_(std::make_un
   for (int d = 1; !frontier.empty(); ++d) {
     for (const std::uint32_t x : frontier)
       neighbours(x, [&](std::uint32_t y) {
-        const bool xv = vertical(nodes[x].kind);
-        if (!adjacent(nodes[xv ? x : y], nodes[xv ? y : x])) return;
         if (level[y] != kNone && level[y] != d + 1) return;
         level[y] = d + 1;
         if (pending[y].empty()) next_frontier.push_back(y);
@@ -397,8 +415,6 @@ CutReach::CutReach(const Ring& polygon, Point b0, Point b1) : impl_(std::make_un
     for (const std::uint32_t x : frontier)
       neighbours(x, [&](std::uint32_t y) {
         if (level2[y] != kNone) return;
-        const bool xv = vertical(nodes[x].kind);
-        if (!adjacent(nodes[xv ? x : y], nodes[xv ? y : x])) return;
         level2[y] = d + 1;
         next.push_back(y);
       });
@@ -415,6 +431,13 @@ int links_across(const BaseReach& s, const BaseReach& t) {
   else if (s.next.meets(t.at) || s.at.meets(t.next)) best = s.links + t.links;
   return std::min({best, s.links + t.along, s.along + t.links, s.along + t.along - 1});
 }
+
+namespace {
+// A point's position on a cut (p on it): its distance from the cut's first end.
+i64 cut_position(const PolygonCut& c, Point p) { return std::abs(i64{p.x} - c.from.x) + std::abs(i64{p.y} - c.from.y); }
+// d(a, b) for two points of one rectangle.
+int rectangle_links(Point a, Point b) { return a == b ? 0 : a.x == b.x || a.y == b.y ? 1 : 2; }
+}  // namespace
 
 int links_to_cut_point(const BaseReach& t, std::int64_t position) {
   // arrive there perpendicular, or perpendicular elsewhere and then along the cut, or along the
@@ -445,7 +468,7 @@ std::optional<int> LinkPointQueries::links(Point a, Point b) const {
         for (const Point p : {a, b})
           if (p.x < lo->x || p.x > hi->x || p.y < lo->y || p.y > hi->y) return std::nullopt;
       }
-      return a == b ? 0 : a.x == b.x || a.y == b.y ? 1 : 2;
+      return rectangle_links(a, b);
     }
     const PolygonCut& c = *node.cut;
     const bool on_a = geom::on_segment(a, c.from, c.to), on_b = geom::on_segment(b, c.from, c.to);
@@ -455,12 +478,11 @@ std::optional<int> LinkPointQueries::links(Point a, Point b) const {
         if (auto r = parts_[k][static_cast<std::size_t>(side)]->at(p)) return std::pair{side, *r};
       return std::nullopt;
     };
-    auto position = [&](Point p) { return std::abs(i64{p.x} - c.from.x) + std::abs(i64{p.y} - c.from.y); };
     const auto ra = on_a ? std::nullopt : locate(a);
     const auto rb = on_b ? std::nullopt : locate(b);
     if ((!on_a && !ra) || (!on_b && !rb)) return std::nullopt;
-    if (on_a) return links_to_cut_point(rb->second, position(a));
-    if (on_b) return links_to_cut_point(ra->second, position(b));
+    if (on_a) return links_to_cut_point(rb->second, cut_position(c, a));
+    if (on_b) return links_to_cut_point(ra->second, cut_position(c, b));
     if (ra->first != rb->first) return links_across(ra->second, rb->second);
     k = static_cast<std::size_t>(ra->first == 0 ? node.left : node.right);
   }
@@ -469,10 +491,11 @@ std::optional<int> LinkPointQueries::links(Point a, Point b) const {
 LinkVertexQueries::LinkVertexQueries(const Ring& polygon) : tree_(polygon) {
   const auto& nodes = tree_.nodes();
   for (auto& r : reach_) r.resize(nodes.size());
-  std::vector<std::map<std::pair<Coord, Coord>, std::size_t>> index(nodes.size());
+  std::vector<RingIndex> index;
+  index.reserve(nodes.size());
   for (std::size_t k = 0; k < nodes.size(); ++k) {
     const auto& node = nodes[k];
-    for (std::size_t i = 0; i < node.polygon.size(); ++i) index[k].emplace(std::pair{node.polygon[i].x, node.polygon[i].y}, i);
+    index.emplace_back(node.polygon);
     if (!node.cut) continue;
     for (int side = 0; side < 2; ++side) {
       const auto child = static_cast<std::size_t>(side == 0 ? node.left : node.right);
@@ -490,19 +513,16 @@ LinkVertexQueries::LinkVertexQueries(const Ring& polygon) : tree_(polygon) {
       }
       const PolygonCut& c = *node.cut;
       if (geom::on_segment(p, c.from, c.to)) {
-        way_[v].push_back({k, -1, std::abs(i64{p.x} - c.from.x) + std::abs(i64{p.y} - c.from.y)});
+        way_[v].push_back({k, -1, cut_position(c, p)});
         break;
       }
       const std::int32_t child[2] = {node.left, node.right};
       int side = -1;
-      for (int s = 0; s < 2 && side < 0; ++s) {
-        const auto& m = index[static_cast<std::size_t>(child[s])];
-        const auto it = m.find({p.x, p.y});
-        if (it != m.end()) {
+      for (int s = 0; s < 2 && side < 0; ++s)
+        if (const auto i = index[static_cast<std::size_t>(child[s])].find(p)) {
           side = s;
-          way_[v].push_back({k, static_cast<std::int8_t>(s), static_cast<std::int64_t>(it->second)});
+          way_[v].push_back({k, static_cast<std::int8_t>(s), static_cast<std::int64_t>(*i)});
         }
-      }
       if (side < 0) throw std::logic_error("LinkVertexQueries: a vertex off the cut is in neither part");
       k = child[side];
     }
@@ -525,7 +545,7 @@ int LinkVertexQueries::links(std::size_t i, std::size_t j) const {
   for (std::size_t k = 0;; ++k) {
     const Step& s = a[k];
     const Step& t = b[k];
-    if (s.side == -2) return p.x == q.x || p.y == q.y ? 1 : 2;  // a rectangle
+    if (s.side == -2) return rectangle_links(p, q);
     if (s.side == -1 && t.side == -1) return 1;                  // both on the cut
     if (s.side == -1 || t.side == -1) {
       // one on the cut at position pos, the other's record: arrive there perpendicular, or
@@ -583,16 +603,12 @@ LinkVertexQueries::Diameter LinkVertexQueries::diameter() const {
   };
   for (const auto& l : leaf)  // two corners of one rectangle
     for (std::size_t i = 0; i < l.size(); ++i)
-      for (std::size_t j = i + 1; j < l.size(); ++j) offer(ring[l[i]].x == ring[l[j]].x || ring[l[i]].y == ring[l[j]].y ? 1 : 2, l[i], l[j]);
+      for (std::size_t j = i + 1; j < l.size(); ++j) offer(rectangle_links(ring[l[i]], ring[l[j]]), l[i], l[j]);
   for (std::size_t k = 0; k < nodes.size(); ++k) {
     const auto& side = members[k];
     if (side[0].empty() || side[1].empty()) continue;
     // groups by (d, kind), kind = min(along, d + 1) - d in {-1, 0, 1}: larger alongs change nothing
-    struct Group {
-      int d = 0, along = 0;
-      std::vector<std::size_t> at;  // indices into side[s]
-    };
-    std::map<std::pair<int, int>, Group> groups[2];
+    std::map<std::pair<int, int>, std::vector<std::size_t>> groups[2];  // (d, along) -> indices into side[s]
     int top[2] = {0, 0};
     for (int s = 0; s < 2; ++s)
       for (const auto& [v, i] : side[s]) top[s] = std::max(top[s], reach_[s][k][i].links);
@@ -600,29 +616,28 @@ LinkVertexQueries::Diameter LinkVertexQueries::diameter() const {
       for (std::size_t m = 0; m < side[s].size(); ++m) {
         const BaseReach& r = reach_[s][k][side[s][m].second];
         if (r.links < top[s] - 3) continue;  // the top pair is at least top0 + top1 - 3 apart
-        const int along = std::min(r.along, r.links + 1);
-        Group& g = groups[s][{r.links, along}];
-        g.d = r.links, g.along = along;
-        g.at.push_back(m);
+        groups[s][{r.links, std::min(r.along, r.links + 1)}].push_back(m);
       }
     const auto rec = [&](int s, std::size_t m) -> const BaseReach& { return reach_[s][k][side[s][m].second]; };
-    for (const auto& [k1, g] : groups[0])
-      for (const auto& [k2, h] : groups[1]) {
-        const int sum = g.d + h.d;
-        const int along = std::min({g.d + h.along, g.along + h.d, g.along + h.along - 1});
+    for (const auto& [gk, g] : groups[0])
+      for (const auto& [hk, h] : groups[1]) {
+        const auto [gd, galong] = gk;
+        const auto [hd, halong] = hk;
+        const int sum = gd + hd;
+        const int along = std::min({gd + halong, galong + hd, galong + halong - 1});
         if (std::min(sum + 1, along) <= best.links) continue;
         // Lemma 2's +1: next_v misses at_w and at_v misses next_w, one wholly before the other
         std::optional<std::pair<std::size_t, std::size_t>> w;
         {
           std::vector<Tagged> ps, qs;
-          for (const std::size_t m : g.at) ps.push_back({rec(0, m).next.hi, rec(0, m).at.hi, m});
-          for (const std::size_t m : h.at) qs.push_back({rec(1, m).at.lo, rec(1, m).next.lo, m});
+          for (const std::size_t m : g) ps.push_back({rec(0, m).next.hi, rec(0, m).at.hi, m});
+          for (const std::size_t m : h) qs.push_back({rec(1, m).at.lo, rec(1, m).next.lo, m});
           w = dominated(ps, qs);
         }
         if (!w) {
           std::vector<Tagged> ps, qs;
-          for (const std::size_t m : h.at) ps.push_back({rec(1, m).at.hi, rec(1, m).next.hi, m});
-          for (const std::size_t m : g.at) qs.push_back({rec(0, m).next.lo, rec(0, m).at.lo, m});
+          for (const std::size_t m : h) ps.push_back({rec(1, m).at.hi, rec(1, m).next.hi, m});
+          for (const std::size_t m : g) qs.push_back({rec(0, m).next.lo, rec(0, m).at.lo, m});
           if (const auto x = dominated(ps, qs)) w = std::pair{x->second, x->first};
         }
         int delta = 1;
@@ -634,10 +649,10 @@ LinkVertexQueries::Diameter LinkVertexQueries::diameter() const {
           auto highest_lo = [&](int s, const std::vector<std::size_t>& ms) {
             return *std::max_element(ms.begin(), ms.end(), [&](std::size_t a, std::size_t b) { return rec(s, a).at.lo < rec(s, b).at.lo; });
           };
-          const std::size_t a0 = lowest_hi(0, g.at), b0 = highest_lo(1, h.at), a1 = highest_lo(0, g.at), b1 = lowest_hi(1, h.at);
+          const std::size_t a0 = lowest_hi(0, g), b0 = highest_lo(1, h), a1 = highest_lo(0, g), b1 = lowest_hi(1, h);
           if (rec(0, a0).at.hi < rec(1, b0).at.lo) w = std::pair{a0, b0};
           else if (rec(1, b1).at.hi < rec(0, a1).at.lo) w = std::pair{a1, b1};
-          else delta = -1, w = std::pair{g.at.front(), h.at.front()};
+          else delta = -1, w = std::pair{g.front(), h.front()};
         }
         offer(std::min(sum + delta, along), side[0][w->first].first, side[1][w->second].first);
       }

@@ -28,9 +28,10 @@
 //     in a point (segments) or along a piece of positive length (a cell and a segment, two cells
 //     by area). Levels alternate in parity with the node's direction. What a node reaches on b
 //     is one interval (Lemma 3), the union of what its neighbours one level down reach.
-// Cost: O(n log n) to build the nodes, plus one R-tree query per node and the adjacencies it
-// reports (O(n) on the tested layouts, quadratic for a polygon whose V- and H-cells cross like
-// a grid); the paper's histogram partition is O(n).
+// Cost: O(n log n) to build the nodes, plus one R-tree query per vertical node for the
+// adjacencies (kept as compressed rows that both searches walk) and the pairs it reports (O(n)
+// on the tested layouts, quadratic for a polygon whose V- and H-cells cross like a grid); the
+// paper's histogram partition is O(n).
 #pragma once
 
 #include <array>
