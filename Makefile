@@ -61,6 +61,7 @@ bench: build
 	$(BUILD)/bench/bench_net_tree
 	$(BUILD)/bench/bench_bends
 	$(BUILD)/bench/bench_diameter
+	$(BUILD)/bench/bench_diameter_approx
 
 install: build
 	cmake --install $(BUILD) --prefix $(or $(PREFIX),/usr/local)

@@ -66,21 +66,6 @@ int all_pairs(const taut::router::LinkPolygon& poly) {
   return best;
 }
 
-// A comb of t teeth standing on a spine (4t + 4 vertices before cleaning): every tooth tip is 3
-// links from every other, so the eccentricity bounds prune nothing and the diameter searches
-// from every tip: the worst case of the method.
-taut::geom::Ring comb(std::int64_t size) {
-  const taut::geom::Coord t = static_cast<taut::geom::Coord>(std::max<std::int64_t>(1, (size - 4) / 4)), u = 100;
-  const taut::geom::Coord X = (4 * t + 2) * u, S = 3 * u, H = 40 * u;
-  taut::geom::Ring r = {{0, 0}, {X, 0}, {X, S}};
-  for (taut::geom::Coord i = t - 1; i >= 0; --i) {
-    const taut::geom::Coord a = (2 + 4 * i) * u;
-    r.insert(r.end(), {{a + 2 * u, S}, {a + 2 * u, S + H}, {a, S + H}, {a, S}});
-  }
-  r.push_back({0, S});
-  return r;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -115,7 +100,7 @@ int main(int argc, char** argv) {
     taut::router::FreeSpacePolygon f;
     if (shape == "comb") {
       f.status = taut::router::FreeSpacePolygon::Status::Ok;
-      f.ring = comb(size);
+      f.ring = taut::bench::comb(size);
     } else {
       taut::io::GenOptions go;
       go.kind = taut::io::GenKind::Channel;

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -104,6 +105,21 @@ inline std::vector<std::int64_t> parse_list(char* s) {
   std::vector<std::int64_t> v;
   for (char* tok = std::strtok(s, ","); tok; tok = std::strtok(nullptr, ",")) v.push_back(std::atoll(tok));
   return v;
+}
+
+// A comb of t teeth standing on a spine (4t + 4 vertices before cleaning): every tooth tip is 3
+// links from every other, so the eccentricity bounds prune nothing and the diameter searches
+// from every tip: the worst case of the method (bench_diameter, bench_diameter_approx).
+inline geom::Ring comb(std::int64_t size) {
+  const geom::Coord t = static_cast<geom::Coord>(std::max<std::int64_t>(1, (size - 4) / 4)), u = 100;
+  const geom::Coord X = (4 * t + 2) * u, S = 3 * u, H = 40 * u;
+  geom::Ring r = {{0, 0}, {X, 0}, {X, S}};
+  for (geom::Coord i = t - 1; i >= 0; --i) {
+    const geom::Coord a = (2 + 4 * i) * u;
+    r.insert(r.end(), {{a + 2 * u, S}, {a + 2 * u, S + H}, {a, S + H}, {a, S}});
+  }
+  r.push_back({0, S});
+  return r;
 }
 
 }  // namespace taut::bench

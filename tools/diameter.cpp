@@ -1,14 +1,16 @@
-// taut diameter FILE [--json] [--svg PIC] [--method auto|bounds|cut-tree]: the rectilinear link diameter of a layout whose free
-// space is one simple rectilinear polygon (de Berg, seeds/002): the most links (axis-parallel
+// taut diameter FILE [--json] [--svg PIC] [--method auto|bounds|cut-tree|approx]: the rectilinear link diameter of a layout
+// whose free space is one simple rectilinear polygon (de Berg, seeds/002): the most links (axis-parallel
 // segments) a wire between two points of free space can need, the two points, and such a wire
-// (fewest links, L1-shortest).
+// (fewest links, L1-shortest); with approx, only an estimate within 3 links (section 4.2).
 #include <cstdint>
 #include <iostream>
 
 #include <nlohmann/json.hpp>
 
+#include "geom/predicates.h"
 #include "io/layout_geometry.h"
 #include "io/svg.h"
+#include "router/link_approx.h"
 #include "router/link_polygon.h"
 #include "tools/cli.h"
 #include "tools/commands.h"
@@ -81,6 +83,42 @@ std::optional<geom::Ring> diameter_free_space(const io::Layout& layout) {
   return std::nullopt;
 }
 
+std::size_t convex_count(const geom::Ring& ring) {
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < ring.size(); ++i)
+    k += geom::orientation(ring[(i + ring.size() - 1) % ring.size()], ring[i], ring[(i + 1) % ring.size()]) > 0;
+  return k;
+}
+
+// --method approx: de Berg's MAXDIST (router/link_approx.h), no wire and no pair of points.
+template <class Args>
+int print_estimate(const io::Layout& layout, const geom::Ring& ring, const Args& args) {
+  const router::LinkDiameterEstimate e = router::approximate_link_diameter(ring);
+  const std::string range = "[" + std::to_string(e.lo) + ", " + std::to_string(e.hi) + "]";
+  if (!args.svg.empty()) {
+    io::SvgOptions so;
+    so.caption = "link diameter " + range + " (estimate " + std::to_string(e.estimate) + ", within 3)";
+    if (!write_output(args.svg, io::layout_to_svg(layout, so))) return kInvalid;
+  }
+  if (args.json) {
+    nlohmann::ordered_json j;
+    j["metric"] = "link";
+    j["method"] = "approx";
+    j["estimate"] = e.estimate;
+    j["bounds"] = {e.lo, e.hi};
+    j["vertices"] = ring.size();
+    j["convex_vertices"] = convex_count(ring);
+    j["cells"] = e.cells;
+    std::cout << j.dump() << '\n';
+  } else {
+    std::cout << "link diameter " << range << ": de Berg's estimate " << e.estimate
+              << ", within 3 links (no wire: use --method auto for the exact diameter and a wire)\n"
+              << "free space: a simple rectilinear polygon of " << ring.size() << " vertices (" << convex_count(ring)
+              << " convex), " << e.cells << " cells in its horizontal decomposition\n";
+  }
+  return kOk;
+}
+
 }  // namespace
 
 void add_diameter(CLI::App& app, int& status) {
@@ -98,12 +136,13 @@ void add_diameter(CLI::App& app, int& status) {
   sub->add_option("--svg", args->svg, "also draw the layout with the diameter's wire");
   sub->add_option("--method", args->method,
                   "auto (default: link searches pruned by eccentricity bounds, de Berg's divide and conquer once 32 "
-                  "searches have not settled it), bounds (the searches only) or cut-tree (the divide and conquer only)");
+                  "searches have not settled it), bounds (the searches only), cut-tree (the divide and conquer only) or "
+                  "approx (de Berg's estimate within 3 links, one sweep: for polygons too large for the others)");
   add_input_options(sub, args->file, args->load, "do not print warnings");
   sub->callback([args, &status] {
     const std::size_t budget = args->method == "auto" ? 32 : args->method == "bounds" ? SIZE_MAX : 0;
-    if (args->method != "auto" && args->method != "bounds" && args->method != "cut-tree") {
-      print_usage_error("CLI-0029", "diameter: --method " + args->method + ": use auto, bounds or cut-tree");
+    if (args->method != "auto" && args->method != "bounds" && args->method != "cut-tree" && args->method != "approx") {
+      print_usage_error("CLI-0029", "diameter: --method " + args->method + ": use auto, bounds, cut-tree or approx");
       status = kInvalid;
       return;
     }
@@ -115,6 +154,10 @@ void add_diameter(CLI::App& app, int& status) {
     const std::optional<geom::Ring> ring = diameter_free_space(*layout);
     if (!ring) {
       status = kInvalid;
+      return;
+    }
+    if (args->method == "approx") {
+      status = print_estimate(*layout, *ring, *args);
       return;
     }
     const router::LinkPolygon poly(*ring);

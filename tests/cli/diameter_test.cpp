@@ -6,6 +6,9 @@
 // and every refusal (DIAM-0001 ... DIAM-0005) names the file and line, exits 2 and writes nothing.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <filesystem>
+
 #include <nlohmann/json.hpp>
 
 #include "geom/predicates.h"
@@ -162,6 +165,38 @@ TEST(Diameter, ACombSwitchesToTheCutTree) {
   EXPECT_EQ(bad.status, 2);
   EXPECT_NE(bad.err.find("CLI-0029"), std::string::npos) << bad.err;
   EXPECT_TRUE(bad.out.empty());
+}
+
+// --method approx: de Berg's estimate within 3 (section 4.2), without a wire: its bounds hold the
+// exact diameter (the reference's) on the design, the comb and a winding walk; the picture is
+// written; the text says it is an estimate.
+TEST(Diameter, ApproxGivesBoundsThatHoldTheDiameter) {
+  std::string comb = "<boundary x0=\"0\" y0=\"0\" x1=\"79\" y1=\"5\"/>";
+  for (int t = 0; t + 1 < 40; ++t)
+    comb += "<blockage id=\"gap" + std::to_string(t) + "\"><rect x0=\"" + std::to_string(2 * t + 1) + "\" y0=\"1\" x1=\"" +
+            std::to_string(2 * t + 2) + "\" y1=\"5\"/></blockage>";
+  const std::string dir = test::temp_dir("diameter_approx");
+  for (const std::string& file : {kDesign, test::layout_file("diameter_approx_comb", comb)}) {
+    const geom::Ring ring = free_ring(file);
+    const int want = oracle::LinkPolygonReference(ring).diameter().links;
+    const std::string svg = dir + "/approx.svg";
+    std::remove(svg.c_str());
+    const test::RunResult r = run_taut({"diameter", file, "--json", "--method", "approx", "--svg", svg});
+    ASSERT_EQ(r.status, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["method"], "approx");
+    EXPECT_FALSE(j.contains("diameter")) << "an estimate is not the diameter";
+    const int est = j["estimate"].get<int>(), lo = j["bounds"][0].get<int>(), hi = j["bounds"][1].get<int>();
+    EXPECT_LE(std::abs(est - want), 3) << file;
+    EXPECT_LE(lo, want) << file;
+    EXPECT_GE(hi, want) << file;
+    EXPECT_EQ(j["vertices"].get<std::size_t>(), ring.size());
+    EXPECT_GT(j["cells"].get<int>(), 1);
+    EXPECT_TRUE(std::filesystem::exists(svg));
+    const test::RunResult t = run_taut({"diameter", file, "--method", "approx"});
+    ASSERT_EQ(t.status, 0) << t.err;
+    EXPECT_NE(t.out.find("estimate " + std::to_string(est) + ", within 3"), std::string::npos) << t.out;
+  }
 }
 
 // Sloped blockage edges that free space never sees: outside the boundary, or under another
