@@ -2,6 +2,7 @@
 // the geometry pipeline makes of it.
 #include <chrono>
 #include <iostream>
+#include <map>
 
 #include <nlohmann/json.hpp>
 
@@ -9,6 +10,7 @@
 #include "geom/triangulation.h"
 #include "io/layout_geometry.h"
 #include "io/stats_json.h"
+#include "router/check.h"
 #include "tools/cli.h"
 #include "tools/commands.h"
 
@@ -26,6 +28,85 @@ nlohmann::ordered_json diagnostics_json(const std::vector<Diagnostic>& ds) {
                    {"message", d.message}});
   }
   return arr;
+}
+
+// The independent part (router/check.h): free space, connectivity, shorts. Adds a diagnostic
+// per problem (CHECK-0003 ... 0006) and returns the counts per kind.
+struct RouteProblems {
+  int not_free = 0, disconnected = 0, stray = 0, shorts = 0;
+  std::size_t wires = 0;
+  int total() const { return not_free + disconnected + stray + shorts; }
+};
+RouteProblems check_independently(const io::Layout& layout, const std::string& file, const geom::NormalizedObstacles& bounded,
+                                  std::vector<Diagnostic>& diags) {
+  std::vector<router::CheckNet> nets;
+  std::vector<geom::Point> wire_points;
+  std::map<std::string, const io::Route*> by_net;
+  for (const io::Route& r : layout.routes->routes) by_net.emplace(r.net, &r);
+  for (const io::Net& n : layout.nets) {
+    router::CheckNet c;
+    c.name = n.name;
+    c.line = n.line;
+    for (const io::Pin& p : n.pins) {
+      router::CheckPin cp;
+      cp.name = p.name;
+      cp.line = p.line;
+      if (p.point) cp.point = *p.point;
+      else if (p.shape) cp.shape = io::shape_polygon(*p.shape);
+      c.pins.push_back(std::move(cp));
+    }
+    const auto it = by_net.find(n.name);
+    if (it != by_net.end() && it->second->status == "routed") {
+      c.routed = true;
+      c.line = it->second->line;
+      for (const io::Wire& w : it->second->wires) {
+        c.wires.push_back({w.points, w.line});
+        wire_points.insert(wire_points.end(), w.points.begin(), w.points.end());
+      }
+    }
+    nets.push_back(std::move(c));
+  }
+  // Without a <boundary> the plane is unbounded: the domain only has to hold every wire.
+  std::vector<std::size_t> owner;
+  const auto polys = io::blockage_polygons(layout, &owner);
+  const geom::NormalizedObstacles norm =
+      layout.boundary ? bounded : geom::normalize_obstacles(polys, io::routing_domain(layout, wire_points));
+  const router::CheckResult result = router::check_routes(norm, nets);
+  RouteProblems counts;
+  counts.wires = result.wires;
+  for (const router::CheckProblem& p : result.problems) {
+    std::string code, message = p.message;
+    switch (p.kind) {
+      case router::CheckProblem::Kind::NotFree:
+        code = "CHECK-0003";
+        ++counts.not_free;
+        if (p.obstacle && *p.obstacle < norm.sources.size()) {
+          std::string ids;
+          for (const std::size_t src : norm.sources[*p.obstacle]) {
+            const std::string& id = layout.blockages[owner[src]].id;
+            if (ids.find("\"" + id + "\"") == std::string::npos) ids += (ids.empty() ? "\"" : ", \"") + id + "\"";
+          }
+          message += " (blockage " + ids + ")";
+        }
+        break;
+      case router::CheckProblem::Kind::Disconnected:
+        code = "CHECK-0004";
+        ++counts.disconnected;
+        break;
+      case router::CheckProblem::Kind::StrayWire:
+        code = "CHECK-0005";
+        ++counts.stray;
+        break;
+      case router::CheckProblem::Kind::Short:
+        code = "CHECK-0006";
+        ++counts.shorts;
+        break;
+    }
+    Diagnostic d{Severity::Error, code, file, p.line, 0, message};
+    diags.push_back(d);
+    std::cerr << format(d) << '\n';
+  }
+  return counts;
 }
 
 }  // namespace
@@ -100,11 +181,11 @@ void add_check(CLI::App& app, int& status) {
       }
       auto t2 = Clock::now();
       if (layout->routes) {
-        // What can be checked today: the length and bends written for each routed net equal
-        // those recomputed from its wires, and with <routes orientations="rectilinear"> or
-        // "octilinear" every wire segment runs in those directions (CHECK-0002, the first
-        // offending segment of each route). Connectivity and clearance come with the
-        // independent checker (router/check, issue #7) and are not claimed here.
+        // The length and bends written for each routed net equal those recomputed from its
+        // wires, and with <routes orientations="rectilinear"> or "octilinear" every wire segment
+        // runs in those directions (CHECK-0002, the first offending segment of each route); then
+        // the independent checker (router/check.h): free space, connectivity, shorts. The
+        // clearance of <rules> is not checked yet.
         int mismatches = 0, off_orientation = 0;
         const std::string& orientations = layout->routes->orientations;
         const bool check_directions = orientations == "rectilinear" || orientations == "octilinear";
@@ -147,15 +228,25 @@ void add_check(CLI::App& app, int& status) {
               std::cerr << format(d) << '\n';
             }
         }
+        const RouteProblems rp = check_independently(*layout, args->file, norm, diags);
+        auto verdict = [](int n) { return n == 0 ? "ok" : "failed"; };
         j["routes_check"] = {{"lengths_and_bends", mismatches == 0 ? "ok" : "failed"},
                              {"mismatches", mismatches},
                              {"orientations", !check_directions        ? "not checked"
                                               : off_orientation == 0 ? "ok"
                                                                      : "failed"},
-                             {"connectivity_and_clearance", "not checked yet"}};
+                             {"free_space", verdict(rp.not_free)},
+                             {"connectivity", verdict(rp.disconnected + rp.stray)},
+                             {"shorts", verdict(rp.shorts)},
+                             {"problems", {{"not_free", rp.not_free},
+                                           {"disconnected_pins", rp.disconnected},
+                                           {"stray_wires", rp.stray},
+                                           {"shorts", rp.shorts}}},
+                             {"wires", rp.wires},
+                             {"clearance", "not checked yet"}};
         j["diagnostics"] = diagnostics_json(diags);
-        j["errors"] = errors + mismatches + off_orientation;
-        if (mismatches || off_orientation) status = kIncomplete;
+        j["errors"] = errors + mismatches + off_orientation + rp.total();
+        if (mismatches || off_orientation || rp.total()) status = kIncomplete;
       }
       j["free_space"] = {{"triangles", triangles}};
       j["seconds"] = {{"normalize", std::chrono::duration<double>(t1 - t0).count()},
@@ -179,7 +270,10 @@ void add_check(CLI::App& app, int& status) {
                           ? std::string("orientations not checked")
                           : layout->routes->orientations + " orientations " +
                                 j["routes_check"]["orientations"].get<std::string>())
-                  << "; connectivity and clearance are not checked yet\n";
+                  << "; free space " << j["routes_check"]["free_space"].get<std::string>() << "; connectivity "
+                  << j["routes_check"]["connectivity"].get<std::string>() << "; shorts between nets "
+                  << (j["routes_check"]["shorts"] == "ok" ? std::string("none") : std::string("found"))
+                  << "; the clearance of <rules> is not checked yet\n";
     }
   });
 }

@@ -1,5 +1,7 @@
 #include "support/run.h"
 
+#include <gtest/gtest.h>
+
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
@@ -99,6 +101,20 @@ bool file_exists(const std::string& path) { return fs::exists(path); }
 
 std::string shared_data_dir() {
   return fs::is_directory(fs::path(TAUT_SHARED_DATA) / "movingai") ? std::string(TAUT_SHARED_DATA) : "";
+}
+
+void expect_routes_check_except_shorts(const std::string& file) {
+  const RunResult r = run_taut({"check", file, "--json"});
+  ASSERT_TRUE(r.status == 0 || r.status == 1) << file << ": " << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(j.contains("routes_check")) << file;
+  const nlohmann::json& c = j["routes_check"];
+  EXPECT_EQ(c["lengths_and_bends"], "ok") << file << ": " << r.err;
+  EXPECT_NE(c["orientations"], "failed") << file << ": " << r.err;
+  EXPECT_EQ(c["free_space"], "ok") << file << ": " << r.err;
+  EXPECT_EQ(c["connectivity"], "ok") << file << ": " << r.err;
+  EXPECT_EQ(j["errors"].get<int>(), c["problems"]["shorts"].get<int>()) << file << ": " << r.err;
+  EXPECT_EQ(r.status, c["shorts"] == "ok" ? 0 : 1) << file;
 }
 
 }  // namespace taut::test

@@ -31,6 +31,12 @@ std::string layout_file(const std::string& folder, const std::string& body);
 // The points of a JSON array of [x, y] pairs (the "points" of `taut path --json`).
 std::vector<geom::Point> points_of(const nlohmann::json& pts);
 
+// `taut check FILE --json` on a routed file: every part the routers promise today passes (the
+// lengths and bends as written, the orientations, free space, connectivity). Shorts between nets
+// are allowed, as the routers do not keep nets apart yet (issue #7): the exit status is 0, or 1
+// with every error a short. Records a test failure (with the command's stderr) otherwise.
+void expect_routes_check_except_shorts(const std::string& file);
+
 // The public benchmark data folder (../shared/data beside the checkout, or -DTAUT_SHARED_DATA=),
 // or "" when it is absent. Tests that need it skip with a message when it is absent, except
 // under CI (environment variable CI set), where its absence is a failure.

@@ -1,0 +1,481 @@
+#include "router/check.h"
+
+#include <algorithm>
+#include <boost/geometry/index/rtree.hpp>
+#include <cstdint>
+#include <numeric>
+#include <set>
+#include <string>
+#include <utility>
+
+#include "geom/bg.h"
+#include "geom/predicates.h"
+
+namespace taut::router {
+namespace {
+
+namespace bgi = boost::geometry::index;
+using geom::Point;
+using i64 = std::int64_t;
+using i128 = __int128;
+
+std::string text(Point p) { return std::to_string(p.x) + "," + std::to_string(p.y); }
+
+// A direction: an integer vector (differences of coordinates, |component| < 2^31).
+struct Dir {
+  i64 x = 0, y = 0;
+};
+Dir dir(Point from, Point to) { return {i64{to.x} - from.x, i64{to.y} - from.y}; }
+i128 cross(Dir a, Dir b) { return i128{a.x} * b.y - i128{a.y} * b.x; }
+i128 dotp(Dir a, Dir b) { return i128{a.x} * b.x + i128{a.y} * b.y; }
+bool same(Dir a, Dir b) { return cross(a, b) == 0 && dotp(a, b) > 0; }
+// 0 when the counter-clockwise angle from a to u lies in [0, pi), else 1.
+int half(Dir a, Dir u) { return (cross(a, u) > 0 || (cross(a, u) == 0 && dotp(a, u) > 0)) ? 0 : 1; }
+// The counter-clockwise angle from a to u is smaller than the one from a to v (angles in [0, 2 pi)).
+bool before(Dir a, Dir u, Dir v) {
+  if (same(u, v)) return false;
+  if (same(a, u)) return true;
+  if (same(a, v)) return false;
+  const int hu = half(a, u), hv = half(a, v);
+  if (hu != hv) return hu < hv;
+  return cross(u, v) > 0;
+}
+
+// A directed ring edge with the material on its left; `next` is the ring's next edge.
+struct Edge {
+  Point s, t;
+  std::size_t next = 0;
+  std::optional<std::size_t> obstacle;  // none for the domain's sides
+  bool domain = false;
+};
+
+using EdgeBox = std::pair<geom::Box, std::size_t>;
+geom::Box box_of(Point a, Point b) {
+  return {{std::min(a.x, b.x), std::min(a.y, b.y)}, {std::max(a.x, b.x), std::max(a.y, b.y)}};
+}
+
+}  // namespace
+
+struct FreeSpaceChecker::Impl {
+  geom::Box domain;
+  const std::vector<geom::Polygon>* obstacles = nullptr;
+  std::vector<Edge> edges;
+  bgi::rtree<EdgeBox, bgi::rstar<16>> edge_tree;
+  bgi::rtree<EdgeBox, bgi::rstar<16>> obstacle_tree;  // obstacles' bounding boxes
+
+  explicit Impl(const geom::NormalizedObstacles& norm) : domain(norm.domain), obstacles(&norm.obstacles) {
+    auto add_ring = [&](const geom::Ring& ring, std::optional<std::size_t> obstacle, bool is_domain) {
+      const std::size_t first = edges.size(), n = ring.size();
+      for (std::size_t i = 0; i < n; ++i) {
+        Edge e;
+        e.s = ring[i];
+        e.t = ring[(i + 1) % n];
+        e.next = first + (i + 1) % n;
+        e.obstacle = obstacle;
+        e.domain = is_domain;
+        edges.push_back(e);
+      }
+    };
+    for (std::size_t k = 0; k < norm.obstacles.size(); ++k) {
+      const geom::Polygon& poly = norm.obstacles[k];
+      add_ring(poly.outer, k, false);
+      for (const geom::Ring& h : poly.holes) add_ring(h, k, false);
+    }
+    // The domain as a clockwise ring: the material (outside) on the left of every side.
+    const geom::Box& d = domain;
+    add_ring({{d.lo.x, d.lo.y}, {d.lo.x, d.hi.y}, {d.hi.x, d.hi.y}, {d.hi.x, d.lo.y}}, std::nullopt, true);
+    std::vector<EdgeBox> boxes;
+    boxes.reserve(edges.size());
+    for (std::size_t i = 0; i < edges.size(); ++i)
+      if (edges[i].s != edges[i].t) boxes.emplace_back(box_of(edges[i].s, edges[i].t), i);
+    edge_tree = decltype(edge_tree)(boxes.begin(), boxes.end());
+    std::vector<EdgeBox> obs;
+    for (std::size_t k = 0; k < norm.obstacles.size(); ++k) {
+      geom::Box b{norm.obstacles[k].outer.front(), norm.obstacles[k].outer.front()};
+      for (const Point p : norm.obstacles[k].outer) b = geom::Box{{std::min(b.lo.x, p.x), std::min(b.lo.y, p.y)}, {std::max(b.hi.x, p.x), std::max(b.hi.y, p.y)}};
+      obs.emplace_back(b, k);
+    }
+    obstacle_tree = decltype(obstacle_tree)(obs.begin(), obs.end());
+  }
+
+  std::vector<std::size_t> edges_near(const geom::Box& b) const {
+    std::vector<EdgeBox> hits;
+    edge_tree.query(bgi::intersects(b), std::back_inserter(hits));
+    std::vector<std::size_t> out;
+    out.reserve(hits.size());
+    for (const auto& h : hits) out.push_back(h.second);
+    return out;
+  }
+
+  bool in_domain(Point p) const { return p.x >= domain.lo.x && p.x <= domain.hi.x && p.y >= domain.lo.y && p.y <= domain.hi.y; }
+
+  // The free sectors around p: sorted boundary directions, and per sector (from dirs[i] to
+  // dirs[i + 1], cyclically) whether it is free. `on_ring` false: p touches no ring (then
+  // `inside` tells whether it lies in an obstacle, the obstacle in `hit`).
+  struct Around {
+    bool on_ring = false, inside = false;
+    std::optional<std::size_t> hit;
+    std::vector<Dir> dirs;
+    std::vector<char> free;
+    // u (and v) in the closure of one free sector
+    bool in_one(Dir u, Dir v) const {
+      if (!on_ring) return !inside;
+      const std::size_t k = dirs.size();
+      for (std::size_t i = 0; i < k; ++i) {
+        if (!free[i]) continue;
+        const Dir a = dirs[i], b = dirs[(i + 1) % k];
+        auto holds = [&](Dir w) { return same(w, a) || same(w, b) || (k == 1 ? true : before(a, w, b)); };
+        if (holds(u) && holds(v)) return true;
+      }
+      return false;
+    }
+  };
+  Around around(Point p) const {
+    Around r;
+    // The ring edges at p, as directions from p: an edge leaving p has the material just
+    // counter-clockwise of it (on its left); an edge arriving at p has it just clockwise of the
+    // direction back along it, which is the same sector seen from its other end, so the
+    // leaving edges alone decide. (Pairing each ring visit's two edges fails where a ring
+    // touches itself at p.)
+    struct Ray {
+      Dir d;
+      bool out = false;
+    };
+    std::vector<Ray> rays;
+    auto add = [&](Dir d, bool out) {
+      for (Ray& x : rays)
+        if (same(x.d, d)) {
+          x.out = x.out || out;
+          return;
+        }
+      rays.push_back({d, out});
+    };
+    for (const std::size_t i : edges_near({p, p})) {
+      const Edge& e = edges[i];
+      if (!geom::on_segment(p, e.s, e.t)) continue;
+      r.on_ring = true;
+      if (!r.hit) r.hit = e.obstacle;
+      if (p != e.t) add(dir(p, e.t), true);
+      if (p != e.s) add(dir(p, e.s), false);
+    }
+    if (!r.on_ring) {
+      std::vector<EdgeBox> hits;
+      obstacle_tree.query(bgi::intersects(geom::Box{p, p}), std::back_inserter(hits));
+      for (const auto& h : hits)
+        if (geom::locate(p, (*obstacles)[h.second]) == geom::Location::Inside) {
+          r.inside = true;
+          r.hit = h.second;
+        }
+      if (!in_domain(p)) r.inside = true;
+      return r;
+    }
+    const Dir base = rays.front().d;
+    std::sort(rays.begin(), rays.end(), [&](const Ray& u, const Ray& v) { return before(base, u.d, v.d); });
+    const std::size_t k = rays.size();
+    r.dirs.resize(k);
+    r.free.resize(k);
+    for (std::size_t i = 0; i < k; ++i) {
+      r.dirs[i] = rays[i].d;
+      r.free[i] = !rays[i].out;
+    }
+    return r;
+  }
+
+  // Segment ab (a != b): free, with its ends only required to leave into some wedge.
+  Verdict segment(Point a, Point b) const {
+    Verdict v;
+    auto fail = [&](Point at, std::optional<std::size_t> obstacle, std::string why) {
+      v.free = false;
+      v.at = at;
+      v.obstacle = obstacle;
+      v.why = std::move(why);
+      return v;
+    };
+    if (!in_domain(a)) return fail(a, std::nullopt, "the point " + text(a) + " lies outside the routing area");
+    if (!in_domain(b)) return fail(b, std::nullopt, "the point " + text(b) + " lies outside the routing area");
+    std::vector<Point> contacts;
+    for (const std::size_t i : edges_near(box_of(a, b))) {
+      const Edge& e = edges[i];
+      switch (geom::intersect({a, b}, {e.s, e.t})) {
+        case geom::SegmentIntersection::None:
+          continue;
+        case geom::SegmentIntersection::Proper:
+          return fail(a, e.obstacle,
+                      e.domain ? "the segment " + text(a) + " " + text(b) + " crosses the side of the routing area"
+                               : "the segment " + text(a) + " " + text(b) + " crosses a blockage edge (" + text(e.s) + " " +
+                                     text(e.t) + ")");
+        case geom::SegmentIntersection::Overlap:
+          [[fallthrough]];
+        case geom::SegmentIntersection::Touch:
+          for (const Point p : {e.s, e.t})
+            if (geom::on_segment(p, a, b)) contacts.push_back(p);
+          for (const Point p : {a, b})
+            if (geom::on_segment(p, e.s, e.t)) contacts.push_back(p);
+          break;
+      }
+    }
+    if (contacts.empty()) {
+      const Around r = around(a);
+      if (r.inside) return fail(a, r.hit, "the point " + text(a) + " lies inside a blockage");
+      return v;
+    }
+    std::sort(contacts.begin(), contacts.end());
+    contacts.erase(std::unique(contacts.begin(), contacts.end()), contacts.end());
+    for (const Point q : contacts) {
+      const Around r = around(q);
+      const Dir to_a = dir(q, a), to_b = dir(q, b);
+      const bool ok = q == a ? r.in_one(to_b, to_b) : q == b ? r.in_one(to_a, to_a) : r.in_one(to_a, to_b);
+      if (!ok)
+        return fail(q, r.hit,
+                    q == a || q == b ? "the segment " + text(a) + " " + text(b) + " leaves " + text(q) + " into a blockage"
+                                     : "the segment " + text(a) + " " + text(b) + " passes through " + text(q) +
+                                           " into a blockage, or through a point where blockages touch");
+    }
+    return v;
+  }
+};
+
+FreeSpaceChecker::FreeSpaceChecker(const geom::NormalizedObstacles& obstacles) : impl_(std::make_unique<Impl>(obstacles)) {}
+FreeSpaceChecker::~FreeSpaceChecker() = default;
+FreeSpaceChecker::FreeSpaceChecker(FreeSpaceChecker&&) noexcept = default;
+FreeSpaceChecker& FreeSpaceChecker::operator=(FreeSpaceChecker&&) noexcept = default;
+
+bool FreeSpaceChecker::point_free(Point p) const {
+  if (!impl_->in_domain(p)) return false;
+  const Impl::Around r = impl_->around(p);
+  if (!r.on_ring) return !r.inside;
+  return std::any_of(r.free.begin(), r.free.end(), [](char f) { return f != 0; });
+}
+
+FreeSpaceChecker::Verdict FreeSpaceChecker::polyline(std::span<const Point> points) const {
+  Verdict v;
+  // Distinct consecutive points only (a repeated point adds nothing).
+  std::vector<Point> p;
+  for (const Point q : points)
+    if (p.empty() || p.back() != q) p.push_back(q);
+  if (p.empty()) return v;
+  if (p.size() == 1) {
+    if (!point_free(p[0])) {
+      v.free = false;
+      v.at = p[0];
+      v.why = "the point " + text(p[0]) + " is not in free space";
+    }
+    return v;
+  }
+  for (std::size_t i = 0; i + 1 < p.size(); ++i) {
+    v = impl_->segment(p[i], p[i + 1]);
+    if (!v.free) return v;
+  }
+  for (std::size_t i = 1; i + 1 < p.size(); ++i) {
+    const Impl::Around r = impl_->around(p[i]);
+    if (!r.on_ring) continue;
+    if (!r.in_one(dir(p[i], p[i - 1]), dir(p[i], p[i + 1]))) {
+      v.free = false;
+      v.at = p[i];
+      v.obstacle = r.hit;
+      v.why = "the wire bends at " + text(p[i]) + " from one side of a blockage to another (through a point where "
+              "blockages touch, or across a blockage's corner)";
+      return v;
+    }
+  }
+  return v;
+}
+
+namespace {
+
+struct UnionFind {
+  std::vector<std::size_t> up;
+  explicit UnionFind(std::size_t n) : up(n) { std::iota(up.begin(), up.end(), std::size_t{0}); }
+  std::size_t find(std::size_t x) {
+    while (up[x] != x) x = up[x] = up[up[x]];
+    return x;
+  }
+  void join(std::size_t a, std::size_t b) { up[find(a)] = find(b); }
+};
+
+// Does the closed segment ab meet the closed polygon?
+bool meets_shape(Point a, Point b, const geom::Polygon& shape) {
+  if (geom::locate(a, shape) != geom::Location::Outside || geom::locate(b, shape) != geom::Location::Outside) return true;
+  auto ring_hit = [&](const geom::Ring& r) {
+    for (std::size_t i = 0; i < r.size(); ++i)
+      if (geom::intersect({a, b}, {r[i], r[(i + 1) % r.size()]}) != geom::SegmentIntersection::None) return true;
+    return false;
+  };
+  if (ring_hit(shape.outer)) return true;
+  return std::any_of(shape.holes.begin(), shape.holes.end(), ring_hit);
+}
+
+bool segment_meets_pin(Point a, Point b, const CheckPin& pin) {
+  if (pin.point) return geom::on_segment(*pin.point, a, b);
+  return pin.shape && meets_shape(a, b, *pin.shape);
+}
+
+struct WireSegment {
+  std::size_t net, wire;
+  Point a, b;
+};
+
+}  // namespace
+
+CheckResult check_routes(const geom::NormalizedObstacles& obstacles, std::span<const CheckNet> nets) {
+  CheckResult result;
+  const FreeSpaceChecker free(obstacles);
+  std::vector<WireSegment> segments;
+  for (std::size_t n = 0; n < nets.size(); ++n) {
+    const CheckNet& net = nets[n];
+    if (!net.routed) continue;
+    for (std::size_t w = 0; w < net.wires.size(); ++w) {
+      const CheckWire& wire = net.wires[w];
+      ++result.wires;
+      const FreeSpaceChecker::Verdict v = free.polyline(wire.points);
+      if (!v.free) {
+        CheckProblem p;
+        p.kind = CheckProblem::Kind::NotFree;
+        p.net = n;
+        p.line = wire.line;
+        p.at = v.at;
+        p.obstacle = v.obstacle;
+        p.message = "net \"" + net.name + "\": " + v.why;
+        result.problems.push_back(std::move(p));
+      }
+      for (std::size_t i = 0; i + 1 < wire.points.size(); ++i)
+        segments.push_back({n, w, wire.points[i], wire.points[i + 1]});
+      if (wire.points.size() == 1) segments.push_back({n, w, wire.points[0], wire.points[0]});
+    }
+  }
+  result.segments = segments.size();
+  std::vector<EdgeBox> boxes;
+  boxes.reserve(segments.size());
+  for (std::size_t i = 0; i < segments.size(); ++i) boxes.emplace_back(box_of(segments[i].a, segments[i].b), i);
+  const bgi::rtree<EdgeBox, bgi::rstar<16>> tree(boxes.begin(), boxes.end());
+  std::vector<EdgeBox> hits;
+
+  // Connectivity per net: items 0..W-1 the wires, W.. the pins.
+  std::vector<std::size_t> first(nets.size() + 1, 0);
+  {
+    std::size_t k = 0;
+    for (std::size_t n = 0; n < nets.size(); ++n) {
+      first[n] = k;
+      while (k < segments.size() && segments[k].net == n) ++k;
+    }
+    first[nets.size()] = k;
+  }
+  for (std::size_t n = 0; n < nets.size(); ++n) {
+    const CheckNet& net = nets[n];
+    if (!net.routed) continue;
+    const std::size_t wires = net.wires.size(), items = wires + net.pins.size();
+    UnionFind uf(items);
+    for (std::size_t i = first[n]; i < first[n + 1]; ++i) {
+      const WireSegment& s = segments[i];
+      hits.clear();
+      tree.query(bgi::intersects(box_of(s.a, s.b)), std::back_inserter(hits));
+      for (const auto& h : hits) {
+        const WireSegment& o = segments[h.second];
+        if (o.net != n || o.wire == s.wire) continue;
+        if (geom::intersect({s.a, s.b}, {o.a, o.b}) != geom::SegmentIntersection::None) uf.join(s.wire, o.wire);
+      }
+      for (std::size_t p = 0; p < net.pins.size(); ++p)
+        if (segment_meets_pin(s.a, s.b, net.pins[p])) uf.join(s.wire, wires + p);
+    }
+    // Pins that coincide (or overlap) connect without a wire.
+    for (std::size_t p = 0; p < net.pins.size(); ++p)
+      for (std::size_t q = p + 1; q < net.pins.size(); ++q) {
+        const CheckPin &a = net.pins[p], &b = net.pins[q];
+        const bool meet = a.point && b.point   ? *a.point == *b.point
+                          : a.point && b.shape ? geom::locate(*a.point, *b.shape) != geom::Location::Outside
+                          : b.point && a.shape ? geom::locate(*b.point, *a.shape) != geom::Location::Outside
+                                               : false;  // two shapes: through a wire
+        if (meet) uf.join(wires + p, wires + q);
+      }
+    if (net.pins.empty()) continue;
+    const std::size_t root = uf.find(wires);  // the first pin's group
+    std::vector<std::string> apart;
+    for (std::size_t p = 1; p < net.pins.size(); ++p)
+      if (uf.find(wires + p) != root) {
+        CheckProblem pr;
+        pr.kind = CheckProblem::Kind::Disconnected;
+        pr.net = n;
+        pr.line = net.pins[p].line;
+        pr.at = net.pins[p].point ? *net.pins[p].point : net.pins[p].shape->outer.front();
+        pr.message = "net \"" + net.name + "\": pin \"" + net.pins[p].name + "\" is not connected to pin \"" +
+                     net.pins[0].name + "\" by the net's wires";
+        result.problems.push_back(std::move(pr));
+      }
+    for (std::size_t w = 0; w < wires; ++w)
+      if (uf.find(w) != root && !net.wires[w].points.empty()) {
+        // Stray only when its group holds no pin at all (a group with pins was named above).
+        bool has_pin = false;
+        for (std::size_t p = 0; p < net.pins.size(); ++p) has_pin = has_pin || uf.find(wires + p) == uf.find(w);
+        if (has_pin) continue;
+        CheckProblem pr;
+        pr.kind = CheckProblem::Kind::StrayWire;
+        pr.net = n;
+        pr.line = net.wires[w].line;
+        pr.at = net.wires[w].points.front();
+        pr.message = "net \"" + net.name + "\": the wire from " + text(net.wires[w].points.front()) +
+                     " touches none of the net's pins and no wire joined to them";
+        result.problems.push_back(std::move(pr));
+      }
+  }
+
+  // Shorts: a wire segment sharing a point with another net's segment or pin (reported once
+  // per pair of wires, and once per wire and pin).
+  std::set<std::pair<std::size_t, std::size_t>> seen;  // (wire id, other net's wire id)
+  std::vector<std::size_t> wire_id(nets.size() + 1, 0);
+  for (std::size_t n = 0; n < nets.size(); ++n) wire_id[n + 1] = wire_id[n] + nets[n].wires.size();
+  for (const WireSegment& s : segments) {
+    hits.clear();
+    tree.query(bgi::intersects(box_of(s.a, s.b)), std::back_inserter(hits));
+    for (const auto& h : hits) {
+      const WireSegment& o = segments[h.second];
+      if (o.net <= s.net) continue;  // each pair of nets once, from the lower
+      if (geom::intersect({s.a, s.b}, {o.a, o.b}) == geom::SegmentIntersection::None) continue;
+      const std::pair<std::size_t, std::size_t> key{wire_id[s.net] + s.wire, wire_id[o.net] + o.wire};
+      if (!seen.insert(key).second) continue;
+      CheckProblem pr;
+      pr.kind = CheckProblem::Kind::Short;
+      pr.net = s.net;
+      pr.other_net = o.net;
+      pr.line = nets[s.net].wires[s.wire].line;
+      pr.at = s.a;
+      pr.message = "net \"" + nets[s.net].name + "\": the segment " + text(s.a) + " " + text(s.b) +
+                   " touches a wire of net \"" + nets[o.net].name + "\" (" + text(o.a) + " " + text(o.b) +
+                   ", line " + std::to_string(nets[o.net].wires[o.wire].line) + "): a short";
+      result.problems.push_back(std::move(pr));
+    }
+  }
+  for (std::size_t n = 0; n < nets.size(); ++n)
+    for (const CheckPin& pin : nets[n].pins) {
+      geom::Box b;
+      if (pin.point) {
+        b = {*pin.point, *pin.point};
+      } else {
+        b = {pin.shape->outer.front(), pin.shape->outer.front()};
+        for (const Point p : pin.shape->outer) b = geom::Box{{std::min(b.lo.x, p.x), std::min(b.lo.y, p.y)}, {std::max(b.hi.x, p.x), std::max(b.hi.y, p.y)}};
+      }
+      hits.clear();
+      tree.query(bgi::intersects(b), std::back_inserter(hits));
+      std::vector<std::size_t> wires_hit;
+      for (const auto& h : hits) {
+        const WireSegment& s = segments[h.second];
+        if (s.net == n || !segment_meets_pin(s.a, s.b, pin)) continue;
+        const std::size_t id = wire_id[s.net] + s.wire;
+        if (std::find(wires_hit.begin(), wires_hit.end(), id) != wires_hit.end()) continue;
+        wires_hit.push_back(id);
+        CheckProblem pr;
+        pr.kind = CheckProblem::Kind::Short;
+        pr.net = s.net;
+        pr.other_net = n;
+        pr.line = nets[s.net].wires[s.wire].line;
+        pr.at = s.a;
+        pr.message = "net \"" + nets[s.net].name + "\": the segment " + text(s.a) + " " + text(s.b) + " touches pin \"" +
+                     pin.name + "\" of net \"" + nets[n].name + "\" (line " + std::to_string(pin.line) + "): a short";
+        result.problems.push_back(std::move(pr));
+      }
+    }
+  std::stable_sort(result.problems.begin(), result.problems.end(),
+                   [](const CheckProblem& a, const CheckProblem& b) { return a.line < b.line; });
+  return result;
+}
+
+}  // namespace taut::router

@@ -1,0 +1,118 @@
+// The independent checker of routed layouts (issue #7; `taut check`): it shares only geom (types,
+// predicates, the blockage union) with the routers, so a router bug is not repeated here.
+//
+//   const CheckResult r = check_routes(normalized, nets);   // r.problems: empty when legal
+//
+// What a routed net must be (FORMAT.md):
+//   - free: every wire stays in the closed free space (the closed domain minus the open union of
+//     the blockages). It may run along blockage edges and through their vertices, but where it
+//     passes through a point it arrives and leaves inside one wedge of free space there, so it
+//     never passes through a point where two blockages touch (a pinch), and never runs along an
+//     edge that lies flush on the boundary (no free space beside it);
+//   - connected: its wires and pins form one connected set (a wire may end on another wire of
+//     its net; a point pin is reached when a wire passes through it, a shape pin when a wire
+//     touches the closed shape), and no wire is left apart from the rest;
+//   - apart from the other nets: no wire shares a point with another net's wire or pin (a
+//     short, whatever the rules say; FORMAT.md's "distance >= w + s" with w = s = 0 would allow
+//     touching, which no process does).
+// Not yet: the clearance of <rules> (w / 2 + s from blockages, w + s from other nets) beyond
+// not touching.
+//
+// How. The wedges of free space at a point p (the maximal closed sectors of directions d with
+// p + e d in the open free space for small e > 0) come from the ring edges through p (outer
+// rings counter-clockwise, holes clockwise, the domain as a clockwise ring: material left of
+// every directed edge). Their directions from p, sorted by angle, cut the directions into
+// sectors; a sector is material when an edge at its clockwise end leaves p (material on its
+// left), else free. (Pairing each ring visit's two edges fails where a ring touches itself at p:
+// a pinch.) A segment running along an edge that lies on the domain's side has material on both
+// sides of its direction at the edge's ends, so it fails the wedge test there.
+// A segment ab is free iff its ends lie in the closed domain, it properly crosses no edge, at
+// every point q of ab on a ring (a ring vertex on it, or an end of ab on a ring) the directions
+// to a and b lie in one free sector (to the other end only at a or b), and, when it touches no
+// ring, a lies in no obstacle. Exact:
+// directions are compared by __int128 cross and dot products. Edges are found in a Boost.Geometry
+// R-tree; connectivity by union-find over wires and pins; shorts by an R-tree of all wire
+// segments. O((n + m) log (n + m)) for n ring edges and m wire segments, plus the pairs of a
+// net's segments whose boxes meet.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "geom/normalize.h"
+#include "geom/types.h"
+
+namespace taut::router {
+
+struct CheckPin {
+  std::string name;
+  std::optional<geom::Point> point;    // a point pin ...
+  std::optional<geom::Polygon> shape;  // ... or a shape pin
+  int line = 0;
+};
+
+struct CheckWire {
+  std::vector<geom::Point> points;
+  int line = 0;
+};
+
+struct CheckNet {
+  std::string name;
+  std::vector<CheckPin> pins;
+  std::vector<CheckWire> wires;  // empty for a net not routed (not checked)
+  bool routed = false;
+  int line = 0;  // the <route>'s line
+};
+
+struct CheckProblem {
+  enum class Kind {
+    NotFree,       // a wire leaves free space (into a blockage, out of the domain, through a pinch)
+    Disconnected,  // a pin of the net is not connected to the others through its wires
+    StrayWire,     // a wire touches no pin and no wire connected to the pins
+    Short,         // a wire shares a point with another net's wire or pin
+  };
+  Kind kind = Kind::NotFree;
+  std::size_t net = 0;    // index into the nets given
+  int line = 0;           // the wire's line (the pin's for Disconnected)
+  geom::Point at;         // a point where it happens (an end of the offending segment, or the pin)
+  std::optional<std::size_t> obstacle;  // NotFree: the obstacle met (index into obstacles), if one
+  std::optional<std::size_t> other_net; // Short: the other net
+  std::string message;    // what happened, for a person
+};
+
+struct CheckResult {
+  std::vector<CheckProblem> problems;
+  std::size_t wires = 0, segments = 0;
+};
+
+// obstacles: geom::normalize_obstacles() of the blockages in a domain holding every wire point
+// (the layout's boundary when it has one). Nets not routed are skipped.
+CheckResult check_routes(const geom::NormalizedObstacles& obstacles, std::span<const CheckNet> nets);
+
+// The free-space part alone, for tests: is the polyline a legal wire (each segment free, every
+// interior vertex passed within one wedge)?
+class FreeSpaceChecker {
+ public:
+  explicit FreeSpaceChecker(const geom::NormalizedObstacles& obstacles);
+  ~FreeSpaceChecker();
+  FreeSpaceChecker(FreeSpaceChecker&&) noexcept;
+  FreeSpaceChecker& operator=(FreeSpaceChecker&&) noexcept;
+  struct Verdict {
+    bool free = true;
+    geom::Point at;                        // the first offending point when not free
+    std::optional<std::size_t> obstacle;  // the obstacle met there, if one
+    std::string why;
+  };
+  Verdict polyline(std::span<const geom::Point> points) const;
+  bool point_free(geom::Point p) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace taut::router
