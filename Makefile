@@ -27,7 +27,7 @@ build-asan: deps $(ASAN_BUILD)/CMakeCache.txt
 run: build
 	@mkdir -p out
 	$(BUILD)/tools/taut route designs/demo.xml -o out/demo.routed.xml --svg out/demo.svg --stats out/demo.stats.json
-	@# exit status 1 = the check found shorts between nets: taut route does not keep nets apart yet (issue #7)
+	@# exit status 1 = the check found shorts and clearance problems: taut route does not keep nets apart or clearance yet (issue #7)
 	$(BUILD)/tools/taut check out/demo.routed.xml -q --json > out/demo.check.json || test $$? -eq 1
 	@# exit status 1 = some nets are not routed (bump's diamond pin, octilinear: named on stderr)
 	$(BUILD)/tools/taut route designs/demo.xml --orientations octilinear -q -o out/demo.oct.routed.xml --svg out/demo.oct.svg || test $$? -eq 1

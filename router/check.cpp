@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <boost/geometry/index/rtree.hpp>
+#include <boost/multiprecision/cpp_int.hpp>
+#include <cmath>
+#include <climits>
 #include <cstdint>
+#include <cstdio>
 #include <numeric>
 #include <set>
 #include <string>
@@ -54,6 +58,42 @@ geom::Box box_of(Point a, Point b) {
   return {{std::min(a.x, b.x), std::min(a.y, b.y)}, {std::max(a.x, b.x), std::max(a.y, b.y)}};
 }
 
+geom::Box bounds(std::span<const Point> pts) {
+  geom::Box b{pts.front(), pts.front()};
+  for (const Point p : pts) b = geom::Box{{std::min(b.lo.x, p.x), std::min(b.lo.y, p.y)}, {std::max(b.hi.x, p.x), std::max(b.hi.y, p.y)}};
+  return b;
+}
+
+// A squared Euclidean distance as an exact fraction num / den (den > 0).
+struct Dist2 {
+  i128 num = 0, den = 1;
+};
+using Big = boost::multiprecision::int256_t;
+// d^2 >= (twice / 2)^2, i.e. the distance is at least twice / 2: 4 num >= twice^2 den.
+bool at_least(Dist2 d, i64 twice) { return Big(d.num) * 4 >= Big(twice) * Big(twice) * Big(d.den); }
+double approx(Dist2 d) { return std::sqrt(static_cast<double>(d.num) / static_cast<double>(d.den)); }
+// Point p to the closed segment ab.
+Dist2 point_segment(Point p, Point a, Point b) {
+  const Dir ab = dir(a, b), ap = dir(a, p);
+  const i128 len2 = dotp(ab, ab), t = dotp(ap, ab);
+  if (len2 == 0 || t <= 0) return {dotp(ap, ap), 1};
+  if (t >= len2) {
+    const Dir bp = dir(b, p);
+    return {dotp(bp, bp), 1};
+  }
+  const i128 c = cross(ab, ap);
+  return {c * c, len2};  // |c| < 2^63: c^2 < 2^126
+}
+bool smaller(Dist2 x, Dist2 y) { return Big(x.num) * Big(y.den) < Big(y.num) * Big(x.den); }
+// The closed segments ab and cd (0 when they meet).
+Dist2 segment_segment(Point a, Point b, Point c, Point d) {
+  if (geom::intersect({a, b}, {c, d}) != geom::SegmentIntersection::None) return {0, 1};
+  Dist2 best = point_segment(a, c, d);
+  for (const Dist2 x : {point_segment(b, c, d), point_segment(c, a, b), point_segment(d, a, b)})
+    if (smaller(x, best)) best = x;
+  return best;
+}
+
 }  // namespace
 
 struct FreeSpaceChecker::Impl {
@@ -90,11 +130,7 @@ struct FreeSpaceChecker::Impl {
       if (edges[i].s != edges[i].t) boxes.emplace_back(box_of(edges[i].s, edges[i].t), i);
     edge_tree = decltype(edge_tree)(boxes.begin(), boxes.end());
     std::vector<EdgeBox> obs;
-    for (std::size_t k = 0; k < norm.obstacles.size(); ++k) {
-      geom::Box b{norm.obstacles[k].outer.front(), norm.obstacles[k].outer.front()};
-      for (const Point p : norm.obstacles[k].outer) b = geom::Box{{std::min(b.lo.x, p.x), std::min(b.lo.y, p.y)}, {std::max(b.hi.x, p.x), std::max(b.hi.y, p.y)}};
-      obs.emplace_back(b, k);
-    }
+    for (std::size_t k = 0; k < norm.obstacles.size(); ++k) obs.emplace_back(bounds(norm.obstacles[k].outer), k);
     obstacle_tree = decltype(obstacle_tree)(obs.begin(), obs.end());
   }
 
@@ -247,6 +283,15 @@ bool FreeSpaceChecker::point_free(Point p) const {
   return std::any_of(r.free.begin(), r.free.end(), [](char f) { return f != 0; });
 }
 
+std::vector<std::pair<geom::Segment, std::size_t>> FreeSpaceChecker::obstacle_edges_near(const geom::Box& box) const {
+  std::vector<std::pair<geom::Segment, std::size_t>> out;
+  for (const std::size_t i : impl_->edges_near(box)) {
+    const Edge& e = impl_->edges[i];
+    if (e.obstacle) out.push_back({{e.s, e.t}, *e.obstacle});
+  }
+  return out;
+}
+
 FreeSpaceChecker::Verdict FreeSpaceChecker::polyline(std::span<const Point> points) const {
   Verdict v;
   // Distinct consecutive points only (a repeated point adds nothing).
@@ -305,6 +350,11 @@ bool meets_shape(Point a, Point b, const geom::Polygon& shape) {
   return std::any_of(shape.holes.begin(), shape.holes.end(), ring_hit);
 }
 
+geom::Box pin_box(const CheckPin& pin) {
+  if (pin.point) return {*pin.point, *pin.point};
+  return bounds(pin.shape->outer);
+}
+
 bool segment_meets_pin(Point a, Point b, const CheckPin& pin) {
   if (pin.point) return geom::on_segment(*pin.point, a, b);
   return pin.shape && meets_shape(a, b, *pin.shape);
@@ -317,7 +367,158 @@ struct WireSegment {
 
 }  // namespace
 
-CheckResult check_routes(const geom::NormalizedObstacles& obstacles, std::span<const CheckNet> nets) {
+namespace {
+
+using SegmentTree = bgi::rtree<EdgeBox, bgi::rstar<16>>;
+
+geom::Box grown(const geom::Box& b, i64 r) {
+  auto clamp = [](i64 v) { return static_cast<geom::Coord>(std::clamp<i64>(v, INT32_MIN, INT32_MAX)); };
+  return {{clamp(i64{b.lo.x} - r), clamp(i64{b.lo.y} - r)}, {clamp(i64{b.hi.x} + r), clamp(i64{b.hi.y} + r)}};
+}
+
+std::string distance_text(Dist2 d) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.1f", approx(d));
+  return buf;
+}
+std::string half_text(i64 twice) { return std::to_string(twice / 2) + (twice % 2 ? ".5" : ""); }
+
+// The clearance of <rules> (see check.h): w/2 + s from blockages (but for a wire's first steps
+// off a pin of its own net) and from other nets' shape pins, w + s from other nets' wires and
+// point pins. Pairs that touch are shorts, reported already.
+void check_clearance(const FreeSpaceChecker& free, std::span<const CheckNet> nets, const std::vector<WireSegment>& segments,
+                     const SegmentTree& tree, const CheckRules& rules, const std::vector<std::size_t>& wire_id,
+                     CheckResult& result) {
+  const i64 tb = rules.wire_width + 2 * rules.spacing;    // twice w/2 + s
+  const i64 tn = 2 * (rules.wire_width + rules.spacing);  // twice w + s
+  // The lattice point of ab (from a) where the pin-access allowance at a ends: the m-th of its g
+  // lattice steps v = (b - a) / g, m the least with |m v| >= tb / 2; g when there is none before b.
+  auto access_steps = [&](Point a, Point b) -> i64 {
+    const i64 dx = i64{b.x} - a.x, dy = i64{b.y} - a.y, g = std::gcd(std::abs(dx), std::abs(dy));
+    if (g == 0) return 0;
+    const Dir v{dx / g, dy / g};
+    const i128 len2 = dotp(v, v);
+    i64 m = static_cast<i64>(std::ceil(static_cast<double>(tb) / 2.0 / std::sqrt(static_cast<double>(len2))));
+    m = std::max<i64>(m - 2, 0);
+    while (Big(4) * Big(m) * Big(m) * Big(len2) < Big(tb) * Big(tb)) ++m;
+    return std::min(m, g);
+  };
+  auto step_from = [](Point a, Point b, i64 k) {
+    const i64 dx = i64{b.x} - a.x, dy = i64{b.y} - a.y, g = std::gcd(std::abs(dx), std::abs(dy));
+    return Point{static_cast<geom::Coord>(a.x + dx / g * k), static_cast<geom::Coord>(a.y + dy / g * k)};
+  };
+  for (std::size_t n = 0; n < nets.size(); ++n) {
+    const CheckNet& net = nets[n];
+    if (!net.routed) continue;
+    auto on_own_pin = [&](Point p) {
+      for (const CheckPin& pin : net.pins)
+        if ((pin.point && *pin.point == p) || (pin.shape && geom::locate(p, *pin.shape) != geom::Location::Outside)) return true;
+      return false;
+    };
+    for (const CheckWire& wire : net.wires) {
+      std::vector<Point> p;
+      for (const Point q : wire.points)
+        if (p.empty() || p.back() != q) p.push_back(q);
+      std::set<std::size_t> reported;  // obstacles named for this wire
+      for (std::size_t i = 0; i + 1 < p.size(); ++i) {
+        Point a = p[i], b = p[i + 1];
+        const i64 g = std::gcd(std::abs(i64{b.x} - a.x), std::abs(i64{b.y} - a.y));
+        i64 from = 0, to = g;  // lattice steps of ab held to the clearance
+        if (i == 0 && on_own_pin(p.front())) from = access_steps(a, b);
+        if (i + 2 == p.size() && on_own_pin(p.back())) to = g - access_steps(b, a);
+        if (from >= to) continue;
+        const Point s0 = step_from(a, b, from), s1 = step_from(a, b, to);
+        for (const auto& [e, obstacle] : free.obstacle_edges_near(grown(box_of(s0, s1), tb / 2 + 1))) {
+          if (reported.count(obstacle)) continue;
+          const Dist2 d = segment_segment(s0, s1, e.a, e.b);
+          if (at_least(d, tb)) continue;
+          reported.insert(obstacle);
+          CheckProblem pr;
+          pr.kind = CheckProblem::Kind::BlockageClearance;
+          pr.net = n;
+          pr.line = wire.line;
+          pr.at = s0;
+          pr.obstacle = obstacle;
+          pr.message = "net \"" + net.name + "\": the segment " + text(a) + " " + text(b) + " comes within " +
+                       distance_text(d) + " of a blockage edge (" + text(e.a) + " " + text(e.b) + "), closer than w/2 + s = " +
+                       half_text(tb);
+          result.problems.push_back(std::move(pr));
+        }
+      }
+    }
+  }
+  // Between nets: wires, and wires against pins.
+  std::set<std::pair<std::size_t, std::size_t>> seen;
+  std::vector<EdgeBox> hits;
+  for (const WireSegment& s : segments) {
+    hits.clear();
+    tree.query(bgi::intersects(grown(box_of(s.a, s.b), tn / 2 + 1)), std::back_inserter(hits));
+    for (const auto& h : hits) {
+      const WireSegment& o = segments[h.second];
+      if (o.net <= s.net) continue;
+      const std::pair<std::size_t, std::size_t> key{wire_id[s.net] + s.wire, wire_id[o.net] + o.wire};
+      if (seen.count(key)) continue;
+      const Dist2 d = segment_segment(s.a, s.b, o.a, o.b);
+      if (d.num == 0 || at_least(d, tn)) continue;  // touching: a short, reported already
+      seen.insert(key);
+      CheckProblem pr;
+      pr.kind = CheckProblem::Kind::NetClearance;
+      pr.net = s.net;
+      pr.other_net = o.net;
+      pr.line = nets[s.net].wires[s.wire].line;
+      pr.at = s.a;
+      pr.message = "net \"" + nets[s.net].name + "\": the segment " + text(s.a) + " " + text(s.b) + " comes within " +
+                   distance_text(d) + " of a wire of net \"" + nets[o.net].name + "\" (" + text(o.a) + " " + text(o.b) + ", line " +
+                   std::to_string(nets[o.net].wires[o.wire].line) + "), closer than w + s = " + half_text(tn);
+      result.problems.push_back(std::move(pr));
+    }
+  }
+  for (std::size_t n = 0; n < nets.size(); ++n)
+    for (const CheckPin& pin : nets[n].pins) {
+      const geom::Box b = pin_box(pin);
+      hits.clear();
+      tree.query(bgi::intersects(grown(b, tn / 2 + 1)), std::back_inserter(hits));
+      std::set<std::size_t> wires_hit;
+      for (const auto& h : hits) {
+        const WireSegment& s = segments[h.second];
+        if (s.net == n) continue;
+        Dist2 d;
+        i64 need = tn;
+        if (pin.point) {
+          d = point_segment(*pin.point, s.a, s.b);
+        } else {
+          need = tb;
+          if (meets_shape(s.a, s.b, *pin.shape)) continue;  // a short
+          bool first = true;
+          auto ring = [&](const geom::Ring& r) {
+            for (std::size_t i = 0; i < r.size(); ++i) {
+              const Dist2 x = segment_segment(s.a, s.b, r[i], r[(i + 1) % r.size()]);
+              if (first || smaller(x, d)) d = x;
+              first = false;
+            }
+          };
+          ring(pin.shape->outer);
+          for (const auto& hole : pin.shape->holes) ring(hole);
+        }
+        if (d.num == 0 || at_least(d, need)) continue;
+        if (!wires_hit.insert(wire_id[s.net] + s.wire).second) continue;
+        CheckProblem pr;
+        pr.kind = CheckProblem::Kind::NetClearance;
+        pr.net = s.net;
+        pr.other_net = n;
+        pr.line = nets[s.net].wires[s.wire].line;
+        pr.at = s.a;
+        pr.message = "net \"" + nets[s.net].name + "\": the segment " + text(s.a) + " " + text(s.b) + " comes within " +
+                     distance_text(d) + " of pin \"" + pin.name + "\" of net \"" + nets[n].name + "\" (line " +
+                     std::to_string(pin.line) + "), closer than " + (pin.point ? "w + s = " : "w/2 + s = ") + half_text(need);
+        result.problems.push_back(std::move(pr));
+      }
+    }
+}
+
+}  // namespace
+
+CheckResult check_routes(const geom::NormalizedObstacles& obstacles, std::span<const CheckNet> nets, const CheckRules& rules) {
   CheckResult result;
   const FreeSpaceChecker free(obstacles);
   std::vector<WireSegment> segments;
@@ -347,7 +548,7 @@ CheckResult check_routes(const geom::NormalizedObstacles& obstacles, std::span<c
   std::vector<EdgeBox> boxes;
   boxes.reserve(segments.size());
   for (std::size_t i = 0; i < segments.size(); ++i) boxes.emplace_back(box_of(segments[i].a, segments[i].b), i);
-  const bgi::rtree<EdgeBox, bgi::rstar<16>> tree(boxes.begin(), boxes.end());
+  const SegmentTree tree(boxes.begin(), boxes.end());
   std::vector<EdgeBox> hits;
 
   // Connectivity per net: items 0..W-1 the wires, W.. the pins.
@@ -446,13 +647,7 @@ CheckResult check_routes(const geom::NormalizedObstacles& obstacles, std::span<c
   }
   for (std::size_t n = 0; n < nets.size(); ++n)
     for (const CheckPin& pin : nets[n].pins) {
-      geom::Box b;
-      if (pin.point) {
-        b = {*pin.point, *pin.point};
-      } else {
-        b = {pin.shape->outer.front(), pin.shape->outer.front()};
-        for (const Point p : pin.shape->outer) b = geom::Box{{std::min(b.lo.x, p.x), std::min(b.lo.y, p.y)}, {std::max(b.hi.x, p.x), std::max(b.hi.y, p.y)}};
-      }
+      const geom::Box b = pin_box(pin);
       hits.clear();
       tree.query(bgi::intersects(b), std::back_inserter(hits));
       std::vector<std::size_t> wires_hit;
@@ -473,6 +668,7 @@ CheckResult check_routes(const geom::NormalizedObstacles& obstacles, std::span<c
         result.problems.push_back(std::move(pr));
       }
     }
+  if (rules.wire_width > 0 || rules.spacing > 0) check_clearance(free, nets, segments, tree, rules, wire_id, result);
   std::stable_sort(result.problems.begin(), result.problems.end(),
                    [](const CheckProblem& a, const CheckProblem& b) { return a.line < b.line; });
   return result;

@@ -15,8 +15,14 @@
 //   - apart from the other nets: no wire shares a point with another net's wire or pin (a
 //     short, whatever the rules say; FORMAT.md's "distance >= w + s" with w = s = 0 would allow
 //     touching, which no process does).
-// Not yet: the clearance of <rules> (w / 2 + s from blockages, w + s from other nets) beyond
-// not touching.
+//   - clear (when <rules> has a wire width w or a spacing s): every wire keeps Euclidean
+//     distance >= w/2 + s from every blockage and from other nets' shape pins, and >= w + s from
+//     other nets' wires and point pins (a point pin counts as the end of a wire of its net).
+//     Pin access: where a wire ends on a pin of its own net, its segment from there is not held
+//     to the blockage clearance up to its first lattice point at least w/2 + s from that end (a
+//     pin may sit on a blockage's edge, FORMAT.md, and a wire has to leave it); the clearance
+//     to other nets holds everywhere. Distances are compared exactly: squared distances as
+//     fractions of integers against (w + 2s)^2 / 4 and (w + s)^2 in 256-bit integers.
 //
 // How. The wedges of free space at a point p (the maximal closed sectors of directions d with
 // p + e d in the open free space for small e > 0) come from the ring edges through p (outer
@@ -37,10 +43,12 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "geom/normalize.h"
@@ -74,13 +82,16 @@ struct CheckProblem {
     Disconnected,  // a pin of the net is not connected to the others through its wires
     StrayWire,     // a wire touches no pin and no wire connected to the pins
     Short,         // a wire shares a point with another net's wire or pin
+    BlockageClearance,  // a wire comes closer than w/2 + s to a blockage
+    NetClearance,       // a wire comes closer than w + s to another net's wire or point pin, or
+                        // than w/2 + s to its shape pin
   };
   Kind kind = Kind::NotFree;
   std::size_t net = 0;    // index into the nets given
   int line = 0;           // the wire's line (the pin's for Disconnected)
   geom::Point at;         // a point where it happens (an end of the offending segment, or the pin)
   std::optional<std::size_t> obstacle;  // NotFree: the obstacle met (index into obstacles), if one
-  std::optional<std::size_t> other_net; // Short: the other net
+  std::optional<std::size_t> other_net; // Short, NetClearance: the other net
   std::string message;    // what happened, for a person
 };
 
@@ -89,9 +100,14 @@ struct CheckResult {
   std::size_t wires = 0, segments = 0;
 };
 
+struct CheckRules {
+  std::int64_t wire_width = 0, spacing = 0;  // <rules wire-width spacing>, each >= 0
+};
+
 // obstacles: geom::normalize_obstacles() of the blockages in a domain holding every wire point
 // (the layout's boundary when it has one). Nets not routed are skipped.
-CheckResult check_routes(const geom::NormalizedObstacles& obstacles, std::span<const CheckNet> nets);
+CheckResult check_routes(const geom::NormalizedObstacles& obstacles, std::span<const CheckNet> nets,
+                         const CheckRules& rules = {});
 
 // The free-space part alone, for tests: is the polyline a legal wire (each segment free, every
 // interior vertex passed within one wedge)?
@@ -109,6 +125,8 @@ class FreeSpaceChecker {
   };
   Verdict polyline(std::span<const geom::Point> points) const;
   bool point_free(geom::Point p) const;
+  // The obstacle edges whose boxes meet `box`, with their obstacle (the domain's sides left out).
+  std::vector<std::pair<geom::Segment, std::size_t>> obstacle_edges_near(const geom::Box& box) const;
 
  private:
   struct Impl;

@@ -433,7 +433,7 @@ TEST(BendRoute, BendsDesignPicturesAndRoutes) {
     ASSERT_TRUE(got.has_value());
     EXPECT_EQ(got->length, k.length);
     EXPECT_EQ(got->bends, k.bends);
-    test::expect_routes_check_except_shorts(xml);
+    test::expect_routes_check_except_clearance(xml);
   }
   // link: no bend-cost attribute; route --tighten does not combine with it
   const auto l = run_taut({"route", design, "-q", "--metric", "link", "-o", dir + "/link.xml"});
@@ -530,7 +530,7 @@ TEST(BendRoute, BendsDesignPicturesAndRoutes) {
       EXPECT_EQ(route.wires[0].points, (std::vector<Point>{{10, 10}, {10, 60}, {50, 60}, {50, 30}}));
     }
   }
-  test::expect_routes_check_except_shorts(dir + "/demo.xml");
+  test::expect_routes_check_except_clearance(dir + "/demo.xml");
 }
 
 }  // namespace

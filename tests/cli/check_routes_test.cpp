@@ -101,7 +101,41 @@ TEST(CheckRoutes, ALegalRoutePasses) {
   EXPECT_EQ(c["free_space"], "ok");
   EXPECT_EQ(c["connectivity"], "ok");
   EXPECT_EQ(c["shorts"], "ok");
-  EXPECT_EQ(c["clearance"], "not checked yet");
+  EXPECT_EQ(c["clearance"], "not required");  // no <rules>
+}
+
+// With <rules wire-width="2" spacing="1">: w/2 + s = 2 from blockages, w + s = 3 between nets.
+// The legal route of "through" runs along the wall's side (CHECK-0007, naming the wall); "pinch"
+// runs 2 from "ok"'s wire and its pin b (CHECK-0008, naming both); its first steps off its pin
+// (15,80), 5 from sq1, and "gap"'s are fine.
+TEST(CheckRoutes, ClearanceOfTheRules) {
+  const std::string file = test::layout_file(
+      "check_routes_rules",
+      "<rules wire-width=\"2\" spacing=\"1\"/>\n" + kLayout +
+          "<routes tool=\"hand\" metric=\"l1\" orientations=\"rectilinear\">\n"
+          "<route net=\"ok\" status=\"routed\" length=\"80\" bends=\"0\"><wire points=\"10,10 10,90\"/></route>\n"
+          "<route net=\"through\" status=\"routed\" length=\"100\" bends=\"4\">\n<wire points=\"30,20 40,20 40,50 "
+          "60,50 60,20 70,20\"/></route>\n"
+          "<route net=\"gap\" status=\"routed\" length=\"90\" bends=\"1\"><wire points=\"80,10 80,90 90,90\"/></route>\n"
+          "<route net=\"pinch\" status=\"routed\" length=\"66\" bends=\"3\">\n<wire points=\"15,80 12,80 12,95 45,95 45,80\"/></route>\n"
+          "<route net=\"cross\" status=\"failed\" reason=\"hand\"/>\n"
+          "</routes>\n");
+  const test::RunResult r = run_taut({"check", file, "--json"});
+  EXPECT_EQ(r.status, 1) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  const nlohmann::json& c = j["routes_check"];
+  EXPECT_EQ(c["clearance"], "failed") << r.err;
+  EXPECT_EQ(c["free_space"], "ok") << r.err;
+  EXPECT_EQ(c["connectivity"], "ok") << r.err;
+  EXPECT_EQ(c["problems"]["blockage_clearance"], 1) << r.err;
+  EXPECT_EQ(c["problems"]["net_clearance"], 2) << r.err;
+  EXPECT_EQ(j["errors"], 3) << r.err;
+  EXPECT_NE(r.err.find("[CHECK-0007] net \"through\""), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("blockage \"wall\""), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("comes within 2.0 of a wire of net \"pinch\""), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("[CHECK-0008] net \"pinch\": the segment 12,80 12,95 comes within 2.0 of pin \"b\" of net \"ok\""),
+            std::string::npos)
+      << r.err;
 }
 
 }  // namespace

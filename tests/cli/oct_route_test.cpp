@@ -169,7 +169,7 @@ TEST(OctRoute, GeneratedLayoutsMatchTheReference) {
       io::ReadResult rr = io::read_layout(out);
       ASSERT_TRUE(rr.layout && rr.layout->routes);
       EXPECT_EQ(rr.layout->routes->orientations, "octilinear");
-      test::expect_routes_check_except_shorts(out);
+      test::expect_routes_check_except_clearance(out);
       const Reference ref = reference_for(in);
       ASSERT_EQ(rr.layout->routes->routes.size(), rr.layout->nets.size());
       bool any_failed = false;

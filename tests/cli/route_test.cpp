@@ -261,7 +261,7 @@ TEST(Route, DemoRoutesEveryNet) {
   // The routed file is the input plus <routes>: it reads back, and taut check agrees with the
   // lengths and bends it states, its free space and connectivity (nets may still short: the
   // router does not keep them apart yet).
-  test::expect_routes_check_except_shorts(dir + "/r.xml");
+  test::expect_routes_check_except_clearance(dir + "/r.xml");
   io::ReadResult rr = io::read_layout(dir + "/r.xml");
   ASSERT_TRUE(rr.layout && rr.layout->routes);
   io::ReadResult in = io::read_layout(kDemo);

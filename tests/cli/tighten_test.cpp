@@ -251,12 +251,12 @@ TEST(Tighten, RoutedWiresOfTheDemo) {
   expect_tightened(dir + "/t.xml", inputs);
   EXPECT_NE(read_text(dir + "/t.svg").find("class=\"input-wire\""), std::string::npos);
   // the routed layout checks
-  test::expect_routes_check_except_shorts(dir + "/t.xml");
+  test::expect_routes_check_except_clearance(dir + "/t.xml");
   // without --orientations the demo's rules (rectilinear) apply
   const auto rect = run_taut({"tighten", dir + "/r.xml", "-q", "-o", dir + "/rect.xml"});
   ASSERT_EQ(rect.status, 0) << rect.err;
   expect_c_oriented(dir + "/rect.xml", dir + "/t.xml", inputs, false);
-  test::expect_routes_check_except_shorts(dir + "/rect.xml");  // checks the directions too
+  test::expect_routes_check_except_clearance(dir + "/rect.xml");  // checks the directions too
   // the rectilinear wires of `route` are L1-shortest already: tightening never lengthens them
   for (const io::Net& n : rr.layout->nets) {
     if (n.sketch) continue;
@@ -326,7 +326,7 @@ TEST(Tighten, RouteTighten) {
         EXPECT_LE(geom::count_bends(t[k]), geom::count_bends(lines[k]));
       }
     }
-    test::expect_routes_check_except_shorts(dir + "/tight.xml");
+    test::expect_routes_check_except_clearance(dir + "/tight.xml");
   }
 }
 

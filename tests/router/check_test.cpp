@@ -10,11 +10,13 @@
 
 #include <gtest/gtest.h>
 
+#include <climits>
 #include <cstdio>
 #include <random>
 #include <set>
 #include <string>
 
+#include "geom/normalize.h"
 #include "oracle/l1_oracle.h"
 #include "support/sanitized.h"
 #include "support/wavefront_cases.h"
@@ -253,7 +255,9 @@ TEST(CheckRoutes, ConnectivityAndShortsMatchALatticeBruteForce) {
           break;
         }
         case router::CheckProblem::Kind::NotFree:
-          got.insert("not free " + net.name);
+        case router::CheckProblem::Kind::BlockageClearance:
+        case router::CheckProblem::Kind::NetClearance:
+          got.insert("unexpected " + net.name);  // no obstacles, no rules here
           break;
       }
     }
@@ -271,6 +275,242 @@ TEST(CheckRoutes, ConnectivityAndShortsMatchALatticeBruteForce) {
   EXPECT_GE(stray, 100);
   EXPECT_GE(shorts, 100);
   EXPECT_GE(connected_nets, 100);
+}
+
+}  // namespace
+}  // namespace taut::test
+
+namespace taut::test {
+namespace {
+
+// The clearance of <rules> against a brute force for rectilinear wires among rectangles: the
+// distance between two axis-parallel boxes (a segment is a thin one, a point pin a point) is
+// sqrt(gx^2 + gy^2) with gx, gy the gaps between their x and y intervals; a wire's first and
+// last segments are trimmed by ceil(w/2 + s) units where they end on a pin of their own net.
+// Random wires (some through the rectangles), rectangle blockages apart from each other, point
+// and rectangle pins, w and s from 0 to 4: the same (wire, blockage), (wire, wire) and
+// (wire, pin) pairs are reported. Between nets, a pair of segments that touch is a short, not
+// a clearance problem; the clearance is judged on the pairs that do not touch.
+TEST(CheckRoutes, ClearanceMatchesAGapBruteForce) {
+  int failed = 0;
+  long long blockage = 0, net = 0, clean_layouts = 0;
+  for (int seed = 1; seed <= (kSanitized ? 300 : 3000); ++seed) {
+    std::mt19937 rng(static_cast<unsigned>(7000 + seed));
+    auto coord = [&] { return static_cast<geom::Coord>(rng() % 31); };
+    router::CheckRules rules;
+    rules.wire_width = rng() % 5;
+    rules.spacing = rng() % 4;
+    if (rules.wire_width == 0 && rules.spacing == 0) rules.spacing = 1;
+    const std::int64_t tb = rules.wire_width + 2 * rules.spacing, tn = 2 * (rules.wire_width + rules.spacing);
+    // Rectangles at least 1 apart (so each is one obstacle of the union).
+    std::vector<geom::Box> rects;
+    for (int k = 0, n = static_cast<int>(rng() % 4); k < n; ++k) {
+      const geom::Coord x = coord(), y = coord();
+      const geom::Box b{{x, y}, {static_cast<geom::Coord>(x + 1 + rng() % 5), static_cast<geom::Coord>(y + 1 + rng() % 5)}};
+      bool apart = true;
+      for (const auto& o : rects)
+        apart = apart && (b.lo.x > o.hi.x || o.lo.x > b.hi.x || b.lo.y > o.hi.y || o.lo.y > b.hi.y);
+      if (apart) rects.push_back(b);
+    }
+    std::vector<geom::Polygon> polys;
+    for (const auto& b : rects) polys.push_back({{b.lo, {b.hi.x, b.lo.y}, b.hi, {b.lo.x, b.hi.y}}, {}});
+    const geom::NormalizedObstacles norm = geom::normalize_obstacles(polys, geom::Box{{-10, -10}, {50, 50}});
+    if (norm.obstacles.size() != rects.size()) continue;
+    // obstacle index -> rectangle
+    std::vector<std::size_t> rect_of(norm.obstacles.size());
+    for (std::size_t k = 0; k < norm.obstacles.size(); ++k) rect_of[k] = norm.sources[k].front();
+    std::vector<router::CheckNet> nets(1 + rng() % 3);
+    int line = 1;
+    for (std::size_t n = 0; n < nets.size(); ++n) {
+      nets[n].name = "n" + std::to_string(n);
+      nets[n].routed = true;
+      for (int p = 0, k = 2 + static_cast<int>(rng() % 2); p < k; ++p) {
+        router::CheckPin pin;
+        pin.name = "p" + std::to_string(p);
+        pin.line = line++;
+        const geom::Coord x = coord(), y = coord();
+        if (rng() % 4 == 0)
+          pin.shape = geom::Polygon{{{x, y}, {static_cast<geom::Coord>(x + 2), y}, {static_cast<geom::Coord>(x + 2), static_cast<geom::Coord>(y + 1)}, {x, static_cast<geom::Coord>(y + 1)}}, {}};
+        else
+          pin.point = Point{x, y};
+        nets[n].pins.push_back(pin);
+      }
+      for (int w = 0, k = 1 + static_cast<int>(rng() % 2); w < k; ++w) {
+        router::CheckWire wire;
+        wire.line = line++;
+        const auto& pin = nets[n].pins[rng() % nets[n].pins.size()];
+        Point p = pin.point ? *pin.point : pin.shape->outer[0];
+        wire.points.push_back(p);
+        for (int leg = 0, legs = 1 + static_cast<int>(rng() % 3); leg < legs; ++leg) {
+          p = leg % 2 == 0 ? Point{coord(), p.y} : Point{p.x, coord()};
+          if (p != wire.points.back()) wire.points.push_back(p);
+        }
+        if (wire.points.size() >= 2) nets[n].wires.push_back(wire);
+      }
+    }
+    struct Span {
+      std::int64_t x0, x1, y0, y1;
+    };
+    auto gap2 = [](Span a, Span b) {
+      const std::int64_t gx = std::max<std::int64_t>({0, a.x0 - b.x1, b.x0 - a.x1});
+      const std::int64_t gy = std::max<std::int64_t>({0, a.y0 - b.y1, b.y0 - a.y1});
+      return gx * gx + gy * gy;
+    };
+    auto seg = [](Point a, Point b) {
+      return Span{std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y)};
+    };
+    auto pin_span = [&](const router::CheckPin& p) {
+      if (p.point) return seg(*p.point, *p.point);
+      return seg(p.shape->outer[0], p.shape->outer[2]);
+    };
+    std::set<std::string> want, got;
+    const std::int64_t trim = (tb + 1) / 2;  // ceil(w/2 + s) units off a pin
+    for (std::size_t n = 0; n < nets.size(); ++n) {
+      const auto& nt = nets[n];
+      auto own = [&](Point q) {
+        for (const auto& p : nt.pins) {
+          if (p.point && *p.point == q) return true;
+          if (p.shape) {
+            const Span s = pin_span(p);
+            if (q.x >= s.x0 && q.x <= s.x1 && q.y >= s.y0 && q.y <= s.y1) return true;
+          }
+        }
+        return false;
+      };
+      for (const auto& w : nt.wires) {
+        for (std::size_t i = 0; i + 1 < w.points.size(); ++i) {
+          Point a = w.points[i], b = w.points[i + 1];
+          const std::int64_t len = std::abs(std::int64_t{b.x} - a.x) + std::abs(std::int64_t{b.y} - a.y);
+          std::int64_t from = 0, to = len;
+          if (i == 0 && own(w.points.front())) from = std::min(trim, len);
+          if (i + 2 == w.points.size() && own(w.points.back())) to = len - std::min(trim, len);
+          if (from >= to) continue;
+          const int ux = (b.x > a.x) - (b.x < a.x), uy = (b.y > a.y) - (b.y < a.y);
+          const Point s0{static_cast<geom::Coord>(a.x + ux * from), static_cast<geom::Coord>(a.y + uy * from)};
+          const Point s1{static_cast<geom::Coord>(a.x + ux * to), static_cast<geom::Coord>(a.y + uy * to)};
+          for (std::size_t r = 0; r < rects.size(); ++r)
+            if (4 * gap2(seg(s0, s1), {rects[r].lo.x, rects[r].hi.x, rects[r].lo.y, rects[r].hi.y}) < tb * tb)
+              want.insert("blockage " + std::to_string(w.line) + " " + std::to_string(r));
+        }
+      }
+    }
+    for (std::size_t n = 0; n < nets.size(); ++n)
+      for (std::size_t m = 0; m < nets.size(); ++m) {
+        if (m == n) continue;
+        for (const auto& w : nets[n].wires) {
+          if (m > n)
+            for (const auto& o : nets[m].wires) {
+              // touching is a short; the clearance is judged per pair of segments that do not touch
+              bool close = false;
+              for (std::size_t i = 0; i + 1 < w.points.size(); ++i)
+                for (std::size_t j = 0; j + 1 < o.points.size(); ++j) {
+                  const std::int64_t g = gap2(seg(w.points[i], w.points[i + 1]), seg(o.points[j], o.points[j + 1]));
+                  close = close || (g > 0 && 4 * g < tn * tn);
+                }
+              if (close) want.insert("net " + std::to_string(w.line) + " " + std::to_string(o.line));
+            }
+          for (const auto& p : nets[m].pins) {
+            const std::int64_t need = p.point ? tn : tb;
+            bool close = false;
+            for (std::size_t i = 0; i + 1 < w.points.size(); ++i) {
+              const std::int64_t g = gap2(seg(w.points[i], w.points[i + 1]), pin_span(p));
+              close = close || (g > 0 && 4 * g < need * need);
+            }
+            if (close) want.insert("pin " + std::to_string(w.line) + " " + std::to_string(p.line));
+          }
+        }
+      }
+    const router::CheckResult r = router::check_routes(norm, nets, rules);
+    for (const auto& p : r.problems) {
+      if (p.kind == router::CheckProblem::Kind::BlockageClearance) {
+        got.insert("blockage " + std::to_string(p.line) + " " + std::to_string(rect_of[*p.obstacle]));
+        ++blockage;
+      } else if (p.kind == router::CheckProblem::Kind::NetClearance) {
+        const std::size_t at = p.message.rfind("line ");
+        const int other = std::stoi(p.message.substr(at + 5));
+        bool pin = p.message.find("of pin \"") != std::string::npos;
+        got.insert(std::string(pin ? "pin " : "net ") + std::to_string(p.line) + " " + std::to_string(other));
+        ++net;
+      }
+    }
+    clean_layouts += got.empty();
+    if (want != got && failed++ < 8) {
+      std::string w, g;
+      for (const auto& x : want) w += "  " + x + "\n";
+      for (const auto& x : got) g += "  " + x + "\n";
+      ADD_FAILURE() << "seed " << seed << " (w " << rules.wire_width << ", s " << rules.spacing << "): brute force\n"
+                    << w << "checker\n" << g;
+    }
+  }
+  std::printf("%lld blockage and %lld net clearance problems; %lld layouts clean\n", blockage, net, clean_layouts);
+  EXPECT_EQ(failed, 0);
+  EXPECT_GE(blockage, 300);
+  EXPECT_GE(net, 300);
+  EXPECT_GE(clean_layouts, 100);
+}
+
+}  // namespace
+}  // namespace taut::test
+
+namespace taut::test {
+namespace {
+
+// Exactly at the clearance against a sloped blockage edge: the triangle (0,0) (8,6) (0,6) and a
+// wire from (7,-1) straight down, whose nearest point (7,-1) is exactly 5 from the edge
+// 3x - 4y = 0 (foot (4,3), inside the edge). w/2 + s = 5 passes; 5.5 or 6 does not. And a
+// diagonal wire of another net passing a point pin at exactly w + s.
+TEST(CheckRoutes, ClearanceIsExactOnSlopes) {
+  geom::NormalizedObstacles norm =
+      geom::normalize_obstacles(std::vector<geom::Polygon>{{{{0, 0}, {8, 6}, {0, 6}}, {}}}, geom::Box{{-20, -20}, {20, 20}});
+  ASSERT_EQ(norm.obstacles.size(), 1u);
+  std::vector<router::CheckNet> nets(1);
+  nets[0].name = "a";
+  nets[0].routed = true;
+  auto problems = [&](std::int64_t w, std::int64_t s) {
+    router::CheckRules r;
+    r.wire_width = w;
+    r.spacing = s;
+    return router::check_routes(norm, nets, r).problems;
+  };
+  // Pins at the wire's far end and in its middle (reached, but not an end: no pin access at (7,-1)).
+  nets[0].pins = {{"p", Point{7, -12}, std::nullopt, 1}, {"q", Point{7, -5}, std::nullopt, 2}};
+  nets[0].wires = {{{{7, -1}, {7, -12}}, 3}};
+  EXPECT_TRUE(problems(10, 0).empty());
+  ASSERT_EQ(problems(11, 0).size(), 1u);
+  EXPECT_EQ(problems(11, 0)[0].kind, router::CheckProblem::Kind::BlockageClearance);
+  ASSERT_EQ(problems(10, 1).size(), 1u);
+  // Pin access: with the wire ending on its own pin at (7,-1), the blockage clearance starts at
+  // the first lattice point at least w/2 + s from it, (7,-7) for w/2 + s = 6: no problem.
+  nets[0].pins[1].point = Point{7, -1};
+  EXPECT_TRUE(problems(10, 1).empty());
+  // Another net: a diagonal wire from (-10,-20) to (10,0), on the line x - y = 10.
+  router::CheckNet b;
+  b.name = "b";
+  b.routed = true;
+  b.pins = {{"s", Point{-10, -20}, std::nullopt, 4}, {"t", Point{10, 0}, std::nullopt, 5}};
+  b.wires = {{{{-10, -20}, {10, 0}}, 6}};
+  nets.push_back(b);
+  nets[0].wires = {{{{7, -1}, {7, -12}}, 3}};
+  // The wires cross at (7,-3): a short, whatever the rules.
+  bool short_found = false;
+  for (const auto& p : problems(0, 1)) short_found = short_found || p.kind == router::CheckProblem::Kind::Short;
+  EXPECT_TRUE(short_found);
+  // Net a reduced to its pin at (7,-1) with a wire going up and left, away from b's line
+  // x - y = 10: the pin is sqrt 2 from b's wire, so w + s = 1 passes (2 >= 1) and w + s = 2 does
+  // not (2 < 4).
+  nets[0].pins = {{"p", Point{7, -1}, std::nullopt, 1}, {"q", Point{-5, -1}, std::nullopt, 2}};
+  nets[0].wires = {{{{7, -1}, {-5, -1}}, 3}};
+  norm = geom::normalize_obstacles(std::vector<geom::Polygon>{}, geom::Box{{-20, -20}, {20, 20}});
+  auto net_problems = [&](std::int64_t w, std::int64_t s) {
+    int n = 0;
+    router::CheckRules r;
+    r.wire_width = w;
+    r.spacing = s;
+    for (const auto& p : router::check_routes(norm, nets, r).problems) n += p.kind == router::CheckProblem::Kind::NetClearance;
+    return n;
+  };
+  EXPECT_EQ(net_problems(0, 1), 0);
+  EXPECT_GE(net_problems(1, 1), 1);
 }
 
 }  // namespace
