@@ -63,6 +63,7 @@ bench: build
 	$(BUILD)/bench/bench_bends
 	$(BUILD)/bench/bench_diameter
 	$(BUILD)/bench/bench_diameter_approx
+	$(BUILD)/bench/bench_check
 
 install: build
 	cmake --install $(BUILD) --prefix $(or $(PREFIX),/usr/local)

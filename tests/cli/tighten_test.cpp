@@ -389,6 +389,13 @@ TEST(Tighten, ClearanceFromBlockages) {
             EXPECT_TRUE(keeps_clearance(wire[i - 1], wire[i], b.outer[k], b.outer[(k + 1) % b.outer.size()], D))
                 << n.name << " segment " << i;
     }
+    // and `taut check` (router/check.h, the independent checker) agrees: no blockage clearance
+    // problem, free space and connectivity ok (the two nets are not kept apart: not asked here)
+    const auto chk = run_taut({"check", dir + "/t.xml", "--json"});
+    const nlohmann::json cj = nlohmann::json::parse(chk.out)["routes_check"];
+    EXPECT_EQ(cj["problems"]["blockage_clearance"], 0) << chk.err;
+    EXPECT_EQ(cj["free_space"], "ok") << chk.err;
+    EXPECT_EQ(cj["connectivity"], "ok") << chk.err;
   }
   // without the flag: the wire hugs the square (closer than the rules allow), and it is said
   const auto plain = run_taut({"tighten", file, "-o", dir + "/p.xml"});
@@ -396,6 +403,9 @@ TEST(Tighten, ClearanceFromBlockages) {
   EXPECT_NE(plain.err.find("[TIGHTEN-0006]"), std::string::npos) << plain.err;
   const Path hug = wires_of(dir + "/p.xml", "n").at(0);
   EXPECT_NE(std::find(hug.begin(), hug.end(), Point{40, 60}), hug.end()) << "the square's corner";
+  const auto hug_check = run_taut({"check", dir + "/p.xml", "--json"});
+  EXPECT_EQ(hug_check.status, 1);
+  EXPECT_GE(nlohmann::json::parse(hug_check.out)["routes_check"]["problems"]["blockage_clearance"].get<int>(), 1) << hug_check.err;
   // a sketch through the clearance zone (20 DBU above the square) is refused, nothing written
   std::string close = body;
   close.replace(close.find("5,50 5,120 95,120"), 17, "5,50 5,70 95,120");
