@@ -64,6 +64,7 @@ bench: build
 	$(BUILD)/bench/bench_diameter
 	$(BUILD)/bench/bench_diameter_approx
 	$(BUILD)/bench/bench_check
+	$(BUILD)/bench/bench_steiner
 
 install: build
 	cmake --install $(BUILD) --prefix $(or $(PREFIX),/usr/local)

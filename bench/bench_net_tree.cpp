@@ -39,24 +39,16 @@ Polygon point_pin(Point p) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::int64_t> sizes = {1000, 10000, 100000}, pin_counts = {3, 8, 32};
-  std::string kind_name = "rects";
-  int nets = 10;
-  for (int i = 1; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--sizes") && i + 1 < argc) sizes = parse_list(argv[++i]);
-    else if (!std::strcmp(argv[i], "--pins") && i + 1 < argc) pin_counts = parse_list(argv[++i]);
-    else if (!std::strcmp(argv[i], "--nets") && i + 1 < argc) nets = std::atoi(argv[++i]);
-    else if (!std::strcmp(argv[i], "--kind") && i + 1 < argc) kind_name = argv[++i];
-    else {
-      std::fprintf(stderr, "usage: %s [--sizes N,..] [--pins K,..] [--nets M] [--kind K]\n", argv[0]);
-      return 2;
-    }
-  }
-  const auto kind = taut::io::parse_gen_kind(kind_name);
-  if (!kind) {
-    std::fprintf(stderr, "unknown kind %s\n", kind_name.c_str());
-    return 2;
-  }
+  taut::bench::NetBenchArgs defaults;
+  defaults.sizes = {1000, 10000, 100000};
+  defaults.pins = {3, 8, 32};
+  const auto args = taut::bench::parse_net_bench_args(argc, argv, defaults);
+  if (!args) return 2;
+  const std::vector<std::int64_t>& sizes = args->sizes;
+  const std::vector<std::int64_t>& pin_counts = args->pins;
+  const int nets = args->nets;
+  const std::string& kind_name = args->kind_name;
+  const auto kind = std::optional<taut::io::GenKind>(args->kind);
   std::printf("multi-pin nets: shortest-path tree (one wavefront run to the sinks) vs the source's L1Map, kind %s, %d nets per row\n",
               kind_name.c_str(), nets);
   std::printf("%9s %6s %5s | %10s %7s | %10s %7s | %8s %s\n", "vertices", "nets", "pins", "tree ms/net", "/sort",
@@ -70,18 +62,9 @@ int main(int argc, char** argv) {
     const std::vector<Point> pool = taut::bench::random_free_points(dom, lay.norm.obstacles, 200000, 11);
     for (const bool local : {true, false}) {
       for (const std::int64_t k : pin_counts) {
-        std::mt19937_64 rng(static_cast<std::uint64_t>(size * 131 + k * 7 + local));
-        std::vector<std::vector<Point>> pins(static_cast<std::size_t>(nets));
-        const std::int64_t side = (std::int64_t{dom.hi.x} - dom.lo.x) / 10;
-        for (auto& net : pins) {
-          const Point c = pool[rng() % pool.size()];
-          net.push_back(c);
-          for (std::size_t tries = 0; net.size() < static_cast<std::size_t>(k) && tries < 2000000; ++tries) {
-            const Point p = pool[rng() % pool.size()];
-            if (!local || (std::abs(std::int64_t{p.x} - c.x) <= side / 2 && std::abs(std::int64_t{p.y} - c.y) <= side / 2))
-              net.push_back(p);
-          }
-        }
+        const std::vector<std::vector<Point>> pins = taut::bench::random_nets(
+            pool, dom, static_cast<std::size_t>(nets), static_cast<std::size_t>(k), local,
+            static_cast<std::uint64_t>(size * 131 + k * 7 + local));
         std::vector<std::vector<std::optional<std::int64_t>>> tree_d(pins.size()), map_d(pins.size());
         const double tree_s = seconds_of(
             [&] {

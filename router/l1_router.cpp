@@ -1,6 +1,7 @@
 #include "router/l1_router.h"
 
 #include <algorithm>
+#include <stdexcept>
 #include <map>
 #include <utility>
 
@@ -107,6 +108,82 @@ typename BasicRouter<W>::Wire BasicRouter<W>::shortest(const geom::Polygon& from
     if (d && (!best || *d < *wavefront_.target_distance(*best))) best = i;
   }
   return finish(best);
+}
+
+template <class W>
+typename BasicRouter<W>::Steiner BasicRouter<W>::steiner(std::span<const Point> pins, std::size_t starts) {
+  // Grown from each of the first `starts` pins in turn; the shortest kept (the first on ties).
+  Steiner best;
+  const std::size_t tries = std::max<std::size_t>(1, std::min(starts, pins.size()));
+  for (std::size_t s0 = 0; s0 < tries; ++s0) {
+    std::vector<Point> rotated(pins.begin() + static_cast<std::ptrdiff_t>(s0), pins.end());
+    rotated.insert(rotated.end(), pins.begin(), pins.begin() + static_cast<std::ptrdiff_t>(s0));
+    Steiner t = steiner_from_first(rotated);
+    auto back = [&](std::size_t i) { return (i + s0) % pins.size(); };
+    if (t.failed) t.failed = back(*t.failed);
+    for (std::size_t& i : t.order) i = back(i);
+    if (t.status != WireStatus::Ok) return t;  // a pin not free or not reachable: the same from every start
+    if (s0 == 0 || t.length < best.length) best = std::move(t);
+  }
+  return best;
+}
+
+template <class W>
+typename BasicRouter<W>::Steiner BasicRouter<W>::steiner_from_first(std::span<const Point> pins) {
+  Steiner t;
+  if constexpr (kOctilinear) {
+    throw std::logic_error("BasicRouter::steiner: rectilinear (L1) wires only");
+  } else {
+    if (pins.empty()) {
+      t.status = WireStatus::Ok;
+      return t;
+    }
+    for (std::size_t i = 0; i < pins.size(); ++i)
+      if (!wavefront_.is_free(pins[i])) {
+        t.status = i == 0 ? WireStatus::SourceNotFree : WireStatus::TargetNotFree;
+        t.failed = i;
+        return t;
+      }
+    std::vector<Point> points{pins[0]};
+    std::vector<geom::Segment> segments;
+    std::vector<std::size_t> left;
+    for (std::size_t i = 1; i < pins.size(); ++i) left.push_back(i);
+    t.order.push_back(0);
+    std::vector<std::vector<Point>> wires;
+    while (!left.empty()) {
+      std::vector<Point> targets;
+      for (const std::size_t i : left) targets.push_back(pins[i]);
+      wavefront_.run(points, segments, targets, WavefrontStop::FirstTarget);
+      std::optional<std::size_t> best;
+      for (std::size_t j = 0; j < targets.size(); ++j) {
+        const auto d = wavefront_.target_distance(j);
+        if (d && (!best || *d < *wavefront_.target_distance(*best))) best = j;
+      }
+      if (!best) {
+        t.status = WireStatus::Unreachable;
+        t.failed = left.front();
+        return t;
+      }
+      Wire w = finish(best);
+      if (w.status != WireStatus::Ok) {
+        t.status = w.status;
+        t.failed = left[*best];
+        return t;
+      }
+      for (std::size_t i = 1; i < w.points.size(); ++i) segments.push_back({w.points[i - 1], w.points[i]});
+      if (w.points.size() >= 2) wires.push_back(std::move(w.points));
+      points.push_back(pins[left[*best]]);
+      t.order.push_back(left[*best]);
+      left.erase(left.begin() + static_cast<std::ptrdiff_t>(*best));
+    }
+    t.wires = without_overlaps(wires);
+    if (t.wires.empty()) t.wires.push_back({pins[0]});  // every pin at one point
+    for (const auto& w : t.wires)
+      for (std::size_t i = 1; i < w.size(); ++i)
+        t.length += std::abs(std::int64_t{w[i].x} - w[i - 1].x) + std::abs(std::int64_t{w[i].y} - w[i - 1].y);
+    t.status = WireStatus::Ok;
+    return t;
+  }
 }
 
 template <class W>

@@ -97,6 +97,28 @@ class BasicRouter {
   };
   Tree tree(const geom::Polygon& source, std::span<const geom::Polygon> sinks);
 
+  // Point pins joined by a rectilinear STEINER TREE among the obstacles (issue #7, L1 only):
+  // short total length instead of shortest paths from a source. How: the tree starts as the
+  // first pin; then, repeatedly, one wavefront run from the whole tree so far (its points, and
+  // its wires as segment sources: a new wire may leave the tree anywhere along it) that stops
+  // at the nearest pin not yet joined (Stop::FirstTarget), whose shortest path becomes a
+  // staircase added to the tree; finally without_overlaps(). Each step joins the pin nearest to
+  // the tree by an exact shortest path (Prim's rule with the tree's segments as sources, so
+  // branches start mid-wire: Steiner points). The tree is grown from each of the first `starts`
+  // pins in turn and the shortest kept (the start changes which pins join early, and so where
+  // the branches leave). Not minimal in general: tests/oracle's Dreyfus-Wagner reference
+  // measures the excess (router/steiner_test.cpp). starts x (k - 1) runs for k pins.
+  struct Steiner {
+    // Ok; SourceNotFree (the first pin); TargetNotFree / Unreachable / NoIntegerStaircase for
+    // pin `failed` (an index into pins).
+    WireStatus status = WireStatus::Unreachable;
+    std::optional<std::size_t> failed;
+    std::int64_t length = 0;                      // Ok: the tree's total L1 length
+    std::vector<std::vector<geom::Point>> wires;  // Ok: as Tree::wires
+    std::vector<std::size_t> order;               // the pins in the order they were joined
+  };
+  Steiner steiner(std::span<const geom::Point> pins, std::size_t starts = 8);
+
   // The points of pin `pin` a shortest wire from it may be taken to start at (and why those:
   // PinShapes::candidates, router/pin_shapes.h).
   std::vector<geom::Point> pin_candidates(const geom::Polygon& pin, const geom::Polygon& other) const;
@@ -114,6 +136,8 @@ class BasicRouter {
   const StaircaseStats& staircase_stats() const { return staircase_stats_; }
 
  private:
+  // steiner() grown from pins[0] only.
+  Steiner steiner_from_first(std::span<const geom::Point> pins);
   // The wire to target `target` of the last run (Unreachable when none).
   Wire finish(std::optional<std::size_t> target);
 

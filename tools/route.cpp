@@ -54,8 +54,10 @@ std::optional<NetResult> too_few_pins(const io::Net& net) {
 }
 
 // Router: router::L1Router (rectilinear wires) or router::OctRouter (octilinear).
+// steiner: a net of three or more point pins gets a Steiner tree (L1 only); otherwise the
+// shortest-path tree from its first pin.
 template <class Router>
-NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router) {
+NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router, bool steiner) {
   constexpr bool oct = Router::kOctilinear;
   NetResult r;
   r.route.net = net.name;
@@ -114,6 +116,33 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router
     r.route.wires = std::move(wires);
     return r;
   };
+  bool points_only = true;
+  for (const io::Pin& pin : net.pins) points_only = points_only && pin.point.has_value();
+  if constexpr (!oct) {
+    if (net.pins.size() > 2 && steiner && points_only) {
+      // A rectilinear Steiner tree (router::L1Router::steiner): short total length.
+      std::vector<geom::Point> pins;
+      for (const io::Pin& pin : net.pins) pins.push_back(*pin.point);
+      const router::L1Router::Steiner t = router.steiner(pins);
+      const io::Pin* bad = t.failed ? &net.pins[*t.failed] : nullptr;
+      switch (t.status) {
+        case router::WireStatus::Ok: break;
+        case router::WireStatus::SourceNotFree:
+        case router::WireStatus::TargetNotFree:
+          return fail("ROUTE-0001", "pin \"" + bad->name + "\" " + where(*bad));
+        case router::WireStatus::Unreachable:
+          return fail("ROUTE-0002", "pin \"" + bad->name + "\" is in another part of free space than pin \"" + a.name +
+                                        "\": blockages wall one of them in");
+        case router::WireStatus::NoIntegerStaircase:
+          return fail("ROUTE-0003", "pin \"" + bad->name + "\" is joined to the tree by a shortest path with no "
+                                    "rectilinear wire of integer vertices of its length (sloped blockages pinch every "
+                                    "lattice staircase)");
+      }
+      std::vector<io::Wire> wires;
+      for (const auto& pts : t.wires) wires.push_back(io::Wire{pts});
+      return finish(std::move(wires));
+    }
+  }
   if (net.pins.size() > 2) {
     // A shortest-path tree from the first pin (the net's source): every other pin is reached
     // along the wires by its exact shortest distance from the first.
@@ -221,9 +250,10 @@ void add_route(CLI::App& app, int& status) {
     RoutingOptions routing;
     LoadOptions load;
     bool tighten = false;
+    std::string tree = "spt";
   };
   auto args = std::make_shared<Args>();
-  CLI::App* sub = app.add_subcommand("route", "Route every net (shortest wires; a shortest-path tree from the first pin for nets of three or more pins) and write the routed layout");
+  CLI::App* sub = app.add_subcommand("route", "Route every net (shortest wires; a shortest-path tree from the first pin, or with --tree steiner a Steiner tree, for nets of three or more pins) and write the routed layout");
   sub->add_option("-o,--output", args->out, "routed layout to write (the input with <routes>)")->required();
   sub->add_option("--svg", args->svg, "also draw the routed layout as SVG");
   sub->add_option("--stats", args->stats, "also write statistics as JSON");
@@ -232,10 +262,18 @@ void add_route(CLI::App& app, int& status) {
   sub->add_flag("--tighten", args->tighten,
                 "then pull every wire taut in its class and write it with the fewest links (a net with a "
                 "<sketch> follows its sketch), as taut tighten does");
+  sub->add_option("--tree", args->tree,
+                  "nets of three or more pins: spt (default: a shortest-path tree from the first pin, every pin at its "
+                  "shortest distance) or steiner (short total length; rectilinear L1 wires between point pins)");
   add_input_options(sub, args->file, args->load, "do not print warnings or the summary");
   sub->callback([args, &status] {
     using Clock = std::chrono::steady_clock;
     const auto t0 = Clock::now();
+    if (args->tree != "steiner" && args->tree != "spt") {
+      print_usage_error("CLI-0030", "route: --tree " + args->tree + ": use steiner or spt");
+      status = kInvalid;
+      return;
+    }
     const auto layout = load_routing_layout(args->file, args->load, args->routing);
     if (!layout) {
       status = kInvalid;
@@ -264,6 +302,12 @@ void add_route(CLI::App& app, int& status) {
       if (!link) routes.bend_cost = c;
       t1 = Clock::now();
       for (const io::Net& net : layout->nets) {
+        if (args->tree == "steiner" && net.pins.size() > 2)  // said, not dropped silently
+          print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0009", layout->file, net.line, 0,
+                                        "net \"" + net.name + "\": Steiner trees are built for --metric l1 only in this "
+                                        "version; under --metric " + args->routing.metric +
+                                            " this net gets the tree of best paths from its first pin"}},
+                            args->load.quiet);
         NetResult r = route_net_bends(*layout, net, obs, br, link ? router::BendMetric::Link : router::BendMetric::Combined, c);
         if (r.route.status == "routed") {
           ++routed;
@@ -301,7 +345,17 @@ void add_route(CLI::App& app, int& status) {
         return args->tighten && net.sketch && (net.pins.size() == 2 || WireTightener::is_loop(net.sketch->points));
       };
       for (const io::Net& net : layout->nets) {
-        NetResult r = l1 ? route_net(*layout, net, *l1) : route_net(*layout, net, *oct);
+        const bool steiner = args->tree == "steiner";
+        bool points_only = true;
+        for (const io::Pin& pin : net.pins) points_only = points_only && pin.point.has_value();
+        if (steiner && net.pins.size() > 2 && (octilinear || !points_only))  // said, not dropped silently
+          print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0009", layout->file, net.line, 0,
+                                        "net \"" + net.name + "\": Steiner trees are built for rectilinear wires between "
+                                        "point pins only in this version; this net (" +
+                                            std::string(octilinear ? "octilinear wires" : "a shape pin") +
+                                            ") gets the shortest-path tree from its first pin"}},
+                            args->load.quiet);
+        NetResult r = l1 ? route_net(*layout, net, *l1, steiner) : route_net(*layout, net, *oct, steiner);
         if (r.route.status == "routed") {
           ++routed;
           if (net.sketch && !follows_sketch(net))  // said, not dropped silently

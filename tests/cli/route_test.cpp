@@ -271,6 +271,7 @@ TEST(Route, DemoRoutesEveryNet) {
   EXPECT_TRUE(io::same_document(without_routes, *in.layout));
   const Reference ref = reference_for(kDemo);
   std::map<std::string, std::string> status;
+  std::map<std::string, std::int64_t> spt_length;
   for (const io::Route& route : rr.layout->routes->routes) {
     status[route.net] = route.status;
     if (route.status != "routed") {
@@ -282,8 +283,8 @@ TEST(Route, DemoRoutesEveryNet) {
       if (n.name == route.net) net = &n;
     ASSERT_NE(net, nullptr);
     if (net->pins.size() > 2) {
-      // A shortest-path tree from the first pin: every wire rectilinear and free, and along the
-      // wires every other pin is exactly as far from the first as the reference says.
+      // A shortest-path tree from the first pin (the default): every wire rectilinear and free,
+      // and along the wires every other pin is exactly as far from the first as the reference says.
       std::int64_t total = 0, sum = 0;
       for (const io::Wire& w : route.wires) total += expect_wire(*ref.ref, w.points, w.points.front(), w.points.back());
       for (std::size_t k = 1; k < net->pins.size(); ++k) {
@@ -295,6 +296,7 @@ TEST(Route, DemoRoutesEveryNet) {
       }
       EXPECT_LE(total, sum);  // shared stretches are written once
       EXPECT_EQ(route.length, std::to_string(total));
+      spt_length[route.net] = total;
       continue;
     }
     ASSERT_EQ(route.wires.size(), 1u);
@@ -316,6 +318,25 @@ TEST(Route, DemoRoutesEveryNet) {
   }
   EXPECT_EQ(status, (std::map<std::string, std::string>{
                         {"clk", "routed"}, {"en", "routed"}, {"sda", "routed"}, {"rst", "routed"}, {"bump", "routed"}}));
+  // --tree steiner: a Steiner tree (router::L1Router::steiner) for clk: every wire rectilinear
+  // and free, the pins joined (the checker), and shorter than the shortest-path tree.
+  const auto st = run_taut({"route", kDemo, "-q", "--tree", "steiner", "-o", dir + "/steiner.xml"});
+  ASSERT_EQ(st.status, 0) << st.err;
+  io::ReadResult sr = io::read_layout(dir + "/steiner.xml");
+  ASSERT_TRUE(sr.layout && sr.layout->routes);
+  for (const io::Route& route : sr.layout->routes->routes) {
+    if (!spt_length.count(route.net)) continue;
+    std::int64_t total = 0;
+    for (const io::Wire& w : route.wires) total += expect_wire(*ref.ref, w.points, w.points.front(), w.points.back());
+    EXPECT_EQ(route.length, std::to_string(total));
+    EXPECT_LT(total, spt_length.at(route.net)) << route.net;  // the demo's clk: 24,500 against 40,500
+  }
+  EXPECT_EQ(spt_length.size(), 1u);
+  test::expect_routes_check_except_clearance(dir + "/steiner.xml");
+  const auto bad_tree = run_taut({"route", kDemo, "--tree", "mst", "-o", dir + "/x.xml"});
+  EXPECT_EQ(bad_tree.status, 2);
+  EXPECT_NE(bad_tree.err.find("CLI-0030"), std::string::npos) << bad_tree.err;
+  EXPECT_FALSE(file_exists(dir + "/x.xml"));
   const auto stats = nlohmann::json::parse(read_text(dir + "/s.json"));
   EXPECT_TRUE(stats.contains("route_seconds"));
   EXPECT_EQ(stats["routes"]["sda"]["status"], "routed") << stats.dump();

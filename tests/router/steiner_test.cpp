@@ -1,0 +1,96 @@
+// router::L1Router::steiner (rectilinear Steiner trees among blockages, issue #7) against the
+// exact Steiner minimal length of tests/oracle/steiner_oracle.h (Dreyfus-Wagner on the extended
+// Hanan grid), on random layouts of rectangles that stay apart (the oracle's domain) and without
+// blockages, 2 to 7 pins: every tree is legal by the independent checker (router/check.h: in
+// free space, joining every pin, no stray wire), its length is what its wires measure, at least
+// the minimum, equal to it for two pins, and at most twice it (Prim's rule never exceeds the
+// terminals' minimum spanning tree, itself at most twice the Steiner minimum); unreachable pins
+// exactly when the oracle finds no tree. The mean and worst excess over the minimum are printed.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <random>
+
+#include "geom/normalize.h"
+#include "oracle/steiner_oracle.h"
+#include "router/check.h"
+#include "router/l1_router.h"
+#include "support/sanitized.h"
+
+namespace taut::test {
+namespace {
+
+using geom::Point;
+
+TEST(SteinerTree, LegalAndNearTheMinimum) {
+  int failed = 0, trees = 0, optimal = 0, with_blockages = 0;
+  double excess_sum = 0, worst = 0, single_sum = 0;
+  int worst_seed = 0;
+  for (int seed = 1; seed <= (kSanitized ? 150 : 1500); ++seed) {
+    std::mt19937 rng(static_cast<unsigned>(91000 + seed));
+    std::vector<geom::Box> boxes;
+    const int want_boxes = seed % 4 == 0 ? 0 : static_cast<int>(rng() % 7);
+    for (int k = 0; k < want_boxes; ++k) {
+      const geom::Coord x = static_cast<geom::Coord>(1 + rng() % 34), y = static_cast<geom::Coord>(1 + rng() % 34);
+      const geom::Box b{{x, y}, {static_cast<geom::Coord>(x + 1 + rng() % 8), static_cast<geom::Coord>(y + 1 + rng() % 8)}};
+      bool apart = true;
+      for (const auto& o : boxes) apart = apart && (b.lo.x > o.hi.x || o.lo.x > b.hi.x || b.lo.y > o.hi.y || o.lo.y > b.hi.y);
+      if (apart) boxes.push_back(b);
+    }
+    std::vector<geom::Polygon> polys;
+    for (const auto& b : boxes) polys.push_back({{b.lo, {b.hi.x, b.lo.y}, b.hi, {b.lo.x, b.hi.y}}, {}});
+    const geom::Box domain{{0, 0}, {44, 44}};
+    const geom::NormalizedObstacles norm = geom::normalize_obstacles(polys, domain);
+    router::L1Router router(norm.domain, norm.obstacles);
+    std::vector<Point> pins;
+    const std::size_t k = 2 + rng() % 6;
+    while (pins.size() < k) {
+      const Point p{static_cast<geom::Coord>(rng() % 45), static_cast<geom::Coord>(rng() % 45)};
+      if (router.is_free(p)) pins.push_back(p);
+    }
+    const auto best = oracle::steiner_minimal_length(norm.domain, norm.obstacles, pins);
+    const auto t = router.steiner(pins);
+    const auto single = router.steiner(pins, 1);  // grown from the first pin only
+    if (single.status == router::WireStatus::Ok) single_sum += *best > 0 ? static_cast<double>(single.length - *best) / static_cast<double>(*best) : 0.0;
+    if (single.status == router::WireStatus::Ok && single.length < t.length && failed++ < 8)
+      ADD_FAILURE() << "seed " << seed << ": more starts gave a longer tree";
+    const std::string at = "seed " + std::to_string(seed);
+    if (!best) {
+      if (t.status != router::WireStatus::Unreachable && failed++ < 8) ADD_FAILURE() << at << ": the oracle finds no tree";
+      continue;
+    }
+    if (t.status != router::WireStatus::Ok) {
+      if (failed++ < 8) ADD_FAILURE() << at << ": " << router::to_string(t.status);
+      continue;
+    }
+    ++trees;
+    with_blockages += !boxes.empty();
+    // legal, by the independent checker
+    router::CheckNet net;
+    net.name = "n";
+    net.routed = true;
+    for (std::size_t i = 0; i < pins.size(); ++i) net.pins.push_back({"p" + std::to_string(i), pins[i], std::nullopt, static_cast<int>(i)});
+    for (const auto& w : t.wires) net.wires.push_back({w, 100});
+    const router::CheckResult check = router::check_routes(norm, std::vector<router::CheckNet>{net});
+    if (!check.problems.empty() && failed++ < 8) ADD_FAILURE() << at << ": " << check.problems[0].message;
+    std::int64_t measured = 0;
+    for (const auto& w : t.wires)
+      for (std::size_t i = 1; i < w.size(); ++i) measured += std::abs(w[i].x - w[i - 1].x) + std::abs(w[i].y - w[i - 1].y);
+    if (measured != t.length && failed++ < 8) ADD_FAILURE() << at << ": length " << t.length << ", wires " << measured;
+    if ((t.length < *best || t.length > 2 * *best || (k == 2 && t.length != *best)) && failed++ < 8)
+      ADD_FAILURE() << at << ": " << k << " pins, length " << t.length << ", minimum " << *best;
+    const double excess = *best > 0 ? static_cast<double>(t.length - *best) / static_cast<double>(*best) : 0.0;
+    excess_sum += excess;
+    optimal += t.length == *best;
+    if (excess > worst) worst = excess, worst_seed = seed;
+  }
+  std::printf("%d trees (%d among blockages): %d minimal, mean excess %.2f%%, worst %.2f%% (seed %d); grown from the first pin "
+              "only: mean excess %.2f%%\n",
+              trees, with_blockages, optimal, 100 * excess_sum / std::max(trees, 1), 100 * worst, worst_seed,
+              100 * single_sum / std::max(trees, 1));
+  EXPECT_EQ(failed, 0);
+  EXPECT_GE(trees, kSanitized ? 100 : 1000);
+}
+
+}  // namespace
+}  // namespace taut::test
