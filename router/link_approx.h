@@ -9,8 +9,8 @@
 // meets a vertex; the swept rectangle leaves one or two smaller polygons, each again with such
 // an edge, and the procedure recurses on them. It returns D, the estimate, and M, the most links
 // a path from any point of the polygon to a given piece s of e needs when its first and last
-// links are vertical (exact: the recursion only adds 2 when the piece's projection misses the
-// next edge). Five cases by what the sweep meets (the OCR of the paper lost their figures; the
+// links are vertical (the paper proves M exact: the recursion adds 2 only when the piece's
+// projection misses the next edge; the tests here check the estimate, not M). Five cases by what the sweep meets (the OCR of the paper lost their figures; the
 // formulas survive, and this is how they read here):
 //   (i)   the top edge caps the whole rectangle: the polygon is a rectangle (M 1 or 3, D 3);
 //   (ii)  one side ends at a reflex vertex and the polygon widens above: recurse above (D, M as
