@@ -94,16 +94,54 @@ Dist2 segment_segment(Point a, Point b, Point c, Point d) {
   return best;
 }
 
+// The same for segments with rational ends, given scaled by a common denominator into
+// arbitrary-precision integers (the pin-access cut, see check_clearance).
+using Huge = boost::multiprecision::cpp_int;
+int sign(const Huge& v) { return (v > 0) - (v < 0); }
+struct HugePoint {
+  Huge x, y;
+};
+struct HugeDist2 {
+  Huge num, den;
+};
+Huge h_cross(const HugePoint& o, const HugePoint& a, const HugePoint& b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
+HugeDist2 h_point_segment(const HugePoint& p, const HugePoint& a, const HugePoint& b) {
+  const Huge abx = b.x - a.x, aby = b.y - a.y, apx = p.x - a.x, apy = p.y - a.y;
+  const Huge len2 = abx * abx + aby * aby, t = apx * abx + apy * aby;
+  if (len2 == 0 || t <= 0) return {apx * apx + apy * apy, 1};
+  if (t >= len2) {
+    const Huge bpx = p.x - b.x, bpy = p.y - b.y;
+    return {bpx * bpx + bpy * bpy, 1};
+  }
+  const Huge c = abx * apy - aby * apx;
+  return {c * c, len2};
+}
+bool h_within(const HugePoint& p, const HugePoint& a, const HugePoint& b) {  // p in ab's box
+  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
+}
+HugeDist2 h_segment_segment(const HugePoint& a, const HugePoint& b, const HugePoint& c, const HugePoint& d) {
+  const int o1 = sign(h_cross(a, b, c)), o2 = sign(h_cross(a, b, d)), o3 = sign(h_cross(c, d, a)), o4 = sign(h_cross(c, d, b));
+  const bool meet = (o1 * o2 < 0 && o3 * o4 < 0) || (o1 == 0 && h_within(c, a, b)) || (o2 == 0 && h_within(d, a, b)) ||
+                    (o3 == 0 && h_within(a, c, d)) || (o4 == 0 && h_within(b, c, d));
+  if (meet) return {0, 1};
+  HugeDist2 best = h_point_segment(a, c, d);
+  for (const HugeDist2& x : {h_point_segment(b, c, d), h_point_segment(c, a, b), h_point_segment(d, a, b)})
+    if (x.num * best.den < best.num * x.den) best = x;
+  return best;
+}
+
 }  // namespace
 
 struct FreeSpaceChecker::Impl {
   geom::Box domain;
+  std::vector<geom::Polygon> obstacles_copy;  // its own copy: the checker may outlive the caller's
   const std::vector<geom::Polygon>* obstacles = nullptr;
   std::vector<Edge> edges;
   bgi::rtree<EdgeBox, bgi::rstar<16>> edge_tree;
   bgi::rtree<EdgeBox, bgi::rstar<16>> obstacle_tree;  // obstacles' bounding boxes
 
-  explicit Impl(const geom::NormalizedObstacles& norm) : domain(norm.domain), obstacles(&norm.obstacles) {
+  explicit Impl(const geom::NormalizedObstacles& norm)
+      : domain(norm.domain), obstacles_copy(norm.obstacles), obstacles(&obstacles_copy) {
     auto add_ring = [&](const geom::Ring& ring, std::optional<std::size_t> obstacle, bool is_domain) {
       const std::size_t first = edges.size(), n = ring.size();
       for (std::size_t i = 0; i < n; ++i) {
@@ -388,25 +426,9 @@ std::string half_text(i64 twice) { return std::to_string(twice / 2) + (twice % 2
 // point pins. Pairs that touch are shorts, reported already.
 void check_clearance(const FreeSpaceChecker& free, std::span<const CheckNet> nets, const std::vector<WireSegment>& segments,
                      const SegmentTree& tree, const CheckRules& rules, const std::vector<std::size_t>& wire_id,
-                     CheckResult& result) {
+                     const std::vector<char>& not_free, CheckResult& result) {
   const i64 tb = rules.wire_width + 2 * rules.spacing;    // twice w/2 + s
   const i64 tn = 2 * (rules.wire_width + rules.spacing);  // twice w + s
-  // The lattice point of ab (from a) where the pin-access allowance at a ends: the m-th of its g
-  // lattice steps v = (b - a) / g, m the least with |m v| >= tb / 2; g when there is none before b.
-  auto access_steps = [&](Point a, Point b) -> i64 {
-    const i64 dx = i64{b.x} - a.x, dy = i64{b.y} - a.y, g = std::gcd(std::abs(dx), std::abs(dy));
-    if (g == 0) return 0;
-    const Dir v{dx / g, dy / g};
-    const i128 len2 = dotp(v, v);
-    i64 m = static_cast<i64>(std::ceil(static_cast<double>(tb) / 2.0 / std::sqrt(static_cast<double>(len2))));
-    m = std::max<i64>(m - 2, 0);
-    while (Big(4) * Big(m) * Big(m) * Big(len2) < Big(tb) * Big(tb)) ++m;
-    return std::min(m, g);
-  };
-  auto step_from = [](Point a, Point b, i64 k) {
-    const i64 dx = i64{b.x} - a.x, dy = i64{b.y} - a.y, g = std::gcd(std::abs(dx), std::abs(dy));
-    return Point{static_cast<geom::Coord>(a.x + dx / g * k), static_cast<geom::Coord>(a.y + dy / g * k)};
-  };
   for (std::size_t n = 0; n < nets.size(); ++n) {
     const CheckNet& net = nets[n];
     if (!net.routed) continue;
@@ -415,29 +437,49 @@ void check_clearance(const FreeSpaceChecker& free, std::span<const CheckNet> net
         if ((pin.point && *pin.point == p) || (pin.shape && geom::locate(p, *pin.shape) != geom::Location::Outside)) return true;
       return false;
     };
-    for (const CheckWire& wire : net.wires) {
+    for (std::size_t wi = 0; wi < net.wires.size(); ++wi) {
+      const CheckWire& wire = net.wires[wi];
+      if (not_free[wire_id[n] + wi]) continue;  // in a blockage: reported as not free, not measured
       std::vector<Point> p;
       for (const Point q : wire.points)
         if (p.empty() || p.back() != q) p.push_back(q);
       std::set<std::size_t> reported;  // obstacles named for this wire
       for (std::size_t i = 0; i + 1 < p.size(); ++i) {
-        Point a = p[i], b = p[i + 1];
-        const i64 g = std::gcd(std::abs(i64{b.x} - a.x), std::abs(i64{b.y} - a.y));
-        i64 from = 0, to = g;  // lattice steps of ab held to the clearance
-        if (i == 0 && on_own_pin(p.front())) from = access_steps(a, b);
-        if (i + 2 == p.size() && on_own_pin(p.back())) to = g - access_steps(b, a);
-        if (from >= to) continue;
-        const Point s0 = step_from(a, b, from), s1 = step_from(a, b, to);
-        for (const auto& [e, obstacle] : free.obstacle_edges_near(grown(box_of(s0, s1), tb / 2 + 1))) {
+        const Point a = p[i], b = p[i + 1];
+        // Pin access: the part of ab within L-infinity distance w/2 + s of a pin end is exempt.
+        // Along ab that distance grows as t * m (t in [0, 1], m = max(|dx|, |dy|)), so the part
+        // held to the clearance is t in [ja / D, jb / D] with D = 2m: rational ends, exact.
+        const i64 m = std::max(std::abs(i64{b.x} - a.x), std::abs(i64{b.y} - a.y)), D = 2 * m;
+        i64 ja = 0, jb = D;
+        if (i == 0 && on_own_pin(p.front())) ja = std::min(tb, D);
+        if (i + 2 == p.size() && on_own_pin(p.back())) jb = D - std::min(tb, D);
+        if (ja > jb) continue;
+        const bool cut = ja != 0 || jb != D;
+        auto scaled = [&](i64 j) {
+          return HugePoint{Huge(a.x) * D + Huge(i64{b.x} - a.x) * j, Huge(a.y) * D + Huge(i64{b.y} - a.y) * j};
+        };
+        const HugePoint s0 = cut ? scaled(ja) : HugePoint{}, s1 = cut ? scaled(jb) : HugePoint{};
+        for (const auto& [e, obstacle] : free.obstacle_edges_near(grown(box_of(a, b), tb / 2 + 1))) {
           if (reported.count(obstacle)) continue;
-          const Dist2 d = segment_segment(s0, s1, e.a, e.b);
-          if (at_least(d, tb)) continue;
+          Dist2 d;
+          if (!cut) {
+            d = segment_segment(a, b, e.a, e.b);
+            if (at_least(d, tb)) continue;
+          } else {
+            const HugeDist2 h = h_segment_segment(s0, s1, HugePoint{Huge(e.a.x) * D, Huge(e.a.y) * D},
+                                                  HugePoint{Huge(e.b.x) * D, Huge(e.b.y) * D});
+            if (h.num * 4 >= Huge(tb) * tb * h.den * D * D) continue;
+            // for the message only: the squared distance num / (den D^2), to 6 decimals
+            const double approx_d2 = static_cast<double>(h.num) / static_cast<double>(h.den) / static_cast<double>(D) / static_cast<double>(D);
+            d = {static_cast<i128>(approx_d2 * 1e6), 1000000};
+          }
           reported.insert(obstacle);
           CheckProblem pr;
           pr.kind = CheckProblem::Kind::BlockageClearance;
           pr.net = n;
+          pr.wire = wi;
           pr.line = wire.line;
-          pr.at = s0;
+          pr.at = a;
           pr.obstacle = obstacle;
           pr.message = "net \"" + net.name + "\": the segment " + text(a) + " " + text(b) + " comes within " +
                        distance_text(d) + " of a blockage edge (" + text(e.a) + " " + text(e.b) + "), closer than w/2 + s = " +
@@ -464,6 +506,7 @@ void check_clearance(const FreeSpaceChecker& free, std::span<const CheckNet> net
       CheckProblem pr;
       pr.kind = CheckProblem::Kind::NetClearance;
       pr.net = s.net;
+      pr.wire = s.wire;
       pr.other_net = o.net;
       pr.line = nets[s.net].wires[s.wire].line;
       pr.at = s.a;
@@ -505,6 +548,7 @@ void check_clearance(const FreeSpaceChecker& free, std::span<const CheckNet> net
         CheckProblem pr;
         pr.kind = CheckProblem::Kind::NetClearance;
         pr.net = s.net;
+        pr.wire = s.wire;
         pr.other_net = n;
         pr.line = nets[s.net].wires[s.wire].line;
         pr.at = s.a;
@@ -533,6 +577,7 @@ CheckResult check_routes(const geom::NormalizedObstacles& obstacles, std::span<c
         CheckProblem p;
         p.kind = CheckProblem::Kind::NotFree;
         p.net = n;
+        p.wire = w;
         p.line = wire.line;
         p.at = v.at;
         p.obstacle = v.obstacle;
@@ -611,6 +656,7 @@ CheckResult check_routes(const geom::NormalizedObstacles& obstacles, std::span<c
         CheckProblem pr;
         pr.kind = CheckProblem::Kind::StrayWire;
         pr.net = n;
+        pr.wire = w;
         pr.line = net.wires[w].line;
         pr.at = net.wires[w].points.front();
         pr.message = "net \"" + net.name + "\": the wire from " + text(net.wires[w].points.front()) +
@@ -636,6 +682,7 @@ CheckResult check_routes(const geom::NormalizedObstacles& obstacles, std::span<c
       CheckProblem pr;
       pr.kind = CheckProblem::Kind::Short;
       pr.net = s.net;
+      pr.wire = s.wire;
       pr.other_net = o.net;
       pr.line = nets[s.net].wires[s.wire].line;
       pr.at = s.a;
@@ -660,6 +707,7 @@ CheckResult check_routes(const geom::NormalizedObstacles& obstacles, std::span<c
         CheckProblem pr;
         pr.kind = CheckProblem::Kind::Short;
         pr.net = s.net;
+        pr.wire = s.wire;
         pr.other_net = n;
         pr.line = nets[s.net].wires[s.wire].line;
         pr.at = s.a;
@@ -668,7 +716,12 @@ CheckResult check_routes(const geom::NormalizedObstacles& obstacles, std::span<c
         result.problems.push_back(std::move(pr));
       }
     }
-  if (rules.wire_width > 0 || rules.spacing > 0) check_clearance(free, nets, segments, tree, rules, wire_id, result);
+  if (rules.wire_width > 0 || rules.spacing > 0) {
+    std::vector<char> not_free(wire_id.back(), 0);
+    for (const CheckProblem& p : result.problems)
+      if (p.kind == CheckProblem::Kind::NotFree) not_free[wire_id[p.net] + *p.wire] = 1;
+    check_clearance(free, nets, segments, tree, rules, wire_id, not_free, result);
+  }
   std::stable_sort(result.problems.begin(), result.problems.end(),
                    [](const CheckProblem& a, const CheckProblem& b) { return a.line < b.line; });
   return result;

@@ -18,11 +18,14 @@
 //   - clear (when <rules> has a wire width w or a spacing s): every wire keeps Euclidean
 //     distance >= w/2 + s from every blockage and from other nets' shape pins, and >= w + s from
 //     other nets' wires and point pins (a point pin counts as the end of a wire of its net).
-//     Pin access: where a wire ends on a pin of its own net, its segment from there is not held
-//     to the blockage clearance up to its first lattice point at least w/2 + s from that end (a
-//     pin may sit on a blockage's edge, FORMAT.md, and a wire has to leave it); the clearance
-//     to other nets holds everywhere. Distances are compared exactly: squared distances as
-//     fractions of integers against (w + 2s)^2 / 4 and (w + s)^2 in 256-bit integers.
+//     Pin access: where a wire ends on a pin of its own net, the part of its segment from there
+//     that lies within L-infinity distance w/2 + s of that end is not held to the blockage
+//     clearance (a pin may sit on a blockage's edge, FORMAT.md, and a wire has to leave it; for
+//     a horizontal or vertical segment that is its first w/2 + s units, for a diagonal one up to
+//     sqrt 2 times that); the clearance to other nets holds everywhere. Distances are compared
+//     exactly: squared distances as fractions of integers against (w + 2s)^2 / 4 and (w + s)^2
+//     in 256-bit integers, and where the pin access cuts a segment at a rational point, in
+//     arbitrary-precision integers (Boost.Multiprecision cpp_int) scaled by its denominator.
 //
 // How. The wedges of free space at a point p (the maximal closed sectors of directions d with
 // p + e d in the open free space for small e > 0) come from the ring edges through p (outer
@@ -88,6 +91,7 @@ struct CheckProblem {
   };
   Kind kind = Kind::NotFree;
   std::size_t net = 0;    // index into the nets given
+  std::optional<std::size_t> wire;  // the wire (index into the net's wires), when about one
   int line = 0;           // the wire's line (the pin's for Disconnected)
   geom::Point at;         // a point where it happens (an end of the offending segment, or the pin)
   std::optional<std::size_t> obstacle;  // NotFree: the obstacle met (index into obstacles), if one

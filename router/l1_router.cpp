@@ -122,8 +122,11 @@ typename BasicRouter<W>::Steiner BasicRouter<W>::steiner(std::span<const Point> 
     auto back = [&](std::size_t i) { return (i + s0) % pins.size(); };
     if (t.failed) t.failed = back(*t.failed);
     for (std::size_t& i : t.order) i = back(i);
-    if (t.status != WireStatus::Ok) return t;  // a pin not free or not reachable: the same from every start
-    if (s0 == 0 || t.length < best.length) best = std::move(t);
+    if (t.status == WireStatus::SourceNotFree || t.status == WireStatus::TargetNotFree || t.status == WireStatus::Unreachable)
+      return t;  // a pin not free or walled in: the same from every start
+    // NoIntegerStaircase depends on the paths taken: another start may do without it
+    if (best.status != WireStatus::Ok && (t.status == WireStatus::Ok || s0 == 0)) best = std::move(t);
+    else if (t.status == WireStatus::Ok && t.length < best.length) best = std::move(t);
   }
   return best;
 }

@@ -212,6 +212,8 @@ LinkDiameterEstimate approximate_link_diameter(const geom::Ring& polygon) {
   auto ask = [&](std::int32_t call, std::int32_t lo, std::int32_t hi) { calls[static_cast<std::size_t>(call)].asked.push_back({lo, hi}); };
   std::size_t asked = 0;
   for (std::size_t i = 0; i < calls.size(); ++i) {
+    if (calls.size() > cells.size())  // the cells' adjacency has a cycle: not a simple polygon
+      throw std::invalid_argument("approximate_link_diameter: the decomposition is not a tree (not a simple polygon)");
     {
       const Cell& u = cells[static_cast<std::size_t>(calls[i].cell)];
       const int far = 1 - calls[i].near;
@@ -339,7 +341,8 @@ LinkDiameterEstimate approximate_link_diameter(const geom::Ring& polygon) {
   e.estimate = calls[0].d;
   e.cells = cells.size();
   e.pieces = asked;
-  if (polygon.size() == 4) {
+  if (polygon.size() == 4) {  // a rectangle: MAXDIST says 3, the diameter is 2
+    e.estimate = 2;
     e.lo = e.hi = 2;
   } else {
     e.lo = std::max(2, e.estimate - 3);

@@ -43,8 +43,10 @@
 // stay inside). The tests check |estimate - diameter| <= 3 on polygons full of shared x's and y's.
 //
 // Cost: O(n log n) for the sort and the sweep's ordered map (the paper's O(n) needs the visible
-// vertices of every edge from a linear-time triangulation) plus the pieces; O(n) memory, no
-// recursion.
+// vertices of every edge from a linear-time triangulation) plus the pieces; O(n + pieces)
+// memory, no recursion. A ring that is not simple is refused (std::invalid_argument) when the
+// sweep or the decomposition finds it out (cells that overlap, or a cycle of cells); a weakly
+// simple one (touching itself along a slit) can pass and get an estimate.
 #pragma once
 
 #include <cstddef>
@@ -54,14 +56,14 @@
 namespace taut::router {
 
 struct LinkDiameterEstimate {
-  int estimate = 0;          // MAXDIST's D: |estimate - diameter| <= 3
+  int estimate = 0;          // MAXDIST's D: |estimate - diameter| <= 3 (2, exact, for a rectangle)
   int lo = 0, hi = 0;        // the diameter lies in [lo, hi]: estimate -+ 3, at least 2 (2 for a rectangle)
   std::size_t cells = 0;     // cells of the horizontal decomposition (recursive calls)
   std::size_t pieces = 0;    // (cell, piece s) pairs M was computed for
 };
 
 // polygon: a simple rectilinear ring, counter-clockwise, without repeated or collinear vertices
-// (LinkPolygon::ring() is one); std::invalid_argument otherwise (when the sweep finds it out).
+// (LinkPolygon::ring() is one); std::invalid_argument otherwise (when it is found out, above).
 LinkDiameterEstimate approximate_link_diameter(const geom::Ring& polygon);
 
 }  // namespace taut::router

@@ -286,7 +286,8 @@ namespace {
 // The clearance of <rules> against a brute force for rectilinear wires among rectangles: the
 // distance between two axis-parallel boxes (a segment is a thin one, a point pin a point) is
 // sqrt(gx^2 + gy^2) with gx, gy the gaps between their x and y intervals; a wire's first and
-// last segments are trimmed by ceil(w/2 + s) units where they end on a pin of their own net.
+// last segments are trimmed by w/2 + s units (in doubled coordinates) where they end on a pin of
+// their own net; a wire that runs through a rectangle is left to the free-space check.
 // Random wires (some through the rectangles), rectangle blockages apart from each other, point
 // and rectangle pins, w and s from 0 to 4: the same (wire, blockage), (wire, wire) and
 // (wire, pin) pairs are reported. Between nets, a pair of segments that touch is a short, not
@@ -364,7 +365,8 @@ TEST(CheckRoutes, ClearanceMatchesAGapBruteForce) {
       return seg(p.shape->outer[0], p.shape->outer[2]);
     };
     std::set<std::string> want, got;
-    const std::int64_t trim = (tb + 1) / 2;  // ceil(w/2 + s) units off a pin
+    // Pin access in doubled coordinates (w/2 + s may be a half): the first tb half-units of a
+    // segment that ends on its own net's pin are exempt.
     for (std::size_t n = 0; n < nets.size(); ++n) {
       const auto& nt = nets[n];
       auto own = [&](Point q) {
@@ -378,18 +380,25 @@ TEST(CheckRoutes, ClearanceMatchesAGapBruteForce) {
         return false;
       };
       for (const auto& w : nt.wires) {
+        // A wire through a rectangle's inside is reported as not free, and not measured.
+        bool inside = false;
+        for (std::size_t i = 0; i + 1 < w.points.size(); ++i) {
+          const Span g = seg(w.points[i], w.points[i + 1]);
+          for (const auto& r : rects) inside = inside || (g.x1 > r.lo.x && g.x0 < r.hi.x && g.y1 > r.lo.y && g.y0 < r.hi.y);
+        }
+        if (inside) continue;
         for (std::size_t i = 0; i + 1 < w.points.size(); ++i) {
           Point a = w.points[i], b = w.points[i + 1];
-          const std::int64_t len = std::abs(std::int64_t{b.x} - a.x) + std::abs(std::int64_t{b.y} - a.y);
-          std::int64_t from = 0, to = len;
-          if (i == 0 && own(w.points.front())) from = std::min(trim, len);
-          if (i + 2 == w.points.size() && own(w.points.back())) to = len - std::min(trim, len);
-          if (from >= to) continue;
+          const std::int64_t len2 = 2 * (std::abs(std::int64_t{b.x} - a.x) + std::abs(std::int64_t{b.y} - a.y));
+          std::int64_t from = 0, to = len2;
+          if (i == 0 && own(w.points.front())) from = std::min(tb, len2);
+          if (i + 2 == w.points.size() && own(w.points.back())) to = len2 - std::min(tb, len2);
+          if (from > to) continue;
           const int ux = (b.x > a.x) - (b.x < a.x), uy = (b.y > a.y) - (b.y < a.y);
-          const Point s0{static_cast<geom::Coord>(a.x + ux * from), static_cast<geom::Coord>(a.y + uy * from)};
-          const Point s1{static_cast<geom::Coord>(a.x + ux * to), static_cast<geom::Coord>(a.y + uy * to)};
+          const Span s2 = seg(Point{static_cast<geom::Coord>(2 * a.x + ux * from), static_cast<geom::Coord>(2 * a.y + uy * from)},
+                              Point{static_cast<geom::Coord>(2 * a.x + ux * to), static_cast<geom::Coord>(2 * a.y + uy * to)});
           for (std::size_t r = 0; r < rects.size(); ++r)
-            if (4 * gap2(seg(s0, s1), {rects[r].lo.x, rects[r].hi.x, rects[r].lo.y, rects[r].hi.y}) < tb * tb)
+            if (gap2(s2, {2 * rects[r].lo.x, 2 * rects[r].hi.x, 2 * rects[r].lo.y, 2 * rects[r].hi.y}) < tb * tb)
               want.insert("blockage " + std::to_string(w.line) + " " + std::to_string(r));
         }
       }
@@ -457,8 +466,8 @@ namespace {
 
 // Exactly at the clearance against a sloped blockage edge: the triangle (0,0) (8,6) (0,6) and a
 // wire from (7,-1) straight down, whose nearest point (7,-1) is exactly 5 from the edge
-// 3x - 4y = 0 (foot (4,3), inside the edge). w/2 + s = 5 passes; 5.5 or 6 does not. And a
-// diagonal wire of another net passing a point pin at exactly w + s.
+// 3x - 4y = 0 (foot (4,3), inside the edge). w/2 + s = 5 passes; 5.5 or 6 does not (pin
+// access aside). And a diagonal wire of another net passing a point pin sqrt 2 away.
 TEST(CheckRoutes, ClearanceIsExactOnSlopes) {
   geom::NormalizedObstacles norm =
       geom::normalize_obstacles(std::vector<geom::Polygon>{{{{0, 0}, {8, 6}, {0, 6}}, {}}}, geom::Box{{-20, -20}, {20, 20}});
@@ -479,10 +488,31 @@ TEST(CheckRoutes, ClearanceIsExactOnSlopes) {
   ASSERT_EQ(problems(11, 0).size(), 1u);
   EXPECT_EQ(problems(11, 0)[0].kind, router::CheckProblem::Kind::BlockageClearance);
   ASSERT_EQ(problems(10, 1).size(), 1u);
-  // Pin access: with the wire ending on its own pin at (7,-1), the blockage clearance starts at
-  // the first lattice point at least w/2 + s from it, (7,-7) for w/2 + s = 6: no problem.
-  nets[0].pins[1].point = Point{7, -1};
+  // Pin access: with the wire starting on its own pin at (7,-1) (the other end on no pin), the
+  // blockage clearance holds from 6 below it, (7,-7), 9.8 from the edge: no problem for
+  // w/2 + s = 6; for 5.5 it holds from (7,-6.5), 9.4 away: none either.
+  nets[0].pins = {{"p", Point{7, -5}, std::nullopt, 1}, {"q", Point{7, -1}, std::nullopt, 2}};
   EXPECT_TRUE(problems(10, 1).empty());
+  EXPECT_TRUE(problems(11, 0).empty());
+  // A sloped segment off a pin is cut at an exact rational point, not at its next lattice point
+  // (0,0 to 13,2 has none between its ends): it passes 1.46 from the square's bottom edge far
+  // from the pin, closer than w/2 + s = 2.
+  {
+    const geom::NormalizedObstacles sq = geom::normalize_obstacles(
+        std::vector<geom::Polygon>{{{{5, 3}, {10, 3}, {10, 10}, {5, 10}}, {}}}, geom::Box{{-30, -30}, {30, 30}});
+    std::vector<router::CheckNet> one(1);
+    one[0].name = "s";
+    one[0].routed = true;
+    one[0].pins = {{"p", Point{0, 0}, std::nullopt, 1}, {"q", Point{13, -20}, std::nullopt, 2}};
+    one[0].wires = {{{{0, 0}, {13, 2}, {13, -20}}, 3}};
+    router::CheckRules r;
+    r.wire_width = 2;
+    r.spacing = 1;
+    const auto got = router::check_routes(sq, one, r).problems;
+    ASSERT_EQ(got.size(), 1u);
+    EXPECT_EQ(got[0].kind, router::CheckProblem::Kind::BlockageClearance);
+    EXPECT_EQ(got[0].wire, std::optional<std::size_t>(0));
+  }
   // Another net: a diagonal wire from (-10,-20) to (10,0), on the line x - y = 10.
   router::CheckNet b;
   b.name = "b";

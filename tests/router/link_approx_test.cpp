@@ -193,6 +193,7 @@ TEST(ApproximateLinkDiameter, KeptSeeds) {
 
 TEST(ApproximateLinkDiameter, RectangleAndBadRings) {
   const auto e = router::approximate_link_diameter({{0, 0}, {5, 0}, {5, 3}, {0, 3}});
+  EXPECT_EQ(e.estimate, 2);
   EXPECT_EQ(e.lo, 2);
   EXPECT_EQ(e.hi, 2);
   EXPECT_EQ(e.cells, 1u);
@@ -200,6 +201,11 @@ TEST(ApproximateLinkDiameter, RectangleAndBadRings) {
   EXPECT_THROW(router::approximate_link_diameter({{0, 0}, {0, 3}, {5, 3}, {5, 0}}), std::invalid_argument);
   EXPECT_THROW(router::approximate_link_diameter({{0, 0}, {5, 0}, {5, 3}, {1, 4}}), std::invalid_argument);
   EXPECT_THROW(router::approximate_link_diameter({{0, 0}, {5, 0}}), std::invalid_argument);
+  // Self-intersecting, yet alternating and of positive area: the cells form a cycle (a review
+  // found that this ran until memory ran out).
+  EXPECT_THROW(router::approximate_link_diameter(
+                   {{6, 0}, {6, 6}, {3, 6}, {3, 3}, {2, 3}, {2, 4}, {4, 4}, {4, 0}, {3, 0}, {3, 5}, {5, 5}, {5, 4}, {1, 4}, {1, 0}}),
+               std::invalid_argument);
 }
 
 }  // namespace
