@@ -25,16 +25,10 @@
 
 namespace {
 
-using taut::bench::parse_list;
 using taut::bench::seconds_of;
 using taut::geom::Point;
+using taut::bench::point_pin;
 using taut::geom::Polygon;
-
-Polygon point_pin(Point p) {
-  Polygon g;
-  g.outer = {p};
-  return g;
-}
 
 }  // namespace
 
@@ -44,18 +38,14 @@ int main(int argc, char** argv) {
   defaults.pins = {3, 8, 32};
   const auto args = taut::bench::parse_net_bench_args(argc, argv, defaults);
   if (!args) return 2;
-  const std::vector<std::int64_t>& sizes = args->sizes;
-  const std::vector<std::int64_t>& pin_counts = args->pins;
-  const int nets = args->nets;
-  const std::string& kind_name = args->kind_name;
-  const auto kind = std::optional<taut::io::GenKind>(args->kind);
+  const auto& [sizes, pin_counts, nets, kind_name, kind] = *args;
   std::printf("multi-pin nets: shortest-path tree (one wavefront run to the sinks) vs the source's L1Map, kind %s, %d nets per row\n",
               kind_name.c_str(), nets);
   std::printf("%9s %6s %5s | %10s %7s | %10s %7s | %8s %s\n", "vertices", "nets", "pins", "tree ms/net", "/sort",
               "map ms/net", "/sort", "map/tree", "checked");
   int failures = 0;
   for (const std::int64_t size : sizes) {
-    const auto lay = taut::bench::bench_layout(*kind, size);
+    const auto lay = taut::bench::bench_layout(kind, size);
     const double sort_s = taut::bench::sort_seconds(lay.points);
     const auto& dom = lay.norm.domain;
     taut::router::L1Router router(dom, lay.norm.obstacles);

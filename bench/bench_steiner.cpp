@@ -20,16 +20,10 @@
 
 namespace {
 
-using taut::bench::parse_list;
 using taut::bench::seconds_of;
 using taut::geom::Point;
+using taut::bench::point_pin;
 using taut::geom::Polygon;
-
-Polygon point_pin(Point p) {
-  Polygon g;
-  g.outer = {p};
-  return g;
-}
 
 std::int64_t total_length(const std::vector<std::vector<Point>>& wires) {
   std::int64_t s = 0;
@@ -47,16 +41,12 @@ int main(int argc, char** argv) {
   defaults.pins = {3, 8, 20};
   const auto args = taut::bench::parse_net_bench_args(argc, argv, defaults);
   if (!args) return 2;
-  const std::vector<std::int64_t>& sizes = args->sizes;
-  const std::vector<std::int64_t>& pin_counts = args->pins;
-  const int nets = args->nets;
-  const std::string& kind_name = args->kind_name;
-  const auto kind = std::optional<taut::io::GenKind>(args->kind);
+  const auto& [sizes, pin_counts, nets, kind_name, kind] = *args;
   std::printf("Steiner trees vs shortest-path trees, kind %s, %d nets per row, one thread\n", kind_name.c_str(), nets);
   std::printf("%9s %6s %5s | %9s %9s %8s | %8s %8s | %s\n", "vertices", "nets", "pins", "spt ms", "steiner ms", "/spt",
               "len/spt", "1 start", "failed");
   for (const std::int64_t size : sizes) {
-    const auto lay = taut::bench::bench_layout(*kind, size);
+    const auto lay = taut::bench::bench_layout(kind, size);
     const auto& dom = lay.norm.domain;
     taut::router::L1Router router(dom, lay.norm.obstacles);
     const std::vector<Point> pool = taut::bench::random_free_points(dom, lay.norm.obstacles, 200000, 11);

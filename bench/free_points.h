@@ -55,6 +55,13 @@ inline std::vector<std::vector<geom::Point>> random_nets(std::span<const geom::P
   return pins;
 }
 
+// A point pin as the routers take pins: a polygon whose outer ring is the one point.
+inline geom::Polygon point_pin(geom::Point p) {
+  geom::Polygon g;
+  g.outer = {p};
+  return g;
+}
+
 // The options of bench_net_tree and bench_steiner: [--sizes N,..] [--pins K,..] [--nets M]
 // [--kind K]. std::nullopt (after printing the usage) for anything else or an unknown kind.
 struct NetBenchArgs {

@@ -421,14 +421,12 @@ std::string distance_text(Dist2 d) {
 }
 std::string half_text(i64 twice) { return std::to_string(twice / 2) + (twice % 2 ? ".5" : ""); }
 
-// The clearance of <rules> (see check.h): w/2 + s from blockages (but for a wire's first steps
-// off a pin of its own net) and from other nets' shape pins, w + s from other nets' wires and
-// point pins. Pairs that touch are shorts, reported already.
-void check_clearance(const FreeSpaceChecker& free, std::span<const CheckNet> nets, const std::vector<WireSegment>& segments,
-                     const SegmentTree& tree, const CheckRules& rules, const std::vector<std::size_t>& wire_id,
-                     const std::vector<char>& not_free, CheckResult& result) {
-  const i64 tb = rules.wire_width + 2 * rules.spacing;    // twice w/2 + s
-  const i64 tn = 2 * (rules.wire_width + rules.spacing);  // twice w + s
+// The clearance of <rules> from blockages (see check.h): w/2 + s, but for a wire's first part
+// off a pin of its own net. Wires not in free space are reported as such and not measured.
+void check_blockage_clearance(const FreeSpaceChecker& free, std::span<const CheckNet> nets, const CheckRules& rules,
+                              const std::vector<std::size_t>& wire_id, const std::vector<char>& not_free,
+                              CheckResult& result) {
+  const i64 tb = rules.wire_width + 2 * rules.spacing;  // twice w/2 + s
   for (std::size_t n = 0; n < nets.size(); ++n) {
     const CheckNet& net = nets[n];
     if (!net.routed) continue;
@@ -489,49 +487,72 @@ void check_clearance(const FreeSpaceChecker& free, std::span<const CheckNet> net
       }
     }
   }
-  // Between nets: wires, and wires against pins.
-  std::set<std::pair<std::size_t, std::size_t>> seen;
+}
+
+// Between nets, with one R-tree query per wire segment and one per pin: shorts (a shared point,
+// whatever the rules; once per pair of wires, and per wire and pin) and, with rules, the
+// clearance (w + s from wires and point pins, w/2 + s from shape pins; judged on the pairs of
+// segments that do not touch, once per pair of wires or wire and pin).
+void check_between_nets(std::span<const CheckNet> nets, const std::vector<WireSegment>& segments, const SegmentTree& tree,
+                        const CheckRules& rules, const std::vector<std::size_t>& wire_id, CheckResult& result) {
+  const bool clearance = rules.wire_width > 0 || rules.spacing > 0;
+  const i64 tb = rules.wire_width + 2 * rules.spacing;    // twice w/2 + s
+  const i64 tn = 2 * (rules.wire_width + rules.spacing);  // twice w + s
+  const i64 reach = clearance ? tn / 2 + 1 : 0;
+  auto add = [&](CheckProblem::Kind kind, const WireSegment& s, std::size_t other_net, std::string what) {
+    CheckProblem pr;
+    pr.kind = kind;
+    pr.net = s.net;
+    pr.wire = s.wire;
+    pr.other_net = other_net;
+    pr.line = nets[s.net].wires[s.wire].line;
+    pr.at = s.a;
+    pr.message = "net \"" + nets[s.net].name + "\": the segment " + text(s.a) + " " + text(s.b) + " " + std::move(what);
+    result.problems.push_back(std::move(pr));
+  };
+  std::set<std::pair<std::size_t, std::size_t>> shorted, close;  // (wire id, other's wire or pin id)
   std::vector<EdgeBox> hits;
   for (const WireSegment& s : segments) {
     hits.clear();
-    tree.query(bgi::intersects(grown(box_of(s.a, s.b), tn / 2 + 1)), std::back_inserter(hits));
+    tree.query(bgi::intersects(grown(box_of(s.a, s.b), reach)), std::back_inserter(hits));
     for (const auto& h : hits) {
       const WireSegment& o = segments[h.second];
-      if (o.net <= s.net) continue;
+      if (o.net <= s.net) continue;  // each pair of nets once, from the lower
       const std::pair<std::size_t, std::size_t> key{wire_id[s.net] + s.wire, wire_id[o.net] + o.wire};
-      if (seen.count(key)) continue;
+      const std::string other = "a wire of net \"" + nets[o.net].name + "\" (" + text(o.a) + " " + text(o.b) + ", line " +
+                                std::to_string(nets[o.net].wires[o.wire].line) + ")";
+      if (geom::intersect({s.a, s.b}, {o.a, o.b}) != geom::SegmentIntersection::None) {
+        if (shorted.insert(key).second) add(CheckProblem::Kind::Short, s, o.net, "touches " + other + ": a short");
+        continue;
+      }
+      if (!clearance || close.count(key)) continue;
       const Dist2 d = segment_segment(s.a, s.b, o.a, o.b);
-      if (d.num == 0 || at_least(d, tn)) continue;  // touching: a short, reported already
-      seen.insert(key);
-      CheckProblem pr;
-      pr.kind = CheckProblem::Kind::NetClearance;
-      pr.net = s.net;
-      pr.wire = s.wire;
-      pr.other_net = o.net;
-      pr.line = nets[s.net].wires[s.wire].line;
-      pr.at = s.a;
-      pr.message = "net \"" + nets[s.net].name + "\": the segment " + text(s.a) + " " + text(s.b) + " comes within " +
-                   distance_text(d) + " of a wire of net \"" + nets[o.net].name + "\" (" + text(o.a) + " " + text(o.b) + ", line " +
-                   std::to_string(nets[o.net].wires[o.wire].line) + "), closer than w + s = " + half_text(tn);
-      result.problems.push_back(std::move(pr));
+      if (at_least(d, tn)) continue;
+      close.insert(key);
+      add(CheckProblem::Kind::NetClearance, s, o.net,
+          "comes within " + distance_text(d) + " of " + other + ", closer than w + s = " + half_text(tn));
     }
   }
+  std::size_t pin_id = wire_id.back();  // pins numbered after every wire, in the same keys
   for (std::size_t n = 0; n < nets.size(); ++n)
     for (const CheckPin& pin : nets[n].pins) {
-      const geom::Box b = pin_box(pin);
+      ++pin_id;
       hits.clear();
-      tree.query(bgi::intersects(grown(b, tn / 2 + 1)), std::back_inserter(hits));
-      std::set<std::size_t> wires_hit;
+      tree.query(bgi::intersects(grown(pin_box(pin), reach)), std::back_inserter(hits));
+      const std::string other = "pin \"" + pin.name + "\" of net \"" + nets[n].name + "\" (line " + std::to_string(pin.line) + ")";
       for (const auto& h : hits) {
         const WireSegment& s = segments[h.second];
         if (s.net == n) continue;
+        const std::pair<std::size_t, std::size_t> key{wire_id[s.net] + s.wire, pin_id};
+        if (segment_meets_pin(s.a, s.b, pin)) {
+          if (shorted.insert(key).second) add(CheckProblem::Kind::Short, s, n, "touches " + other + ": a short");
+          continue;
+        }
+        if (!clearance || close.count(key)) continue;
         Dist2 d;
-        i64 need = tn;
         if (pin.point) {
           d = point_segment(*pin.point, s.a, s.b);
         } else {
-          need = tb;
-          if (meets_shape(s.a, s.b, *pin.shape)) continue;  // a short
           bool first = true;
           auto ring = [&](const geom::Ring& r) {
             for (std::size_t i = 0; i < r.size(); ++i) {
@@ -543,19 +564,12 @@ void check_clearance(const FreeSpaceChecker& free, std::span<const CheckNet> net
           ring(pin.shape->outer);
           for (const auto& hole : pin.shape->holes) ring(hole);
         }
-        if (d.num == 0 || at_least(d, need)) continue;
-        if (!wires_hit.insert(wire_id[s.net] + s.wire).second) continue;
-        CheckProblem pr;
-        pr.kind = CheckProblem::Kind::NetClearance;
-        pr.net = s.net;
-        pr.wire = s.wire;
-        pr.other_net = n;
-        pr.line = nets[s.net].wires[s.wire].line;
-        pr.at = s.a;
-        pr.message = "net \"" + nets[s.net].name + "\": the segment " + text(s.a) + " " + text(s.b) + " comes within " +
-                     distance_text(d) + " of pin \"" + pin.name + "\" of net \"" + nets[n].name + "\" (line " +
-                     std::to_string(pin.line) + "), closer than " + (pin.point ? "w + s = " : "w/2 + s = ") + half_text(need);
-        result.problems.push_back(std::move(pr));
+        const i64 need = pin.point ? tn : tb;
+        if (at_least(d, need)) continue;
+        close.insert(key);
+        add(CheckProblem::Kind::NetClearance, s, n,
+            "comes within " + distance_text(d) + " of " + other + ", closer than " + (pin.point ? "w + s = " : "w/2 + s = ") +
+                half_text(need));
       }
     }
 }
@@ -665,62 +679,14 @@ CheckResult check_routes(const geom::NormalizedObstacles& obstacles, std::span<c
       }
   }
 
-  // Shorts: a wire segment sharing a point with another net's segment or pin (reported once
-  // per pair of wires, and once per wire and pin).
-  std::set<std::pair<std::size_t, std::size_t>> seen;  // (wire id, other net's wire id)
-  std::vector<std::size_t> wire_id(nets.size() + 1, 0);
+  std::vector<std::size_t> wire_id(nets.size() + 1, 0);  // nets' wires numbered in one sequence
   for (std::size_t n = 0; n < nets.size(); ++n) wire_id[n + 1] = wire_id[n] + nets[n].wires.size();
-  for (const WireSegment& s : segments) {
-    hits.clear();
-    tree.query(bgi::intersects(box_of(s.a, s.b)), std::back_inserter(hits));
-    for (const auto& h : hits) {
-      const WireSegment& o = segments[h.second];
-      if (o.net <= s.net) continue;  // each pair of nets once, from the lower
-      if (geom::intersect({s.a, s.b}, {o.a, o.b}) == geom::SegmentIntersection::None) continue;
-      const std::pair<std::size_t, std::size_t> key{wire_id[s.net] + s.wire, wire_id[o.net] + o.wire};
-      if (!seen.insert(key).second) continue;
-      CheckProblem pr;
-      pr.kind = CheckProblem::Kind::Short;
-      pr.net = s.net;
-      pr.wire = s.wire;
-      pr.other_net = o.net;
-      pr.line = nets[s.net].wires[s.wire].line;
-      pr.at = s.a;
-      pr.message = "net \"" + nets[s.net].name + "\": the segment " + text(s.a) + " " + text(s.b) +
-                   " touches a wire of net \"" + nets[o.net].name + "\" (" + text(o.a) + " " + text(o.b) +
-                   ", line " + std::to_string(nets[o.net].wires[o.wire].line) + "): a short";
-      result.problems.push_back(std::move(pr));
-    }
-  }
-  for (std::size_t n = 0; n < nets.size(); ++n)
-    for (const CheckPin& pin : nets[n].pins) {
-      const geom::Box b = pin_box(pin);
-      hits.clear();
-      tree.query(bgi::intersects(b), std::back_inserter(hits));
-      std::vector<std::size_t> wires_hit;
-      for (const auto& h : hits) {
-        const WireSegment& s = segments[h.second];
-        if (s.net == n || !segment_meets_pin(s.a, s.b, pin)) continue;
-        const std::size_t id = wire_id[s.net] + s.wire;
-        if (std::find(wires_hit.begin(), wires_hit.end(), id) != wires_hit.end()) continue;
-        wires_hit.push_back(id);
-        CheckProblem pr;
-        pr.kind = CheckProblem::Kind::Short;
-        pr.net = s.net;
-        pr.wire = s.wire;
-        pr.other_net = n;
-        pr.line = nets[s.net].wires[s.wire].line;
-        pr.at = s.a;
-        pr.message = "net \"" + nets[s.net].name + "\": the segment " + text(s.a) + " " + text(s.b) + " touches pin \"" +
-                     pin.name + "\" of net \"" + nets[n].name + "\" (line " + std::to_string(pin.line) + "): a short";
-        result.problems.push_back(std::move(pr));
-      }
-    }
+  check_between_nets(nets, segments, tree, rules, wire_id, result);
   if (rules.wire_width > 0 || rules.spacing > 0) {
     std::vector<char> not_free(wire_id.back(), 0);
     for (const CheckProblem& p : result.problems)
       if (p.kind == CheckProblem::Kind::NotFree) not_free[wire_id[p.net] + *p.wire] = 1;
-    check_clearance(free, nets, segments, tree, rules, wire_id, not_free, result);
+    check_blockage_clearance(free, nets, rules, wire_id, not_free, result);
   }
   std::stable_sort(result.problems.begin(), result.problems.end(),
                    [](const CheckProblem& a, const CheckProblem& b) { return a.line < b.line; });

@@ -54,8 +54,28 @@ std::optional<NetResult> too_few_pins(const io::Net& net) {
 }
 
 // Router: router::L1Router (rectilinear wires) or router::OctRouter (octilinear).
-// steiner: a net of three or more point pins gets a Steiner tree (L1 only); otherwise the
-// shortest-path tree from its first pin.
+// With --tree steiner: why this net of three or more pins does not get a Steiner tree (they are
+// built for rectilinear L1 wires between point pins), or nullopt when it does or needs no tree.
+std::optional<std::string> no_steiner_tree(const io::Net& net, const std::string& metric, bool octilinear) {
+  if (net.pins.size() <= 2) return std::nullopt;
+  if (metric != "l1") return "--metric " + metric + " gives it the tree of best paths from its first pin";
+  if (octilinear) return "octilinear wires give it the shortest-path tree from its first pin";
+  for (const io::Pin& pin : net.pins)
+    if (!pin.point) return "its shape pin \"" + pin.name + "\" gives it the shortest-path tree from its first pin";
+  return std::nullopt;
+}
+
+// Says (ROUTE-0009) that the net does not get the Steiner tree --tree steiner asked for.
+void warn_no_steiner_tree(const io::Layout& layout, const io::Net& net, const std::string& why, bool quiet) {
+  print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0009", layout.file, net.line, 0,
+                                "net \"" + net.name + "\": Steiner trees are built for rectilinear L1 wires between point "
+                                "pins only in this version; " + why}},
+                    quiet);
+}
+
+// steiner: the net (three or more point pins, L1 rectilinear: no_steiner_tree() is nullopt) gets
+// a Steiner tree; otherwise a net of three or more pins gets the shortest-path tree from its
+// first pin.
 template <class Router>
 NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router, bool steiner) {
   constexpr bool oct = Router::kOctilinear;
@@ -116,10 +136,8 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router
     r.route.wires = std::move(wires);
     return r;
   };
-  bool points_only = true;
-  for (const io::Pin& pin : net.pins) points_only = points_only && pin.point.has_value();
   if constexpr (!oct) {
-    if (net.pins.size() > 2 && steiner && points_only) {
+    if (net.pins.size() > 2 && steiner) {
       // A rectilinear Steiner tree (router::L1Router::steiner): short total length.
       std::vector<geom::Point> pins;
       for (const io::Pin& pin : net.pins) pins.push_back(*pin.point);
@@ -302,12 +320,9 @@ void add_route(CLI::App& app, int& status) {
       if (!link) routes.bend_cost = c;
       t1 = Clock::now();
       for (const io::Net& net : layout->nets) {
-        if (args->tree == "steiner" && net.pins.size() > 2)  // said, not dropped silently
-          print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0009", layout->file, net.line, 0,
-                                        "net \"" + net.name + "\": Steiner trees are built for --metric l1 only in this "
-                                        "version; under --metric " + args->routing.metric +
-                                            " this net gets the tree of best paths from its first pin"}},
-                            args->load.quiet);
+        if (args->tree == "steiner")  // said, not dropped silently
+          if (const auto why = no_steiner_tree(net, args->routing.metric, false))
+            warn_no_steiner_tree(*layout, net, *why, args->load.quiet);
         NetResult r = route_net_bends(*layout, net, obs, br, link ? router::BendMetric::Link : router::BendMetric::Combined, c);
         if (r.route.status == "routed") {
           ++routed;
@@ -345,16 +360,9 @@ void add_route(CLI::App& app, int& status) {
         return args->tighten && net.sketch && (net.pins.size() == 2 || WireTightener::is_loop(net.sketch->points));
       };
       for (const io::Net& net : layout->nets) {
-        const bool steiner = args->tree == "steiner";
-        bool points_only = true;
-        for (const io::Pin& pin : net.pins) points_only = points_only && pin.point.has_value();
-        if (steiner && net.pins.size() > 2 && (octilinear || !points_only))  // said, not dropped silently
-          print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0009", layout->file, net.line, 0,
-                                        "net \"" + net.name + "\": Steiner trees are built for rectilinear wires between "
-                                        "point pins only in this version; this net (" +
-                                            std::string(octilinear ? "octilinear wires" : "a shape pin") +
-                                            ") gets the shortest-path tree from its first pin"}},
-                            args->load.quiet);
+        const std::optional<std::string> why = args->tree == "steiner" ? no_steiner_tree(net, "l1", octilinear) : std::nullopt;
+        if (why) warn_no_steiner_tree(*layout, net, *why, args->load.quiet);  // said, not dropped silently
+        const bool steiner = args->tree == "steiner" && !why;
         NetResult r = l1 ? route_net(*layout, net, *l1, steiner) : route_net(*layout, net, *oct, steiner);
         if (r.route.status == "routed") {
           ++routed;

@@ -320,7 +320,7 @@ TEST(Route, DemoRoutesEveryNet) {
                         {"clk", "routed"}, {"en", "routed"}, {"sda", "routed"}, {"rst", "routed"}, {"bump", "routed"}}));
   // --tree steiner: a Steiner tree (router::L1Router::steiner) for clk: every wire rectilinear
   // and free, the pins joined (the checker), and shorter than the shortest-path tree.
-  const auto st = run_taut({"route", kDemo, "-q", "--tree", "steiner", "-o", dir + "/steiner.xml"});
+  const auto st = run_taut({"route", kDemo, "--tree", "steiner", "-o", dir + "/steiner.xml"});
   ASSERT_EQ(st.status, 0) << st.err;
   io::ReadResult sr = io::read_layout(dir + "/steiner.xml");
   ASSERT_TRUE(sr.layout && sr.layout->routes);
@@ -337,6 +337,10 @@ TEST(Route, DemoRoutesEveryNet) {
   EXPECT_EQ(bad_tree.status, 2);
   EXPECT_NE(bad_tree.err.find("CLI-0030"), std::string::npos) << bad_tree.err;
   EXPECT_FALSE(file_exists(dir + "/x.xml"));
+  // a net --tree steiner does not take is named (ROUTE-0009) and gets the shortest-path tree
+  const auto oct_run = run_taut({"route", kDemo, "--tree", "steiner", "--orientations", "octilinear", "-o", dir + "/o.xml"});
+  EXPECT_NE(oct_run.err.find("[ROUTE-0009] net \"clk\""), std::string::npos) << oct_run.err;
+  EXPECT_EQ(st.err.find("ROUTE-0009"), std::string::npos) << st.err;
   const auto stats = nlohmann::json::parse(read_text(dir + "/s.json"));
   EXPECT_TRUE(stats.contains("route_seconds"));
   EXPECT_EQ(stats["routes"]["sda"]["status"], "routed") << stats.dump();

@@ -12,6 +12,7 @@
 #include <random>
 
 #include "oracle/l1_oracle.h"
+#include "support/random_shapes.h"
 
 namespace taut::oracle {
 namespace {
@@ -26,15 +27,8 @@ struct Scene {
 // Up to 4 rectangles at least 1 apart, normalized as they are (counter-clockwise).
 Scene random_scene(std::mt19937& rng) {
   Scene s;
-  std::vector<geom::Box> boxes;
-  for (int k = 0, n = static_cast<int>(rng() % 5); k < n; ++k) {
-    const geom::Coord x = static_cast<geom::Coord>(1 + rng() % 34), y = static_cast<geom::Coord>(1 + rng() % 34);
-    const geom::Box b{{x, y}, {static_cast<geom::Coord>(x + 1 + rng() % 6), static_cast<geom::Coord>(y + 1 + rng() % 6)}};
-    bool apart = true;
-    for (const auto& o : boxes) apart = apart && (b.lo.x > o.hi.x || o.lo.x > b.hi.x || b.lo.y > o.hi.y || o.lo.y > b.hi.y);
-    if (apart) boxes.push_back(b);
-  }
-  for (const auto& b : boxes) s.obstacles.push_back({{b.lo, {b.hi.x, b.lo.y}, b.hi, {b.lo.x, b.hi.y}}, {}});
+  const int count = static_cast<int>(rng() % 5);
+  s.obstacles = test::box_polygons(test::random_boxes_apart(rng, count, 1, 34, 6));
   return s;
 }
 

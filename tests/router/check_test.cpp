@@ -18,6 +18,7 @@
 
 #include "geom/normalize.h"
 #include "oracle/l1_oracle.h"
+#include "support/random_shapes.h"
 #include "support/sanitized.h"
 #include "support/wavefront_cases.h"
 
@@ -304,17 +305,9 @@ TEST(CheckRoutes, ClearanceMatchesAGapBruteForce) {
     if (rules.wire_width == 0 && rules.spacing == 0) rules.spacing = 1;
     const std::int64_t tb = rules.wire_width + 2 * rules.spacing, tn = 2 * (rules.wire_width + rules.spacing);
     // Rectangles at least 1 apart (so each is one obstacle of the union).
-    std::vector<geom::Box> rects;
-    for (int k = 0, n = static_cast<int>(rng() % 4); k < n; ++k) {
-      const geom::Coord x = coord(), y = coord();
-      const geom::Box b{{x, y}, {static_cast<geom::Coord>(x + 1 + rng() % 5), static_cast<geom::Coord>(y + 1 + rng() % 5)}};
-      bool apart = true;
-      for (const auto& o : rects)
-        apart = apart && (b.lo.x > o.hi.x || o.lo.x > b.hi.x || b.lo.y > o.hi.y || o.lo.y > b.hi.y);
-      if (apart) rects.push_back(b);
-    }
-    std::vector<geom::Polygon> polys;
-    for (const auto& b : rects) polys.push_back({{b.lo, {b.hi.x, b.lo.y}, b.hi, {b.lo.x, b.hi.y}}, {}});
+    const int count = static_cast<int>(rng() % 4);
+    const std::vector<geom::Box> rects = random_boxes_apart(rng, count, 0, 31, 5);
+    const std::vector<geom::Polygon> polys = box_polygons(rects);
     const geom::NormalizedObstacles norm = geom::normalize_obstacles(polys, geom::Box{{-10, -10}, {50, 50}});
     if (norm.obstacles.size() != rects.size()) continue;
     // obstacle index -> rectangle

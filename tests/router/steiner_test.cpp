@@ -15,6 +15,7 @@
 #include "oracle/steiner_oracle.h"
 #include "router/check.h"
 #include "router/l1_router.h"
+#include "support/random_shapes.h"
 #include "support/sanitized.h"
 
 namespace taut::test {
@@ -28,17 +29,9 @@ TEST(SteinerTree, LegalAndNearTheMinimum) {
   int worst_seed = 0;
   for (int seed = 1; seed <= (kSanitized ? 150 : 1500); ++seed) {
     std::mt19937 rng(static_cast<unsigned>(91000 + seed));
-    std::vector<geom::Box> boxes;
     const int want_boxes = seed % 4 == 0 ? 0 : static_cast<int>(rng() % 7);
-    for (int k = 0; k < want_boxes; ++k) {
-      const geom::Coord x = static_cast<geom::Coord>(1 + rng() % 34), y = static_cast<geom::Coord>(1 + rng() % 34);
-      const geom::Box b{{x, y}, {static_cast<geom::Coord>(x + 1 + rng() % 8), static_cast<geom::Coord>(y + 1 + rng() % 8)}};
-      bool apart = true;
-      for (const auto& o : boxes) apart = apart && (b.lo.x > o.hi.x || o.lo.x > b.hi.x || b.lo.y > o.hi.y || o.lo.y > b.hi.y);
-      if (apart) boxes.push_back(b);
-    }
-    std::vector<geom::Polygon> polys;
-    for (const auto& b : boxes) polys.push_back({{b.lo, {b.hi.x, b.lo.y}, b.hi, {b.lo.x, b.hi.y}}, {}});
+    const std::vector<geom::Box> boxes = random_boxes_apart(rng, want_boxes, 1, 34, 8);
+    const std::vector<geom::Polygon> polys = box_polygons(boxes);
     const geom::Box domain{{0, 0}, {44, 44}};
     const geom::NormalizedObstacles norm = geom::normalize_obstacles(polys, domain);
     router::L1Router router(norm.domain, norm.obstacles);

@@ -171,4 +171,25 @@ RectilinearPolygonSample random_thin_polygon(std::mt19937& rng, int max_stretch)
   }
 }
 
+std::vector<geom::Box> random_boxes_apart(std::mt19937& rng, int count, int lo, int span, int max_side) {
+  std::vector<geom::Box> boxes;
+  for (int k = 0; k < count; ++k) {
+    const geom::Coord x = static_cast<geom::Coord>(lo + static_cast<int>(rng() % static_cast<unsigned>(span)));
+    const geom::Coord y = static_cast<geom::Coord>(lo + static_cast<int>(rng() % static_cast<unsigned>(span)));
+    const geom::Coord w = static_cast<geom::Coord>(1 + rng() % static_cast<unsigned>(max_side));
+    const geom::Coord h = static_cast<geom::Coord>(1 + rng() % static_cast<unsigned>(max_side));
+    const geom::Box b{{x, y}, {static_cast<geom::Coord>(x + w), static_cast<geom::Coord>(y + h)}};
+    bool apart = true;
+    for (const auto& o : boxes) apart = apart && (b.lo.x > o.hi.x || o.lo.x > b.hi.x || b.lo.y > o.hi.y || o.lo.y > b.hi.y);
+    if (apart) boxes.push_back(b);
+  }
+  return boxes;
+}
+
+std::vector<geom::Polygon> box_polygons(std::span<const geom::Box> boxes) {
+  std::vector<geom::Polygon> polys;
+  for (const auto& b : boxes) polys.push_back({{b.lo, {b.hi.x, b.lo.y}, b.hi, {b.lo.x, b.hi.y}}, {}});
+  return polys;
+}
+
 }  // namespace taut::test

@@ -53,6 +53,14 @@ RectilinearPolygonSample random_rectilinear_sample(std::mt19937& rng, int side, 
 // the stretched cells (for the lattice).
 RectilinearPolygonSample random_thin_polygon(std::mt19937& rng, int max_stretch);
 
+// `count` boxes tried at random, each with its low corner at lo + [0, span) in x and in y and
+// sides of 1 to max_side, kept when at least 1 apart from every box kept before (so each is one
+// obstacle of the union, and no two pinch). rng is used in that order, x before y, width before
+// height.
+std::vector<geom::Box> random_boxes_apart(std::mt19937& rng, int count, int lo, int span, int max_side);
+// Each box as a counter-clockwise rectangle without holes.
+std::vector<geom::Polygon> box_polygons(std::span<const geom::Box> boxes);
+
 // The boundary of the union of closed boxes (geom::normalize_obstacles), counter-clockwise, no
 // collinear vertices; std::invalid_argument unless the union is one polygon without holes whose
 // ring repeats no vertex (boxes that only touch at a corner pinch).
