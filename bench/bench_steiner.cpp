@@ -20,17 +20,11 @@
 
 namespace {
 
+using taut::bench::total_length;
 using taut::bench::seconds_of;
 using taut::geom::Point;
 using taut::bench::point_pin;
 using taut::geom::Polygon;
-
-std::int64_t total_length(const std::vector<std::vector<Point>>& wires) {
-  std::int64_t s = 0;
-  for (const auto& w : wires)
-    for (std::size_t i = 1; i < w.size(); ++i) s += std::abs(std::int64_t{w[i].x} - w[i - 1].x) + std::abs(std::int64_t{w[i].y} - w[i - 1].y);
-  return s;
-}
 
 }  // namespace
 

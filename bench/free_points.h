@@ -55,6 +55,15 @@ inline std::vector<std::vector<geom::Point>> random_nets(std::span<const geom::P
   return pins;
 }
 
+// The total L1 length of polylines.
+inline std::int64_t total_length(const std::vector<std::vector<geom::Point>>& wires) {
+  std::int64_t s = 0;
+  for (const auto& w : wires)
+    for (std::size_t i = 1; i < w.size(); ++i)
+      s += std::abs(std::int64_t{w[i].x} - w[i - 1].x) + std::abs(std::int64_t{w[i].y} - w[i - 1].y);
+  return s;
+}
+
 // A point pin as the routers take pins: a polygon whose outer ring is the one point.
 inline geom::Polygon point_pin(geom::Point p) {
   geom::Polygon g;

@@ -386,23 +386,112 @@ std::vector<Polygon> square_grown(std::span<const Polygon> polygons, Coord r) {
         for (Point p : {a, b})
           for (int sx : {-1, 1})
             for (int sy : {-1, 1}) pts.push_back(corner(p, sx, sy));
-        // convex hull (monotone chain, exact), counter-clockwise, collinear points dropped
-        std::sort(pts.begin(), pts.end());
-        pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
-        std::vector<Point> hull(2 * pts.size());
-        std::size_t k = 0;
-        for (std::size_t j = 0; j < pts.size(); ++j) {
-          while (k >= 2 && orient(hull[k - 2], hull[k - 1], pts[j]) <= 0) --k;
-          hull[k++] = pts[j];
-        }
-        for (std::size_t j = pts.size() - 1, t = k + 1; j-- > 0;) {
-          while (k >= t && orient(hull[k - 2], hull[k - 1], pts[j]) <= 0) --k;
-          hull[k++] = pts[j];
-        }
-        hull.resize(k - 1);
-        out.push_back(Polygon{hull, {}});
+        out.push_back(Polygon{convex_hull(std::move(pts)), {}});
       }
   }
+  return out;
+}
+
+Ring convex_hull(std::vector<Point> pts) {
+  // monotone chain, exact
+  std::sort(pts.begin(), pts.end());
+  pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+  if (pts.size() < 3) return pts;
+  std::vector<Point> hull(2 * pts.size());
+  std::size_t k = 0;
+  for (std::size_t j = 0; j < pts.size(); ++j) {
+    while (k >= 2 && orient(hull[k - 2], hull[k - 1], pts[j]) <= 0) --k;
+    hull[k++] = pts[j];
+  }
+  for (std::size_t j = pts.size() - 1, t = k + 1; j-- > 0;) {
+    while (k >= t && orient(hull[k - 2], hull[k - 1], pts[j]) <= 0) --k;
+    hull[k++] = pts[j];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+Ring square_grown_segment(Point a, Point b, Coord r) {
+  if (r < 0) throw std::invalid_argument("square_grown_segment: negative r");
+  std::vector<Point> pts;
+  for (Point p : {a, b})
+    for (int sx : {-1, 1})
+      for (int sy : {-1, 1}) {
+        const std::int64_t x = std::int64_t{p.x} + sx * std::int64_t{r}, y = std::int64_t{p.y} + sy * std::int64_t{r};
+        if (!in_range(x) || !in_range(y)) throw std::domain_error("a wire grown by its clearance passes the coordinate limit");
+        pts.push_back({static_cast<Coord>(x), static_cast<Coord>(y)});
+      }
+  return convex_hull(std::move(pts));
+}
+
+namespace {
+
+std::int64_t floor_div(std::int64_t n, std::int64_t d) {  // d > 0
+  return n >= 0 ? n / d : -((-n + d - 1) / d);
+}
+
+// The convex polygon c (counter-clockwise, integer) intersected with the closed box r (lo <= hi),
+// rounded outward along r's sides, as the hull of integer points (see convex_minus_box).
+Ring clip_rounded(const Ring& c, std::int64_t x0, std::int64_t x1, std::int64_t y0, std::int64_t y1) {
+  if (x0 > x1 || y0 > y1) return {};
+  std::vector<Point> pts;
+  auto inside_box = [&](std::int64_t x, std::int64_t y) { return x >= x0 && x <= x1 && y >= y0 && y <= y1; };
+  for (const Point p : c)
+    if (inside_box(p.x, p.y)) pts.push_back(p);
+  // the box's corners inside c
+  for (const std::int64_t x : {x0, x1})
+    for (const std::int64_t y : {y0, y1}) {
+      const Point q{static_cast<Coord>(x), static_cast<Coord>(y)};
+      bool in = true;
+      for (std::size_t i = 0; i < c.size() && in; ++i) in = orient(c[i], c[(i + 1) % c.size()], q) >= 0;
+      if (in) pts.push_back(q);
+    }
+  // c's edges crossing the box's side lines strictly between their ends
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    const Point a = c[i], b = c[(i + 1) % c.size()];
+    for (const std::int64_t x : {x0, x1}) {
+      if (!((a.x < x && x < b.x) || (b.x < x && x < a.x))) continue;
+      const std::int64_t num = std::int64_t{a.y} * (b.x - a.x) + std::int64_t{b.y - a.y} * (x - a.x);  // y * (b.x - a.x)
+      std::int64_t den = b.x - a.x, n = num;
+      if (den < 0) den = -den, n = -n;
+      const std::int64_t lo = floor_div(n, den), hi = lo + (lo * den == n ? 0 : 1);
+      if (lo >= y0 && hi <= y1)  // the exact point is on the box's side (y0, y1 integer)
+        for (const std::int64_t y : {lo, hi}) pts.push_back({static_cast<Coord>(x), static_cast<Coord>(y)});
+    }
+    for (const std::int64_t y : {y0, y1}) {
+      if (!((a.y < y && y < b.y) || (b.y < y && y < a.y))) continue;
+      const std::int64_t num = std::int64_t{a.x} * (b.y - a.y) + std::int64_t{b.x - a.x} * (y - a.y);
+      std::int64_t den = b.y - a.y, n = num;
+      if (den < 0) den = -den, n = -n;
+      const std::int64_t lo = floor_div(n, den), hi = lo + (lo * den == n ? 0 : 1);
+      if (lo >= x0 && hi <= x1)
+        for (const std::int64_t x : {lo, hi}) pts.push_back({static_cast<Coord>(x), static_cast<Coord>(y)});
+    }
+  }
+  return convex_hull(std::move(pts));
+}
+
+}  // namespace
+
+std::vector<Ring> convex_minus_box(const Ring& convex, Box s) {
+  std::int64_t cx0 = kMaxCoord, cx1 = -kMaxCoord, cy0 = kMaxCoord, cy1 = -kMaxCoord;
+  for (const Point p : convex) {
+    cx0 = std::min<std::int64_t>(cx0, p.x), cx1 = std::max<std::int64_t>(cx1, p.x);
+    cy0 = std::min<std::int64_t>(cy0, p.y), cy1 = std::max<std::int64_t>(cy1, p.y);
+  }
+  // Does c meet the open box? Its closure does when c is not on the outer closed side of a
+  // box side; then the interiors meet unless c touches the box only along its boundary, which
+  // the clipped parts below decide anyway (they are c itself then, up to hull order).
+  if (s.lo.x >= cx1 || s.hi.x <= cx0 || s.lo.y >= cy1 || s.hi.y <= cy0) return {convex};
+  std::vector<Ring> out;
+  auto keep = [&](Ring r) {
+    if (r.size() >= 3) out.push_back(std::move(r));
+  };
+  keep(clip_rounded(convex, cx0, s.lo.x, cy0, cy1));                                                 // left
+  keep(clip_rounded(convex, s.hi.x, cx1, cy0, cy1));                                                 // right
+  const std::int64_t mx0 = std::max<std::int64_t>(cx0, s.lo.x), mx1 = std::min<std::int64_t>(cx1, s.hi.x);
+  keep(clip_rounded(convex, mx0, mx1, cy0, s.lo.y));                                                 // below
+  keep(clip_rounded(convex, mx0, mx1, s.hi.y, cy1));                                                 // above
   return out;
 }
 

@@ -95,4 +95,23 @@ NormalizedObstacles normalize_obstacles(std::span<const Polygon> inputs,
 // grown coordinate would pass kMaxCoord.
 std::vector<Polygon> square_grown(std::span<const Polygon> polygons, Coord r);
 
+// The convex hull of the points: counter-clockwise from the lexicographically smallest, collinear
+// and repeated points dropped (exact; fewer than 3 points when they are collinear).
+Ring convex_hull(std::vector<Point> points);
+
+// The L-infinity r-neighbourhood of the segment ab (the convex hull of the squares [-r, r]^2 at
+// a and b: a hexagon, or a rectangle when ab is horizontal or vertical or a point), counter-
+// clockwise. std::domain_error when a coordinate would pass kMaxCoord.
+Ring square_grown_segment(Point a, Point b, Coord r);
+
+// Convex pieces whose union covers the closed convex polygon `convex` (counter-clockwise,
+// integer vertices) minus the open box s, none entering the open box: the parts left, right,
+// below and above s. Where a part's boundary crosses a side line of s at a non-integer point,
+// the point is replaced by its two integer neighbours along that line and the part is the hull,
+// so a part reaches at most 1 DBU beyond `convex`, along the side lines of s only (an obstacle
+// never shrinks). `convex` itself when it does not meet the open box; nothing when the box
+// covers it. Parts of zero area are left out (they are covered by the others' closures only
+// when they lie on s's boundary, which is free anyway).
+std::vector<Ring> convex_minus_box(const Ring& convex, Box s);
+
 }  // namespace taut::geom

@@ -421,20 +421,59 @@ std::string distance_text(Dist2 d) {
 }
 std::string half_text(i64 twice) { return std::to_string(twice / 2) + (twice % 2 ? ".5" : ""); }
 
-// The clearance of <rules> from blockages (see check.h): w/2 + s, but for a wire's first part
-// off a pin of its own net. Wires not in free space are reported as such and not measured.
+// A non-negative fraction num / den (den > 0).
+struct Frac {
+  i64 num, den;
+};
+bool frac_less(const Frac& x, const Frac& y) { return i128(x.num) * y.den < i128(y.num) * x.den; }
+// The closed interval of t in [0, 1] where a + t (b - a) lies in the closed box z, if any.
+std::optional<std::pair<Frac, Frac>> box_interval(Point a, Point b, const geom::Box& z) {
+  Frac lo{0, 1}, hi{1, 1};
+  const i64 lo_c[2] = {z.lo.x, z.lo.y}, hi_c[2] = {z.hi.x, z.hi.y};
+  const i64 pa[2] = {a.x, a.y}, pb[2] = {b.x, b.y};
+  for (int k = 0; k < 2; ++k) {
+    const i64 d = pb[k] - pa[k];
+    if (d == 0) {
+      if (pa[k] < lo_c[k] || pa[k] > hi_c[k]) return std::nullopt;
+      continue;
+    }
+    // t where the coordinate reaches the box's two sides, ordered
+    Frac t0{lo_c[k] - pa[k], d}, t1{hi_c[k] - pa[k], d};
+    if (d < 0) t0 = {pa[k] - lo_c[k], -d}, t1 = {pa[k] - hi_c[k], -d}, std::swap(t0, t1);
+    if (frac_less(lo, t0)) lo = t0;
+    if (frac_less(t1, hi)) hi = t1;
+  }
+  if (frac_less(hi, lo)) return std::nullopt;
+  return std::pair{lo, hi};
+}
+
+// The clearance of <rules> from blockages (see check.h): w/2 + s, but for the parts of a wire in
+// the access zones of its own net's pins. Wires not in free space are reported as such and not measured.
 void check_blockage_clearance(const FreeSpaceChecker& free, std::span<const CheckNet> nets, const CheckRules& rules,
                               const std::vector<std::size_t>& wire_id, const std::vector<char>& not_free,
                               CheckResult& result) {
   const i64 tb = rules.wire_width + 2 * rules.spacing;  // twice w/2 + s
+  const i64 acc = (rules.wire_width + 1) / 2 + rules.spacing;  // the pin access radius
   for (std::size_t n = 0; n < nets.size(); ++n) {
     const CheckNet& net = nets[n];
     if (!net.routed) continue;
-    auto on_own_pin = [&](Point p) {
+    auto on_own_shape = [&](Point p) {
       for (const CheckPin& pin : net.pins)
-        if ((pin.point && *pin.point == p) || (pin.shape && geom::locate(p, *pin.shape) != geom::Location::Outside)) return true;
+        if (pin.shape && geom::locate(p, *pin.shape) != geom::Location::Outside) return true;
       return false;
     };
+    // The access zones: the closed squares of half-side acc around the net's point pins and
+    // around its wires' ends on its shape pins.
+    std::vector<geom::Box> zones;
+    auto zone = [&](Point c) {
+      zones.push_back({{static_cast<geom::Coord>(c.x - acc), static_cast<geom::Coord>(c.y - acc)},
+                       {static_cast<geom::Coord>(c.x + acc), static_cast<geom::Coord>(c.y + acc)}});
+    };
+    for (const CheckPin& pin : net.pins)
+      if (pin.point) zone(*pin.point);
+    for (const CheckWire& wire : net.wires)
+      for (const Point e : {wire.points.front(), wire.points.back()})
+        if (on_own_shape(e)) zone(e);
     for (std::size_t wi = 0; wi < net.wires.size(); ++wi) {
       const CheckWire& wire = net.wires[wi];
       if (not_free[wire_id[n] + wi]) continue;  // in a blockage: reported as not free, not measured
@@ -444,33 +483,43 @@ void check_blockage_clearance(const FreeSpaceChecker& free, std::span<const Chec
       std::set<std::size_t> reported;  // obstacles named for this wire
       for (std::size_t i = 0; i + 1 < p.size(); ++i) {
         const Point a = p[i], b = p[i + 1];
-        // Pin access: the part of ab within L-infinity distance w/2 + s of a pin end is exempt.
-        // Along ab that distance grows as t * m (t in [0, 1], m = max(|dx|, |dy|)), so the part
-        // held to the clearance is t in [ja / D, jb / D] with D = 2m: rational ends, exact.
-        const i64 m = std::max(std::abs(i64{b.x} - a.x), std::abs(i64{b.y} - a.y)), D = 2 * m;
-        i64 ja = 0, jb = D;
-        if (i == 0 && on_own_pin(p.front())) ja = std::min(tb, D);
-        if (i + 2 == p.size() && on_own_pin(p.back())) jb = D - std::min(tb, D);
-        if (ja > jb) continue;
-        const bool cut = ja != 0 || jb != D;
-        auto scaled = [&](i64 j) {
-          return HugePoint{Huge(a.x) * D + Huge(i64{b.x} - a.x) * j, Huge(a.y) * D + Huge(i64{b.y} - a.y) * j};
-        };
-        const HugePoint s0 = cut ? scaled(ja) : HugePoint{}, s1 = cut ? scaled(jb) : HugePoint{};
-        for (const auto& [e, obstacle] : free.obstacle_edges_near(grown(box_of(a, b), tb / 2 + 1))) {
-          if (reported.count(obstacle)) continue;
-          Dist2 d;
-          if (!cut) {
-            d = segment_segment(a, b, e.a, e.b);
-            if (at_least(d, tb)) continue;
-          } else {
-            const HugeDist2 h = h_segment_segment(s0, s1, HugePoint{Huge(e.a.x) * D, Huge(e.a.y) * D},
-                                                  HugePoint{Huge(e.b.x) * D, Huge(e.b.y) * D});
-            if (h.num * 4 >= Huge(tb) * tb * h.den * D * D) continue;
-            // for the message only: the squared distance num / (den D^2), to 6 decimals
-            const double approx_d2 = static_cast<double>(h.num) / static_cast<double>(h.den) / static_cast<double>(D) / static_cast<double>(D);
-            d = {static_cast<i128>(approx_d2 * 1e6), 1000000};
-          }
+        // Pin access: the parts of ab in an access zone are exempt. Each zone holds one closed
+        // interval of t (a + t (b - a), t in [0, 1]) with rational ends; the parts held to the
+        // clearance are the closures of what the intervals leave, each measured exactly.
+        std::vector<std::pair<Frac, Frac>> cover;
+        for (const geom::Box& z : zones)
+          if (auto iv = box_interval(a, b, z)) cover.push_back(*iv);
+        std::sort(cover.begin(), cover.end(), [](const auto& x, const auto& y) { return frac_less(x.first, y.first); });
+        std::vector<std::pair<Frac, Frac>> held;
+        Frac at{0, 1};
+        for (const auto& [lo, hi] : cover) {
+          if (frac_less(at, lo)) held.push_back({at, lo});
+          if (frac_less(at, hi)) at = hi;
+        }
+        if (frac_less(at, Frac{1, 1})) held.push_back({at, Frac{1, 1}});
+        for (const auto& [t0, t1] : held) {
+          const bool cut = !(t0.num == 0 && t1.num == t1.den);
+          const Huge D = Huge(t0.den) * t1.den;
+          auto scaled = [&](const Huge& j) {  // a + (j / D)(b - a), times D
+            return HugePoint{Huge(a.x) * D + Huge(i64{b.x} - a.x) * j, Huge(a.y) * D + Huge(i64{b.y} - a.y) * j};
+          };
+          const HugePoint s0 = cut ? scaled(Huge(t0.num) * t1.den) : HugePoint{},
+                          s1 = cut ? scaled(Huge(t1.num) * t0.den) : HugePoint{};
+          for (const auto& [e, obstacle] : free.obstacle_edges_near(grown(box_of(a, b), tb / 2 + 1))) {
+            if (reported.count(obstacle)) continue;
+            Dist2 d;
+            if (!cut) {
+              d = segment_segment(a, b, e.a, e.b);
+              if (at_least(d, tb)) continue;
+            } else {
+              const HugeDist2 h = h_segment_segment(s0, s1, HugePoint{Huge(e.a.x) * D, Huge(e.a.y) * D},
+                                                    HugePoint{Huge(e.b.x) * D, Huge(e.b.y) * D});
+              if (h.num * 4 >= Huge(tb) * tb * h.den * D * D) continue;
+              // for the message only: the squared distance num / (den D^2), to 6 decimals
+              const double dd = static_cast<double>(D);
+              const double approx_d2 = static_cast<double>(h.num) / static_cast<double>(h.den) / dd / dd;
+              d = {static_cast<i128>(approx_d2 * 1e6), 1000000};
+            }
           reported.insert(obstacle);
           CheckProblem pr;
           pr.kind = CheckProblem::Kind::BlockageClearance;
@@ -483,6 +532,7 @@ void check_blockage_clearance(const FreeSpaceChecker& free, std::span<const Chec
                        distance_text(d) + " of a blockage edge (" + text(e.a) + " " + text(e.b) + "), closer than w/2 + s = " +
                        half_text(tb);
           result.problems.push_back(std::move(pr));
+          }
         }
       }
     }

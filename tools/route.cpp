@@ -1,6 +1,8 @@
-// taut route FILE -o OUT [--svg PIC] [--stats S.json] [--orientations rectilinear|octilinear] [--tighten]:
-// routes every net by exact shortest wires with integer vertices, each net on its own (wires of
-// different nets do not see each other yet), and writes the layout with <routes>. A two-pin net
+// taut route FILE -o OUT [--svg PIC] [--stats S.json] [--orientations rectilinear|octilinear] [--tighten]
+// [--independent]: routes every net by shortest wires with integer vertices, the nets together
+// (router::NetRouter: each among the blockages grown by the clearance of <rules> and the other
+// nets' grown wires and pins, shortest first, then rip-up and reroute; --independent: each net
+// alone, exact shortest among the blockages), and writes the layout with <routes>. A two-pin net
 // gets the shortest wire between its pins; a net with more pins gets a shortest-path tree from
 // its first pin (BasicRouter::tree: every other pin is reached along the wires by its exact
 // shortest distance from the first; the total length is not minimised). Rectilinear: point
@@ -24,6 +26,7 @@
 #include "io/svg.h"
 #include "router/bend_router.h"
 #include "router/l1_router.h"
+#include "router/net_router.h"
 #include "router/oct_router.h"
 #include "router/version.h"
 #include "tools/cli.h"
@@ -268,6 +271,7 @@ void add_route(CLI::App& app, int& status) {
     RoutingOptions routing;
     LoadOptions load;
     bool tighten = false;
+    bool independent = false;
     std::string tree = "spt";
   };
   auto args = std::make_shared<Args>();
@@ -280,6 +284,9 @@ void add_route(CLI::App& app, int& status) {
   sub->add_flag("--tighten", args->tighten,
                 "then pull every wire taut in its class and write it with the fewest links (a net with a "
                 "<sketch> follows its sketch), as taut tighten does");
+  sub->add_flag("--independent", args->independent,
+                "route each net alone among the blockages, as if no other net existed and without the clearance "
+                "of <rules> (exact shortest wires per net; wires of different nets may cross)");
   sub->add_option("--tree", args->tree,
                   "nets of three or more pins: spt (default: a shortest-path tree from the first pin, every pin at its "
                   "shortest distance) or steiner (short total length; rectilinear L1 wires between point pins)");
@@ -307,6 +314,7 @@ void add_route(CLI::App& app, int& status) {
     io::Routes routes;
     routes.tool = "taut " + std::string(router::version());
     std::size_t routed = 0;
+    std::optional<router::NetRouterStats> net_stats;
     auto t1 = Clock::now();
     if (bends) {
       const BendObstacles obs = bend_obstacles(*layout, {}, args->routing.metric, args->load.quiet,
@@ -318,6 +326,12 @@ void add_route(CLI::App& app, int& status) {
       routes.metric = args->routing.metric;
       routes.orientations = "rectilinear";
       if (!link) routes.bend_cost = c;
+      if (layout->nets.size() > 1 || (layout->rules && (layout->rules->wire_width > 0 || layout->rules->spacing > 0)))
+        print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0015", layout->file, 0, 0,
+                                      "--metric " + args->routing.metric + " routes each net alone among the blockages: "
+                                      "wires of different nets may cross, and the clearance of <rules> is not kept "
+                                      "(taut check finds where; --metric l1 routes the nets together)"}},
+                          args->load.quiet);
       t1 = Clock::now();
       for (const io::Net& net : layout->nets) {
         if (args->tree == "steiner")  // said, not dropped silently
@@ -359,11 +373,102 @@ void add_route(CLI::App& app, int& status) {
       auto follows_sketch = [&](const io::Net& net) {
         return args->tighten && net.sketch && (net.pins.size() == 2 || WireTightener::is_loop(net.sketch->points));
       };
-      for (const io::Net& net : layout->nets) {
-        const std::optional<std::string> why = args->tree == "steiner" ? no_steiner_tree(net, "l1", octilinear) : std::nullopt;
-        if (why) warn_no_steiner_tree(*layout, net, *why, args->load.quiet);  // said, not dropped silently
-        const bool steiner = args->tree == "steiner" && !why;
-        NetResult r = l1 ? route_net(*layout, net, *l1, steiner) : route_net(*layout, net, *oct, steiner);
+      // Together (the default): every net among the others' wires and pins, with the clearance of
+      // <rules> (router::NetRouter); --independent: each net alone among the blockages.
+      std::vector<NetResult> together;
+      if (!args->independent) {
+        std::vector<router::NetPins> pins;
+        for (const io::Net& net : layout->nets) {
+          router::NetPins np;
+          np.name = net.name;
+          for (const io::Pin& pin : net.pins) {
+            geom::Polygon g;
+            if (pin.point) g.outer = {*pin.point};
+            else g = io::shape_polygon(*pin.shape);
+            np.pins.push_back(std::move(g));
+          }
+          pins.push_back(std::move(np));
+        }
+        router::NetRules rules;
+        if (layout->rules) rules = {layout->rules->wire_width, layout->rules->spacing};
+        geom::NormalizedObstacles space = norm;
+        if (!layout->boundary) {  // room to go round a grown blockage in the unbounded plane
+          const std::int64_t grow = (rules.wire_width + 1) / 2 + rules.spacing + std::max<std::int64_t>(rules.wire_width + rules.spacing, 1);
+          auto clamp = [](std::int64_t v) { return static_cast<geom::Coord>(std::clamp<std::int64_t>(v, -geom::kMaxCoord, geom::kMaxCoord)); };
+          space.domain = {{clamp(std::int64_t{norm.domain.lo.x} - grow), clamp(std::int64_t{norm.domain.lo.y} - grow)},
+                          {clamp(std::int64_t{norm.domain.hi.x} + grow), clamp(std::int64_t{norm.domain.hi.y} + grow)}};
+        }
+        std::vector<bool> steiner_ok(layout->nets.size());
+        for (std::size_t i = 0; i < layout->nets.size(); ++i) {
+          const io::Net& net = layout->nets[i];
+          const std::optional<std::string> why = args->tree == "steiner" ? no_steiner_tree(net, "l1", octilinear) : std::nullopt;
+          if (why) warn_no_steiner_tree(*layout, net, *why, args->load.quiet);  // said, not dropped silently
+          steiner_ok[i] = args->tree == "steiner" && !why;
+        }
+        try {
+          router::NetRouter nr(space.domain, space.obstacles, std::move(pins), rules);
+          nr.run([&](std::size_t i, const router::NetPins&, const geom::NormalizedObstacles& obs) {
+            NetResult r;
+            if (octilinear) {
+              router::OctRouter rt(obs.domain, obs.obstacles);
+              r = route_net(*layout, layout->nets[i], rt, steiner_ok[i]);
+            } else {
+              router::L1Router rt(obs.domain, obs.obstacles);
+              r = route_net(*layout, layout->nets[i], rt, steiner_ok[i]);
+            }
+            router::NetAttempt a;
+            a.routed = r.route.status == "routed";
+            for (const io::Wire& w : r.route.wires) a.wires.push_back(w.points);
+            a.code = r.code;
+            a.reason = r.route.reason.value_or("");
+            return a;
+          });
+          net_stats = nr.stats();
+          for (std::size_t i = 0; i < layout->nets.size(); ++i) {
+            const router::NetOutcome& o = nr.outcomes()[i];
+            const io::Net& net = layout->nets[i];
+            if (!o.routed) {
+              together.push_back(failed(net, o.code.c_str(), o.reason));
+              continue;
+            }
+            NetResult r;
+            r.route.net = net.name;
+            std::vector<std::vector<geom::Point>> lines;
+            long nbends = 0;
+            for (const auto& w : o.wires) {
+              r.route.wires.push_back(io::Wire{w});
+              nbends += geom::count_bends(w);
+              lines.push_back(w);
+            }
+            r.route.status = "routed";
+            r.route.length = io::format_total_length(lines);
+            r.route.bends = nbends;
+            together.push_back(std::move(r));
+          }
+        } catch (const std::domain_error& e) {
+          print_diagnostics({Diagnostic{Severity::Error, "ROUTE-0014", layout->file, layout->rules ? layout->rules->line : 0, 0,
+                                        std::string("the clearance of <rules>: ") + e.what()}});
+          status = kInvalid;
+          return;
+        }
+        if (args->tighten)
+          print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0013", layout->file, 0, 0,
+                                        "--tighten pulls each wire taut among the blockages alone: tightened wires "
+                                        "may come closer to other nets or to blockages than <rules> allows "
+                                        "(taut check finds where)"}},
+                            args->load.quiet);
+      }
+      for (std::size_t ni = 0; ni < layout->nets.size(); ++ni) {
+        const io::Net& net = layout->nets[ni];
+        NetResult r;
+        if (args->independent) {
+          const std::optional<std::string> why = args->tree == "steiner" ? no_steiner_tree(net, "l1", octilinear) : std::nullopt;
+          if (why) warn_no_steiner_tree(*layout, net, *why, args->load.quiet);  // said, not dropped silently
+          const bool steiner = args->tree == "steiner" && !why;
+          r = l1 ? route_net(*layout, net, *l1, steiner) : route_net(*layout, net, *oct, steiner);
+        } else {
+          r = std::move(together[ni]);
+        }
         if (r.route.status == "routed") {
           ++routed;
           if (net.sketch && !follows_sketch(net))  // said, not dropped silently
@@ -455,6 +560,13 @@ void add_route(CLI::App& app, int& status) {
       auto j = nlohmann::ordered_json::parse(io::layout_stats_json(out));
       j["route_seconds"] = {{"prepare", std::chrono::duration<double>(t1 - t0).count()},
                             {"route", std::chrono::duration<double>(t2 - t1).count()}};
+      if (net_stats)
+        j["net_router"] = {{"first_pass_routed", net_stats->first_pass},
+                           {"rip_up_rounds", net_stats->rounds},
+                           {"rip_ups", net_stats->rips},
+                           {"attempts", net_stats->attempts},
+                           {"space_seconds", net_stats->space_seconds},
+                           {"path_seconds", net_stats->route_seconds}};
       stats = j.dump(2) + "\n";
     }
     if (!write_output(args->out, xml) || (!args->svg.empty() && !write_output(args->svg, svg)) ||

@@ -164,7 +164,7 @@ TEST(OctRoute, GeneratedLayoutsMatchTheReference) {
       const std::string in = dir + "/" + kind + std::to_string(seed) + ".xml";
       const std::string out = dir + "/" + kind + std::to_string(seed) + ".routed.xml";
       ASSERT_EQ(run_taut({"gen", kind, "-o", in, "--size", "300", "--nets", "8", "--seed", std::to_string(seed)}).status, 0);
-      const auto r = run_taut({"route", in, "-o", out, "-q", "--orientations", "octilinear"});
+      const auto r = run_taut({"route", in, "--independent", "-o", out, "-q", "--orientations", "octilinear"});
       ASSERT_TRUE(r.status == 0 || r.status == 1) << r.err;
       io::ReadResult rr = io::read_layout(out);
       ASSERT_TRUE(rr.layout && rr.layout->routes);

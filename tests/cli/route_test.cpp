@@ -236,13 +236,35 @@ std::optional<std::int64_t> metal_distance(const std::vector<io::Wire>& wires, P
   return dist[id(to)];
 }
 
+// The default routes the nets together (router::NetRouter): the demo's five nets all routed, and
+// the independent checker finds nothing at all, the clearance of its <rules> (w = s = 200)
+// included; the statistics say what the net router did. --independent on the same file leaves
+// shorts and clearance problems (nets alone do not see each other).
+TEST(Route, DemoTogetherKeepsTheRules) {
+  const std::string dir = temp_dir("route_together");
+  const auto r = run_taut({"route", kDemo, "-o", dir + "/r.xml", "--stats", dir + "/s.json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("routed 5 of 5 nets"), std::string::npos) << r.err;
+  const auto check = run_taut({"check", dir + "/r.xml", "--json", "-q"});
+  EXPECT_EQ(check.status, 0) << check.out << check.err;
+  const auto j = nlohmann::json::parse(check.out);
+  EXPECT_EQ(j["routes_check"]["clearance"], "ok");
+  EXPECT_EQ(j["routes_check"]["shorts"], "ok");
+  const auto stats = nlohmann::json::parse(read_text(dir + "/s.json"));
+  ASSERT_TRUE(stats.contains("net_router"));
+  EXPECT_GE(stats["net_router"]["attempts"].get<int>(), 5);
+  const auto alone = run_taut({"route", kDemo, "--independent", "-q", "-o", dir + "/alone.xml"});
+  ASSERT_EQ(alone.status, 0) << alone.err;
+  EXPECT_EQ(run_taut({"check", dir + "/alone.xml", "-q"}).status, 1);
+}
+
 TEST(Route, DemoRoutesEveryNet) {
   const std::string dir = temp_dir("route_demo");
   int clk_line = 0;
   if (io::ReadResult d = io::read_layout(kDemo); d.layout)
     for (const io::Net& n : d.layout->nets)
       if (n.name == "clk") clk_line = n.line;
-  const auto r = run_taut({"route", kDemo, "-o", dir + "/r.xml", "--svg", dir + "/r.svg", "--stats", dir + "/s.json"});
+  const auto r = run_taut({"route", kDemo, "--independent", "-o", dir + "/r.xml", "--svg", dir + "/r.svg", "--stats", dir + "/s.json"});
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_GT(clk_line, 0);
   EXPECT_EQ(r.err.find("demo.xml:" + std::to_string(clk_line) + ": warning"), std::string::npos) << r.err;
@@ -320,7 +342,7 @@ TEST(Route, DemoRoutesEveryNet) {
                         {"clk", "routed"}, {"en", "routed"}, {"sda", "routed"}, {"rst", "routed"}, {"bump", "routed"}}));
   // --tree steiner: a Steiner tree (router::L1Router::steiner) for clk: every wire rectilinear
   // and free, the pins joined (the checker), and shorter than the shortest-path tree.
-  const auto st = run_taut({"route", kDemo, "--tree", "steiner", "-o", dir + "/steiner.xml"});
+  const auto st = run_taut({"route", kDemo, "--independent", "--tree", "steiner", "-o", dir + "/steiner.xml"});
   ASSERT_EQ(st.status, 0) << st.err;
   io::ReadResult sr = io::read_layout(dir + "/steiner.xml");
   ASSERT_TRUE(sr.layout && sr.layout->routes);
@@ -358,7 +380,7 @@ TEST(Route, GeneratedLayoutsMatchTheReference) {
       const std::string in = dir + "/" + kind + std::to_string(seed) + ".xml";
       const std::string out = dir + "/" + kind + std::to_string(seed) + ".routed.xml";
       ASSERT_EQ(run_taut({"gen", kind, "-o", in, "--size", "300", "--nets", "8", "--seed", std::to_string(seed)}).status, 0);
-      const auto r = run_taut({"route", in, "-o", out, "-q"});
+      const auto r = run_taut({"route", in, "--independent", "-o", out, "-q"});
       ASSERT_TRUE(r.status == 0 || r.status == 1) << r.err;
       io::ReadResult rr = io::read_layout(out);
       ASSERT_TRUE(rr.layout && rr.layout->routes);
@@ -420,7 +442,7 @@ TEST(Route, ShapePins) {
   </net>
 )");
   const std::string out = temp_dir("route_shapes_out") + "/r.xml";
-  const auto r = run_taut({"route", file, "-o", out});
+  const auto r = run_taut({"route", file, "--independent", "-o", out});
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_NE(r.err.find("[ROUTE-0005] net \"over\" not routed: pin \"pad\" lies partly under a blockage"),
             std::string::npos)

@@ -291,8 +291,8 @@ TEST(Tighten, RouteTighten) {
   const std::string demo = kDesigns + "demo.xml";
   for (const std::string o : {"rectilinear", "octilinear"}) {
     SCOPED_TRACE(o);
-    const auto plain = run_taut({"route", demo, "-q", "--orientations", o, "-o", dir + "/plain.xml"});
-    const auto tight = run_taut({"route", demo, "--orientations", o, "--tighten", "-o", dir + "/tight.xml"});
+    const auto plain = run_taut({"route", demo, "--independent", "-q", "--orientations", o, "-o", dir + "/plain.xml"});
+    const auto tight = run_taut({"route", demo, "--independent", "--orientations", o, "--tighten", "-o", dir + "/tight.xml"});
     ASSERT_EQ(tight.status, 0) << tight.err;  // octilinear too: bump follows its sketch
     EXPECT_EQ(tight.err.find("ROUTE-0007"), std::string::npos) << tight.err;
     io::ReadResult in = io::read_layout(demo);

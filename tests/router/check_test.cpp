@@ -286,9 +286,10 @@ namespace {
 
 // The clearance of <rules> against a brute force for rectilinear wires among rectangles: the
 // distance between two axis-parallel boxes (a segment is a thin one, a point pin a point) is
-// sqrt(gx^2 + gy^2) with gx, gy the gaps between their x and y intervals; a wire's first and
-// last segments are trimmed by w/2 + s units (in doubled coordinates) where they end on a pin of
-// their own net; a wire that runs through a rectangle is left to the free-space check.
+// sqrt(gx^2 + gy^2) with gx, gy the gaps between their x and y intervals, measured per half-unit
+// step of each segment (doubled coordinates); steps in a pin access square of the wire's own net
+// (half-side ceil(w/2) + s round a point pin, or round a wire end on a shape pin) are exempt; a
+// wire that runs through a rectangle is left to the free-space check.
 // Random wires (some through the rectangles), rectangle blockages apart from each other, point
 // and rectangle pins, w and s from 0 to 4: the same (wire, blockage), (wire, wire) and
 // (wire, pin) pairs are reported. Between nets, a pair of segments that touch is a short, not
@@ -304,6 +305,7 @@ TEST(CheckRoutes, ClearanceMatchesAGapBruteForce) {
     rules.spacing = rng() % 4;
     if (rules.wire_width == 0 && rules.spacing == 0) rules.spacing = 1;
     const std::int64_t tb = rules.wire_width + 2 * rules.spacing, tn = 2 * (rules.wire_width + rules.spacing);
+    const std::int64_t ta = 2 * ((rules.wire_width + 1) / 2 + rules.spacing);  // pin access: ceil(w/2) + s, doubled
     // Rectangles at least 1 apart (so each is one obstacle of the union).
     const int count = static_cast<int>(rng() % 4);
     const std::vector<geom::Box> rects = random_boxes_apart(rng, count, 0, 31, 5);
@@ -358,19 +360,28 @@ TEST(CheckRoutes, ClearanceMatchesAGapBruteForce) {
       return seg(p.shape->outer[0], p.shape->outer[2]);
     };
     std::set<std::string> want, got;
-    // Pin access in doubled coordinates (w/2 + s may be a half): the first tb half-units of a
-    // segment that ends on its own net's pin are exempt.
+    // Pin access in doubled coordinates: the closed squares of half-side ta (ceil(w/2) + s,
+    // doubled) around the net's point pins and its wires' ends on its shape pins are exempt.
+    // Their sides are at even doubled coordinates, so each half-unit step of a segment lies in a
+    // square or not as a whole: steps with both ends in one square are exempt, the others measured.
     for (std::size_t n = 0; n < nets.size(); ++n) {
       const auto& nt = nets[n];
-      auto own = [&](Point q) {
-        for (const auto& p : nt.pins) {
-          if (p.point && *p.point == q) return true;
+      auto on_shape = [&](Point q) {
+        for (const auto& p : nt.pins)
           if (p.shape) {
             const Span s = pin_span(p);
             if (q.x >= s.x0 && q.x <= s.x1 && q.y >= s.y0 && q.y <= s.y1) return true;
           }
-        }
         return false;
+      };
+      std::vector<Point> centres;
+      for (const auto& p : nt.pins)
+        if (p.point) centres.push_back(*p.point);
+      for (const auto& w : nt.wires)
+        for (const Point e : {w.points.front(), w.points.back()})
+          if (on_shape(e)) centres.push_back(e);
+      auto in_zone = [&](std::int64_t x2, std::int64_t y2, const Point c) {
+        return std::abs(x2 - 2 * c.x) <= ta && std::abs(y2 - 2 * c.y) <= ta;
       };
       for (const auto& w : nt.wires) {
         // A wire through a rectangle's inside is reported as not free, and not measured.
@@ -383,16 +394,17 @@ TEST(CheckRoutes, ClearanceMatchesAGapBruteForce) {
         for (std::size_t i = 0; i + 1 < w.points.size(); ++i) {
           Point a = w.points[i], b = w.points[i + 1];
           const std::int64_t len2 = 2 * (std::abs(std::int64_t{b.x} - a.x) + std::abs(std::int64_t{b.y} - a.y));
-          std::int64_t from = 0, to = len2;
-          if (i == 0 && own(w.points.front())) from = std::min(tb, len2);
-          if (i + 2 == w.points.size() && own(w.points.back())) to = len2 - std::min(tb, len2);
-          if (from > to) continue;
           const int ux = (b.x > a.x) - (b.x < a.x), uy = (b.y > a.y) - (b.y < a.y);
-          const Span s2 = seg(Point{static_cast<geom::Coord>(2 * a.x + ux * from), static_cast<geom::Coord>(2 * a.y + uy * from)},
-                              Point{static_cast<geom::Coord>(2 * a.x + ux * to), static_cast<geom::Coord>(2 * a.y + uy * to)});
-          for (std::size_t r = 0; r < rects.size(); ++r)
-            if (gap2(s2, {2 * rects[r].lo.x, 2 * rects[r].hi.x, 2 * rects[r].lo.y, 2 * rects[r].hi.y}) < tb * tb)
-              want.insert("blockage " + std::to_string(w.line) + " " + std::to_string(r));
+          for (std::int64_t k = 0; k < len2; ++k) {
+            const std::int64_t x0 = 2 * a.x + ux * k, y0 = 2 * a.y + uy * k, x1 = x0 + ux, y1 = y0 + uy;
+            bool exempt = false;
+            for (const Point c : centres) exempt = exempt || (in_zone(x0, y0, c) && in_zone(x1, y1, c));
+            if (exempt) continue;
+            const Span s2{std::min(x0, x1), std::max(x0, x1), std::min(y0, y1), std::max(y0, y1)};
+            for (std::size_t r = 0; r < rects.size(); ++r)
+              if (gap2(s2, {2 * rects[r].lo.x, 2 * rects[r].hi.x, 2 * rects[r].lo.y, 2 * rects[r].hi.y}) < tb * tb)
+                want.insert("blockage " + std::to_string(w.line) + " " + std::to_string(r));
+          }
         }
       }
     }
@@ -474,16 +486,18 @@ TEST(CheckRoutes, ClearanceIsExactOnSlopes) {
     r.spacing = s;
     return router::check_routes(norm, nets, r).problems;
   };
-  // Pins at the wire's far end and in its middle (reached, but not an end: no pin access at (7,-1)).
-  nets[0].pins = {{"p", Point{7, -12}, std::nullopt, 1}, {"q", Point{7, -5}, std::nullopt, 2}};
+  // Pins at the wire's far end and in its middle, their access squares (half-side up to 6) short
+  // of (7,-1).
+  nets[0].pins = {{"p", Point{7, -12}, std::nullopt, 1}, {"q", Point{7, -9}, std::nullopt, 2}};
   nets[0].wires = {{{{7, -1}, {7, -12}}, 3}};
   EXPECT_TRUE(problems(10, 0).empty());
   ASSERT_EQ(problems(11, 0).size(), 1u);
   EXPECT_EQ(problems(11, 0)[0].kind, router::CheckProblem::Kind::BlockageClearance);
   ASSERT_EQ(problems(10, 1).size(), 1u);
   // Pin access: with the wire starting on its own pin at (7,-1) (the other end on no pin), the
-  // blockage clearance holds from 6 below it, (7,-7), 9.8 from the edge: no problem for
-  // w/2 + s = 6; for 5.5 it holds from (7,-6.5), 9.4 away: none either.
+  // blockage clearance holds from ceil(w/2) + s = 6 below it, (7,-7), 9.8 from the edge: no
+  // problem for w/2 + s = 6 (w 10, s 1), nor for 5.5 (w 11: the access square's half-side rounds
+  // up to 6).
   nets[0].pins = {{"p", Point{7, -5}, std::nullopt, 1}, {"q", Point{7, -1}, std::nullopt, 2}};
   EXPECT_TRUE(problems(10, 1).empty());
   EXPECT_TRUE(problems(11, 0).empty());

@@ -1,0 +1,490 @@
+#include "router/net_router.h"
+
+#include <algorithm>
+#include <chrono>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <set>
+#include <stdexcept>
+#include <utility>
+
+#include "geom/bg.h"
+#include "geom/predicates.h"
+#include "router/l1_router.h"
+
+namespace taut::router {
+namespace {
+
+using geom::Box;
+using geom::Point;
+using geom::Polygon;
+using geom::Ring;
+using Lines = std::vector<std::vector<Point>>;
+namespace bgi = boost::geometry::index;
+
+Box box_of(std::span<const Point> pts) {
+  Box b{pts[0], pts[0]};
+  for (const Point p : pts) {
+    b.lo.x = std::min(b.lo.x, p.x), b.lo.y = std::min(b.lo.y, p.y);
+    b.hi.x = std::max(b.hi.x, p.x), b.hi.y = std::max(b.hi.y, p.y);
+  }
+  return b;
+}
+
+// Does the closed segment pq meet the interior of the convex counter-clockwise polygon c? By
+// separating lines (exact): none when pq lies on the outer closed side of an edge of c, or c on
+// one closed side of pq's line; the two convex sets' separating line can always be taken along
+// an edge of one of them.
+bool segment_enters(Point p, Point q, const Ring& c) {
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    const Point a = c[i], b = c[(i + 1) % c.size()];
+    if (geom::orient(a, b, p) <= 0 && geom::orient(a, b, q) <= 0) return false;
+  }
+  if (p == q) return true;
+  bool pos = false, neg = false;
+  for (const Point v : c) {
+    const auto o = geom::orient(p, q, v);
+    pos = pos || o > 0;
+    neg = neg || o < 0;
+  }
+  return pos && neg;
+}
+
+// Calls f(p, q) for each segment of the polyline (one of length zero for a single point).
+template <class F>
+void for_segments(std::span<const Point> line, F&& f) {
+  if (line.size() == 1) f(line[0], line[0]);
+  for (std::size_t i = 0; i + 1 < line.size(); ++i) f(line[i], line[i + 1]);
+}
+
+
+
+std::int64_t l1_length(const Lines& wires) {
+  std::int64_t n = 0;
+  for (const auto& w : wires)
+    for (std::size_t i = 0; i + 1 < w.size(); ++i)
+      n += std::abs(std::int64_t{w[i + 1].x} - w[i].x) + std::abs(std::int64_t{w[i + 1].y} - w[i].y);
+  return n;
+}
+
+std::string net_list(std::span<const std::size_t> nets, const std::function<std::string(std::size_t)>& name) {
+  std::string s;
+  for (std::size_t k = 0; k < nets.size(); ++k) {
+    if (k) s += k + 1 == nets.size() ? " and " : ", ";
+    s += name(nets[k]);
+  }
+  return s;
+}
+
+// The L-infinity r-neighbourhood of pq (geom::square_grown_segment), or where that would pass the
+// coordinate limit its bounding box clipped to the limit (larger, so never less clearance; the
+// domain lies inside the limit, so nothing in it is lost).
+Ring grown_segment(Point p, Point q, std::int64_t r) {
+  const std::int64_t x0 = std::min(p.x, q.x) - r, x1 = std::max(p.x, q.x) + r;
+  const std::int64_t y0 = std::min(p.y, q.y) - r, y1 = std::max(p.y, q.y) + r;
+  if (geom::in_range(x0) && geom::in_range(x1) && geom::in_range(y0) && geom::in_range(y1))
+    return geom::square_grown_segment(p, q, static_cast<geom::Coord>(r));
+  auto c = [](std::int64_t v) { return static_cast<geom::Coord>(std::clamp<std::int64_t>(v, -geom::kMaxCoord, geom::kMaxCoord)); };
+  return Ring{{c(x0), c(y0)}, {c(x1), c(y0)}, {c(x1), c(y1)}, {c(x0), c(y1)}};
+}
+
+}  // namespace
+
+struct NetSpace::Index {
+  enum Kind { Blockage, GrownEdge, GrownPin, ShapePin };
+  struct Piece {
+    Polygon poly;
+    Kind kind;
+    std::size_t owner;  // the net of a pin piece; the blockage index otherwise
+  };
+  using Entry = std::pair<Box, std::size_t>;
+  std::vector<Piece> pieces;
+  bgi::rtree<Entry, bgi::rstar<16>> tree;
+  // wires: per net its grown segments; the R-tree holds (box, (net, index))
+  std::vector<std::vector<Ring>> wire_pieces;
+  using WireEntry = std::pair<Box, std::pair<std::size_t, std::size_t>>;
+  bgi::rtree<WireEntry, bgi::rstar<16>> wire_tree;
+};
+
+NetSpace::~NetSpace() = default;
+NetSpace::NetSpace(NetSpace&&) noexcept = default;
+NetSpace& NetSpace::operator=(NetSpace&&) noexcept = default;
+
+NetSpace::NetSpace(const geom::Box& domain, std::span<const geom::Polygon> obstacles, std::vector<NetPins> nets,
+                   NetRules rules)
+    : domain_(domain), blockages_(obstacles.begin(), obstacles.end()), nets_(std::move(nets)),
+      index_(std::make_unique<Index>()) {
+  if (rules.wire_width < 0 || rules.spacing < 0) throw std::invalid_argument("NetSpace: negative width or spacing");
+  a_ = (rules.wire_width + 1) / 2 + rules.spacing;
+  b_ = std::max<std::int64_t>(rules.wire_width + rules.spacing, 1);
+  if (a_ > geom::kMaxCoord || b_ > geom::kMaxCoord) throw std::domain_error("the clearance of <rules> passes the coordinate limit");
+  Index& ix = *index_;
+  for (std::size_t k = 0; k < blockages_.size(); ++k) {
+    const Polygon& poly = blockages_[k];
+    ix.pieces.push_back({poly, Index::Blockage, k});
+    if (a_ == 0) continue;
+    std::vector<const Ring*> rings{&poly.outer};
+    for (const Ring& h : poly.holes) rings.push_back(&h);
+    for (const Ring* r : rings)
+      for (std::size_t i = 0; i < r->size(); ++i)
+        ix.pieces.push_back({Polygon{grown_segment((*r)[i], (*r)[(i + 1) % r->size()], a_), {}}, Index::GrownEdge, k});
+  }
+  for (std::size_t n = 0; n < nets_.size(); ++n)
+    for (const Polygon& pin : nets_[n].pins) {
+      if (is_point_pin(pin)) {
+        ix.pieces.push_back({Polygon{grown_segment(pin.outer[0], pin.outer[0], b_), {}}, Index::GrownPin, n});
+        continue;
+      }
+      // a shape pin: the shape itself, and its edges grown by max(a, 1)
+      ix.pieces.push_back({pin, Index::ShapePin, n});
+      std::vector<const Ring*> rings{&pin.outer};
+      for (const Ring& h : pin.holes) rings.push_back(&h);
+      for (const Ring* r : rings)
+        for (std::size_t i = 0; i < r->size(); ++i)
+          ix.pieces.push_back({Polygon{grown_segment((*r)[i], (*r)[(i + 1) % r->size()], std::max<std::int64_t>(a_, 1)), {}},
+                               Index::GrownPin, n});
+    }
+  std::vector<Index::Entry> entries;
+  for (std::size_t i = 0; i < ix.pieces.size(); ++i) entries.push_back({box_of(ix.pieces[i].poly.outer), i});
+  ix.tree = decltype(ix.tree)(entries.begin(), entries.end());
+  ix.wire_pieces.resize(nets_.size());
+}
+
+void NetSpace::set_wires(std::size_t net, const Lines& wires) {
+  Index& ix = *index_;
+  for (std::size_t k = 0; k < ix.wire_pieces[net].size(); ++k)
+    ix.wire_tree.remove(Index::WireEntry{box_of(ix.wire_pieces[net][k]), {net, k}});
+  ix.wire_pieces[net].clear();
+  for (const auto& w : wires)
+    for_segments(w, [&](Point p, Point q) {
+      Ring g = grown_segment(p, q, b_);
+      ix.wire_tree.insert(Index::WireEntry{box_of(g), {net, ix.wire_pieces[net].size()}});
+      ix.wire_pieces[net].push_back(std::move(g));
+    });
+}
+
+geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel level, std::optional<geom::Box> window) const {
+  const Index& ix = *index_;
+  Box dom = domain_;
+  if (window) {
+    dom.lo.x = std::max(dom.lo.x, window->lo.x), dom.lo.y = std::max(dom.lo.y, window->lo.y);
+    dom.hi.x = std::min(dom.hi.x, window->hi.x), dom.hi.y = std::min(dom.hi.y, window->hi.y);
+  }
+  const bool whole = dom == domain_;
+  if (level == NetSpaceLevel::Plain && whole) {  // the blockages as they are
+    geom::NormalizedObstacles n;
+    n.domain = domain_;
+    n.obstacles = blockages_;
+    return n;
+  }
+  // the net's own point pins' access squares, cut out of the grown blockage edges
+  std::vector<Box> access;
+  for (const Polygon& pin : nets_[net].pins)
+    if (is_point_pin(pin)) {
+      const Point p = pin.outer[0];
+      access.push_back(Box{{static_cast<geom::Coord>(p.x - a_), static_cast<geom::Coord>(p.y - a_)},
+                           {static_cast<geom::Coord>(p.x + a_), static_cast<geom::Coord>(p.y + a_)}});
+    }
+  std::vector<Polygon> pieces;
+  std::vector<Index::Entry> found;
+  ix.tree.query(bgi::intersects(dom), std::back_inserter(found));
+  std::sort(found.begin(), found.end(), [](const Index::Entry& x, const Index::Entry& y) { return x.second < y.second; });
+  for (const auto& [box, id] : found) {
+    const Index::Piece& pc = ix.pieces[id];
+    switch (pc.kind) {
+      case Index::Blockage: pieces.push_back(pc.poly); break;
+      case Index::GrownEdge: {
+        if (level == NetSpaceLevel::Plain) break;
+        std::vector<Ring> cur{pc.poly.outer};
+        for (const Box& sq : access) {
+          if (!(sq.lo.x < box.hi.x && box.lo.x < sq.hi.x && sq.lo.y < box.hi.y && box.lo.y < sq.hi.y)) continue;
+          std::vector<Ring> next;
+          for (const Ring& r : cur)
+            for (Ring& part : geom::convex_minus_box(r, sq)) next.push_back(std::move(part));
+          cur = std::move(next);
+        }
+        for (Ring& r : cur) pieces.push_back(Polygon{std::move(r), {}});
+        break;
+      }
+      case Index::GrownPin:
+      case Index::ShapePin:
+        if ((level == NetSpaceLevel::Pins || level == NetSpaceLevel::Full) && pc.owner != net) pieces.push_back(pc.poly);
+        break;
+    }
+  }
+  if (level == NetSpaceLevel::Full) {
+    std::vector<Index::WireEntry> wf;
+    ix.wire_tree.query(bgi::intersects(dom), std::back_inserter(wf));
+    std::sort(wf.begin(), wf.end(), [](const Index::WireEntry& x, const Index::WireEntry& y) { return x.second < y.second; });
+    for (const auto& [box, id] : wf)
+      if (id.first != net) pieces.push_back(Polygon{ix.wire_pieces[id.first][id.second], {}});
+  }
+  return geom::normalize_obstacles(pieces, dom);
+}
+
+std::vector<std::size_t> NetSpace::wire_blockers(std::size_t net, std::span<const Point> line) const {
+  const Index& ix = *index_;
+  std::set<std::size_t> out;
+  if (line.empty()) return {};
+  for_segments(line, [&](Point p, Point q) {
+    const Point pq[2] = {p, q};
+    const Box sb = box_of(pq);
+    std::vector<Index::WireEntry> wf;
+    ix.wire_tree.query(bgi::intersects(sb), std::back_inserter(wf));
+    for (const auto& [box, id] : wf)
+      if (id.first != net && !out.count(id.first) && segment_enters(p, q, ix.wire_pieces[id.first][id.second]))
+        out.insert(id.first);
+  });
+  return {out.begin(), out.end()};
+}
+
+std::vector<std::size_t> NetSpace::pin_blockers(std::size_t net, std::span<const Point> line) const {
+  const Index& ix = *index_;
+  std::set<std::size_t> out;
+  if (line.empty()) return {};
+  for_segments(line, [&](Point p, Point q) {
+    const Point pq[2] = {p, q};
+    std::vector<Index::Entry> found;
+    ix.tree.query(bgi::intersects(box_of(pq)), std::back_inserter(found));
+    for (const auto& [box, id] : found) {
+      const Index::Piece& pc = ix.pieces[id];
+      if (pc.kind == Index::GrownPin && pc.owner != net && !out.count(pc.owner) && segment_enters(p, q, pc.poly.outer))
+        out.insert(pc.owner);
+    }
+  });
+  return {out.begin(), out.end()};
+}
+
+NetRouter::NetRouter(const geom::Box& domain, std::span<const geom::Polygon> obstacles, std::vector<NetPins> nets,
+                     NetRules rules, NetRouterOptions options)
+    : space_(domain, obstacles, std::move(nets), rules), options_(options) {}
+
+NetAttempt NetRouter::attempt(const NetRouteFn& route, std::size_t net, NetSpaceLevel level) {
+  using Clock = std::chrono::steady_clock;
+  ++stats_.attempts;
+  const NetPins& pins = space_.net(net);
+  std::vector<Point> pts;
+  for (const Polygon& pin : pins.pins) pts.insert(pts.end(), pin.outer.begin(), pin.outer.end());
+  const Box& dom = space_.domain();
+  const Box hp = pts.empty() ? dom : box_of(pts);
+  const std::int64_t hpwl = (std::int64_t{hp.hi.x} - hp.lo.x) + (std::int64_t{hp.hi.y} - hp.lo.y);
+  std::int64_t m = 2 * hpwl + 8 * (space_.blockage_clearance() + space_.net_clearance()) + 64;
+  auto clamp = [](std::int64_t v) { return static_cast<geom::Coord>(std::clamp<std::int64_t>(v, -geom::kMaxCoord, geom::kMaxCoord)); };
+  while (true) {
+    Box w{{clamp(std::int64_t{hp.lo.x} - m), clamp(std::int64_t{hp.lo.y} - m)}, {clamp(std::int64_t{hp.hi.x} + m), clamp(std::int64_t{hp.hi.y} + m)}};
+    w.lo.x = std::max(w.lo.x, dom.lo.x), w.lo.y = std::max(w.lo.y, dom.lo.y);
+    w.hi.x = std::min(w.hi.x, dom.hi.x), w.hi.y = std::min(w.hi.y, dom.hi.y);
+    if (!options_.windows) w = dom;
+    const bool whole = w == dom;
+    const auto t0 = Clock::now();
+    const geom::NormalizedObstacles obs = space_.obstacles(net, level, whole ? std::nullopt : std::optional<Box>(w));
+    const auto t1 = Clock::now();
+    NetAttempt a = route(net, pins, obs);
+    const auto t2 = Clock::now();
+    stats_.space_seconds += std::chrono::duration<double>(t1 - t0).count();
+    stats_.route_seconds += std::chrono::duration<double>(t2 - t1).count();
+    ++stats_.windows;
+    stats_.whole += whole;
+    if (whole) return a;
+    // the least distance from box b to a side of the window that lies inside the domain
+    auto inner = [&](const Box& b) {
+      std::int64_t d = std::numeric_limits<std::int64_t>::max();
+      if (w.lo.x > dom.lo.x) d = std::min<std::int64_t>(d, std::int64_t{b.lo.x} - w.lo.x);
+      if (w.hi.x < dom.hi.x) d = std::min<std::int64_t>(d, std::int64_t{w.hi.x} - b.hi.x);
+      if (w.lo.y > dom.lo.y) d = std::min<std::int64_t>(d, std::int64_t{b.lo.y} - w.lo.y);
+      if (w.hi.y < dom.hi.y) d = std::min<std::int64_t>(d, std::int64_t{w.hi.y} - b.hi.y);
+      return d;
+    };
+    if (a.routed) {
+      const std::int64_t len = l1_length(a.wires);
+      bool proven;
+      if (pins.pins.size() == 2 && is_point_pin(pins.pins[0]) && is_point_pin(pins.pins[1])) {
+        const Point p = pins.pins[0].outer[0], q = pins.pins[1].outer[0];
+        const std::int64_t direct = std::abs(std::int64_t{p.x} - q.x) + std::abs(std::int64_t{p.y} - q.y);
+        proven = len <= direct + 2 * (inner(hp) - 2);
+      } else {
+        std::vector<Point> all = pts;
+        for (const auto& wire : a.wires) all.insert(all.end(), wire.begin(), wire.end());
+        proven = len < inner(box_of(all)) - 2;
+      }
+      if (proven) return a;
+      m = std::max(4 * m, len + 3);
+    } else {
+      m *= 4;
+    }
+  }
+}
+
+void NetRouter::run(const NetRouteFn& route) {
+  const std::size_t n = space_.size();
+  out_.assign(n, NetOutcome{});
+  stats_ = {};
+  // shortest first: half-perimeter of the pins' bounding box, then the file's order
+  std::vector<std::int64_t> hpwl(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    std::vector<Point> pts;
+    for (const Polygon& pin : space_.net(i).pins) pts.insert(pts.end(), pin.outer.begin(), pin.outer.end());
+    if (pts.empty()) continue;
+    const Box b = box_of(pts);
+    hpwl[i] = (std::int64_t{b.hi.x} - b.lo.x) + (std::int64_t{b.hi.y} - b.lo.y);
+  }
+  order_.resize(n);
+  std::iota(order_.begin(), order_.end(), std::size_t{0});
+  std::stable_sort(order_.begin(), order_.end(), [&](std::size_t x, std::size_t y) { return hpwl[x] < hpwl[y]; });
+
+  auto place = [&](std::size_t i, NetAttempt a) {
+    out_[i].routed = a.routed;
+    out_[i].wires = a.routed ? std::move(a.wires) : Lines{};
+    out_[i].code = a.routed ? std::string() : std::move(a.code);
+    out_[i].reason = a.routed ? std::string() : std::move(a.reason);
+    space_.set_wires(i, out_[i].wires);
+  };
+  for (const std::size_t i : order_) place(i, attempt(route, i, NetSpaceLevel::Full));
+  auto score = [&] {
+    std::size_t routed = 0;
+    std::int64_t len = 0;
+    for (const NetOutcome& o : out_)
+      if (o.routed) ++routed, len += l1_length(o.wires);
+    return std::pair<std::size_t, std::int64_t>{routed, -len};
+  };
+  stats_.first_pass = score().first;
+  std::vector<NetOutcome> best = out_;
+  auto best_score = score();
+  int stale = 0;
+  for (int round = 0; round < options_.max_rounds && best_score.first < n && stale < 2; ++round) {
+    ++stats_.rounds;
+    for (const std::size_t i : order_) {
+      if (out_[i].routed) continue;
+      NetAttempt again = attempt(route, i, NetSpaceLevel::Full);  // others may have moved
+      if (again.routed) {
+        place(i, std::move(again));
+        continue;
+      }
+      const NetAttempt alone = attempt(route, i, NetSpaceLevel::Pins);
+      if (!alone.routed) continue;  // not the wires' doing: explained at the end
+      std::set<std::size_t> blockers;
+      for (const auto& line : alone.wires)
+        for (const std::size_t b : space_.wire_blockers(i, line)) blockers.insert(b);
+      if (blockers.empty()) continue;
+      bool can = true;
+      for (const std::size_t b : blockers) can = can && out_[b].rips < options_.max_rips;
+      if (!can) continue;
+      for (const std::size_t b : blockers) {
+        out_[b].routed = false;
+        out_[b].wires.clear();
+        space_.set_wires(b, {});
+        ++out_[b].rips;
+        ++stats_.rips;
+      }
+      place(i, attempt(route, i, NetSpaceLevel::Full));
+      for (const std::size_t j : order_)
+        if (blockers.count(j)) place(j, attempt(route, j, NetSpaceLevel::Full));
+    }
+    const auto s = score();
+    if (s > best_score) {
+      best_score = s;
+      best = out_;
+      stale = 0;
+    } else {
+      ++stale;
+    }
+  }
+  {
+    std::vector<int> rips(n);
+    for (std::size_t i = 0; i < n; ++i) rips[i] = out_[i].rips;
+    out_ = std::move(best);
+    for (std::size_t i = 0; i < n; ++i) {
+      out_[i].rips = rips[i];
+      space_.set_wires(i, out_[i].wires);
+    }
+  }
+  for (const std::size_t i : order_)
+    if (!out_[i].routed) explain(route, i);
+}
+
+void NetRouter::explain(const NetRouteFn& route, std::size_t net) {
+  NetOutcome& o = out_[net];
+  const NetAttempt plain = attempt(route, net, NetSpaceLevel::Plain);
+  if (!plain.routed) {  // the router's own reason, about the blockages
+    o.code = plain.code;
+    o.reason = plain.reason;
+    return;
+  }
+  const NetAttempt clear = attempt(route, net, NetSpaceLevel::Clearance);
+  const std::string a = std::to_string(space_.blockage_clearance()), b = std::to_string(space_.net_clearance());
+  if (!clear.routed) {
+    o.code = "ROUTE-0010";
+    o.reason = "the clearance of <rules> closes every way between its pins: wires keep " + a +
+               " DBU (ceil(w/2) + s) from blockages, so a gap on the way is narrower than " +
+               std::to_string(2 * space_.blockage_clearance()) + " DBU or a pin is within " + a +
+               " DBU of a blockage it does not sit on";
+    return;
+  }
+  const NetAttempt pins = attempt(route, net, NetSpaceLevel::Pins);
+  auto name = [&](std::size_t i) { return "\"" + space_.net(i).name + "\""; };
+  if (!pins.routed) {
+    std::set<std::size_t> bl;
+    for (const auto& line : clear.wires)
+      for (const std::size_t x : space_.pin_blockers(net, line)) bl.insert(x);
+    o.blockers.assign(bl.begin(), bl.end());
+    o.code = "ROUTE-0011";
+    o.reason = "the pins of other nets block every way (wires keep " + b + " DBU, w + s, from them)";
+    if (!o.blockers.empty()) o.reason += ": its way alone passes the pins of nets " + net_list(o.blockers, name);
+    return;
+  }
+  std::set<std::size_t> bl;
+  for (const auto& line : pins.wires)
+    for (const std::size_t x : space_.wire_blockers(net, line)) bl.insert(x);
+  o.blockers.assign(bl.begin(), bl.end());
+  if (o.blockers.empty()) return;  // keeps the full attempt's own reason
+  o.code = "ROUTE-0012";
+  o.reason = "the wires of other nets block every way (kept " + b + " DBU, w + s, apart): its way alone crosses nets " +
+             net_list(o.blockers, name) + " (ripped up " + std::to_string(o.rips) + " time(s) as a blocker itself)";
+}
+
+NetRouteFn NetRouter::l1_router(bool steiner) {
+  return [steiner](std::size_t, const NetPins& net, const geom::NormalizedObstacles& obs) {
+    NetAttempt a;
+    if (net.pins.size() < 2) {
+      a.code = "ROUTE-0006";
+      a.reason = "fewer than two pins";
+      return a;
+    }
+    L1Router r(obs.domain, obs.obstacles);
+    auto fail = [&](WireStatus st) {
+      a.code = st == WireStatus::SourceNotFree || st == WireStatus::TargetNotFree ? "ROUTE-0001"
+               : st == WireStatus::Unreachable                                   ? "ROUTE-0002"
+                                                                                 : "ROUTE-0003";
+      a.reason = to_string(st);
+      return a;
+    };
+    for (const Polygon& pin : net.pins)
+      if (!L1Router::supports_pin(pin) || (!is_point_pin(pin) && r.pin_meets_obstacle(pin))) {
+        a.code = "ROUTE-0005";
+        a.reason = "a shape pin this router does not take here";
+        return a;
+      }
+    bool points = true;
+    for (const Polygon& pin : net.pins) points = points && is_point_pin(pin);
+    if (net.pins.size() == 2) {
+      const L1Router::Wire w = r.shortest(net.pins[0], net.pins[1]);
+      if (w.status != WireStatus::Ok) return fail(w.status);
+      a.wires = {w.points};
+    } else if (steiner && points) {
+      std::vector<Point> pts;
+      for (const Polygon& pin : net.pins) pts.push_back(pin.outer[0]);
+      const L1Router::Steiner t = r.steiner(pts);
+      if (t.status != WireStatus::Ok) return fail(t.status);
+      a.wires = t.wires;
+    } else {
+      const L1Router::Tree t = r.tree(net.pins[0], std::span<const Polygon>(net.pins).subspan(1));
+      if (t.status != WireStatus::Ok) return fail(t.status);
+      a.wires = t.wires;
+    }
+    a.routed = true;
+    return a;
+  };
+}
+
+}  // namespace taut::router

@@ -1,0 +1,191 @@
+// Many nets routed together with the width and spacing of <rules> (issue #7): every net's wires
+// keep w/2 + s from the blockages and w + s from the other nets' wires and pins, by routing each
+// net among obstacles grown by squares (FORMAT.md: "square-corner inflation is fine"), then
+// ripping up the nets that block a net left unrouted and routing again.
+//
+//   NetRouter nr(normalized.domain, normalized.obstacles, nets, {.wire_width = 200, .spacing = 200});
+//   nr.run(NetRouter::l1_router(/*steiner=*/false));
+//   for (const NetOutcome& o : nr.outcomes()) { ... o.routed, o.wires, o.reason ... }
+//
+// The space a net is routed in (NetSpace::obstacles), every coordinate an integer:
+//   - the blockages, and each blockage edge grown by the square [-a, a]^2 with a = ceil(w/2) + s
+//     (a point outside is at L-infinity, so Euclidean, distance >= w/2 + s from every blockage);
+//   - pin access: around each point pin of the net itself, the open square of half-side a is cut
+//     out of the grown edges (not out of the blockages), so a pin on a blockage's edge is reached
+//     (router/check.h exempts exactly that square from the blockage clearance); the cut rounds
+//     outward, never inward (geom::convex_minus_box);
+//   - every other net's wire segments and point pins grown by b = max(w + s, 1), and its shape
+//     pins grown by max(a, 1) (b >= 1 with w = s = 0, so wires of different nets never touch:
+//     the checker calls a shared point a short whatever the rules).
+// A wire in that space keeps the clearance the checker (router/check.h) asks for, and a wire of
+// another net routed later keeps it from this one, because both grow by the same b.
+//
+// Limitations (measured in net_router_test and bench_net_router):
+//   - exact minimum gaps are closed: two grown obstacles that touch merge (the wavefront takes
+//     touching obstacles as a pinch), so a gap of exactly 2a between blockages, or a track at
+//     exactly the pitch between two wires, does not take a wire although one would be legal
+//     there; gaps one unit wider do;
+//   - a net's own shape pins get no access cut: a shape pin closer than a to a blockage is
+//     reached only where it is clear of the grown blockage (ROUTE-0010 when nowhere);
+//   - cost: every window is a new union of its pieces and a new wavefront (no reuse between
+//     nets); a net whose pins are far apart pays for a window as big as its span.
+//
+// Windows. A net is routed in a window round its pins (their bounding box grown by m = 2 x its
+// half-perimeter + 8(a + b) + 64), with only the pieces that meet it (R-trees), and the answer is
+// kept when it is provably what the whole layout gives: for two pins when its length L is at most
+// |p - q|_1 + 2(m' - 2), m' the least distance from the pins' box to a window side inside the
+// domain (any way out of the window and back is that long; the 2 covers the outward rounding
+// where sloped blockages are clipped to the window); for more pins when L < m'' - 2, m'' the
+// distance from the box of the pins and wires to those sides (every wavefront run then stops
+// before it could reach a side). Otherwise, or when the net fails in the window, the window grows
+// (m := max(4m, L + 3)) up to the whole domain, where the answer stands.
+//
+// Order and rip-up. Nets go shortest first (by the half-perimeter of their pins' bounding box,
+// then by their place in the file): a short net has the fewest ways round, a long one the most
+// room to detour (the usual order of sequential routers). Then, while some net is unrouted and
+// the last round made progress: each unrouted net is routed again without the other nets'
+// wires; the nets whose grown wires that wire enters are its blockers; they are ripped up, the
+// net is routed, and the blockers are routed again after it (in their order). A net is ripped up
+// at most `max_rips` times (PathFinder's history, in its simplest form: a net that keeps being
+// in the way stays put). The best state seen (most nets routed, then least total length) is the
+// one kept. When nets stay unrouted, each gets the most telling reason (NetOutcome::reason):
+//   - the net cannot be routed even alone, among the plain blockages: the router's own reason
+//     (an enclosed pin, a pin in a blockage, ...);
+//   - alone with the clearance it cannot: the clearance closes its way (a gap narrower than the
+//     rules allow, or a pin too near a blockage corner);
+//   - among the other nets' pins it cannot: their pins block it (named);
+//   - otherwise the nets whose wires block it (named).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "geom/normalize.h"
+#include "geom/types.h"
+
+namespace taut::router {
+
+struct NetRules {
+  std::int64_t wire_width = 0, spacing = 0;  // <rules wire-width spacing>, each >= 0
+};
+
+// A net's pins: a point pin is an outer ring of one point, a shape pin a polygon.
+struct NetPins {
+  std::string name;  // for reasons
+  std::vector<geom::Polygon> pins;
+};
+
+// What a net may be routed among (NetSpace::obstacles).
+enum class NetSpaceLevel {
+  Plain,      // the blockages only, no clearance (why a net fails when it fails even there)
+  Clearance,  // the grown blockages, with the net's pin access
+  Pins,       // ... and the other nets' grown pins
+  Full,       // ... and the other nets' grown wires
+};
+
+class NetSpace {
+ public:
+  // obstacles: geom::normalize_obstacles() of the blockages in `domain`.
+  NetSpace(const geom::Box& domain, std::span<const geom::Polygon> obstacles, std::vector<NetPins> nets,
+           NetRules rules);
+  ~NetSpace();
+  NetSpace(NetSpace&&) noexcept;
+  NetSpace& operator=(NetSpace&&) noexcept;
+
+  std::int64_t blockage_clearance() const { return a_; }  // a = ceil(w/2) + s
+  std::int64_t net_clearance() const { return b_; }       // b = max(w + s, 1)
+
+  // Net `net`'s wires as the other nets see them (replacing earlier ones; empty: none).
+  void set_wires(std::size_t net, const std::vector<std::vector<geom::Point>>& wires);
+
+  // The obstacles net `net` is routed among at `level`, normalized in `window` (clipped to the
+  // domain; the whole domain when nullopt): every piece meeting the window, found in R-trees.
+  geom::NormalizedObstacles obstacles(std::size_t net, NetSpaceLevel level,
+                                      std::optional<geom::Box> window = std::nullopt) const;
+
+  // The nets (other than `net`) whose grown wires the polyline enters (meets in their interior),
+  // and, separately, the nets whose grown pins it enters.
+  std::vector<std::size_t> wire_blockers(std::size_t net, std::span<const geom::Point> line) const;
+  std::vector<std::size_t> pin_blockers(std::size_t net, std::span<const geom::Point> line) const;
+
+  const geom::Box& domain() const { return domain_; }
+  std::size_t size() const { return nets_.size(); }
+  const NetPins& net(std::size_t i) const { return nets_[i]; }
+
+ private:
+  struct Index;  // the R-trees (Boost.Geometry), kept out of this header
+  geom::Box domain_;
+  std::vector<geom::Polygon> blockages_;
+  std::vector<NetPins> nets_;
+  std::int64_t a_ = 0, b_ = 1;
+  std::unique_ptr<Index> index_;
+};
+
+// One attempt at routing one net among given obstacles (what NetRouter::run calls).
+struct NetAttempt {
+  bool routed = false;
+  std::vector<std::vector<geom::Point>> wires;  // routed: polylines, integer vertices
+  std::string code, reason;                     // not routed: a code (ROUTE-xxxx) and a reason
+};
+using NetRouteFn =
+    std::function<NetAttempt(std::size_t net, const NetPins& pins, const geom::NormalizedObstacles& obstacles)>;
+
+struct NetOutcome {
+  bool routed = false;
+  std::vector<std::vector<geom::Point>> wires;
+  std::string code, reason;            // not routed
+  std::vector<std::size_t> blockers;   // not routed: the nets whose wires or pins block it
+  int rips = 0;                        // times it was ripped up
+};
+
+struct NetRouterOptions {
+  int max_rips = 3;     // per net
+  int max_rounds = 20;  // rip-up rounds after the first pass
+  bool windows = true;  // false: every net on the whole domain (for tests and benchmarks)
+};
+
+struct NetRouterStats {
+  int rounds = 0;                 // rip-up rounds run
+  std::int64_t attempts = 0;      // nets tried (each in one or more windows)
+  std::int64_t windows = 0;       // calls of the route function (one per window tried)
+  std::int64_t whole = 0;         // of those, on the whole domain
+  std::int64_t rips = 0;          // nets ripped up in all
+  std::size_t first_pass = 0;     // nets routed by the first pass
+  double space_seconds = 0, route_seconds = 0;  // building obstacles; routing in them
+};
+
+class NetRouter {
+ public:
+  NetRouter(const geom::Box& domain, std::span<const geom::Polygon> obstacles, std::vector<NetPins> nets,
+            NetRules rules, NetRouterOptions options = {});
+
+  // Routes every net (see above).
+  void run(const NetRouteFn& route);
+
+  // A route function for L1 rectilinear wires (router/l1_router.h): two pins by shortest(), more
+  // by tree() from the first pin, or by steiner() when `steiner` and every pin is a point.
+  static NetRouteFn l1_router(bool steiner);
+
+  const std::vector<NetOutcome>& outcomes() const { return out_; }
+  const std::vector<std::size_t>& order() const { return order_; }
+  const NetRouterStats& stats() const { return stats_; }
+  const NetSpace& space() const { return space_; }
+
+ private:
+  NetAttempt attempt(const NetRouteFn& route, std::size_t net, NetSpaceLevel level);
+  void explain(const NetRouteFn& route, std::size_t net);
+
+  NetSpace space_;
+  NetRouterOptions options_;
+  std::vector<NetOutcome> out_;
+  std::vector<std::size_t> order_;
+  NetRouterStats stats_;
+};
+
+}  // namespace taut::router
