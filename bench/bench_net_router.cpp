@@ -9,6 +9,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <random>
+#include <map>
 #include <span>
 #include <string>
 #include <vector>
@@ -36,25 +38,59 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  std::printf("net router vs each net alone (baseline), rects layouts, local nets of 2-5 point pins, w = s = 10\n");
+  std::printf("net router vs each net alone (baseline), rects layouts, local nets of 2-5 point pins (pins 42 apart), w = s = 10\n");
   std::printf("%9s %6s | %8s %8s %7s | %9s %9s %8s %6s | %s\n", "vertices", "nets", "routed", "1st pass", "rips", "alone s",
               "together s", "/alone", "growth", "len/alone");
   for (const std::int64_t size : sizes) {
     const auto lay = taut::bench::bench_layout(taut::io::GenKind::Rects, size);
     const auto& dom = lay.norm.domain;
-    const std::vector<Point> pool = taut::bench::random_free_points(dom, lay.norm.obstacles, 20000, 17);
+    // Pins as a placer would leave them: free points at least 2(w + s) + 2 apart (L-infinity), so
+    // every pin can be reached; each used once. Nets are local: their pins within a square of a
+    // twentieth of the layout's side round their first.
+    const std::int64_t gap = 2 * 20 + 2, side = (std::int64_t{dom.hi.x} - dom.lo.x) / 20;
+    std::vector<Point> pool;
+    {
+      std::map<std::pair<std::int64_t, std::int64_t>, std::vector<Point>> cells;
+      for (const Point p : taut::bench::random_free_points(dom, lay.norm.obstacles, 200000, 17)) {
+        const std::int64_t cx = p.x / gap, cy = p.y / gap;
+        bool near = false;
+        for (std::int64_t dx = -1; dx <= 1 && !near; ++dx)
+          for (std::int64_t dy = -1; dy <= 1 && !near; ++dy)
+            if (auto it = cells.find({cx + dx, cy + dy}); it != cells.end())
+              for (const Point q : it->second) near = near || (std::abs(p.x - q.x) < gap && std::abs(p.y - q.y) < gap);
+        if (near) continue;
+        cells[{cx, cy}].push_back(p);
+        pool.push_back(p);
+      }
+    }
     double last_t = 0, last_m = 0;
     for (const std::int64_t m : net_counts) {
       std::vector<taut::router::NetPins> nets;
-      for (std::size_t k = 2; k <= 5; ++k) {
-        const auto pins = taut::bench::random_nets(pool, dom, static_cast<std::size_t>(m) / 4 + (k - 2 < static_cast<std::size_t>(m) % 4),
-                                                   k, true, static_cast<std::uint64_t>(size * 31 + m * 7 + k));
-        for (const auto& p : pins) {
-          taut::router::NetPins np;
-          np.name = "n" + std::to_string(nets.size());
-          for (const Point q : p) np.pins.push_back(taut::bench::point_pin(q));
-          nets.push_back(std::move(np));
+      std::mt19937_64 rng(static_cast<std::uint64_t>(size * 31 + m));
+      std::map<std::pair<std::int64_t, std::int64_t>, std::vector<std::size_t>> buckets;  // unused pool points
+      for (std::size_t i = 0; i < pool.size(); ++i) buckets[{pool[i].x / side, pool[i].y / side}].push_back(i);
+      std::vector<char> used(pool.size(), 0);
+      for (std::int64_t tries = 0; static_cast<std::int64_t>(nets.size()) < m && tries < 20 * m; ++tries) {
+        const std::size_t c = rng() % pool.size();
+        if (used[c]) continue;
+        const std::size_t k = 2 + nets.size() % 4;
+        std::vector<std::size_t> pick{c};
+        const Point cp = pool[c];
+        for (std::int64_t dx = -1; dx <= 1; ++dx)
+          for (std::int64_t dy = -1; dy <= 1; ++dy)
+            if (auto it = buckets.find({cp.x / side + dx, cp.y / side + dy}); it != buckets.end())
+              for (const std::size_t j : it->second)
+                if (pick.size() < k && !used[j] && j != c && std::abs(pool[j].x - cp.x) <= side / 2 && std::abs(pool[j].y - cp.y) <= side / 2 &&
+                    rng() % 4 == 0)
+                  pick.push_back(j);
+        if (pick.size() < k) continue;
+        taut::router::NetPins np;
+        np.name = "n" + std::to_string(nets.size());
+        for (const std::size_t j : pick) {
+          used[j] = 1;
+          np.pins.push_back(taut::bench::point_pin(pool[j]));
         }
+        nets.push_back(std::move(np));
       }
       // baseline: each net alone on one router (what --independent does)
       std::vector<std::int64_t> alone_len(nets.size(), -1);
@@ -89,6 +125,12 @@ int main(int argc, char** argv) {
                   static_cast<long long>(lay.points.size()), nets.size(), routed, nr.stats().first_pass,
                   static_cast<long long>(nr.stats().rips), alone_s, together_s, together_s / alone_s, growth,
                   len_alone_same > 0 ? static_cast<double>(len) / static_cast<double>(len_alone_same) : 0.0, alone_ok);
+      std::map<std::string, int> codes;
+      for (const auto& o : nr.outcomes())
+        if (!o.routed) ++codes[o.code];
+      std::printf("%18s unrouted:", "");
+      for (const auto& [c, k] : codes) std::printf(" %s %d", c.c_str(), k);
+      std::printf("\n");
       std::printf("%18s nets tried %lld times in %lld windows (%lld whole): building spaces %.3f s, paths %.3f s\n", "",
                   static_cast<long long>(nr.stats().attempts), static_cast<long long>(nr.stats().windows),
                   static_cast<long long>(nr.stats().whole), nr.stats().space_seconds, nr.stats().route_seconds);

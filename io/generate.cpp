@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <random>
+#include <map>
 #include <set>
 #include <string>
 
@@ -479,42 +480,73 @@ Layout generate_layout(const GenOptions& options) {
   // free space next to it; on two touching shapes it could be enclosed by their union.
   const bool degenerate = options.kind == GenKind::Degenerate;
   std::set<Point> used;
+  // With rules, pins of different nets keep 2(w + s) + 2 apart: a grid of cells that size holds
+  // the pins placed so far, with their nets.
+  const i64 gap = options.wire_width + options.spacing > 0 ? 2 * (options.wire_width + options.spacing) + 2 : 0;
+  std::map<std::pair<i64, i64>, std::vector<std::pair<Point, int>>> near_cells;
+  int current_net = 0;
+  auto crowded = [&](Point p) {
+    if (gap == 0) return false;
+    const i64 cx = (i64{p.x} - x0) / gap, cy = (i64{p.y} - y0) / gap;
+    for (i64 dx = -1; dx <= 1; ++dx)
+      for (i64 dy = -1; dy <= 1; ++dy)
+        if (auto it = near_cells.find({cx + dx, cy + dy}); it != near_cells.end())
+          for (const auto& [q, net] : it->second)
+            if (net != current_net && std::abs(i64{p.x} - q.x) < gap && std::abs(i64{p.y} - q.y) < gap) return true;
+    return false;
+  };
+  auto remember = [&](Point p) {
+    if (gap > 0) near_cells[{(i64{p.x} - x0) / gap, (i64{p.y} - y0) / gap}].push_back({p, current_net});
+    return p;
+  };
+  // a local pin: within a square of a tenth of the layout's side round `c`
+  const i64 reach = std::max<i64>((x1 - x0) / 20, 100);
+  std::optional<Point> centre;
   auto pick = [&]() {
     for (int attempt = 0; attempt < 200; ++attempt) {
       Point p;
       if (degenerate)
         p = pt(x0 + 50 * rng.range(1, (x1 - x0) / 50 - 1), y0 + 50 * rng.range(1, (y1 - y0) / 50 - 1));
+      else if (centre)
+        p = pt(std::clamp(centre->x + rng.range(-reach, reach), x0 + 1, x1 - 1), std::clamp(centre->y + rng.range(-reach, reach), y0 + 1, y1 - 1));
       else
         p = pt(rng.range(x0 + 1, x1 - 1), rng.range(y0 + 1, y1 - 1));
-      if (used.count(p)) continue;
+      if (used.count(p) || crowded(p)) continue;
       int on_boundaries = 0;
       const geom::Location l = grid.locate(p, &on_boundaries);
       if (l == geom::Location::Inside) continue;
       if (l == geom::Location::Boundary && (!degenerate || on_boundaries > 1)) continue;
       used.insert(p);
-      return p;
+      return remember(p);
     }
     // Crowded: fall back to the empty margin on the left (x0, x0 + kMargin); a channel has no
     // margin, but at least a third of its box is free: keep drawing.
     while (kMargin == 0) {
       const Point p = pt(rng.range(x0 + 1, x1 - 1), rng.range(y0 + 1, y1 - 1));
       int ignored = 0;
-      if (used.count(p) || grid.locate(p, &ignored) != geom::Location::Outside) continue;
+      if (used.count(p) || crowded(p) || grid.locate(p, &ignored) != geom::Location::Outside) continue;
       used.insert(p);
-      return p;
+      return remember(p);
     }
     while (true) {
       const Point p = pt(rng.range(x0 + 1, x0 + kMargin - 1), rng.range(y0 + 1, y1 - 1));
-      if (used.insert(p).second) return p;
+      if (!crowded(p) && used.insert(p).second) return remember(p);
     }
   };
+  if (options.wire_width > 0 || options.spacing > 0) layout.rules = Rules{options.wire_width, options.spacing, 0, "rectilinear", {}, 0};
+  const bool multi = options.max_pins > 2;
   for (int i = 0; i < options.nets; ++i) {
     Net n;
     n.name = "n" + std::to_string(i);
-    for (const char* pin_name : {"a", "b"}) {
+    current_net = i;
+    const int k = options.min_pins == options.max_pins ? options.min_pins
+                                                        : static_cast<int>(rng.range(options.min_pins, options.max_pins));
+    centre.reset();
+    for (int j = 0; j < k; ++j) {
       Pin p;
-      p.name = pin_name;
+      p.name = k == 2 && !multi ? std::string(j == 0 ? "a" : "b") : "p" + std::to_string(j);
       p.point = pick();
+      if (multi && j == 0) centre = *p.point;
       n.pins.push_back(std::move(p));
     }
     layout.nets.push_back(std::move(n));

@@ -30,8 +30,16 @@ std::vector<std::string> gen_kind_names();
 struct GenOptions {
   GenKind kind = GenKind::Rects;
   std::int64_t size = 1000;   // target number of blockage vertices (up to 10^6 and beyond)
-  int nets = 10;              // two-pin nets with point pins in free space
+  int nets = 10;              // nets with point pins in free space
   std::uint64_t seed = 1;
+  // Pins per net, drawn uniformly from [min_pins, max_pins] (2..1000). With more than two pins
+  // (max_pins > 2) every pin after a net's first lies within a square of a tenth of the layout's
+  // side round the first (nets of placed cells are local); two-pin nets keep the default
+  // sequence, so the same options give the same file as before pins could be chosen.
+  int min_pins = 2, max_pins = 2;
+  // <rules wire-width spacing> written when either is > 0; pins of different nets are then kept
+  // at least 2(w + s) + 2 apart (L-infinity) so each can be reached.
+  std::int64_t wire_width = 0, spacing = 0;
 };
 
 // The generated layout is valid: validate_layout() reports no error on it.

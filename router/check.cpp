@@ -457,23 +457,12 @@ void check_blockage_clearance(const FreeSpaceChecker& free, std::span<const Chec
   for (std::size_t n = 0; n < nets.size(); ++n) {
     const CheckNet& net = nets[n];
     if (!net.routed) continue;
-    auto on_own_shape = [&](Point p) {
-      for (const CheckPin& pin : net.pins)
-        if (pin.shape && geom::locate(p, *pin.shape) != geom::Location::Outside) return true;
-      return false;
-    };
-    // The access zones: the closed squares of half-side acc around the net's point pins and
-    // around its wires' ends on its shape pins.
+    // The access zones: the closed squares of half-side acc around the net's point pins.
     std::vector<geom::Box> zones;
-    auto zone = [&](Point c) {
-      zones.push_back({{static_cast<geom::Coord>(c.x - acc), static_cast<geom::Coord>(c.y - acc)},
-                       {static_cast<geom::Coord>(c.x + acc), static_cast<geom::Coord>(c.y + acc)}});
-    };
     for (const CheckPin& pin : net.pins)
-      if (pin.point) zone(*pin.point);
-    for (const CheckWire& wire : net.wires)
-      for (const Point e : {wire.points.front(), wire.points.back()})
-        if (on_own_shape(e)) zone(e);
+      if (pin.point)
+        zones.push_back({{static_cast<geom::Coord>(pin.point->x - acc), static_cast<geom::Coord>(pin.point->y - acc)},
+                         {static_cast<geom::Coord>(pin.point->x + acc), static_cast<geom::Coord>(pin.point->y + acc)}});
     for (std::size_t wi = 0; wi < net.wires.size(); ++wi) {
       const CheckWire& wire = net.wires[wi];
       if (not_free[wire_id[n] + wi]) continue;  // in a blockage: reported as not free, not measured

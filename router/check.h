@@ -18,14 +18,16 @@
 //   - clear (when <rules> has a wire width w or a spacing s): every wire keeps Euclidean
 //     distance >= w/2 + s from every blockage and from other nets' shape pins, and >= w + s from
 //     other nets' wires and point pins (a point pin counts as the end of a wire of its net).
-//     Pin access: the parts of a net's wires in the access zones of its own pins are not held to
-//     the blockage clearance (a pin may sit on a blockage's edge, FORMAT.md, and its wire has to
-//     get away from it). A zone is the closed square of half-side a = ceil(w/2) + s around a
-//     point pin, or around a wire end that lies on a shape pin. a is w/2 + s rounded up to an
-//     integer, as the net router grows blockages (router/net_router.h: with w odd, a square of
-//     w/2 + s would stop half a unit short of the grown blockage's integer edge and wall the pin
-//     in), and the whole square counts, not only the first segment, because a wire leaving a pin
-//     that sits in a corner between blockages may have to bend inside it. The
+//     Pin access: the parts of a net's wires in the access zones of its own point pins are not
+//     held to the blockage clearance (a pin may sit on a blockage's edge, FORMAT.md, and its
+//     wire has to get away from it). A zone is the closed square of half-side a = ceil(w/2) + s
+//     around a point pin: w/2 + s rounded up to an integer, as the net router grows blockages
+//     (router/net_router.h: with w odd, a square of w/2 + s would stop half a unit short of the
+//     grown blockage's integer edge and wall the pin in); the whole square counts, not only a
+//     wire's first segment, because a pin in a corner between blockages may need a bend inside
+//     it. Shape pins get no zone: a wire reaches a pad from outside it and keeps the clearance
+//     up to its end (a zone round every wire end on a pad let wires split into many ends hug a
+//     blockage along the pad's whole side, a review found). The
 //     clearance to other nets holds everywhere. Distances are compared
 //     exactly: squared distances as fractions of integers against (w + 2s)^2 / 4 and (w + s)^2
 //     in 256-bit integers, and where the pin access cuts a segment at a rational point, in

@@ -12,6 +12,8 @@
 #include "geom/bg.h"
 #include "geom/predicates.h"
 #include "router/l1_router.h"
+#include "router/oct_router.h"
+#include "router/wavefront.h"
 
 namespace taut::router {
 namespace {
@@ -89,6 +91,30 @@ Ring grown_segment(Point p, Point q, std::int64_t r) {
   return Ring{{c(x0), c(y0)}, {c(x1), c(y0)}, {c(x1), c(y1)}, {c(x0), c(y1)}};
 }
 
+// A rectangle: four vertices on two x's and two y's, no holes.
+bool is_rectangle(const Polygon& p) {
+  if (p.outer.size() != 4 || !p.holes.empty()) return false;
+  const Box b = box_of(p.outer);
+  for (const Point v : p.outer)
+    if ((v.x != b.lo.x && v.x != b.hi.x) || (v.y != b.lo.y && v.y != b.hi.y)) return false;
+  return b.lo.x < b.hi.x && b.lo.y < b.hi.y;
+}
+
+// Do the interiors of two convex counter-clockwise polygons meet? Not when an edge line of one
+// has the other on its outer closed side (separating axes, exact).
+bool convex_interiors_meet(const Ring& a, const Ring& b) {
+  for (const auto* r : {&a, &b}) {
+    const Ring& o = r == &a ? b : a;
+    for (std::size_t i = 0; i < r->size(); ++i) {
+      const Point u = (*r)[i], v = (*r)[(i + 1) % r->size()];
+      bool outside = true;
+      for (const Point q : o) outside = outside && geom::orient(u, v, q) <= 0;
+      if (outside) return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 struct NetSpace::Index {
@@ -105,7 +131,102 @@ struct NetSpace::Index {
   std::vector<std::vector<Ring>> wire_pieces;
   using WireEntry = std::pair<Box, std::pair<std::size_t, std::size_t>>;
   bgi::rtree<WireEntry, bgi::rstar<16>> wire_tree;
+  // The union of the blockages and their grown edges, once (its components, each with the
+  // pieces it came from), and the blockages themselves, with their boxes in R-trees.
+  struct Components {
+    std::vector<Polygon> polys;
+    std::vector<std::vector<std::size_t>> sources;  // indices into pieces
+    std::vector<Box> boxes;
+    bgi::rtree<Entry, bgi::rstar<16>> tree;
+  };
+  Components grown, plain;
 };
+
+namespace {
+
+// Boxes of the components and their R-tree.
+void index_components(NetSpace::Index::Components& c) {
+  std::vector<NetSpace::Index::Entry> entries;
+  for (std::size_t i = 0; i < c.polys.size(); ++i) {
+    c.boxes.push_back(box_of(c.polys[i].outer));
+    entries.push_back({c.boxes.back(), i});
+  }
+  c.tree = decltype(c.tree)(entries.begin(), entries.end());
+}
+
+bool box_inside(const Box& in, const Box& out) {
+  return in.lo.x >= out.lo.x && in.lo.y >= out.lo.y && in.hi.x <= out.hi.x && in.hi.y <= out.hi.y;
+}
+bool boxes_meet(const Box& a, const Box& b) {
+  return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y;
+}
+
+// The wires without their parts of positive length in the closed rectangles `pads` (the net's own
+// pads, which are metal of the net: a wire's stretch over or along one is redundant, and where
+// the pad lies on a blockage's edge that stretch would come too near it). Each wire is cut where
+// it enters and leaves a pad, the pieces keep those points (so they still touch the pad), and
+// pieces of one point are dropped. Cut points of horizontal, vertical and 45-degree segments
+// against a rectangle's sides are integers; a segment of another slope is kept whole.
+Lines trim_at_pads(const Lines& wires, std::span<const Box> pads) {
+  if (pads.empty()) return wires;
+  Lines out;
+  for (const auto& w : wires) {
+    if (w.size() == 1) {
+      out.push_back(w);
+      continue;
+    }
+    std::vector<Point> cur;
+    auto flush = [&] {
+      if (cur.size() >= 2) out.push_back(cur);
+      cur.clear();
+    };
+    for (std::size_t i = 0; i + 1 < w.size(); ++i) {
+      const Point p = w[i], q = w[i + 1];
+      const std::int64_t dx = std::int64_t{q.x} - p.x, dy = std::int64_t{q.y} - p.y;
+      const std::int64_t len = std::max(std::abs(dx), std::abs(dy));
+      const bool regular = dx == 0 || dy == 0 || std::abs(dx) == std::abs(dy);
+      if (cur.empty()) cur.push_back(p);
+      if (!regular || len == 0) {
+        if (cur.back() != q) cur.push_back(q);
+        continue;
+      }
+      // the steps k in [0, len] (p + k u, u the unit step) inside each pad: an interval; cut out
+      // the ones of positive length
+      const std::int64_t ux = dx / len, uy = dy / len;
+      std::vector<std::pair<std::int64_t, std::int64_t>> cuts;
+      for (const Box& b : pads) {
+        std::int64_t lo = 0, hi = len;
+        auto clip = [&](std::int64_t c0, std::int64_t u, std::int64_t a, std::int64_t z) {  // a <= c0 + k u <= z
+          if (u == 0) {
+            if (c0 < a || c0 > z) lo = 1, hi = 0;
+            return;
+          }
+          std::int64_t k0 = (a - c0) * u, k1 = (z - c0) * u;  // u = +-1: exact
+          if (k0 > k1) std::swap(k0, k1);
+          lo = std::max(lo, k0), hi = std::min(hi, k1);
+        };
+        clip(p.x, ux, b.lo.x, b.hi.x);
+        clip(p.y, uy, b.lo.y, b.hi.y);
+        if (lo < hi) cuts.push_back({lo, hi});
+      }
+      std::sort(cuts.begin(), cuts.end());
+      auto at = [&](std::int64_t k) { return Point{static_cast<geom::Coord>(p.x + k * ux), static_cast<geom::Coord>(p.y + k * uy)}; };
+      std::int64_t done = 0;
+      for (const auto& [lo, hi] : cuts) {
+        if (hi <= done) continue;
+        if (lo > done && cur.back() != at(lo)) cur.push_back(at(lo));
+        flush();
+        done = std::max(done, hi);
+        cur.push_back(at(done));
+      }
+      if (done < len && cur.back() != q) cur.push_back(q);
+    }
+    flush();
+  }
+  return out;
+}
+
+}  // namespace
 
 NetSpace::~NetSpace() = default;
 NetSpace::NetSpace(NetSpace&&) noexcept = default;
@@ -149,6 +270,25 @@ NetSpace::NetSpace(const geom::Box& domain, std::span<const geom::Polygon> obsta
   for (std::size_t i = 0; i < ix.pieces.size(); ++i) entries.push_back({box_of(ix.pieces[i].poly.outer), i});
   ix.tree = decltype(ix.tree)(entries.begin(), entries.end());
   ix.wire_pieces.resize(nets_.size());
+  // the grown blockages' union, once; and the blockages as they are
+  std::vector<Polygon> inputs;
+  std::vector<std::size_t> input_piece;
+  for (std::size_t i = 0; i < ix.pieces.size(); ++i)
+    if (ix.pieces[i].kind == Index::Blockage || ix.pieces[i].kind == Index::GrownEdge) {
+      inputs.push_back(ix.pieces[i].poly);
+      input_piece.push_back(i);
+    }
+  geom::NormalizedObstacles g = geom::normalize_obstacles(inputs, domain_);
+  ix.grown.polys = std::move(g.obstacles);
+  for (const auto& src : g.sources) {
+    ix.grown.sources.emplace_back();
+    for (const std::size_t k : src) ix.grown.sources.back().push_back(input_piece[k]);
+  }
+  index_components(ix.grown);
+  ix.plain.polys = blockages_;
+  for (std::size_t i = 0; i < ix.pieces.size(); ++i)
+    if (ix.pieces[i].kind == Index::Blockage) ix.plain.sources.push_back({i});
+  index_components(ix.plain);
 }
 
 void NetSpace::set_wires(std::size_t net, const Lines& wires) {
@@ -171,46 +311,26 @@ geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel lev
     dom.lo.x = std::max(dom.lo.x, window->lo.x), dom.lo.y = std::max(dom.lo.y, window->lo.y);
     dom.hi.x = std::min(dom.hi.x, window->hi.x), dom.hi.y = std::min(dom.hi.y, window->hi.y);
   }
-  const bool whole = dom == domain_;
-  if (level == NetSpaceLevel::Plain && whole) {  // the blockages as they are
+  const bool plain = level == NetSpaceLevel::Plain;
+  if (plain && dom == domain_) {  // the blockages as they are
     geom::NormalizedObstacles n;
     n.domain = domain_;
     n.obstacles = blockages_;
     return n;
   }
-  // the net's own point pins' access squares, cut out of the grown blockage edges
-  std::vector<Box> access;
-  for (const Polygon& pin : nets_[net].pins)
-    if (is_point_pin(pin)) {
-      const Point p = pin.outer[0];
-      access.push_back(Box{{static_cast<geom::Coord>(p.x - a_), static_cast<geom::Coord>(p.y - a_)},
-                           {static_cast<geom::Coord>(p.x + a_), static_cast<geom::Coord>(p.y + a_)}});
-    }
-  std::vector<Polygon> pieces;
-  std::vector<Index::Entry> found;
-  ix.tree.query(bgi::intersects(dom), std::back_inserter(found));
-  std::sort(found.begin(), found.end(), [](const Index::Entry& x, const Index::Entry& y) { return x.second < y.second; });
-  for (const auto& [box, id] : found) {
-    const Index::Piece& pc = ix.pieces[id];
-    switch (pc.kind) {
-      case Index::Blockage: pieces.push_back(pc.poly); break;
-      case Index::GrownEdge: {
-        if (level == NetSpaceLevel::Plain) break;
-        std::vector<Ring> cur{pc.poly.outer};
-        for (const Box& sq : access) {
-          if (!(sq.lo.x < box.hi.x && box.lo.x < sq.hi.x && sq.lo.y < box.hi.y && box.lo.y < sq.hi.y)) continue;
-          std::vector<Ring> next;
-          for (const Ring& r : cur)
-            for (Ring& part : geom::convex_minus_box(r, sq)) next.push_back(std::move(part));
-          cur = std::move(next);
-        }
-        for (Ring& r : cur) pieces.push_back(Polygon{std::move(r), {}});
-        break;
+  // The other nets' pieces in the window (the dynamic part).
+  std::vector<Polygon> dynamic;
+  std::vector<Box> dynamic_boxes;
+  if (level == NetSpaceLevel::Pins || level == NetSpaceLevel::Full) {
+    std::vector<Index::Entry> found;
+    ix.tree.query(bgi::intersects(dom), std::back_inserter(found));
+    std::sort(found.begin(), found.end(), [](const Index::Entry& x, const Index::Entry& y) { return x.second < y.second; });
+    for (const auto& [box, id] : found) {
+      const Index::Piece& pc = ix.pieces[id];
+      if ((pc.kind == Index::GrownPin || pc.kind == Index::ShapePin) && pc.owner != net) {
+        dynamic.push_back(pc.poly);
+        dynamic_boxes.push_back(box);
       }
-      case Index::GrownPin:
-      case Index::ShapePin:
-        if ((level == NetSpaceLevel::Pins || level == NetSpaceLevel::Full) && pc.owner != net) pieces.push_back(pc.poly);
-        break;
     }
   }
   if (level == NetSpaceLevel::Full) {
@@ -218,9 +338,82 @@ geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel lev
     ix.wire_tree.query(bgi::intersects(dom), std::back_inserter(wf));
     std::sort(wf.begin(), wf.end(), [](const Index::WireEntry& x, const Index::WireEntry& y) { return x.second < y.second; });
     for (const auto& [box, id] : wf)
-      if (id.first != net) pieces.push_back(Polygon{ix.wire_pieces[id.first][id.second], {}});
+      if (id.first != net) {
+        dynamic.push_back(Polygon{ix.wire_pieces[id.first][id.second], {}});
+        dynamic_boxes.push_back(box);
+      }
   }
-  return geom::normalize_obstacles(pieces, dom);
+  bgi::rtree<Index::Entry, bgi::rstar<16>> dyn_tree;
+  {
+    std::vector<Index::Entry> e;
+    for (std::size_t i = 0; i < dynamic_boxes.size(); ++i) e.push_back({dynamic_boxes[i], i});
+    dyn_tree = decltype(dyn_tree)(e.begin(), e.end());
+  }
+  // The net's own point pins' access squares, cut out of the grown blockage edges.
+  // And the net's own rectangular shape pins (pads), cut out of them too: a pad is free space
+  // for its net (FORMAT.md), so a pad on a blockage's edge is reached from outside the grown
+  // blockage; the wire keeps the clearance up to its end on the pad.
+  std::vector<Box> access;
+  if (!plain)
+    for (const Polygon& pin : nets_[net].pins)
+      if (is_point_pin(pin)) {
+        const Point p = pin.outer[0];
+        access.push_back(Box{{static_cast<geom::Coord>(p.x - a_), static_cast<geom::Coord>(p.y - a_)},
+                             {static_cast<geom::Coord>(p.x + a_), static_cast<geom::Coord>(p.y + a_)}});
+      } else if (is_rectangle(pin)) {
+        access.push_back(box_of(pin.outer));
+      }
+  // The static components in the window: passed through as they are when they lie inside it and
+  // meet nothing else; otherwise unioned again with the dynamic pieces (those an access square
+  // meets from the pieces they came from, cut).
+  const Index::Components& comps = plain ? ix.plain : ix.grown;
+  std::vector<Index::Entry> found;
+  comps.tree.query(bgi::intersects(dom), std::back_inserter(found));
+  std::sort(found.begin(), found.end(), [](const Index::Entry& x, const Index::Entry& y) { return x.second < y.second; });
+  std::vector<char> cut(found.size(), 0);
+  std::vector<Box> cut_boxes;
+  for (std::size_t f = 0; f < found.size(); ++f)
+    for (const Box& sq : access)
+      if (boxes_meet(found[f].first, sq)) {
+        cut[f] = 1;
+        cut_boxes.push_back(found[f].first);
+        break;
+      }
+  std::vector<Polygon> rest = std::move(dynamic), pass;
+  for (std::size_t f = 0; f < found.size(); ++f) {
+    const auto& [box, c] = found[f];
+    if (cut[f]) {
+      for (const std::size_t id : comps.sources[c]) {
+        const Index::Piece& pc = ix.pieces[id];
+        if (pc.kind != Index::GrownEdge) {
+          rest.push_back(pc.poly);
+          continue;
+        }
+        std::vector<Ring> cur{pc.poly.outer};
+        const Box pb = box_of(pc.poly.outer);
+        for (const Box& sq : access) {
+          if (!(sq.lo.x < pb.hi.x && pb.lo.x < sq.hi.x && sq.lo.y < pb.hi.y && pb.lo.y < sq.hi.y)) continue;
+          std::vector<Ring> next;
+          for (const Ring& r : cur)
+            for (Ring& part : geom::convex_minus_box(r, sq)) next.push_back(std::move(part));
+          cur = std::move(next);
+        }
+        for (Ring& r : cur) rest.push_back(Polygon{std::move(r), {}});
+      }
+      continue;
+    }
+    bool alone = box_inside(box, dom) && dyn_tree.qbegin(bgi::intersects(box)) == dyn_tree.qend();
+    for (std::size_t k = 0; k < cut_boxes.size() && alone; ++k) alone = !boxes_meet(box, cut_boxes[k]);
+    (alone ? pass : rest).push_back(comps.polys[c]);
+  }
+  geom::NormalizedObstacles out = geom::normalize_obstacles(rest, dom);
+  // Passed-through components are disjoint from everything else: they meet no other piece's box
+  // (components of one union never touch).
+  for (Polygon& p : pass) out.obstacles.push_back(std::move(p));
+  std::sort(out.obstacles.begin(), out.obstacles.end(),
+            [](const Polygon& x, const Polygon& y) { return x.outer[0] < y.outer[0]; });
+  out.sources.clear();
+  return out;
 }
 
 std::vector<std::size_t> NetSpace::wire_blockers(std::size_t net, std::span<const Point> line) const {
@@ -236,6 +429,23 @@ std::vector<std::size_t> NetSpace::wire_blockers(std::size_t net, std::span<cons
       if (id.first != net && !out.count(id.first) && segment_enters(p, q, ix.wire_pieces[id.first][id.second]))
         out.insert(id.first);
   });
+  return {out.begin(), out.end()};
+}
+
+std::vector<std::size_t> NetSpace::pad_blockers(std::size_t net) const {
+  const Index& ix = *index_;
+  std::set<std::size_t> out;
+  for (const Polygon& pin : nets_[net].pins) {
+    if (is_point_pin(pin)) continue;
+    const Box pb = box_of(pin.outer);
+    const bool rect = is_rectangle(pin);
+    const Ring hull = geom::convex_hull(pin.outer);
+    std::vector<Index::WireEntry> wf;
+    ix.wire_tree.query(bgi::intersects(pb), std::back_inserter(wf));
+    for (const auto& [box, id] : wf)
+      if (id.first != net && (!rect || convex_interiors_meet(ix.wire_pieces[id.first][id.second], hull)))
+        out.insert(id.first);
+  }
   return {out.begin(), out.end()};
 }
 
@@ -260,6 +470,45 @@ NetRouter::NetRouter(const geom::Box& domain, std::span<const geom::Polygon> obs
                      NetRules rules, NetRouterOptions options)
     : space_(domain, obstacles, std::move(nets), rules), options_(options) {}
 
+namespace {
+
+// Proof that point pins are apart in the whole domain from their space clipped to window w: some
+// pin's free component in the window reaches neither another pin nor the window's sides inside
+// the domain (a way out would cross a side). The component touches a side iff the wave from the
+// pin reaches a vertex on it (a window corner, or where an obstacle meets the side: the ends of
+// every stretch of side the component touches), as a run that never stops labels every vertex
+// of the component.
+bool apart_in_window(const geom::NormalizedObstacles& obs, const NetPins& pins, const Box& w) {
+  std::vector<Point> pts;
+  for (const Polygon& pin : pins.pins) {
+    if (!is_point_pin(pin)) return false;
+    pts.push_back(pin.outer[0]);
+  }
+  std::vector<Point> side;  // vertices on the window's boundary
+  for (const Point c : {w.lo, w.hi, Point{w.lo.x, w.hi.y}, Point{w.hi.x, w.lo.y}}) side.push_back(c);
+  for (const Polygon& poly : obs.obstacles) {
+    std::vector<const Ring*> rings{&poly.outer};
+    for (const Ring& h : poly.holes) rings.push_back(&h);
+    for (const Ring* r : rings)
+      for (const Point v : *r)
+        if (v.x == w.lo.x || v.x == w.hi.x || v.y == w.lo.y || v.y == w.hi.y) side.push_back(v);
+  }
+  L1Wavefront wf(obs.domain, obs.obstacles);
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    if (!wf.is_free(pts[i])) continue;
+    wf.run(std::span<const Point>(&pts[i], 1), pts, WavefrontStop::Never);
+    bool apart = false;
+    for (std::size_t j = 0; j < pts.size(); ++j) apart = apart || !wf.target_distance(j);
+    if (!apart) continue;
+    bool out = false;
+    for (const Point v : side) out = out || wf.vertex_distance(v).has_value();
+    if (!out) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 NetAttempt NetRouter::attempt(const NetRouteFn& route, std::size_t net, NetSpaceLevel level) {
   using Clock = std::chrono::steady_clock;
   ++stats_.attempts;
@@ -271,6 +520,17 @@ NetAttempt NetRouter::attempt(const NetRouteFn& route, std::size_t net, NetSpace
   const std::int64_t hpwl = (std::int64_t{hp.hi.x} - hp.lo.x) + (std::int64_t{hp.hi.y} - hp.lo.y);
   std::int64_t m = 2 * hpwl + 8 * (space_.blockage_clearance() + space_.net_clearance()) + 64;
   auto clamp = [](std::int64_t v) { return static_cast<geom::Coord>(std::clamp<std::int64_t>(v, -geom::kMaxCoord, geom::kMaxCoord)); };
+  // the net's rectangular shape pins (cut out of the grown blockages) that meet none of its
+  // other pins (the wires over a pad are trimmed, and one that reaches another pin there must stay)
+  std::vector<Box> pads;
+  for (std::size_t i = 0; i < pins.pins.size(); ++i) {
+    if (!is_rectangle(pins.pins[i])) continue;
+    const Box b = box_of(pins.pins[i].outer);
+    bool alone = true;
+    for (std::size_t j = 0; j < pins.pins.size() && alone; ++j)
+      if (j != i) alone = !boxes_meet(b, box_of(pins.pins[j].outer));
+    if (alone) pads.push_back(b);
+  }
   while (true) {
     Box w{{clamp(std::int64_t{hp.lo.x} - m), clamp(std::int64_t{hp.lo.y} - m)}, {clamp(std::int64_t{hp.hi.x} + m), clamp(std::int64_t{hp.hi.y} + m)}};
     w.lo.x = std::max(w.lo.x, dom.lo.x), w.lo.y = std::max(w.lo.y, dom.lo.y);
@@ -281,6 +541,7 @@ NetAttempt NetRouter::attempt(const NetRouteFn& route, std::size_t net, NetSpace
     const geom::NormalizedObstacles obs = space_.obstacles(net, level, whole ? std::nullopt : std::optional<Box>(w));
     const auto t1 = Clock::now();
     NetAttempt a = route(net, pins, obs);
+    if (a.routed && level != NetSpaceLevel::Plain) a.wires = trim_at_pads(a.wires, pads);
     const auto t2 = Clock::now();
     stats_.space_seconds += std::chrono::duration<double>(t1 - t0).count();
     stats_.route_seconds += std::chrono::duration<double>(t2 - t1).count();
@@ -300,9 +561,30 @@ NetAttempt NetRouter::attempt(const NetRouteFn& route, std::size_t net, NetSpace
       const std::int64_t len = l1_length(a.wires);
       bool proven;
       if (pins.pins.size() == 2 && is_point_pin(pins.pins[0]) && is_point_pin(pins.pins[1])) {
+        // A way out through a top or bottom side at distance d from the pins' box climbs at
+        // least |dy| + 2d, through a left or right one |dx| + 2d: a lower bound in L1 and in
+        // the octilinear metric alike (each unit along an axis costs at least 1).
         const Point p = pins.pins[0].outer[0], q = pins.pins[1].outer[0];
-        const std::int64_t direct = std::abs(std::int64_t{p.x} - q.x) + std::abs(std::int64_t{p.y} - q.y);
-        proven = len <= direct + 2 * (inner(hp) - 2);
+        const std::int64_t dx = std::abs(std::int64_t{p.x} - q.x), dy = std::abs(std::int64_t{p.y} - q.y);
+        const std::int64_t big = std::numeric_limits<std::int64_t>::max() / 4;
+        std::int64_t bound = big;
+        if (w.lo.y > dom.lo.y) bound = std::min(bound, dy + 2 * (std::int64_t{hp.lo.y} - w.lo.y - 2));
+        if (w.hi.y < dom.hi.y) bound = std::min(bound, dy + 2 * (std::int64_t{w.hi.y} - hp.hi.y - 2));
+        if (w.lo.x > dom.lo.x) bound = std::min(bound, dx + 2 * (std::int64_t{hp.lo.x} - w.lo.x - 2));
+        if (w.hi.x < dom.hi.x) bound = std::min(bound, dx + 2 * (std::int64_t{w.hi.x} - hp.hi.x - 2));
+        if (!options_.octilinear) {
+          proven = len <= dx + dy + 2 * (inner(hp) - 2);  // L1: the way out also covers the other axis
+        } else {  // the octilinear length a + b sqrt2 (axis a, diagonal b) <= bound, exactly
+          std::int64_t ax = 0, dg = 0;
+          for (const auto& wire : a.wires)
+            for (std::size_t i = 1; i < wire.size(); ++i) {
+              const std::int64_t ux = std::abs(std::int64_t{wire[i].x} - wire[i - 1].x), uy = std::abs(std::int64_t{wire[i].y} - wire[i - 1].y);
+              ax += std::max(ux, uy) - std::min(ux, uy);
+              dg += std::min(ux, uy);
+            }
+          const __int128 room = static_cast<__int128>(bound) - ax;
+          proven = room >= 0 && 2 * static_cast<__int128>(dg) * dg <= room * room;
+        }
       } else {
         std::vector<Point> all = pts;
         for (const auto& wire : a.wires) all.insert(all.end(), wire.begin(), wire.end());
@@ -310,8 +592,11 @@ NetAttempt NetRouter::attempt(const NetRouteFn& route, std::size_t net, NetSpace
       }
       if (proven) return a;
       m = std::max(4 * m, len + 3);
-    } else {
+    } else if (a.code == "ROUTE-0002") {  // unreachable: a larger window may hold a way round,
+      if (apart_in_window(obs, pins, w)) return a;  // unless a pin is shut in inside this one
       m *= 4;
+    } else {  // a pin that is not free, or no staircase: decided near the pins, in any window
+      return a;
     }
   }
 }
@@ -320,6 +605,7 @@ void NetRouter::run(const NetRouteFn& route) {
   const std::size_t n = space_.size();
   out_.assign(n, NetOutcome{});
   stats_ = {};
+  for (std::size_t i = 0; i < n; ++i) space_.set_wires(i, {});  // a second run starts afresh
   // shortest first: half-perimeter of the pins' bounding box, then the file's order
   std::vector<std::int64_t> hpwl(n, 0);
   for (std::size_t i = 0; i < n; ++i) {
@@ -366,6 +652,7 @@ void NetRouter::run(const NetRouteFn& route) {
       std::set<std::size_t> blockers;
       for (const auto& line : alone.wires)
         for (const std::size_t b : space_.wire_blockers(i, line)) blockers.insert(b);
+      for (const std::size_t b : space_.pad_blockers(i)) blockers.insert(b);
       if (blockers.empty()) continue;
       bool can = true;
       for (const std::size_t b : blockers) can = can && out_[b].rips < options_.max_rips;
@@ -436,54 +723,77 @@ void NetRouter::explain(const NetRouteFn& route, std::size_t net) {
   std::set<std::size_t> bl;
   for (const auto& line : pins.wires)
     for (const std::size_t x : space_.wire_blockers(net, line)) bl.insert(x);
+  for (const std::size_t x : space_.pad_blockers(net)) bl.insert(x);
   o.blockers.assign(bl.begin(), bl.end());
   if (o.blockers.empty()) return;  // keeps the full attempt's own reason
   o.code = "ROUTE-0012";
+  bool limit = false;
+  for (const std::size_t x : o.blockers) limit = limit || out_[x].rips >= options_.max_rips;
   o.reason = "the wires of other nets block every way (kept " + b + " DBU, w + s, apart): its way alone crosses nets " +
-             net_list(o.blockers, name) + " (ripped up " + std::to_string(o.rips) + " time(s) as a blocker itself)";
+             net_list(o.blockers, name) +
+             (limit ? "; they may not be ripped up again (each net at most " + std::to_string(options_.max_rips) + " times)"
+                    : "; ripping them up and routing them again left no way either");
 }
+
+namespace {
+
+// The route function of l1_router / oct_router: Router is L1Router or OctRouter.
+template <class Router>
+NetAttempt route_with(const NetPins& net, const geom::NormalizedObstacles& obs, bool steiner) {
+  NetAttempt a;
+  if (net.pins.size() < 2) {
+    a.code = "ROUTE-0006";
+    a.reason = "fewer than two pins";
+    return a;
+  }
+  Router r(obs.domain, obs.obstacles);
+  auto fail = [&](WireStatus st) {
+    a.code = st == WireStatus::SourceNotFree || st == WireStatus::TargetNotFree ? "ROUTE-0001"
+             : st == WireStatus::Unreachable                                   ? "ROUTE-0002"
+                                                                               : "ROUTE-0003";
+    a.reason = to_string(st);
+    return a;
+  };
+  for (const Polygon& pin : net.pins)
+    if (!Router::supports_pin(pin) || (!is_point_pin(pin) && r.pin_meets_obstacle(pin))) {
+      a.code = "ROUTE-0005";
+      a.reason = "a shape pin this router does not take here";
+      return a;
+    }
+  bool points = true;
+  for (const Polygon& pin : net.pins) points = points && is_point_pin(pin);
+  if (net.pins.size() == 2) {
+    const typename Router::Wire w = r.shortest(net.pins[0], net.pins[1]);
+    if (w.status != WireStatus::Ok) return fail(w.status);
+    a.wires = {w.points};
+  } else if (steiner && points && !Router::kOctilinear) {
+    if constexpr (!Router::kOctilinear) {
+      std::vector<Point> pts;
+      for (const Polygon& pin : net.pins) pts.push_back(pin.outer[0]);
+      const typename Router::Steiner t = r.steiner(pts);
+      if (t.status != WireStatus::Ok) return fail(t.status);
+      a.wires = t.wires;
+    }
+  } else {
+    const typename Router::Tree t = r.tree(net.pins[0], std::span<const Polygon>(net.pins).subspan(1));
+    if (t.status != WireStatus::Ok) return fail(t.status);
+    a.wires = t.wires;
+  }
+  a.routed = true;
+  return a;
+}
+
+}  // namespace
 
 NetRouteFn NetRouter::l1_router(bool steiner) {
   return [steiner](std::size_t, const NetPins& net, const geom::NormalizedObstacles& obs) {
-    NetAttempt a;
-    if (net.pins.size() < 2) {
-      a.code = "ROUTE-0006";
-      a.reason = "fewer than two pins";
-      return a;
-    }
-    L1Router r(obs.domain, obs.obstacles);
-    auto fail = [&](WireStatus st) {
-      a.code = st == WireStatus::SourceNotFree || st == WireStatus::TargetNotFree ? "ROUTE-0001"
-               : st == WireStatus::Unreachable                                   ? "ROUTE-0002"
-                                                                                 : "ROUTE-0003";
-      a.reason = to_string(st);
-      return a;
-    };
-    for (const Polygon& pin : net.pins)
-      if (!L1Router::supports_pin(pin) || (!is_point_pin(pin) && r.pin_meets_obstacle(pin))) {
-        a.code = "ROUTE-0005";
-        a.reason = "a shape pin this router does not take here";
-        return a;
-      }
-    bool points = true;
-    for (const Polygon& pin : net.pins) points = points && is_point_pin(pin);
-    if (net.pins.size() == 2) {
-      const L1Router::Wire w = r.shortest(net.pins[0], net.pins[1]);
-      if (w.status != WireStatus::Ok) return fail(w.status);
-      a.wires = {w.points};
-    } else if (steiner && points) {
-      std::vector<Point> pts;
-      for (const Polygon& pin : net.pins) pts.push_back(pin.outer[0]);
-      const L1Router::Steiner t = r.steiner(pts);
-      if (t.status != WireStatus::Ok) return fail(t.status);
-      a.wires = t.wires;
-    } else {
-      const L1Router::Tree t = r.tree(net.pins[0], std::span<const Polygon>(net.pins).subspan(1));
-      if (t.status != WireStatus::Ok) return fail(t.status);
-      a.wires = t.wires;
-    }
-    a.routed = true;
-    return a;
+    return route_with<L1Router>(net, obs, steiner);
+  };
+}
+
+NetRouteFn NetRouter::oct_router() {
+  return [](std::size_t, const NetPins& net, const geom::NormalizedObstacles& obs) {
+    return route_with<OctRouter>(net, obs, false);
   };
 }
 

@@ -25,20 +25,31 @@
 //     touching obstacles as a pinch), so a gap of exactly 2a between blockages, or a track at
 //     exactly the pitch between two wires, does not take a wire although one would be legal
 //     there; gaps one unit wider do;
-//   - a net's own shape pins get no access cut: a shape pin closer than a to a blockage is
-//     reached only where it is clear of the grown blockage (ROUTE-0010 when nowhere);
+//   - a net's own rectangular shape pins (pads) are cut out of the grown blockage edges like
+//     the access squares (so a pad on a blockage's edge is reached from outside the grown
+//     blockage), other shape pins are not: such a pin within a of a blockage is not routed
+//     (ROUTE-0010); a pad that another net's grown wire enters cannot be taken, and that net
+//     counts as a blocker (ripped up like one);
 //   - cost: every window is a new union of its pieces and a new wavefront (no reuse between
 //     nets); a net whose pins are far apart pays for a window as big as its span.
 //
 // Windows. A net is routed in a window round its pins (their bounding box grown by m = 2 x its
 // half-perimeter + 8(a + b) + 64), with only the pieces that meet it (R-trees), and the answer is
-// kept when it is provably what the whole layout gives: for two pins when its length L is at most
-// |p - q|_1 + 2(m' - 2), m' the least distance from the pins' box to a window side inside the
-// domain (any way out of the window and back is that long; the 2 covers the outward rounding
-// where sloped blockages are clipped to the window); for more pins when L < m'' - 2, m'' the
-// distance from the box of the pins and wires to those sides (every wavefront run then stops
-// before it could reach a side). Otherwise, or when the net fails in the window, the window grows
-// (m := max(4m, L + 3)) up to the whole domain, where the answer stands.
+// kept when it is provably what the whole layout gives: for two point pins when its length L is
+// at most the least of |dy| + 2(d - 2) over the window's top and bottom sides inside the domain
+// (d: that side's distance from the pins' box) and of |dx| + 2(d - 2) over its left and right
+// ones: a way out through a side and back climbs at least that far along one axis, so it is at
+// least that long in L1 and in the octilinear metric alike (L: the wires' L1 length, or with
+// NetRouterOptions::octilinear their exact octilinear length a + b sqrt2; the 2 covers the
+// outward rounding where sloped blockages are clipped to the window). For other nets when L1
+// length < m'' - 2, m'' the distance from the box of the pins and wires to those sides (every
+// wavefront run then stops before it could reach a side; the octilinear length is at most the
+// L1 one). A review found the first version's L1 bound |p - q|_1 + 2(m' - 2) taken for
+// octilinear wires too, which kept a 9,784 wire where the whole layout's was 9,598 (kept as a
+// test). Otherwise, or when the net's pins are apart in the window
+// (ROUTE-0002), the window grows (m := max(4m, L + 3), or 4m) up to the whole domain, where the
+// answer stands; other failures (a pin not free, no integer staircase) are decided near the pins
+// and end the search in the first window.
 //
 // Order and rip-up. Nets go shortest first (by the half-perimeter of their pins' bounding box,
 // then by their place in the file): a short net has the fewest ways round, a long one the most
@@ -113,13 +124,17 @@ class NetSpace {
   // and, separately, the nets whose grown pins it enters.
   std::vector<std::size_t> wire_blockers(std::size_t net, std::span<const geom::Point> line) const;
   std::vector<std::size_t> pin_blockers(std::size_t net, std::span<const geom::Point> line) const;
+  // The nets (other than `net`) whose grown wires enter one of its shape pins (for a shape that
+  // is not a rectangle: whose box they meet), which the router then cannot take.
+  std::vector<std::size_t> pad_blockers(std::size_t net) const;
 
   const geom::Box& domain() const { return domain_; }
   std::size_t size() const { return nets_.size(); }
   const NetPins& net(std::size_t i) const { return nets_[i]; }
 
+  struct Index;  // the R-trees (Boost.Geometry): defined in net_router.cpp only
+
  private:
-  struct Index;  // the R-trees (Boost.Geometry), kept out of this header
   geom::Box domain_;
   std::vector<geom::Polygon> blockages_;
   std::vector<NetPins> nets_;
@@ -132,6 +147,8 @@ struct NetAttempt {
   bool routed = false;
   std::vector<std::vector<geom::Point>> wires;  // routed: polylines, integer vertices
   std::string code, reason;                     // not routed: a code (ROUTE-xxxx) and a reason
+  // ROUTE-0002 must mean "the pins are in different parts of free space": the one failure a
+  // larger window can undo (NetRouter widens the window for it, and for no other code).
 };
 using NetRouteFn =
     std::function<NetAttempt(std::size_t net, const NetPins& pins, const geom::NormalizedObstacles& obstacles)>;
@@ -148,6 +165,8 @@ struct NetRouterOptions {
   int max_rips = 3;     // per net
   int max_rounds = 20;  // rip-up rounds after the first pass
   bool windows = true;  // false: every net on the whole domain (for tests and benchmarks)
+  bool octilinear = false;  // the route function's wires are octilinear (the windows' proof
+                            // then measures their octilinear length)
 };
 
 struct NetRouterStats {
@@ -171,6 +190,9 @@ class NetRouter {
   // A route function for L1 rectilinear wires (router/l1_router.h): two pins by shortest(), more
   // by tree() from the first pin, or by steiner() when `steiner` and every pin is a point.
   static NetRouteFn l1_router(bool steiner);
+  // The same for octilinear wires (router/oct_router.h; shortest-path trees): run it with
+  // NetRouterOptions::octilinear.
+  static NetRouteFn oct_router();
 
   const std::vector<NetOutcome>& outcomes() const { return out_; }
   const std::vector<std::size_t>& order() const { return order_; }

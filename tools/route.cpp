@@ -406,7 +406,9 @@ void add_route(CLI::App& app, int& status) {
           steiner_ok[i] = args->tree == "steiner" && !why;
         }
         try {
-          router::NetRouter nr(space.domain, space.obstacles, std::move(pins), rules);
+          router::NetRouterOptions nro;
+          nro.octilinear = octilinear;
+          router::NetRouter nr(space.domain, space.obstacles, std::move(pins), rules, nro);
           nr.run([&](std::size_t i, const router::NetPins&, const geom::NormalizedObstacles& obs) {
             NetResult r;
             if (octilinear) {
@@ -565,6 +567,8 @@ void add_route(CLI::App& app, int& status) {
                            {"rip_up_rounds", net_stats->rounds},
                            {"rip_ups", net_stats->rips},
                            {"attempts", net_stats->attempts},
+                           {"windows", net_stats->windows},
+                           {"whole_domain_windows", net_stats->whole},
                            {"space_seconds", net_stats->space_seconds},
                            {"path_seconds", net_stats->route_seconds}};
       stats = j.dump(2) + "\n";

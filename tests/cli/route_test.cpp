@@ -258,6 +258,39 @@ TEST(Route, DemoTogetherKeepsTheRules) {
   EXPECT_EQ(run_taut({"check", dir + "/alone.xml", "-q"}).status, 1);
 }
 
+// Generated layouts with multi-pin nets and rules (taut gen --pins --width --spacing), routed
+// together (shortest-path trees, Steiner trees, octilinear wires), then judged by taut check: everything that
+// is routed passes, clearance included; most nets are routed; a bad --pins is CLI-0031.
+TEST(Route, GeneratedMultiPinLayoutsPassTheCheck) {
+  const std::string dir = temp_dir("route_gen_multi");
+  int routed = 0, nets = 0;
+  for (const std::string kind : {"rects", "maze", "degenerate", "polygons"})
+    for (const std::string tree : {"spt", "steiner", "octilinear"}) {
+      SCOPED_TRACE(kind + " " + tree);
+      const std::string in = dir + "/" + kind + ".xml", out = dir + "/" + kind + "." + tree + ".xml";
+      ASSERT_EQ(run_taut({"gen", kind, "--size", "1500", "--nets", "12", "--pins", "2-8", "--width", "10", "--spacing", "6",
+                          "--seed", "5", "-o", in}).status, 0);
+      const auto r = tree == "octilinear" ? run_taut({"route", in, "--orientations", "octilinear", "-q", "-o", out})
+                                          : run_taut({"route", in, "--tree", tree, "-q", "-o", out});
+      ASSERT_TRUE(r.status == 0 || r.status == 1) << r.err;
+      const auto check = run_taut({"check", out, "--json", "-q"});
+      EXPECT_EQ(check.status, 0) << check.out;
+      const auto j = nlohmann::json::parse(check.out);
+      EXPECT_EQ(j["routes_check"]["clearance"], "ok");
+      io::ReadResult rr = io::read_layout(out);
+      ASSERT_TRUE(rr.layout && rr.layout->routes);
+      for (const io::Route& route : rr.layout->routes->routes) {
+        ++nets;
+        routed += route.status == "routed";
+      }
+    }
+  EXPECT_GT(routed * 10, nets * 8) << routed << " of " << nets;
+  const auto bad = run_taut({"gen", "rects", "--pins", "1-3", "-o", dir + "/bad.xml"});
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("CLI-0031"), std::string::npos) << bad.err;
+  EXPECT_FALSE(file_exists(dir + "/bad.xml"));
+}
+
 TEST(Route, DemoRoutesEveryNet) {
   const std::string dir = temp_dir("route_demo");
   int clk_line = 0;

@@ -212,6 +212,50 @@ TEST(Generate, ValidLayouts) {
     }
 }
 
+// Nets of 2..20 pins with rules: pin counts in range (both ends drawn), every pin after a net's
+// first within a tenth of the layout's side of it, pins of different nets 2(w + s) + 2 apart,
+// <rules> written, the layout valid, the same options the same bytes.
+TEST(Generate, MultiPinNetsWithRules) {
+  for (GenKind kind : {GenKind::Rects, GenKind::Maze, GenKind::Degenerate})
+    for (std::uint64_t seed : {3u, 4u}) {
+      SCOPED_TRACE(gen_kind_name(kind) + " seed " + std::to_string(seed));
+      GenOptions o = options(kind, 3000, 40, seed);
+      o.min_pins = 2;
+      o.max_pins = 20;
+      o.wire_width = 6;
+      o.spacing = 4;
+      const Layout l = generate_layout(o);
+      EXPECT_EQ(layout_to_xml(l), layout_to_xml(generate_layout(o)));
+      ASSERT_TRUE(l.rules.has_value());
+      EXPECT_EQ(l.rules->wire_width, 6);
+      EXPECT_EQ(l.rules->spacing, 4);
+      ASSERT_EQ(l.nets.size(), 40u);
+      const Box bb = l.boundary->box;
+      const std::int64_t reach = std::max<std::int64_t>((std::int64_t{bb.hi.x} - bb.lo.x) / 20, 100);
+      std::set<std::size_t> counts;
+      for (std::size_t i = 0; i < l.nets.size(); ++i) {
+        const Net& n = l.nets[i];
+        EXPECT_GE(n.pins.size(), 2u);
+        EXPECT_LE(n.pins.size(), 20u);
+        counts.insert(n.pins.size());
+        for (const Pin& p : n.pins) {
+          if (kind != GenKind::Degenerate) {  // degenerate pins sit on a coarse grid anywhere
+            EXPECT_LE(std::abs(p.point->x - n.pins[0].point->x), reach) << n.name;
+            EXPECT_LE(std::abs(p.point->y - n.pins[0].point->y), reach) << n.name;
+          }
+          for (std::size_t j = 0; j < i; ++j)
+            for (const Pin& q : l.nets[j].pins)
+              EXPECT_FALSE(std::abs(p.point->x - q.point->x) < 22 && std::abs(p.point->y - q.point->y) < 22)
+                  << n.name << " and " << l.nets[j].name;
+        }
+      }
+      EXPECT_GT(counts.size(), 8u);  // the counts spread over the range
+      EXPECT_FALSE(has_error(validate_layout(l)));
+    }
+  // the default, two pins, keeps its names and bytes whatever the new options' defaults
+  EXPECT_EQ(generate_layout(options(GenKind::Rects, 500, 3, 9)).nets[0].pins[1].name, "b");
+}
+
 // Maze walls: rects that never overlap, touch along edges, and leave a connected corridor.
 TEST(Generate, MazeWallsTouchWithoutOverlap) {
   const Layout l = generate_layout(options(GenKind::Maze, 800, 0, 3));

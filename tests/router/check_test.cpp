@@ -288,7 +288,7 @@ namespace {
 // distance between two axis-parallel boxes (a segment is a thin one, a point pin a point) is
 // sqrt(gx^2 + gy^2) with gx, gy the gaps between their x and y intervals, measured per half-unit
 // step of each segment (doubled coordinates); steps in a pin access square of the wire's own net
-// (half-side ceil(w/2) + s round a point pin, or round a wire end on a shape pin) are exempt; a
+// (half-side ceil(w/2) + s round a point pin) are exempt; a
 // wire that runs through a rectangle is left to the free-space check.
 // Random wires (some through the rectangles), rectangle blockages apart from each other, point
 // and rectangle pins, w and s from 0 to 4: the same (wire, blockage), (wire, wire) and
@@ -361,25 +361,14 @@ TEST(CheckRoutes, ClearanceMatchesAGapBruteForce) {
     };
     std::set<std::string> want, got;
     // Pin access in doubled coordinates: the closed squares of half-side ta (ceil(w/2) + s,
-    // doubled) around the net's point pins and its wires' ends on its shape pins are exempt.
+    // doubled) around the net's point pins are exempt (shape pins have none).
     // Their sides are at even doubled coordinates, so each half-unit step of a segment lies in a
     // square or not as a whole: steps with both ends in one square are exempt, the others measured.
     for (std::size_t n = 0; n < nets.size(); ++n) {
       const auto& nt = nets[n];
-      auto on_shape = [&](Point q) {
-        for (const auto& p : nt.pins)
-          if (p.shape) {
-            const Span s = pin_span(p);
-            if (q.x >= s.x0 && q.x <= s.x1 && q.y >= s.y0 && q.y <= s.y1) return true;
-          }
-        return false;
-      };
       std::vector<Point> centres;
       for (const auto& p : nt.pins)
         if (p.point) centres.push_back(*p.point);
-      for (const auto& w : nt.wires)
-        for (const Point e : {w.points.front(), w.points.back()})
-          if (on_shape(e)) centres.push_back(e);
       auto in_zone = [&](std::int64_t x2, std::int64_t y2, const Point c) {
         return std::abs(x2 - 2 * c.x) <= ta && std::abs(y2 - 2 * c.y) <= ta;
       };
@@ -468,6 +457,24 @@ TEST(CheckRoutes, ClearanceMatchesAGapBruteForce) {
 
 namespace taut::test {
 namespace {
+
+// A pad gives no pin access (found by review): twenty wires that each end twice on the pad hug a
+// blockage 1 above it, where w/2 + s = 5 is needed; every one is reported.
+TEST(CheckRoutes, PadsGiveNoPinAccess) {
+  const geom::NormalizedObstacles norm = geom::normalize_obstacles(
+      std::vector<geom::Polygon>{{{{-50, 12}, {150, 12}, {150, 60}, {-50, 60}}, {}}}, geom::Box{{-200, -200}, {300, 200}});
+  std::vector<router::CheckNet> nets(1);
+  nets[0].name = "n";
+  nets[0].routed = true;
+  nets[0].pins = {{"pad", std::nullopt, geom::Polygon{{{0, 0}, {100, 0}, {100, 10}, {0, 10}}, {}}, 1}};
+  for (int k = 0; k < 100; k += 5)
+    nets[0].wires.push_back({{{k, 10}, {k, 11}, {k + 5, 11}, {k + 5, 10}}, 10 + k});
+  router::CheckRules r;
+  r.wire_width = 10;
+  const auto got = router::check_routes(norm, nets, r).problems;
+  EXPECT_EQ(got.size(), 20u);
+  for (const auto& p : got) EXPECT_EQ(p.kind, router::CheckProblem::Kind::BlockageClearance);
+}
 
 // Exactly at the clearance against a sloped blockage edge: the triangle (0,0) (8,6) (0,6) and a
 // wire from (7,-1) straight down, whose nearest point (7,-1) is exactly 5 from the edge

@@ -129,6 +129,18 @@ RandomLayout random_layout(int seed) {
     }
     return Point{0, 0};
   };
+  // a rectangular pad at p (free inside; it may touch blockages), or nothing
+  auto pad = [&](Point p) -> std::optional<Polygon> {
+    const geom::Coord w = static_cast<geom::Coord>(2 + rng() % 6), h = static_cast<geom::Coord>(2 + rng() % 6);
+    if (p.x + w > 120 || p.y + h > 120) return std::nullopt;
+    Polygon g{{p, {static_cast<geom::Coord>(p.x + w), p.y}, {static_cast<geom::Coord>(p.x + w), static_cast<geom::Coord>(p.y + h)},
+               {p.x, static_cast<geom::Coord>(p.y + h)}},
+              {}};
+    if (plain.pin_meets_obstacle(g)) return std::nullopt;
+    for (const Point q : used)
+      if (q.x >= p.x - 1 && q.x <= p.x + w + 1 && q.y >= p.y - 1 && q.y <= p.y + h + 1) return std::nullopt;
+    return g;
+  };
   const int n = 1 + static_cast<int>(rng() % 6);
   for (int i = 0; i < n; ++i) {
     router::NetPins net;
@@ -136,8 +148,14 @@ RandomLayout random_layout(int seed) {
     const int k = 2 + static_cast<int>(rng() % (seed % 2 ? 3 : 1));
     for (int j = 0; j < k; ++j) {
       const Point p = pin();
+      std::optional<Polygon> g = seed % 3 == 2 && rng() % 3 == 0 ? pad(p) : std::nullopt;
+      if (g) {
+        for (const Point v : g->outer) used.push_back(v);
+        net.pins.push_back(*g);
+      } else {
+        net.pins.push_back(Polygon{{p}, {}});
+      }
       used.push_back(p);
-      net.pins.push_back(Polygon{{p}, {}});
     }
     L.nets.push_back(std::move(net));
   }
@@ -149,8 +167,13 @@ std::vector<router::CheckNet> check_nets(const RandomLayout& L, const router::Ne
   for (std::size_t i = 0; i < L.nets.size(); ++i) {
     router::CheckNet cn;
     cn.name = L.nets[i].name;
-    for (std::size_t j = 0; j < L.nets[i].pins.size(); ++j)
-      cn.pins.push_back({"p" + std::to_string(j), L.nets[i].pins[j].outer[0], std::nullopt, 0});
+    for (std::size_t j = 0; j < L.nets[i].pins.size(); ++j) {
+      const Polygon& g = L.nets[i].pins[j];
+      if (g.outer.size() == 1)
+        cn.pins.push_back({"p" + std::to_string(j), g.outer[0], std::nullopt, 0});
+      else
+        cn.pins.push_back({"p" + std::to_string(j), std::nullopt, g, 0});
+    }
     const router::NetOutcome& o = nr.outcomes()[i];
     cn.routed = o.routed;
     for (const auto& w : o.wires) cn.wires.push_back({w, static_cast<int>(i)});
@@ -161,12 +184,18 @@ std::vector<router::CheckNet> check_nets(const RandomLayout& L, const router::Ne
 
 TEST(NetRouter, EveryRoutedNetPassesTheChecker) {
   int failed = 0, layouts = 0;
-  std::int64_t nets = 0, routed = 0, ripped = 0, first = 0;
+  std::int64_t nets = 0, routed = 0, ripped = 0, first = 0, pads = 0, octilinear = 0;
   std::map<std::string, int> reasons;
   for (int seed = 1; seed <= sanitized_share(2000, 8); ++seed) {
     const RandomLayout L = random_layout(700000 + seed);
-    router::NetRouter nr(L.norm.domain, L.norm.obstacles, L.nets, L.rules);
-    nr.run(router::NetRouter::l1_router(seed % 3 == 0));
+    // every fifth layout octilinear; a third of the rest with Steiner trees
+    router::NetRouterOptions opt;
+    opt.octilinear = seed % 5 == 4;
+    octilinear += opt.octilinear;
+    router::NetRouter nr(L.norm.domain, L.norm.obstacles, L.nets, L.rules, opt);
+    nr.run(opt.octilinear ? router::NetRouter::oct_router() : router::NetRouter::l1_router(seed % 3 == 0));
+    for (std::size_t i = 0; i < L.nets.size(); ++i)
+      for (const Polygon& g : L.nets[i].pins) pads += g.outer.size() > 1 && nr.outcomes()[i].routed;
     ++layouts;
     const std::string at = "seed " + std::to_string(700000 + seed) + " (w " + std::to_string(L.rules.wire_width) + ", s " +
                            std::to_string(L.rules.spacing) + ")";
@@ -187,14 +216,16 @@ TEST(NetRouter, EveryRoutedNetPassesTheChecker) {
       }
     }
   }
-  std::printf("%d layouts, %lld nets: %lld routed (%lld by the first pass), %lld rip-ups; unrouted by code:", layouts,
-              static_cast<long long>(nets), static_cast<long long>(routed), static_cast<long long>(first),
-              static_cast<long long>(ripped));
+  std::printf("%d layouts (%lld octilinear), %lld nets: %lld routed (%lld by the first pass, %lld pads reached), %lld "
+              "rip-ups; unrouted by code:",
+              layouts, static_cast<long long>(octilinear), static_cast<long long>(nets), static_cast<long long>(routed),
+              static_cast<long long>(first), static_cast<long long>(pads), static_cast<long long>(ripped));
   for (const auto& [code, n] : reasons) std::printf(" %s %d", code.c_str(), n);
   std::printf("\n");
   EXPECT_EQ(failed, 0);
   EXPECT_GT(routed, nets / 2);
   EXPECT_GT(routed, first);  // rip-up routes nets the first pass did not
+  EXPECT_GT(pads, 100);
 }
 
 // One net alone with no rules: the exact L1 shortest length of the reference (the other nets'
@@ -205,6 +236,7 @@ TEST(NetRouter, ANetAloneWithoutRulesIsShortest) {
     RandomLayout L = random_layout(800000 + seed);
     L.nets.resize(1);
     L.nets[0].pins.resize(2);
+    for (Polygon& g : L.nets[0].pins) g = Polygon{{g.outer[0]}, {}};  // point pins (a pad's first corner)
     L.rules = {};
     router::NetRouter nr(L.norm.domain, L.norm.obstacles, L.nets, L.rules);
     nr.run(router::NetRouter::l1_router(false));
@@ -329,6 +361,90 @@ TEST(NetRouter, WindowsGiveTheWholeLayoutsLengths) {
   };
   EXPECT_EQ(len(win.outcomes()[0]), len(whole.outcomes()[0]));
   EXPECT_EQ(len(whole.outcomes()[0]), 20 + 2 * (2000 - 200 + 2));  // round the wall's end, a = 2 clear of it
+  // a pin shut in a ring of blockage, far from the domain's sides: unrouted in its first window
+  // (the pin's component in the window reaches no side), as on the whole domain
+  const std::vector<Polygon> ring{{{{1900, 1900}, {2100, 1900}, {2100, 2100}, {1900, 2100}}, {{{1950, 1950}, {1950, 2050}, {2050, 2050}, {2050, 1950}}}}};
+  const geom::NormalizedObstacles rn = geom::normalize_obstacles(ring, domain);
+  const std::vector<router::NetPins> shut{{"s", {Polygon{{{2000, 2000}}, {}}, Polygon{{{2300, 2000}}, {}}}}};
+  router::NetRouter rw(rn.domain, rn.obstacles, shut, {2, 1});
+  rw.run(router::NetRouter::l1_router(false));
+  router::NetRouter rwhole(rn.domain, rn.obstacles, shut, {2, 1}, whole_opt);
+  rwhole.run(router::NetRouter::l1_router(false));
+  EXPECT_FALSE(rw.outcomes()[0].routed);
+  EXPECT_FALSE(rwhole.outcomes()[0].routed);
+  EXPECT_EQ(rw.outcomes()[0].code, "ROUTE-0002");
+  EXPECT_EQ(rw.stats().whole, 0);
+  // the same ring with a gap in its wall: the pin gets out, in a window
+  std::vector<Polygon> parts;
+  for (const geom::Box b : {geom::Box{{1900, 1900}, {2100, 1950}}, geom::Box{{1900, 2050}, {2100, 2100}}, geom::Box{{1900, 1950}, {1950, 2050}},
+                            geom::Box{{2050, 1950}, {2100, 1990}}, geom::Box{{2050, 2010}, {2100, 2050}}})
+    parts.push_back(box_polygons(std::vector<geom::Box>{b})[0]);
+  const geom::NormalizedObstacles gn = geom::normalize_obstacles(parts, domain);
+  router::NetRouter gw(gn.domain, gn.obstacles, shut, {2, 1});
+  gw.run(router::NetRouter::l1_router(false));
+  EXPECT_TRUE(gw.outcomes()[0].routed);
+  EXPECT_EQ(gw.stats().whole, 0);
+}
+
+// Found by review, kept: (1) an octilinear net whose window was kept by the L1 bound although a
+// way out of the window was shorter (9,784 against the whole layout's 9,598); (2) a pad touching
+// a blockage and a pad next to another net's wire, both refused as "under a blockage"; (3) a
+// second run() starting from the first run's wires.
+TEST(NetRouter, ReviewCases) {
+  {
+    const geom::Box domain{{-6000, -6000}, {7000, 7000}};
+    const std::vector<Polygon> blocks{
+        box_polygons(std::vector<geom::Box>{{{-6000, -6000}, {7000, -3905}}})[0],
+        box_polygons(std::vector<geom::Box>{{{-6000, -3905}, {-5, 7000}}})[0],
+        Polygon{{{-5, 4112}, {1005, 5122}, {1005, 7000}, {-5, 7000}}, {}},
+        box_polygons(std::vector<geom::Box>{{{1005, -3905}, {7000, 7000}}})[0],
+        Polygon{{{5, -3895}, {995, -3895}, {995, 5092}, {5, 4102}}, {}}};
+    const geom::NormalizedObstacles norm = geom::normalize_obstacles(blocks, domain);
+    const std::vector<router::NetPins> net{{"n", {Polygon{{{0, 0}}, {}}, Polygon{{{1000, 1000}}, {}}}}};
+    router::NetRouterOptions opt;
+    opt.octilinear = true;
+    router::NetRouter win(norm.domain, norm.obstacles, net, {}, opt);
+    win.run(router::NetRouter::oct_router());
+    opt.windows = false;
+    router::NetRouter whole(norm.domain, norm.obstacles, net, {}, opt);
+    whole.run(router::NetRouter::oct_router());
+    ASSERT_TRUE(win.outcomes()[0].routed && whole.outcomes()[0].routed);
+    auto oct = [](const router::NetOutcome& o) {  // (axis, diagonal) parts of the length
+      std::pair<std::int64_t, std::int64_t> l{0, 0};
+      for (const auto& w : o.wires)
+        for (std::size_t i = 1; i < w.size(); ++i) {
+          const std::int64_t ux = std::abs(w[i].x - w[i - 1].x), uy = std::abs(w[i].y - w[i - 1].y);
+          l.first += std::max(ux, uy) - std::min(ux, uy);
+          l.second += std::min(ux, uy);
+        }
+      return l;
+    };
+    EXPECT_EQ(oct(win.outcomes()[0]), oct(whole.outcomes()[0]));
+  }
+  {
+    const geom::Box domain{{-200, -200}, {200, 200}};
+    const geom::NormalizedObstacles norm =
+        geom::normalize_obstacles(box_polygons(std::vector<geom::Box>{{{20, 0}, {40, 20}}}), domain);
+    const Polygon pad = box_polygons(std::vector<geom::Box>{{{0, 0}, {20, 20}}})[0];
+    // the pad touches the blockage; a second net's wire runs 3 above the pad
+    const std::vector<router::NetPins> nets{{"n", {pad, Polygon{{{10, -100}}, {}}}}, {"m", {Polygon{{{-50, 24}}, {}}, Polygon{{{60, 24}}, {}}}}};
+    router::NetRouter nr(norm.domain, norm.obstacles, nets, {2, 2});
+    nr.run(router::NetRouter::l1_router(false));
+    EXPECT_TRUE(nr.outcomes()[0].routed) << nr.outcomes()[0].code << " " << nr.outcomes()[0].reason;
+    EXPECT_TRUE(nr.outcomes()[1].routed) << nr.outcomes()[1].code << " " << nr.outcomes()[1].reason;
+    std::vector<router::CheckNet> cn(2);
+    for (int i = 0; i < 2; ++i) {
+      cn[i].name = nets[i].name;
+      cn[i].routed = nr.outcomes()[i].routed;
+      for (const auto& g : nets[i].pins)
+        cn[i].pins.push_back(g.outer.size() == 1 ? router::CheckPin{"p", g.outer[0], std::nullopt, 0} : router::CheckPin{"p", std::nullopt, g, 0});
+      for (const auto& w : nr.outcomes()[i].wires) cn[i].wires.push_back({w, 0});
+    }
+    EXPECT_TRUE(router::check_routes(norm, cn, {2, 2}).problems.empty());
+    const std::size_t first = nr.stats().first_pass;
+    nr.run(router::NetRouter::l1_router(false));
+    EXPECT_EQ(nr.stats().first_pass, first);
+  }
 }
 
 // Rip-up: the short net "a" goes straight across the plane first and cuts "b"'s pin (10 above
