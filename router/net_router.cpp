@@ -532,6 +532,7 @@ NetAttempt NetRouter::attempt(const NetRouteFn& route, std::size_t net, NetSpace
     if (alone) pads.push_back(b);
   }
   while (true) {
+    if (options_.stop && options_.stop()) throw NetRouterStopped();
     Box w{{clamp(std::int64_t{hp.lo.x} - m), clamp(std::int64_t{hp.lo.y} - m)}, {clamp(std::int64_t{hp.hi.x} + m), clamp(std::int64_t{hp.hi.y} + m)}};
     w.lo.x = std::max(w.lo.x, dom.lo.x), w.lo.y = std::max(w.lo.y, dom.lo.y);
     w.hi.x = std::min(w.hi.x, dom.hi.x), w.hi.y = std::min(w.hi.y, dom.hi.y);
@@ -626,7 +627,20 @@ void NetRouter::run(const NetRouteFn& route) {
     out_[i].reason = a.routed ? std::string() : std::move(a.reason);
     space_.set_wires(i, out_[i].wires);
   };
-  for (const std::size_t i : order_) place(i, attempt(route, i, NetSpaceLevel::Full));
+  NetRouterProgress prog;
+  prog.nets = n;
+  std::size_t routed_now = 0;
+  auto tell = [&] {
+    if (!options_.progress) return;
+    ++prog.tried;
+    prog.routed = routed_now;
+    options_.progress(prog);
+  };
+  for (const std::size_t i : order_) {
+    place(i, attempt(route, i, NetSpaceLevel::Full));
+    routed_now += out_[i].routed;
+    tell();
+  }
   auto score = [&] {
     std::size_t routed = 0;
     std::int64_t len = 0;
@@ -640,8 +654,14 @@ void NetRouter::run(const NetRouteFn& route) {
   int stale = 0;
   for (int round = 0; round < options_.max_rounds && best_score.first < n && stale < 2; ++round) {
     ++stats_.rounds;
+    prog.phase = NetRouterProgress::Phase::RipUp;
+    prog.round = round + 1;
+    prog.tried = 0;
     for (const std::size_t i : order_) {
       if (out_[i].routed) continue;
+      routed_now = 0;
+      for (const NetOutcome& o : out_) routed_now += o.routed;
+      tell();
       NetAttempt again = attempt(route, i, NetSpaceLevel::Full);  // others may have moved
       if (again.routed) {
         place(i, std::move(again));
@@ -686,8 +706,14 @@ void NetRouter::run(const NetRouteFn& route) {
       space_.set_wires(i, out_[i].wires);
     }
   }
+  prog.phase = NetRouterProgress::Phase::Explain;
+  prog.tried = 0;
+  routed_now = best_score.first;
   for (const std::size_t i : order_)
-    if (!out_[i].routed) explain(route, i);
+    if (!out_[i].routed) {
+      explain(route, i);
+      tell();
+    }
 }
 
 void NetRouter::explain(const NetRouteFn& route, std::size_t net) {

@@ -74,6 +74,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -161,12 +162,31 @@ struct NetOutcome {
   int rips = 0;                        // times it was ripped up
 };
 
+// What NetRouterOptions::progress is told: after each net tried, the nets routed now, the nets
+// tried so far in this phase, and the phase.
+struct NetRouterProgress {
+  enum class Phase { FirstPass, RipUp, Explain } phase = Phase::FirstPass;
+  std::size_t routed = 0, tried = 0, nets = 0;
+  int round = 0;  // the rip-up round (RipUp)
+};
+
+// Thrown out of NetRouter::run when NetRouterOptions::stop says so (a time limit, a signal): the
+// outcomes are then incomplete and must not be written.
+struct NetRouterStopped : std::runtime_error {
+  NetRouterStopped() : std::runtime_error("the net router was stopped") {}
+};
+
 struct NetRouterOptions {
   int max_rips = 3;     // per net
   int max_rounds = 20;  // rip-up rounds after the first pass
   bool windows = true;  // false: every net on the whole domain (for tests and benchmarks)
   bool octilinear = false;  // the route function's wires are octilinear (the windows' proof
                             // then measures their octilinear length)
+  // Asked before every window is routed: true stops the run (NetRouterStopped). A window's
+  // route is not interrupted, so a run stops within one window's time.
+  std::function<bool()> stop;
+  // Told after every net tried (for a progress bar).
+  std::function<void(const NetRouterProgress&)> progress;
 };
 
 struct NetRouterStats {

@@ -13,6 +13,9 @@
 // class and writes it with the fewest links; a net with a <sketch> gets its sketch tightened
 // (tools/route_common.h: WireTightener, as `taut tighten` does).
 #include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <unistd.h>
 #include <iostream>
 #include <span>
 #include <vector>
@@ -35,6 +38,9 @@
 
 namespace taut::cli {
 namespace {
+
+volatile std::sig_atomic_t g_signal = 0;  // the signal that asked taut route to stop
+extern "C" void on_signal(int sig) { g_signal = sig; }
 
 struct NetResult {
   io::Route route;
@@ -273,6 +279,7 @@ void add_route(CLI::App& app, int& status) {
     bool tighten = false;
     bool independent = false;
     std::string tree = "spt";
+    double time_limit = 0;  // seconds; 0: none
   };
   auto args = std::make_shared<Args>();
   CLI::App* sub = app.add_subcommand("route", "Route every net (shortest wires; a shortest-path tree from the first pin, or with --tree steiner a Steiner tree, for nets of three or more pins) and write the routed layout");
@@ -287,6 +294,10 @@ void add_route(CLI::App& app, int& status) {
   sub->add_flag("--independent", args->independent,
                 "route each net alone among the blockages, as if no other net existed and without the clearance "
                 "of <rules> (exact shortest wires per net; wires of different nets may cross)");
+  sub->add_option("--time-limit", args->time_limit,
+                  "stop after SEC seconds with exit status 4, writing nothing (the previous output files stay as they "
+                  "were); SIGINT and SIGTERM stop the same way")
+      ->check(CLI::PositiveNumber);
   sub->add_option("--tree", args->tree,
                   "nets of three or more pins: spt (default: a shortest-path tree from the first pin, every pin at its "
                   "shortest distance) or steiner (short total length; rectilinear L1 wires between point pins)");
@@ -294,6 +305,38 @@ void add_route(CLI::App& app, int& status) {
   sub->callback([args, &status] {
     using Clock = std::chrono::steady_clock;
     const auto t0 = Clock::now();
+    // --time-limit, SIGINT, SIGTERM: checked between nets (and between a net's windows); the run
+    // then ends with exit status 4 and writes nothing (outputs are written only at the end).
+    g_signal = 0;
+    std::signal(SIGINT, on_signal);
+    std::signal(SIGTERM, on_signal);
+    const std::optional<Clock::time_point> deadline =
+        args->time_limit > 0 ? std::optional<Clock::time_point>(t0 + std::chrono::duration_cast<Clock::duration>(
+                                                                          std::chrono::duration<double>(args->time_limit)))
+                             : std::nullopt;
+    auto stop = [&] { return g_signal != 0 || (deadline && Clock::now() > *deadline); };
+    // A progress line on stderr when it is a terminal, from one second on.
+    const bool bar = !args->load.quiet && ::isatty(2);
+    bool bar_shown = false;
+    auto bar_last = t0;
+    auto progress = [&](const router::NetRouterProgress& p) {
+      const auto now = Clock::now();
+      if (!bar || now - t0 < std::chrono::seconds(1) || now - bar_last < std::chrono::milliseconds(200)) return;
+      bar_last = now;
+      bar_shown = true;
+      const char* phase = p.phase == router::NetRouterProgress::Phase::FirstPass ? "first pass"
+                          : p.phase == router::NetRouterProgress::Phase::RipUp   ? "rip-up round"
+                                                                                 : "explaining";
+      std::cerr << "\r" << args->file << ": " << phase;
+      if (p.phase == router::NetRouterProgress::Phase::RipUp) std::cerr << " " << p.round;
+      std::cerr << ", " << p.tried << " nets tried, " << p.routed << " of " << p.nets << " routed   " << std::flush;
+    };
+    auto end_bar = [&] {
+      if (bar_shown) std::cerr << "\r\033[K" << std::flush;
+      bar_shown = false;
+    };
+    try {
+    [&] {
     if (args->tree != "steiner" && args->tree != "spt") {
       print_usage_error("CLI-0030", "route: --tree " + args->tree + ": use steiner or spt");
       status = kInvalid;
@@ -334,6 +377,7 @@ void add_route(CLI::App& app, int& status) {
                           args->load.quiet);
       t1 = Clock::now();
       for (const io::Net& net : layout->nets) {
+        if (stop()) throw router::NetRouterStopped();
         if (args->tree == "steiner")  // said, not dropped silently
           if (const auto why = no_steiner_tree(net, args->routing.metric, false))
             warn_no_steiner_tree(*layout, net, *why, args->load.quiet);
@@ -408,6 +452,8 @@ void add_route(CLI::App& app, int& status) {
         try {
           router::NetRouterOptions nro;
           nro.octilinear = octilinear;
+          nro.stop = stop;
+          nro.progress = progress;
           router::NetRouter nr(space.domain, space.obstacles, std::move(pins), rules, nro);
           nr.run([&](std::size_t i, const router::NetPins&, const geom::NormalizedObstacles& obs) {
             NetResult r;
@@ -464,6 +510,7 @@ void add_route(CLI::App& app, int& status) {
         const io::Net& net = layout->nets[ni];
         NetResult r;
         if (args->independent) {
+          if (stop()) throw router::NetRouterStopped();
           const std::optional<std::string> why = args->tree == "steiner" ? no_steiner_tree(net, "l1", octilinear) : std::nullopt;
           if (why) warn_no_steiner_tree(*layout, net, *why, args->load.quiet);  // said, not dropped silently
           const bool steiner = args->tree == "steiner" && !why;
@@ -550,6 +597,8 @@ void add_route(CLI::App& app, int& status) {
         }
       }
     }  // the l1 metric
+    end_bar();
+    if (stop()) throw router::NetRouterStopped();
     const auto t2 = Clock::now();
     io::Layout out = *layout;
     out.routes = std::move(routes);
@@ -584,6 +633,23 @@ void add_route(CLI::App& app, int& status) {
                 << (failed ? " (" + std::to_string(failed) + " not routed, see above)" : std::string())
                 << "; wrote " << args->out << '\n';
     status = failed ? kIncomplete : kOk;
+    }();
+    } catch (const router::NetRouterStopped&) {
+      end_bar();
+      const double el = std::chrono::duration<double>(Clock::now() - t0).count();
+      char secs[32], limit[32];
+      std::snprintf(secs, sizeof secs, "%.1f", el);
+      std::snprintf(limit, sizeof limit, "%g", args->time_limit);
+      print_diagnostics({Diagnostic{Severity::Error, "ROUTE-0016", args->file, 0, 0,
+                                    std::string("stopped by ") +
+                                        (g_signal == SIGINT    ? "SIGINT"
+                                         : g_signal == SIGTERM ? "SIGTERM"
+                                                               : "--time-limit " + std::string(limit) + " s") +
+                                        " after " + secs + " s: nothing written (" + args->out + " keeps what it held)"}});
+      status = kResource;
+    }
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
   });
 }
 

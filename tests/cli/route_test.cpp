@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <csignal>
 #include <optional>
 #include <set>
 
@@ -289,6 +290,31 @@ TEST(Route, GeneratedMultiPinLayoutsPassTheCheck) {
   EXPECT_EQ(bad.status, 2);
   EXPECT_NE(bad.err.find("CLI-0031"), std::string::npos) << bad.err;
   EXPECT_FALSE(file_exists(dir + "/bad.xml"));
+}
+
+// --time-limit, SIGINT and SIGTERM stop a long run with exit status 4 and write nothing: the
+// output files keep what they held (CLI.md). The layout takes far longer than the limits (2,000
+// nets with rules on 20,000 blockage vertices: over 30 s).
+TEST(Route, TimeLimitAndSignalsStopWithExit4) {
+  const std::string dir = temp_dir("route_stop");
+  const std::string in = dir + "/big.xml", out = dir + "/out.xml", svg = dir + "/out.svg";
+  ASSERT_EQ(run_taut({"gen", "rects", "--size", "20000", "--nets", "2000", "--pins", "2-5", "--width", "10", "--spacing", "10",
+                      "-o", in}).status, 0);
+  write_text(out, "previous\n");
+  write_text(svg, "previous svg\n");
+  const auto limited = run_taut({"route", in, "-o", out, "--svg", svg, "--time-limit", "0.5"});
+  EXPECT_EQ(limited.status, 4) << limited.err;
+  EXPECT_NE(limited.err.find("ROUTE-0016"), std::string::npos) << limited.err;
+  EXPECT_NE(limited.err.find("--time-limit 0.5 s"), std::string::npos) << limited.err;
+  for (const int sig : {SIGINT, SIGTERM}) {
+    const auto r = run_taut_signalled({"route", in, "-o", out, "--svg", svg}, 1.0, sig);
+    EXPECT_EQ(r.status, 4) << sig << ": " << r.err;
+    EXPECT_NE(r.err.find(sig == SIGINT ? "stopped by SIGINT" : "stopped by SIGTERM"), std::string::npos) << r.err;
+  }
+  EXPECT_EQ(read_text(out), "previous\n");
+  EXPECT_EQ(read_text(svg), "previous svg\n");
+  const auto bad = run_taut({"route", in, "-o", out, "--time-limit", "-1"});
+  EXPECT_EQ(bad.status, 2);
 }
 
 TEST(Route, DemoRoutesEveryNet) {

@@ -447,6 +447,31 @@ TEST(NetRouter, ReviewCases) {
   }
 }
 
+// The progress callback hears every net of the first pass in order, with the routed count never
+// above the nets tried; a stop callback that says yes ends the run with NetRouterStopped.
+TEST(NetRouter, ProgressAndStop) {
+  const RandomLayout L = random_layout(700007);
+  std::vector<router::NetRouterProgress> heard;
+  router::NetRouterOptions opt;
+  opt.progress = [&](const router::NetRouterProgress& p) { heard.push_back(p); };
+  router::NetRouter nr(L.norm.domain, L.norm.obstacles, L.nets, L.rules, opt);
+  nr.run(router::NetRouter::l1_router(false));
+  ASSERT_GE(heard.size(), L.nets.size());
+  for (std::size_t i = 0; i < L.nets.size(); ++i) {
+    EXPECT_EQ(heard[i].phase, router::NetRouterProgress::Phase::FirstPass);
+    EXPECT_EQ(heard[i].tried, i + 1);
+    EXPECT_LE(heard[i].routed, heard[i].tried);
+    EXPECT_EQ(heard[i].nets, L.nets.size());
+  }
+  EXPECT_EQ(heard[L.nets.size() - 1].routed, nr.stats().first_pass);
+  int asked = 0;
+  router::NetRouterOptions stop;
+  stop.stop = [&] { return ++asked > 2; };
+  router::NetRouter ns(L.norm.domain, L.norm.obstacles, L.nets, L.rules, stop);
+  EXPECT_THROW(ns.run(router::NetRouter::l1_router(false)), router::NetRouterStopped);
+  EXPECT_EQ(asked, 3);
+}
+
 // Rip-up: the short net "a" goes straight across the plane first and cuts "b"'s pin (10 above
 // a's line) off from its other pin far below; b's way alone crosses a, so a is ripped up, b
 // routed straight down, and a routed again over the top of b's upper pin.

@@ -20,7 +20,9 @@ extern char** environ;
 namespace taut::test {
 namespace fs = std::filesystem;
 
-RunResult run_taut(const std::vector<std::string>& args, double timeout_s) {
+RunResult run_taut(const std::vector<std::string>& args, double timeout_s) { return run_taut_signalled(args, -1, 0, timeout_s); }
+
+RunResult run_taut_signalled(const std::vector<std::string>& args, double after_s, int sig, double timeout_s) {
   const fs::path dir = fs::temp_directory_path() /
                        ("taut-run-" + std::to_string(::getpid()) + "-" +
                         std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()));
@@ -45,10 +47,15 @@ RunResult run_taut(const std::vector<std::string>& args, double timeout_s) {
   posix_spawn_file_actions_destroy(&fa);
 
   int wstatus = 0;
+  bool signalled = false;
   for (;;) {
     const pid_t r = ::waitpid(pid, &wstatus, WNOHANG);
     if (r == pid) break;
     const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (sig != 0 && after_s >= 0 && !signalled && el > after_s) {
+      ::kill(pid, sig);
+      signalled = true;
+    }
     if (el > timeout_s) {
       ::kill(pid, SIGKILL);
       ::waitpid(pid, &wstatus, 0);

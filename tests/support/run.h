@@ -20,6 +20,8 @@ struct RunResult {
 
 // Runs TAUT_EXE with args (no shell), stdin from /dev/null, killed after timeout_s seconds.
 RunResult run_taut(const std::vector<std::string>& args, double timeout_s = 30.0);
+// The same, sending signal `sig` once after `after_s` seconds (if it still runs).
+RunResult run_taut_signalled(const std::vector<std::string>& args, double after_s, int sig, double timeout_s = 60.0);
 
 // A fresh empty folder under the test's temporary directory.
 std::string temp_dir(const std::string& name);
@@ -31,10 +33,11 @@ std::string layout_file(const std::string& folder, const std::string& body);
 // The points of a JSON array of [x, y] pairs (the "points" of `taut path --json`).
 std::vector<geom::Point> points_of(const nlohmann::json& pts);
 
-// `taut check FILE --json` on a routed file: every part the routers promise today passes (the
+// `taut check FILE --json` on a routed file: every part every router promises passes (the
 // lengths and bends as written, the orientations, free space, connectivity). Shorts and the
-// clearance of <rules> are allowed to fail, as the routers keep neither yet (issue #7): the exit
-// status is 0, or 1 with every error one of those. Records a test failure otherwise.
+// clearance of <rules> are allowed to fail, as `route --independent`, the bend metrics and
+// tightening keep neither: the exit status is 0, or 1 with every error one of those. Records a
+// test failure otherwise.
 void expect_routes_check_except_clearance(const std::string& file);
 
 // The public benchmark data folder (../shared/data beside the checkout, or -DTAUT_SHARED_DATA=),
