@@ -180,6 +180,9 @@ std::string layout_stats_json(const Layout& layout, int indent) {
     t["wires"] = wires;
     t["length"] = length_json(format_total_length(all));
     t["bends"] = bends;
+    // the share of the layout's nets routed (1 when it has none)
+    const std::int64_t all_nets = routed + failed + missing;
+    t["completion"] = all_nets == 0 ? 1.0 : static_cast<double>(routed) / static_cast<double>(all_nets);
     j["totals"] = std::move(t);
   }
   return j.dump(indent) + "\n";

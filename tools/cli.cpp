@@ -1,5 +1,11 @@
 #include "tools/cli.h"
 
+#include <algorithm>
+#include <cstdio>
+#include <ostream>
+
+#include <nlohmann/json.hpp>
+
 #include "tools/commands.h"
 
 #include <fstream>
@@ -207,6 +213,48 @@ bool write_output(const std::string& path, std::string_view bytes) {
     return false;
   }
   return true;
+}
+
+void print_route_table(std::ostream& os, const nlohmann::json& stats, std::size_t max_rows) {
+  if (!stats.contains("routes")) return;
+  struct Row {
+    std::string net, status, length, bends, reason;
+    std::size_t pins = 0;
+  };
+  std::vector<Row> rows;
+  for (const auto& [name, e] : stats["routes"].items()) {
+    Row r;
+    r.net = name;
+    r.status = e.value("status", "");
+    r.pins = e.value("pins", std::size_t{0});
+    r.length = e.contains("length") ? (e["length"].is_string() ? e["length"].get<std::string>() : e["length"].dump()) : "-";
+    r.bends = e.contains("bends") ? e["bends"].dump() : "-";
+    r.reason = e.value("reason", "");
+    rows.push_back(std::move(r));
+  }
+  std::stable_sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return (a.status != "routed") > (b.status != "routed"); });
+  std::size_t width = 3;
+  for (std::size_t i = 0; i < rows.size() && i < max_rows; ++i) width = std::max(width, rows[i].net.size());
+  char line[160];
+  std::snprintf(line, sizeof line, "%-*s  %-8s %5s %12s %6s  %s\n", static_cast<int>(width), "net", "status", "pins", "length", "bends",
+                "reason");
+  os << line;
+  for (std::size_t i = 0; i < rows.size() && i < max_rows; ++i) {
+    const Row& r = rows[i];
+    std::snprintf(line, sizeof line, "%-*s  %-8s %5zu %12s %6s  ", static_cast<int>(width), r.net.c_str(), r.status.c_str(), r.pins,
+                  r.length.c_str(), r.bends.c_str());
+    os << line << r.reason << '\n';
+  }
+  if (rows.size() > max_rows) os << "... " << rows.size() - max_rows << " more nets (--json for every one)\n";
+  if (stats.contains("totals")) {
+    const auto& t = stats["totals"];
+    const std::int64_t routed = t.value("routed", std::int64_t{0});
+    const std::int64_t all = routed + t.value("failed", std::int64_t{0}) + t.value("missing", std::int64_t{0});
+    std::snprintf(line, sizeof line, "%.1f", 100.0 * t.value("completion", 1.0));
+    os << "total: " << routed << " of " << all << " nets routed (" << line << " %), length "
+       << (t["length"].is_string() ? t["length"].get<std::string>() : t["length"].dump()) << ", " << t.value("bends", std::int64_t{0})
+       << " bends, " << t.value("wires", std::int64_t{0}) << " wires\n";
+  }
 }
 
 }  // namespace taut::cli

@@ -2,8 +2,11 @@
 // diagnostic printed, and writing outputs atomically. Only tools/ prints and picks exit codes.
 #pragma once
 
+#include <iosfwd>
 #include <optional>
 #include <string>
+
+#include <nlohmann/json_fwd.hpp>
 #include <string_view>
 #include <vector>
 
@@ -25,6 +28,11 @@ struct LoadOptions {
   bool lenient = false;
   bool quiet = false;  // suppress warnings (errors are always printed)
 };
+
+// A short table of a layout statistics document (io::layout_stats_json) with "routes": the nets
+// not routed first (with their reasons), then routed ones, at most max_rows rows, then the totals
+// with the completion rate. For `taut stats` (stdout) and `taut route` (stderr).
+void print_route_table(std::ostream& os, const nlohmann::json& stats, std::size_t max_rows);
 
 // Prints diagnostics to stderr in the CLI.md format. Returns the number of errors.
 int print_diagnostics(const std::vector<Diagnostic>& diagnostics, bool quiet = false);

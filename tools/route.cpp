@@ -607,31 +607,44 @@ void add_route(CLI::App& app, int& status) {
     const std::string xml = io::layout_to_xml(out);
     std::string svg, stats;
     if (!args->svg.empty()) svg = io::layout_to_svg(out);
-    if (!args->stats.empty()) {
-      auto j = nlohmann::ordered_json::parse(io::layout_stats_json(out));
-      j["route_seconds"] = {{"prepare", std::chrono::duration<double>(t1 - t0).count()},
-                            {"route", std::chrono::duration<double>(t2 - t1).count()}};
-      if (net_stats)
-        j["net_router"] = {{"first_pass_routed", net_stats->first_pass},
-                           {"rip_up_rounds", net_stats->rounds},
-                           {"rip_ups", net_stats->rips},
-                           {"attempts", net_stats->attempts},
-                           {"windows", net_stats->windows},
-                           {"whole_domain_windows", net_stats->whole},
-                           {"space_seconds", net_stats->space_seconds},
-                           {"path_seconds", net_stats->route_seconds}};
-      stats = j.dump(2) + "\n";
-    }
+    auto j = nlohmann::ordered_json::parse(io::layout_stats_json(out));
+    const auto t3 = Clock::now();
+    const double prepare_s = std::chrono::duration<double>(t1 - t0).count(), route_s = std::chrono::duration<double>(t2 - t1).count(),
+                 output_s = std::chrono::duration<double>(t3 - t2).count();
+    j["route_seconds"] = {{"prepare", prepare_s}, {"route", route_s}, {"output", output_s}};
+    if (net_stats)
+      j["net_router"] = {{"first_pass_routed", net_stats->first_pass},
+                         {"rip_up_rounds", net_stats->rounds},
+                         {"rip_ups", net_stats->rips},
+                         {"attempts", net_stats->attempts},
+                         {"windows", net_stats->windows},
+                         {"whole_domain_windows", net_stats->whole},
+                         {"space_seconds", net_stats->space_seconds},
+                         {"path_seconds", net_stats->route_seconds}};
+    if (!args->stats.empty()) stats = j.dump(2) + "\n";
     if (!write_output(args->out, xml) || (!args->svg.empty() && !write_output(args->svg, svg)) ||
         (!args->stats.empty() && !write_output(args->stats, stats))) {
       status = kInvalid;
       return;
     }
     const std::size_t failed = layout->nets.size() - routed;
-    if (!args->load.quiet)
+    if (!args->load.quiet) {
+      // the short table on stderr: nets not routed first, the totals, the time of each phase
+      print_route_table(std::cerr, nlohmann::json::parse(j.dump()), 10);
+      char times[200];
+      std::snprintf(times, sizeof times, "time: prepare %.2f s, route %.2f s, output %.2f s", prepare_s, route_s, output_s);
+      std::cerr << times;
+      if (net_stats) {
+        std::snprintf(times, sizeof times, " (building spaces %.2f s, paths %.2f s; %lld windows, %d rip-up rounds, %lld rip-ups)",
+                      net_stats->space_seconds, net_stats->route_seconds, static_cast<long long>(net_stats->windows),
+                      net_stats->rounds, static_cast<long long>(net_stats->rips));
+        std::cerr << times;
+      }
+      std::cerr << '\n';
       std::cerr << args->file << ": routed " << routed << " of " << layout->nets.size() << " nets"
                 << (failed ? " (" + std::to_string(failed) + " not routed, see above)" : std::string())
                 << "; wrote " << args->out << '\n';
+    }
     status = failed ? kIncomplete : kOk;
     }();
     } catch (const router::NetRouterStopped&) {

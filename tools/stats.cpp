@@ -1,4 +1,6 @@
-// taut stats FILE [--json] [-o S.json]: wirelength and bend statistics of a (routed) layout.
+// taut stats FILE [--json] [-o S.json]: wirelength and bend statistics of a (routed) layout: a
+// table of the nets (those not routed first, with their reasons; at most 20 rows) and the
+// totals, or with --json the whole document (io/stats_json.h).
 #include <iostream>
 
 #include <nlohmann/json.hpp>
@@ -37,9 +39,8 @@ void add_stats(CLI::App& app, int& status) {
       const auto j = nlohmann::json::parse(doc);
       std::cout << args->file << ": " << j.value("blockages", 0) << " blockages ("
                 << j.value("blockage_vertices", 0) << " vertices), " << j.value("nets", 0)
-                << " nets, " << j.value("pins", 0) << " pins";
-      if (j.contains("totals")) std::cout << "; routes: " << j["totals"].dump();
-      std::cout << '\n';
+                << " nets, " << j.value("pins", 0) << " pins\n";
+      if (j.contains("routes")) print_route_table(std::cout, j, 20);
     }
     status = kOk;
   });

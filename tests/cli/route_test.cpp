@@ -254,6 +254,15 @@ TEST(Route, DemoTogetherKeepsTheRules) {
   const auto stats = nlohmann::json::parse(read_text(dir + "/s.json"));
   ASSERT_TRUE(stats.contains("net_router"));
   EXPECT_GE(stats["net_router"]["attempts"].get<int>(), 5);
+  EXPECT_EQ(stats["totals"]["completion"], 1.0);
+  for (const char* phase : {"prepare", "route", "output"}) EXPECT_TRUE(stats["route_seconds"].contains(phase)) << phase;
+  // the short table on stderr, and taut stats' table
+  EXPECT_NE(r.err.find("total: 5 of 5 nets routed (100.0 %), length 118800"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("time: prepare "), std::string::npos) << r.err;
+  const auto st = run_taut({"stats", dir + "/r.xml"});
+  EXPECT_EQ(st.status, 0);
+  EXPECT_NE(st.out.find("clk   routed       3"), std::string::npos) << st.out;
+  EXPECT_NE(st.out.find("total: 5 of 5 nets routed (100.0 %)"), std::string::npos) << st.out;
   const auto alone = run_taut({"route", kDemo, "--independent", "-q", "-o", dir + "/alone.xml"});
   ASSERT_EQ(alone.status, 0) << alone.err;
   EXPECT_EQ(run_taut({"check", dir + "/alone.xml", "-q"}).status, 1);
@@ -286,6 +295,24 @@ TEST(Route, GeneratedMultiPinLayoutsPassTheCheck) {
       }
     }
   EXPECT_GT(routed * 10, nets * 8) << routed << " of " << nets;
+  // a net not routed comes first in taut stats' table, with its reason
+  {
+    const std::string in = dir + "/tight.xml", out = dir + "/tight.routed.xml";
+    const std::string body = "  <boundary x0=\"0\" y0=\"0\" x1=\"100\" y1=\"100\"/>\n  <rules wire-width=\"4\" spacing=\"4\"/>\n"
+                             "  <blockage id=\"w1\"><rect x0=\"0\" y0=\"40\" x1=\"48\" y1=\"60\"/></blockage>\n"
+                             "  <blockage id=\"w2\"><rect x0=\"52\" y0=\"40\" x1=\"100\" y1=\"60\"/></blockage>\n"
+                             "  <net name=\"x\"><pin name=\"a\" x=\"50\" y=\"10\"/><pin name=\"b\" x=\"50\" y=\"90\"/></net>\n"
+                             "  <net name=\"y\"><pin name=\"a\" x=\"10\" y=\"10\"/><pin name=\"b\" x=\"20\" y=\"10\"/></net>\n";
+    write_text(in, "<layout name=\"t\" version=\"1\">\n" + body + "</layout>\n");
+    const auto r = run_taut({"route", in, "-o", out});
+    EXPECT_EQ(r.status, 1) << r.err;
+    EXPECT_NE(r.err.find("ROUTE-0010"), std::string::npos) << r.err;
+    const auto st = run_taut({"stats", out});
+    const auto first_row = st.out.find('\n', st.out.find("reason")) + 1;
+    EXPECT_EQ(st.out.substr(first_row, 1), "x") << st.out;
+    EXPECT_NE(st.out.find("the clearance of <rules> closes every way"), std::string::npos) << st.out;
+    EXPECT_NE(st.out.find("total: 1 of 2 nets routed (50.0 %)"), std::string::npos) << st.out;
+  }
   const auto bad = run_taut({"gen", "rects", "--pins", "1-3", "-o", dir + "/bad.xml"});
   EXPECT_EQ(bad.status, 2);
   EXPECT_NE(bad.err.find("CLI-0031"), std::string::npos) << bad.err;
