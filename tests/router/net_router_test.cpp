@@ -11,12 +11,15 @@
 #include <random>
 
 #include "geom/normalize.h"
+#include "io/layout_geometry.h"
+#include "io/movingai.h"
 #include "geom/predicates.h"
 #include "oracle/l1_oracle.h"
 #include "router/check.h"
 #include "router/l1_router.h"
 #include "router/net_router.h"
 #include "support/random_shapes.h"
+#include "support/run.h"
 #include "support/sanitized.h"
 
 namespace taut::test {
@@ -470,6 +473,78 @@ TEST(NetRouter, ProgressAndStop) {
   router::NetRouter ns(L.norm.domain, L.norm.obstacles, L.nets, L.rules, stop);
   EXPECT_THROW(ns.run(router::NetRouter::l1_router(false)), router::NetRouterStopped);
   EXPECT_EQ(asked, 3);
+}
+
+// Public maps nobody here drew (Moving AI grid maps, 10 DBU per cell: blocked cells touch and
+// pinch everywhere): arena whole and corners of maze-100-1 and 8room_000, 25 local nets of 2-4
+// pins at free cell centres 10 apart (within 8 cells of the net's first pin and joined to it among
+// the plain blockages), w = s = 2 (a = 3, b = 4: a corridor of one cell takes one wire). Every
+// routed net passes the checker, and most are routed (one layer: nets that must cross cannot).
+TEST(NetRouter, MovingAiMapsPassTheChecker) {
+  TAUT_REQUIRE_SHARED_DATA();
+  int routed = 0, nets = 0;
+  for (const char* name : {"arena", "maze-100-1", "8room_000"}) {
+    SCOPED_TRACE(name);
+    const auto r = io::load_movingai_map(shared_data_dir() + "/movingai/" + name + ".map", 10);
+    ASSERT_TRUE(r.layout && r.layout->boundary);
+    geom::Box box = r.layout->boundary->box;
+    box.hi = {std::min(box.hi.x, box.lo.x + 600), std::min(box.hi.y, box.lo.y + 600)};
+    const geom::NormalizedObstacles norm = geom::normalize_obstacles(io::blockage_polygons(*r.layout), box);
+    router::L1Router plain(norm.domain, norm.obstacles);
+    std::mt19937 rng(77);
+    std::vector<Point> used;
+    // a free cell centre (near `first`, within 8 cells and joined to it among the plain
+    // blockages, when given), 10 from every pin so far
+    auto centre = [&](std::optional<Point> first) -> std::optional<Point> {
+      for (int t = 0; t < 2000; ++t) {
+        Point p{static_cast<geom::Coord>(box.lo.x + 5 + 10 * static_cast<int>(rng() % static_cast<unsigned>((box.hi.x - box.lo.x) / 10))),
+                static_cast<geom::Coord>(box.lo.y + 5 + 10 * static_cast<int>(rng() % static_cast<unsigned>((box.hi.y - box.lo.y) / 10)))};
+        if (first)
+          p = {static_cast<geom::Coord>(first->x + 10 * (static_cast<int>(rng() % 17) - 8)),
+               static_cast<geom::Coord>(first->y + 10 * (static_cast<int>(rng() % 17) - 8))};
+        bool clash = false;
+        for (const Point q : used) clash = clash || (std::abs(p.x - q.x) < 10 && std::abs(p.y - q.y) < 10);
+        if (clash || !plain.is_free(p)) continue;
+        if (first && plain.shortest(*first, p).status != router::WireStatus::Ok) continue;
+        return p;
+      }
+      return std::nullopt;
+    };
+    std::vector<router::NetPins> ns;
+    for (int i = 0; i < 25; ++i) {
+      router::NetPins np;
+      np.name = "n" + std::to_string(i);
+      for (int k = 0, pins = 2 + static_cast<int>(rng() % 3); k < pins; ++k)
+        if (const auto p = centre(np.pins.empty() ? std::nullopt : std::optional<Point>(np.pins[0].outer[0]))) {
+          used.push_back(*p);
+          np.pins.push_back(Polygon{{*p}, {}});
+        }
+      if (np.pins.size() >= 2) ns.push_back(std::move(np));
+    }
+    router::NetRouter nr(norm.domain, norm.obstacles, ns, {2, 2});
+    nr.run(router::NetRouter::l1_router(false));
+    std::vector<router::CheckNet> cn;
+    for (std::size_t i = 0; i < ns.size(); ++i) {
+      router::CheckNet x;
+      x.name = ns[i].name;
+      for (const auto& g : ns[i].pins) x.pins.push_back({"p", g.outer[0], std::nullopt, 0});
+      x.routed = nr.outcomes()[i].routed;
+      for (const auto& w : nr.outcomes()[i].wires) x.wires.push_back({w, static_cast<int>(i)});
+      routed += x.routed;
+      ++nets;
+      cn.push_back(std::move(x));
+    }
+    std::map<std::string, int> codes;
+    for (const auto& o : nr.outcomes())
+      if (!o.routed) ++codes[o.code];
+    std::printf("%s:", name);
+    for (const auto& [c, k] : codes) std::printf(" %s %d", c.c_str(), k);
+    std::printf("\n");
+    const auto problems = router::check_routes(norm, cn, {2, 2}).problems;
+    EXPECT_TRUE(problems.empty()) << problems[0].message;
+  }
+  std::printf("Moving AI maps: %d of %d nets routed\n", routed, nets);
+  EXPECT_GT(routed * 2, nets);
 }
 
 // Rip-up: the short net "a" goes straight across the plane first and cuts "b"'s pin (10 above
