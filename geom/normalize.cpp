@@ -392,6 +392,11 @@ std::vector<Polygon> square_grown(std::span<const Polygon> polygons, Coord r) {
   return out;
 }
 
+Box grown_box(const Box& b, std::int64_t r) {
+  auto c = [](std::int64_t v) { return static_cast<Coord>(std::clamp<std::int64_t>(v, -kMaxCoord, kMaxCoord)); };
+  return {{c(std::int64_t{b.lo.x} - r), c(std::int64_t{b.lo.y} - r)}, {c(std::int64_t{b.hi.x} + r), c(std::int64_t{b.hi.y} + r)}};
+}
+
 Ring convex_hull(std::vector<Point> pts) {
   // monotone chain, exact
   std::sort(pts.begin(), pts.end());

@@ -95,6 +95,9 @@ NormalizedObstacles normalize_obstacles(std::span<const Polygon> inputs,
 // grown coordinate would pass kMaxCoord.
 std::vector<Polygon> square_grown(std::span<const Polygon> polygons, Coord r);
 
+// The box grown by r >= 0 on every side, clamped to the coordinate limit.
+Box grown_box(const Box& box, std::int64_t r);
+
 // The convex hull of the points: counter-clockwise from the lexicographically smallest, collinear
 // and repeated points dropped (exact; fewer than 3 points when they are collinear).
 Ring convex_hull(std::vector<Point> points);

@@ -26,6 +26,11 @@ std::vector<geom::Polygon> blockage_polygons(const Layout& layout,
   return out;
 }
 
+geom::Polygon pin_polygon(const Pin& pin) {
+  if (pin.point) return geom::Polygon{{*pin.point}, {}};
+  return shape_polygon(*pin.shape);
+}
+
 geom::Box routing_domain(const Layout& layout, std::span<const geom::Point> extra) {
   if (layout.boundary) return layout.boundary->box;
   bool any = false;

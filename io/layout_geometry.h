@@ -14,6 +14,10 @@ namespace taut::io {
 // A <rect> or <polygon> shape as a polygon (a rect becomes its 4 corners, counter-clockwise).
 geom::Polygon shape_polygon(const Shape& shape);
 
+// A pin as the routers take it: a point pin as an outer ring of that one point, a shape pin as
+// shape_polygon() of its shape.
+geom::Polygon pin_polygon(const Pin& pin);
+
 // Every blockage shape as a polygon, in file order; owner[i] is the index of the blockage that
 // polygon i belongs to (when owner is not null).
 std::vector<geom::Polygon> blockage_polygons(const Layout& layout,

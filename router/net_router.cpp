@@ -34,24 +34,6 @@ Box box_of(std::span<const Point> pts) {
   return b;
 }
 
-// Does the closed segment pq meet the interior of the convex counter-clockwise polygon c? By
-// separating lines (exact): none when pq lies on the outer closed side of an edge of c, or c on
-// one closed side of pq's line; the two convex sets' separating line can always be taken along
-// an edge of one of them.
-bool segment_enters(Point p, Point q, const Ring& c) {
-  for (std::size_t i = 0; i < c.size(); ++i) {
-    const Point a = c[i], b = c[(i + 1) % c.size()];
-    if (geom::orient(a, b, p) <= 0 && geom::orient(a, b, q) <= 0) return false;
-  }
-  if (p == q) return true;
-  bool pos = false, neg = false;
-  for (const Point v : c) {
-    const auto o = geom::orient(p, q, v);
-    pos = pos || o > 0;
-    neg = neg || o < 0;
-  }
-  return pos && neg;
-}
 
 // Calls f(p, q) for each segment of the polyline (one of length zero for a single point).
 template <class F>
@@ -59,8 +41,6 @@ void for_segments(std::span<const Point> line, F&& f) {
   if (line.size() == 1) f(line[0], line[0]);
   for (std::size_t i = 0; i + 1 < line.size(); ++i) f(line[i], line[i + 1]);
 }
-
-
 
 std::int64_t l1_length(const Lines& wires) {
   std::int64_t n = 0;
@@ -101,10 +81,13 @@ bool is_rectangle(const Polygon& p) {
 }
 
 // Do the interiors of two convex counter-clockwise polygons meet? Not when an edge line of one
-// has the other on its outer closed side (separating axes, exact).
+// has the other on its outer closed side (separating axes, exact: the separating line of two
+// convex sets can always be taken along an edge of one of them). Either may be a segment (two
+// points: its line, both ways) or a point (no line of its own).
 bool convex_interiors_meet(const Ring& a, const Ring& b) {
   for (const auto* r : {&a, &b}) {
     const Ring& o = r == &a ? b : a;
+    if (r->size() < 2) continue;
     for (std::size_t i = 0; i < r->size(); ++i) {
       const Point u = (*r)[i], v = (*r)[(i + 1) % r->size()];
       bool outside = true;
@@ -113,6 +96,11 @@ bool convex_interiors_meet(const Ring& a, const Ring& b) {
     }
   }
   return true;
+}
+
+// Does the closed segment pq (a point when p == q) meet the interior of the convex polygon c?
+bool segment_enters(Point p, Point q, const Ring& c) {
+  return convex_interiors_meet(p == q ? Ring{p} : Ring{p, q}, c);
 }
 
 }  // namespace
@@ -135,8 +123,8 @@ struct NetSpace::Index {
   // pieces it came from), and the blockages themselves, with their boxes in R-trees.
   struct Components {
     std::vector<Polygon> polys;
-    std::vector<std::vector<std::size_t>> sources;  // indices into pieces
-    std::vector<Box> boxes;
+    std::vector<std::vector<std::size_t>> sources;  // indices into pieces (grown only: the
+                                                    // plain level cuts nothing)
     bgi::rtree<Entry, bgi::rstar<16>> tree;
   };
   Components grown, plain;
@@ -147,10 +135,7 @@ namespace {
 // Boxes of the components and their R-tree.
 void index_components(NetSpace::Index::Components& c) {
   std::vector<NetSpace::Index::Entry> entries;
-  for (std::size_t i = 0; i < c.polys.size(); ++i) {
-    c.boxes.push_back(box_of(c.polys[i].outer));
-    entries.push_back({c.boxes.back(), i});
-  }
+  for (std::size_t i = 0; i < c.polys.size(); ++i) entries.push_back({box_of(c.polys[i].outer), i});
   c.tree = decltype(c.tree)(entries.begin(), entries.end());
 }
 
@@ -234,15 +219,14 @@ NetSpace& NetSpace::operator=(NetSpace&&) noexcept = default;
 
 NetSpace::NetSpace(const geom::Box& domain, std::span<const geom::Polygon> obstacles, std::vector<NetPins> nets,
                    NetRules rules)
-    : domain_(domain), blockages_(obstacles.begin(), obstacles.end()), nets_(std::move(nets)),
-      index_(std::make_unique<Index>()) {
+    : domain_(domain), nets_(std::move(nets)), index_(std::make_unique<Index>()) {
   if (rules.wire_width < 0 || rules.spacing < 0) throw std::invalid_argument("NetSpace: negative width or spacing");
   a_ = (rules.wire_width + 1) / 2 + rules.spacing;
   b_ = std::max<std::int64_t>(rules.wire_width + rules.spacing, 1);
   if (a_ > geom::kMaxCoord || b_ > geom::kMaxCoord) throw std::domain_error("the clearance of <rules> passes the coordinate limit");
   Index& ix = *index_;
-  for (std::size_t k = 0; k < blockages_.size(); ++k) {
-    const Polygon& poly = blockages_[k];
+  for (std::size_t k = 0; k < obstacles.size(); ++k) {
+    const Polygon& poly = obstacles[k];
     ix.pieces.push_back({poly, Index::Blockage, k});
     if (a_ == 0) continue;
     std::vector<const Ring*> rings{&poly.outer};
@@ -285,9 +269,7 @@ NetSpace::NetSpace(const geom::Box& domain, std::span<const geom::Polygon> obsta
     for (const std::size_t k : src) ix.grown.sources.back().push_back(input_piece[k]);
   }
   index_components(ix.grown);
-  ix.plain.polys = blockages_;
-  for (std::size_t i = 0; i < ix.pieces.size(); ++i)
-    if (ix.pieces[i].kind == Index::Blockage) ix.plain.sources.push_back({i});
+  ix.plain.polys.assign(obstacles.begin(), obstacles.end());
   index_components(ix.plain);
 }
 
@@ -315,7 +297,7 @@ geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel lev
   if (plain && dom == domain_) {  // the blockages as they are
     geom::NormalizedObstacles n;
     n.domain = domain_;
-    n.obstacles = blockages_;
+    n.obstacles = ix.plain.polys;
     return n;
   }
   // The other nets' pieces in the window (the dynamic part).
@@ -354,15 +336,14 @@ geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel lev
   // for its net (FORMAT.md), so a pad on a blockage's edge is reached from outside the grown
   // blockage; the wire keeps the clearance up to its end on the pad.
   std::vector<Box> access;
-  if (!plain)
-    for (const Polygon& pin : nets_[net].pins)
-      if (is_point_pin(pin)) {
-        const Point p = pin.outer[0];
-        access.push_back(Box{{static_cast<geom::Coord>(p.x - a_), static_cast<geom::Coord>(p.y - a_)},
-                             {static_cast<geom::Coord>(p.x + a_), static_cast<geom::Coord>(p.y + a_)}});
-      } else if (is_rectangle(pin)) {
+  if (!plain) {
+    for (const Polygon& pin : nets_[net].pins) {
+      if (is_point_pin(pin))
+        access.push_back(geom::grown_box(Box{pin.outer[0], pin.outer[0]}, a_));
+      else if (is_rectangle(pin))
         access.push_back(box_of(pin.outer));
-      }
+    }
+  }
   // The static components in the window: passed through as they are when they lie inside it and
   // meet nothing else; otherwise unioned again with the dynamic pieces (those an access square
   // meets from the pieces they came from, cut).
@@ -519,7 +500,6 @@ NetAttempt NetRouter::attempt(const NetRouteFn& route, std::size_t net, NetSpace
   const Box hp = pts.empty() ? dom : box_of(pts);
   const std::int64_t hpwl = (std::int64_t{hp.hi.x} - hp.lo.x) + (std::int64_t{hp.hi.y} - hp.lo.y);
   std::int64_t m = 2 * hpwl + 8 * (space_.blockage_clearance() + space_.net_clearance()) + 64;
-  auto clamp = [](std::int64_t v) { return static_cast<geom::Coord>(std::clamp<std::int64_t>(v, -geom::kMaxCoord, geom::kMaxCoord)); };
   // the net's rectangular shape pins (cut out of the grown blockages) that meet none of its
   // other pins (the wires over a pad are trimmed, and one that reaches another pin there must stay)
   std::vector<Box> pads;
@@ -533,7 +513,7 @@ NetAttempt NetRouter::attempt(const NetRouteFn& route, std::size_t net, NetSpace
   }
   while (true) {
     if (options_.stop && options_.stop()) throw NetRouterStopped();
-    Box w{{clamp(std::int64_t{hp.lo.x} - m), clamp(std::int64_t{hp.lo.y} - m)}, {clamp(std::int64_t{hp.hi.x} + m), clamp(std::int64_t{hp.hi.y} + m)}};
+    Box w = geom::grown_box(hp, m);
     w.lo.x = std::max(w.lo.x, dom.lo.x), w.lo.y = std::max(w.lo.y, dom.lo.y);
     w.hi.x = std::min(w.hi.x, dom.hi.x), w.hi.y = std::min(w.hi.y, dom.hi.y);
     if (!options_.windows) w = dom;

@@ -137,7 +137,6 @@ class NetSpace {
 
  private:
   geom::Box domain_;
-  std::vector<geom::Polygon> blockages_;
   std::vector<NetPins> nets_;
   std::int64_t a_ = 0, b_ = 1;
   std::unique_ptr<Index> index_;

@@ -215,7 +215,7 @@ bool write_output(const std::string& path, std::string_view bytes) {
   return true;
 }
 
-void print_route_table(std::ostream& os, const nlohmann::json& stats, std::size_t max_rows) {
+void print_route_table(std::ostream& os, const nlohmann::ordered_json& stats, std::size_t max_rows) {
   if (!stats.contains("routes")) return;
   struct Row {
     std::string net, status, length, bends, reason;

@@ -32,7 +32,7 @@ struct LoadOptions {
 // A short table of a layout statistics document (io::layout_stats_json) with "routes": the nets
 // not routed first (with their reasons), then routed ones, at most max_rows rows, then the totals
 // with the completion rate. For `taut stats` (stdout) and `taut route` (stderr).
-void print_route_table(std::ostream& os, const nlohmann::json& stats, std::size_t max_rows);
+void print_route_table(std::ostream& os, const nlohmann::ordered_json& stats, std::size_t max_rows);
 
 // Prints diagnostics to stderr in the CLI.md format. Returns the number of errors.
 int print_diagnostics(const std::vector<Diagnostic>& diagnostics, bool quiet = false);

@@ -92,16 +92,8 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router
   r.route.net = net.name;
   auto fail = [&](const char* code, std::string reason) { return failed(net, code, std::move(reason)); };
   if (auto few = too_few_pins(net)) return *few;
-  auto pin_geometry = [](const io::Pin& pin) {
-    geom::Polygon g;
-    if (pin.point)
-      g.outer = {*pin.point};
-    else
-      g = io::shape_polygon(*pin.shape);
-    return g;
-  };
   std::vector<geom::Polygon> geometry;
-  for (const io::Pin& pin : net.pins) geometry.push_back(pin_geometry(pin));
+  for (const io::Pin& pin : net.pins) geometry.push_back(io::pin_polygon(pin));
   for (std::size_t i = 0; i < net.pins.size(); ++i) {
     const io::Pin* pin = &net.pins[i];
     const geom::Polygon* g = &geometry[i];
@@ -227,9 +219,7 @@ NetResult route_net_bends(const io::Layout& layout, const io::Net& net, const Be
   if (auto few = too_few_pins(net)) return *few;
   std::vector<geom::Polygon> geometry;
   for (const io::Pin& pin : net.pins) {
-    geom::Polygon g;
-    if (pin.point) g.outer = {*pin.point};
-    else g = io::shape_polygon(*pin.shape);
+    geom::Polygon g = io::pin_polygon(pin);
     if (!router::pin_shape_supported(g))
       return fail("ROUTE-0005", "pin \"" + pin.name + "\" has a shape edge that is not horizontal, vertical or at 45 "
                                                    "degrees; such shape pins are not routed yet");
@@ -425,12 +415,7 @@ void add_route(CLI::App& app, int& status) {
         for (const io::Net& net : layout->nets) {
           router::NetPins np;
           np.name = net.name;
-          for (const io::Pin& pin : net.pins) {
-            geom::Polygon g;
-            if (pin.point) g.outer = {*pin.point};
-            else g = io::shape_polygon(*pin.shape);
-            np.pins.push_back(std::move(g));
-          }
+          for (const io::Pin& pin : net.pins) np.pins.push_back(io::pin_polygon(pin));
           pins.push_back(std::move(np));
         }
         router::NetRules rules;
@@ -438,9 +423,7 @@ void add_route(CLI::App& app, int& status) {
         geom::NormalizedObstacles space = norm;
         if (!layout->boundary) {  // room to go round a grown blockage in the unbounded plane
           const std::int64_t grow = (rules.wire_width + 1) / 2 + rules.spacing + std::max<std::int64_t>(rules.wire_width + rules.spacing, 1);
-          auto clamp = [](std::int64_t v) { return static_cast<geom::Coord>(std::clamp<std::int64_t>(v, -geom::kMaxCoord, geom::kMaxCoord)); };
-          space.domain = {{clamp(std::int64_t{norm.domain.lo.x} - grow), clamp(std::int64_t{norm.domain.lo.y} - grow)},
-                          {clamp(std::int64_t{norm.domain.hi.x} + grow), clamp(std::int64_t{norm.domain.hi.y} + grow)}};
+          space.domain = geom::grown_box(norm.domain, grow);
         }
         std::vector<bool> steiner_ok(layout->nets.size());
         for (std::size_t i = 0; i < layout->nets.size(); ++i) {
@@ -630,7 +613,7 @@ void add_route(CLI::App& app, int& status) {
     const std::size_t failed = layout->nets.size() - routed;
     if (!args->load.quiet) {
       // the short table on stderr: nets not routed first, the totals, the time of each phase
-      print_route_table(std::cerr, nlohmann::json::parse(j.dump()), 10);
+      print_route_table(std::cerr, j, 10);
       char times[200];
       std::snprintf(times, sizeof times, "time: prepare %.2f s, route %.2f s, output %.2f s", prepare_s, route_s, output_s);
       std::cerr << times;

@@ -36,7 +36,7 @@ void add_stats(CLI::App& app, int& status) {
     if (args->json) {
       std::cout << doc;
     } else {
-      const auto j = nlohmann::json::parse(doc);
+      const auto j = nlohmann::ordered_json::parse(doc);
       std::cout << args->file << ": " << j.value("blockages", 0) << " blockages ("
                 << j.value("blockage_vertices", 0) << " vertices), " << j.value("nets", 0)
                 << " nets, " << j.value("pins", 0) << " pins\n";

@@ -154,9 +154,7 @@ void add_tighten(CLI::App& app, int& status) {
     if (grow > 0) {
       geom::Box domain = io::routing_domain(*layout, extra);
       if (!layout->boundary) {  // room to go round a grown blockage in the unbounded plane
-        auto clamp = [](std::int64_t v) { return static_cast<geom::Coord>(std::clamp<std::int64_t>(v, -geom::kMaxCoord, geom::kMaxCoord)); };
-        domain = {{clamp(std::int64_t{domain.lo.x} - grow), clamp(std::int64_t{domain.lo.y} - grow)},
-                  {clamp(std::int64_t{domain.hi.x} + grow), clamp(std::int64_t{domain.hi.y} + grow)}};
+        domain = geom::grown_box(domain, grow);
       }
       try {
         norm = geom::normalize_obstacles(

@@ -165,13 +165,14 @@ RandomLayout random_layout(int seed) {
   return L;
 }
 
-std::vector<router::CheckNet> check_nets(const RandomLayout& L, const router::NetRouter& nr) {
+// The nets and the router's outcomes as the checker takes them (a wire's line: its net's index).
+std::vector<router::CheckNet> check_nets(std::span<const router::NetPins> ns, const router::NetRouter& nr) {
   std::vector<router::CheckNet> nets;
-  for (std::size_t i = 0; i < L.nets.size(); ++i) {
+  for (std::size_t i = 0; i < ns.size(); ++i) {
     router::CheckNet cn;
-    cn.name = L.nets[i].name;
-    for (std::size_t j = 0; j < L.nets[i].pins.size(); ++j) {
-      const Polygon& g = L.nets[i].pins[j];
+    cn.name = ns[i].name;
+    for (std::size_t j = 0; j < ns[i].pins.size(); ++j) {
+      const Polygon& g = ns[i].pins[j];
       if (g.outer.size() == 1)
         cn.pins.push_back({"p" + std::to_string(j), g.outer[0], std::nullopt, 0});
       else
@@ -183,6 +184,14 @@ std::vector<router::CheckNet> check_nets(const RandomLayout& L, const router::Ne
     nets.push_back(std::move(cn));
   }
   return nets;
+}
+
+// The L1 length of an outcome's wires.
+std::int64_t l1_len(const router::NetOutcome& o) {
+  std::int64_t n = 0;
+  for (const auto& w : o.wires)
+    for (std::size_t i = 1; i < w.size(); ++i) n += std::abs(w[i].x - w[i - 1].x) + std::abs(w[i].y - w[i - 1].y);
+  return n;
 }
 
 TEST(NetRouter, EveryRoutedNetPassesTheChecker) {
@@ -205,7 +214,7 @@ TEST(NetRouter, EveryRoutedNetPassesTheChecker) {
     router::CheckRules rules;
     rules.wire_width = L.rules.wire_width;
     rules.spacing = L.rules.spacing;
-    const router::CheckResult r = router::check_routes(L.norm, check_nets(L, nr), rules);
+    const router::CheckResult r = router::check_routes(L.norm, check_nets(L.nets, nr), rules);
     for (const auto& p : r.problems)
       if (failed++ < 8) ADD_FAILURE() << at << ": " << p.message;
     nets += static_cast<std::int64_t>(L.nets.size());
@@ -257,9 +266,7 @@ TEST(NetRouter, ANetAloneWithoutRulesIsShortest) {
       continue;
     }
     if (!o.routed) continue;
-    std::int64_t len = 0;
-    for (const auto& w : o.wires)
-      for (std::size_t i = 1; i < w.size(); ++i) len += std::abs(w[i].x - w[i - 1].x) + std::abs(w[i].y - w[i - 1].y);
+    const std::int64_t len = l1_len(o);
     ++compared;
     if (len != *d && failed++ < 5) ADD_FAILURE() << "seed " << 800000 + seed << ": length " << len << ", reference " << *d;
   }
@@ -304,12 +311,7 @@ TEST(NetRouter, WindowsGiveTheWholeLayoutsLengths) {
     widened += win.stats().windows > win.stats().attempts;
     const auto& a = win.outcomes()[0];
     const auto& b = whole.outcomes()[0];
-    auto len = [](const router::NetOutcome& o) {
-      std::int64_t n = 0;
-      for (const auto& w : o.wires)
-        for (std::size_t i = 1; i < w.size(); ++i) n += std::abs(w[i].x - w[i - 1].x) + std::abs(w[i].y - w[i - 1].y);
-      return n;
-    };
+    const auto len = l1_len;
     if (a.routed != b.routed || (a.routed && len(a) != len(b))) {
       if (failed++ < 5)
         ADD_FAILURE() << "seed " << 900000 + seed << ": window " << a.routed << " " << len(a) << ", whole " << b.routed << " " << len(b);
@@ -327,16 +329,7 @@ TEST(NetRouter, WindowsGiveTheWholeLayoutsLengths) {
     }
     router::NetRouter nr(norm.domain, norm.obstacles, many, rules);
     nr.run(router::NetRouter::l1_router(seed % 2 == 0));
-    std::vector<router::CheckNet> cn;
-    for (std::size_t i = 0; i < many.size(); ++i) {
-      router::CheckNet x;
-      x.name = many[i].name;
-      for (const auto& p : many[i].pins) x.pins.push_back({"p", p.outer[0], std::nullopt, 0});
-      x.routed = nr.outcomes()[i].routed;
-      for (const auto& w : nr.outcomes()[i].wires) x.wires.push_back({w, static_cast<int>(i)});
-      cn.push_back(std::move(x));
-    }
-    for (const auto& p : router::check_routes(norm, cn, {rules.wire_width, rules.spacing}).problems)
+    for (const auto& p : router::check_routes(norm, check_nets(many, nr), {rules.wire_width, rules.spacing}).problems)
       if (failed++ < 5) ADD_FAILURE() << "seed " << 900000 + seed << ": " << p.message;
   }
   std::printf("%d nets alone compared, %d needed a wider window\n", compared, widened);
@@ -356,12 +349,7 @@ TEST(NetRouter, WindowsGiveTheWholeLayoutsLengths) {
   whole.run(router::NetRouter::l1_router(false));
   ASSERT_TRUE(win.outcomes()[0].routed && whole.outcomes()[0].routed);
   EXPECT_GT(win.stats().windows, win.stats().attempts);
-  auto len = [](const router::NetOutcome& o) {
-    std::int64_t n = 0;
-    for (const auto& w : o.wires)
-      for (std::size_t i = 1; i < w.size(); ++i) n += std::abs(w[i].x - w[i - 1].x) + std::abs(w[i].y - w[i - 1].y);
-    return n;
-  };
+  const auto len = l1_len;
   EXPECT_EQ(len(win.outcomes()[0]), len(whole.outcomes()[0]));
   EXPECT_EQ(len(whole.outcomes()[0]), 20 + 2 * (2000 - 200 + 2));  // round the wall's end, a = 2 clear of it
   // a pin shut in a ring of blockage, far from the domain's sides: unrouted in its first window
@@ -435,15 +423,7 @@ TEST(NetRouter, ReviewCases) {
     nr.run(router::NetRouter::l1_router(false));
     EXPECT_TRUE(nr.outcomes()[0].routed) << nr.outcomes()[0].code << " " << nr.outcomes()[0].reason;
     EXPECT_TRUE(nr.outcomes()[1].routed) << nr.outcomes()[1].code << " " << nr.outcomes()[1].reason;
-    std::vector<router::CheckNet> cn(2);
-    for (int i = 0; i < 2; ++i) {
-      cn[i].name = nets[i].name;
-      cn[i].routed = nr.outcomes()[i].routed;
-      for (const auto& g : nets[i].pins)
-        cn[i].pins.push_back(g.outer.size() == 1 ? router::CheckPin{"p", g.outer[0], std::nullopt, 0} : router::CheckPin{"p", std::nullopt, g, 0});
-      for (const auto& w : nr.outcomes()[i].wires) cn[i].wires.push_back({w, 0});
-    }
-    EXPECT_TRUE(router::check_routes(norm, cn, {2, 2}).problems.empty());
+    EXPECT_TRUE(router::check_routes(norm, check_nets(nets, nr), {2, 2}).problems.empty());
     const std::size_t first = nr.stats().first_pass;
     nr.run(router::NetRouter::l1_router(false));
     EXPECT_EQ(nr.stats().first_pass, first);
@@ -523,17 +503,9 @@ TEST(NetRouter, MovingAiMapsPassTheChecker) {
     }
     router::NetRouter nr(norm.domain, norm.obstacles, ns, {2, 2});
     nr.run(router::NetRouter::l1_router(false));
-    std::vector<router::CheckNet> cn;
-    for (std::size_t i = 0; i < ns.size(); ++i) {
-      router::CheckNet x;
-      x.name = ns[i].name;
-      for (const auto& g : ns[i].pins) x.pins.push_back({"p", g.outer[0], std::nullopt, 0});
-      x.routed = nr.outcomes()[i].routed;
-      for (const auto& w : nr.outcomes()[i].wires) x.wires.push_back({w, static_cast<int>(i)});
-      routed += x.routed;
-      ++nets;
-      cn.push_back(std::move(x));
-    }
+    const std::vector<router::CheckNet> cn = check_nets(ns, nr);
+    for (const auto& x : cn) routed += x.routed;
+    nets += static_cast<int>(cn.size());
     std::map<std::string, int> codes;
     for (const auto& o : nr.outcomes())
       if (!o.routed) ++codes[o.code];
@@ -564,15 +536,8 @@ TEST(NetRouter, RipUpLetsACutOffNetThrough) {
   ASSERT_TRUE(nr.outcomes()[1].routed);
   EXPECT_EQ(nr.outcomes()[0].rips, 1);
   EXPECT_GE(nr.stats().rips, 1);
-  std::vector<router::CheckNet> cn(2);
-  for (int i = 0; i < 2; ++i) {
-    cn[i].name = nets[i].name;
-    cn[i].routed = true;
-    for (const auto& p : nets[i].pins) cn[i].pins.push_back({"p", p.outer[0], std::nullopt, 0});
-    for (const auto& w : nr.outcomes()[i].wires) cn[i].wires.push_back({w, 0});
-  }
   const geom::NormalizedObstacles none = geom::normalize_obstacles({}, domain);
-  EXPECT_TRUE(router::check_routes(none, cn, {2, 2}).problems.empty());
+  EXPECT_TRUE(router::check_routes(none, check_nets(nets, nr), {2, 2}).problems.empty());
   // b is the straight drop; a climbs over b's upper pin: above y = 10 + w + s
   EXPECT_EQ(nr.outcomes()[1].wires, (std::vector<std::vector<Point>>{{{50, 10}, {50, -100}}}));
   int top = 0;
@@ -580,7 +545,9 @@ TEST(NetRouter, RipUpLetsACutOffNetThrough) {
     for (const Point p : w) top = std::max<int>(top, p.y);
   EXPECT_GE(top, 14);
   // with no rip-up allowed, b stays unrouted, blocked by a's wire
-  router::NetRouter stuck(domain, {}, nets, {2, 2}, router::NetRouterOptions{0, 20});
+  router::NetRouterOptions no_rips;
+  no_rips.max_rips = 0;
+  router::NetRouter stuck(domain, {}, nets, {2, 2}, no_rips);
   stuck.run(router::NetRouter::l1_router(false));
   EXPECT_TRUE(stuck.outcomes()[0].routed);
   EXPECT_FALSE(stuck.outcomes()[1].routed);
