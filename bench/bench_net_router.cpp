@@ -5,9 +5,16 @@
 // lower bound for what each net gets: routing among others only lengthens it), rip-ups, time and
 // its ratio to the baseline, and how time grows with m (exponent between rows).
 //
-//   bench_net_router [--sizes N,..] [--nets M,..]    (--sizes: blockage vertices)
+// With --threads T,..: each row is also routed with T threads (NetRouterOptions::threads), its
+// time given as a ratio to the one-thread run of the row, and the outcomes compared with it (they
+// must be the same: the run fails otherwise).
+//
+// --rounds R sets NetRouterOptions::max_rounds (0: the first pass only).
+//
+//   bench_net_router [--sizes N,..] [--nets M,..] [--threads T,..] [--rounds R]    (--sizes: blockage vertices)
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <random>
 #include <map>
@@ -29,12 +36,15 @@ using taut::geom::Polygon;
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::int64_t> sizes = {1000}, net_counts = {10, 30, 100};
+  std::vector<std::int64_t> sizes = {1000}, net_counts = {10, 30, 100}, thread_counts;
+  int rounds = taut::router::NetRouterOptions{}.max_rounds;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--sizes") && i + 1 < argc) sizes = taut::bench::parse_list(argv[++i]);
     else if (!std::strcmp(argv[i], "--nets") && i + 1 < argc) net_counts = taut::bench::parse_list(argv[++i]);
+    else if (!std::strcmp(argv[i], "--threads") && i + 1 < argc) thread_counts = taut::bench::parse_list(argv[++i]);
+    else if (!std::strcmp(argv[i], "--rounds") && i + 1 < argc) rounds = std::atoi(argv[++i]);
     else {
-      std::fprintf(stderr, "usage: %s [--sizes N,..] [--nets M,..]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--sizes N,..] [--nets M,..] [--threads T,..] [--rounds R]\n", argv[0]);
       return 2;
     }
   }
@@ -109,7 +119,9 @@ int main(int argc, char** argv) {
           alone_ok += alone_len[i] >= 0;
         }
       }, 1);
-      taut::router::NetRouter nr(dom, lay.norm.obstacles, nets, {10, 10});
+      taut::router::NetRouterOptions one;
+      one.max_rounds = rounds;
+      taut::router::NetRouter nr(dom, lay.norm.obstacles, nets, {10, 10}, one);
       const double together_s = taut::bench::seconds_of([&] { nr.run(taut::router::NetRouter::l1_router(false)); }, 1);
       std::size_t routed = 0;
       std::int64_t len = 0, len_alone_same = 0;
@@ -134,6 +146,25 @@ int main(int argc, char** argv) {
       std::printf("%18s nets tried %lld times in %lld windows (%lld whole): building spaces %.3f s, paths %.3f s\n", "",
                   static_cast<long long>(nr.stats().attempts), static_cast<long long>(nr.stats().windows),
                   static_cast<long long>(nr.stats().whole), nr.stats().space_seconds, nr.stats().route_seconds);
+      for (const std::int64_t t : thread_counts) {
+        taut::router::NetRouterOptions opt;
+        opt.threads = static_cast<int>(t);
+        opt.max_rounds = rounds;
+        taut::router::NetRouter par(dom, lay.norm.obstacles, nets, {10, 10}, opt);
+        const double par_s = taut::bench::seconds_of([&] { par.run(taut::router::NetRouter::l1_router(false)); }, 1);
+        bool same = true;
+        for (std::size_t i = 0; i < nets.size(); ++i) {
+          const auto &x = nr.outcomes()[i], &y = par.outcomes()[i];
+          same = same && x.routed == y.routed && x.wires == y.wires && x.code == y.code && x.reason == y.reason &&
+                 x.blockers == y.blockers && x.rips == y.rips;
+        }
+        std::printf("%18s %lld threads: %.3f s, %.2f x one thread's time; %lld of %lld speculative attempts redone; "
+                    "building spaces %.3f s, paths %.3f s (kept attempts, summed over threads); outcomes %s\n", "",
+                    static_cast<long long>(t), par_s, par_s / together_s, static_cast<long long>(par.stats().redone),
+                    static_cast<long long>(par.stats().speculated), par.stats().space_seconds, par.stats().route_seconds,
+                    same ? "the same" : "DIFFERENT");
+        if (!same) return 1;
+      }
       std::fflush(stdout);
       last_t = together_s, last_m = static_cast<double>(nets.size());
     }

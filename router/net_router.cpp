@@ -1,12 +1,18 @@
 #include "router/net_router.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <condition_variable>
+#include <exception>
 #include <limits>
 #include <map>
 #include <numeric>
+#include <mutex>
 #include <set>
+#include <shared_mutex>
 #include <stdexcept>
+#include <thread>
 #include <utility>
 
 #include "geom/bg.h"
@@ -114,11 +120,15 @@ struct NetSpace::Index {
   };
   using Entry = std::pair<Box, std::size_t>;
   std::vector<Piece> pieces;
-  bgi::rtree<Entry, bgi::rstar<16>> tree;
+  bgi::rtree<Entry, bgi::rstar<16>> tree;  // the pin pieces only
   // wires: per net its grown segments; the R-tree holds (box, (net, index))
   std::vector<std::vector<Ring>> wire_pieces;
   using WireEntry = std::pair<Box, std::pair<std::size_t, std::size_t>>;
   bgi::rtree<WireEntry, bgi::rstar<16>> wire_tree;
+  // and the union of each net's grown segments (clipped to the domain), which the other nets are
+  // routed among: fewer, larger pieces than the segments, without their overlaps at the bends
+  std::vector<std::vector<Polygon>> wire_union;
+  bgi::rtree<WireEntry, bgi::rstar<16>> union_tree;
   // The union of the blockages and their grown edges, once (its components, each with the
   // pieces it came from), and the blockages themselves, with their boxes in R-trees.
   struct Components {
@@ -250,10 +260,13 @@ NetSpace::NetSpace(const geom::Box& domain, std::span<const geom::Polygon> obsta
           ix.pieces.push_back({Polygon{grown_segment((*r)[i], (*r)[(i + 1) % r->size()], std::max<std::int64_t>(a_, 1)), {}},
                                Index::GrownPin, n});
     }
-  std::vector<Index::Entry> entries;
-  for (std::size_t i = 0; i < ix.pieces.size(); ++i) entries.push_back({box_of(ix.pieces[i].poly.outer), i});
+  std::vector<Index::Entry> entries;  // the pins' pieces (the blockages' are found through the components)
+  for (std::size_t i = 0; i < ix.pieces.size(); ++i)
+    if (ix.pieces[i].kind == Index::GrownPin || ix.pieces[i].kind == Index::ShapePin)
+      entries.push_back({box_of(ix.pieces[i].poly.outer), i});
   ix.tree = decltype(ix.tree)(entries.begin(), entries.end());
   ix.wire_pieces.resize(nets_.size());
+  ix.wire_union.resize(nets_.size());
   // the grown blockages' union, once; and the blockages as they are
   std::vector<Polygon> inputs;
   std::vector<std::size_t> input_piece;
@@ -277,13 +290,22 @@ void NetSpace::set_wires(std::size_t net, const Lines& wires) {
   Index& ix = *index_;
   for (std::size_t k = 0; k < ix.wire_pieces[net].size(); ++k)
     ix.wire_tree.remove(Index::WireEntry{box_of(ix.wire_pieces[net][k]), {net, k}});
+  for (std::size_t k = 0; k < ix.wire_union[net].size(); ++k)
+    ix.union_tree.remove(Index::WireEntry{box_of(ix.wire_union[net][k].outer), {net, k}});
   ix.wire_pieces[net].clear();
+  ix.wire_union[net].clear();
+  std::vector<Polygon> grown;
   for (const auto& w : wires)
     for_segments(w, [&](Point p, Point q) {
       Ring g = grown_segment(p, q, b_);
       ix.wire_tree.insert(Index::WireEntry{box_of(g), {net, ix.wire_pieces[net].size()}});
+      grown.push_back(Polygon{g, {}});
       ix.wire_pieces[net].push_back(std::move(g));
     });
+  if (grown.empty()) return;
+  ix.wire_union[net] = geom::normalize_obstacles(grown, domain_).obstacles;
+  for (std::size_t k = 0; k < ix.wire_union[net].size(); ++k)
+    ix.union_tree.insert(Index::WireEntry{box_of(ix.wire_union[net][k].outer), {net, k}});
 }
 
 geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel level, std::optional<geom::Box> window) const {
@@ -317,11 +339,11 @@ geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel lev
   }
   if (level == NetSpaceLevel::Full) {
     std::vector<Index::WireEntry> wf;
-    ix.wire_tree.query(bgi::intersects(dom), std::back_inserter(wf));
+    ix.union_tree.query(bgi::intersects(dom), std::back_inserter(wf));
     std::sort(wf.begin(), wf.end(), [](const Index::WireEntry& x, const Index::WireEntry& y) { return x.second < y.second; });
     for (const auto& [box, id] : wf)
       if (id.first != net) {
-        dynamic.push_back(Polygon{ix.wire_pieces[id.first][id.second], {}});
+        dynamic.push_back(ix.wire_union[id.first][id.second]);
         dynamic_boxes.push_back(box);
       }
   }
@@ -413,6 +435,12 @@ std::vector<std::size_t> NetSpace::wire_blockers(std::size_t net, std::span<cons
   return {out.begin(), out.end()};
 }
 
+std::vector<Box> NetSpace::wire_boxes(std::size_t net) const {
+  std::vector<Box> out;
+  for (const Polygon& p : index_->wire_union[net]) out.push_back(box_of(p.outer));
+  return out;
+}
+
 std::vector<std::size_t> NetSpace::pad_blockers(std::size_t net) const {
   const Index& ix = *index_;
   std::set<std::size_t> out;
@@ -490,16 +518,86 @@ bool apart_in_window(const geom::NormalizedObstacles& obs, const NetPins& pins, 
 
 }  // namespace
 
+namespace {
+
+// Adds the counts of one attempt (or explanation) to the run's.
+void add_counts(NetRouterStats& to, const NetRouterStats& c) {
+  to.attempts += c.attempts;
+  to.windows += c.windows;
+  to.whole += c.whole;
+  to.space_seconds += c.space_seconds;
+  to.route_seconds += c.route_seconds;
+}
+
+// Calls f(k) for k in [0, n) on up to `threads` threads (the caller's one of them); the first
+// exception thrown is rethrown here after every thread is done.
+template <class F>
+void parallel_for(std::size_t n, int threads, F&& f) {
+  std::atomic<std::size_t> next{0};
+  std::exception_ptr error;
+  std::atomic<bool> failed{false};
+  auto work = [&] {
+    for (std::size_t k; !failed.load() && (k = next.fetch_add(1)) < n;) {
+      try {
+        f(k);
+      } catch (...) {
+        if (!failed.exchange(true)) error = std::current_exception();
+      }
+    }
+  };
+  {
+    std::vector<std::jthread> pool;
+    const std::size_t extra = std::min<std::size_t>(n, static_cast<std::size_t>(std::max(threads, 1))) - (n > 0);
+    for (std::size_t t = 0; t < extra; ++t) pool.emplace_back(work);
+    work();
+  }
+  if (error) std::rethrow_exception(error);
+}
+
+}  // namespace
+
 NetAttempt NetRouter::attempt(const NetRouteFn& route, std::size_t net, NetSpaceLevel level) {
+  Tried t = try_net(route, net, level);
+  add_counts(stats_, t.counts);
+  return std::move(t.a);
+}
+
+namespace {
+
+// The margin of a net's first window round its pins' box hp. Two point pins: half the
+// half-perimeter (the proof then keeps any wire up to twice its lower bound, which most are);
+// other nets twice it (a tree's proof needs its whole length inside the margin).
+std::int64_t first_margin(const NetPins& pins, const Box& hp, std::int64_t a, std::int64_t b) {
+  const std::int64_t hpwl = (std::int64_t{hp.hi.x} - hp.lo.x) + (std::int64_t{hp.hi.y} - hp.lo.y);
+  const bool two_points = pins.pins.size() == 2 && is_point_pin(pins.pins[0]) && is_point_pin(pins.pins[1]);
+  return two_points ? hpwl / 2 + 4 * (a + b) + 32 : 2 * hpwl + 8 * (a + b) + 64;
+}
+
+}  // namespace
+
+Box NetRouter::first_window(std::size_t net) const {
+  std::vector<Point> pts;
+  for (const Polygon& pin : space_.net(net).pins) pts.insert(pts.end(), pin.outer.begin(), pin.outer.end());
+  const Box& dom = space_.domain();
+  if (pts.empty() || !options_.windows) return dom;
+  const Box hp = box_of(pts);
+  Box w = geom::grown_box(hp, first_margin(space_.net(net), hp, space_.blockage_clearance(), space_.net_clearance()));
+  w.lo.x = std::max(w.lo.x, dom.lo.x), w.lo.y = std::max(w.lo.y, dom.lo.y);
+  w.hi.x = std::min(w.hi.x, dom.hi.x), w.hi.y = std::min(w.hi.y, dom.hi.y);
+  return w;
+}
+
+NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, NetSpaceLevel level) const {
   using Clock = std::chrono::steady_clock;
-  ++stats_.attempts;
+  Tried t;
+  NetRouterStats& st = t.counts;
+  ++st.attempts;
   const NetPins& pins = space_.net(net);
   std::vector<Point> pts;
   for (const Polygon& pin : pins.pins) pts.insert(pts.end(), pin.outer.begin(), pin.outer.end());
   const Box& dom = space_.domain();
   const Box hp = pts.empty() ? dom : box_of(pts);
-  const std::int64_t hpwl = (std::int64_t{hp.hi.x} - hp.lo.x) + (std::int64_t{hp.hi.y} - hp.lo.y);
-  std::int64_t m = 2 * hpwl + 8 * (space_.blockage_clearance() + space_.net_clearance()) + 64;
+  std::int64_t m = first_margin(pins, hp, space_.blockage_clearance(), space_.net_clearance());  // as first_window()
   // the net's rectangular shape pins (cut out of the grown blockages) that meet none of its
   // other pins (the wires over a pad are trimmed, and one that reaches another pin there must stay)
   std::vector<Box> pads;
@@ -519,16 +617,24 @@ NetAttempt NetRouter::attempt(const NetRouteFn& route, std::size_t net, NetSpace
     if (!options_.windows) w = dom;
     const bool whole = w == dom;
     const auto t0 = Clock::now();
-    const geom::NormalizedObstacles obs = space_.obstacles(net, level, whole ? std::nullopt : std::optional<Box>(w));
+    geom::NormalizedObstacles obs;
+    {
+      // the space may be read by several threads at once, and is changed only by place()
+      std::shared_lock lock(space_mutex_);
+      if (st.windows == 0) t.since = changed_.size();
+      obs = space_.obstacles(net, level, whole ? std::nullopt : std::optional<Box>(w));
+    }
     const auto t1 = Clock::now();
-    NetAttempt a = route(net, pins, obs);
+    t.window = w;
+    NetAttempt& a = t.a;
+    a = route(net, pins, obs);
     if (a.routed && level != NetSpaceLevel::Plain) a.wires = trim_at_pads(a.wires, pads);
     const auto t2 = Clock::now();
-    stats_.space_seconds += std::chrono::duration<double>(t1 - t0).count();
-    stats_.route_seconds += std::chrono::duration<double>(t2 - t1).count();
-    ++stats_.windows;
-    stats_.whole += whole;
-    if (whole) return a;
+    st.space_seconds += std::chrono::duration<double>(t1 - t0).count();
+    st.route_seconds += std::chrono::duration<double>(t2 - t1).count();
+    ++st.windows;
+    st.whole += whole;
+    if (whole) return t;
     // the least distance from box b to a side of the window that lies inside the domain
     auto inner = [&](const Box& b) {
       std::int64_t d = std::numeric_limits<std::int64_t>::max();
@@ -571,21 +677,200 @@ NetAttempt NetRouter::attempt(const NetRouteFn& route, std::size_t net, NetSpace
         for (const auto& wire : a.wires) all.insert(all.end(), wire.begin(), wire.end());
         proven = len < inner(box_of(all)) - 2;
       }
-      if (proven) return a;
+      if (proven) return t;
       m = std::max(4 * m, len + 3);
     } else if (a.code == "ROUTE-0002") {  // unreachable: a larger window may hold a way round,
-      if (apart_in_window(obs, pins, w)) return a;  // unless a pin is shut in inside this one
+      if (apart_in_window(obs, pins, w)) return t;  // unless a pin is shut in inside this one
       m *= 4;
     } else {  // a pin that is not free, or no staircase: decided near the pins, in any window
-      return a;
+      return t;
     }
   }
 }
 
+void NetRouter::place(std::size_t i, NetAttempt a) {
+  const bool track = options_.threads > 1;
+  std::unique_lock lock(space_mutex_, std::defer_lock);
+  if (track) lock.lock();
+  if (track)
+    for (const Box& b : space_.wire_boxes(i)) changed_.push_back({b, i});
+  out_[i].routed = a.routed;
+  out_[i].wires = a.routed ? std::move(a.wires) : Lines{};
+  out_[i].code = a.routed ? std::string() : std::move(a.code);
+  out_[i].reason = a.routed ? std::string() : std::move(a.reason);
+  space_.set_wires(i, out_[i].wires);
+  if (track)
+    for (const Box& b : space_.wire_boxes(i)) changed_.push_back({b, i});
+}
+
+const NetAttempt& NetRouter::alone(const NetRouteFn& route, std::size_t net) {
+  if (!alone_[net]) {
+    Tried t = try_net(route, net, NetSpaceLevel::Pins);
+    add_counts(stats_, t.counts);
+    alone_[net] = std::move(t.a);
+  }
+  return *alone_[net];
+}
+
+namespace {
+
+// Does a wire piece placed or removed since entry `since` of the log `changed`, of a net other
+// than `net`, meet window w (closed boxes, as the R-tree queries of NetSpace::obstacles meet them)?
+bool changed_in(std::span<const std::pair<Box, std::size_t>> changed, std::size_t since, const Box& w, std::size_t net) {
+  for (std::size_t k = since; k < changed.size(); ++k)
+    if (changed[k].second != net && boxes_meet(changed[k].first, w)) return true;
+  return false;
+}
+
+}  // namespace
+
+void NetRouter::route_in_order(const NetRouteFn& route, std::span<const std::size_t> nets,
+                               const std::function<void(std::size_t)>& after) {
+  const int threads = std::max(options_.threads, 1);
+  if (threads == 1) {
+    for (const std::size_t i : nets) {
+      place(i, attempt(route, i, NetSpaceLevel::Full));
+      after(i);
+    }
+    return;
+  }
+  // A pipeline: `threads` workers try nets not placed yet that have no attempt (among the next
+  // `ahead`, the earliest first) against the space as it is then; this thread places them in
+  // order, each when its attempt is valid: no wire piece placed or removed since the attempt
+  // first read the space meets the windows it was tried in (it depends on nothing else). An
+  // attempt found invalid is tried again (by then against a space that has caught up). Workers
+  // take a net early only when no net before it still to be placed is likely to change its first
+  // window: the wires of one already tried, or the first window of one not tried yet (grown by
+  // b), meet it. So few attempts are wasted; the next net to place is always free to take.
+  const std::size_t n = nets.size(), ahead = 16 * static_cast<std::size_t>(threads);
+  std::vector<Box> first(n), reach(n);  // first windows; the same grown by b (where their wires' pieces lie)
+  for (std::size_t k = 0; k < n; ++k) {
+    first[k] = first_window(nets[k]);
+    reach[k] = geom::grown_box(first[k], space_.net_clearance());
+  }
+  enum class State { Waiting, Running, Done };
+  struct Slot {
+    State state = State::Waiting;
+    std::optional<Tried> tried;
+    std::exception_ptr error;
+  };
+  std::vector<Slot> slot(n);
+  std::mutex m;
+  std::condition_variable cv;
+  std::size_t next = 0;  // the next net to place
+  bool quit = false;
+  std::exception_ptr stopped;  // NetRouterStopped from a worker
+  auto valid = [&](std::size_t k) {  // with m held
+    return slot[k].tried && !changed_in(changed_, slot[k].tried->since, slot[k].tried->window, nets[k]);
+  };
+  auto clear = [&](std::size_t j) {  // with m held: may net j be tried now?
+    if (!options_.cautious) return true;
+    for (std::size_t i = next; i < j; ++i) {
+      if (slot[i].state != State::Done || !slot[i].tried) {
+        if (boxes_meet(reach[i], first[j])) return false;
+        continue;
+      }
+      for (const auto& wire : slot[i].tried->a.wires)
+        for (std::size_t v = 0; v < wire.size(); ++v) {
+          const Point pq[2] = {wire[v], v + 1 < wire.size() ? wire[v + 1] : wire[v]};
+          if (boxes_meet(geom::grown_box(box_of(pq), space_.net_clearance()), first[j])) return false;
+        }
+    }
+    return true;
+  };
+  auto work = [&] {
+    std::unique_lock lock(m);
+    while (true) {
+      std::size_t k = n;
+      for (std::size_t j = next; j < std::min(n, next + ahead) && k == n; ++j)
+        if (slot[j].state == State::Waiting && clear(j)) k = j;
+      if (quit) return;
+      if (k == n) {
+        cv.wait(lock);
+        continue;
+      }
+      slot[k].state = State::Running;
+      lock.unlock();
+      std::optional<Tried> t;
+      std::exception_ptr e;
+      try {
+        t = try_net(route, nets[k], NetSpaceLevel::Full);
+      } catch (const NetRouterStopped&) {
+        lock.lock();
+        stopped = std::current_exception();
+        quit = true;
+        cv.notify_all();
+        return;
+      } catch (...) {  // thrown only when it is tried again in its turn (as with one thread)
+        e = std::current_exception();
+      }
+      lock.lock();
+      slot[k].tried = std::move(t);
+      slot[k].error = e;
+      slot[k].state = State::Done;
+      ++stats_.speculated;
+      cv.notify_all();
+    }
+  };
+  std::vector<std::jthread> pool;
+  auto finish = [&] {
+    {
+      std::lock_guard lock(m);
+      quit = true;
+    }
+    cv.notify_all();
+    pool.clear();  // joins
+  };
+  for (int t = 0; t < threads; ++t) pool.emplace_back(work);
+  try {
+    std::unique_lock lock(m);
+    while (next < n) {
+      cv.wait(lock, [&] { return stopped || slot[next].state == State::Done; });
+      if (stopped) break;
+      Slot& s = slot[next];
+      if (s.error || !valid(next)) {
+        // tried again here, against the space as it is now: valid by construction (or it throws,
+        // as it would with one thread); the workers go on meanwhile
+        stats_.redone += s.tried.has_value();
+        s.state = State::Running;
+        lock.unlock();
+        Tried t = try_net(route, nets[next], NetSpaceLevel::Full);
+        lock.lock();
+        s.tried = std::move(t);
+        s.error = nullptr;
+      }
+      add_counts(stats_, s.tried->counts);
+      place(nets[next], std::move(s.tried->a));
+      s.tried.reset();
+      const std::size_t placed = nets[next];
+      ++next;
+      // attempts ahead that this placement invalidates are tried again at once
+      for (std::size_t j = next; j < std::min(n, next + ahead); ++j)
+        if (slot[j].state == State::Done && slot[j].tried && !valid(j)) {
+          ++stats_.redone;
+          slot[j].tried.reset();
+          slot[j].state = State::Waiting;
+        }
+      cv.notify_all();
+      lock.unlock();
+      after(placed);
+      lock.lock();
+    }
+  } catch (...) {
+    finish();
+    throw;
+  }
+  finish();
+  if (stopped) std::rethrow_exception(stopped);
+}
+
 void NetRouter::run(const NetRouteFn& route) {
   const std::size_t n = space_.size();
+  const int threads = std::max(options_.threads, 1);
   out_.assign(n, NetOutcome{});
   stats_ = {};
+  alone_.assign(n, std::nullopt);
+  changed_.clear();  // the log of wire pieces placed and removed (with threads only)
   for (std::size_t i = 0; i < n; ++i) space_.set_wires(i, {});  // a second run starts afresh
   // shortest first: half-perimeter of the pins' bounding box, then the file's order
   std::vector<std::int64_t> hpwl(n, 0);
@@ -600,13 +885,6 @@ void NetRouter::run(const NetRouteFn& route) {
   std::iota(order_.begin(), order_.end(), std::size_t{0});
   std::stable_sort(order_.begin(), order_.end(), [&](std::size_t x, std::size_t y) { return hpwl[x] < hpwl[y]; });
 
-  auto place = [&](std::size_t i, NetAttempt a) {
-    out_[i].routed = a.routed;
-    out_[i].wires = a.routed ? std::move(a.wires) : Lines{};
-    out_[i].code = a.routed ? std::string() : std::move(a.code);
-    out_[i].reason = a.routed ? std::string() : std::move(a.reason);
-    space_.set_wires(i, out_[i].wires);
-  };
   NetRouterProgress prog;
   prog.nets = n;
   std::size_t routed_now = 0;
@@ -616,11 +894,10 @@ void NetRouter::run(const NetRouteFn& route) {
     prog.routed = routed_now;
     options_.progress(prog);
   };
-  for (const std::size_t i : order_) {
-    place(i, attempt(route, i, NetSpaceLevel::Full));
+  route_in_order(route, order_, [&](std::size_t i) {
     routed_now += out_[i].routed;
     tell();
-  }
+  });
   auto score = [&] {
     std::size_t routed = 0;
     std::int64_t len = 0;
@@ -637,20 +914,52 @@ void NetRouter::run(const NetRouteFn& route) {
     prog.phase = NetRouterProgress::Phase::RipUp;
     prog.round = round + 1;
     prog.tried = 0;
+    // With threads: every net unrouted now is tried again ahead (against this state), and alone.
+    std::vector<std::optional<Tried>> ahead(n);
+    std::vector<std::optional<Tried>> ahead_alone(n);
+    if (threads > 1) {
+      std::vector<std::size_t> todo;
+      for (const std::size_t i : order_)
+        if (!out_[i].routed) todo.push_back(i);
+      parallel_for(2 * todo.size(), threads, [&](std::size_t k) {
+        const std::size_t i = todo[k / 2];
+        try {
+          if (k % 2 == 0)
+            ahead[i] = try_net(route, i, NetSpaceLevel::Full);
+          else if (!alone_[i])
+            ahead_alone[i] = try_net(route, i, NetSpaceLevel::Pins);
+        } catch (const NetRouterStopped&) {
+          throw;
+        } catch (...) {  // tried again in order
+        }
+      });
+      stats_.speculated += static_cast<std::int64_t>(todo.size());
+    }
     for (const std::size_t i : order_) {
       if (out_[i].routed) continue;
       routed_now = 0;
       for (const NetOutcome& o : out_) routed_now += o.routed;
       tell();
-      NetAttempt again = attempt(route, i, NetSpaceLevel::Full);  // others may have moved
+      NetAttempt again;  // others may have moved
+      if (ahead[i] && !changed_in(changed_, ahead[i]->since, ahead[i]->window, i)) {
+        add_counts(stats_, ahead[i]->counts);
+        again = std::move(ahead[i]->a);
+      } else {
+        if (threads > 1) ++stats_.redone;
+        again = attempt(route, i, NetSpaceLevel::Full);
+      }
       if (again.routed) {
         place(i, std::move(again));
         continue;
       }
-      const NetAttempt alone = attempt(route, i, NetSpaceLevel::Pins);
-      if (!alone.routed) continue;  // not the wires' doing: explained at the end
+      if (!alone_[i] && ahead_alone[i]) {  // fixed for the run: kept whenever it was made
+        add_counts(stats_, ahead_alone[i]->counts);
+        alone_[i] = std::move(ahead_alone[i]->a);
+      }
+      const NetAttempt& by_itself = alone(route, i);
+      if (!by_itself.routed) continue;  // not the wires' doing: explained at the end
       std::set<std::size_t> blockers;
-      for (const auto& line : alone.wires)
+      for (const auto& line : by_itself.wires)
         for (const std::size_t b : space_.wire_blockers(i, line)) blockers.insert(b);
       for (const std::size_t b : space_.pad_blockers(i)) blockers.insert(b);
       if (blockers.empty()) continue;
@@ -658,15 +967,14 @@ void NetRouter::run(const NetRouteFn& route) {
       for (const std::size_t b : blockers) can = can && out_[b].rips < options_.max_rips;
       if (!can) continue;
       for (const std::size_t b : blockers) {
-        out_[b].routed = false;
-        out_[b].wires.clear();
-        space_.set_wires(b, {});
+        place(b, NetAttempt{});
         ++out_[b].rips;
         ++stats_.rips;
       }
-      place(i, attempt(route, i, NetSpaceLevel::Full));
+      std::vector<std::size_t> again_nets{i};  // the net, then its blockers in their order
       for (const std::size_t j : order_)
-        if (blockers.count(j)) place(j, attempt(route, j, NetSpaceLevel::Full));
+        if (blockers.count(j)) again_nets.push_back(j);
+      route_in_order(route, again_nets, [](std::size_t) {});
     }
     const auto s = score();
     if (s > best_score) {
@@ -686,59 +994,76 @@ void NetRouter::run(const NetRouteFn& route) {
       space_.set_wires(i, out_[i].wires);
     }
   }
+  // Explaining reads the final state only: the nets are explained at once.
   prog.phase = NetRouterProgress::Phase::Explain;
   prog.tried = 0;
   routed_now = best_score.first;
+  std::vector<std::size_t> unrouted;
   for (const std::size_t i : order_)
-    if (!out_[i].routed) {
-      explain(route, i);
-      tell();
+    if (!out_[i].routed) unrouted.push_back(i);
+  std::vector<Explained> why(unrouted.size());
+  parallel_for(unrouted.size(), threads, [&](std::size_t k) { why[k] = explain(route, unrouted[k]); });
+  for (std::size_t k = 0; k < unrouted.size(); ++k) {
+    NetOutcome& o = out_[unrouted[k]];
+    add_counts(stats_, why[k].counts);
+    if (!why[k].code.empty()) {
+      o.code = std::move(why[k].code);
+      o.reason = std::move(why[k].reason);
     }
+    o.blockers = std::move(why[k].blockers);
+    tell();
+  }
 }
 
-void NetRouter::explain(const NetRouteFn& route, std::size_t net) {
-  NetOutcome& o = out_[net];
-  const NetAttempt plain = attempt(route, net, NetSpaceLevel::Plain);
+NetRouter::Explained NetRouter::explain(const NetRouteFn& route, std::size_t net) const {
+  Explained e;
+  auto tried = [&](NetSpaceLevel level) {
+    Tried t = try_net(route, net, level);
+    add_counts(e.counts, t.counts);
+    return std::move(t.a);
+  };
+  const NetAttempt plain = tried(NetSpaceLevel::Plain);
   if (!plain.routed) {  // the router's own reason, about the blockages
-    o.code = plain.code;
-    o.reason = plain.reason;
-    return;
+    e.code = plain.code;
+    e.reason = plain.reason;
+    return e;
   }
-  const NetAttempt clear = attempt(route, net, NetSpaceLevel::Clearance);
+  const NetAttempt clear = tried(NetSpaceLevel::Clearance);
   const std::string a = std::to_string(space_.blockage_clearance()), b = std::to_string(space_.net_clearance());
   if (!clear.routed) {
-    o.code = "ROUTE-0010";
-    o.reason = "the clearance of <rules> closes every way between its pins: wires keep " + a +
+    e.code = "ROUTE-0010";
+    e.reason = "the clearance of <rules> closes every way between its pins: wires keep " + a +
                " DBU (ceil(w/2) + s) from blockages, so a gap on the way is narrower than " +
                std::to_string(2 * space_.blockage_clearance()) + " DBU or a pin is within " + a +
                " DBU of a blockage it does not sit on";
-    return;
+    return e;
   }
-  const NetAttempt pins = attempt(route, net, NetSpaceLevel::Pins);
+  const NetAttempt pins = alone_[net] ? *alone_[net] : tried(NetSpaceLevel::Pins);
   auto name = [&](std::size_t i) { return "\"" + space_.net(i).name + "\""; };
   if (!pins.routed) {
     std::set<std::size_t> bl;
     for (const auto& line : clear.wires)
       for (const std::size_t x : space_.pin_blockers(net, line)) bl.insert(x);
-    o.blockers.assign(bl.begin(), bl.end());
-    o.code = "ROUTE-0011";
-    o.reason = "the pins of other nets block every way (wires keep " + b + " DBU, w + s, from them)";
-    if (!o.blockers.empty()) o.reason += ": its way alone passes the pins of nets " + net_list(o.blockers, name);
-    return;
+    e.blockers.assign(bl.begin(), bl.end());
+    e.code = "ROUTE-0011";
+    e.reason = "the pins of other nets block every way (wires keep " + b + " DBU, w + s, from them)";
+    if (!e.blockers.empty()) e.reason += ": its way alone passes the pins of nets " + net_list(e.blockers, name);
+    return e;
   }
   std::set<std::size_t> bl;
   for (const auto& line : pins.wires)
     for (const std::size_t x : space_.wire_blockers(net, line)) bl.insert(x);
   for (const std::size_t x : space_.pad_blockers(net)) bl.insert(x);
-  o.blockers.assign(bl.begin(), bl.end());
-  if (o.blockers.empty()) return;  // keeps the full attempt's own reason
-  o.code = "ROUTE-0012";
+  e.blockers.assign(bl.begin(), bl.end());
+  if (e.blockers.empty()) return e;  // keeps the full attempt's own reason
+  e.code = "ROUTE-0012";
   bool limit = false;
-  for (const std::size_t x : o.blockers) limit = limit || out_[x].rips >= options_.max_rips;
-  o.reason = "the wires of other nets block every way (kept " + b + " DBU, w + s, apart): its way alone crosses nets " +
-             net_list(o.blockers, name) +
+  for (const std::size_t x : e.blockers) limit = limit || out_[x].rips >= options_.max_rips;
+  e.reason = "the wires of other nets block every way (kept " + b + " DBU, w + s, apart): its way alone crosses nets " +
+             net_list(e.blockers, name) +
              (limit ? "; they may not be ripped up again (each net at most " + std::to_string(options_.max_rips) + " times)"
                     : "; ripping them up and routing them again left no way either");
+  return e;
 }
 
 namespace {

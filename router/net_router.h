@@ -66,6 +66,16 @@
 //     rules allow, or a pin too near a blockage corner);
 //   - among the other nets' pins it cannot: their pins block it (named);
 //   - otherwise the nets whose wires block it (named).
+//
+// Threads (NetRouterOptions::threads). An attempt depends on nothing but the pieces whose boxes
+// meet the windows it was tried in (NetSpace::obstacles reads no others, and sorts what it
+// reads). So nets are tried ahead of their turn against the space as it is, and an attempt is
+// kept when no wire piece placed or removed since it first read the space meets its last window
+// (changed_, a log of piece boxes); otherwise it is tried again in turn. The outcome is then
+// the one-thread outcome, bit for bit. Where: the first pass and each re-routing after a rip-up
+// (route_in_order: workers try, this thread places in order), the Full attempt of every
+// unrouted net at the start of a rip-up round, the Pins attempts (fixed for the run, made once),
+// and the explanations (which only read).
 #pragma once
 
 #include <cstddef>
@@ -73,6 +83,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <shared_mutex>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -128,6 +139,8 @@ class NetSpace {
   // The nets (other than `net`) whose grown wires enter one of its shape pins (for a shape that
   // is not a rectangle: whose box they meet), which the router then cannot take.
   std::vector<std::size_t> pad_blockers(std::size_t net) const;
+  // The boxes of what the other nets see of net `net`'s wires (the union of its grown segments).
+  std::vector<geom::Box> wire_boxes(std::size_t net) const;
 
   const geom::Box& domain() const { return domain_; }
   std::size_t size() const { return nets_.size(); }
@@ -184,8 +197,18 @@ struct NetRouterOptions {
   // Asked before every window is routed: true stops the run (NetRouterStopped). A window's
   // route is not interrupted, so a run stops within one window's time.
   std::function<bool()> stop;
-  // Told after every net tried (for a progress bar).
+  // Told after every net tried (for a progress bar), always on the thread that called run().
   std::function<void(const NetRouterProgress&)> progress;
+  // Threads that try nets at once (>= 1). The outcome is the same for every count, bit for bit:
+  // with more than one, the next nets in order are tried speculatively against the state before
+  // them, and each is kept only when no wire placed in between meets the windows it was tried
+  // in (a net's attempt depends on nothing outside them); otherwise it is tried again in order.
+  // `stop` and the route function are then called from several threads at once.
+  int threads = 1;
+  // With threads > 1, a net is tried ahead of its turn only when no net before it that is still
+  // to be placed is likely to change its first window (few attempts are then wasted). false:
+  // any net ahead is tried (for tests: every check of an attempt's validity is then exercised).
+  bool cautious = true;
 };
 
 struct NetRouterStats {
@@ -195,6 +218,10 @@ struct NetRouterStats {
   std::int64_t whole = 0;         // of those, on the whole domain
   std::int64_t rips = 0;          // nets ripped up in all
   std::size_t first_pass = 0;     // nets routed by the first pass
+  // With threads > 1: attempts made ahead of their turn, and those of them tried again because a
+  // wire placed in between met their window (not counted in attempts/windows above, which are
+  // the same for every thread count).
+  std::int64_t speculated = 0, redone = 0;
   double space_seconds = 0, route_seconds = 0;  // building obstacles; routing in them
 };
 
@@ -219,14 +246,41 @@ class NetRouter {
   const NetSpace& space() const { return space_; }
 
  private:
-  NetAttempt attempt(const NetRouteFn& route, std::size_t net, NetSpaceLevel level);
-  void explain(const NetRouteFn& route, std::size_t net);
+  // One net tried at one level, in growing windows: the attempt, the last (largest) window
+  // tried (clipped to the domain; everything the attempt saw lies in it) and its counts.
+  struct Tried {
+    NetAttempt a;
+    geom::Box window;
+    NetRouterStats counts;
+    std::size_t since = 0;  // the length of changed_ when it first read the space
+  };
+  Tried try_net(const NetRouteFn& route, std::size_t net, NetSpaceLevel level) const;
+  geom::Box first_window(std::size_t net) const;  // the first window try_net tries
+  NetAttempt attempt(const NetRouteFn& route, std::size_t net, NetSpaceLevel level);  // counted
+  // The net at the Pins level (the blockages and other nets' pins only: fixed for the run, so
+  // tried once per net and kept).
+  const NetAttempt& alone(const NetRouteFn& route, std::size_t net);
+  // Routes `nets` at the Full level one after another, placing each (as if with one thread).
+  void route_in_order(const NetRouteFn& route, std::span<const std::size_t> nets,
+                      const std::function<void(std::size_t)>& after);
+  void place(std::size_t net, NetAttempt a);
+  struct Explained {
+    std::string code, reason;
+    std::vector<std::size_t> blockers;
+    NetRouterStats counts;
+  };
+  Explained explain(const NetRouteFn& route, std::size_t net) const;
 
   NetSpace space_;
   NetRouterOptions options_;
   std::vector<NetOutcome> out_;
   std::vector<std::size_t> order_;
   NetRouterStats stats_;
+  std::vector<std::optional<NetAttempt>> alone_;  // alone(), per net
+  // With threads > 1: the boxes of every wire piece placed or removed since speculation began,
+  // with their net (a speculative attempt is kept when none of another net meets its window).
+  std::vector<std::pair<geom::Box, std::size_t>> changed_;
+  mutable std::shared_mutex space_mutex_;  // place() writes space_ and changed_; attempts read them
 };
 
 }  // namespace taut::router

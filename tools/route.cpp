@@ -12,13 +12,16 @@
 // on stderr; the exit status is then 1. --tighten then pulls every routed wire taut in its
 // class and writes it with the fewest links; a net with a <sketch> gets its sketch tightened
 // (tools/route_common.h: WireTightener, as `taut tighten` does).
+#include <atomic>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
-#include <unistd.h>
 #include <iostream>
 #include <span>
+#include <thread>
 #include <vector>
+
+#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
@@ -39,8 +42,11 @@
 namespace taut::cli {
 namespace {
 
-volatile std::sig_atomic_t g_signal = 0;  // the signal that asked taut route to stop
-extern "C" void on_signal(int sig) { g_signal = sig; }
+// The signal that asked taut route to stop: an atomic, as the net router's threads read it (a
+// lock-free atomic may be written in a signal handler).
+std::atomic<int> g_signal{0};
+static_assert(std::atomic<int>::is_always_lock_free);
+extern "C" void on_signal(int sig) { g_signal.store(sig); }
 
 struct NetResult {
   io::Route route;
@@ -270,6 +276,7 @@ void add_route(CLI::App& app, int& status) {
     bool independent = false;
     std::string tree = "spt";
     double time_limit = 0;  // seconds; 0: none
+    unsigned threads = 1;   // 0: every hardware thread
   };
   auto args = std::make_shared<Args>();
   CLI::App* sub = app.add_subcommand("route", "Route every net (shortest wires; a shortest-path tree from the first pin, or with --tree steiner a Steiner tree, for nets of three or more pins) and write the routed layout");
@@ -288,6 +295,10 @@ void add_route(CLI::App& app, int& status) {
                   "stop after SEC seconds with exit status 4, writing nothing (the previous output files stay as they "
                   "were); SIGINT and SIGTERM stop the same way")
       ->check(CLI::PositiveNumber);
+  sub->add_option("--threads", args->threads,
+                  "nets tried at once by the net router (default 1; 0: one per hardware thread); the output is the "
+                  "same byte for byte whatever N")
+      ->check(CLI::Range(0u, 1024u));
   sub->add_option("--tree", args->tree,
                   "nets of three or more pins: spt (default: a shortest-path tree from the first pin, every pin at its "
                   "shortest distance) or steiner (short total length; rectilinear L1 wires between point pins)");
@@ -304,7 +315,7 @@ void add_route(CLI::App& app, int& status) {
         args->time_limit > 0 ? std::optional<Clock::time_point>(t0 + std::chrono::duration_cast<Clock::duration>(
                                                                           std::chrono::duration<double>(args->time_limit)))
                              : std::nullopt;
-    auto stop = [&] { return g_signal != 0 || (deadline && Clock::now() > *deadline); };
+    auto stop = [&] { return g_signal.load() != 0 || (deadline && Clock::now() > *deadline); };
     // A progress line on stderr when it is a terminal, from one second on.
     const bool bar = !args->load.quiet && ::isatty(2);
     bool bar_shown = false;
@@ -344,10 +355,17 @@ void add_route(CLI::App& app, int& status) {
       status = kInvalid;
       return;
     }
+    if (args->threads != 1 && (bends || args->independent))  // said, not dropped silently
+      print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0017", layout->file, 0, 0,
+                                    "--threads applies to the nets routed together; " +
+                                        std::string(bends ? "--metric " + args->routing.metric : "--independent") +
+                                        " routes the nets one after another on one thread"}},
+                        args->load.quiet);
     io::Routes routes;
     routes.tool = "taut " + std::string(router::version());
     std::size_t routed = 0;
     std::optional<router::NetRouterStats> net_stats;
+    int net_threads = 1;
     auto t1 = Clock::now();
     if (bends) {
       const BendObstacles obs = bend_obstacles(*layout, {}, args->routing.metric, args->load.quiet,
@@ -437,6 +455,8 @@ void add_route(CLI::App& app, int& status) {
           nro.octilinear = octilinear;
           nro.stop = stop;
           nro.progress = progress;
+          nro.threads = static_cast<int>(args->threads ? args->threads : std::max(1u, std::thread::hardware_concurrency()));
+          net_threads = nro.threads;
           router::NetRouter nr(space.domain, space.obstacles, std::move(pins), rules, nro);
           nr.run([&](std::size_t i, const router::NetPins&, const geom::NormalizedObstacles& obs) {
             NetResult r;
@@ -602,6 +622,9 @@ void add_route(CLI::App& app, int& status) {
                          {"attempts", net_stats->attempts},
                          {"windows", net_stats->windows},
                          {"whole_domain_windows", net_stats->whole},
+                         {"threads", net_threads},
+                         {"speculative_attempts", net_stats->speculated},
+                         {"speculative_redone", net_stats->redone},
                          {"space_seconds", net_stats->space_seconds},
                          {"path_seconds", net_stats->route_seconds}};
     if (!args->stats.empty()) stats = j.dump(2) + "\n";

@@ -333,8 +333,9 @@ TEST(Route, TimeLimitAndSignalsStopWithExit4) {
   EXPECT_EQ(limited.status, 4) << limited.err;
   EXPECT_NE(limited.err.find("ROUTE-0016"), std::string::npos) << limited.err;
   EXPECT_NE(limited.err.find("--time-limit 0.5 s"), std::string::npos) << limited.err;
-  for (const int sig : {SIGINT, SIGTERM}) {
-    const auto r = run_taut_signalled({"route", in, "-o", out, "--svg", svg}, 1.0, sig);
+  for (const int sig : {SIGINT, SIGTERM}) {  // SIGTERM with three threads
+    const auto r = sig == SIGINT ? run_taut_signalled({"route", in, "-o", out, "--svg", svg}, 1.0, sig)
+                                 : run_taut_signalled({"route", in, "-o", out, "--svg", svg, "--threads", "3"}, 1.0, sig);
     EXPECT_EQ(r.status, 4) << sig << ": " << r.err;
     EXPECT_NE(r.err.find(sig == SIGINT ? "stopped by SIGINT" : "stopped by SIGTERM"), std::string::npos) << r.err;
   }
@@ -342,6 +343,43 @@ TEST(Route, TimeLimitAndSignalsStopWithExit4) {
   EXPECT_EQ(read_text(svg), "previous svg\n");
   const auto bad = run_taut({"route", in, "-o", out, "--time-limit", "-1"});
   EXPECT_EQ(bad.status, 2);
+}
+
+// --threads N: the routed file, the picture and the routes in --stats are the same byte for byte
+// for every N (0: one per hardware thread), rectilinear and octilinear; it is said where it does
+// not apply; a bad N is a usage error.
+TEST(Route, ThreadsGiveTheSameBytes) {
+  const std::string dir = temp_dir("route_threads");
+  const std::string in = dir + "/in.xml";
+  ASSERT_EQ(run_taut({"gen", "rects", "--size", "2500", "--nets", "90", "--pins", "2-5", "--width", "6", "--spacing", "4",
+                      "--seed", "11", "-o", in}).status, 0);
+  for (const std::string orient : {"rectilinear", "octilinear"}) {
+    std::string xml1, svg1;
+    nlohmann::json routes1;
+    for (const std::string t : {"1", "2", "3", "0"}) {
+      SCOPED_TRACE(orient + ", --threads " + t);
+      const std::string out = dir + "/r" + t + ".xml", svg = dir + "/r" + t + ".svg", st = dir + "/s" + t + ".json";
+      const auto r = run_taut({"route", in, "--orientations", orient, "--threads", t, "-q", "-o", out, "--svg", svg, "--stats", st});
+      ASSERT_TRUE(r.status == 0 || r.status == 1) << r.err;
+      const auto j = nlohmann::json::parse(read_text(st));
+      EXPECT_EQ(j["net_router"]["threads"].get<int>() >= 1, true);
+      if (t == "1") {
+        xml1 = read_text(out), svg1 = read_text(svg), routes1 = j["routes"];
+        EXPECT_EQ(j["net_router"]["speculative_attempts"], 0);
+        continue;
+      }
+      EXPECT_EQ(read_text(out), xml1);
+      EXPECT_EQ(read_text(svg), svg1);
+      EXPECT_EQ(j["routes"], routes1);
+      EXPECT_EQ(j["totals"]["completion"], nlohmann::json::parse(read_text(dir + "/s1.json"))["totals"]["completion"]);
+      if (t == "2") EXPECT_GT(j["net_router"]["speculative_attempts"].get<int>(), 0);
+    }
+  }
+  const auto ind = run_taut({"route", in, "--independent", "--threads", "2", "-o", dir + "/i.xml"});
+  EXPECT_NE(ind.err.find("ROUTE-0017"), std::string::npos) << ind.err;
+  const auto one = run_taut({"route", in, "--independent", "-o", dir + "/i.xml"});
+  EXPECT_EQ(one.err.find("ROUTE-0017"), std::string::npos) << one.err;
+  for (const std::string bad : {"-1", "x", "2000"}) EXPECT_EQ(run_taut({"route", in, "--threads", bad, "-o", dir + "/b.xml"}).status, 2) << bad;
 }
 
 TEST(Route, DemoRoutesEveryNet) {

@@ -455,6 +455,97 @@ TEST(NetRouter, ProgressAndStop) {
   EXPECT_EQ(asked, 3);
 }
 
+// --threads: the outcomes, and the counts that do not depend on timing, are the same for every
+// thread count, bit for bit. Small crowded layouts (windows the whole domain: every speculative
+// attempt meets every change, rip-ups) and larger ones of local nets (windows apart: most
+// speculative attempts are kept), with 2 to 5 threads against one.
+TEST(NetRouter, ThreadsGiveTheSameOutcomes) {
+  int failed = 0;
+  std::int64_t speculated = 0, redone = 0, rips = 0, unrouted = 0;
+  auto same = [&](const std::string& at, const router::NetRouter& one, const router::NetRouter& par) {
+    const auto &x = one.stats(), &y = par.stats();
+    bool ok = x.attempts == y.attempts && x.windows == y.windows && x.whole == y.whole && x.rips == y.rips &&
+              x.rounds == y.rounds && x.first_pass == y.first_pass && one.order() == par.order();
+    for (std::size_t i = 0; i < one.outcomes().size(); ++i) {
+      const auto &a = one.outcomes()[i], &b = par.outcomes()[i];
+      ok = ok && a.routed == b.routed && a.wires == b.wires && a.code == b.code && a.reason == b.reason &&
+           a.blockers == b.blockers && a.rips == b.rips;
+    }
+    if (!ok && failed++ < 5) ADD_FAILURE() << at << ": the outcomes differ from one thread's";
+    speculated += y.speculated;
+    redone += y.redone;
+    rips += x.rips;
+    for (const auto& o : one.outcomes()) unrouted += !o.routed;
+  };
+  for (int seed = 1; seed <= sanitized_share(400, 8); ++seed) {
+    const RandomLayout L = random_layout(710000 + seed);
+    router::NetRouterOptions opt;
+    opt.octilinear = seed % 5 == 4;
+    const auto fn = opt.octilinear ? router::NetRouter::oct_router() : router::NetRouter::l1_router(seed % 3 == 0);
+    router::NetRouter one(L.norm.domain, L.norm.obstacles, L.nets, L.rules, opt);
+    one.run(fn);
+    opt.threads = 2 + seed % 4;
+    opt.cautious = seed % 2 == 0;  // half of them try any net ahead: most such attempts are redone
+    router::NetRouter par(L.norm.domain, L.norm.obstacles, L.nets, L.rules, opt);
+    par.run(fn);
+    same("seed " + std::to_string(710000 + seed) + ", " + std::to_string(opt.threads) + " threads", one, par);
+  }
+  for (int seed = 1; seed <= sanitized_share(30, 3); ++seed) {
+    std::mt19937 rng(static_cast<unsigned>(720000 + seed));
+    const geom::Box domain{{0, 0}, {2000, 2000}};
+    const std::vector<geom::Box> boxes = random_boxes_apart(rng, 60 + static_cast<int>(rng() % 60), 10, 1900, 120);
+    const geom::NormalizedObstacles norm = geom::normalize_obstacles(box_polygons(boxes), domain);
+    router::L1Router plain(norm.domain, norm.obstacles);
+    std::vector<router::NetPins> nets;
+    for (int k = 0; k < 40; ++k) {
+      const Point c{static_cast<geom::Coord>(rng() % 2001), static_cast<geom::Coord>(rng() % 2001)};
+      router::NetPins np;
+      np.name = "m" + std::to_string(k);
+      for (int j = 0, pins = 2 + static_cast<int>(rng() % 3); j < pins; ++j)
+        for (int t = 0; t < 100; ++t) {
+          const Point p{static_cast<geom::Coord>(std::clamp<int>(c.x - 120 + static_cast<int>(rng() % 241), 0, 2000)),
+                        static_cast<geom::Coord>(std::clamp<int>(c.y - 120 + static_cast<int>(rng() % 241), 0, 2000))};
+          if (plain.is_free(p)) {
+            np.pins.push_back(Polygon{{p}, {}});
+            break;
+          }
+        }
+      nets.push_back(std::move(np));
+    }
+    const router::NetRules rules{static_cast<std::int64_t>(rng() % 9), static_cast<std::int64_t>(rng() % 9)};
+    router::NetRouter one(norm.domain, norm.obstacles, nets, rules);
+    one.run(router::NetRouter::l1_router(seed % 2 == 0));
+    router::NetRouterOptions opt;
+    opt.threads = 2 + 2 * (seed % 2);
+    opt.cautious = seed % 3 != 0;
+    router::NetRouter par(norm.domain, norm.obstacles, nets, rules, opt);
+    par.run(router::NetRouter::l1_router(seed % 2 == 0));
+    same("local seed " + std::to_string(720000 + seed) + ", " + std::to_string(opt.threads) + " threads", one, par);
+  }
+  std::printf("%lld speculative attempts, %lld of them redone; %lld rip-ups, %lld nets unrouted\n",
+              static_cast<long long>(speculated), static_cast<long long>(redone), static_cast<long long>(rips),
+              static_cast<long long>(unrouted));
+  EXPECT_EQ(failed, 0);
+  // both ways were taken: attempts kept and attempts tried again; and the rip-up and explaining
+  // phases ran
+  EXPECT_GT(redone, 100);
+  EXPECT_GT(speculated - redone, 1000);
+  EXPECT_GT(rips, 50);
+  EXPECT_GT(unrouted, 50);
+}
+
+// A stop asked from any thread ends the run with NetRouterStopped.
+TEST(NetRouter, ThreadsStop) {
+  const RandomLayout L = random_layout(700007);
+  std::atomic<int> asked{0};
+  router::NetRouterOptions opt;
+  opt.threads = 3;
+  opt.stop = [&] { return ++asked > 2; };
+  router::NetRouter ns(L.norm.domain, L.norm.obstacles, L.nets, L.rules, opt);
+  EXPECT_THROW(ns.run(router::NetRouter::l1_router(false)), router::NetRouterStopped);
+  EXPECT_GE(asked.load(), 3);
+}
+
 // Public maps nobody here drew (Moving AI grid maps, 10 DBU per cell: blocked cells touch and
 // pinch everywhere): arena whole and corners of maze-100-1 and 8room_000, 25 local nets of 2-4
 // pins at free cell centres 10 apart (within 8 cells of the net's first pin and joined to it among
