@@ -529,29 +529,34 @@ void add_counts(NetRouterStats& to, const NetRouterStats& c) {
   to.route_seconds += c.route_seconds;
 }
 
-// Calls f(k) for k in [0, n) on up to `threads` threads (the caller's one of them); the first
-// exception thrown is rethrown here after every thread is done.
+// Calls f(k) for k in [0, n) on up to `threads` threads (the caller's one of them); then rethrows
+// the exception of the least k that threw, as calling them in order would have (after a
+// NetRouterStopped the rest are not started).
 template <class F>
 void parallel_for(std::size_t n, int threads, F&& f) {
   std::atomic<std::size_t> next{0};
-  std::exception_ptr error;
-  std::atomic<bool> failed{false};
+  std::atomic<bool> stop{false};
+  std::vector<std::exception_ptr> errors(n);
   auto work = [&] {
-    for (std::size_t k; !failed.load() && (k = next.fetch_add(1)) < n;) {
+    for (std::size_t k; !stop.load() && (k = next.fetch_add(1)) < n;) {
       try {
         f(k);
+      } catch (const NetRouterStopped&) {
+        errors[k] = std::current_exception();
+        stop = true;
       } catch (...) {
-        if (!failed.exchange(true)) error = std::current_exception();
+        errors[k] = std::current_exception();
       }
     }
   };
   {
-    std::vector<std::jthread> pool;
+    std::vector<std::jthread> pool;  // joined when it goes out of scope, also if a thread fails to start
     const std::size_t extra = std::min<std::size_t>(n, static_cast<std::size_t>(std::max(threads, 1))) - (n > 0);
     for (std::size_t t = 0; t < extra; ++t) pool.emplace_back(work);
     work();
   }
-  if (error) std::rethrow_exception(error);
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
 }
 
 }  // namespace
@@ -565,12 +570,27 @@ NetAttempt NetRouter::attempt(const NetRouteFn& route, std::size_t net, NetSpace
 namespace {
 
 // The margin of a net's first window round its pins' box hp. Two point pins: half the
-// half-perimeter (the proof then keeps any wire up to twice its lower bound, which most are);
-// other nets twice it (a tree's proof needs its whole length inside the margin).
+// half-perimeter (the proof then keeps any wire up to twice its lower bound, which most are).
+// Three or more pins: 1.5 times the greatest L1 gap from the first pin to another (a tree grown
+// from the first pin is proven by its radius, NetAttempt::radius, which is at least that gap:
+// so wires up to half as long again are kept). Other nets: twice the half-perimeter (the proof
+// then needs the whole length inside the margin).
 std::int64_t first_margin(const NetPins& pins, const Box& hp, std::int64_t a, std::int64_t b) {
   const std::int64_t hpwl = (std::int64_t{hp.hi.x} - hp.lo.x) + (std::int64_t{hp.hi.y} - hp.lo.y);
   const bool two_points = pins.pins.size() == 2 && is_point_pin(pins.pins[0]) && is_point_pin(pins.pins[1]);
-  return two_points ? hpwl / 2 + 4 * (a + b) + 32 : 2 * hpwl + 8 * (a + b) + 64;
+  if (two_points) return hpwl / 2 + 4 * (a + b) + 32;
+  if (pins.pins.size() >= 3) {
+    const Box s = box_of(pins.pins[0].outer);
+    std::int64_t gap = 0;
+    for (std::size_t k = 1; k < pins.pins.size(); ++k) {
+      const Box t = box_of(pins.pins[k].outer);
+      const std::int64_t gx = std::max<std::int64_t>({0, std::int64_t{t.lo.x} - s.hi.x, std::int64_t{s.lo.x} - t.hi.x});
+      const std::int64_t gy = std::max<std::int64_t>({0, std::int64_t{t.lo.y} - s.hi.y, std::int64_t{s.lo.y} - t.hi.y});
+      gap = std::max(gap, gx + gy);
+    }
+    return gap + gap / 2 + 4 * (a + b) + 32;
+  }
+  return 2 * hpwl + 8 * (a + b) + 64;
 }
 
 }  // namespace
@@ -673,9 +693,15 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
           proven = room >= 0 && 2 * static_cast<__int128>(dg) * dg <= room * room;
         }
       } else {
+        // A tree grown from the first pin alone: its wave labelled only points within its radius
+        // of the first pin (geodesic distance, L1 or octilinear, is at least the distance along
+        // either axis), so a window whose sides are farther from the first pin's box gives the
+        // whole layout's distances. Otherwise every wavefront run of the route stopped within
+        // its length of the pins and wires.
         std::vector<Point> all = pts;
         for (const auto& wire : a.wires) all.insert(all.end(), wire.begin(), wire.end());
-        proven = len < inner(box_of(all)) - 2;
+        proven = len < inner(box_of(all)) - 2 ||
+                 (a.radius && *a.radius < geom::Root2{inner(box_of(pins.pins[0].outer)) - 2, 0});
       }
       if (proven) return t;
       m = std::max(4 * m, len + 3);
@@ -727,18 +753,18 @@ bool changed_in(std::span<const std::pair<Box, std::size_t>> changed, std::size_
 void NetRouter::route_in_order(const NetRouteFn& route, std::span<const std::size_t> nets,
                                const std::function<void(std::size_t)>& after) {
   const int threads = std::max(options_.threads, 1);
-  if (threads == 1) {
+  if (threads == 1 || nets.size() < 2) {
     for (const std::size_t i : nets) {
       place(i, attempt(route, i, NetSpaceLevel::Full));
       after(i);
     }
     return;
   }
-  // A pipeline: `threads` workers try nets not placed yet that have no attempt (among the next
+  // A pipeline: `threads` - 1 workers try nets not placed yet that have no attempt (among the next
   // `ahead`, the earliest first) against the space as it is then; this thread places them in
   // order, each when its attempt is valid: no wire piece placed or removed since the attempt
-  // first read the space meets the windows it was tried in (it depends on nothing else). An
-  // attempt found invalid is tried again (by then against a space that has caught up). Workers
+  // first read the space meets the windows it was tried in (it depends on nothing else); it tries
+  // the next net itself when no worker has, or again when the attempt was not valid. Workers
   // take a net early only when no net before it still to be placed is likely to change its first
   // window: the wires of one already tried, or the first window of one not tried yet (grown by
   // b), meet it. So few attempts are wasted; the next net to place is always free to take.
@@ -821,16 +847,19 @@ void NetRouter::route_in_order(const NetRouteFn& route, std::span<const std::siz
     cv.notify_all();
     pool.clear();  // joins
   };
-  for (int t = 0; t < threads; ++t) pool.emplace_back(work);
   try {
+    for (int t = 1; t < threads; ++t) pool.emplace_back(work);  // and this thread
     std::unique_lock lock(m);
     while (next < n) {
-      cv.wait(lock, [&] { return stopped || slot[next].state == State::Done; });
       if (stopped) break;
       Slot& s = slot[next];
-      if (s.error || !valid(next)) {
-        // tried again here, against the space as it is now: valid by construction (or it throws,
-        // as it would with one thread); the workers go on meanwhile
+      if (s.state == State::Running) {  // a worker has it
+        cv.wait(lock);
+        continue;
+      }
+      if (s.state == State::Waiting || s.error || !valid(next)) {
+        // tried here, against the space as it is now: valid by construction (or it throws, as
+        // it would with one thread); the workers go on meanwhile
         stats_.redone += s.tried.has_value();
         s.state = State::Running;
         lock.unlock();
@@ -838,11 +867,15 @@ void NetRouter::route_in_order(const NetRouteFn& route, std::span<const std::siz
         lock.lock();
         s.tried = std::move(t);
         s.error = nullptr;
+        s.state = State::Done;
       }
-      add_counts(stats_, s.tried->counts);
-      place(nets[next], std::move(s.tried->a));
+      Tried t = std::move(*s.tried);
       s.tried.reset();
       const std::size_t placed = nets[next];
+      add_counts(stats_, t.counts);
+      lock.unlock();
+      place(placed, std::move(t.a));  // under the space's own lock: the workers go on
+      lock.lock();
       ++next;
       // attempts ahead that this placement invalidates are tried again at once
       for (std::size_t j = next; j < std::min(n, next + ahead); ++j)
@@ -933,7 +966,7 @@ void NetRouter::run(const NetRouteFn& route) {
         } catch (...) {  // tried again in order
         }
       });
-      stats_.speculated += static_cast<std::int64_t>(todo.size());
+      for (const std::size_t i : todo) stats_.speculated += ahead[i].has_value() + ahead_alone[i].has_value();
     }
     for (const std::size_t i : order_) {
       if (out_[i].routed) continue;
@@ -945,7 +978,7 @@ void NetRouter::run(const NetRouteFn& route) {
         add_counts(stats_, ahead[i]->counts);
         again = std::move(ahead[i]->a);
       } else {
-        if (threads > 1) ++stats_.redone;
+        stats_.redone += ahead[i].has_value();
         again = attempt(route, i, NetSpaceLevel::Full);
       }
       if (again.routed) {
@@ -1001,17 +1034,21 @@ void NetRouter::run(const NetRouteFn& route) {
   std::vector<std::size_t> unrouted;
   for (const std::size_t i : order_)
     if (!out_[i].routed) unrouted.push_back(i);
-  std::vector<Explained> why(unrouted.size());
-  parallel_for(unrouted.size(), threads, [&](std::size_t k) { why[k] = explain(route, unrouted[k]); });
-  for (std::size_t k = 0; k < unrouted.size(); ++k) {
-    NetOutcome& o = out_[unrouted[k]];
-    add_counts(stats_, why[k].counts);
-    if (!why[k].code.empty()) {
-      o.code = std::move(why[k].code);
-      o.reason = std::move(why[k].reason);
+  const std::size_t chunk = 4 * static_cast<std::size_t>(threads);  // then progress is told
+  for (std::size_t c = 0; c < unrouted.size(); c += chunk) {
+    const std::size_t e = std::min(unrouted.size(), c + chunk);
+    std::vector<Explained> why(e - c);
+    parallel_for(e - c, threads, [&](std::size_t k) { why[k] = explain(route, unrouted[c + k]); });
+    for (std::size_t k = 0; k < e - c; ++k) {
+      NetOutcome& o = out_[unrouted[c + k]];
+      add_counts(stats_, why[k].counts);
+      if (!why[k].code.empty()) {
+        o.code = std::move(why[k].code);
+        o.reason = std::move(why[k].reason);
+      }
+      o.blockers = std::move(why[k].blockers);
+      tell();
     }
-    o.blockers = std::move(why[k].blockers);
-    tell();
   }
 }
 
@@ -1109,6 +1146,7 @@ NetAttempt route_with(const NetPins& net, const geom::NormalizedObstacles& obs, 
     const typename Router::Tree t = r.tree(net.pins[0], std::span<const Polygon>(net.pins).subspan(1));
     if (t.status != WireStatus::Ok) return fail(t.status);
     a.wires = t.wires;
+    a.radius = tree_radius(t);
   }
   a.routed = true;
   return a;

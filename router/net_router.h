@@ -87,9 +87,11 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "geom/normalize.h"
+#include "geom/root2.h"
 #include "geom/types.h"
 
 namespace taut::router {
@@ -160,11 +162,30 @@ struct NetAttempt {
   bool routed = false;
   std::vector<std::vector<geom::Point>> wires;  // routed: polylines, integer vertices
   std::string code, reason;                     // not routed: a code (ROUTE-xxxx) and a reason
+  // Routed as a tree grown from the first pin alone (a wavefront from its shape that stopped when
+  // it had reached every other pin): the greatest exact distance from the first pin to another
+  // (L1, or octilinear a + b sqrt2). Every point that wave labelled lies that near the first pin,
+  // which proves a window whose sides are farther (NetRouter); nullopt: not such a tree.
+  std::optional<geom::Root2> radius;
   // ROUTE-0002 must mean "the pins are in different parts of free space": the one failure a
   // larger window can undo (NetRouter widens the window for it, and for no other code).
 };
 using NetRouteFn =
     std::function<NetAttempt(std::size_t net, const NetPins& pins, const geom::NormalizedObstacles& obstacles)>;
+
+// The greatest exact distance of a routed tree's sinks from its source (L1Router::Tree or
+// OctRouter::Tree), as NetAttempt::radius; nullopt when a sink has none.
+template <class Tree>
+std::optional<geom::Root2> tree_radius(const Tree& t) {
+  geom::Root2 r{0, 0};
+  for (const auto& d : t.distance) {
+    if (!d) return std::nullopt;
+    geom::Root2 v;
+    if constexpr (std::is_same_v<std::decay_t<decltype(*d)>, geom::Root2>) v = *d; else v = geom::Root2{*d, 0};
+    r = std::max(r, v);
+  }
+  return r;
+}
 
 struct NetOutcome {
   bool routed = false;
@@ -220,7 +241,7 @@ struct NetRouterStats {
   std::size_t first_pass = 0;     // nets routed by the first pass
   // With threads > 1: attempts made ahead of their turn, and those of them tried again because a
   // wire placed in between met their window (not counted in attempts/windows above, which are
-  // the same for every thread count).
+  // the same for every thread count; these two depend on timing).
   std::int64_t speculated = 0, redone = 0;
   double space_seconds = 0, route_seconds = 0;  // building obstacles; routing in them
 };

@@ -51,6 +51,7 @@ extern "C" void on_signal(int sig) { g_signal.store(sig); }
 struct NetResult {
   io::Route route;
   std::string code;  // ROUTE-xxxx when failed
+  std::optional<geom::Root2> radius;  // a shortest-path tree's: router::NetAttempt::radius
 };
 
 // A net written as failed, with the code and reason that stderr names.
@@ -194,7 +195,9 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router
     }
     std::vector<io::Wire> wires;
     for (const auto& pts : t.wires) wires.push_back(io::Wire{pts});
-    return finish(std::move(wires));
+    NetResult done = finish(std::move(wires));
+    if (done.route.status == "routed") done.radius = router::tree_radius(t);
+    return done;
   }
   const typename Router::Wire w = router.shortest(ga, gb);
   switch (w.status) {
@@ -472,6 +475,7 @@ void add_route(CLI::App& app, int& status) {
             for (const io::Wire& w : r.route.wires) a.wires.push_back(w.points);
             a.code = r.code;
             a.reason = r.route.reason.value_or("");
+            a.radius = r.radius;
             return a;
           });
           net_stats = nr.stats();

@@ -279,7 +279,7 @@ TEST(NetRouter, ANetAloneWithoutRulesIsShortest) {
 // kept only when no way out of it can be shorter), with rules; and many nets routed in windows
 // pass the checker.
 TEST(NetRouter, WindowsGiveTheWholeLayoutsLengths) {
-  int failed = 0, compared = 0, widened = 0;
+  int failed = 0, compared = 0, widened = 0, trees = 0, tree_windows = 0;
   for (int seed = 1; seed <= sanitized_share(60, 4); ++seed) {
     std::mt19937 rng(static_cast<unsigned>(900000 + seed));
     const geom::Box domain{{0, 0}, {2000, 2000}};
@@ -318,6 +318,46 @@ TEST(NetRouter, WindowsGiveTheWholeLayoutsLengths) {
       continue;
     }
     compared += a.routed;
+    // one net of 3-6 pins alone, a shortest-path tree from its first pin, proven in its window
+    // by its radius (NetAttempt::radius): every pin's distance from the first is the whole
+    // domain's (measured by the route function on the space it was given, last call kept)
+    {
+      std::vector<router::NetPins> tree{{"t", {}}};
+      for (int j = 0, pins = 3 + static_cast<int>(rng() % 4); j < pins; ++j)  // free points within 100 of c
+        for (int t = 0; t < 1000; ++t) {
+          const Point p{static_cast<geom::Coord>(std::clamp<int>(c.x - 100 + static_cast<int>(rng() % 201), 0, 2000)),
+                        static_cast<geom::Coord>(std::clamp<int>(c.y - 100 + static_cast<int>(rng() % 201), 0, 2000))};
+          if (plain.is_free(p)) {
+            tree[0].pins.push_back(Polygon{{p}, {}});
+            break;
+          }
+        }
+      std::vector<std::optional<std::int64_t>> got;
+      const auto fn = [&](std::size_t, const router::NetPins& net, const geom::NormalizedObstacles& obs) {
+        router::L1Router r(obs.domain, obs.obstacles);
+        const auto t = r.tree(net.pins[0], std::span<const Polygon>(net.pins).subspan(1));
+        got = t.distance;
+        router::NetAttempt at;
+        at.routed = t.status == router::WireStatus::Ok;
+        at.wires = t.wires;
+        at.code = at.routed ? "" : t.status == router::WireStatus::Unreachable ? "ROUTE-0002" : "ROUTE-0001";
+        if (at.routed) {
+          std::int64_t rad = 0;
+          for (const auto& d : t.distance) rad = std::max(rad, *d);
+          at.radius = geom::Root2{rad, 0};
+        }
+        return at;
+      };
+      router::NetRouter tw(norm.domain, norm.obstacles, tree, rules);
+      tw.run(fn);
+      const auto windowed = got;
+      router::NetRouter tall(norm.domain, norm.obstacles, tree, rules, whole_opt);
+      tall.run(fn);
+      const bool differ = tw.outcomes()[0].routed != tall.outcomes()[0].routed || (tall.outcomes()[0].routed && windowed != got);
+      if (differ && failed++ < 5) ADD_FAILURE() << "seed " << 900000 + seed << ": a tree's distances differ in its window";
+      trees += tw.outcomes()[0].routed;
+      tree_windows += tw.stats().whole == 0 && tw.outcomes()[0].routed;
+    }
     // many local nets in windows: legal
     std::vector<router::NetPins> many;
     for (int k = 0; k < 12; ++k) {
@@ -332,9 +372,11 @@ TEST(NetRouter, WindowsGiveTheWholeLayoutsLengths) {
     for (const auto& p : router::check_routes(norm, check_nets(many, nr), {rules.wire_width, rules.spacing}).problems)
       if (failed++ < 5) ADD_FAILURE() << "seed " << 900000 + seed << ": " << p.message;
   }
-  std::printf("%d nets alone compared, %d needed a wider window\n", compared, widened);
+  std::printf("%d nets alone compared, %d needed a wider window; %d trees compared, %d of them decided in a window\n",
+              compared, widened, trees, tree_windows);
   EXPECT_EQ(failed, 0);
   EXPECT_GT(compared, sanitized_share(40, 4));
+  EXPECT_GT(tree_windows, sanitized_share(30, 2));
   // a wall between two close pins: the way round is far longer than the first window allows, so
   // the window widens until it is proven (or whole), with the whole domain's length
   const geom::Box domain{{0, 0}, {4000, 4000}};
