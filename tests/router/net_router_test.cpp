@@ -376,7 +376,8 @@ TEST(NetRouter, WindowsGiveTheWholeLayoutsLengths) {
               compared, widened, trees, tree_windows);
   EXPECT_EQ(failed, 0);
   EXPECT_GT(compared, sanitized_share(40, 4));
-  EXPECT_GT(tree_windows, sanitized_share(30, 2));
+  EXPECT_GT(trees, sanitized_share(40, 4));
+  EXPECT_GE(tree_windows * 4, trees * 3);  // most decided in a window, not on the whole domain
   // a wall between two close pins: the way round is far longer than the first window allows, so
   // the window widens until it is proven (or whole), with the whole domain's length
   const geom::Box domain{{0, 0}, {4000, 4000}};
@@ -570,10 +571,10 @@ TEST(NetRouter, ThreadsGiveTheSameOutcomes) {
   EXPECT_EQ(failed, 0);
   // both ways were taken: attempts kept and attempts tried again; and the rip-up and explaining
   // phases ran
-  EXPECT_GT(redone, 100);
-  EXPECT_GT(speculated - redone, 1000);
-  EXPECT_GT(rips, 50);
-  EXPECT_GT(unrouted, 50);
+  EXPECT_GT(redone, sanitized_share(100, 5));
+  EXPECT_GT(speculated - redone, sanitized_share(1000, 5));
+  EXPECT_GT(rips, sanitized_share(50, 5));
+  EXPECT_GT(unrouted, sanitized_share(50, 5));
 }
 
 // A stop asked from any thread ends the run with NetRouterStopped.
