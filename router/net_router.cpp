@@ -41,6 +41,13 @@ Box box_of(std::span<const Point> pts) {
 }
 
 
+// w clipped to dom (both closed; w meets dom).
+Box clipped(Box w, const Box& dom) {
+  w.lo.x = std::max(w.lo.x, dom.lo.x), w.lo.y = std::max(w.lo.y, dom.lo.y);
+  w.hi.x = std::min(w.hi.x, dom.hi.x), w.hi.y = std::min(w.hi.y, dom.hi.y);
+  return w;
+}
+
 // Calls f(p, q) for each segment of the polyline (one of length zero for a single point).
 template <class F>
 void for_segments(std::span<const Point> line, F&& f) {
@@ -310,11 +317,7 @@ void NetSpace::set_wires(std::size_t net, const Lines& wires) {
 
 geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel level, std::optional<geom::Box> window) const {
   const Index& ix = *index_;
-  Box dom = domain_;
-  if (window) {
-    dom.lo.x = std::max(dom.lo.x, window->lo.x), dom.lo.y = std::max(dom.lo.y, window->lo.y);
-    dom.hi.x = std::min(dom.hi.x, window->hi.x), dom.hi.y = std::min(dom.hi.y, window->hi.y);
-  }
+  const Box dom = window ? clipped(*window, domain_) : domain_;
   const bool plain = level == NetSpaceLevel::Plain;
   if (plain && dom == domain_) {  // the blockages as they are
     geom::NormalizedObstacles n;
@@ -601,10 +604,7 @@ Box NetRouter::first_window(std::size_t net) const {
   const Box& dom = space_.domain();
   if (pts.empty() || !options_.windows) return dom;
   const Box hp = box_of(pts);
-  Box w = geom::grown_box(hp, first_margin(space_.net(net), hp, space_.blockage_clearance(), space_.net_clearance()));
-  w.lo.x = std::max(w.lo.x, dom.lo.x), w.lo.y = std::max(w.lo.y, dom.lo.y);
-  w.hi.x = std::min(w.hi.x, dom.hi.x), w.hi.y = std::min(w.hi.y, dom.hi.y);
-  return w;
+  return clipped(geom::grown_box(hp, first_margin(space_.net(net), hp, space_.blockage_clearance(), space_.net_clearance())), dom);
 }
 
 NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, NetSpaceLevel level) const {
@@ -631,10 +631,7 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
   }
   while (true) {
     if (options_.stop && options_.stop()) throw NetRouterStopped();
-    Box w = geom::grown_box(hp, m);
-    w.lo.x = std::max(w.lo.x, dom.lo.x), w.lo.y = std::max(w.lo.y, dom.lo.y);
-    w.hi.x = std::min(w.hi.x, dom.hi.x), w.hi.y = std::min(w.hi.y, dom.hi.y);
-    if (!options_.windows) w = dom;
+    const Box w = options_.windows ? clipped(geom::grown_box(hp, m), dom) : dom;
     const bool whole = w == dom;
     const auto t0 = Clock::now();
     geom::NormalizedObstacles obs;
@@ -715,11 +712,12 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
 }
 
 void NetRouter::place(std::size_t i, NetAttempt a) {
-  const bool track = options_.threads > 1;
+  const bool track = options_.threads > 1;  // with one thread nothing reads the log or races
   std::unique_lock lock(space_mutex_, std::defer_lock);
-  if (track) lock.lock();
-  if (track)
+  if (track) {
+    lock.lock();
     for (const Box& b : space_.wire_boxes(i)) changed_.push_back({b, i});
+  }
   out_[i].routed = a.routed;
   out_[i].wires = a.routed ? std::move(a.wires) : Lines{};
   out_[i].code = a.routed ? std::string() : std::move(a.code);

@@ -186,6 +186,29 @@ std::vector<router::CheckNet> check_nets(std::span<const router::NetPins> ns, co
   return nets;
 }
 
+// The layouts of the window and thread tests: 60-120 rectangles apart on 2,000 x 2,000.
+struct BoxLayout {
+  std::vector<geom::Box> boxes;
+  geom::NormalizedObstacles norm;
+};
+BoxLayout box_layout(std::mt19937& rng) {
+  BoxLayout L;
+  L.boxes = random_boxes_apart(rng, 60 + static_cast<int>(rng() % 60), 10, 1900, 120);
+  L.norm = geom::normalize_obstacles(box_polygons(L.boxes), geom::Box{{0, 0}, {2000, 2000}});
+  return L;
+}
+
+// A free point of a box_layout drawn within r of c (along each axis, clamped to the layout), in
+// at most `tries` draws.
+std::optional<Point> free_near(std::mt19937& rng, const router::L1Router& plain, Point c, int r, int tries) {
+  for (int t = 0; t < tries; ++t) {
+    const Point p{static_cast<geom::Coord>(std::clamp<int>(c.x - r + static_cast<int>(rng() % static_cast<unsigned>(2 * r + 1)), 0, 2000)),
+                  static_cast<geom::Coord>(std::clamp<int>(c.y - r + static_cast<int>(rng() % static_cast<unsigned>(2 * r + 1)), 0, 2000))};
+    if (plain.is_free(p)) return p;
+  }
+  return std::nullopt;
+}
+
 // The L1 length of an outcome's wires.
 std::int64_t l1_len(const router::NetOutcome& o) {
   std::int64_t n = 0;
@@ -282,9 +305,7 @@ TEST(NetRouter, WindowsGiveTheWholeLayoutsLengths) {
   int failed = 0, compared = 0, widened = 0, trees = 0, tree_windows = 0;
   for (int seed = 1; seed <= sanitized_share(60, 4); ++seed) {
     std::mt19937 rng(static_cast<unsigned>(900000 + seed));
-    const geom::Box domain{{0, 0}, {2000, 2000}};
-    const std::vector<geom::Box> boxes = random_boxes_apart(rng, 60 + static_cast<int>(rng() % 60), 10, 1900, 120);
-    const geom::NormalizedObstacles norm = geom::normalize_obstacles(box_polygons(boxes), domain);
+    const auto [boxes, norm] = box_layout(rng);
     router::L1Router plain(norm.domain, norm.obstacles);
     auto free_point = [&](Point c, int r) {
       for (int t = 0; t < 1000; ++t) {
@@ -323,15 +344,8 @@ TEST(NetRouter, WindowsGiveTheWholeLayoutsLengths) {
     // domain's (measured by the route function on the space it was given, last call kept)
     {
       std::vector<router::NetPins> tree{{"t", {}}};
-      for (int j = 0, pins = 3 + static_cast<int>(rng() % 4); j < pins; ++j)  // free points within 100 of c
-        for (int t = 0; t < 1000; ++t) {
-          const Point p{static_cast<geom::Coord>(std::clamp<int>(c.x - 100 + static_cast<int>(rng() % 201), 0, 2000)),
-                        static_cast<geom::Coord>(std::clamp<int>(c.y - 100 + static_cast<int>(rng() % 201), 0, 2000))};
-          if (plain.is_free(p)) {
-            tree[0].pins.push_back(Polygon{{p}, {}});
-            break;
-          }
-        }
+      for (int j = 0, pins = 3 + static_cast<int>(rng() % 4); j < pins; ++j)
+        if (const auto p = free_near(rng, plain, c, 100, 1000)) tree[0].pins.push_back(Polygon{{*p}, {}});
       std::vector<std::optional<std::int64_t>> got;
       const auto fn = [&](std::size_t, const router::NetPins& net, const geom::NormalizedObstacles& obs) {
         router::L1Router r(obs.domain, obs.obstacles);
@@ -535,9 +549,7 @@ TEST(NetRouter, ThreadsGiveTheSameOutcomes) {
   }
   for (int seed = 1; seed <= sanitized_share(30, 3); ++seed) {
     std::mt19937 rng(static_cast<unsigned>(720000 + seed));
-    const geom::Box domain{{0, 0}, {2000, 2000}};
-    const std::vector<geom::Box> boxes = random_boxes_apart(rng, 60 + static_cast<int>(rng() % 60), 10, 1900, 120);
-    const geom::NormalizedObstacles norm = geom::normalize_obstacles(box_polygons(boxes), domain);
+    const geom::NormalizedObstacles norm = box_layout(rng).norm;
     router::L1Router plain(norm.domain, norm.obstacles);
     std::vector<router::NetPins> nets;
     for (int k = 0; k < 40; ++k) {
@@ -545,14 +557,7 @@ TEST(NetRouter, ThreadsGiveTheSameOutcomes) {
       router::NetPins np;
       np.name = "m" + std::to_string(k);
       for (int j = 0, pins = 2 + static_cast<int>(rng() % 3); j < pins; ++j)
-        for (int t = 0; t < 100; ++t) {
-          const Point p{static_cast<geom::Coord>(std::clamp<int>(c.x - 120 + static_cast<int>(rng() % 241), 0, 2000)),
-                        static_cast<geom::Coord>(std::clamp<int>(c.y - 120 + static_cast<int>(rng() % 241), 0, 2000))};
-          if (plain.is_free(p)) {
-            np.pins.push_back(Polygon{{p}, {}});
-            break;
-          }
-        }
+        if (const auto p = free_near(rng, plain, c, 120, 100)) np.pins.push_back(Polygon{{*p}, {}});
       nets.push_back(std::move(np));
     }
     const router::NetRules rules{static_cast<std::int64_t>(rng() % 9), static_cast<std::int64_t>(rng() % 9)};
