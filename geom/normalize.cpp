@@ -397,6 +397,21 @@ Box grown_box(const Box& b, std::int64_t r) {
   return {{c(std::int64_t{b.lo.x} - r), c(std::int64_t{b.lo.y} - r)}, {c(std::int64_t{b.hi.x} + r), c(std::int64_t{b.hi.y} + r)}};
 }
 
+Box bounding_box(std::span<const Point> pts) {
+  Box b{pts[0], pts[0]};
+  for (const Point p : pts) {
+    b.lo.x = std::min(b.lo.x, p.x), b.lo.y = std::min(b.lo.y, p.y);
+    b.hi.x = std::max(b.hi.x, p.x), b.hi.y = std::max(b.hi.y, p.y);
+  }
+  return b;
+}
+
+Box clipped_box(Box w, const Box& dom) {
+  w.lo.x = std::max(w.lo.x, dom.lo.x), w.lo.y = std::max(w.lo.y, dom.lo.y);
+  w.hi.x = std::min(w.hi.x, dom.hi.x), w.hi.y = std::min(w.hi.y, dom.hi.y);
+  return w;
+}
+
 Ring convex_hull(std::vector<Point> pts) {
   // monotone chain, exact
   std::sort(pts.begin(), pts.end());

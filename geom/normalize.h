@@ -98,6 +98,12 @@ std::vector<Polygon> square_grown(std::span<const Polygon> polygons, Coord r);
 // The box grown by r >= 0 on every side, clamped to the coordinate limit.
 Box grown_box(const Box& box, std::int64_t r);
 
+// The bounding box of points (at least one).
+Box bounding_box(std::span<const Point> points);
+
+// w clipped to dom (both closed; w must meet dom).
+Box clipped_box(Box w, const Box& dom);
+
 // The convex hull of the points: counter-clockwise from the lexicographically smallest, collinear
 // and repeated points dropped (exact; fewer than 3 points when they are collinear).
 Ring convex_hull(std::vector<Point> points);

@@ -31,22 +31,8 @@ using geom::Ring;
 using Lines = std::vector<std::vector<Point>>;
 namespace bgi = boost::geometry::index;
 
-Box box_of(std::span<const Point> pts) {
-  Box b{pts[0], pts[0]};
-  for (const Point p : pts) {
-    b.lo.x = std::min(b.lo.x, p.x), b.lo.y = std::min(b.lo.y, p.y);
-    b.hi.x = std::max(b.hi.x, p.x), b.hi.y = std::max(b.hi.y, p.y);
-  }
-  return b;
-}
-
-
-// w clipped to dom (both closed; w meets dom).
-Box clipped(Box w, const Box& dom) {
-  w.lo.x = std::max(w.lo.x, dom.lo.x), w.lo.y = std::max(w.lo.y, dom.lo.y);
-  w.hi.x = std::min(w.hi.x, dom.hi.x), w.hi.y = std::min(w.hi.y, dom.hi.y);
-  return w;
-}
+Box box_of(std::span<const Point> pts) { return geom::bounding_box(pts); }
+Box clipped(const Box& w, const Box& dom) { return geom::clipped_box(w, dom); }
 
 // Calls f(p, q) for each segment of the polyline (one of length zero for a single point).
 template <class F>
@@ -412,9 +398,29 @@ geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel lev
     for (std::size_t k = 0; k < cut_boxes.size() && alone; ++k) alone = !boxes_meet(box, cut_boxes[k]);
     (alone ? pass : rest).push_back(comps.polys[c]);
   }
-  geom::NormalizedObstacles out = geom::normalize_obstacles(rest, dom);
-  // Passed-through components are disjoint from everything else: they meet no other piece's box
-  // (components of one union never touch).
+  // Passed-through components must be disjoint from everything else. They meet no other piece's
+  // box (components of one union never touch), but the union of the rest rounds sloped crossings
+  // outward (geom/normalize.h), and that growth may enter a passed component whose box meets the
+  // box of a component in the rest (random seed 901347: a grown pin square on a thin triangle's
+  // corner swung its long edge over the next triangle's vertex, 0.04 away; the wavefront then
+  // threw on the overlap). So a passed component whose box meets an obstacle of the union's
+  // output joins the rest, and the union is made again, until none does (disjoint closed boxes:
+  // disjoint sets). Almost always one pass.
+  geom::NormalizedObstacles out;
+  for (;;) {
+    out = geom::normalize_obstacles(rest, dom);
+    if (pass.empty()) break;
+    std::vector<Index::Entry> ob;
+    ob.reserve(out.obstacles.size());
+    for (std::size_t i = 0; i < out.obstacles.size(); ++i) ob.push_back({box_of(out.obstacles[i].outer), i});
+    const bgi::rtree<Index::Entry, bgi::rstar<16>> out_tree(ob.begin(), ob.end());
+    std::vector<Polygon> apart;
+    const std::size_t before = rest.size();
+    for (Polygon& p : pass)
+      (out_tree.qbegin(bgi::intersects(box_of(p.outer))) == out_tree.qend() ? apart : rest).push_back(std::move(p));
+    pass = std::move(apart);
+    if (rest.size() == before) break;
+  }
   for (Polygon& p : pass) out.obstacles.push_back(std::move(p));
   std::sort(out.obstacles.begin(), out.obstacles.end(),
             [](const Polygon& x, const Polygon& y) { return x.outer[0] < y.outer[0]; });

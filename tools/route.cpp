@@ -15,6 +15,7 @@
 #include <atomic>
 #include <chrono>
 #include <csignal>
+#include <set>
 #include <cstdio>
 #include <iostream>
 #include <span>
@@ -34,6 +35,7 @@
 #include "router/l1_router.h"
 #include "router/net_router.h"
 #include "router/oct_router.h"
+#include "router/tighten_nets.h"
 #include "router/version.h"
 #include "tools/cli.h"
 #include "tools/commands.h"
@@ -268,6 +270,59 @@ NetResult route_net_bends(const io::Layout& layout, const io::Net& net, const Be
   return r;
 }
 
+// Every net's pins as the net router takes them.
+std::vector<router::NetPins> net_pins(const io::Layout& layout) {
+  std::vector<router::NetPins> pins;
+  for (const io::Net& net : layout.nets) {
+    router::NetPins np;
+    np.name = net.name;
+    for (const io::Pin& pin : net.pins) np.pins.push_back(io::pin_polygon(pin));
+    pins.push_back(std::move(np));
+  }
+  return pins;
+}
+
+// route --tighten: a two-pin net with a <sketch> is routed by its sketch pulled taut in its class
+// among the obstacles the net router gives (so the other nets make room for it, ripped up when
+// they are in its way). A sketch that leaves the window asks for a larger one (ROUTE-0002, the
+// one code the net router widens the window for; the whole domain holds every sketch).
+router::NetAttempt sketch_attempt(const io::Layout& layout, const io::Net& net, const geom::NormalizedObstacles& obs,
+                                  const std::string& orientations) {
+  router::NetAttempt a;
+  const std::vector<geom::Point>& sk = net.sketch->points;
+  const geom::Box b = geom::bounding_box(sk), d = obs.domain;
+  if (b.lo.x < d.lo.x || b.lo.y < d.lo.y || b.hi.x > d.hi.x || b.hi.y > d.hi.y) {
+    a.code = "ROUTE-0002";
+    a.reason = "the sketch leaves the window";
+    return a;
+  }
+  const WireTightener wt(obs, orientations);
+  WireTightener::Result r = wt.run(sk);
+  if (r.taut.status != router::TightenStatus::Ok) {
+    a.code = "ROUTE-0018";
+    a.reason = "its <sketch> (" + layout.file + ":" + std::to_string(net.sketch->line) +
+               ") comes within the clearance of a blockage or of another net's wire or pin: its segment " +
+               std::to_string(r.taut.segment + 1) + " at or after " + point_text(r.taut.where);
+    return a;
+  }
+  if (r.no_staircase) {
+    a.code = "TIGHTEN-0004";
+    a.reason = no_staircase_reason(orientations) + " (the net's <sketch>)";
+    return a;
+  }
+  a.routed = true;
+  a.wires.push_back(std::move(r.points));
+  return a;
+}
+
+// "net "a"'s wire, net "b"'s pin", or "a blockage (grown by the clearance)" when no net is named.
+std::string clearance_blockers(const io::Layout& layout, const router::NetTightenOutcome& o) {
+  std::string out;
+  for (const std::size_t j : o.wire_blockers) out += (out.empty() ? "" : ", ") + ("net \"" + layout.nets[j].name + "\"'s wire");
+  for (const std::size_t j : o.pin_blockers) out += (out.empty() ? "" : ", ") + ("net \"" + layout.nets[j].name + "\"'s pin");
+  return out.empty() ? "a blockage (half the wire width plus the spacing)" : out;
+}
+
 }  // namespace
 
 void add_route(CLI::App& app, int& status) {
@@ -368,6 +423,7 @@ void add_route(CLI::App& app, int& status) {
     routes.tool = "taut " + std::string(router::version());
     std::size_t routed = 0;
     std::optional<router::NetRouterStats> net_stats;
+    std::optional<router::NetsTightenStats> tighten_stats;
     int net_threads = 1;
     auto t1 = Clock::now();
     if (bends) {
@@ -431,14 +487,30 @@ void add_route(CLI::App& app, int& status) {
       // Together (the default): every net among the others' wires and pins, with the clearance of
       // <rules> (router::NetRouter); --independent: each net alone among the blockages.
       std::vector<NetResult> together;
-      if (!args->independent) {
-        std::vector<router::NetPins> pins;
+      std::set<std::string> contractible_loop;  // --tighten: loop sketches that wind around no blockage
+      geom::Box net_domain = norm.domain;  // the net router's (grown when there is no boundary)
+      const std::string orient_word = octilinear ? "octilinear" : "rectilinear";
+      if (args->tighten && !args->independent) {
+        // A sketch that leaves free space is an input error, found before routing (nothing written).
+        std::optional<WireTightener> plain;
+        std::vector<Diagnostic> errors;
         for (const io::Net& net : layout->nets) {
-          router::NetPins np;
-          np.name = net.name;
-          for (const io::Pin& pin : net.pins) np.pins.push_back(io::pin_polygon(pin));
-          pins.push_back(std::move(np));
+          if (!follows_sketch(net)) continue;
+          if (!plain) plain.emplace(norm, orient_word);
+          const auto res = plain->run(net.sketch->points);
+          if (res.contractible) contractible_loop.insert(net.name);  // out of the together tightening
+          if (res.taut.status != router::TightenStatus::Ok)
+            errors.push_back(Diagnostic{Severity::Error, "TIGHTEN-0001", layout->file, net.sketch->line, 0,
+                                        WireTightener::failure_text(*layout, net.name, "sketch", net.sketch->points, res.taut)});
         }
+        if (!errors.empty()) {
+          print_diagnostics(errors);
+          status = kInvalid;
+          return;
+        }
+      }
+      if (!args->independent) {
+        std::vector<router::NetPins> pins = net_pins(*layout);
         router::NetRules rules;
         if (layout->rules) rules = {layout->rules->wire_width, layout->rules->spacing};
         geom::NormalizedObstacles space = norm;
@@ -446,6 +518,7 @@ void add_route(CLI::App& app, int& status) {
           const std::int64_t grow = (rules.wire_width + 1) / 2 + rules.spacing + std::max<std::int64_t>(rules.wire_width + rules.spacing, 1);
           space.domain = geom::grown_box(norm.domain, grow);
         }
+        net_domain = space.domain;
         std::vector<bool> steiner_ok(layout->nets.size());
         for (std::size_t i = 0; i < layout->nets.size(); ++i) {
           const io::Net& net = layout->nets[i];
@@ -462,6 +535,9 @@ void add_route(CLI::App& app, int& status) {
           net_threads = nro.threads;
           router::NetRouter nr(space.domain, space.obstacles, std::move(pins), rules, nro);
           nr.run([&](std::size_t i, const router::NetPins&, const geom::NormalizedObstacles& obs) {
+            const io::Net& net = layout->nets[i];
+            if (follows_sketch(net) && !WireTightener::is_loop(net.sketch->points))
+              return sketch_attempt(*layout, net, obs, orient_word);
             NetResult r;
             if (octilinear) {
               router::OctRouter rt(obs.domain, obs.obstacles);
@@ -506,12 +582,12 @@ void add_route(CLI::App& app, int& status) {
           status = kInvalid;
           return;
         }
-        if (args->tighten)
-          print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0013", layout->file, 0, 0,
-                                        "--tighten pulls each wire taut among the blockages alone: tightened wires "
-                                        "may come closer to other nets or to blockages than <rules> allows "
-                                        "(taut check finds where)"}},
-                            args->load.quiet);
+      } else if (args->tighten) {
+        print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0013", layout->file, 0, 0,
+                                      "--tighten with --independent pulls each wire taut among the blockages alone: "
+                                      "tightened wires may come closer to other nets or to blockages than <rules> "
+                                      "allows (taut check finds where)"}},
+                          args->load.quiet);
       }
       for (std::size_t ni = 0; ni < layout->nets.size(); ++ni) {
         const io::Net& net = layout->nets[ni];
@@ -540,8 +616,76 @@ void add_route(CLI::App& app, int& status) {
         }
         routes.routes.push_back(std::move(r.route));
       }
-      if (args->tighten) {
-        // Every routed wire pulled taut in its class and written with the fewest links (its L1 or
+      if (args->tighten && !args->independent) {
+        // Every net tightened together with the clearance of <rules> (router::NetsTightener): each
+        // wire pulled taut in its class among the grown blockages and the other nets' grown wires
+        // and pins, round after round until no wire shortens; loop sketches join in.
+        router::NetRules rules;
+        if (layout->rules) rules = {layout->rules->wire_width, layout->rules->spacing};
+        router::NetSpace ts(net_domain, norm.obstacles, net_pins(*layout), rules);
+        std::vector<router::NetLines> wires(layout->nets.size());
+        std::vector<char> sketch(layout->nets.size(), 0);
+        for (std::size_t i = 0; i < layout->nets.size(); ++i) {
+          const io::Net& net = layout->nets[i];
+          if (follows_sketch(net) && WireTightener::is_loop(net.sketch->points)) {
+            if (!contractible_loop.count(net.name)) wires[i] = {net.sketch->points};
+            sketch[i] = 1;
+          } else if (routes.routes[i].status == "routed") {
+            for (const io::Wire& w : routes.routes[i].wires) wires[i].push_back(w.points);
+          }
+        }
+        router::NetsTightenOptions o;
+        o.orientations = tighten_orientations(orient_word);
+        o.stop = stop;
+        router::NetsTightener nt(ts, o);
+        const std::vector<router::NetTightenOutcome> outs = nt.run(wires, sketch);
+        tighten_stats = nt.stats();
+        for (std::size_t i = 0; i < layout->nets.size(); ++i) {
+          const io::Net& net = layout->nets[i];
+          io::Route& route = routes.routes[i];
+          router::NetTightenOutcome oc = outs[i];
+          const bool was_routed = route.status == "routed";
+          using St = router::NetTightenOutcome::Status;
+          if (sketch[i] && (contractible_loop.count(net.name) || oc.status == St::Contractible ||
+                            (oc.status == St::NotFree && oc.round == 0) || oc.untightened)) {
+            if (contractible_loop.count(net.name)) oc.status = St::Contractible;
+            const bool stuck = oc.status != St::Contractible && oc.status != St::NoStaircase && oc.round > 0;
+            std::string code = oc.status == St::Contractible ? "TIGHTEN-0005"
+                               : oc.status == St::NoStaircase ? "TIGHTEN-0004"
+                               : stuck                        ? "TIGHTEN-0010"
+                                                              : "ROUTE-0018";
+            std::string reason =
+                oc.status == St::Contractible ? std::string("the loop sketch winds around no blockage: it can be pulled to a point")
+                : oc.status == St::NoStaircase ? no_staircase_reason(orient_word) + " (the net's <sketch>)"
+                : stuck ? "its loop sketch could not be pulled taut: the other nets' wires came to exactly the clearance on "
+                          "both sides of it (at or after " + point_text(oc.lift.where) + "), leaving it no room"
+                        : "the loop <sketch> comes within the clearance of " + clearance_blockers(*layout, oc) +
+                              " at or after " + point_text(oc.lift.where);
+            if (was_routed) --routed;
+            route = io::Route{};
+            route.net = net.name;
+            route.status = "failed";
+            route.reason = reason;
+            print_diagnostics({Diagnostic{Severity::Warning, code, layout->file, net.sketch->line, 0,
+                                          "net \"" + net.name + "\": " + reason}},
+                              args->load.quiet);
+            continue;
+          }
+          if (wires[i].empty()) continue;
+          if (!was_routed) ++routed;
+          route = io::Route{};
+          route.net = net.name;
+          route.status = "routed";
+          route.length = io::format_total_length(wires[i]);
+          long bends = 0;
+          for (const auto& w : wires[i]) {
+            bends += geom::count_bends(w);
+            route.wires.push_back(io::Wire{w});
+          }
+          route.bends = bends;
+        }
+      } else if (args->tighten) {
+        // --independent: every routed wire pulled taut in its class and written with the fewest links (its L1 or
         // octilinear length cannot grow: the routed wire is a staircase of the class); a net with a
         // sketch gets its sketch tightened instead, which fixes its class.
         const WireTightener wt(norm, octilinear ? "octilinear" : "rectilinear");
@@ -574,12 +718,19 @@ void add_route(CLI::App& app, int& status) {
             wires.push_back(io::Wire{res.points});
             if (route.status != "routed") ++routed;
           } else if (route.status == "routed") {
-            for (const io::Wire& w : route.wires) {
-              const auto res = wt.run(w.points);
+            // cut at the tree's joints first (branch points, pins passed), which stay where they are
+            router::NetLines lines;
+            for (const io::Wire& w : route.wires) lines.push_back(w.points);
+            std::vector<geom::Polygon> pins;
+            for (const io::Pin& pin : net.pins) pins.push_back(io::pin_polygon(pin));
+            std::vector<char> frozen;
+            lines = router::cut_at_joints(lines, pins, &frozen);
+            for (std::size_t k = 0; k < lines.size(); ++k) {
+              const auto res = frozen[k] ? WireTightener::Result{} : wt.run(lines[k]);
               // a routed wire is in free space; when no staircase is found, or the one found has
               // more bends (its fewest links not proven), the routed one stays
-              const bool better = !res.points.empty() && geom::count_bends(res.points) <= geom::count_bends(w.points);
-              wires.push_back(better ? io::Wire{res.points} : w);
+              const bool better = !res.points.empty() && geom::count_bends(res.points) <= geom::count_bends(lines[k]);
+              wires.push_back(io::Wire{better ? res.points : lines[k]});
             }
           } else {
             continue;
@@ -631,6 +782,8 @@ void add_route(CLI::App& app, int& status) {
                          {"speculative_redone", net_stats->redone},
                          {"space_seconds", net_stats->space_seconds},
                          {"path_seconds", net_stats->route_seconds}};
+    if (tighten_stats)
+      j["tighten"] = together_stats_json(*tighten_stats);
     if (!args->stats.empty()) stats = j.dump(2) + "\n";
     if (!write_output(args->out, xml) || (!args->svg.empty() && !write_output(args->svg, svg)) ||
         (!args->stats.empty() && !write_output(args->stats, stats))) {
@@ -651,6 +804,10 @@ void add_route(CLI::App& app, int& status) {
         std::cerr << times;
       }
       std::cerr << '\n';
+      if (tighten_stats)
+        std::cerr << "tightened together: " << tighten_stats->moved << " wires moved in " << tighten_stats->rounds
+                  << " rounds" << (tighten_stats->capped ? " (capped)" : "") << ", " << tighten_stats->kept
+                  << " kept as routed (in a gap of exactly the clearance, or no staircase)\n";
       std::cerr << args->file << ": routed " << routed << " of " << layout->nets.size() << " nets"
                 << (failed ? " (" + std::to_string(failed) + " not routed, see above)" : std::string())
                 << "; wrote " << args->out << '\n';

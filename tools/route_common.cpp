@@ -108,58 +108,21 @@ std::string why_not_free(const io::Layout& layout, geom::Point p) {
          "blockage edge flush with the boundary";
 }
 
+nlohmann::ordered_json together_stats_json(const router::NetsTightenStats& s) {
+  return {{"rounds", s.rounds},         {"capped", s.capped},
+          {"wires_tightened", s.tightenings}, {"moved", s.moved},
+          {"kept", s.kept},             {"kept_shape_pin", s.kept_shape_pin},
+          {"windows", s.windows},       {"whole_domain_windows", s.whole}};
+}
+
+router::TightenOrientations tighten_orientations(const std::string& orientations) {
+  return orientations == "octilinear"    ? router::TightenOrientations::Octilinear
+         : orientations == "rectilinear" ? router::TightenOrientations::Rectilinear
+                                         : router::TightenOrientations::Any;
+}
+
 WireTightener::WireTightener(const geom::NormalizedObstacles& norm, const std::string& orientations)
-    : orientations_(orientations), tri_(geom::triangulate_free_space(norm.domain, norm.obstacles)) {
-  if (!tri_.ok()) {
-    std::string why;
-    for (const Diagnostic& d : tri_.diagnostics()) why += " [" + d.code + "] " + d.message;
-    throw std::logic_error("the free space of normalized blockages could not be triangulated:" + why);
-  }
-  tight_ = std::make_unique<router::Tightener>(tri_);
-  if (orientations_ != "any") sb_ = std::make_unique<router::StaircaseBuilder>(norm.domain, norm.obstacles);
-}
-
-bool WireTightener::is_loop(std::span<const geom::Point> line) {
-  if (line.size() < 3 || line.front() != line.back()) return false;
-  for (geom::Point p : line)
-    if (p != line.front()) return true;
-  return false;
-}
-
-WireTightener::Result WireTightener::run(std::span<const geom::Point> line) const {
-  Result r;
-  if (is_loop(line)) {
-    r.loop = true;
-    const router::Tightener::Loop l = tight_->tighten_loop(line);
-    r.taut.status = l.status;
-    r.taut.segment = l.segment;
-    r.taut.where = l.where;
-    r.taut.sleeve = l.band;
-    if (l.status != router::TightenStatus::Ok) return r;
-    if (l.contractible) {
-      r.contractible = true;
-      return r;
-    }
-    r.taut.points = l.points;
-  } else {
-    r.taut = tight_->tighten(line);
-    if (r.taut.status != router::TightenStatus::Ok) return r;
-  }
-  r.points = r.taut.points;
-  if (sb_) {
-    const auto style = orientations_ == "octilinear" ? router::StaircaseStyle::Octilinear
-                                                     : router::StaircaseStyle::Rectilinear;
-    router::COriented c = router::c_oriented(*tight_, *sb_, r.taut.points, style);
-    if (c.points.empty()) {
-      r.no_staircase = true;
-      r.points.clear();
-      return r;
-    }
-    r.points = std::move(c.points);
-  }
-  if (r.points.size() == 1) r.points.push_back(r.points[0]);
-  return r;
-}
+    : st_(norm, tighten_orientations(orientations)) {}
 
 std::string WireTightener::failure_text(const io::Layout& layout, const std::string& net, const std::string& what,
                                         std::span<const geom::Point> line, const router::Tightened& r,

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "geom/normalize.h"
 #include "geom/root2.h"
 #include "io/layout.h"
@@ -15,6 +17,7 @@
 #include "router/bend_router.h"
 #include "router/l1_router.h"
 #include "router/tighten.h"
+#include "router/tighten_nets.h"
 
 namespace taut::cli {
 
@@ -52,37 +55,31 @@ std::string point_text(geom::Point p);
 // value to 12 significant digits, then the exact form).
 std::string length_text(const geom::Root2& length);
 
-// Tightening as `tighten` and `route --tighten` do it: the free-space triangulation of the
-// normalized obstacles, the tightener, and for rectilinear or octilinear output the staircase
-// builder (router/tighten.h).
+// Tightening as `tighten` and `route --tighten` do it (router::SpaceTightener), with the
+// orientations named as on the command line, and the words of TIGHTEN-0001.
 class WireTightener {
  public:
   // orientations: "any", "rectilinear" or "octilinear".
   WireTightener(const geom::NormalizedObstacles& norm, const std::string& orientations);
-  struct Result {
-    router::Tightened taut;           // the lift and the Euclidean shortest path of the class
-    std::vector<geom::Point> points;  // in the orientations (a repeated point for a one-point wire)
-    bool no_staircase = false;        // c-oriented: no lattice staircase in the class (TIGHTEN-0004)
-    bool loop = false;                // the line was closed: `points` is the shortest closed loop
-    bool contractible = false;        // a loop that winds around nothing (TIGHTEN-0005)
-  };
-  // A closed line (last point = first, around some other point) is a loop: the shortest closed
-  // loop of its free homotopy class (Tightener::tighten_loop).
-  Result run(std::span<const geom::Point> line) const;
-  static bool is_loop(std::span<const geom::Point> line);
+  using Result = router::SpaceTightener::Result;
+  Result run(std::span<const geom::Point> line) const { return st_.run(line); }
+  static bool is_loop(std::span<const geom::Point> line) { return router::SpaceTightener::is_loop(line); }
   // The TIGHTEN-0001 message for a failed lift of `line` (what: "sketch" or "wire").
   // clearance: the growth of the blockages (0: none), named in the message.
   static std::string failure_text(const io::Layout& layout, const std::string& net, const std::string& what,
                                   std::span<const geom::Point> line, const router::Tightened& r,
                                   std::int64_t clearance = 0);
-  const geom::FreeSpaceTriangulation& triangulation() const { return tri_; }
+  const geom::FreeSpaceTriangulation& triangulation() const { return st_.triangulation(); }
 
  private:
-  std::string orientations_;
-  geom::FreeSpaceTriangulation tri_;
-  std::unique_ptr<router::Tightener> tight_;
-  std::unique_ptr<router::StaircaseBuilder> sb_;
+  router::SpaceTightener st_;
 };
+
+// The statistics of tightening the nets together, as --stats writes them.
+nlohmann::ordered_json together_stats_json(const router::NetsTightenStats& s);
+
+// "any", "rectilinear" or "octilinear" as router::TightenOrientations.
+router::TightenOrientations tighten_orientations(const std::string& orientations);
 
 // The reason written for a net with no lattice staircase in its class (TIGHTEN-0004).
 std::string no_staircase_reason(const std::string& orientations);

@@ -25,6 +25,8 @@
 #include "io/svg.h"
 #include "router/minlink.h"
 #include "router/tighten.h"
+#include "router/tighten_nets.h"
+#include "geom/predicates.h"
 #include "router/version.h"
 #include "tools/cli.h"
 #include "tools/commands.h"
@@ -172,6 +174,34 @@ void add_tighten(CLI::App& app, int& status) {
     }
     const WireTightener wt(norm, orientations);
     std::unique_ptr<router::MinLinker> min_linker;  // made on the first open wire under --min-link
+
+    // --clearance: every net tightened together (router::NetsTightener), each among the blockages
+    // grown by ceil(w/2) + s and the other nets' wires and pins grown by max(w + s, 1), round after
+    // round until no wire shortens: no crossing is made and the clearance is kept between nets.
+    std::vector<router::NetLines> together(layout->nets.size());
+    std::vector<router::NetTightenOutcome> together_out;
+    std::optional<router::NetsTightenStats> together_stats;
+    std::unique_ptr<router::NetSpace> net_space;
+    if (args->clearance) {
+      router::NetRules rules{width, spacing};
+      geom::Box domain = io::routing_domain(*layout, extra);
+      if (!layout->boundary) domain = geom::grown_box(domain, grow + std::max<std::int64_t>(width + spacing, 1));
+      std::vector<router::NetPins> pins;
+      for (const io::Net& net : layout->nets) {
+        router::NetPins np;
+        np.name = net.name;
+        for (const io::Pin& pin : net.pins) np.pins.push_back(io::pin_polygon(pin));
+        pins.push_back(std::move(np));
+      }
+      const geom::NormalizedObstacles plain = routing_obstacles(*layout, extra);
+      net_space = std::make_unique<router::NetSpace>(domain, plain.obstacles, std::move(pins), rules);
+      for (std::size_t i = 0; i < layout->nets.size(); ++i) together[i] = inputs[i].lines;
+      router::NetsTightenOptions o;
+      o.orientations = tighten_orientations(orientations);
+      router::NetsTightener nt(*net_space, o);
+      together_out = nt.run(together, std::vector<char>(layout->nets.size(), 1));
+      together_stats = nt.stats();
+    }
     const auto t1 = Clock::now();
 
     io::Routes routes;
@@ -199,7 +229,85 @@ void add_tighten(CLI::App& app, int& status) {
       st.source = in.source;
       std::vector<std::vector<geom::Point>> out_lines;
       bool ok = true, no_staircase = false, contractible = false;
-      for (std::size_t k = 0; k < in.lines.size(); ++k) {
+      if (args->clearance) {
+        using St = router::NetTightenOutcome::Status;
+        const router::NetTightenOutcome& oc = together_out[i];
+        st.loop = oc.loop;
+        if (oc.status == St::NotFree && oc.round == 0) {
+          // the input is not in its net's space: the piece that failed, and the input line it is on
+          const std::vector<geom::Point>& piece = together[i][oc.wire];
+          std::size_t k = 0;
+          for (std::size_t c = 0; c < in.lines.size(); ++c)
+            for (std::size_t v = 0; v + 1 < in.lines[c].size(); ++v)
+              if (piece.size() >= 2 && geom::on_segment(piece[0], in.lines[c][v], in.lines[c][v + 1]) &&
+                  geom::on_segment(piece[1], in.lines[c][v], in.lines[c][v + 1])) {
+                k = c;
+                goto found;
+              }
+        found:
+          const std::string what = in.source == "sketch" ? "sketch" : "wire";
+          std::string text = WireTightener::failure_text(*layout, net.name, what, piece, oc.lift, grow);
+          if (!oc.wire_blockers.empty() || !oc.pin_blockers.empty()) {  // the other nets it comes near
+            std::string others;
+            for (const std::size_t j : oc.wire_blockers)
+              others += (others.empty() ? "" : ", ") + ("net \"" + layout->nets[j].name + "\"'s " + (inputs[j].source == "sketch" ? "sketch" : "wire"));
+            for (const std::size_t j : oc.pin_blockers)
+              others += (others.empty() ? "" : ", ") + ("net \"" + layout->nets[j].name + "\"'s pin");
+            const std::string within = "within the clearance of " + others + " (w + s = " +
+                                       std::to_string(net_space->net_clearance()) + " DBU)";
+            text = "net \"" + net.name + "\": the " + what +
+                   (oc.lift.status == router::TightenStatus::StartNotFree
+                        ? " starts at " + point_text(piece.front()) + ", which lies " + within
+                        : "'s segment " + std::to_string(oc.lift.segment + 1) + " (" + point_text(piece[oc.lift.segment]) +
+                              " to " + point_text(piece[oc.lift.segment + 1]) + ") comes " + within + " at or after " +
+                              point_text(oc.lift.where)) +
+                   ": sketches of different nets must keep that apart, as they say which way each passes the other";
+          }
+          errors.push_back(Diagnostic{Severity::Error, "TIGHTEN-0001", layout->file, in.line_numbers[k], 0, text});
+          continue;
+        }
+        contractible = oc.status == St::Contractible;
+        no_staircase = oc.untightened && oc.status == St::NoStaircase;
+        if (oc.untightened && !no_staircase) {
+          route.status = "failed";
+          route.reason = "its sketch could not be pulled taut: the other nets' wires came to exactly the clearance "
+                         "on both sides of it (at or after " + point_text(oc.lift.where) + "), leaving it no room";
+          print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0010", layout->file, in.line_numbers[0], 0,
+                                        "net \"" + net.name + "\": " + *route.reason}},
+                            args->load.quiet);
+          routes.routes.push_back(std::move(route));
+          continue;
+        }
+        st.before = oc.length_before;
+        st.after = oc.length_after;
+        st.taut = oc.length_taut;
+        st.bends_before = oc.bends_before;
+        st.bends_after = oc.bends_after;
+        st.sleeve = oc.sleeve;
+        st.crossings = oc.crossings;
+        if (!contractible && !no_staircase) out_lines = together[i];
+        if (args->min_link && !contractible && !no_staircase && !st.loop) {
+          // the minimum-link path of each wire's class among what its net was tightened among
+          try {
+            const router::SpaceTightener sp(net_space->obstacles(i, router::NetSpaceLevel::Full),
+                                            router::TightenOrientations::Any);
+            const router::MinLinker ml(sp.triangulation());
+            for (const auto& w : out_lines) {
+              const router::Tightened r = sp.tightener().tighten(w);
+              if (r.status != router::TightenStatus::Ok) throw std::runtime_error(router::tighten_status_text(r.status));
+              st.min_link.push_back(ml.path(r.points));
+              st.min_links += st.min_link.back().links();
+            }
+          } catch (const std::exception& e) {
+            st.min_link_failed = true;
+            print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0008", layout->file, in.line_numbers[0], 0,
+                                          "net \"" + net.name + "\": no minimum-link path was found (" + e.what() +
+                                              "); its min_links is null"}},
+                              args->load.quiet);
+          }
+        }
+      }
+      for (std::size_t k = 0; k < in.lines.size() && !args->clearance; ++k) {
         const auto& line = in.lines[k];
         WireTightener::Result res = wt.run(line);
         const router::Tightened& r = res.taut;
@@ -343,6 +451,8 @@ void add_tighten(CLI::App& app, int& status) {
                       {"triangles", wt.triangulation().triangles().size()},
                       {"seconds", {{"prepare", std::chrono::duration<double>(t1 - t0).count()},
                                    {"tighten", std::chrono::duration<double>(t2 - t1).count()}}}};
+      if (together_stats)
+        j["tighten"]["together"] = together_stats_json(*together_stats);
       stats_text = j.dump(2) + "\n";
     }
     if (!write_output(args->out, xml) || (!args->svg.empty() && !write_output(args->svg, svg)) ||

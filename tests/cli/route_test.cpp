@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <csignal>
+#include <cstdio>
+#include <map>
 #include <optional>
 #include <set>
 
@@ -15,15 +17,20 @@
 #include "geom/predicates.h"
 #include "io/layout_geometry.h"
 #include "io/layout_reader.h"
+#include "oracle/homotopy.h"
 #include "oracle/l1_oracle.h"
+#include "router/tighten_nets.h"
+#include "support/taut_check.h"
 #include "support/layout_reference.h"
 #include "support/run.h"
+#include "support/net_layouts.h"
 #include "support/sanitized.h"
 
 namespace taut::test {
 namespace {
 
 using geom::Point;
+using Path = std::vector<Point>;
 const std::string kDesigns = std::string(TAUT_SOURCE_DIR) + "/designs/";
 const std::string kDemo = kDesigns + "demo.xml";
 
@@ -50,6 +57,14 @@ std::int64_t expect_wire(const oracle::L1Reference& ref, const std::vector<Point
     EXPECT_EQ(*checked, len);
   }
   return len;
+}
+
+// The way from a to b along a net's wires (a tree of polylines, cut at its joints first), as one
+// polyline; nullopt when they do not join a and b.
+std::optional<Path> way_along(const std::vector<Path>& wires, Point a, Point b) {
+  // a and b may lie inside a wire (a wire's end on another, a cut made by the tightening): cut there
+  const std::vector<geom::Polygon> ends{geom::Polygon{{a}, {}}, geom::Polygon{{b}, {}}};
+  return way_between(router::cut_at_joints(std::vector<std::vector<Point>>(wires.begin(), wires.end()), ends), a, b);
 }
 
 TEST(Path, DemoJsonIsShortestRectilinearAndFree) {
@@ -317,6 +332,94 @@ TEST(Route, GeneratedMultiPinLayoutsPassTheCheck) {
   EXPECT_EQ(bad.status, 2);
   EXPECT_NE(bad.err.find("CLI-0031"), std::string::npos) << bad.err;
   EXPECT_FALSE(file_exists(dir + "/bad.xml"));
+}
+
+// route --tighten with the nets together (issue #5, "Clearance"): every wire is pulled taut among
+// the grown blockages and the other nets' grown wires and pins, so the written layout still passes
+// the independent checker with the clearance of <rules>, every net is no longer (in its metric)
+// and has no more bends than routed, and each wire keeps its class among the blockages (the
+// homotopy words of the way between its ends along the routed wires). A two-pin net with a
+// <sketch> is routed by its tightened sketch (the others make room for it).
+TEST(Route, TightenTogetherKeepsTheRules) {
+  const std::string dir = temp_dir("route_tighten_together");
+  int nets = 0, fewer_bends = 0;
+  for (const std::string kind : {"rects", "maze", "degenerate", "polygons"})
+    for (const std::string orient : {"rectilinear", "octilinear"}) {
+      if (kSanitized && (kind == std::string("maze") || kind == std::string("polygons"))) continue;  // a sample there
+      SCOPED_TRACE(kind + " " + orient);
+      const std::string in = dir + "/" + kind + ".xml", plain = dir + "/" + kind + "." + orient + ".plain.xml",
+                        tight = dir + "/" + kind + "." + orient + ".tight.xml", st = dir + "/s.json";
+      ASSERT_EQ(run_taut({"gen", kind, "--size", "1500", "--nets", "12", "--pins", "2-6", "--width", "10", "--spacing", "6",
+                          "--seed", "7", "-o", in}).status, 0);
+      const auto p = run_taut({"route", in, "--orientations", orient, "-q", "-o", plain});
+      const auto t = run_taut({"route", in, "--orientations", orient, "--tighten", "-o", tight, "--stats", st});
+      ASSERT_EQ(p.status, t.status) << t.err;
+      EXPECT_EQ(t.err.find("ROUTE-0013"), std::string::npos) << t.err;
+      EXPECT_NE(t.err.find("tightened together: "), std::string::npos) << t.err;
+      const auto check = run_taut({"check", tight, "--json", "-q"});
+      EXPECT_EQ(check.status, 0) << check.out;
+      EXPECT_EQ(nlohmann::json::parse(check.out)["routes_check"]["clearance"], "ok");
+      const auto j = nlohmann::json::parse(read_text(st));
+      EXPECT_GE(j["tighten"]["rounds"].get<int>(), 1);
+      EXPECT_FALSE(j["tighten"]["capped"].get<bool>());
+      io::ReadResult a = io::read_layout(plain), b = io::read_layout(tight);
+      ASSERT_TRUE(a.layout && a.layout->routes && b.layout && b.layout->routes);
+      const Reference ref = reference_for(in);
+      const oracle::HomotopyWords words(ref.norm.domain, ref.norm.obstacles);
+      for (std::size_t i = 0; i < a.layout->routes->routes.size(); ++i) {
+        const io::Route& x = a.layout->routes->routes[i];
+        const io::Route& y = b.layout->routes->routes[i];
+        ASSERT_EQ(x.status, y.status) << x.net;
+        if (x.status != "routed") continue;
+        ++nets;
+        EXPECT_LE(*y.bends, *x.bends) << x.net;
+        fewer_bends += *y.bends < *x.bends;
+        std::vector<Path> xw, yw;
+        for (const io::Wire& w : x.wires) xw.push_back(w.points);
+        for (const io::Wire& w : y.wires) yw.push_back(w.points);
+        std::int64_t lx = 0, ly = 0;
+        std::pair<std::int64_t, std::int64_t> ox{0, 0}, oy{0, 0};
+        for (const Path& w : xw) lx += l1_length(w), ox.first += oct_length(w).first, ox.second += oct_length(w).second;
+        for (const Path& w : yw) ly += l1_length(w), oy.first += oct_length(w).first, oy.second += oct_length(w).second;
+        if (orient == std::string("rectilinear"))
+          EXPECT_LE(ly, lx) << x.net;
+        else  // a + b sqrt2 compared exactly: (a - a') <= (b' - b) sqrt2
+          EXPECT_TRUE(geom::Root2(oy.first, oy.second) <= geom::Root2(ox.first, ox.second)) << x.net;
+        // each tightened wire: the class of the way between its ends along the routed wires
+        for (const Path& w : yw) {
+          const std::optional<Path> way = way_along(xw, w.front(), w.back());
+          ASSERT_TRUE(way.has_value()) << x.net;
+          EXPECT_EQ(words.word(w), words.word(*way)) << x.net;
+        }
+      }
+    }
+  std::printf("%d routed nets tightened together, %d with fewer bends\n", nets, fewer_bends);
+  EXPECT_GT(nets, sanitized_share(60, 2));
+  EXPECT_GT(fewer_bends, sanitized_share(30, 2));
+
+  // a sketch below the box, where the shortest wire passes above it: followed, and the net that
+  // crosses its way (routed first: it is shorter) makes room
+  const std::string body =
+      "  <boundary x0=\"0\" y0=\"0\" x1=\"100\" y1=\"100\"/>\n  <rules wire-width=\"4\" spacing=\"2\"/>\n"
+      "  <blockage id=\"box\"><rect x0=\"40\" y0=\"30\" x1=\"60\" y1=\"60\"/></blockage>\n"
+      "  <net name=\"a\"><pin name=\"p\" x=\"10\" y=\"50\"/><pin name=\"q\" x=\"90\" y=\"50\"/>\n"
+      "    <sketch points=\"10,50 10,10 90,10 90,50\"/></net>\n"
+      "  <net name=\"b\"><pin name=\"p\" x=\"4\" y=\"20\"/><pin name=\"q\" x=\"20\" y=\"18\"/></net>\n";
+  const std::string in = layout_file("route_tighten_sketch", body), out = dir + "/sketch.xml";
+  const auto r = run_taut({"route", in, "--tighten", "-o", out, "--stats", dir + "/sketch.json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_GE(nlohmann::json::parse(read_text(dir + "/sketch.json"))["net_router"]["rip_ups"].get<int>(), 1);
+  EXPECT_EQ(run_taut({"check", out, "-q"}).status, 0);
+  const Reference ref = reference_for(in);
+  const oracle::HomotopyWords words(ref.norm.domain, ref.norm.obstacles);
+  io::ReadResult got = io::read_layout(out);
+  ASSERT_TRUE(got.layout && got.layout->routes);
+  const io::Route& a = got.layout->routes->routes[0];
+  ASSERT_EQ(a.wires.size(), 1u);
+  EXPECT_EQ(words.word(a.wires[0].points), words.word(got.layout->nets[0].sketch->points));
+  // with --independent the wires are tightened among the blockages alone, which is said
+  const auto ind = run_taut({"route", in, "--tighten", "--independent", "-o", dir + "/ind.xml"});
+  EXPECT_NE(ind.err.find("ROUTE-0013"), std::string::npos) << ind.err;
 }
 
 // --time-limit, SIGINT and SIGTERM stop a long run with exit status 4 and write nothing: the

@@ -358,10 +358,10 @@ TEST(Tighten, ClearanceFromBlockages) {
       "  <boundary x0=\"0\" y0=\"0\" x1=\"200\" y1=\"140\"/>\n"
       "  <rules wire-width=\"21\" spacing=\"9\" orientations=\"any\"/>\n"
       "  <blockage id=\"sq\"><rect x0=\"40\" y0=\"40\" x1=\"60\" y1=\"60\"/></blockage>\n"
-      "  <blockage id=\"tri\"><polygon points=\"120,60 160,60 140,95\"/></blockage>\n"
-      "  <net name=\"n\"><pin name=\"p\" x=\"5\" y=\"50\"/><pin name=\"q\" x=\"195\" y=\"70\"/>\n"
-      "    <sketch points=\"5,50 5,120 95,120 95,20 195,20 195,70\"/></net>\n"
-      "  <net name=\"ring\"><sketch points=\"90,30 190,30 190,130 90,130 90,30\"/></net>\n";
+      "  <blockage id=\"tri\"><polygon points=\"135,60 170,60 152,95\"/></blockage>\n"
+      "  <net name=\"n\"><pin name=\"p\" x=\"5\" y=\"50\"/><pin name=\"q\" x=\"195\" y=\"4\"/>\n"
+      "    <sketch points=\"5,50 5,120 82,120 82,4 195,4\"/></net>\n"
+      "  <net name=\"ring\"><sketch points=\"115,35 190,35 190,125 115,125 115,35\"/></net>\n";
   const std::string file = layout_file("tighten_clearance_in", body);
   const std::int64_t D = 21 + 2 * 9;  // twice w/2 + s
   for (const std::string o : {"any", "rectilinear", "octilinear"}) {
@@ -389,9 +389,11 @@ TEST(Tighten, ClearanceFromBlockages) {
             EXPECT_TRUE(keeps_clearance(wire[i - 1], wire[i], b.outer[k], b.outer[(k + 1) % b.outer.size()], D))
                 << n.name << " segment " << i;
     }
-    // and `taut check` (router/check.h, the independent checker) agrees: no blockage clearance
-    // problem, free space and connectivity ok (the two nets are not kept apart: not asked here)
+    // and `taut check` (router/check.h, the independent checker) agrees: no clearance problem
+    // (from the blockages and between the two nets: they are tightened together), free space and
+    // connectivity ok
     const auto chk = run_taut({"check", dir + "/t.xml", "--json"});
+    EXPECT_EQ(chk.status, 0) << chk.out << chk.err;
     const nlohmann::json cj = nlohmann::json::parse(chk.out)["routes_check"];
     EXPECT_EQ(cj["problems"]["blockage_clearance"], 0) << chk.err;
     EXPECT_EQ(cj["free_space"], "ok") << chk.err;
@@ -408,11 +410,26 @@ TEST(Tighten, ClearanceFromBlockages) {
   EXPECT_GE(nlohmann::json::parse(hug_check.out)["routes_check"]["problems"]["blockage_clearance"].get<int>(), 1) << hug_check.err;
   // a sketch through the clearance zone (20 DBU above the square) is refused, nothing written
   std::string close = body;
-  close.replace(close.find("5,50 5,120 95,120"), 17, "5,50 5,70 95,120");
+  close.replace(close.find("5,50 5,120 82,120"), 17, "5,50 5,70 82,120");
   write_text(dir + "/c.xml", "old");
   const auto refused = run_taut({"tighten", layout_file("tighten_clearance_close", close), "--clearance", "-o", dir + "/c.xml"});
   EXPECT_EQ(refused.status, 2) << refused.err;
   EXPECT_NE(refused.err.find("comes within the clearance of a blockage (20 DBU"), std::string::npos) << refused.err;
+  EXPECT_EQ(read_text(dir + "/c.xml"), "old");
+  // sketches of two nets that cross (or come within w + s) do not say which passes where: refused,
+  // each naming the other, nothing written
+  std::string crossing = body;
+  crossing.replace(crossing.find("115,35 190,35 190,125 115,125 115,35"), 36, "75,35 190,35 190,125 75,125 75,35");
+  const auto crossed = run_taut({"tighten", layout_file("tighten_clearance_cross", crossing), "--clearance", "-o", dir + "/c.xml"});
+  EXPECT_EQ(crossed.status, 2) << crossed.err;
+  EXPECT_NE(crossed.err.find("t.xml:7: error: [TIGHTEN-0001] net \"n\": the sketch's segment 2 (5,120 to 82,120) comes "
+                             "within the clearance of net \"ring\"'s sketch (w + s = 30 DBU)"),
+            std::string::npos)
+      << crossed.err;
+  EXPECT_NE(crossed.err.find("t.xml:8: error: [TIGHTEN-0001] net \"ring\": the sketch starts at 75,35, which lies within "
+                             "the clearance of net \"n\"'s sketch"),
+            std::string::npos)
+      << crossed.err;
   EXPECT_EQ(read_text(dir + "/c.xml"), "old");
 }
 

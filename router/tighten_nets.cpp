@@ -1,0 +1,464 @@
+#include "router/tighten_nets.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <utility>
+
+#include "geom/predicates.h"
+#include "geom/root2.h"
+
+namespace taut::router {
+
+using geom::Box;
+using geom::Point;
+using geom::Polygon;
+
+SpaceTightener::SpaceTightener(const geom::NormalizedObstacles& norm, TightenOrientations orientations)
+    : orientations_(orientations), tri_(geom::triangulate_free_space(norm.domain, norm.obstacles)) {
+  if (!tri_.ok()) {
+    std::string why;
+    for (const Diagnostic& d : tri_.diagnostics()) why += " [" + d.code + "] " + d.message;
+    throw std::logic_error("the free space of normalized obstacles could not be triangulated:" + why);
+  }
+  tight_ = std::make_unique<Tightener>(tri_);
+  if (orientations_ != TightenOrientations::Any) sb_ = std::make_unique<StaircaseBuilder>(norm.domain, norm.obstacles);
+}
+
+bool SpaceTightener::is_loop(std::span<const Point> line) {
+  if (line.size() < 3 || line.front() != line.back()) return false;
+  for (Point p : line)
+    if (p != line.front()) return true;
+  return false;
+}
+
+SpaceTightener::Result SpaceTightener::run(std::span<const Point> line) const {
+  Result r;
+  if (is_loop(line)) {
+    r.loop = true;
+    const Tightener::Loop l = tight_->tighten_loop(line);
+    r.taut.status = l.status;
+    r.taut.segment = l.segment;
+    r.taut.where = l.where;
+    r.taut.sleeve = l.band;
+    if (l.status != TightenStatus::Ok) return r;
+    if (l.contractible) {
+      r.contractible = true;
+      return r;
+    }
+    r.taut.points = l.points;
+  } else {
+    r.taut = tight_->tighten(line);
+    if (r.taut.status != TightenStatus::Ok) return r;
+  }
+  r.points = r.taut.points;
+  if (sb_) {
+    const auto style = orientations_ == TightenOrientations::Octilinear ? StaircaseStyle::Octilinear
+                                                                         : StaircaseStyle::Rectilinear;
+    COriented c = c_oriented(*tight_, *sb_, r.taut.points, style);
+    if (c.points.empty()) {
+      r.no_staircase = true;
+      r.points.clear();
+      return r;
+    }
+    r.points = std::move(c.points);
+  }
+  if (r.points.size() == 1) r.points.push_back(r.points[0]);
+  return r;
+}
+
+namespace {
+
+// Where along a wire a point lies: segment index, then the position along it (exact, as the
+// dot product with the segment's direction).
+struct Cut {
+  std::size_t seg;
+  std::int64_t along;
+  Point p;
+  bool operator<(const Cut& o) const { return seg != o.seg ? seg < o.seg : along < o.along; }
+};
+
+bool boxes_meet(const Box& a, const Box& b) {
+  return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y;
+}
+
+}  // namespace
+
+NetLines cut_at_joints(const NetLines& wires, std::span<const Polygon> pins, std::vector<char>* frozen) {
+  // The fixed points: every wire's ends and the point pins; for a shape pin no wire ends on, a
+  // vertex of a wire on it.
+  std::vector<Point> joints;
+  for (const auto& w : wires)
+    if (!w.empty()) joints.push_back(w.front()), joints.push_back(w.back());
+  std::vector<char> freeze(wires.size(), 0);
+  for (const Polygon& pin : pins) {
+    if (pin.outer.size() == 1) {
+      joints.push_back(pin.outer[0]);
+      continue;
+    }
+    bool touched = false;
+    for (const auto& w : wires)
+      if (!w.empty())
+        for (const Point e : {w.front(), w.back()}) touched = touched || geom::locate(e, pin) != geom::Location::Outside;
+    for (std::size_t k = 0; k < wires.size() && !touched; ++k)
+      for (const Point v : wires[k])
+        if (geom::locate(v, pin) != geom::Location::Outside) {
+          joints.push_back(v);
+          touched = true;
+          break;
+        }
+    if (touched) continue;
+    // reached mid-segment only (or not at all): every wire that may touch it stays as it is
+    const Box pb = geom::bounding_box(pin.outer);
+    for (std::size_t k = 0; k < wires.size(); ++k)
+      if (!wires[k].empty() && boxes_meet(geom::bounding_box(wires[k]), pb)) freeze[k] = 1;
+  }
+  std::sort(joints.begin(), joints.end());
+  joints.erase(std::unique(joints.begin(), joints.end()), joints.end());
+
+  NetLines out;
+  std::vector<char> out_frozen;
+  for (std::size_t k = 0; k < wires.size(); ++k) {
+    const auto& w = wires[k];
+    if (w.size() < 2 || freeze[k] || SpaceTightener::is_loop(w)) {
+      out.push_back(w);
+      out_frozen.push_back(freeze[k]);
+      continue;
+    }
+    std::vector<Cut> cuts;
+    for (std::size_t s = 0; s + 1 < w.size(); ++s) {
+      const Point a = w[s], b = w[s + 1];
+      if (a == b) continue;
+      const Box sb = geom::bounding_box(std::vector<Point>{a, b});
+      auto lo = std::lower_bound(joints.begin(), joints.end(), Point{sb.lo.x, std::numeric_limits<geom::Coord>::min()});
+      for (auto it = lo; it != joints.end() && it->x <= sb.hi.x; ++it) {
+        const Point j = *it;
+        if (j.y < sb.lo.y || j.y > sb.hi.y || !geom::on_segment(j, a, b)) continue;
+        if (j == b || (j == a && s == 0)) continue;  // an end of the wire, or cut as the next segment's start
+        cuts.push_back({s, geom::dot(a, b, a, j), j});
+      }
+    }
+    std::sort(cuts.begin(), cuts.end());
+    cuts.erase(std::unique(cuts.begin(), cuts.end(), [](const Cut& x, const Cut& y) { return x.seg == y.seg && x.p == y.p; }),
+               cuts.end());
+    std::vector<Point> piece{w[0]};
+    std::size_t c = 0;
+    for (std::size_t s = 0; s + 1 < w.size(); ++s) {
+      for (; c < cuts.size() && cuts[c].seg == s; ++c) {
+        const Point j = cuts[c].p;
+        if (j != piece.back()) piece.push_back(j);
+        if (piece.size() >= 2) {
+          out.push_back(piece);
+          out_frozen.push_back(0);
+        }
+        piece.assign(1, j);
+      }
+      if (w[s + 1] != piece.back()) piece.push_back(w[s + 1]);
+    }
+    if (piece.size() == 1) piece.push_back(piece[0]);  // a wire of zero-length segments only
+    out.push_back(piece);
+    out_frozen.push_back(0);
+  }
+  if (frozen) *frozen = std::move(out_frozen);
+  return out;
+}
+
+namespace {
+
+std::int64_t l1(const std::vector<Point>& w) {
+  std::int64_t n = 0;
+  for (std::size_t i = 1; i < w.size(); ++i) n += std::abs(std::int64_t{w[i].x} - w[i - 1].x) + std::abs(std::int64_t{w[i].y} - w[i - 1].y);
+  return n;
+}
+
+geom::Root2 oct(const std::vector<Point>& w) {
+  geom::Root2 n{0, 0};
+  for (std::size_t i = 1; i < w.size(); ++i)
+    n += geom::octilinear_length(std::int64_t{w[i].x} - w[i - 1].x, std::int64_t{w[i].y} - w[i - 1].y);
+  return n;
+}
+
+// The polyline without repeated points and without vertices where it goes straight on.
+std::vector<Point> canonical(const std::vector<Point>& w) {
+  std::vector<Point> out;
+  for (const Point p : w) {
+    if (!out.empty() && out.back() == p) continue;
+    if (out.size() >= 2 && geom::orient(out[out.size() - 2], out.back(), p) == 0 &&
+        geom::dot(out[out.size() - 2], out.back(), out.back(), p) > 0)
+      out.back() = p;
+    else
+      out.push_back(p);
+  }
+  return out;
+}
+
+// Does the path have a vertex on a side of the window that lies inside the domain?
+bool on_inner_side(std::span<const Point> path, const Box& w, const Box& dom) {
+  for (const Point p : path)
+    if ((p.x == w.lo.x && w.lo.x > dom.lo.x) || (p.x == w.hi.x && w.hi.x < dom.hi.x) ||
+        (p.y == w.lo.y && w.lo.y > dom.lo.y) || (p.y == w.hi.y && w.hi.y < dom.hi.y))
+      return true;
+  return false;
+}
+
+Box hull_box(const std::optional<Box>& a, const Box& b) {
+  if (!a) return b;
+  return {{std::min(a->lo.x, b.lo.x), std::min(a->lo.y, b.lo.y)}, {std::max(a->hi.x, b.hi.x), std::max(a->hi.y, b.hi.y)}};
+}
+
+}  // namespace
+
+NetsTightener::NetsTightener(NetSpace& space, NetsTightenOptions options) : space_(&space), options_(std::move(options)) {}
+
+std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, std::span<const char> sketch) {
+  NetSpace& space = *space_;
+  const std::size_t n = space.size();
+  if (wires.size() != n) throw std::invalid_argument("NetsTightener::run: one entry of wires per net");
+  stats_ = {};
+  std::vector<NetTightenOutcome> out(n);
+  std::vector<std::vector<char>> frozen(n);
+  std::vector<std::vector<double>> taut_len(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (const auto& w : wires[i]) {
+      out[i].length_before += euclidean_length(w);
+      out[i].bends_before += geom::count_bends(w);
+      out[i].loop = out[i].loop || SpaceTightener::is_loop(w);
+    }
+    const std::size_t before = wires[i].size();
+    wires[i] = cut_at_joints(wires[i], space.net(i).pins, &frozen[i]);
+    stats_.split += wires[i].size() - before;
+    taut_len[i].resize(wires[i].size());
+    out[i].kept.assign(frozen[i].begin(), frozen[i].end());
+    for (std::size_t k = 0; k < wires[i].size(); ++k) taut_len[i][k] = euclidean_length(wires[i][k]);
+    space.set_wires(i, wires[i]);
+  }
+
+  const std::int64_t margin0 = 2 * (space.blockage_clearance() + space.net_clearance()) + 64;
+  const Box dom = space.domain();
+  std::vector<std::pair<Box, std::size_t>> changed;  // boxes of every net's wires changed, with the net
+  std::vector<std::size_t> since(n, 0);
+  std::vector<std::optional<Box>> seen(n);  // the windows a net's last tightening used (their hull)
+  std::vector<char> failed(n, 0), retry(n, 0);
+
+  // One wire of net i in growing windows: the result and the window it was decided in.
+  auto tighten_one = [&](std::size_t i, const std::vector<Point>& line) {
+    std::int64_t margin = margin0;
+    while (true) {
+      if (options_.stop && options_.stop()) throw NetRouterStopped();
+      const Box w = options_.windows ? geom::clipped_box(geom::grown_box(geom::bounding_box(line), margin), dom) : dom;
+      const bool whole = w == dom;
+      ++stats_.windows;
+      stats_.whole += whole;
+      const SpaceTightener st(space.obstacles(i, NetSpaceLevel::Full, whole ? std::nullopt : std::optional<Box>(w)),
+                              options_.orientations);
+      SpaceTightener::Result r = st.run(line);
+      if (whole || r.taut.status != TightenStatus::Ok || r.contractible || !on_inner_side(r.taut.points, w, dom))
+        return std::make_pair(std::move(r), w);
+      margin = std::min<std::int64_t>(4 * margin, 4 * std::int64_t{geom::kMaxCoord});
+    }
+  };
+  // Is the new wire taken in place of the old one?
+  auto better = [&](const std::vector<Point>& now, const std::vector<Point>& was) {
+    const std::vector<Point> a = canonical(now), b = canonical(was);
+    if (a == b) return false;
+    const std::int64_t ba = geom::count_bends(a), bb = geom::count_bends(b);
+    switch (options_.orientations) {
+      case TightenOrientations::Any:
+        return true;  // the class's shortest, and another path: strictly shorter
+      case TightenOrientations::Rectilinear: {
+        const std::int64_t la = l1(a), lb = l1(b);
+        return la <= lb && ba <= bb && (la < lb || ba < bb);
+      }
+      case TightenOrientations::Octilinear: {
+        const geom::Root2 la = oct(a), lb = oct(b);
+        return la <= lb && ba <= bb && (la < lb || ba < bb);
+      }
+    }
+    return false;
+  };
+
+  // Round 0: the sketches (inputs that are not wires of a router) must lie in their net's space as
+  // they are, all of them as given (so a failure is the input's, not a neighbour's move). A net
+  // that fails here is not tightened; its wires stay in the space as they are.
+  // The lift of a line in net i's space as it is now, in a window round the line.
+  auto lift_now = [&](std::size_t i, const std::vector<Point>& line, std::size_t* seg, Point* where) {
+    if (options_.stop && options_.stop()) throw NetRouterStopped();
+    const Box w = options_.windows ? geom::clipped_box(geom::grown_box(geom::bounding_box(line), margin0), dom) : dom;
+    const geom::NormalizedObstacles obs = space.obstacles(i, NetSpaceLevel::Full, w == dom ? std::nullopt : std::optional<Box>(w));
+    const geom::FreeSpaceTriangulation tri = geom::triangulate_free_space(obs.domain, obs.obstacles);
+    if (!tri.ok()) throw std::logic_error("NetsTightener: a net's space could not be triangulated");
+    Sleeve sleeve;
+    return Tightener(tri).lift(line, sleeve, seg, where);
+  };
+  std::vector<std::vector<char>> fresh(n);  // sketch pieces no result has replaced yet
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i >= sketch.size() || !sketch[i] || wires[i].empty()) continue;
+    fresh[i].assign(wires[i].size(), 1);
+    NetTightenOutcome& o = out[i];
+    for (std::size_t k = 0; k < wires[i].size() && o.status == NetTightenOutcome::Status::Ok; ++k) {
+      const std::vector<Point>& line = wires[i][k];
+      std::size_t seg = 0;
+      Point where{};
+      const TightenStatus st = lift_now(i, line, &seg, &where);
+      if (st == TightenStatus::Ok) continue;
+      o.status = NetTightenOutcome::Status::NotFree;
+      o.round = 0;
+      o.wire = k;
+      o.lift.status = st;
+      o.lift.segment = seg;
+      o.lift.where = where;
+      o.wire_blockers = space.wire_blockers(i, line);
+      o.pin_blockers = space.pin_blockers(i, line);
+      failed[i] = 2;  // stays in the space, not tightened
+    }
+  }
+
+  // The sketches' first results, all against the space as given (so none depends on the order of
+  // the nets): in round 1 each is taken when it still enters no other net's grown wires or pins as
+  // they are then, else the piece is tightened among them as they are.
+  using Decided = std::pair<SpaceTightener::Result, Box>;
+  std::vector<std::vector<std::optional<Decided>>> first(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (fresh[i].empty() || failed[i]) continue;
+    first[i].resize(wires[i].size());
+    for (std::size_t k = 0; k < wires[i].size(); ++k)
+      if (!frozen[i][k] && wires[i][k].size() >= 2) {
+        ++stats_.tightenings;
+        first[i][k] = tighten_one(i, wires[i][k]);
+      }
+  }
+
+  for (int round = 1;; ++round) {
+    bool moved = false;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (wires[i].empty() || failed[i]) continue;
+      if (round > 1 && !retry[i]) {
+        bool touched = false;
+        for (std::size_t k = since[i]; k < changed.size() && !touched; ++k)
+          touched = changed[k].second != i && seen[i] && boxes_meet(changed[k].first, *seen[i]);
+        if (!touched) continue;
+      }
+      since[i] = changed.size();
+      seen[i].reset();
+      retry[i] = 0;
+      NetTightenOutcome& o = out[i];
+      NetLines next = wires[i];
+      bool net_moved = false;
+      for (std::size_t k = 0; k < wires[i].size(); ++k) {
+        if (frozen[i][k] || wires[i][k].size() < 2 || (wires[i][k].size() == 2 && wires[i][k][0] == wires[i][k][1]))
+          continue;
+        std::optional<Decided> d;
+        if (round == 1 && !first[i].empty() && first[i][k]) {
+          d = std::move(first[i][k]);
+          const SpaceTightener::Result& f = d->first;
+          // still apart from the others (touching allowed: a gap of exactly the clearance, which
+          // a lift in the space would close, is legal)
+          if (f.taut.status == TightenStatus::Ok && !f.contractible && !f.no_staircase &&
+              (!space.wire_blockers(i, f.points).empty() || !space.pin_blockers(i, f.points).empty()))
+            d.reset();  // the others moved into its way: tightened among them as they are
+        }
+        if (!d) {
+          ++stats_.tightenings;
+          d = tighten_one(i, wires[i][k]);
+        }
+        auto& [r, w] = *d;
+        seen[i] = hull_box(seen[i], w);
+        if (r.taut.status != TightenStatus::Ok || r.no_staircase) {
+          // Kept as it is this time (it keeps the clearance): not free in its own space, where
+          // the other nets' grown wires and pins and the grown blockages touch along it (a gap of
+          // exactly the clearance, which the triangulated space closes), or no lattice staircase.
+          // Tried again when a change meets its window.
+          o.kept[k] = r.no_staircase ? 2 : 1;
+          if (o.status == NetTightenOutcome::Status::Ok) {
+            o.status = r.no_staircase ? NetTightenOutcome::Status::NoStaircase : NetTightenOutcome::Status::NotFree;
+            o.round = round;
+            o.wire = k;
+            o.lift = r.taut;
+            if (!r.no_staircase) {
+              o.wire_blockers = space.wire_blockers(i, wires[i][k]);
+              o.pin_blockers = space.pin_blockers(i, wires[i][k]);
+            }
+          }
+          continue;
+        }
+        if (r.contractible) {
+          o.status = NetTightenOutcome::Status::Contractible;
+          o.round = round;
+          o.wire = k;
+          continue;
+        }
+        o.kept[k] = 0;
+        if (round == 1) {
+          o.sleeve += r.taut.sleeve;
+          o.crossings += r.taut.crossings;
+        }
+        taut_len[i][k] = euclidean_length(r.taut.points);
+        if ((!fresh[i].empty() && fresh[i][k]) || better(r.points, wires[i][k])) {
+          if (!fresh[i].empty()) fresh[i][k] = 0;
+          next[k] = std::move(r.points);
+          net_moved = true;
+          ++o.moves;
+          ++stats_.moved;
+        }
+      }
+      if (o.status == NetTightenOutcome::Status::Contractible) {  // written as failed: out of the space
+        failed[i] = 1;
+        for (const Box& b : space.wire_boxes(i)) changed.push_back({b, i});
+        space.set_wires(i, {});
+        continue;
+      }
+      if (!net_moved) continue;
+      moved = true;
+      for (const Box& b : space.wire_boxes(i)) changed.push_back({b, i});
+      wires[i] = std::move(next);
+      {  // a piece pulled through a joint of its net (another wire's end, a pin) is cut there
+        std::vector<char> fz;
+        NetLines recut = cut_at_joints(wires[i], space.net(i).pins, &fz);
+        const bool untouched = std::find(fresh[i].begin(), fresh[i].end(), 1) != fresh[i].end();
+        if (recut.size() != wires[i].size() && !untouched) {
+          fresh[i].clear();
+          wires[i] = std::move(recut);
+          frozen[i] = std::move(fz);
+          o.kept.assign(frozen[i].begin(), frozen[i].end());
+          taut_len[i].clear();
+          for (const auto& w : wires[i]) taut_len[i].push_back(euclidean_length(w));
+          retry[i] = 1;  // the new pieces are tried in the next round
+        }
+      }
+      space.set_wires(i, wires[i]);
+      for (const Box& b : space.wire_boxes(i)) changed.push_back({b, i});
+    }
+    stats_.rounds = round;
+    if (!moved) break;
+    if (round >= options_.max_rounds) {
+      stats_.capped = true;
+      break;
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    NetTightenOutcome& o = out[i];
+    if (failed[i] == 1) {  // a contractible loop
+      wires[i].clear();
+      continue;
+    }
+    if (failed[i] == 2) continue;  // not in its space as given
+    for (std::size_t k = 0; k < fresh[i].size(); ++k)
+      if (fresh[i][k]) {
+        o.untightened = true;  // a sketch piece with no staircase, or the others left it no room
+        o.wire = k;
+      }
+    for (std::size_t k = 0; k < wires[i].size(); ++k) {
+      stats_.kept_shape_pin += frozen[i][k];
+      stats_.kept += o.kept[k] != 0 && !frozen[i][k];
+      stats_.kept_not_free += o.kept[k] == 1 && !frozen[i][k];
+      o.length_after += euclidean_length(wires[i][k]);
+      o.length_taut += taut_len[i][k];
+      o.bends_after += geom::count_bends(wires[i][k]);
+    }
+  }
+  return out;
+}
+
+}  // namespace taut::router

@@ -1,0 +1,165 @@
+// Tightening every net of a layout together, keeping the clearance of <rules> (issue #5,
+// "Clearance"): each wire is pulled taut in its homotopy class among the blockages grown by
+// a = ceil(w/2) + s and the other nets' wires and pins grown by b = max(w + s, 1), exactly the
+// space the net router routes it in (router/net_router.h: NetSpace at the Full level), and the
+// nets are tightened again round after round until no wire gets shorter.
+//
+//   NetSpace space(norm.domain, norm.obstacles, nets, rules);
+//   NetsTightener nt(space, {.orientations = TightenOrientations::Rectilinear});
+//   std::vector<NetLines> wires = ...;            // per net: its wires (each in its net's space)
+//   const auto errors = nt.run(wires);            // wires now tightened; errors: inputs not free
+//
+// Why nothing crosses and no class changes. A wire moves only inside the free space of its net's
+// space, which is a subset of the free space among the plain blockages: the homotopy from the old
+// wire to the new one (through the sleeve) stays there, so its class among the blockages is kept,
+// it never enters another net's grown wires or pins (no crossing, the clearance kept: growing by
+// squares keeps at least that Euclidean distance), and the other nets' later moves avoid its new
+// position the same way. Every move is an improvement in (length in the output's metric, bends),
+// never worse in either: a finite set of values, so the rounds end (NetsTightenOptions::max_rounds
+// is a guard, reported when hit).
+//
+// Trees. A net's wires may end on each other (branch points, Steiner points) and pass through its
+// pins. Tightening a wire with its ends fixed would pull it off a branch point or a pin it passes,
+// so every wire is first cut at the ends of the net's other wires and at the net's point pins that
+// lie on it (its ends stay where they are): every wire then runs between fixed points and the net
+// stays connected. A shape pin reached only along a wire's side is cut there too when a vertex of
+// the wire lies on it; otherwise (it is touched mid-segment only) that wire is kept as it is.
+//
+// Windows. A wire is tightened in a window round it (its box grown by 2(a + b) + 64): the
+// obstacles of its net's space clipped there (NetSpace::obstacles). The result is the class's
+// shortest in the window's space, which is homotopic to the input in the whole space; when no
+// vertex of it lies on a side of the window inside the domain it is locally taut in the whole
+// space too (every bend wraps an obstacle vertex), so the shortest of its class there: kept.
+// Otherwise the margin grows fourfold, up to the whole domain. A rectilinear or octilinear
+// staircase between two cuts lies in their bounding box (monotone), so inside the window as well.
+//
+// Rounds. Only a net whose window some change of another net's wires has met since it was last
+// tightened is tried again (its result depends on nothing outside its windows), so a round after
+// the first costs as much as the nets still moving.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "geom/normalize.h"
+#include "geom/triangulation.h"
+#include "geom/types.h"
+#include "router/net_router.h"
+#include "router/staircase.h"
+#include "router/tighten.h"
+
+namespace taut::router {
+
+enum class TightenOrientations { Any, Rectilinear, Octilinear };
+
+// Tightening in one space: the free-space triangulation of normalized obstacles, the tightener,
+// and for rectilinear or octilinear output the staircase builder.
+class SpaceTightener {
+ public:
+  SpaceTightener(const geom::NormalizedObstacles& norm, TightenOrientations orientations);
+  struct Result {
+    Tightened taut;                   // the lift and the Euclidean shortest path of the class
+    std::vector<geom::Point> points;  // in the orientations (a repeated point for a one-point wire)
+    bool no_staircase = false;        // c-oriented: no lattice staircase in the class
+    bool loop = false;                // the line was closed: `points` is the shortest closed loop
+    bool contractible = false;        // a loop that winds around nothing
+  };
+  // A closed line (last point = first, around some other point) is a loop: the shortest closed
+  // loop of its free homotopy class (Tightener::tighten_loop).
+  Result run(std::span<const geom::Point> line) const;
+  static bool is_loop(std::span<const geom::Point> line);
+  const geom::FreeSpaceTriangulation& triangulation() const { return tri_; }
+  const Tightener& tightener() const { return *tight_; }
+
+ private:
+  TightenOrientations orientations_;
+  geom::FreeSpaceTriangulation tri_;
+  std::unique_ptr<Tightener> tight_;
+  std::unique_ptr<StaircaseBuilder> sb_;
+};
+
+using NetLines = std::vector<std::vector<geom::Point>>;
+
+struct NetsTightenOptions {
+  TightenOrientations orientations = TightenOrientations::Rectilinear;
+  int max_rounds = 100;  // a guard: the rounds end by themselves (see above)
+  bool windows = true;          // false: every wire on the whole domain (tests)
+  std::function<bool()> stop;   // asked before every window: true throws NetRouterStopped
+};
+
+struct NetsTightenStats {
+  int rounds = 0;                  // rounds run (the last one changed nothing, unless capped)
+  bool capped = false;             // max_rounds was reached with wires still moving
+  std::int64_t tightenings = 0;    // wires tightened (each in one or more windows)
+  std::int64_t windows = 0;        // triangulations built
+  std::int64_t whole = 0;          // of those, on the whole domain
+  std::int64_t moved = 0;          // results taken
+  std::int64_t kept_shape_pin = 0; // wires kept as they are: a shape pin touched mid-segment only
+  std::int64_t kept = 0;           // wires kept as they were at their last try: not free in their space, or no staircase
+  std::int64_t kept_not_free = 0;  // of those at the end, not free (a gap of exactly the clearance)
+  std::size_t split = 0;           // wires added by cutting at branch points and pins
+};
+
+// What happened to one net (NetsTightener::run).
+struct NetTightenOutcome {
+  // Its first problem. NotFree: a wire's lift failed in its net's space, so it is kept as it is:
+  // in round 0 (sketches only) its input is not in that space (it leaves free space, comes within the
+  // clearance of a blockage, of another net's wire or pin, or runs in a gap of exactly the
+  // clearance, which the space closes: see net_router.h); in a later round the others moved to
+  // exactly the clearance on both sides of it. NoStaircase: the class has no lattice staircase
+  // (the wire is kept as it is). Contractible: a loop that winds around nothing; the net's wires
+  // are then left out of the space and of the result (it is to be written as failed).
+  enum class Status { Ok, NotFree, NoStaircase, Contractible } status = Status::Ok;
+  int round = 0;                 // when it happened: 0 for a sketch that is not in its net's space as
+                                 // given (the net is then not tightened; its wires stay as they are)
+  // A sketch piece that no result replaced: it is still the sketch (`wire`): its class has no
+  // lattice staircase (status NoStaircase), or its lift failed at every try after round 0 (the
+  // other nets moved to exactly the clearance on both sides of it).
+  bool untightened = false;
+  std::size_t wire = 0;          // which wire (an index into the net's wires after the cuts)
+  Tightened lift;                // NotFree: the failed lift (its segment and point)
+  std::vector<std::size_t> wire_blockers, pin_blockers;  // NotFree: nets whose grown wires / pins it enters
+  double length_before = 0, length_taut = 0, length_after = 0;  // Euclidean
+  std::int64_t bends_before = 0, bends_after = 0;
+  std::size_t sleeve = 0, crossings = 0;  // of the first round's tightening
+  int moves = 0;                           // results taken
+  bool loop = false;
+  // Per wire (after the cuts): left as it was at its last try (not free in its space, or no
+  // staircase) or never tried (a shape pin touched mid-segment); 0: tightened.
+  std::vector<char> kept;
+};
+
+class NetsTightener {
+ public:
+  // The space holds the nets' pins and rules; its wires are set by run().
+  NetsTightener(NetSpace& space, NetsTightenOptions options = {});
+
+  // wires[i]: net i's wires (empty: none, it is not routed). In each net's space every wire
+  // must lie in free space (its lift succeeds); the ones that do not are reported in the
+  // outcome. On return wires[i] holds the tightened wires (cut at branch points, see above).
+  // A result is taken when it is no longer than the wire it replaces and has no more bends, and
+  // is better in one of the two (with `any` orientations: when it is another path, so shorter).
+  // The nets with sketch[i] set hold sketches, not wires in the output's directions: round 0
+  // checks that they lie in their nets' spaces as given (all at once, before anything moves), and
+  // each piece's first result is taken whatever it is.
+  std::vector<NetTightenOutcome> run(std::vector<NetLines>& wires, std::span<const char> sketch = {});
+  const NetsTightenStats& stats() const { return stats_; }
+
+ private:
+  NetSpace* space_;
+  NetsTightenOptions options_;
+  NetsTightenStats stats_;
+};
+
+// Cuts a net's wires at the ends of its other wires, and at its pins, that lie on them (see
+// Trees above). Returns the wires that could not be cut (a shape pin touched mid-segment) in
+// `frozen` (indices into the result).
+NetLines cut_at_joints(const NetLines& wires, std::span<const geom::Polygon> pins, std::vector<char>* frozen = nullptr);
+
+}  // namespace taut::router

@@ -1,0 +1,198 @@
+// router::NetsTightener (issue #5, "Clearance": every net tightened together, keeping the
+// clearance of <rules>) judged by references that share only geom with it:
+//   - the independent checker (router/check.h): the tightened layout is free, connected and clear
+//     (w/2 + s from blockages, w + s between nets, no shorts);
+//   - the homotopy words (tests/oracle/homotopy.h): every wire piece keeps its class among the
+//     plain blockages;
+//   - the local-tautness check (tests/support/taut_check.h), with `any` orientations: at the end
+//     every wire is locally taut among the blockages grown by a and the other nets' wires and pins
+//     grown by b (so no wire can get shorter: the rounds have ended);
+//   - never longer in the output's metric; tightening the result again moves nothing; windows
+//     give what the whole domain gives, bit for bit.
+// On random layouts routed by the net router (rectangles that touch and pinch, sloped triangles,
+// pads, trees, odd widths, zero rules), rectilinear, octilinear and any.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <optional>
+#include <random>
+
+#include "geom/normalize.h"
+#include "geom/predicates.h"
+#include "geom/root2.h"
+#include "oracle/homotopy.h"
+#include "router/check.h"
+#include "router/net_router.h"
+#include "router/tighten_nets.h"
+#include "support/net_layouts.h"
+#include "support/sanitized.h"
+#include "support/taut_check.h"
+
+namespace taut::test {
+namespace {
+
+using geom::Point;
+using geom::Polygon;
+using router::NetLines;
+
+std::int64_t l1_of(const NetLines& ws) {
+  std::int64_t n = 0;
+  for (const auto& w : ws) n += l1_length(w);
+  return n;
+}
+geom::Root2 oct_of(const NetLines& ws) {
+  geom::Root2 n{0, 0};
+  for (const auto& w : ws) {
+    const auto [a, b] = oct_length(w);
+    n += geom::Root2{a, b};
+  }
+  return n;
+}
+
+TEST(CutAtJoints, PiecesRejoinAndEndAtJoints) {
+  // a tree: a trunk with a branch starting mid-segment, a point pin passed mid-wire, a pad reached
+  // at a vertex, and a pad touched mid-segment only (its wire is kept whole)
+  const NetLines wires{{{0, 0}, {10, 0}, {10, 10}}, {{5, 0}, {5, -8}}};
+  const std::vector<Polygon> pins{Polygon{{{0, 0}}, {}}, Polygon{{{10, 4}}, {}}, Polygon{{{5, -8}}, {}}};
+  std::vector<char> frozen;
+  const NetLines cut = router::cut_at_joints(wires, pins, &frozen);
+  const NetLines want{{{0, 0}, {5, 0}}, {{5, 0}, {10, 0}, {10, 4}}, {{10, 4}, {10, 10}}, {{5, 0}, {5, -8}}};
+  EXPECT_EQ(cut, want);
+  EXPECT_EQ(frozen, std::vector<char>(4, 0));
+  const std::vector<Polygon> pad{Polygon{{{3, 1}, {6, 1}, {6, 3}, {3, 3}}, {}}};  // no wire vertex on it
+  const NetLines touch{{{0, 0}, {0, 1}, {8, 1}, {8, 5}}};
+  const NetLines kept = router::cut_at_joints(touch, pad, &frozen);
+  EXPECT_EQ(kept, touch);
+  EXPECT_EQ(frozen, std::vector<char>{1});
+  const std::vector<Polygon> pad2{Polygon{{{7, 0}, {9, 0}, {9, 2}, {7, 2}}, {}}};  // the vertex (8, 1) lies on it
+  EXPECT_EQ(router::cut_at_joints(touch, pad2, &frozen), (NetLines{{{0, 0}, {0, 1}, {8, 1}}, {{8, 1}, {8, 5}}}));
+}
+
+struct Totals {
+  int layouts = 0, failed = 0, later_rounds = 0;
+  std::int64_t nets = 0, pieces = 0, moved = 0, kept = 0, kept_not_free = 0, kept_shape = 0, shorter = 0, windows = 0, whole = 0, words = 0;
+};
+
+void check_layout(int seed, router::TightenOrientations orient, Totals& t) {
+  const RandomLayout L = random_layout(seed);
+  const bool octilinear = orient == router::TightenOrientations::Octilinear;
+  router::NetRouterOptions opt;
+  opt.octilinear = octilinear;
+  router::NetRouter nr(L.norm.domain, L.norm.obstacles, L.nets, L.rules, opt);
+  nr.run(octilinear ? router::NetRouter::oct_router() : router::NetRouter::l1_router(seed % 3 == 0));
+  std::vector<NetLines> before;
+  for (const auto& o : nr.outcomes()) before.push_back(o.routed ? o.wires : NetLines{});
+  const std::string at = "seed " + std::to_string(seed) + " (" +
+                         (orient == router::TightenOrientations::Any ? "any" : octilinear ? "octilinear" : "rectilinear") +
+                         ", w " + std::to_string(L.rules.wire_width) + ", s " + std::to_string(L.rules.spacing) + ")";
+  auto fail = [&](const std::string& what) {
+    if (t.failed++ < 10) ADD_FAILURE() << at << ": " << what;
+  };
+
+  std::vector<NetLines> after = before;
+  router::NetSpace space(L.norm.domain, L.norm.obstacles, L.nets, L.rules);
+  router::NetsTightenOptions to;
+  to.orientations = orient;
+  router::NetsTightener nt(space, to);
+  const auto outcomes = nt.run(after);
+  ++t.layouts;
+  t.moved += nt.stats().moved;
+  t.windows += nt.stats().windows;
+  t.whole += nt.stats().whole;
+  t.later_rounds += nt.stats().rounds > 2;
+  if (nt.stats().capped) fail("the rounds were capped");
+  t.kept += nt.stats().kept;
+  t.kept_not_free += nt.stats().kept_not_free;
+  t.kept_shape += nt.stats().kept_shape_pin;
+  for (std::size_t i = 0; i < outcomes.size(); ++i)
+    if (outcomes[i].status == router::NetTightenOutcome::Status::Contractible)
+      fail("net " + std::to_string(i) + " was called a contractible loop");
+
+  // free, connected and clear
+  router::CheckRules rules;
+  rules.wire_width = L.rules.wire_width;
+  rules.spacing = L.rules.spacing;
+  for (const auto& p : router::check_routes(L.norm, check_nets(L.nets, after), rules).problems) fail(p.message);
+
+  const oracle::HomotopyWords words(L.norm.domain, L.norm.obstacles);
+  for (std::size_t i = 0; i < L.nets.size(); ++i) {
+    if (before[i].empty()) continue;
+    ++t.nets;
+    // never longer in the output's metric
+    if (octilinear ? oct_of(after[i]) > oct_of(before[i]) : l1_of(after[i]) > l1_of(before[i]))
+      fail("net " + std::to_string(i) + " got longer");
+    t.shorter += octilinear ? oct_of(after[i]) < oct_of(before[i]) : l1_of(after[i]) < l1_of(before[i]);
+    // the class of every piece among the plain blockages: the same word as the way between its
+    // ends along the input wires (cut at their joints: a tree of pieces)
+    const NetLines pieces = router::cut_at_joints(before[i], L.nets[i].pins);
+    for (std::size_t k = 0; k < after[i].size(); ++k) {
+      ++t.pieces;
+      const std::optional<std::vector<Point>> way = way_between(pieces, after[i][k].front(), after[i][k].back());
+      if (!way) {
+        fail("net " + std::to_string(i) + " piece " + std::to_string(k) + " joins points the input's pieces do not join");
+        continue;
+      }
+      ++t.words;
+      if (words.word(*way) != words.word(after[i][k]))
+        fail("net " + std::to_string(i) + " piece " + std::to_string(k) + " changed its homotopy class");
+    }
+    // at the end every wire is taut among the blockages and the other nets as they are
+    if (orient == router::TightenOrientations::Any) {
+      const geom::NormalizedObstacles full = space.obstacles(i, router::NetSpaceLevel::Full);
+      for (std::size_t k = 0; k < after[i].size(); ++k)
+        if (outcomes[i].kept[k] == 0)
+          if (const std::string why = taut_problem(after[i][k], full.domain, full.obstacles); !why.empty())
+          fail("net " + std::to_string(i) + " piece " + std::to_string(k) + " is not taut among the others: " + why);
+    }
+  }
+  // tightening the result again moves nothing
+  {
+    std::vector<NetLines> again = after;
+    router::NetSpace s2(L.norm.domain, L.norm.obstacles, L.nets, L.rules);
+    router::NetsTightener n2(s2, to);
+    n2.run(again);
+    std::vector<NetLines> recut;
+    for (std::size_t i = 0; i < after.size(); ++i) recut.push_back(router::cut_at_joints(after[i], L.nets[i].pins));
+    if (n2.stats().moved != 0 || again != recut) fail("tightening the result again moved " + std::to_string(n2.stats().moved) + " wires");
+  }
+  // the windows decide what the whole domain decides
+  if (seed % 4 == 0) {
+    std::vector<NetLines> whole = before;
+    router::NetSpace s3(L.norm.domain, L.norm.obstacles, L.nets, L.rules);
+    router::NetsTightenOptions wo = to;
+    wo.windows = false;
+    router::NetsTightener n3(s3, wo);
+    n3.run(whole);
+    if (whole != after) fail("the whole domain gives other wires than the windows");
+  }
+}
+
+TEST(NetsTightener, KeepsClearanceClassesAndEndsTaut) {
+  Totals t;
+  const int n = sanitized_share(1500, 8);
+  for (int seed = 1; seed <= n; ++seed) {
+    const auto orient = seed % 3 == 0   ? router::TightenOrientations::Any
+                        : seed % 5 == 4 ? router::TightenOrientations::Octilinear
+                                        : router::TightenOrientations::Rectilinear;
+    try {
+      check_layout(900000 + seed, orient, t);
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << "seed " << 900000 + seed << ": " << e.what();
+      ++t.failed;
+    }
+  }
+  std::printf("%d layouts, %lld routed nets, %lld pieces (%lld homotopy words compared): %lld moved, %lld nets shorter; "
+              "%d layouts moved wires after round 2; %lld windows (%lld whole); %lld pieces kept (%lld not free in their space), %lld at shape pins\n",
+              t.layouts, static_cast<long long>(t.nets), static_cast<long long>(t.pieces), static_cast<long long>(t.words),
+              static_cast<long long>(t.moved), static_cast<long long>(t.shorter), t.later_rounds,
+              static_cast<long long>(t.windows), static_cast<long long>(t.whole), static_cast<long long>(t.kept), static_cast<long long>(t.kept_not_free), static_cast<long long>(t.kept_shape));
+  EXPECT_EQ(t.failed, 0);
+  EXPECT_GT(t.moved, n / 4);
+  EXPECT_GT(t.nets, n);
+  EXPECT_LT(t.kept * 10, t.pieces);  // gaps of exactly the clearance are rare (5.5 % of the pieces)
+}
+
+}  // namespace
+}  // namespace taut::test
