@@ -11,7 +11,13 @@
 //
 // --rounds R sets NetRouterOptions::max_rounds (0: the first pass only).
 //
-//   bench_net_router [--sizes N,..] [--nets M,..] [--threads T,..] [--rounds R]    (--sizes: blockage vertices)
+// --tighten: each row's routed wires are then tightened together (router::NetsTightener, what
+// `route --tighten` does: the clearance kept, rounds until no wire shortens), against a baseline
+// in the same run: every wire tightened alone among the plain blockages on one triangulation
+// (what `route --independent --tighten` does, no clearance); time, its ratio to the baseline,
+// rounds, wires moved and kept, and the bends before and after.
+//
+//   bench_net_router [--sizes N,..] [--nets M,..] [--threads T,..] [--rounds R] [--tighten]    (--sizes: blockage vertices)
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -26,6 +32,8 @@
 #include "bench/free_points.h"
 #include "router/l1_router.h"
 #include "router/net_router.h"
+#include "router/tighten_nets.h"
+#include "geom/predicates.h"
 
 namespace {
 
@@ -38,13 +46,15 @@ using taut::geom::Polygon;
 int main(int argc, char** argv) {
   std::vector<std::int64_t> sizes = {1000}, net_counts = {10, 30, 100}, thread_counts;
   int rounds = taut::router::NetRouterOptions{}.max_rounds;
+  bool tighten = false;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--sizes") && i + 1 < argc) sizes = taut::bench::parse_list(argv[++i]);
     else if (!std::strcmp(argv[i], "--nets") && i + 1 < argc) net_counts = taut::bench::parse_list(argv[++i]);
     else if (!std::strcmp(argv[i], "--threads") && i + 1 < argc) thread_counts = taut::bench::parse_list(argv[++i]);
     else if (!std::strcmp(argv[i], "--rounds") && i + 1 < argc) rounds = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--tighten")) tighten = true;
     else {
-      std::fprintf(stderr, "usage: %s [--sizes N,..] [--nets M,..] [--threads T,..] [--rounds R]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--sizes N,..] [--nets M,..] [--threads T,..] [--rounds R] [--tighten]\n", argv[0]);
       return 2;
     }
   }
@@ -146,6 +156,37 @@ int main(int argc, char** argv) {
       std::printf("%18s nets tried %lld times in %lld windows (%lld whole): building spaces %.3f s, paths %.3f s\n", "",
                   static_cast<long long>(nr.stats().attempts), static_cast<long long>(nr.stats().windows),
                   static_cast<long long>(nr.stats().whole), nr.stats().space_seconds, nr.stats().route_seconds);
+      if (tighten) {
+        std::vector<taut::router::NetLines> wires;
+        std::int64_t bends_before = 0, bends_after = 0, bends_alone = 0, pieces = 0;
+        for (const auto& o : nr.outcomes()) {
+          wires.push_back(o.routed ? o.wires : taut::router::NetLines{});
+          for (const auto& w : wires.back()) bends_before += taut::geom::count_bends(w);
+        }
+        // baseline: every wire alone among the plain blockages, one triangulation
+        const double alone_t = taut::bench::seconds_of([&] {
+          const taut::router::SpaceTightener st(lay.norm, taut::router::TightenOrientations::Rectilinear);
+          bends_alone = 0;
+          for (const auto& ws : wires)
+            for (const auto& w : ws) {
+              const auto r = st.run(w);
+              bends_alone += taut::geom::count_bends(r.points.empty() ? w : r.points);
+            }
+        }, 1);
+        taut::router::NetSpace space(dom, lay.norm.obstacles, nets, {10, 10});
+        taut::router::NetsTightener nt(space);
+        const double together_t = taut::bench::seconds_of([&] { nt.run(wires); }, 1);
+        for (const auto& ws : wires) {
+          pieces += static_cast<std::int64_t>(ws.size());
+          for (const auto& w : ws) bends_after += taut::geom::count_bends(w);
+        }
+        std::printf("%18s tighten together: %.3f s, %.1f x alone (%.3f s); %d rounds, %lld of %lld wires moved, %lld kept; "
+                    "bends %lld -> %lld (alone, no clearance: %lld); %lld windows (%lld whole)\n", "",
+                    together_t, together_t / alone_t, alone_t, nt.stats().rounds, static_cast<long long>(nt.stats().moved),
+                    static_cast<long long>(pieces), static_cast<long long>(nt.stats().kept), static_cast<long long>(bends_before),
+                    static_cast<long long>(bends_after), static_cast<long long>(bends_alone),
+                    static_cast<long long>(nt.stats().windows), static_cast<long long>(nt.stats().whole));
+      }
       for (const std::int64_t t : thread_counts) {
         taut::router::NetRouterOptions opt;
         opt.threads = static_cast<int>(t);

@@ -409,7 +409,8 @@ geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel lev
   geom::NormalizedObstacles out;
   for (;;) {
     out = geom::normalize_obstacles(rest, dom);
-    if (pass.empty()) break;
+    // nothing rounded: the union is exactly the rest's, which no passed component meets
+    if (pass.empty() || out.stats.rounded == 0) break;
     std::vector<Index::Entry> ob;
     ob.reserve(out.obstacles.size());
     for (std::size_t i = 0; i < out.obstacles.size(); ++i) ob.push_back({box_of(out.obstacles[i].outer), i});

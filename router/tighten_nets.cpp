@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cstdlib>
 #include <limits>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <utility>
 
 #include "geom/predicates.h"
 #include "geom/root2.h"
+#include "router/l1_router.h"
 
 namespace taut::router {
 
@@ -87,8 +89,10 @@ bool boxes_meet(const Box& a, const Box& b) {
 }  // namespace
 
 NetLines cut_at_joints(const NetLines& wires, std::span<const Polygon> pins, std::vector<char>* frozen) {
-  // The fixed points: every wire's ends and the point pins; for a shape pin no wire ends on, a
-  // vertex of a wire on it.
+  // The fixed points: every wire's ends and the point pins; for every wire that touches a shape
+  // pin other than at its ends, a vertex of it on the shape (it joins the net through the shape,
+  // and must keep touching it), or, when it touches the shape mid-segment only, the whole wire
+  // stays as it is.
   std::vector<Point> joints;
   for (const auto& w : wires)
     if (!w.empty()) joints.push_back(w.front()), joints.push_back(w.back());
@@ -98,22 +102,23 @@ NetLines cut_at_joints(const NetLines& wires, std::span<const Polygon> pins, std
       joints.push_back(pin.outer[0]);
       continue;
     }
-    bool touched = false;
-    for (const auto& w : wires)
-      if (!w.empty())
-        for (const Point e : {w.front(), w.back()}) touched = touched || geom::locate(e, pin) != geom::Location::Outside;
-    for (std::size_t k = 0; k < wires.size() && !touched; ++k)
-      for (const Point v : wires[k])
-        if (geom::locate(v, pin) != geom::Location::Outside) {
-          joints.push_back(v);
-          touched = true;
-          break;
-        }
-    if (touched) continue;
-    // reached mid-segment only (or not at all): every wire that may touch it stays as it is
     const Box pb = geom::bounding_box(pin.outer);
-    for (std::size_t k = 0; k < wires.size(); ++k)
-      if (!wires[k].empty() && boxes_meet(geom::bounding_box(wires[k]), pb)) freeze[k] = 1;
+    auto on = [&](Point p) { return geom::locate(p, pin) != geom::Location::Outside; };
+    for (std::size_t k = 0; k < wires.size(); ++k) {
+      const auto& w = wires[k];
+      if (w.empty() || !boxes_meet(geom::bounding_box(w), pb) || on(w.front()) || on(w.back())) continue;
+      const auto v = std::find_if(w.begin(), w.end(), on);
+      if (v != w.end()) {
+        joints.push_back(*v);
+        continue;
+      }
+      bool touches = false;
+      for (std::size_t s = 0; s + 1 < w.size() && !touches; ++s)
+        for (std::size_t e = 0; e < pin.outer.size() && !touches; ++e)
+          touches = geom::intersect({w[s], w[s + 1]}, {pin.outer[e], pin.outer[(e + 1) % pin.outer.size()]}) !=
+                    geom::SegmentIntersection::None;
+      if (touches) freeze[k] = 1;
+    }
   }
   std::sort(joints.begin(), joints.end());
   joints.erase(std::unique(joints.begin(), joints.end()), joints.end());
@@ -122,7 +127,7 @@ NetLines cut_at_joints(const NetLines& wires, std::span<const Polygon> pins, std
   std::vector<char> out_frozen;
   for (std::size_t k = 0; k < wires.size(); ++k) {
     const auto& w = wires[k];
-    if (w.size() < 2 || freeze[k] || SpaceTightener::is_loop(w)) {
+    if (w.size() < 2 || SpaceTightener::is_loop(w)) {
       out.push_back(w);
       out_frozen.push_back(freeze[k]);
       continue;
@@ -151,7 +156,7 @@ NetLines cut_at_joints(const NetLines& wires, std::span<const Polygon> pins, std
         if (j != piece.back()) piece.push_back(j);
         if (piece.size() >= 2) {
           out.push_back(piece);
-          out_frozen.push_back(0);
+          out_frozen.push_back(freeze[k]);
         }
         piece.assign(1, j);
       }
@@ -159,9 +164,54 @@ NetLines cut_at_joints(const NetLines& wires, std::span<const Polygon> pins, std
     }
     if (piece.size() == 1) piece.push_back(piece[0]);  // a wire of zero-length segments only
     out.push_back(piece);
-    out_frozen.push_back(0);
+    out_frozen.push_back(freeze[k]);
   }
   if (frozen) *frozen = std::move(out_frozen);
+  return out;
+}
+
+NetLines join_at_twos(const NetLines& wires, std::span<const Polygon> pins) {
+  std::map<Point, int> ends;
+  for (const auto& w : wires)
+    if (w.size() >= 2 && w.front() != w.back()) ++ends[w.front()], ++ends[w.back()];
+  auto on_pin = [&](Point p) {
+    for (const Polygon& g : pins)
+      if (g.outer.size() == 1 ? g.outer[0] == p : geom::locate(p, g) != geom::Location::Outside) return true;
+    return false;
+  };
+  auto joinable = [&](Point p) { return ends.count(p) && ends[p] == 2 && !on_pin(p); };
+  std::vector<char> used(wires.size(), 0);
+  // the other wire (not k) ending at p, unused
+  auto partner = [&](std::size_t k, Point p) -> std::optional<std::size_t> {
+    for (std::size_t j = 0; j < wires.size(); ++j)
+      if (j != k && !used[j] && wires[j].size() >= 2 && wires[j].front() != wires[j].back() &&
+          (wires[j].front() == p || wires[j].back() == p))
+        return j;
+    return std::nullopt;
+  };
+  NetLines out;
+  for (std::size_t k = 0; k < wires.size(); ++k) {
+    if (used[k]) continue;
+    used[k] = 1;
+    std::vector<Point> line = wires[k];
+    if (line.size() < 2 || line.front() == line.back()) {
+      out.push_back(std::move(line));
+      continue;
+    }
+    for (int side = 0; side < 2; ++side) {  // forward from the back, then backward from the front
+      while (joinable(line.back())) {
+        const auto j = partner(k, line.back());
+        if (!j) break;
+        std::vector<Point> next = wires[*j];
+        if (next.front() != line.back()) std::reverse(next.begin(), next.end());
+        if (next.back() == line.front()) break;  // it would close a cycle: a wire stays open
+        used[*j] = 1;
+        line.insert(line.end(), next.begin() + 1, next.end());
+      }
+      std::reverse(line.begin(), line.end());
+    }
+    out.push_back(std::move(line));
+  }
   return out;
 }
 
@@ -210,6 +260,44 @@ Box hull_box(const std::optional<Box>& a, const Box& b) {
 
 }  // namespace
 
+namespace {
+
+// The wires without repeats (two wires pulled onto the same path are the same metal: once).
+NetLines once(const NetLines& wires) {
+  NetLines out;
+  for (const auto& w : wires) {
+    const std::vector<Point> r(w.rbegin(), w.rend());
+    if (std::find(out.begin(), out.end(), w) == out.end() && std::find(out.begin(), out.end(), r) == out.end())
+      out.push_back(w);
+  }
+  return out;
+}
+
+// A net's wires as they are tightened: without overlaps (where two were pulled along one path),
+// cut at the joints, once, joined where two end off the pins
+// (the frozen ones, reaching a shape pin mid-segment, stay as they are); frozen flags per wire.
+NetLines prepare(const NetLines& wires, std::span<const Polygon> pins, std::vector<char>& frozen) {
+  std::vector<char> fz;
+  const NetLines cut = cut_at_joints(without_overlaps(wires), pins, &fz);
+  NetLines loose, out;
+  std::vector<Polygon> fixed(pins.begin(), pins.end());  // never joined at: pins, frozen wires' ends
+  for (std::size_t k = 0; k < cut.size(); ++k)
+    if (!fz[k])
+      loose.push_back(cut[k]);
+    else
+      fixed.push_back(Polygon{{cut[k].front()}, {}}), fixed.push_back(Polygon{{cut[k].back()}, {}});
+  out = join_at_twos(once(loose), fixed);
+  frozen.assign(out.size(), 0);
+  for (std::size_t k = 0; k < cut.size(); ++k)
+    if (fz[k]) {
+      out.push_back(cut[k]);
+      frozen.push_back(1);
+    }
+  return out;
+}
+
+}  // namespace
+
 NetsTightener::NetsTightener(NetSpace& space, NetsTightenOptions options) : space_(&space), options_(std::move(options)) {}
 
 std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, std::span<const char> sketch) {
@@ -227,8 +315,8 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
       out[i].loop = out[i].loop || SpaceTightener::is_loop(w);
     }
     const std::size_t before = wires[i].size();
-    wires[i] = cut_at_joints(wires[i], space.net(i).pins, &frozen[i]);
-    stats_.split += wires[i].size() - before;
+    wires[i] = prepare(wires[i], space.net(i).pins, frozen[i]);
+    stats_.split += wires[i].size() > before ? wires[i].size() - before : 0;
     taut_len[i].resize(wires[i].size());
     out[i].kept.assign(frozen[i].begin(), frozen[i].end());
     for (std::size_t k = 0; k < wires[i].size(); ++k) taut_len[i][k] = euclidean_length(wires[i][k]);
@@ -415,9 +503,9 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
       wires[i] = std::move(next);
       {  // a piece pulled through a joint of its net (another wire's end, a pin) is cut there
         std::vector<char> fz;
-        NetLines recut = cut_at_joints(wires[i], space.net(i).pins, &fz);
+        NetLines recut = prepare(wires[i], space.net(i).pins, fz);
         const bool untouched = std::find(fresh[i].begin(), fresh[i].end(), 1) != fresh[i].end();
-        if (recut.size() != wires[i].size() && !untouched) {
+        if (recut != wires[i] && !untouched) {
           fresh[i].clear();
           wires[i] = std::move(recut);
           frozen[i] = std::move(fz);
@@ -449,14 +537,16 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
         o.untightened = true;  // a sketch piece with no staircase, or the others left it no room
         o.wire = k;
       }
+    o.pieces = wires[i];
     for (std::size_t k = 0; k < wires[i].size(); ++k) {
       stats_.kept_shape_pin += frozen[i][k];
       stats_.kept += o.kept[k] != 0 && !frozen[i][k];
       stats_.kept_not_free += o.kept[k] == 1 && !frozen[i][k];
       o.length_after += euclidean_length(wires[i][k]);
       o.length_taut += taut_len[i][k];
-      o.bends_after += geom::count_bends(wires[i][k]);
     }
+    wires[i] = join_at_twos(once(without_overlaps(wires[i])));
+    for (const auto& w : wires[i]) o.bends_after += geom::count_bends(w);
   }
   return out;
 }

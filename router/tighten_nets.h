@@ -21,8 +21,10 @@
 // Trees. A net's wires may end on each other (branch points, Steiner points) and pass through its
 // pins. Tightening a wire with its ends fixed would pull it off a branch point or a pin it passes,
 // so every wire is first cut at the ends of the net's other wires and at the net's point pins that
-// lie on it (its ends stay where they are): every wire then runs between fixed points and the net
-// stays connected. A shape pin reached only along a wire's side is cut there too when a vertex of
+// lie on it (its ends stay where they are), then joined again where exactly two wires end at a
+// point on no pin (join_at_twos): every wire then runs between fixed points (pins, points where
+// one or three or more wires end) and the net stays connected. The result is joined where two
+// wires end, pins included. A shape pin reached only along a wire's side is cut there too when a vertex of
 // the wire lies on it; otherwise (it is touched mid-segment only) that wire is kept as it is.
 //
 // Windows. A wire is tightened in a window round it (its box grown by 2(a + b) + 64): the
@@ -130,9 +132,11 @@ struct NetTightenOutcome {
   std::size_t sleeve = 0, crossings = 0;  // of the first round's tightening
   int moves = 0;                           // results taken
   bool loop = false;
-  // Per wire (after the cuts): left as it was at its last try (not free in its space, or no
-  // staircase) or never tried (a shape pin touched mid-segment); 0: tightened.
+  // Per wire as it was tightened (after the cuts, before join_at_twos): left as it was at its last
+  // try (1: not free in its space; 2: no staircase) or never tried (a shape pin touched
+  // mid-segment); 0: tightened. `pieces` are those wires.
   std::vector<char> kept;
+  NetLines pieces;
 };
 
 class NetsTightener {
@@ -142,7 +146,8 @@ class NetsTightener {
 
   // wires[i]: net i's wires (empty: none, it is not routed). In each net's space every wire
   // must lie in free space (its lift succeeds); the ones that do not are reported in the
-  // outcome. On return wires[i] holds the tightened wires (cut at branch points, see above).
+  // outcome. On return wires[i] holds the tightened wires (cut at branch points, see above, then
+  // joined again where exactly two of them meet: join_at_twos).
   // A result is taken when it is no longer than the wire it replaces and has no more bends, and
   // is better in one of the two (with `any` orientations: when it is another path, so shorter).
   // The nets with sketch[i] set hold sketches, not wires in the output's directions: round 0
@@ -158,8 +163,14 @@ class NetsTightener {
 };
 
 // Cuts a net's wires at the ends of its other wires, and at its pins, that lie on them (see
-// Trees above). Returns the wires that could not be cut (a shape pin touched mid-segment) in
-// `frozen` (indices into the result).
+// Trees above). `frozen` flags the pieces of wires that touch a shape pin mid-segment only (they
+// must stay as they are).
 NetLines cut_at_joints(const NetLines& wires, std::span<const geom::Polygon> pins, std::vector<char>* frozen = nullptr);
+
+// The wires joined where exactly two of them end at one point, except on the pins given: the same
+// metal in fewer polylines (a bend there is counted again, and a point that joins nothing else is
+// free to move). Where one, three or more wires end, they stay apart; so do closed wires (loops).
+// Deterministic (in input order).
+NetLines join_at_twos(const NetLines& wires, std::span<const geom::Polygon> pins = {});
 
 }  // namespace taut::router

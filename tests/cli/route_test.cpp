@@ -336,13 +336,14 @@ TEST(Route, GeneratedMultiPinLayoutsPassTheCheck) {
 
 // route --tighten with the nets together (issue #5, "Clearance"): every wire is pulled taut among
 // the grown blockages and the other nets' grown wires and pins, so the written layout still passes
-// the independent checker with the clearance of <rules>, every net is no longer (in its metric)
-// and has no more bends than routed, and each wire keeps its class among the blockages (the
+// the independent checker with the clearance of <rules>, every net is no longer (in its metric),
+// the bends are fewer in all, and each wire keeps its class among the blockages (the
 // homotopy words of the way between its ends along the routed wires). A two-pin net with a
 // <sketch> is routed by its tightened sketch (the others make room for it).
 TEST(Route, TightenTogetherKeepsTheRules) {
   const std::string dir = temp_dir("route_tighten_together");
   int nets = 0, fewer_bends = 0;
+  std::int64_t bends_before = 0, bends_after = 0;
   for (const std::string kind : {"rects", "maze", "degenerate", "polygons"})
     for (const std::string orient : {"rectilinear", "octilinear"}) {
       if (kSanitized && (kind == std::string("maze") || kind == std::string("polygons"))) continue;  // a sample there
@@ -372,7 +373,9 @@ TEST(Route, TightenTogetherKeepsTheRules) {
         ASSERT_EQ(x.status, y.status) << x.net;
         if (x.status != "routed") continue;
         ++nets;
-        EXPECT_LE(*y.bends, *x.bends) << x.net;
+        // bends: fewer in all (per net a wire that ends on another at an angle may now run on
+        // through that corner, where a bend is then counted)
+        bends_before += *x.bends, bends_after += *y.bends;
         fewer_bends += *y.bends < *x.bends;
         std::vector<Path> xw, yw;
         for (const io::Wire& w : x.wires) xw.push_back(w.points);
@@ -393,7 +396,9 @@ TEST(Route, TightenTogetherKeepsTheRules) {
         }
       }
     }
-  std::printf("%d routed nets tightened together, %d with fewer bends\n", nets, fewer_bends);
+  std::printf("%d routed nets tightened together, %d with fewer bends; bends %lld -> %lld\n", nets, fewer_bends,
+              static_cast<long long>(bends_before), static_cast<long long>(bends_after));
+  EXPECT_LT(bends_after * 10, bends_before * 9);
   EXPECT_GT(nets, sanitized_share(60, 2));
   EXPECT_GT(fewer_bends, sanitized_share(30, 2));
 
