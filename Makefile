@@ -65,7 +65,7 @@ bench: build
 	$(BUILD)/bench/bench_diameter_approx
 	$(BUILD)/bench/bench_check
 	$(BUILD)/bench/bench_steiner
-	$(BUILD)/bench/bench_net_router --threads 2
+	$(BUILD)/bench/bench_net_router --threads 2 --tighten
 
 install: build
 	cmake --install $(BUILD) --prefix $(or $(PREFIX),/usr/local)

@@ -1072,6 +1072,11 @@ NetRouter::Explained NetRouter::explain(const NetRouteFn& route, std::size_t net
   }
   const NetAttempt clear = tried(NetSpaceLevel::Clearance);
   const std::string a = std::to_string(space_.blockage_clearance()), b = std::to_string(space_.net_clearance());
+  if (!clear.routed && clear.code == "ROUTE-0018") {  // the route function's own way misses the clearance
+    e.code = clear.code;
+    e.reason = clear.reason;
+    return e;
+  }
   if (!clear.routed) {
     e.code = "ROUTE-0010";
     e.reason = "the clearance of <rules> closes every way between its pins: wires keep " + a +

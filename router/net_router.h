@@ -63,7 +63,9 @@
 //   - the net cannot be routed even alone, among the plain blockages: the router's own reason
 //     (an enclosed pin, a pin in a blockage, ...);
 //   - alone with the clearance it cannot: the clearance closes its way (a gap narrower than the
-//     rules allow, or a pin too near a blockage corner);
+//     rules allow, or a pin too near a blockage corner), or, when the route function says
+//     ROUTE-0018 there (its one way, e.g. a tightened sketch, comes within the clearance), its
+//     own reason;
 //   - among the other nets' pins it cannot: their pins block it (named);
 //   - otherwise the nets whose wires block it (named).
 //

@@ -422,6 +422,12 @@ TEST(Route, TightenTogetherKeepsTheRules) {
   const io::Route& a = got.layout->routes->routes[0];
   ASSERT_EQ(a.wires.size(), 1u);
   EXPECT_EQ(words.word(a.wires[0].points), words.word(got.layout->nets[0].sketch->points));
+  // a sketch 2 DBU below the box, closer than ceil(w/2) + s = 4: not routed, with the sketch named
+  std::string close = body;
+  close.replace(close.find("10,50 10,10 90,10 90,50"), 23, "10,50 10,28 90,28 90,50");
+  const auto near = run_taut({"route", layout_file("route_tighten_sketch_close", close), "--tighten", "-o", dir + "/near.xml"});
+  EXPECT_EQ(near.status, 1) << near.err;
+  EXPECT_NE(near.err.find("[ROUTE-0018] net \"a\" not routed: its <sketch> ("), std::string::npos) << near.err;
   // with --independent the wires are tightened among the blockages alone, which is said
   const auto ind = run_taut({"route", in, "--tighten", "--independent", "-o", dir + "/ind.xml"});
   EXPECT_NE(ind.err.find("ROUTE-0013"), std::string::npos) << ind.err;
