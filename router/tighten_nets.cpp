@@ -300,10 +300,14 @@ NetLines prepare(const NetLines& wires, std::span<const Polygon> pins, std::vect
 
 NetsTightener::NetsTightener(NetSpace& space, NetsTightenOptions options) : space_(&space), options_(std::move(options)) {}
 
-std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, std::span<const char> sketch) {
+std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, std::span<const Input> kind) {
   NetSpace& space = *space_;
   const std::size_t n = space.size();
   if (wires.size() != n) throw std::invalid_argument("NetsTightener::run: one entry of wires per net");
+  // Sketch nets' lines are not metal: a sketch may run along itself (a spiral winding twice round
+  // a core, and its taut wire too), so they are never cut, joined or cleared of overlaps.
+  auto is_sketch = [&](std::size_t i) { return i < kind.size() && kind[i] != Input::Wires; };
+  auto as_drawn = [&](std::size_t i) { return i < kind.size() && kind[i] == Input::Sketch; };
   stats_ = {};
   std::vector<NetTightenOutcome> out(n);
   std::vector<std::vector<char>> frozen(n);
@@ -315,7 +319,13 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
       out[i].loop = out[i].loop || SpaceTightener::is_loop(w);
     }
     const std::size_t before = wires[i].size();
-    wires[i] = prepare(wires[i], space.net(i).pins, frozen[i]);
+    if (is_sketch(i)) {
+      frozen[i].assign(wires[i].size(), 0);
+    } else {
+      wires[i] = prepare(wires[i], space.net(i).pins, frozen[i]);
+      // a closed piece of a router's wires (a tree with a cycle) is no loop sketch: kept
+      for (std::size_t k = 0; k < wires[i].size(); ++k) frozen[i][k] = frozen[i][k] || SpaceTightener::is_loop(wires[i][k]);
+    }
     stats_.split += wires[i].size() > before ? wires[i].size() - before : 0;
     taut_len[i].resize(wires[i].size());
     out[i].kept.assign(frozen[i].begin(), frozen[i].end());
@@ -348,21 +358,22 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
     }
   };
   // Is the new wire taken in place of the old one?
-  auto better = [&](const std::vector<Point>& now, const std::vector<Point>& was) {
+  // A router's wire: no longer, no more bends, better in one. A sketch's wire (no bends promised):
+  // shorter, or as long with fewer bends.
+  auto better = [&](const std::vector<Point>& now, const std::vector<Point>& was, bool sketch_net) {
     const std::vector<Point> a = canonical(now), b = canonical(was);
     if (a == b) return false;
     const std::int64_t ba = geom::count_bends(a), bb = geom::count_bends(b);
+    auto rule = [&](const auto& la, const auto& lb) {
+      return sketch_net ? (la < lb || (la == lb && ba < bb)) : (la <= lb && ba <= bb && (la < lb || ba < bb));
+    };
     switch (options_.orientations) {
       case TightenOrientations::Any:
         return true;  // the class's shortest, and another path: strictly shorter
-      case TightenOrientations::Rectilinear: {
-        const std::int64_t la = l1(a), lb = l1(b);
-        return la <= lb && ba <= bb && (la < lb || ba < bb);
-      }
-      case TightenOrientations::Octilinear: {
-        const geom::Root2 la = oct(a), lb = oct(b);
-        return la <= lb && ba <= bb && (la < lb || ba < bb);
-      }
+      case TightenOrientations::Rectilinear:
+        return rule(l1(a), l1(b));
+      case TightenOrientations::Octilinear:
+        return rule(oct(a), oct(b));
     }
     return false;
   };
@@ -377,12 +388,17 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
     const geom::NormalizedObstacles obs = space.obstacles(i, NetSpaceLevel::Full, w == dom ? std::nullopt : std::optional<Box>(w));
     const geom::FreeSpaceTriangulation tri = geom::triangulate_free_space(obs.domain, obs.obstacles);
     if (!tri.ok()) throw std::logic_error("NetsTightener: a net's space could not be triangulated");
+    const Tightener t(tri);
+    if (SpaceTightener::is_loop(line)) {  // closed up at its start, which may be an obstacle's vertex
+      std::vector<std::int32_t> cycle;
+      return t.band(line, cycle, seg, where);
+    }
     Sleeve sleeve;
-    return Tightener(tri).lift(line, sleeve, seg, where);
+    return t.lift(line, sleeve, seg, where);
   };
   std::vector<std::vector<char>> fresh(n);  // sketch pieces no result has replaced yet
   for (std::size_t i = 0; i < n; ++i) {
-    if (i >= sketch.size() || !sketch[i] || wires[i].empty()) continue;
+    if (!as_drawn(i) || wires[i].empty()) continue;
     fresh[i].assign(wires[i].size(), 1);
     NetTightenOutcome& o = out[i];
     for (std::size_t k = 0; k < wires[i].size() && o.status == NetTightenOutcome::Status::Ok; ++k) {
@@ -428,7 +444,9 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
           touched = changed[k].second != i && seen[i] && boxes_meet(changed[k].first, *seen[i]);
         if (!touched) continue;
       }
-      since[i] = changed.size();
+      // a net that takes a result computed against the space as given answers to every change
+      // since then: round 1's moves of the nets before it are tried against in round 2
+      since[i] = round == 1 && !first[i].empty() ? 0 : changed.size();
       seen[i].reset();
       retry[i] = 0;
       NetTightenOutcome& o = out[i];
@@ -483,7 +501,7 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
           o.crossings += r.taut.crossings;
         }
         taut_len[i][k] = euclidean_length(r.taut.points);
-        if ((!fresh[i].empty() && fresh[i][k]) || better(r.points, wires[i][k])) {
+        if ((!fresh[i].empty() && fresh[i][k]) || better(r.points, wires[i][k], is_sketch(i))) {
           if (!fresh[i].empty()) fresh[i][k] = 0;
           next[k] = std::move(r.points);
           net_moved = true;
@@ -501,7 +519,7 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
       moved = true;
       for (const Box& b : space.wire_boxes(i)) changed.push_back({b, i});
       wires[i] = std::move(next);
-      {  // a piece pulled through a joint of its net (another wire's end, a pin) is cut there
+      if (!is_sketch(i)) {  // a piece pulled through a joint of its net (another wire's end, a pin) is cut there
         std::vector<char> fz;
         NetLines recut = prepare(wires[i], space.net(i).pins, fz);
         const bool untouched = std::find(fresh[i].begin(), fresh[i].end(), 1) != fresh[i].end();
@@ -509,6 +527,7 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
           fresh[i].clear();
           wires[i] = std::move(recut);
           frozen[i] = std::move(fz);
+          for (std::size_t k = 0; k < wires[i].size(); ++k) frozen[i][k] = frozen[i][k] || SpaceTightener::is_loop(wires[i][k]);
           o.kept.assign(frozen[i].begin(), frozen[i].end());
           taut_len[i].clear();
           for (const auto& w : wires[i]) taut_len[i].push_back(euclidean_length(w));
@@ -545,7 +564,7 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
       o.length_after += euclidean_length(wires[i][k]);
       o.length_taut += taut_len[i][k];
     }
-    wires[i] = join_at_twos(once(without_overlaps(wires[i])));
+    if (!is_sketch(i)) wires[i] = join_at_twos(once(without_overlaps(wires[i])));
     for (const auto& w : wires[i]) o.bends_after += geom::count_bends(w);
   }
   return out;

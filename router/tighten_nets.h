@@ -150,10 +150,19 @@ class NetsTightener {
   // joined again where exactly two of them meet: join_at_twos).
   // A result is taken when it is no longer than the wire it replaces and has no more bends, and
   // is better in one of the two (with `any` orientations: when it is another path, so shorter).
-  // The nets with sketch[i] set hold sketches, not wires in the output's directions: round 0
+  // The nets of kind Sketch hold sketches, not wires in the output's directions: round 0
   // checks that they lie in their nets' spaces as given (all at once, before anything moves), and
-  // each piece's first result is taken whatever it is.
-  std::vector<NetTightenOutcome> run(std::vector<NetLines>& wires, std::span<const char> sketch = {});
+  // each piece's first result is taken whatever it is, later ones when shorter (or as long with
+  // fewer bends); their lines, and TautSketch ones, are never cut, joined or cleared of overlaps
+  // (a sketch may run along itself, winding twice round a blockage), and their later results are
+  // taken the same way.
+  // kind[i] (default Wires for every net): what net i's lines are.
+  enum class Input : char {
+    Wires,       // a router's wires (cut at joints, joined; moves no longer and with no more bends)
+    Sketch,      // sketches as drawn (checked in round 0, first results taken whatever they are)
+    TautSketch,  // sketches already tightened (e.g. by the net router): never cut or joined
+  };
+  std::vector<NetTightenOutcome> run(std::vector<NetLines>& wires, std::span<const Input> kind = {});
   const NetsTightenStats& stats() const { return stats_; }
 
  private:

@@ -282,16 +282,19 @@ std::vector<router::NetPins> net_pins(const io::Layout& layout) {
   return pins;
 }
 
-// route --tighten: a two-pin net with a <sketch> is routed by its sketch pulled taut in its class
-// among the obstacles the net router gives (so the other nets make room for it, ripped up when
-// they are in its way). A sketch that leaves the window asks for a larger one (ROUTE-0002, the
+// route --tighten: a two-pin net with a <sketch>, or a net with a loop sketch, is routed by its
+// sketch pulled taut in its class among the obstacles the net router gives (so the other nets
+// make room for it, ripped up when they are in its way). A sketch that leaves the window asks for a larger one (ROUTE-0002, the
 // one code the net router widens the window for; the whole domain holds every sketch).
 router::NetAttempt sketch_attempt(const io::Layout& layout, const io::Net& net, const geom::NormalizedObstacles& obs,
-                                  const std::string& orientations) {
+                                  const std::string& orientations, const geom::Box& whole) {
   router::NetAttempt a;
   const std::vector<geom::Point>& sk = net.sketch->points;
   const geom::Box b = geom::bounding_box(sk), d = obs.domain;
-  if (b.lo.x < d.lo.x || b.lo.y < d.lo.y || b.hi.x > d.hi.x || b.hi.y > d.hi.y) {
+  // a loop sketch is taken on the whole domain only (the net router's window proofs are for wires
+  // between pins)
+  if (b.lo.x < d.lo.x || b.lo.y < d.lo.y || b.hi.x > d.hi.x || b.hi.y > d.hi.y ||
+      (WireTightener::is_loop(sk) && !(d == whole))) {
     a.code = "ROUTE-0002";
     a.reason = "the sketch leaves the window";
     return a;
@@ -313,14 +316,6 @@ router::NetAttempt sketch_attempt(const io::Layout& layout, const io::Net& net, 
   a.routed = true;
   a.wires.push_back(std::move(r.points));
   return a;
-}
-
-// "net "a"'s wire, net "b"'s pin", or "a blockage (grown by the clearance)" when no net is named.
-std::string clearance_blockers(const io::Layout& layout, const router::NetTightenOutcome& o) {
-  std::string out;
-  for (const std::size_t j : o.wire_blockers) out += (out.empty() ? "" : ", ") + ("net \"" + layout.nets[j].name + "\"'s wire");
-  for (const std::size_t j : o.pin_blockers) out += (out.empty() ? "" : ", ") + ("net \"" + layout.nets[j].name + "\"'s pin");
-  return out.empty() ? "a blockage (half the wire width plus the spacing)" : out;
 }
 
 }  // namespace
@@ -536,8 +531,15 @@ void add_route(CLI::App& app, int& status) {
           router::NetRouter nr(space.domain, space.obstacles, std::move(pins), rules, nro);
           nr.run([&](std::size_t i, const router::NetPins&, const geom::NormalizedObstacles& obs) {
             const io::Net& net = layout->nets[i];
-            if (follows_sketch(net) && !WireTightener::is_loop(net.sketch->points))
-              return sketch_attempt(*layout, net, obs, orient_word);
+            if (follows_sketch(net)) {
+              if (contractible_loop.count(net.name)) {
+                router::NetAttempt a;
+                a.code = "TIGHTEN-0005";
+                a.reason = "the loop sketch winds around no blockage: it can be pulled to a point";
+                return a;
+              }
+              return sketch_attempt(*layout, net, obs, orient_word, net_domain);
+            }
             NetResult r;
             if (octilinear) {
               router::OctRouter rt(obs.domain, obs.obstacles);
@@ -609,7 +611,8 @@ void add_route(CLI::App& app, int& status) {
                                           "homotopy class and does not follow the <sketch> (--tighten or "
                                           "taut tighten pull the sketch taut in its class)"}},
                               args->load.quiet);
-        } else if (!(follows_sketch(net) && WireTightener::is_loop(net.sketch->points))) {  // a loop net is tightened below
+        } else if (!(follows_sketch(net) && WireTightener::is_loop(net.sketch->points) &&
+                     (args->independent || contractible_loop.count(net.name)))) {  // said below
           print_diagnostics({Diagnostic{Severity::Warning, r.code, layout->file, net.line, 0,
                                         "net \"" + net.name + "\" not routed: " + *r.route.reason}},
                             args->load.quiet);
@@ -624,43 +627,34 @@ void add_route(CLI::App& app, int& status) {
         if (layout->rules) rules = {layout->rules->wire_width, layout->rules->spacing};
         router::NetSpace ts(net_domain, norm.obstacles, net_pins(*layout), rules);
         std::vector<router::NetLines> wires(layout->nets.size());
-        std::vector<char> sketch(layout->nets.size(), 0);
+        using Input = router::NetsTightener::Input;
+        std::vector<Input> kind(layout->nets.size(), Input::Wires);
         for (std::size_t i = 0; i < layout->nets.size(); ++i) {
           const io::Net& net = layout->nets[i];
           if (follows_sketch(net) && WireTightener::is_loop(net.sketch->points)) {
-            if (!contractible_loop.count(net.name)) wires[i] = {net.sketch->points};
-            sketch[i] = 1;
+            kind[i] = Input::TautSketch;  // the net router's wire is its tightened loop (it may wind twice)
+            if (routes.routes[i].status == "routed")
+              for (const io::Wire& w : routes.routes[i].wires) wires[i].push_back(w.points);
           } else if (routes.routes[i].status == "routed") {
             for (const io::Wire& w : routes.routes[i].wires) wires[i].push_back(w.points);
+            if (follows_sketch(net)) kind[i] = Input::TautSketch;  // its tightened sketch, which may run along itself
           }
         }
         router::NetsTightenOptions o;
         o.orientations = tighten_orientations(orient_word);
         o.stop = stop;
         router::NetsTightener nt(ts, o);
-        const std::vector<router::NetTightenOutcome> outs = nt.run(wires, sketch);
+        const std::vector<router::NetTightenOutcome> outs = nt.run(wires, kind);
         tighten_stats = nt.stats();
         for (std::size_t i = 0; i < layout->nets.size(); ++i) {
           const io::Net& net = layout->nets[i];
           io::Route& route = routes.routes[i];
           router::NetTightenOutcome oc = outs[i];
           const bool was_routed = route.status == "routed";
-          using St = router::NetTightenOutcome::Status;
-          if (sketch[i] && (contractible_loop.count(net.name) || oc.status == St::Contractible ||
-                            (oc.status == St::NotFree && oc.round == 0) || oc.untightened)) {
-            if (contractible_loop.count(net.name)) oc.status = St::Contractible;
-            const bool stuck = oc.status != St::Contractible && oc.status != St::NoStaircase && oc.round > 0;
-            std::string code = oc.status == St::Contractible ? "TIGHTEN-0005"
-                               : oc.status == St::NoStaircase ? "TIGHTEN-0004"
-                               : stuck                        ? "TIGHTEN-0010"
-                                                              : "ROUTE-0018";
-            std::string reason =
-                oc.status == St::Contractible ? std::string("the loop sketch winds around no blockage: it can be pulled to a point")
-                : oc.status == St::NoStaircase ? no_staircase_reason(orient_word) + " (the net's <sketch>)"
-                : stuck ? "its loop sketch could not be pulled taut: the other nets' wires came to exactly the clearance on "
-                          "both sides of it (at or after " + point_text(oc.lift.where) + "), leaving it no room"
-                        : "the loop <sketch> comes within the clearance of " + clearance_blockers(*layout, oc) +
-                              " at or after " + point_text(oc.lift.where);
+          const bool loop_net = follows_sketch(net) && WireTightener::is_loop(net.sketch->points);
+          if (loop_net && contractible_loop.count(net.name)) {  // the net router was told so: said here
+            const std::string code = "TIGHTEN-0005";
+            const std::string reason = "the loop sketch winds around no blockage: it can be pulled to a point";
             if (was_routed) --routed;
             route = io::Route{};
             route.net = net.name;

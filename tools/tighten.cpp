@@ -194,12 +194,22 @@ void add_tighten(CLI::App& app, int& status) {
         pins.push_back(std::move(np));
       }
       const geom::NormalizedObstacles plain = routing_obstacles(*layout, extra);
-      net_space = std::make_unique<router::NetSpace>(domain, plain.obstacles, std::move(pins), rules);
+      try {
+        net_space = std::make_unique<router::NetSpace>(domain, plain.obstacles, std::move(pins), rules);
+      } catch (const std::domain_error& e) {
+        print_diagnostics({Diagnostic{Severity::Error, "TIGHTEN-0007", layout->file, layout->rules->line, 0,
+                                      std::string("--clearance: ") + e.what() + " (" + std::to_string(grow) +
+                                          " DBU round every blockage, " + std::to_string(width + spacing) +
+                                          " round every wire and pin)"}});
+        status = kInvalid;
+        return;
+      }
       for (std::size_t i = 0; i < layout->nets.size(); ++i) together[i] = inputs[i].lines;
       router::NetsTightenOptions o;
       o.orientations = tighten_orientations(orientations);
       router::NetsTightener nt(*net_space, o);
-      together_out = nt.run(together, std::vector<char>(layout->nets.size(), 1));
+      together_out = nt.run(together, std::vector<router::NetsTightener::Input>(layout->nets.size(),
+                                                                              router::NetsTightener::Input::Sketch));
       together_stats = nt.stats();
     }
     const auto t1 = Clock::now();
@@ -267,7 +277,7 @@ void add_tighten(CLI::App& app, int& status) {
           continue;
         }
         contractible = oc.status == St::Contractible;
-        no_staircase = oc.untightened && oc.status == St::NoStaircase;
+        no_staircase = oc.untightened && oc.wire < oc.kept.size() && oc.kept[oc.wire] == 2;
         if (oc.untightened && !no_staircase) {
           route.status = "failed";
           route.reason = "its sketch could not be pulled taut: the other nets' wires came to exactly the clearance "

@@ -433,6 +433,60 @@ TEST(Tighten, ClearanceFromBlockages) {
   EXPECT_EQ(read_text(dir + "/c.xml"), "old");
 }
 
+// Together with the clearance (a review's cases): wind.xml's spiral, whose sketch and taut wire run
+// along themselves (twice round the core), stays one wire from pin to pin in its class, and every
+// net passes taut check, in all three orientations and through route --tighten (the guard ring is
+// routed by the net router as its tightened loop); the first round does not depend on the order of
+// the nets (B's wire is the same with B first); rules too large for the coordinates are refused.
+TEST(Tighten, TogetherReviewCases) {
+  const std::string dir = temp_dir("tighten_together_review");
+  const std::string wind = kDesigns + "wind.xml";
+  io::ReadResult in = io::read_layout(wind);
+  ASSERT_TRUE(in.layout);
+  const auto r = reference_for<oracle::L1Reference>(wind);
+  const oracle::HomotopyWords h(r.norm.domain, r.norm.obstacles);
+  const io::Net* spiral = nullptr;
+  for (const io::Net& n : in.layout->nets)
+    if (n.name == "spiral") spiral = &n;
+  ASSERT_NE(spiral, nullptr);
+  for (const std::string o : {"any", "rectilinear", "octilinear"}) {
+    SCOPED_TRACE(o);
+    const auto t = run_taut({"tighten", wind, "--clearance", "--orientations", o, "-q", "-o", dir + "/t.xml"});
+    ASSERT_EQ(t.status, 0) << t.err;
+    EXPECT_EQ(run_taut({"check", dir + "/t.xml", "-q"}).status, 0);
+    const std::vector<Path> w = wires_of(dir + "/t.xml", "spiral");
+    ASSERT_EQ(w.size(), 1u);
+    EXPECT_EQ(w[0].front(), spiral->sketch->points.front());
+    EXPECT_EQ(w[0].back(), spiral->sketch->points.back());
+    EXPECT_EQ(h.word(w[0]), h.word(spiral->sketch->points));
+  }
+  const auto routed = run_taut({"route", wind, "--tighten", "--orientations", "octilinear", "-o", dir + "/r.xml"});
+  EXPECT_EQ(routed.status, 0) << routed.err;
+  EXPECT_EQ(run_taut({"check", dir + "/r.xml", "-q"}).status, 0);
+  const std::vector<Path> rs = wires_of(dir + "/r.xml", "spiral");
+  ASSERT_EQ(rs.size(), 1u);
+  EXPECT_EQ(h.word(rs[0]), h.word(spiral->sketch->points));
+  // order
+  const std::string a = "  <net name=\"A\"><pin name=\"p\" x=\"100\" y=\"500\"/><pin name=\"q\" x=\"900\" y=\"500\"/>\n"
+                        "    <sketch points=\"100,500 100,900 900,900 900,500\"/></net>\n";
+  const std::string b = "  <net name=\"B\"><pin name=\"p\" x=\"500\" y=\"950\"/><pin name=\"q\" x=\"500\" y=\"50\"/>\n"
+                        "    <sketch points=\"500,950 50,950 50,50 500,50\"/></net>\n";
+  const std::string head = "  <boundary x0=\"0\" y0=\"0\" x1=\"1000\" y1=\"1000\"/>\n"
+                           "  <rules wire-width=\"10\" spacing=\"10\" orientations=\"any\"/>\n"
+                           "  <blockage id=\"b\"><rect x0=\"600\" y0=\"200\" x1=\"700\" y1=\"300\"/></blockage>\n";
+  ASSERT_EQ(run_taut({"tighten", layout_file("tighten_order_ab", head + a + b), "--clearance", "-q", "-o", dir + "/ab.xml"}).status, 0);
+  ASSERT_EQ(run_taut({"tighten", layout_file("tighten_order_ba", head + b + a), "--clearance", "-q", "-o", dir + "/ba.xml"}).status, 0);
+  EXPECT_EQ(wires_of(dir + "/ab.xml", "B"), wires_of(dir + "/ba.xml", "B"));
+  EXPECT_EQ(wires_of(dir + "/ab.xml", "B"), (std::vector<Path>{{{500, 950}, {80, 520}, {80, 480}, {500, 50}}}));
+  // rules whose w + s passes the coordinate limit
+  const std::string huge = "  <rules wire-width=\"1000000000\" spacing=\"500000000\" orientations=\"any\"/>\n" + a;
+  write_text(dir + "/h.xml", "old");
+  const auto refused = run_taut({"tighten", layout_file("tighten_huge_rules", huge), "--clearance", "-o", dir + "/h.xml"});
+  EXPECT_EQ(refused.status, 2) << refused.err;
+  EXPECT_NE(refused.err.find("[TIGHTEN-0007]"), std::string::npos) << refused.err;
+  EXPECT_EQ(read_text(dir + "/h.xml"), "old");
+}
+
 // Two sloped triangles leave the free segment (0,0)-(3,1) with no lattice staircase (the
 // corridor is 2/3 wide): rectilinear output fails for that net, `any` writes the segment.
 TEST(Tighten, NoLatticeStaircaseInTheClassIsAFailedNet) {
