@@ -15,7 +15,7 @@
 // length: flat means linear). `online_s`: the same sketches fed point by point to
 // router::OnlineTightener with the current path read after every point (a path per point, so
 // it is expected to cost more than one tightening at the end). Then the time to write every taut
-// wire in rectilinear and in octilinear directions (router::c_oriented: the fewest-link
+// wire in rectilinear, octilinear, c:0,45 and c:45,135 directions (router::c_oriented: the fewest-link
 // staircases of the class, best of R, as a ratio to tightening them), and the minimum-link paths
 // of the first 1,000 (router::MinLinker: time, links against the shortest wire's, and
 // the longest exact coordinate written out). Targets (issue #5): funnel >= 10^7 triangles/s; 10^4 wires on a
@@ -156,17 +156,21 @@ int main(int argc, char** argv) {
     const taut::router::StaircaseBuilder sb(D, b.norm.obstacles);
     std::vector<std::vector<Point>> taut_paths;
     for (const auto& sk : sketches) taut_paths.push_back(tight.tighten(sk).points);
-    int c_missing[2] = {0, 0};
-    long long c_links[2] = {0, 0};
-    double t_c[2] = {0, 0};
-    for (int o = 0; o < 2; ++o)
+    // and two other lattice direction sets: one axis and one diagonal (c:0,45: cones up to 135
+    // degrees wide), and the two diagonals (c:45,135: pieces only between points of one parity)
+    const taut::geom::LatticeDirections c_sets[4] = {
+        taut::geom::LatticeDirections::rectilinear(), taut::geom::LatticeDirections::octilinear(),
+        *taut::geom::LatticeDirections::parse("c:0,45"), *taut::geom::LatticeDirections::parse("c:45,135")};
+    int c_missing[4] = {0, 0, 0, 0};
+    long long c_links[4] = {0, 0, 0, 0};
+    double t_c[4] = {0, 0, 0, 0};
+    for (int o = 0; o < 4; ++o)
       t_c[o] = seconds_of(
           [&] {
             c_missing[o] = 0;
             c_links[o] = 0;
             for (const auto& t : taut_paths) {
-              const auto c = taut::router::c_oriented(
-                  tight, sb, t, o == 0 ? taut::router::StaircaseStyle::Rectilinear : taut::router::StaircaseStyle::Octilinear);
+              const auto c = taut::router::c_oriented(tight, sb, t, c_sets[o]);
               c_missing[o] += c.points.empty();
               if (!c.points.empty()) c_links[o] += static_cast<long long>(c.points.size()) - 1;
               sink = sink + static_cast<std::int64_t>(c.points.size());
@@ -206,10 +210,10 @@ int main(int argc, char** argv) {
                 tris.size(), static_cast<long long>(crossings), static_cast<long long>(sleeve_tris), t_tighten,
                 t_tighten / t_pass, t_funnel, static_cast<double>(sleeve_tris) / t_funnel, t_funnel / t_pass, t_online,
                 t_online / t_tighten, failures);
-    for (int o = 0; o < 2; ++o)
+    for (int o = 0; o < 4; ++o)
       std::printf("%9s %s output of the %zu taut wires: %.3f s (%.3f ms per wire, %.1f x tightening one), "
                   "%d without a lattice staircase in the class, %.2f links per wire\n",
-                  "", o == 0 ? "rectilinear" : "octilinear", sketches.size(), t_c[o],
+                  "", c_sets[o].name().c_str(), sketches.size(), t_c[o],
                   t_c[o] / static_cast<double>(sketches.size()) * 1e3, t_c[o] / t_tighten, c_missing[o],
                   static_cast<double>(c_links[o]) / static_cast<double>(sketches.size() - static_cast<std::size_t>(c_missing[o])));
     std::printf("%9s minimum-link paths of the first 1,000 wires: %.3f s (%.2f ms per wire, %.1f x tightening one), "

@@ -6,6 +6,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "geom/directions.h"
 #include "geom/index.h"
 #include "geom/predicates.h"
 
@@ -262,17 +263,24 @@ struct LinkSolution {
 
 // Local frame of a link: p = a + u d[0] + v d[1], det(d[0], d[1]) = +-1, so (u, v) are
 // integers exactly for lattice points; b = (lim[0], lim[1]) with both limits > 0.
+// Frame coordinates are scaled by q = |det|: a point p = a + u d[0] + v d[1] has coordinates
+// (q u, q v), integers for every lattice point. q is 1 for every cone of the rectilinear and
+// octilinear sets (the link searches assume it) and 2 for a cone between the two diagonals of a
+// lattice direction set (geom/directions.h), whose staircases from a reach only the frame points
+// with both coordinates even.
 struct Frame {
   Point a, b;
   std::array<Dir, 2> d;
   i64 det = 1;
+  i64 q = 1;  // |det|
   std::array<i64, 2> lim{};
-  i64 u_of(Point p) const { return static_cast<i64>(cross(dir(a, p), d[1]) * det); }
-  i64 v_of(Point p) const { return static_cast<i64>(cross(d[0], dir(a, p)) * det); }
+  i64 u_of(Point p) const { return static_cast<i64>(cross(dir(a, p), d[1]) * (det > 0 ? 1 : -1)); }
+  i64 v_of(Point p) const { return static_cast<i64>(cross(d[0], dir(a, p)) * (det > 0 ? 1 : -1)); }
   i64 coord(Point p, int k) const { return k == 0 ? u_of(p) : v_of(p); }
+  // The point at frame coordinates (u, v), both multiples of q.
   Point at(i64 u, i64 v) const {
-    return {static_cast<geom::Coord>(a.x + u * d[0].x + v * d[1].x),
-            static_cast<geom::Coord>(a.y + u * d[0].y + v * d[1].y)};
+    return {static_cast<geom::Coord>(a.x + (u * d[0].x + v * d[1].x) / q),
+            static_cast<geom::Coord>(a.y + (u * d[0].y + v * d[1].y) / q)};
   }
   // The point at position pos on the family-k line `line` (k = 0: v = line; k = 1: u = line).
   Point on_line(int k, i64 line, i64 pos) const { return k == 0 ? at(pos, line) : at(line, pos); }
@@ -640,16 +648,24 @@ struct LinkDirs {
   std::array<Dir, 2> d;
   bool straight = false;
 };
-LinkDirs link_dirs(Point a, Point b, StaircaseStyle style) {
+LinkDirs link_dirs(Point a, Point b, const geom::LatticeDirections& set) {
   const i64 dx = i64{b.x} - a.x, dy = i64{b.y} - a.y;
   const i64 sx = sgn(dx), sy = sgn(dy), ax = std::abs(dx), ay = std::abs(dy);
   LinkDirs r;
-  r.straight = dx == 0 || dy == 0 || (style == StaircaseStyle::Octilinear && ax == ay);
+  r.straight = set.along(dx, dy);
   if (r.straight) r.d = {Dir{sx, sy}, Dir{sx, sy}};
-  else if (style == StaircaseStyle::Rectilinear) r.d = {Dir{sx, 0}, Dir{0, sy}};
-  else if (ax > ay) r.d = {Dir{sx, 0}, Dir{sx, sy}};
-  else r.d = {Dir{0, sy}, Dir{sx, sy}};
+  else if (set.is_rectilinear()) r.d = {Dir{sx, 0}, Dir{0, sy}};
+  else if (set.is_octilinear() && ax > ay) r.d = {Dir{sx, 0}, Dir{sx, sy}};
+  else if (set.is_octilinear()) r.d = {Dir{0, sy}, Dir{sx, sy}};
+  else {
+    const auto [d1, d2] = set.cone_steps(set.cone(dx, dy));
+    r.d = {Dir{d1.x, d1.y}, Dir{d2.x, d2.y}};
+  }
   return r;
+}
+LinkDirs link_dirs(Point a, Point b, StaircaseStyle style) {
+  return link_dirs(a, b, style == StaircaseStyle::Rectilinear ? geom::LatticeDirections::rectilinear()
+                                                              : geom::LatticeDirections::octilinear());
 }
 
 // The frame of a non-straight link, with the wedges its two directions leave a and reach b in.
@@ -658,7 +674,8 @@ Frame link_frame(Workspace& ws, Point a, Point b, const std::array<Dir, 2>& d, L
   fr.a = a;
   fr.b = b;
   fr.d = d;
-  fr.det = static_cast<i64>(cross(d[0], d[1]));  // +-1
+  fr.det = static_cast<i64>(cross(d[0], d[1]));  // +-1, or +-2 between two diagonals
+  fr.q = fr.det < 0 ? -fr.det : fr.det;
   fr.lim = {fr.u_of(b), fr.v_of(b)};
   for (int k = 0; k < 2; ++k) {
     s.start_wedge[k] = ws.at(a).wedge_of(d[k]);
@@ -672,26 +689,34 @@ Frame link_frame(Workspace& ws, Point a, Point b, const std::array<Dir, 2>& d, L
 // optimum, for link_table). Otherwise a pair is only searched below the best pair found so
 // far that uses the same wedges at the joints plus the number of joints: swapping that best
 // pair in changes each joint by at most one bend, so no DP over the links needs more.
+// A link along one of the set's directions: the segment itself, when it is free.
+LinkSolution solve_straight(Workspace& ws, Point a, Point b, const geom::LatticeDirections& set) {
+  LinkSolution s;
+  const auto [d, straight] = link_dirs(a, b, set);
+  s.d = d;
+  s.nd = 1;
+  const int w0 = ws.at(a).wedge_of(d[0]);
+  if (w0 < 0 || !ws.segment_ok(a, b)) return s;
+  const int w1 = ws.at(b).wedge_of(neg(d[0]));
+  if (w1 < 0) return s;
+  s.start_wedge = {w0, w0};
+  s.end_wedge = {w1, w1};
+  for (int f = 0; f < 2; ++f)
+    for (int l = 0; l < 2; ++l) {
+      s.bends[f][l] = 0;
+      s.path[f][l] = {a, b};
+    }
+  return s;
+}
+
 LinkSolution solve_link(Workspace& ws, Point a, Point b, StaircaseStyle style, bool exact,
                         int joints) {
-  LinkSolution s;
   const auto [d, straight] = link_dirs(a, b, style);
+  if (straight)
+    return solve_straight(ws, a, b, style == StaircaseStyle::Rectilinear ? geom::LatticeDirections::rectilinear()
+                                                                         : geom::LatticeDirections::octilinear());
+  LinkSolution s;
   s.d = d;
-  if (straight) {
-    s.nd = 1;
-    const int w0 = ws.at(a).wedge_of(d[0]);
-    if (w0 < 0 || !ws.segment_ok(a, b)) return s;
-    const int w1 = ws.at(b).wedge_of(neg(d[0]));
-    if (w1 < 0) return s;
-    s.start_wedge = {w0, w0};
-    s.end_wedge = {w1, w1};
-    for (int f = 0; f < 2; ++f)
-      for (int l = 0; l < 2; ++l) {
-        s.bends[f][l] = 0;
-        s.path[f][l] = {a, b};
-      }
-    return s;
-  }
   ++ws.stats().links;
   const Frame fr = link_frame(ws, a, b, d, s);
   LinkSolver solver(ws, fr);
@@ -774,6 +799,21 @@ class PieceSolver {
       a_[1].push_back(fr.v_of(p));
     }
     lim_ = fr.lim;
+    // The domain's sides as walls, the outside on their left (clockwise round the domain): the
+    // box [0, U] x [0, V] of a cone wider than 90 degrees (c:0,45's between NE and W, say) reaches
+    // out of the box of a and b, and the staircase must not leave the domain there.
+    const Box& D = ws.im().domain;
+    const std::array<Point, 4> c{Point{D.lo.x, D.lo.y}, Point{D.lo.x, D.hi.y}, Point{D.hi.x, D.hi.y},
+                                 Point{D.hi.x, D.lo.y}};
+    for (std::size_t i = 0; i < 4; ++i) {
+      ClipWall w;
+      w.p = {fr.u_of(c[i]), fr.v_of(c[i])};
+      w.q = {fr.u_of(c[(i + 1) % 4]), fr.v_of(c[(i + 1) % 4])};
+      if (clip(w)) {
+        w.side = side_of(w);
+        domain_walls_.push_back(w);
+      }
+    }
   }
 
   // The greedy staircase leaving a along d[first]: its points (frame), or empty when it gets stuck.
@@ -917,7 +957,8 @@ class PieceSolver {
         sd1 = d;
       }
     }
-    const i128 f = std::min(floor_frac(at(w, k, sn0, sd0), sd0), floor_frac(at(w, k, sn1, sd1), sd1));
+    i128 f = std::min(floor_frac(at(w, k, sn0, sd0), sd0), floor_frac(at(w, k, sn1, sd1), sd1));
+    f = floor_frac(f, fr_.q) * fr_.q;  // down to the staircase's lattice (q = 1 but between diagonals)
     return f < lim_[k] ? static_cast<i64>(f) : lim_[k];
   }
 
@@ -927,6 +968,8 @@ class PieceSolver {
   i64 reach(int k, const std::array<i64, 2>& pos) {
     const int o = 1 - k, want = k == 0 ? -1 : 1;
     i64 best = lim_[k];
+    for (const ClipWall& w : domain_walls_)
+      if (w.side == want) best = std::min(best, wall_reach(w, k, pos));
     // slabs [from, B] of doubling width: a wall point that stops the run before B lies in one of
     // the slabs so far, each only as tall as alpha allows at its right side
     i64 from = pos[k];
@@ -938,16 +981,28 @@ class PieceSolver {
       from = B;
       lo[o] = pos[o];
       hi[o] = std::max(pos[o], std::min(lim_[o], alpha_ceil(k, B)));
-      Box box{fr_.at(lo[0], lo[1]), fr_.at(lo[0], lo[1])};
-      for (const Point c : {fr_.at(hi[0], lo[1]), fr_.at(lo[0], hi[1]), fr_.at(hi[0], hi[1])}) {
-        box.lo = {std::min(box.lo.x, c.x), std::min(box.lo.y, c.y)};
-        box.hi = {std::max(box.hi.x, c.x), std::max(box.hi.y, c.y)};
-      }
-      index_.edges_in_box(box, ids_);
+      index_.edges_in_box(frame_box(lo, hi), ids_);
       for (const std::uint32_t id : ids_)
         if (const ClipWall* w = wall(id); w && w->side == want) best = std::min(best, wall_reach(*w, k, pos));
       if (best <= B || B == lim_[k]) return best;
     }
+  }
+
+  // The box of the frame parallelogram [lo, hi], its corners rounded outward (they are not
+  // lattice points when q = 2).
+  Box frame_box(const std::array<i64, 2>& lo, const std::array<i64, 2>& hi) const {
+    i64 x0 = std::numeric_limits<i64>::max(), y0 = x0, x1 = std::numeric_limits<i64>::min(), y1 = x1;
+    for (const i64 u : {lo[0], hi[0]})
+      for (const i64 v : {lo[1], hi[1]}) {
+        const i64 X = i64{fr_.a.x} * fr_.q + u * fr_.d[0].x + v * fr_.d[1].x;
+        const i64 Y = i64{fr_.a.y} * fr_.q + u * fr_.d[0].y + v * fr_.d[1].y;
+        x0 = std::min(x0, static_cast<i64>(floor_div(X, fr_.q)));
+        y0 = std::min(y0, static_cast<i64>(floor_div(Y, fr_.q)));
+        x1 = std::max(x1, static_cast<i64>(geom::ceil_div(X, fr_.q)));
+        y1 = std::max(y1, static_cast<i64>(geom::ceil_div(Y, fr_.q)));
+      }
+    return Box{{static_cast<geom::Coord>(x0), static_cast<geom::Coord>(y0)},
+               {static_cast<geom::Coord>(x1), static_cast<geom::Coord>(y1)}};
   }
 
   const geom::ObstacleIndex& index_;
@@ -956,17 +1011,19 @@ class PieceSolver {
   std::array<std::vector<i64>, 2> a_;  // alpha's vertices: u and v (both strictly increasing)
   std::array<i64, 2> lim_{};
   std::vector<ClipWall> walls_;
+  std::vector<ClipWall> domain_walls_;
   std::unordered_map<std::uint32_t, int> cache_;  // edge id -> index in walls_, -1: misses the box
   std::vector<std::uint32_t> ids_;
 };
 
 // One piece (alpha from a to b, every segment strictly inside one cone of the style) in its class.
-LinkSolution solve_piece(Workspace& ws, std::span<const Point> alpha, StaircaseStyle style) {
+LinkSolution solve_piece(Workspace& ws, std::span<const Point> alpha, const geom::LatticeDirections& set) {
   const Point a = alpha.front(), b = alpha.back();
   LinkSolution s;
-  s.d = link_dirs(a, b, style).d;  // not straight: the caller checked
+  s.d = link_dirs(a, b, set).d;  // not straight: the caller checked
   ++ws.stats().links;
   const Frame fr = link_frame(ws, a, b, s.d, s);
+  if (fr.lim[0] % fr.q != 0 || fr.lim[1] % fr.q != 0) return s;  // b is off a's lattice: no staircase
   PieceSolver solver(ws, fr, alpha);
   for (int f = 0; f < 2; ++f) {
     if (s.start_wedge[f] < 0) continue;
@@ -1130,6 +1187,16 @@ std::optional<std::vector<Point>> StaircaseBuilder::staircase_in_class(std::span
                                                                        std::span<const std::size_t> cuts,
                                                                        StaircaseStyle style,
                                                                        StaircaseStats* stats) const {
+  return staircase_in_class(taut, cuts,
+                            style == StaircaseStyle::Rectilinear ? geom::LatticeDirections::rectilinear()
+                                                                 : geom::LatticeDirections::octilinear(),
+                            stats);
+}
+
+std::optional<std::vector<Point>> StaircaseBuilder::staircase_in_class(std::span<const Point> taut,
+                                                                       std::span<const std::size_t> cuts,
+                                                                       const geom::LatticeDirections& set,
+                                                                       StaircaseStats* stats) const {
   StaircaseStats local;
   StaircaseStats& st = stats ? *stats : local;
   if (taut.empty() || cuts.size() < 2 || cuts.front() != 0 || cuts.back() != taut.size() - 1)
@@ -1144,11 +1211,11 @@ std::optional<std::vector<Point>> StaircaseBuilder::staircase_in_class(std::span
     const std::size_t i0 = cuts[k], i1 = cuts[k + 1];
     if (i1 <= i0) return std::nullopt;
     const Point a = taut[i0], b = taut[i1];
-    if (link_dirs(a, b, style).straight) {
+    if (link_dirs(a, b, set).straight) {
       if (i1 != i0 + 1) return std::nullopt;  // a piece along a basis direction is one segment
-      sol.push_back(solve_link(ws, a, b, style, false, 3));
+      sol.push_back(solve_straight(ws, a, b, set));
     } else {
-      sol.push_back(solve_piece(ws, taut.subspan(i0, i1 - i0 + 1), style));
+      sol.push_back(solve_piece(ws, taut.subspan(i0, i1 - i0 + 1), set));
     }
   }
   return join_links(ws, sol);

@@ -69,6 +69,7 @@
 #include <span>
 #include <vector>
 
+#include "geom/directions.h"
 #include "geom/predicates.h"
 #include "geom/types.h"
 
@@ -143,6 +144,14 @@ class StaircaseBuilder {
   std::optional<std::vector<geom::Point>> staircase_in_class(std::span<const geom::Point> taut,
                                                              std::span<const std::size_t> cuts,
                                                              StaircaseStyle style,
+                                                             StaircaseStats* stats = nullptr) const;
+  // The same in any lattice direction set (geom/directions.h; the style is rectilinear or
+  // octilinear). A cone between the two diagonals (e.g. in c:45,135) has staircases from a only
+  // through the lattice points of a's parity (x + y even or odd): a piece whose end is of the
+  // other parity has none.
+  std::optional<std::vector<geom::Point>> staircase_in_class(std::span<const geom::Point> taut,
+                                                             std::span<const std::size_t> cuts,
+                                                             const geom::LatticeDirections& set,
                                                              StaircaseStats* stats = nullptr) const;
 
   // Per-link table (diagnostics and tests).

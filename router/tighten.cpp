@@ -669,26 +669,20 @@ std::vector<Point> OnlineTightener::path() const {
 
 namespace {
 
-// The open cone between neighbouring basis directions that holds d (d != 0), or -1 when d is
-// a basis direction. Rectilinear: quadrants 0..3; octilinear: octants 0..7.
-int cone_of(Point a, Point b, StaircaseStyle style) {
-  const i64 dx = i64{b.x} - a.x, dy = i64{b.y} - a.y;
-  if (dx == 0 || dy == 0) return -1;
-  const int quadrant = dx > 0 ? (dy > 0 ? 0 : 3) : (dy > 0 ? 1 : 2);
-  if (style == StaircaseStyle::Rectilinear) return quadrant;
-  const i64 ax = dx < 0 ? -dx : dx, ay = dy < 0 ? -dy : dy;
-  if (ax == ay) return -1;
-  // within the quadrant: the half next to the x axis or the one next to the y axis, counted
-  // counter-clockwise
-  const bool near_x = ax > ay;
-  const bool first_half = (quadrant % 2 == 0) ? near_x : !near_x;
-  return 2 * quadrant + (first_half ? 0 : 1);
-}
-
 }  // namespace
 
 COriented c_oriented(const Tightener& tight, const StaircaseBuilder& sb, std::span<const Point> taut,
                      StaircaseStyle style) {
+  return c_oriented(tight, sb, taut,
+                    style == StaircaseStyle::Rectilinear ? geom::LatticeDirections::rectilinear()
+                                                         : geom::LatticeDirections::octilinear());
+}
+
+COriented c_oriented(const Tightener& tight, const StaircaseBuilder& sb, std::span<const Point> taut,
+                     const geom::LatticeDirections& set) {
+  // The open cone between neighbouring basis directions that holds a link, or -1 when the link
+  // lies along a basis direction.
+  auto cone_of = [&](Point a, Point b) { return set.cone(i64{b.x} - a.x, i64{b.y} - a.y); };
   COriented r;
   if (taut.size() <= 1) {
     r.points.assign(taut.begin(), taut.end());
@@ -696,14 +690,14 @@ COriented c_oriented(const Tightener& tight, const StaircaseBuilder& sb, std::sp
   }
   std::vector<std::size_t> cut_at{0};  // indices of the cuts in taut
   for (std::size_t i = 1; i + 1 < taut.size(); ++i) {
-    const int c0 = cone_of(taut[i - 1], taut[i], style), c1 = cone_of(taut[i], taut[i + 1], style);
+    const int c0 = cone_of(taut[i - 1], taut[i]), c1 = cone_of(taut[i], taut[i + 1]);
     if (c0 < 0 || c1 < 0 || c0 != c1) cut_at.push_back(i);
   }
   cut_at.push_back(taut.size() - 1);
   // Each piece is built in its class (StaircaseBuilder::staircase_in_class); tightening the
   // result back to `taut` checks that (a class's shortest path is unique), so a bug there shows
   // as a missing wire, never as a wire in another class.
-  std::optional<std::vector<Point>> s = sb.staircase_in_class(taut, cut_at, style);
+  std::optional<std::vector<Point>> s = sb.staircase_in_class(taut, cut_at, set);
   if (!s) return r;
   const Tightened back = tight.tighten(*s);
   if (back.status != TightenStatus::Ok || !std::equal(back.points.begin(), back.points.end(), taut.begin(), taut.end()))

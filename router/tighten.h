@@ -169,8 +169,8 @@ class OnlineTightener {
   std::unique_ptr<Impl> impl_;
 };
 
-// c-oriented output (H&S section 6) for the rectilinear and octilinear direction sets, with
-// integer vertices. The Euclidean shortest path of a class is also the shortest in it under
+// c-oriented output (H&S section 6) for the lattice direction sets (rectilinear, octilinear and
+// the other subsets of 0, 45, 90 and 135 degrees: geom/directions.h), with integer vertices. The Euclidean shortest path of a class is also the shortest in it under
 // every convex distance function (Theorem 6.2), so its L1 (octilinear) length is the least of
 // the class, and every least path passes through the points where the Euclidean path's tangent
 // is a basis direction (Lemma 6.3): its vertices where consecutive links are not strictly
@@ -188,6 +188,9 @@ struct COriented {
 };
 COriented c_oriented(const Tightener& tight, const StaircaseBuilder& sb, std::span<const geom::Point> taut,
                      StaircaseStyle style);
+// The same for any lattice direction set (geom/directions.h): c:0,45, c:45,135, c:0,45,90, ...
+COriented c_oriented(const Tightener& tight, const StaircaseBuilder& sb, std::span<const geom::Point> taut,
+                     const geom::LatticeDirections& set);
 
 // Euclidean length of a polyline (double sum of exact-input square roots).
 double euclidean_length(std::span<const geom::Point> path);

@@ -26,7 +26,7 @@ SpaceTightener::SpaceTightener(const geom::NormalizedObstacles& norm, TightenOri
     throw std::logic_error("the free space of normalized obstacles could not be triangulated:" + why);
   }
   tight_ = std::make_unique<Tightener>(tri_);
-  if (orientations_ != TightenOrientations::Any) sb_ = std::make_unique<StaircaseBuilder>(norm.domain, norm.obstacles);
+  if (orientations_.set) sb_ = std::make_unique<StaircaseBuilder>(norm.domain, norm.obstacles);
 }
 
 bool SpaceTightener::is_loop(std::span<const Point> line) {
@@ -57,9 +57,7 @@ SpaceTightener::Result SpaceTightener::run(std::span<const Point> line) const {
   }
   r.points = r.taut.points;
   if (sb_) {
-    const auto style = orientations_ == TightenOrientations::Octilinear ? StaircaseStyle::Octilinear
-                                                                         : StaircaseStyle::Rectilinear;
-    COriented c = c_oriented(*tight_, *sb_, r.taut.points, style);
+    COriented c = c_oriented(*tight_, *sb_, r.taut.points, *orientations_.set);
     if (c.points.empty()) {
       r.no_staircase = true;
       r.points.clear();
@@ -217,19 +215,6 @@ NetLines join_at_twos(const NetLines& wires, std::span<const Polygon> pins) {
 
 namespace {
 
-std::int64_t l1(const std::vector<Point>& w) {
-  std::int64_t n = 0;
-  for (std::size_t i = 1; i < w.size(); ++i) n += std::abs(std::int64_t{w[i].x} - w[i - 1].x) + std::abs(std::int64_t{w[i].y} - w[i - 1].y);
-  return n;
-}
-
-geom::Root2 oct(const std::vector<Point>& w) {
-  geom::Root2 n{0, 0};
-  for (std::size_t i = 1; i < w.size(); ++i)
-    n += geom::octilinear_length(std::int64_t{w[i].x} - w[i - 1].x, std::int64_t{w[i].y} - w[i - 1].y);
-  return n;
-}
-
 // The polyline without repeated points and without vertices where it goes straight on.
 std::vector<Point> canonical(const std::vector<Point>& w) {
   std::vector<Point> out;
@@ -367,15 +352,9 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
     auto rule = [&](const auto& la, const auto& lb) {
       return sketch_net ? (la < lb || (la == lb && ba < bb)) : (la <= lb && ba <= bb && (la < lb || ba < bb));
     };
-    switch (options_.orientations) {
-      case TightenOrientations::Any:
-        return true;  // the class's shortest, and another path: strictly shorter
-      case TightenOrientations::Rectilinear:
-        return rule(l1(a), l1(b));
-      case TightenOrientations::Octilinear:
-        return rule(oct(a), oct(b));
-    }
-    return false;
+    if (!options_.orientations.set) return true;  // the class's shortest, and another path: strictly shorter
+    // lengths in the set's convex distance (twice them: exact also with half steps)
+    return rule(options_.orientations.set->length2(a), options_.orientations.set->length2(b));
   };
 
   // Round 0: the sketches (inputs that are not wires of a router) must lie in their net's space as

@@ -58,10 +58,19 @@
 
 namespace taut::router {
 
-enum class TightenOrientations { Any, Rectilinear, Octilinear };
+// The output's directions: any angle (no set: the Euclidean taut wire) or a lattice direction
+// set (geom/directions.h: rectilinear, octilinear, c:0,45, c:45,135, ...).
+struct TightenOrientations {
+  std::optional<geom::LatticeDirections> set;
+  static const TightenOrientations Any, Rectilinear, Octilinear;
+  friend bool operator==(const TightenOrientations&, const TightenOrientations&) = default;
+};
+inline const TightenOrientations TightenOrientations::Any{};
+inline const TightenOrientations TightenOrientations::Rectilinear{geom::LatticeDirections::rectilinear()};
+inline const TightenOrientations TightenOrientations::Octilinear{geom::LatticeDirections::octilinear()};
 
 // Tightening in one space: the free-space triangulation of normalized obstacles, the tightener,
-// and for rectilinear or octilinear output the staircase builder.
+// and for output in a lattice direction set the staircase builder.
 class SpaceTightener {
  public:
   SpaceTightener(const geom::NormalizedObstacles& norm, TightenOrientations orientations);

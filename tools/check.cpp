@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "geom/directions.h"
 #include "geom/normalize.h"
 #include "geom/triangulation.h"
 #include "io/layout_geometry.h"
@@ -192,13 +193,27 @@ void add_check(CLI::App& app, int& status) {
       auto t2 = Clock::now();
       if (layout->routes) {
         // The length and bends written for each routed net equal those recomputed from its
-        // wires, and with <routes orientations="rectilinear"> or "octilinear" every wire segment
-        // runs in those directions (CHECK-0002, the first offending segment of each route); then
+        // wires, and with <routes orientations="rectilinear">, "octilinear" or another lattice c:
+        // set (geom/directions.h) every wire segment runs in those directions (CHECK-0002, the first offending segment of each route); then
         // the independent checker (router/check.h): free space, connectivity, shorts and the
         // clearance of <rules>.
         int mismatches = 0, off_orientation = 0;
         const std::string& orientations = layout->routes->orientations;
-        const bool check_directions = orientations == "rectilinear" || orientations == "octilinear";
+        // rectilinear, octilinear and the other lattice c: sets (multiples of 45 degrees)
+        const std::optional<geom::LatticeDirections> set = geom::LatticeDirections::parse(orientations);
+        const bool check_directions = set.has_value();
+        std::string set_words;  // "horizontal or vertical", "at 0, 45, 90 or 135 degrees", ...
+        if (set && set->is_rectilinear()) {
+          set_words = "horizontal or vertical";
+        } else if (set) {
+          std::vector<std::string> deg;
+          for (int k = 0; k < 4; ++k)
+            if (set->mask() & (1u << k)) deg.push_back(std::to_string(45 * k));
+          set_words = "at ";
+          for (std::size_t k = 0; k < deg.size(); ++k)
+            set_words += (k == 0 ? "" : k + 1 == deg.size() ? " or " : ", ") + deg[k];
+          set_words += " degrees";
+        }
         for (const io::Route& r : layout->routes->routes) {
           if (r.status != "routed") continue;
           std::vector<std::vector<geom::Point>> wires;
@@ -224,15 +239,14 @@ void add_check(CLI::App& app, int& status) {
             for (std::size_t i = 1; i < w.points.size() && !reported; ++i) {
               const geom::Point a = w.points[i - 1], b = w.points[i];
               const std::int64_t dx = std::int64_t{b.x} - a.x, dy = std::int64_t{b.y} - a.y;
-              const bool ok = dx == 0 || dy == 0 || (orientations == "octilinear" && (dx == dy || dx == -dy));
-              if (ok) continue;
+              if (dx == 0 && dy == 0) continue;
+              if (set->along(dx, dy)) continue;
               reported = true;
               ++off_orientation;
               Diagnostic d{Severity::Error, "CHECK-0002", args->file, r.line, 0,
                            "route \"" + r.net + "\": the wire segment " + std::to_string(a.x) + "," +
                                std::to_string(a.y) + " " + std::to_string(b.x) + "," + std::to_string(b.y) +
-                               " is not " + (orientations == "octilinear" ? "at 0, 45, 90 or 135 degrees"
-                                                                            : "horizontal or vertical") +
+                               " is not " + set_words +
                                " (<routes orientations=\"" + orientations + "\">)"};
               diags.push_back(d);
               std::cerr << format(d) << '\n';

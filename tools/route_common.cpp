@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "geom/directions.h"
 #include "geom/predicates.h"
 #include "io/layout_geometry.h"
 #include "router/bend_router.h"
@@ -116,9 +117,7 @@ nlohmann::ordered_json together_stats_json(const router::NetsTightenStats& s) {
 }
 
 router::TightenOrientations tighten_orientations(const std::string& orientations) {
-  return orientations == "octilinear"    ? router::TightenOrientations::Octilinear
-         : orientations == "rectilinear" ? router::TightenOrientations::Rectilinear
-                                         : router::TightenOrientations::Any;
+  return {geom::LatticeDirections::parse(orientations)};
 }
 
 WireTightener::WireTightener(const geom::NormalizedObstacles& norm, const std::string& orientations)
@@ -144,9 +143,16 @@ std::string WireTightener::failure_text(const io::Layout& layout, const std::str
 }
 
 std::string no_staircase_reason(const std::string& orientations) {
+  const auto set = geom::LatticeDirections::parse(orientations);
+  // both diagonals, and not both axes: a cone between the diagonals, whose steps keep x + y's parity
+  const bool parity = set && (set->mask() & 0b1010) == 0b1010 && (set->mask() & 0b0101) != 0b0101;
   return "no " + orientations + " wire with integer vertices follows the taut wire's class at its length "
          "(sloped blockages pinch every lattice staircase, or an end sits in a sloped corner that no direction "
-         "of the set leaves); --orientations any writes it";
+         "of the set leaves" +
+         std::string(parity ? ", or two points every shortest wire passes through differ in the parity of x + y, "
+                              "which steps along the two diagonals keep"
+                            : "") +
+         "); --orientations any writes it";
 }
 
 }  // namespace taut::cli

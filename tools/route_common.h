@@ -59,7 +59,7 @@ std::string length_text(const geom::Root2& length);
 // orientations named as on the command line, and the words of TIGHTEN-0001.
 class WireTightener {
  public:
-  // orientations: "any", "rectilinear" or "octilinear".
+  // orientations: "any", "rectilinear", "octilinear" or a lattice c: set (tighten_orientations).
   WireTightener(const geom::NormalizedObstacles& norm, const std::string& orientations);
   using Result = router::SpaceTightener::Result;
   Result run(std::span<const geom::Point> line) const { return st_.run(line); }
@@ -78,7 +78,8 @@ class WireTightener {
 // The statistics of tightening the nets together, as --stats writes them.
 nlohmann::ordered_json together_stats_json(const router::NetsTightenStats& s);
 
-// "any", "rectilinear" or "octilinear" as router::TightenOrientations.
+// "any", "rectilinear", "octilinear" or a lattice c: set (geom::LatticeDirections::parse) as
+// router::TightenOrientations; anything else is taken as any.
 router::TightenOrientations tighten_orientations(const std::string& orientations);
 
 // The reason written for a net with no lattice staircase in its class (TIGHTEN-0004).

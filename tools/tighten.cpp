@@ -2,13 +2,15 @@
 // pulls each net's <sketch> (or, for a net without one, each of its routed wires) taut in its
 // homotopy class (router/tighten.h: the sleeve in the free-space triangulation and the funnel),
 // then writes it in the chosen directions (--orientations, else <rules>, else rectilinear):
-// `any` keeps the Euclidean shortest wire; rectilinear and octilinear write the shortest wire of
-// the class in those directions with the fewest links (router::c_oriented). The ends stay where
+// `any` keeps the Euclidean shortest wire; rectilinear, octilinear and the other lattice c: sets
+// (directions at multiples of 45 degrees: c:0,45, c:45,135, c:0,45,90, ...; geom/directions.h)
+// write the shortest wire of the class in those directions with the fewest links
+// (router::c_oriented). The ends stay where
 // they are and every vertex is an integer. A sketch or wire that leaves free space is an input
 // error (TIGHTEN-0001, file:line, nothing written); a net with nothing to tighten (TIGHTEN-0002)
 // or with no integer staircase in its class (TIGHTEN-0004) is written as failed (exit status 1).
-// `c:0,90` and `c:0,45,90,135` name rectilinear and octilinear (io::canonical_orientations); other
-// `c:` sets are refused (CLI-0027) or, from <rules>, replaced by `any` (TIGHTEN-0003).
+// `c:0,90` and `c:0,45,90,135` name rectilinear and octilinear; `c:` sets with a direction at
+// another angle are refused (CLI-0027) or, from <rules>, replaced by `any` (TIGHTEN-0003).
 // --min-link adds each open wire's minimum-link path of its class (router/minlink.h, any angle,
 // exact rational bends) to --stats and --svg; it is not written as a wire (FORMAT.md coordinates
 // are integers).
@@ -19,6 +21,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "geom/directions.h"
 #include "geom/triangulation.h"
 #include "io/layout_writer.h"
 #include "io/stats_json.h"
@@ -71,8 +74,9 @@ void add_tighten(CLI::App& app, int& status) {
   sub->add_option("--svg", args->svg, "also draw the result as SVG (input sketches and wires dashed)");
   sub->add_option("--stats", args->stats, "also write statistics as JSON (lengths before and after)");
   sub->add_option("--orientations", args->orientations,
-                  "directions of the output: rectilinear, octilinear (the shortest wire of the class in "
-                  "those directions, fewest links) or any (the Euclidean shortest); default: <rules>");
+                  "directions of the output: rectilinear, octilinear, a c: set of multiples of 45 degrees "
+                  "such as c:0,45 or c:45,135 (the shortest wire of the class in those directions, fewest "
+                  "links) or any (the Euclidean shortest); default: <rules>");
   sub->add_flag("--clearance", args->clearance,
                 "keep half the wire width plus the spacing of <rules> from every blockage (tighten against "
                 "blockages grown by that much)");
@@ -84,14 +88,19 @@ void add_tighten(CLI::App& app, int& status) {
   sub->callback([args, &status] {
     using Clock = std::chrono::steady_clock;
     const auto t0 = Clock::now();
-    const std::string o = io::canonical_orientations(args->orientations);
-    if (!o.empty() && o != "any" && o != "rectilinear" && o != "octilinear") {
-      print_usage_error("CLI-0027", "tighten: --orientations " + o +
-                                        ": only rectilinear, octilinear and any are available (a c: set "
-                                        "other than c:0,90 and c:0,45,90,135 has directions without "
-                                        "integer steps, and wire vertices are integers)");
-      status = kInvalid;
-      return;
+    // The output's directions: any, or a lattice direction set by its name (c:0,90 is rectilinear).
+    std::string o = args->orientations;
+    if (!o.empty() && o != "any") {
+      const auto set = geom::LatticeDirections::parse(o);
+      if (!set) {
+        print_usage_error("CLI-0027", "tighten: --orientations " + o +
+                                          ": expected rectilinear, octilinear, any, or a c: set of directions at "
+                                          "multiples of 45 degrees, two orientations at least (a direction at "
+                                          "another angle has no integer step, and wire vertices are integers)");
+        status = kInvalid;
+        return;
+      }
+      o = set->name();
     }
     const auto layout = load_layout(args->file, args->load);
     if (!layout) {
@@ -100,15 +109,19 @@ void add_tighten(CLI::App& app, int& status) {
     }
     std::string orientations = o;
     if (orientations.empty()) {
-      orientations = layout->rules ? io::canonical_orientations(layout->rules->orientations) : "rectilinear";
-      if (orientations != "any" && orientations != "rectilinear" && orientations != "octilinear") {
-        print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0003", layout->file, layout->rules->line, 0,
-                                      "<rules orientations=\"" + orientations +
-                                          "\">: c: direction sets other than c:0,90 and c:0,45,90,135 are not "
-                                          "available (their directions have no integer steps); tightened wires are "
-                                          "written at any angle"}},
-                          args->load.quiet);
-        orientations = "any";
+      orientations = layout->rules ? layout->rules->orientations : "rectilinear";
+      if (orientations != "any") {
+        if (const auto set = geom::LatticeDirections::parse(orientations)) {
+          orientations = set->name();
+        } else {
+          print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0003", layout->file, layout->rules->line, 0,
+                                        "<rules orientations=\"" + orientations +
+                                            "\">: a direction at an angle other than a multiple of 45 degrees has "
+                                            "no integer step, and wire vertices are integers; tightened wires are "
+                                            "written at any angle"}},
+                            args->load.quiet);
+          orientations = "any";
+        }
       }
     }
     const bool c_oriented = orientations != "any";

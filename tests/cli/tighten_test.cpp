@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "geom/directions.h"
 #include "geom/predicates.h"
 #include "io/layout_geometry.h"
 #include "io/layout_reader.h"
@@ -39,41 +40,54 @@ std::vector<Path> wires_of(const std::string& file, const std::string& net) {
 }
 
 // The c-oriented wires of `c_file` against the taut (any-angle) wires of `taut_file`: every
-// segment in the set, free, in the taut wire's class, of its L1 (octilinear) length.
-void expect_c_oriented(const std::string& c_file, const std::string& taut_file, const Inputs& inputs, bool oct) {
+// segment in the set, free, in the taut wire's class, of the set's length of the taut wire (twice
+// it, exactly: geom/directions.h). A net written as failed is counted (its reason names the set);
+// returns how many were.
+int expect_c_oriented(const std::string& c_file, const std::string& taut_file, const Inputs& inputs,
+                      const geom::LatticeDirections& set) {
   io::ReadResult rr = io::read_layout(c_file);
-  ASSERT_TRUE(rr.layout && rr.layout->routes) << c_file;
-  EXPECT_EQ(rr.layout->routes->orientations, oct ? "octilinear" : "rectilinear");
+  EXPECT_TRUE(rr.layout && rr.layout->routes) << c_file;
+  if (!rr.layout || !rr.layout->routes) return -1;
+  EXPECT_EQ(rr.layout->routes->orientations, set.name());
   std::vector<Point> extra;
   for (const auto& [net, lines] : inputs)
     for (const Path& l : lines) extra.insert(extra.end(), l.begin(), l.end());
   const auto r = reference_for<oracle::L1Reference>(c_file, extra);
   const oracle::HomotopyWords h(r.norm.domain, r.norm.obstacles);
+  int failed = 0;
   for (const auto& [net, lines] : inputs) {
-    SCOPED_TRACE(net + (oct ? " octilinear" : " rectilinear"));
+    SCOPED_TRACE(net + " " + set.name());
     const std::vector<Path> c = wires_of(c_file, net), t = wires_of(taut_file, net);
-    ASSERT_EQ(c.size(), lines.size());
-    ASSERT_EQ(t.size(), lines.size());
+    if (c.empty()) {
+      ++failed;
+      for (const io::Route& x : rr.layout->routes->routes)
+        if (x.net == net) {
+          EXPECT_EQ(x.status, "failed");
+          EXPECT_NE(x.reason.value_or("").find("no " + set.name() + " wire"), std::string::npos);
+        }
+      continue;
+    }
+    EXPECT_EQ(c.size(), lines.size());
+    EXPECT_EQ(t.size(), lines.size());
+    if (c.size() != lines.size() || t.size() != lines.size()) continue;
     for (std::size_t k = 0; k < lines.size(); ++k) {
       const Path& w = c[k];
       const bool loop = lines[k].front() == lines[k].back();
       EXPECT_EQ(w.front(), loop ? t[k].front() : lines[k].front());  // a loop: from the taut loop's base
       EXPECT_EQ(w.back(), loop ? t[k].back() : lines[k].back());
-      for (std::size_t i = 1; i < w.size(); ++i) {
-        const std::int64_t dx = std::int64_t{w[i].x} - w[i - 1].x, dy = std::int64_t{w[i].y} - w[i - 1].y;
-        EXPECT_TRUE(dx == 0 || dy == 0 || (oct && std::llabs(dx) == std::llabs(dy))) << "segment " << i;
-      }
+      for (std::size_t i = 1; i < w.size(); ++i)
+        EXPECT_TRUE(set.along(std::int64_t{w[i].x} - w[i - 1].x, std::int64_t{w[i].y} - w[i - 1].y)) << "segment " << i;
       EXPECT_TRUE(r.ref->check_path(w).has_value()) << "leaves free space";
       if (loop)
         EXPECT_TRUE(same_up_to_rotation(cyclic_word(h.word(w)), cyclic_word(h.word(lines[k])))) << "another class";
       else
         EXPECT_EQ(h.word(w), h.word(lines[k])) << "another homotopy class";
-      if (oct)
-        EXPECT_EQ(oct_length(w), oct_length(t[k]));
-      else
-        EXPECT_EQ(l1_length(w), l1_length(t[k]));
+      EXPECT_EQ(set.length2(w), set.length2(t[k]));
+      if (set.is_octilinear()) EXPECT_EQ(oct_length(w), oct_length(t[k]));
+      if (set.is_rectilinear()) EXPECT_EQ(l1_length(w), l1_length(t[k]));
     }
   }
+  return failed;
 }
 
 // Every routed wire of `out_file` against the input polyline it came from.
@@ -166,8 +180,36 @@ TEST(Tighten, WindingSketches) {
   for (const std::string o : {"rectilinear", "octilinear"}) {
     const auto c = run_taut({"tighten", in, "-q", "-o", dir + "/" + o + ".xml", "--orientations", o});
     ASSERT_EQ(c.status, 0) << c.err;
-    expect_c_oriented(dir + "/" + o + ".xml", dir + "/w.xml", inputs, o == std::string("octilinear"));
+    EXPECT_EQ(expect_c_oriented(dir + "/" + o + ".xml", dir + "/w.xml", inputs, *geom::LatticeDirections::parse(o)), 0);
   }
+  // every other lattice direction set, named in any order and with opposite directions; a net
+  // with no lattice wire of the set's length in its class is failed (exit 1), and `taut check`
+  // checks the directions of the others
+  int failed = 0, written = 0;
+  for (const std::string o : {"c:0,45", "c:180,135", "c:45,90", "c:90,135", "c:225,135", "c:0,45,90", "c:0,90,135",
+                              "c:0,45,135", "c:45,90,135"}) {
+    const auto set = *geom::LatticeDirections::parse(o);
+    const std::string out = dir + "/" + set.name().substr(2) + ".xml";
+    const auto c = run_taut({"tighten", in, "-q", "-o", out, "--orientations", o});
+    const int f = expect_c_oriented(out, dir + "/w.xml", inputs, set);
+    EXPECT_EQ(c.status, f > 0 ? 1 : 0) << o << ": " << c.err;
+    failed += f;
+    written += static_cast<int>(inputs.size()) - f;
+    const auto chk = run_taut({"check", out});  // the clearance is not kept without --clearance
+    EXPECT_NE(chk.out.find(set.name() + " orientations ok"), std::string::npos) << chk.out;
+  }
+  // with the clearance of <rules>, tightened together: `taut check` passes the whole layout
+  for (const std::string o : {"c:0,45", "c:45,135"}) {
+    const std::string out = dir + "/clear" + o.substr(2) + ".xml";
+    const auto c = run_taut({"tighten", in, "-q", "-o", out, "--orientations", o, "--clearance"});
+    ASSERT_EQ(c.status, 0) << o << ": " << c.err;
+    const auto chk = run_taut({"check", out});
+    EXPECT_EQ(chk.status, 0) << o << ": " << chk.err;
+    EXPECT_NE(chk.out.find(o + " orientations ok"), std::string::npos) << chk.out;
+    EXPECT_EQ(wires_of(out, "spiral").size(), 1u);
+  }
+  EXPECT_EQ(written, 54);  // every net in every set (the pieces' ends have the parity they need)
+  EXPECT_EQ(failed, 0);
   // the picture shows the sketches (dashed) and the tightened wires
   const std::string svg = read_text(dir + "/w.svg");
   EXPECT_NE(svg.find("class=\"sketch\" data-net=\"spiral\""), std::string::npos);
@@ -255,7 +297,7 @@ TEST(Tighten, RoutedWiresOfTheDemo) {
   // without --orientations the demo's rules (rectilinear) apply
   const auto rect = run_taut({"tighten", dir + "/r.xml", "-q", "-o", dir + "/rect.xml"});
   ASSERT_EQ(rect.status, 0) << rect.err;
-  expect_c_oriented(dir + "/rect.xml", dir + "/t.xml", inputs, false);
+  EXPECT_EQ(expect_c_oriented(dir + "/rect.xml", dir + "/t.xml", inputs, geom::LatticeDirections::rectilinear()), 0);
   test::expect_routes_check_except_clearance(dir + "/rect.xml");  // checks the directions too
   // the rectilinear wires of `route` are L1-shortest already: tightening never lengthens them
   for (const io::Net& n : rr.layout->nets) {
@@ -307,7 +349,7 @@ TEST(Tighten, RouteTighten) {
     // the tightened sketch, written at any angle, is the reference for the sketch's net
     const auto any = run_taut({"tighten", demo, "-q", "--orientations", "any", "-o", dir + "/any.xml"});
     ASSERT_EQ(any.status, 1) << any.err;  // the other nets have no sketch
-    expect_c_oriented(dir + "/tight.xml", dir + "/any.xml", sketches, o == std::string("octilinear"));
+    EXPECT_EQ(expect_c_oriented(dir + "/tight.xml", dir + "/any.xml", sketches, *geom::LatticeDirections::parse(o)), 0);
     const auto r = reference_for<oracle::L1Reference>(dir + "/tight.xml");
     const oracle::HomotopyWords h(r.norm.domain, r.norm.obstacles);
     for (const auto& [net, lines] : routed) {
@@ -521,6 +563,45 @@ TEST(Tighten, NoLatticeStaircaseInTheClassIsAFailedNet) {
   EXPECT_EQ(run.status, 2) << run.err;
   EXPECT_NE(run.err.find("[TIGHTEN-0001] net \"n\": the wire's segment 1 (3,-2 to 3,3)"), std::string::npos) << run.err;
   EXPECT_EQ(read_text(dir + "/r.xml"), "old");
+}
+
+// c:45,135 steps keep the parity of x + y: a net whose pins differ in it has no wire in those
+// directions (TIGHTEN-0004, failed, exit 1, with the reason), while c:0,45,90 writes it; the same
+// layout with the set in <rules> is tightened in it (no TIGHTEN-0003).
+TEST(Tighten, DiagonalSetKeepsParity) {
+  const std::string dir = temp_dir("tighten_parity");
+  const std::string body =
+      "  <boundary x0=\"0\" y0=\"0\" x1=\"100\" y1=\"100\"/>\n"
+      "  <blockage id=\"a\"><rect x0=\"40\" y0=\"40\" x1=\"60\" y1=\"60\"/></blockage>\n"
+      "  <net name=\"even\"><pin name=\"p\" x=\"10\" y=\"50\"/><pin name=\"q\" x=\"90\" y=\"50\"/>\n"
+      "    <sketch points=\"10,50 50,90 90,50\"/></net>\n"
+      "  <net name=\"odd\"><pin name=\"p\" x=\"10\" y=\"20\"/><pin name=\"q\" x=\"91\" y=\"20\"/>\n"
+      "    <sketch points=\"10,20 91,20\"/></net>\n";
+  const std::string file = layout_file("tighten_parity_in", body);
+  const auto run = run_taut({"tighten", file, "-o", dir + "/t.xml", "--orientations", "c:45,135"});
+  EXPECT_EQ(run.status, 1) << run.err;
+  EXPECT_NE(run.err.find("[TIGHTEN-0004] net \"odd\": no c:45,135 wire with integer vertices"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("differ in the parity of x + y"), std::string::npos) << run.err;
+  EXPECT_TRUE(wires_of(dir + "/t.xml", "odd").empty());
+  const std::vector<Path> even = wires_of(dir + "/t.xml", "even");
+  ASSERT_EQ(even.size(), 1u);
+  // round the top of the square at 45 degrees: up from (10,50) to the corner's diagonal, across, down
+  const geom::LatticeDirections diag = *geom::LatticeDirections::parse("c:45,135");
+  for (std::size_t i = 1; i < even[0].size(); ++i)
+    EXPECT_TRUE(diag.along(std::int64_t{even[0][i].x} - even[0][i - 1].x, std::int64_t{even[0][i].y} - even[0][i - 1].y));
+  EXPECT_EQ(diag.length2(even[0]), diag.length2(Path{{10, 50}, {40, 60}, {60, 60}, {90, 50}}));
+  const auto mixed = run_taut({"tighten", file, "-o", dir + "/m.xml", "--orientations", "c:0,45,90"});
+  EXPECT_EQ(mixed.status, 0) << mixed.err;
+  EXPECT_EQ(wires_of(dir + "/m.xml", "odd"), (std::vector<Path>{{{10, 20}, {91, 20}}}));
+  // from <rules>
+  const std::string rules = layout_file("tighten_parity_rules", "  <rules orientations=\"c:135,45\"/>\n" + body);
+  const auto r = run_taut({"tighten", rules, "-o", dir + "/r.xml"});
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_EQ(r.err.find("TIGHTEN-0003"), std::string::npos) << r.err;
+  EXPECT_EQ(wires_of(dir + "/r.xml", "even"), even);
+  io::ReadResult rr = io::read_layout(dir + "/r.xml");
+  ASSERT_TRUE(rr.layout && rr.layout->routes);
+  EXPECT_EQ(rr.layout->routes->orientations, "c:45,135");
 }
 
 TEST(Tighten, ContractibleLoopIsAFailedNet) {

@@ -25,6 +25,7 @@
 #include <random>
 #include <tuple>
 
+#include "geom/directions.h"
 #include "geom/predicates.h"
 #include "geom/triangulation.h"
 #include "oracle/euclid_oracle.h"
@@ -143,7 +144,8 @@ std::pair<std::int64_t, std::int64_t> style_length(const Path& p, int o) {
 
 // The c-oriented form of a tightened path, judged by the references.
 int fewest_bends_exhaustive(const oracle::L1Reference& ref, const oracle::HomotopyWords& h, const geom::Box& D, Point a,
-                            Point b, std::int64_t axis, std::int64_t diag, const std::vector<int>& word, bool oct);
+                            Point b, std::int64_t axis, std::int64_t diag, const std::vector<int>& word, unsigned steps);
+constexpr unsigned kRectSteps = 0x0F, kOctSteps = 0xFF;
 
 void check_c_oriented(const router::Tightener& tight, const router::StaircaseBuilder& sb, const oracle::L1Reference& ref,
                       const oracle::HomotopyWords& h, const geom::Box& domain,
@@ -171,7 +173,7 @@ void check_c_oriented(const router::Tightener& tight, const router::StaircaseBui
       // and when the wire is short, the exhaustive search agrees that there is none
       const auto [axis, diag] = style_length(taut, k);
       if (axis + diag <= 36) {
-        EXPECT_EQ(fewest_bends_exhaustive(ref, h, domain, taut.front(), taut.back(), axis, diag, h.word(sketch), k == 1), -1)
+        EXPECT_EQ(fewest_bends_exhaustive(ref, h, domain, taut.front(), taut.back(), axis, diag, h.word(sketch), k == 1 ? kOctSteps : kRectSteps), -1)
             << where << (k == 0 ? " rectilinear" : " octilinear") << " taut " << str(taut)
             << ": no staircase was built, but the exhaustive search finds one in the class";
         ++tot.c_missing_proven[k];
@@ -324,9 +326,13 @@ struct LatticeSteps {
   }
 };
 
+// The fewest bends of a lattice path from a to b in the class `word` made of exactly `axis` unit
+// axis steps and `diag` diagonal ones, using only the steps LatticeSteps::kSteps[d] whose bit d is
+// set in `steps` (0x0F: rectilinear, 0xFF: octilinear): a layered search over every such path.
+// -1 when there is none.
 int fewest_bends_exhaustive(const oracle::L1Reference& ref, const oracle::HomotopyWords& h, const geom::Box& D, Point a,
-                            Point b, std::int64_t axis, std::int64_t diag, const std::vector<int>& word, bool oct) {
-  const int nd = oct ? 8 : 4;
+                            Point b, std::int64_t axis, std::int64_t diag, const std::vector<int>& word, unsigned steps) {
+  const int nd = 8;
   struct Key {
     Point p;
     int dir;
@@ -348,6 +354,7 @@ int fewest_bends_exhaustive(const oracle::L1Reference& ref, const oracle::Homoto
         continue;
       }
       for (int d = 0; d < nd; ++d) {
+        if (!((steps >> d) & 1)) continue;
         const bool diagonal = d >= 4;
         const std::int64_t s1 = k.s1 + !diagonal, s2 = k.s2 + diagonal;
         if (s1 > axis || s2 > diag) continue;
@@ -449,6 +456,20 @@ router::StaircaseBuilder many_slabs(const Scene& sc) {
   return router::StaircaseBuilder(sc.domain, sc.obstacles, so);
 }
 
+// A small scene with what the c-oriented tests judge by. The homotopy reference is built first:
+// it cuts every normalized layout (obstacles pinched at their top vertex included), so a throw
+// there fails the test; a layout the L1 reference finds problems in is skipped by the caller.
+struct Judged {
+  explicit Judged(const Scene& s)
+      : sc(s), h(sc.domain, sc.obstacles), ref(sc.domain, sc.obstacles), st(setup(sc.domain, sc.obstacles)),
+        sb(many_slabs(sc)) {}
+  Scene sc;
+  oracle::HomotopyWords h;
+  oracle::L1Reference ref;
+  Scenery st;
+  router::StaircaseBuilder sb;
+};
+
 // A polygon from its vertices in either orientation (counter-clockwise as normalization wants).
 geom::Polygon poly(std::vector<Point> r) {
   if (geom::twice_area(r) < 0) std::reverse(r.begin(), r.end());
@@ -545,15 +566,10 @@ TEST(Tighten, COrientedFewestLinksOnDegenerateScenes) {
       } catch (const std::exception&) {
         continue;  // not a valid layout
       }
-      // the reference cuts every normalized layout (obstacles pinched at their top vertex
-      // included): a throw here fails the test
-      const auto hp = std::make_unique<oracle::HomotopyWords>(sc.domain, sc.obstacles);
-      const oracle::L1Reference ref(sc.domain, sc.obstacles);
+      const auto judged = std::make_unique<Judged>(sc);
+      const auto& [sc_, h, ref, st, sb] = *judged;
       if (!ref.problems().empty()) continue;
-      const Scenery st = setup(sc.domain, sc.obstacles);
       ASSERT_TRUE(st.t.ok());
-      const router::StaircaseBuilder sb = many_slabs(sc);
-      const oracle::HomotopyWords& h = *hp;
       ++scenes;
       std::vector<Point> pts = single_wedge_points(ref, N);
       if (pts.size() < 3) continue;
@@ -569,7 +585,7 @@ TEST(Tighten, COrientedFewestLinksOnDegenerateScenes) {
           const router::COriented c = router::c_oriented(*st.tight, sb, tt.points, style_of(o));
           const auto [axis, dg] = style_length(tt.points, o);
           if (axis + dg > (kSanitized ? 24 : 30)) continue;
-          const int want = fewest_bends_exhaustive(ref, h, sc.domain, sketch.front(), sketch.back(), axis, dg, w, o == 1);
+          const int want = fewest_bends_exhaustive(ref, h, sc.domain, sketch.front(), sketch.back(), axis, dg, w, o == 1 ? kOctSteps : kRectSteps);
           const std::string where = "seed " + std::to_string(seed) + " kind " + std::to_string(kind) +
                                     (o ? " octilinear" : " rectilinear") + " sketch " + str(sketch) + " taut " +
                                     str(tt.points) + " c-oriented " + str(c.points);
@@ -629,7 +645,7 @@ TEST(Tighten, COrientedFewestLinksAgainstExhaustiveSearch) {
         const auto [axis, dg] = style_length(tt.points, o);
         // keep the search small (smaller under the sanitizers, where its maps cost most of the time)
         if (axis + dg > (kSanitized ? 24 : 36)) continue;
-        const int want = fewest_bends_exhaustive(ref, h, sc.domain, sketch.front(), sketch.back(), axis, dg, w, o == 1);
+        const int want = fewest_bends_exhaustive(ref, h, sc.domain, sketch.front(), sketch.back(), axis, dg, w, o == 1 ? kOctSteps : kRectSteps);
         const int got = static_cast<int>(geom::count_bends(c.points));
         ASSERT_GE(want, 0) << where << ": the exhaustive search finds no path of that length in the class";
         ++compared;
@@ -655,6 +671,124 @@ TEST(Tighten, COrientedFewestLinksAgainstExhaustiveSearch) {
               compared, bent, min_link_compared, fewer_than_taut);
   EXPECT_GE(compared, sanitized_share(400, 15));
   EXPECT_GE(min_link_compared, sanitized_share(200, 15));
+}
+
+// The other lattice direction sets (geom/directions.h: c:0,45, c:0,135, c:45,90, c:90,135,
+// c:45,135, c:0,45,90, c:0,90,135, c:0,45,135, c:45,90,135) on the degenerate scenes above and on
+// rectangles that may touch: every wire has the taut path's ends, only the set's directions, stays
+// free, is in the sketch's class and has the set's length of the taut path (Lemma 6.1; twice it,
+// exactly, as the halves between two diagonals need); its bends are the exhaustive search's over
+// every lattice path of that length in the class with the set's steps; a missing wire only where
+// that search finds none (in c:45,135 and the sets with both diagonals and one axis, mostly ends of
+// the other parity of x + y).
+TEST(Tighten, COrientedLatticeSetsAgainstExhaustiveSearch) {
+  std::vector<geom::LatticeDirections> sets;
+  for (unsigned m = 0; m < 16; ++m)
+    if (const auto d = geom::LatticeDirections::from_mask(m); d && !d->is_rectilinear() && !d->is_octilinear())
+      sets.push_back(*d);
+  ASSERT_EQ(sets.size(), 9u);
+  // the search's steps of a set
+  auto steps_of = [](const geom::LatticeDirections& d) {
+    unsigned m = 0;
+    for (int k = 0; k < 8; ++k)
+      for (const Point s : d.steps()) m |= (s == LatticeSteps::kSteps[k]) ? 1u << k : 0u;
+    return m;
+  };
+  struct Count {
+    long long wires = 0, compared = 0, bent = 0, missing = 0, missing_proven = 0;
+  };
+  std::vector<Count> count(sets.size());
+  const int N = 9, n = static_cast<int>(sanitized_share(24, 3));
+  long long scenes = 0;
+  for (int seed = 1; seed <= n; ++seed) {
+    for (int kind = 0; kind < 6; ++kind) {
+      std::mt19937 rng(static_cast<unsigned>(seed * 131 + kind));
+      Scene sc;
+      try {
+        if (kind < 5) {
+          sc = normalized({{0, 0}, {N, N}}, degenerate_scene(rng, kind, N));
+        } else {
+          std::vector<geom::Polygon> rects;
+          for (int i = 0, k = 1 + static_cast<int>(rng() % 3); i < k; ++i) {
+            const int x0 = 1 + static_cast<int>(rng() % 6), y0 = 1 + static_cast<int>(rng() % 6);
+            rects.push_back(rect(x0, y0, x0 + 1 + static_cast<int>(rng() % 3), y0 + 1 + static_cast<int>(rng() % 3)));
+          }
+          sc = normalized({{0, 0}, {N, N}}, rects);
+        }
+      } catch (const std::exception&) {
+        continue;  // not a valid layout
+      }
+      const auto judged = std::make_unique<Judged>(sc);
+      const auto& [sc_, h, ref, st, sb] = *judged;
+      if (!ref.problems().empty()) continue;
+      ASSERT_TRUE(st.t.ok());
+      std::vector<Point> pts = single_wedge_points(ref, N);
+      if (pts.size() < 3) continue;
+      ++scenes;
+      std::mt19937_64 rng64(static_cast<std::uint64_t>(seed) * 7777 + static_cast<std::uint64_t>(kind));
+      Sketcher sk{ref, h, pts, rng64};
+      for (int t = 0; t < 4; ++t) {
+        const auto ts = taut_sketch(sk, *st.tight, 2 + static_cast<int>(rng64() % 4), t == 3);
+        if (!ts) continue;
+        const Path& sketch = ts->sketch;
+        const Path& taut = ts->taut.points;
+        const std::vector<int> w = h.word(sketch);
+        for (std::size_t k = 0; k < sets.size(); ++k) {
+          const geom::LatticeDirections& set = sets[k];
+          Count& c = count[k];
+          const router::COriented co = router::c_oriented(*st.tight, sb, taut, set);
+          const std::string where = "seed " + std::to_string(seed) + " kind " + std::to_string(kind) + " " +
+                                    set.name() + " sketch " + str(sketch) + " taut " + str(taut) + " c-oriented " +
+                                    str(co.points);
+          const geom::Root2 len2 = set.length2(taut);
+          if (!co.points.empty()) {
+            ++c.wires;
+            const Path& p = co.points;
+            EXPECT_EQ(p.front(), taut.front()) << where;
+            EXPECT_EQ(p.back(), taut.back()) << where;
+            for (std::size_t i = 1; i < p.size(); ++i)
+              EXPECT_TRUE(set.along(std::int64_t{p[i].x} - p[i - 1].x, std::int64_t{p[i].y} - p[i - 1].y))
+                  << where << ": segment " << i << " is not in the set";
+            EXPECT_TRUE(ref.check_path(p).has_value()) << where << ": leaves free space";
+            EXPECT_EQ(h.word(p), w) << where << ": another homotopy class";
+            EXPECT_EQ(set.length2(p), len2) << where << ": not the set's length of the taut path";
+          }
+          // twice the length has even parts: a cone's coefficients are integers, or halves whose
+          // sum is an integer between the two diagonals (there the parity of x + y decides)
+          ASSERT_TRUE(len2.a % 2 == 0 && len2.b % 2 == 0) << where;
+          const std::int64_t axis = len2.a / 2, diag = len2.b / 2;
+          if (co.points.empty()) ++c.missing;
+          if (axis + diag > (kSanitized ? 20 : 26)) continue;
+          const int want = fewest_bends_exhaustive(ref, h, sc.domain, taut.front(), taut.back(), axis, diag, w,
+                                                   steps_of(set));
+          if (co.points.empty()) {
+            EXPECT_EQ(want, -1) << where << ": no staircase built, but the exhaustive search finds one";
+            ++c.missing_proven;
+            continue;
+          }
+          ++c.compared;
+          c.bent += want > 0;
+          EXPECT_EQ(static_cast<int>(geom::count_bends(co.points)), want) << where;
+        }
+      }
+      if (::testing::Test::HasFailure()) {
+        std::string obs;
+        for (const geom::Polygon& o : sc.obstacles) obs += " " + str(o.outer);
+        FAIL() << "stopping at the first failing layout, obstacles" << obs;
+      }
+    }
+  }
+  std::printf("%lld layouts:\n", scenes);
+  long long compared = 0;
+  for (std::size_t k = 0; k < sets.size(); ++k) {
+    const Count& c = count[k];
+    std::printf("  %-12s %lld wires, %lld compared with the exhaustive search (%lld with bends), %lld missing "
+                "(%lld confirmed by the search)\n",
+                sets[k].name().c_str(), c.wires, c.compared, c.bent, c.missing, c.missing_proven);
+    compared += c.compared;
+    EXPECT_GE(c.compared, sanitized_share(40, 2)) << sets[k].name();
+  }
+  EXPECT_GE(compared, sanitized_share(1000, 20));
 }
 
 // The loop's vertices as a cyclic sequence starting at its least point (for comparing with a ring).
