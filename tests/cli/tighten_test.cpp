@@ -83,8 +83,12 @@ int expect_c_oriented(const std::string& c_file, const std::string& taut_file, c
       else
         EXPECT_EQ(h.word(w), h.word(lines[k])) << "another homotopy class";
       EXPECT_EQ(set.length2(w), set.length2(t[k]));
-      if (set.is_octilinear()) EXPECT_EQ(oct_length(w), oct_length(t[k]));
-      if (set.is_rectilinear()) EXPECT_EQ(l1_length(w), l1_length(t[k]));
+      if (set.is_octilinear()) {
+        EXPECT_EQ(oct_length(w), oct_length(t[k]));
+      }
+      if (set.is_rectilinear()) {
+        EXPECT_EQ(l1_length(w), l1_length(t[k]));
+      }
     }
   }
   return failed;

@@ -95,7 +95,9 @@ TEST(LatticeDirections, LengthIsTheShortestLatticePathInTheSet) {
         }
         if (half) {
           ++halves;
-          if (it != best.end()) EXPECT_LT(got, it->second) << d->name() << " to " << x << "," << y;
+          if (it != best.end()) {
+            EXPECT_LT(got, it->second) << d->name() << " to " << x << "," << y;
+          }
           continue;
         }
         if (it == best.end()) {  // every lattice point off the half cases is reached
