@@ -373,6 +373,14 @@ TEST(Tighten, RouteTighten) {
       }
     }
     test::expect_routes_check_except_clearance(dir + "/tight.xml");
+    // the nets together (not --independent): every net routed, bump by its sketch among the
+    // others, and the whole layout passes `taut check` with its clearance (the demo's sketch once
+    // ran through sda's pin: ROUTE-0011)
+    const auto together = run_taut({"route", demo, "--orientations", o, "--tighten", "-o", dir + "/together.xml"});
+    EXPECT_EQ(together.status, 0) << together.err;
+    EXPECT_NE(together.err.find("5 of 5 nets routed"), std::string::npos) << together.err;
+    const auto chk = run_taut({"check", dir + "/together.xml"});
+    EXPECT_EQ(chk.status, 0) << chk.out << chk.err;
   }
 }
 
