@@ -38,20 +38,22 @@ std::optional<LatticeDirections> LatticeDirections::parse(std::string_view text)
   while (true) {
     const std::size_t comma = rest.find(',');
     const std::string_view tok = rest.substr(0, comma);
+    // digits with at most one '.' (as the CLI's other commands read them: "90", "090", "90.",
+    // ".5"), exactly a multiple of 45: the fraction all zeros, the integer part taken modulo 180
+    // digit by digit (any length, no overflow)
     const std::size_t dot = tok.find('.');
     const std::string_view ip = tok.substr(0, dot);
     const std::string_view fp = dot == std::string_view::npos ? std::string_view{} : tok.substr(dot + 1);
-    // an exact multiple of 45: digits, and a fraction (if any) of zeros only
-    if (ip.empty() || ip.size() > 9 || (dot != std::string_view::npos && fp.empty())) return std::nullopt;
-    i64 deg = 0;
+    if (ip.empty() && fp.empty()) return std::nullopt;
+    int deg = 0;  // modulo 180
     for (const char c : ip) {
       if (c < '0' || c > '9') return std::nullopt;
-      deg = deg * 10 + (c - '0');
+      deg = (deg * 10 + (c - '0')) % 180;
     }
     for (const char c : fp)
-      if (c != '0') return std::nullopt;
+      if (c != '0') return std::nullopt;  // a '.' or sign here, or a fraction that is not zero
     if (deg % 45 != 0) return std::nullopt;
-    mask |= 1u << ((deg / 45) % 4);
+    mask |= 1u << (deg / 45);
     if (comma == std::string_view::npos) break;
     rest = rest.substr(comma + 1);
   }

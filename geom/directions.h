@@ -6,8 +6,8 @@
 // {0, 90}, octilinear {0, 45, 90, 135}, and the nine others such as c:0,45 or c:45,135.
 //
 //   auto d = geom::LatticeDirections::parse("c:0,45,180");   // E, NE, W, SW
-//   int c = d->cone({1, 3});            // the open cone between NE and W: 1
-//   geom::Root2 len = d->length2({1, 3});  // twice the length of the shortest path in the set
+//   int c = d->cone(1, 3);                // the open cone between NE and W: 1
+//   geom::Root2 len = d->length2(1, 3);   // twice the length of the shortest path in the set
 //
 // Cones. The steps are the set's unit lattice vectors counter-clockwise from +x; cone i is the
 // open angle from step i to step i + 1. A cone spans 45, 90 or 135 degrees (never 180: the set
@@ -42,8 +42,9 @@ class LatticeDirections {
   // fewer than two bits are set.
   static std::optional<LatticeDirections> from_mask(unsigned mask);
   // "rectilinear", "octilinear", or "c:<deg>,<deg>,..." whose every direction is a multiple of 45
-  // degrees written exactly (digits, optionally a '.' and zeros: "45", "45.0"), at least two
-  // orientations modulo 180. nullopt for anything else ("any", c:0,60,120, c:0,22.5, c:0,180).
+  // degrees written exactly (digits with at most one '.', any fraction all zeros: "45", "045",
+  // "45.0", "90.", ".0"), at least two orientations modulo 180. nullopt for anything else ("any",
+  // c:0,60,120, c:0,22.5, c:0,180, c:-45,45).
   static std::optional<LatticeDirections> parse(std::string_view orientations);
 
   unsigned mask() const { return mask_; }

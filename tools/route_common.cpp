@@ -149,8 +149,9 @@ std::string no_staircase_reason(const std::string& orientations) {
   return "no " + orientations + " wire with integer vertices follows the taut wire's class at its length "
          "(sloped blockages pinch every lattice staircase, or an end sits in a sloped corner that no direction "
          "of the set leaves" +
-         std::string(parity ? ", or two points every shortest wire passes through differ in the parity of x + y, "
-                              "which steps along the two diagonals keep"
+         std::string(parity ? ", or a stretch of the taut wire between two points every shortest wire passes through "
+                              "lies between the two diagonals and its ends differ in the parity of x + y, which "
+                              "steps along the diagonals keep"
                             : "") +
          "); --orientations any writes it";
 }

@@ -200,7 +200,9 @@ TEST(Tighten, WindingSketches) {
     failed += f;
     written += static_cast<int>(inputs.size()) - f;
     const auto chk = run_taut({"check", out});  // the clearance is not kept without --clearance
-    EXPECT_NE(chk.out.find(set.name() + " orientations ok"), std::string::npos) << chk.out;
+    EXPECT_NE(chk.out.find("lengths and bends ok; " + set.name() + " orientations ok; free space ok; connectivity ok"),
+              std::string::npos)
+        << chk.out;
   }
   // with the clearance of <rules>, tightened together: `taut check` passes the whole layout
   for (const std::string o : {"c:0,45", "c:45,135"}) {
@@ -605,6 +607,10 @@ TEST(Tighten, DiagonalSetKeepsParity) {
   const auto mixed = run_taut({"tighten", file, "-o", dir + "/m.xml", "--orientations", "c:0,45,90"});
   EXPECT_EQ(mixed.status, 0) << mixed.err;
   EXPECT_EQ(wires_of(dir + "/m.xml", "odd"), (std::vector<Path>{{{10, 20}, {91, 20}}}));
+  // both diagonals and the horizontal: the parity binds only between the diagonals (review)
+  const auto three = run_taut({"tighten", file, "-o", dir + "/3.xml", "--orientations", "c:0,45,135"});
+  EXPECT_EQ(three.status, 0) << three.err;
+  EXPECT_EQ(wires_of(dir + "/3.xml", "odd"), (std::vector<Path>{{{10, 20}, {91, 20}}}));
   // from <rules>
   const std::string rules = layout_file("tighten_parity_rules", "  <rules orientations=\"c:135,45\"/>\n" + body);
   const auto r = run_taut({"tighten", rules, "-o", dir + "/r.xml"});

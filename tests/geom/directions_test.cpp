@@ -26,8 +26,18 @@ TEST(LatticeDirections, ParsesMultiplesOf45Only) {
   EXPECT_EQ(LatticeDirections::parse("c:45.0,135.00")->name(), "c:45,135");
   EXPECT_EQ(LatticeDirections::parse("c:0,90,135")->name(), "c:0,90,135");
   EXPECT_EQ(LatticeDirections::parse("c:0,225,90")->name(), "c:0,45,90");
+  // the spellings the other commands' reading accepts (review): leading zeros, "90.", ".0", and
+  // numbers of any length, taken modulo 180
+  EXPECT_EQ(LatticeDirections::parse("c:0,90.")->name(), "rectilinear");
+  EXPECT_EQ(LatticeDirections::parse("c:.0,90")->name(), "rectilinear");
+  EXPECT_EQ(LatticeDirections::parse("c:0,0000000000090")->name(), "rectilinear");
+  ASSERT_TRUE(LatticeDirections::parse("c:0,99999999999990"));  // 90 + 180 k
+  EXPECT_EQ(LatticeDirections::parse("c:0,99999999999990")->name(), "rectilinear");
+  ASSERT_TRUE(LatticeDirections::parse("c:0,180000000000000000000045"));  // 45 + 180 k
+  EXPECT_EQ(LatticeDirections::parse("c:0,180000000000000000000045")->name(), "c:0,45");
   for (const char* bad : {"any", "", "c:", "c:0", "c:0,180", "c:45,225", "c:0,60,120", "c:0,45.5", "c:0,22.5",
-                          "c:0,90,", "c:-45,45", "c:0,4a5", "c:0.,90", "c:1e2,0", "hexagonal", "c:0,99999999999990"})
+                          "c:0,90,", "c:-45,45", "c:0,4a5", "c:.,90", "c:1e2,0", "hexagonal", "c:0,99999999999991",
+                          "c:0,9.0.0", "c:0,+90", "c:0, 90", "c:0,1000000000000000000000045"})
     EXPECT_FALSE(LatticeDirections::parse(bad).has_value()) << bad;
   EXPECT_FALSE(LatticeDirections::from_mask(0b0100).has_value());
   EXPECT_EQ(LatticeDirections::from_mask(0b1010)->name(), "c:45,135");
