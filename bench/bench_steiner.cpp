@@ -2,7 +2,8 @@
 // route` for nets of three or more point pins) against the shortest-path tree from the first pin
 // (BasicRouter::tree, `--tree spt`) on the same router in the same run: time per net and its
 // ratio to the tree's, and total wire length as a ratio to the tree's; also grown from the first
-// pin only (starts = 1) to show what the eight starts buy. Nets: "local" pins in a square of a
+// pin only (starts = 1) to show what the eight starts buy, and without the improvement pass (its
+// time as a ratio, and its length) to show what the pass costs and buys. Nets: "local" pins in a square of a
 // tenth of the layout's side around a random free point, "global" pins anywhere. Every tree is
 // built on the same router; a net where either fails is counted and left out of the ratios.
 //
@@ -37,8 +38,8 @@ int main(int argc, char** argv) {
   if (!args) return 2;
   const auto& [sizes, pin_counts, nets, kind_name, kind] = *args;
   std::printf("Steiner trees vs shortest-path trees, kind %s, %d nets per row, one thread\n", kind_name.c_str(), nets);
-  std::printf("%9s %6s %5s | %9s %9s %8s | %8s %8s | %s\n", "vertices", "nets", "pins", "spt ms", "steiner ms", "/spt",
-              "len/spt", "1 start", "failed");
+  std::printf("%9s %6s %5s | %9s %9s %8s | %8s %8s | %8s %8s | %s\n", "vertices", "nets", "pins", "spt ms", "steiner ms",
+              "/spt", "len/spt", "1 start", "/nopass", "nopass", "failed");
   for (const std::int64_t size : sizes) {
     const auto lay = taut::bench::bench_layout(kind, size);
     const auto& dom = lay.norm.domain;
@@ -68,29 +69,41 @@ int main(int argc, char** argv) {
               }
             },
             1);
+        std::vector<std::int64_t> plain_len(pins.size(), -1);  // without the improvement pass
+        const double plain_s = seconds_of(
+            [&] {
+              for (std::size_t n = 0; n < pins.size(); ++n) {
+                const auto t = router.steiner(pins[n], 8, false);
+                if (t.status == taut::router::WireStatus::Ok) plain_len[n] = t.length;
+              }
+            },
+            1);
         for (std::size_t n = 0; n < pins.size(); ++n) {
           const auto t = router.steiner(pins[n], 1);
           if (t.status == taut::router::WireStatus::Ok) one_len[n] = t.length;
         }
-        double spt_sum = 0, st_sum = 0, one_sum = 0;
+        double spt_sum = 0, st_sum = 0, one_sum = 0, plain_sum = 0;
         int failed = 0;
         for (std::size_t n = 0; n < pins.size(); ++n) {
-          if (spt_len[n] < 0 || st_len[n] < 0 || one_len[n] < 0) {
+          if (spt_len[n] < 0 || st_len[n] < 0 || one_len[n] < 0 || plain_len[n] < 0) {
             ++failed;
             continue;
           }
           spt_sum += static_cast<double>(spt_len[n]);
           st_sum += static_cast<double>(st_len[n]);
           one_sum += static_cast<double>(one_len[n]);
+          plain_sum += static_cast<double>(plain_len[n]);
         }
         const double per = 1000.0 / static_cast<double>(nets);
-        std::printf("%9zu %6s %5lld | %9.2f %9.2f %8.1f | %8.3f %8.3f | %d\n", lay.points.size(), local ? "local" : "global",
-                    static_cast<long long>(k), spt_s * per, st_s * per, st_s / spt_s, st_sum / spt_sum, one_sum / spt_sum, failed);
+        std::printf("%9zu %6s %5lld | %9.2f %9.2f %8.1f | %8.3f %8.3f | %8.1f %8.3f | %d\n", lay.points.size(),
+                    local ? "local" : "global", static_cast<long long>(k), spt_s * per, st_s * per, st_s / spt_s,
+                    st_sum / spt_sum, one_sum / spt_sum, st_s / plain_s, plain_sum / spt_sum, failed);
         std::fflush(stdout);
       }
     }
   }
   std::printf("(len/spt: the Steiner trees' total length over the shortest-path trees'; 1 start: the same grown from the "
-              "first pin only)\n");
+              "first pin only; /nopass: time over the same search without the improvement pass, nopass: its length over "
+              "the shortest-path trees')\n");
   return 0;
 }

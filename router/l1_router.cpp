@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <map>
+#include <set>
 #include <utility>
 
 #include "geom/predicates.h"
@@ -111,9 +112,13 @@ typename BasicRouter<W>::Wire BasicRouter<W>::shortest(const geom::Polygon& from
 }
 
 template <class W>
-typename BasicRouter<W>::Steiner BasicRouter<W>::steiner(std::span<const Point> pins, std::size_t starts) {
+typename BasicRouter<W>::Steiner BasicRouter<W>::steiner(std::span<const Point> pins, std::size_t starts,
+                                                         bool improve_tree) {
   // Grown from each of the first `starts` pins in turn; the shortest kept (the first on ties).
-  Steiner best;
+  // The improvement pass then runs on the shortest few of them (kImproved; measured in
+  // tests/router/steiner_test.cpp: improving all eight finds little more and costs far more).
+  std::vector<Steiner> ok;  // in start order
+  Steiner first_failure;
   const std::size_t tries = std::max<std::size_t>(1, std::min(starts, pins.size()));
   for (std::size_t s0 = 0; s0 < tries; ++s0) {
     std::vector<Point> rotated(pins.begin() + static_cast<std::ptrdiff_t>(s0), pins.end());
@@ -125,10 +130,258 @@ typename BasicRouter<W>::Steiner BasicRouter<W>::steiner(std::span<const Point> 
     if (t.status == WireStatus::SourceNotFree || t.status == WireStatus::TargetNotFree || t.status == WireStatus::Unreachable)
       return t;  // a pin not free or walled in: the same from every start
     // NoIntegerStaircase depends on the paths taken: another start may do without it
-    if (best.status != WireStatus::Ok && (t.status == WireStatus::Ok || s0 == 0)) best = std::move(t);
-    else if (t.status == WireStatus::Ok && t.length < best.length) best = std::move(t);
+    if (t.status == WireStatus::Ok) ok.push_back(std::move(t));
+    else if (s0 == 0) first_failure = std::move(t);
   }
-  return best;
+  if (ok.empty()) return first_failure;
+  std::stable_sort(ok.begin(), ok.end(), [](const Steiner& a, const Steiner& b) { return a.length < b.length; });
+  if (improve_tree)
+    for (std::size_t i = 0; i < ok.size() && i < kImproved; ++i)
+      if (ok[i].length > 0) ok[i].improved = improve(pins, ok[i]);
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < ok.size(); ++i)
+    if (ok[i].length < ok[best].length) best = i;
+  return std::move(ok[best]);
+}
+
+namespace {
+
+// A tree's metal as a graph: every axis-parallel segment split at every segment end, pin and
+// crossing lying on it; a piece two wires share is one edge.
+struct MetalGraph {
+  std::vector<Point> nodes;                                       // ascending
+  std::vector<std::pair<std::size_t, std::size_t>> edges;         // node indices
+  std::vector<std::vector<std::pair<std::size_t, std::size_t>>> adj;  // (neighbour, edge)
+  std::vector<char> key;                                          // a pin, or degree other than 2
+  std::size_t at(Point p) const {
+    return static_cast<std::size_t>(std::lower_bound(nodes.begin(), nodes.end(), p) - nodes.begin());
+  }
+};
+
+// nullopt when a segment is neither horizontal nor vertical (not a rectilinear tree).
+std::optional<MetalGraph> metal_graph(const std::vector<std::vector<Point>>& wires, std::span<const Point> pins) {
+  std::vector<geom::Segment> segs;
+  for (const auto& w : wires)
+    for (std::size_t i = 1; i < w.size(); ++i) {
+      if (w[i] == w[i - 1]) continue;
+      if (w[i].x != w[i - 1].x && w[i].y != w[i - 1].y) return std::nullopt;
+      segs.push_back({std::min(w[i - 1], w[i]), std::max(w[i - 1], w[i])});
+    }
+  MetalGraph g;
+  for (const geom::Segment& s : segs) g.nodes.insert(g.nodes.end(), {s.a, s.b});
+  g.nodes.insert(g.nodes.end(), pins.begin(), pins.end());
+  for (const geom::Segment& h : segs)  // crossings of a horizontal and a vertical segment
+    if (h.a.y == h.b.y)
+      for (const geom::Segment& v : segs)
+        if (v.a.x == v.b.x && h.a.x <= v.a.x && v.a.x <= h.b.x && v.a.y <= h.a.y && h.a.y <= v.b.y)
+          g.nodes.push_back({v.a.x, h.a.y});
+  std::sort(g.nodes.begin(), g.nodes.end());
+  g.nodes.erase(std::unique(g.nodes.begin(), g.nodes.end()), g.nodes.end());
+  std::vector<std::pair<std::size_t, std::size_t>> pieces;
+  for (const geom::Segment& s : segs) {
+    // the nodes on s, in order along it (both sorted the same way: s.a < s.b)
+    std::vector<std::size_t> on;
+    const bool horizontal = s.a.y == s.b.y;
+    for (std::size_t i = g.at(s.a); i < g.nodes.size() && g.nodes[i] <= s.b; ++i) {
+      const Point p = g.nodes[i];
+      if (horizontal ? p.y == s.a.y : p.x == s.a.x) on.push_back(i);
+    }
+    for (std::size_t k = 1; k < on.size(); ++k) pieces.push_back({on[k - 1], on[k]});
+  }
+  std::sort(pieces.begin(), pieces.end());
+  pieces.erase(std::unique(pieces.begin(), pieces.end()), pieces.end());
+  g.edges = std::move(pieces);
+  g.adj.assign(g.nodes.size(), {});
+  for (std::size_t e = 0; e < g.edges.size(); ++e) {
+    g.adj[g.edges[e].first].push_back({g.edges[e].second, e});
+    g.adj[g.edges[e].second].push_back({g.edges[e].first, e});
+  }
+  g.key.assign(g.nodes.size(), 0);
+  for (std::size_t i = 0; i < g.nodes.size(); ++i) g.key[i] = g.adj[i].size() != 2;
+  for (const Point p : pins) g.key[g.at(p)] = 1;
+  return g;
+}
+
+// The chains between key nodes: node and edge sequences, and their L1 lengths.
+struct KeyPath {
+  std::vector<std::size_t> nodes, edges;
+  std::int64_t length = 0;
+};
+std::vector<KeyPath> key_paths(const MetalGraph& g) {
+  std::vector<KeyPath> out;
+  std::vector<char> used(g.edges.size(), 0);
+  auto len = [&](std::size_t e) {
+    const Point a = g.nodes[g.edges[e].first], b = g.nodes[g.edges[e].second];
+    return std::abs(std::int64_t{a.x} - b.x) + std::abs(std::int64_t{a.y} - b.y);
+  };
+  auto walk = [&](std::size_t u, std::size_t e0, std::size_t v0) {
+    KeyPath p;
+    p.nodes = {u};
+    std::size_t e = e0, v = v0;
+    while (true) {
+      used[e] = 1;
+      p.edges.push_back(e);
+      p.length += len(e);
+      p.nodes.push_back(v);
+      if (g.key[v]) break;
+      const auto& a = g.adj[v];  // degree 2: the other edge
+      const auto next = a[0].second == e ? a[1] : a[0];
+      if (used[next.second]) break;  // a ring of degree-2 nodes (cannot happen with a pin on it)
+      e = next.second;
+      v = next.first;
+    }
+    out.push_back(std::move(p));
+  };
+  for (std::size_t u = 0; u < g.nodes.size(); ++u)
+    if (g.key[u])
+      for (const auto& [v, e] : g.adj[u])
+        if (!used[e]) walk(u, e, v);
+  return out;
+}
+
+// The polyline of a path's nodes without the points where it goes straight on.
+std::vector<Point> path_points(const MetalGraph& g, const KeyPath& p) {
+  std::vector<Point> out;
+  for (const std::size_t n : p.nodes) {
+    const Point q = g.nodes[n];
+    if (out.size() >= 2) {
+      const Point a = out[out.size() - 2], b = out.back();
+      if ((a.x == b.x && b.x == q.x) || (a.y == b.y && b.y == q.y)) {
+        out.back() = q;
+        continue;
+      }
+    }
+    out.push_back(q);
+  }
+  return out;
+}
+
+}  // namespace
+
+template <class W>
+std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t) {
+  if constexpr (kOctilinear) {
+    return 0;
+  } else {
+    std::size_t changes = 0;
+    // Paths (by their points) already tried without a gain: not tried again after changes
+    // elsewhere. A change elsewhere can open a gain for them, so this trades a little length for
+    // far fewer runs (measured in tests/router/steiner_test.cpp and bench_steiner).
+    std::set<std::vector<Point>> tried;
+    const std::vector<geom::Coord>& xs = pins_.vertex_xs();
+    const std::vector<geom::Coord>& ys = pins_.vertex_ys();
+    for (bool changed = true; changed;) {
+      changed = false;
+      const std::optional<MetalGraph> graph = metal_graph(t.wires, pins);
+      if (!graph) return changes;
+      const MetalGraph& g = *graph;
+      std::vector<KeyPath> paths = key_paths(g);
+      std::stable_sort(paths.begin(), paths.end(), [](const KeyPath& a, const KeyPath& b) { return a.length > b.length; });
+      for (const KeyPath& p : paths) {
+        std::vector<Point> shape;
+        for (const std::size_t n : p.nodes) shape.push_back(g.nodes[n]);
+        if (shape.back() < shape.front()) std::reverse(shape.begin(), shape.end());
+        if (!tried.insert(shape).second) continue;
+        // the tree without p's edges and inner nodes: the part holding p's first end
+        std::vector<char> gone(g.edges.size(), 0), side;
+        for (const std::size_t e : p.edges) gone[e] = 1;
+        auto part_of = [&](std::size_t from) {
+          side.assign(g.nodes.size(), 0);
+          std::vector<std::size_t> stack{from};
+          side[from] = 1;
+          while (!stack.empty()) {
+            const std::size_t u = stack.back();
+            stack.pop_back();
+            for (const auto& [v, e] : g.adj[u])
+              if (!gone[e] && !side[v]) {
+                side[v] = 1;
+                stack.push_back(v);
+              }
+          }
+        };
+        part_of(p.nodes.front());
+        // the run leaves from the part with less metal (fewer segment sources to expand)
+        if (!side[p.nodes.back()]) {
+          std::int64_t here = 0, there = 0;
+          for (std::size_t e = 0; e < g.edges.size(); ++e) {
+            if (gone[e]) continue;
+            const Point a = g.nodes[g.edges[e].first], b = g.nodes[g.edges[e].second];
+            (side[g.edges[e].first] ? here : there) += std::abs(std::int64_t{a.x} - b.x) + std::abs(std::int64_t{a.y} - b.y);
+          }
+          if (here > there) part_of(p.nodes.back());
+        }
+        std::vector<std::vector<Point>> rest;  // every edge but p's, as two-point wires
+        for (std::size_t e = 0; e < g.edges.size(); ++e)
+          if (!gone[e]) rest.push_back({g.nodes[g.edges[e].first], g.nodes[g.edges[e].second]});
+        if (side[p.nodes.back()] && side[p.nodes.front()]) {  // still joined without it: dropped
+          t.wires = std::move(rest);
+          changed = true;
+          break;
+        }
+        // sources: the first part's metal; targets: the other part's nodes and the projections
+        // onto its segments of the obstacle vertices, domain corners and the first part's nodes
+        std::vector<char> inner(g.nodes.size(), 0);
+        for (std::size_t k = 1; k + 1 < p.nodes.size(); ++k) inner[p.nodes[k]] = 1;
+        std::vector<Point> points, targets;
+        std::vector<geom::Segment> segments;
+        std::vector<geom::Coord> axs, ays;
+        for (std::size_t n = 0; n < g.nodes.size(); ++n) {
+          if (side[n]) {
+            axs.push_back(g.nodes[n].x);
+            ays.push_back(g.nodes[n].y);
+            if (g.key[n]) points.push_back(g.nodes[n]);
+          } else if (!inner[n]) {
+            targets.push_back(g.nodes[n]);
+          }
+        }
+        std::sort(axs.begin(), axs.end());
+        std::sort(ays.begin(), ays.end());
+        for (std::size_t e = 0; e < g.edges.size(); ++e) {
+          if (gone[e]) continue;
+          const Point a = g.nodes[g.edges[e].first], b = g.nodes[g.edges[e].second];  // a < b
+          if (side[g.edges[e].first]) {
+            segments.push_back({a, b});
+            continue;
+          }
+          const bool horizontal = a.y == b.y;
+          for (const std::vector<geom::Coord>* v : {&(horizontal ? xs : ys), static_cast<const std::vector<geom::Coord>*>(&(horizontal ? axs : ays))}) {
+            const geom::Coord lo = horizontal ? a.x : a.y, hi = horizontal ? b.x : b.y;
+            for (auto it = std::upper_bound(v->begin(), v->end(), lo); it != v->end() && *it < hi; ++it)
+              targets.push_back(horizontal ? Point{*it, a.y} : Point{a.x, *it});
+          }
+        }
+        std::sort(targets.begin(), targets.end());
+        targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
+        keep_free(targets, wavefront_);
+        if (targets.empty()) continue;
+        wavefront_.run(points, segments, targets, WavefrontStop::FirstTarget);
+        std::optional<std::size_t> best;
+        for (std::size_t j = 0; j < targets.size(); ++j) {
+          const auto d = wavefront_.target_distance(j);
+          if (d && (!best || *d < *wavefront_.target_distance(*best))) best = j;
+        }
+        if (!best || *wavefront_.target_distance(*best) >= p.length) continue;
+        Wire w = finish(best);
+        if (w.status != WireStatus::Ok) continue;
+        if (w.points.size() >= 2) rest.push_back(std::move(w.points));
+        t.wires = std::move(rest);
+        changed = true;
+        break;
+      }
+      changes += changed;
+    }
+    // written as the key paths, one wire each
+    if (const std::optional<MetalGraph> g = metal_graph(t.wires, pins)) {
+      std::vector<std::vector<Point>> wires;
+      for (const KeyPath& p : key_paths(*g)) wires.push_back(path_points(*g, p));
+      if (!wires.empty()) t.wires = std::move(wires);
+    }
+    t.length = 0;
+    for (const auto& w : t.wires)
+      for (std::size_t i = 1; i < w.size(); ++i)
+        t.length += std::abs(std::int64_t{w[i].x} - w[i - 1].x) + std::abs(std::int64_t{w[i].y} - w[i - 1].y);
+    return changes;
+  }
 }
 
 template <class W>

@@ -102,6 +102,11 @@ class PinShapes {
   // through the blockage's edges, which candidates() does not cover.
   std::optional<std::size_t> meets_obstacle(const geom::Polygon& pin) const;
 
+  // The distinct x and y of the obstacle vertices and the domain's corners, ascending (what
+  // candidates() projects).
+  const std::vector<geom::Coord>& vertex_xs() const { return xs_; }
+  const std::vector<geom::Coord>& vertex_ys() const { return ys_; }
+
  private:
   std::vector<geom::Coord> xs_, ys_;  // the distinct x and y of obstacle vertices, ascending
   std::optional<geom::Box> domain_;

@@ -5,7 +5,9 @@
 // free space, joining every pin, no stray wire), its length is what its wires measure, at least
 // the minimum, equal to it for two pins, and at most twice it (Prim's rule never exceeds the
 // terminals' minimum spanning tree, itself at most twice the Steiner minimum); unreachable pins
-// exactly when the oracle finds no tree. The mean and worst excess over the minimum are printed.
+// exactly when the oracle finds no tree. The mean and worst excess over the minimum are printed
+// and held (the target, mean under 2 % and worst under 10 %: the mean is met, the worst
+// not reliably); the improvement pass never lengthens a tree (against the same search without it).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -24,8 +26,8 @@ namespace {
 using geom::Point;
 
 TEST(SteinerTree, LegalAndNearTheMinimum) {
-  int failed = 0, trees = 0, optimal = 0, with_blockages = 0;
-  double excess_sum = 0, worst = 0, single_sum = 0;
+  int failed = 0, trees = 0, optimal = 0, with_blockages = 0, improved = 0, plain_optimal = 0;
+  double excess_sum = 0, worst = 0, single_sum = 0, plain_sum = 0, plain_worst = 0;
   int worst_seed = 0;
   for (int seed = 1; seed <= (kSanitized ? 150 : 1500); ++seed) {
     std::mt19937 rng(static_cast<unsigned>(91000 + seed));
@@ -44,6 +46,7 @@ TEST(SteinerTree, LegalAndNearTheMinimum) {
     const auto best = oracle::steiner_minimal_length(norm.domain, norm.obstacles, pins);
     const auto t = router.steiner(pins);
     const auto single = router.steiner(pins, 1);  // grown from the first pin only (printed)
+    const auto plain = router.steiner(pins, 8, false);  // without the improvement pass
     if (single.status == router::WireStatus::Ok) single_sum += *best > 0 ? static_cast<double>(single.length - *best) / static_cast<double>(*best) : 0.0;
     const std::string at = "seed " + std::to_string(seed);
     if (!best) {
@@ -74,13 +77,34 @@ TEST(SteinerTree, LegalAndNearTheMinimum) {
     excess_sum += excess;
     optimal += t.length == *best;
     if (excess > worst) worst = excess, worst_seed = seed;
+    // the improvement pass never lengthens the tree (the best start's tree, improved or not, is
+    // at most the best unimproved one) and says when it changed it
+    if (plain.status != router::WireStatus::Ok || t.length > plain.length) {
+      if (failed++ < 8) ADD_FAILURE() << at << ": improved " << t.length << ", without the pass " << plain.length;
+      continue;
+    }
+    improved += t.length < plain.length;
+    if (t.length < plain.length && t.improved == 0 && failed++ < 8) ADD_FAILURE() << at << ": shorter, but no change counted";
+    const double plain_excess = *best > 0 ? static_cast<double>(plain.length - *best) / static_cast<double>(*best) : 0.0;
+    plain_sum += plain_excess;
+    plain_worst = std::max(plain_worst, plain_excess);
+    plain_optimal += plain.length == *best;
   }
   std::printf("%d trees (%d among blockages): %d minimal, mean excess %.2f%%, worst %.2f%% (seed %d); grown from the first pin "
-              "only: mean excess %.2f%%\n",
+              "only: mean excess %.2f%%; without the improvement pass: %d minimal, mean excess %.2f%%, worst %.2f%% (the "
+              "pass shortened %d)\n",
               trees, with_blockages, optimal, 100 * excess_sum / std::max(trees, 1), 100 * worst, worst_seed,
-              100 * single_sum / std::max(trees, 1));
+              100 * single_sum / std::max(trees, 1), plain_optimal, 100 * plain_sum / std::max(trees, 1), 100 * plain_worst,
+              improved);
   EXPECT_EQ(failed, 0);
   EXPECT_GE(trees, kSanitized ? 100 : 1000);
+  // The target is a mean excess under 2 % and a worst under 10 %. The mean is met with a
+  // wide margin (0.05-0.08 % on four sets of 1,500 nets); the worst is not reliably: 5.6-11.1 %
+  // on those sets (11.1 % on this one, seed 1135: one hard net decides it). Held here so that
+  // neither gets worse.
+  EXPECT_LT(excess_sum / std::max(trees, 1), 0.02);
+  EXPECT_LT(worst, 0.12);
+  EXPECT_GT(improved, kSanitized ? 5 : 100);
 }
 
 // A pin inside a ring of blockage (its hole) cannot be joined: Unreachable, naming that pin,
