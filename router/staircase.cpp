@@ -793,7 +793,8 @@ i128 floor_frac(i128 c, i128 d) { return c >= 0 ? c / d : -((-c + d - 1) / d); }
 class PieceSolver {
  public:
   PieceSolver(Workspace& ws, const Frame& fr, std::span<const Point> alpha)
-      : index_(ws.im().index), fr_(fr), first_slab_(std::max<i64>(1, ws.im().options.first_slab)) {
+      : index_(ws.im().index), fr_(fr), first_slab_(std::max<i64>(1, ws.im().options.first_slab)),
+        domain_(ws.im().domain) {
     for (const Point p : alpha) {
       a_[0].push_back(fr.u_of(p));
       a_[1].push_back(fr.v_of(p));
@@ -1001,6 +1002,16 @@ class PieceSolver {
         x1 = std::max(x1, static_cast<i64>(geom::ceil_div(X, fr_.q)));
         y1 = std::max(y1, static_cast<i64>(geom::ceil_div(Y, fr_.q)));
       }
+    // Within the domain (every indexed edge is): a wide cone's parallelogram reaches out of it,
+    // by up to the piece's size, past the int32 coordinate range near the coordinate limit. An
+    // empty part becomes a point on the domain's side (edges it returns are real walls: harmless).
+    auto into = [](i64& a, i64& b, i64 lo, i64 hi) {
+      a = std::clamp(a, lo, hi);
+      b = std::clamp(b, lo, hi);
+      if (b < a) b = a;
+    };
+    into(x0, x1, domain_.lo.x, domain_.hi.x);
+    into(y0, y1, domain_.lo.y, domain_.hi.y);
     return Box{{static_cast<geom::Coord>(x0), static_cast<geom::Coord>(y0)},
                {static_cast<geom::Coord>(x1), static_cast<geom::Coord>(y1)}};
   }
@@ -1008,6 +1019,7 @@ class PieceSolver {
   const geom::ObstacleIndex& index_;
   const Frame& fr_;
   i64 first_slab_;
+  Box domain_;
   std::array<std::vector<i64>, 2> a_;  // alpha's vertices: u and v (both strictly increasing)
   std::array<i64, 2> lim_{};
   std::vector<ClipWall> walls_;

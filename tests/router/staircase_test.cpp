@@ -31,6 +31,7 @@
 #include <string>
 #include <vector>
 
+#include "geom/directions.h"
 #include "geom/normalize.h"
 #include "geom/predicates.h"
 #include "geom/validate.h"
@@ -575,6 +576,46 @@ TEST(Staircase, HugeCoordinates) {
   const auto o2 = t.sb.rectilinear(diag);
   ASSERT_TRUE(o2);
   check_output(t.ref, diag, *o2, StaircaseStyle::Rectilinear);
+}
+
+// A lattice set's wide cone at the coordinate limit: in c:0,45 a piece going up (between NE and
+// W) from near the domain's bottom-right corner to near its top-right one. Its frame box reaches
+// x = 3M, past the int32 range (frame_box keeps the R-tree query inside the domain); the
+// staircase has three links (the west side is a wall the W run stops at), every point free, in
+// the set, of the set's length.
+TEST(Staircase, WideConeAtTheCoordinateLimit) {
+  const int M = taut::geom::kMaxCoord;
+  // a square above the NE diagonal, outside the region between the staircase and the segment
+  Scene s({{-M, -M}, {M, M}}, {{rect({-M / 2 - 10, M / 2 - 10}, {-M / 2 + 10, M / 2 + 10}), {}}});
+  const std::vector<Point> taut{{M - 1, -M + 1}, {M - 3, M - 1}};
+  ASSERT_TRUE(s.ref.check_path(taut));
+  const auto set = *taut::geom::LatticeDirections::parse("c:0,45");
+  const std::vector<std::size_t> cuts{0, 1};
+  const auto out = s.sb.staircase_in_class(taut, cuts, set);
+  ASSERT_TRUE(out);
+  // three links either way round: W, NE, W or (as built) NE one step to the east side, W, NE
+  ASSERT_EQ(out->size(), 4u);
+  EXPECT_EQ(out->front(), taut.front());
+  EXPECT_EQ(out->back(), taut.back());
+  for (std::size_t i = 1; i < out->size(); ++i)
+    EXPECT_TRUE(set.along(std::int64_t{(*out)[i].x} - (*out)[i - 1].x, std::int64_t{(*out)[i].y} - (*out)[i - 1].y));
+  EXPECT_TRUE(s.ref.check_path(*out));
+  EXPECT_EQ(set.length2(*out), set.length2(taut));
+}
+
+// The first failure of the lattice-set test (seed 1, kind 0, c:45,90): a piece along the domain's
+// bottom side, from (3,0) to (1,0), lies between N and SW; its SW-first staircase leaves the
+// domain at once, and the N-first one is stopped by the sloped edge above (at y = 1.5 over x = 3):
+// N, SW, N, SW with three bends, the exhaustive search's count. Without the domain's sides as
+// walls the SW run went to y = -1 and no wire was found.
+TEST(Staircase, LatticeSetPieceAlongTheDomainSide) {
+  Scene s({{0, 0}, {9, 9}}, {{{{0, 1}, {6, 2}, {8, 8}, {6, 7}, {7, 9}, {3, 6}, {1, 4}, {1, 3}}, {}}});
+  const std::vector<Point> taut{{3, 0}, {1, 0}};
+  const std::vector<std::size_t> cuts{0, 1};
+  const auto out = s.sb.staircase_in_class(taut, cuts, *taut::geom::LatticeDirections::parse("c:45,90"));
+  ASSERT_TRUE(out);
+  EXPECT_EQ(*out, (std::vector<Point>{{3, 0}, {3, 1}, {2, 0}, {2, 1}, {1, 0}}));
+  EXPECT_TRUE(s.ref.check_path(*out));
 }
 
 // ---------------------------------------------------------------------------------------------
