@@ -64,9 +64,15 @@ std::string LatticeDirections::name() const {
   if (is_rectilinear()) return "rectilinear";
   if (is_octilinear()) return "octilinear";
   std::string s = "c:";
-  for (int k = 0; k < 4; ++k)
-    if (mask_ & (1u << k)) s += (s.size() > 2 ? "," : "") + std::to_string(45 * k);
+  for (const int d : degrees()) s += (s.size() > 2 ? "," : "") + std::to_string(d);
   return s;
+}
+
+std::vector<int> LatticeDirections::degrees() const {
+  std::vector<int> out;
+  for (int k = 0; k < 4; ++k)
+    if (mask_ & (1u << k)) out.push_back(45 * k);
+  return out;
 }
 
 bool LatticeDirections::along(i64 dx, i64 dy) const {

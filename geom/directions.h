@@ -52,6 +52,8 @@ class LatticeDirections {
   bool is_octilinear() const { return mask_ == 0b1111; }
   // "rectilinear", "octilinear", or "c:" with the orientations in increasing order ("c:0,45").
   std::string name() const;
+  // The orientations in degrees, increasing ({0, 45} for c:0,45).
+  std::vector<int> degrees() const;
   // The unit lattice steps, counter-clockwise from +x (4, 6 or 8 of them).
   const std::vector<Point>& steps() const { return steps_; }
   // v (not zero) lies along one of the steps.

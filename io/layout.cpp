@@ -3,6 +3,8 @@
 // canonical_orientations: c: sets that name the rectilinear or octilinear directions.
 #include "io/layout.h"
 
+#include "geom/directions.h"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -70,26 +72,10 @@ bool same_document(const Layout& a, const Layout& b) {
 }
 
 std::string canonical_orientations(std::string_view text) {
+  // the one reading of c: directions (geom/directions.h): exact decimals, modulo 180 degrees
   if (text.substr(0, 2) != "c:") return std::string(text);
-  // The directions as the file format writes them (digits, at most one '.'): exact decimal
-  // values, so 0, 45, 90 and 135 compare exactly; anything else is left as it is.
-  std::vector<double> mod;
-  std::string_view rest = text.substr(2);
-  while (true) {
-    const std::size_t comma = rest.find(',');
-    const std::string_view tok = rest.substr(0, comma);
-    if (tok.empty() || tok.find_first_not_of("0123456789.") != std::string_view::npos) return std::string(text);
-    double deg = 0;
-    const auto [end, ec] = std::from_chars(tok.data(), tok.data() + tok.size(), deg);
-    if (ec != std::errc() || end != tok.data() + tok.size()) return std::string(text);
-    mod.push_back(std::fmod(deg, 180.0));
-    if (comma == std::string_view::npos) break;
-    rest = rest.substr(comma + 1);
-  }
-  std::sort(mod.begin(), mod.end());
-  mod.erase(std::unique(mod.begin(), mod.end()), mod.end());
-  if (mod == std::vector<double>{0, 90}) return "rectilinear";
-  if (mod == std::vector<double>{0, 45, 90, 135}) return "octilinear";
+  const std::optional<geom::LatticeDirections> set = geom::LatticeDirections::parse(text);
+  if (set && (set->is_rectilinear() || set->is_octilinear())) return set->name();
   return std::string(text);
 }
 

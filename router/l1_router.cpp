@@ -270,14 +270,18 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t) {
     std::set<std::vector<Point>> tried;
     const std::vector<geom::Coord>& xs = pins_.vertex_xs();
     const std::vector<geom::Coord>& ys = pins_.vertex_ys();
-    for (bool changed = true; changed;) {
-      changed = false;
+    while (true) {
+      bool changed = false;
       const std::optional<MetalGraph> graph = metal_graph(t.wires, pins);
-      if (!graph) return changes;
+      if (!graph) return changes;  // not rectilinear: left as it is
       const MetalGraph& g = *graph;
-      std::vector<KeyPath> paths = key_paths(g);
-      std::stable_sort(paths.begin(), paths.end(), [](const KeyPath& a, const KeyPath& b) { return a.length > b.length; });
-      for (const KeyPath& p : paths) {
+      const std::vector<KeyPath> paths = key_paths(g);
+      std::vector<std::size_t> longest_first(paths.size());
+      for (std::size_t i = 0; i < paths.size(); ++i) longest_first[i] = i;
+      std::stable_sort(longest_first.begin(), longest_first.end(),
+                       [&](std::size_t a, std::size_t b) { return paths[a].length > paths[b].length; });
+      for (const std::size_t pi : longest_first) {
+        const KeyPath& p = paths[pi];
         std::vector<Point> shape;
         for (const std::size_t n : p.nodes) shape.push_back(g.nodes[n]);
         if (shape.back() < shape.front()) std::reverse(shape.begin(), shape.end());
@@ -310,11 +314,14 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t) {
           }
           if (here > there) part_of(p.nodes.back());
         }
-        std::vector<std::vector<Point>> rest;  // every edge but p's, as two-point wires
-        for (std::size_t e = 0; e < g.edges.size(); ++e)
-          if (!gone[e]) rest.push_back({g.nodes[g.edges[e].first], g.nodes[g.edges[e].second]});
+        auto rest = [&] {  // every edge but p's, as two-point wires
+          std::vector<std::vector<Point>> r;
+          for (std::size_t e = 0; e < g.edges.size(); ++e)
+            if (!gone[e]) r.push_back({g.nodes[g.edges[e].first], g.nodes[g.edges[e].second]});
+          return r;
+        };
         if (side[p.nodes.back()] && side[p.nodes.front()]) {  // still joined without it: dropped
-          t.wires = std::move(rest);
+          t.wires = rest();
           changed = true;
           break;
         }
@@ -363,18 +370,20 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t) {
         if (!best || *wavefront_.target_distance(*best) >= p.length) continue;
         Wire w = finish(best);
         if (w.status != WireStatus::Ok) continue;
-        if (w.points.size() >= 2) rest.push_back(std::move(w.points));
-        t.wires = std::move(rest);
+        t.wires = rest();
+        if (w.points.size() >= 2) t.wires.push_back(std::move(w.points));
         changed = true;
         break;
       }
-      changes += changed;
-    }
-    // written as the key paths, one wire each
-    if (const std::optional<MetalGraph> g = metal_graph(t.wires, pins)) {
+      if (changed) {
+        ++changes;
+        continue;
+      }
+      // nothing improves: written as the key paths, one wire each
       std::vector<std::vector<Point>> wires;
-      for (const KeyPath& p : key_paths(*g)) wires.push_back(path_points(*g, p));
+      for (const KeyPath& p : paths) wires.push_back(path_points(g, p));
       if (!wires.empty()) t.wires = std::move(wires);
+      break;
     }
     t.length = 0;
     for (const auto& w : t.wires)

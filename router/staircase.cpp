@@ -663,10 +663,7 @@ LinkDirs link_dirs(Point a, Point b, const geom::LatticeDirections& set) {
   }
   return r;
 }
-LinkDirs link_dirs(Point a, Point b, StaircaseStyle style) {
-  return link_dirs(a, b, style == StaircaseStyle::Rectilinear ? geom::LatticeDirections::rectilinear()
-                                                              : geom::LatticeDirections::octilinear());
-}
+LinkDirs link_dirs(Point a, Point b, StaircaseStyle style) { return link_dirs(a, b, lattice_set(style)); }
 
 // The frame of a non-straight link, with the wedges its two directions leave a and reach b in.
 Frame link_frame(Workspace& ws, Point a, Point b, const std::array<Dir, 2>& d, LinkSolution& s) {
@@ -713,8 +710,7 @@ LinkSolution solve_link(Workspace& ws, Point a, Point b, StaircaseStyle style, b
                         int joints) {
   const auto [d, straight] = link_dirs(a, b, style);
   if (straight)
-    return solve_straight(ws, a, b, style == StaircaseStyle::Rectilinear ? geom::LatticeDirections::rectilinear()
-                                                                         : geom::LatticeDirections::octilinear());
+    return solve_straight(ws, a, b, lattice_set(style));
   LinkSolution s;
   s.d = d;
   ++ws.stats().links;
@@ -1128,6 +1124,12 @@ std::optional<std::vector<Point>> join_links(Workspace& ws, const std::vector<Li
 
 }  // namespace
 
+const geom::LatticeDirections& lattice_set(StaircaseStyle style) {
+  static const geom::LatticeDirections rect = geom::LatticeDirections::rectilinear();
+  static const geom::LatticeDirections oct = geom::LatticeDirections::octilinear();
+  return style == StaircaseStyle::Rectilinear ? rect : oct;
+}
+
 struct StaircaseBuilder::Impl : Core {
   using Core::Core;
 };
@@ -1199,10 +1201,7 @@ std::optional<std::vector<Point>> StaircaseBuilder::staircase_in_class(std::span
                                                                        std::span<const std::size_t> cuts,
                                                                        StaircaseStyle style,
                                                                        StaircaseStats* stats) const {
-  return staircase_in_class(taut, cuts,
-                            style == StaircaseStyle::Rectilinear ? geom::LatticeDirections::rectilinear()
-                                                                 : geom::LatticeDirections::octilinear(),
-                            stats);
+  return staircase_in_class(taut, cuts, lattice_set(style), stats);
 }
 
 std::optional<std::vector<Point>> StaircaseBuilder::staircase_in_class(std::span<const Point> taut,

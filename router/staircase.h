@@ -77,6 +77,9 @@ namespace taut::router {
 
 enum class StaircaseStyle : std::uint8_t { Rectilinear, Octilinear };
 
+// The direction set of a style (one shared instance each).
+const geom::LatticeDirections& lattice_set(StaircaseStyle style);
+
 struct StaircaseOptions {
   // Work (search steps and turn candidates) per search of a link: 4 searches per link, each
   // about 1-10 microseconds per unit. When none of them finishes, a depth-first fallback with

@@ -673,9 +673,7 @@ namespace {
 
 COriented c_oriented(const Tightener& tight, const StaircaseBuilder& sb, std::span<const Point> taut,
                      StaircaseStyle style) {
-  return c_oriented(tight, sb, taut,
-                    style == StaircaseStyle::Rectilinear ? geom::LatticeDirections::rectilinear()
-                                                         : geom::LatticeDirections::octilinear());
+  return c_oriented(tight, sb, taut, lattice_set(style));
 }
 
 COriented c_oriented(const Tightener& tight, const StaircaseBuilder& sb, std::span<const Point> taut,

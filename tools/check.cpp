@@ -206,12 +206,10 @@ void add_check(CLI::App& app, int& status) {
         if (set && set->is_rectilinear()) {
           set_words = "horizontal or vertical";
         } else if (set) {
-          std::vector<std::string> deg;
-          for (int k = 0; k < 4; ++k)
-            if (set->mask() & (1u << k)) deg.push_back(std::to_string(45 * k));
+          const std::vector<int> deg = set->degrees();
           set_words = "at ";
           for (std::size_t k = 0; k < deg.size(); ++k)
-            set_words += (k == 0 ? "" : k + 1 == deg.size() ? " or " : ", ") + deg[k];
+            set_words += (k == 0 ? "" : k + 1 == deg.size() ? " or " : ", ") + std::to_string(deg[k]);
           set_words += " degrees";
         }
         for (const io::Route& r : layout->routes->routes) {
