@@ -104,6 +104,11 @@ Box bounding_box(std::span<const Point> points);
 // w clipped to dom (both closed; w must meet dom).
 Box clipped_box(Box w, const Box& dom);
 
+// The closed boxes share a point.
+inline bool boxes_meet(const Box& a, const Box& b) {
+  return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y;
+}
+
 // The convex hull of the points: counter-clockwise from the lexicographically smallest, collinear
 // and repeated points dropped (exact; fewer than 3 points when they are collinear).
 Ring convex_hull(std::vector<Point> points);

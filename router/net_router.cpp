@@ -145,9 +145,7 @@ void index_components(NetSpace::Index::Components& c) {
 bool box_inside(const Box& in, const Box& out) {
   return in.lo.x >= out.lo.x && in.lo.y >= out.lo.y && in.hi.x <= out.hi.x && in.hi.y <= out.hi.y;
 }
-bool boxes_meet(const Box& a, const Box& b) {
-  return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y;
-}
+using geom::boxes_meet;
 
 // The wires without their parts of positive length in the closed rectangles `pads` (the net's own
 // pads, which are metal of the net: a wire's stretch over or along one is redundant, and where

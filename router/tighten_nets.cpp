@@ -80,9 +80,7 @@ struct Cut {
   bool operator<(const Cut& o) const { return seg != o.seg ? seg < o.seg : along < o.along; }
 };
 
-bool boxes_meet(const Box& a, const Box& b) {
-  return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y;
-}
+using geom::boxes_meet;
 
 }  // namespace
 
@@ -364,10 +362,9 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
   auto lift_now = [&](std::size_t i, const std::vector<Point>& line, std::size_t* seg, Point* where) {
     if (options_.stop && options_.stop()) throw NetRouterStopped();
     const Box w = options_.windows ? geom::clipped_box(geom::grown_box(geom::bounding_box(line), margin0), dom) : dom;
-    const geom::NormalizedObstacles obs = space.obstacles(i, NetSpaceLevel::Full, w == dom ? std::nullopt : std::optional<Box>(w));
-    const geom::FreeSpaceTriangulation tri = geom::triangulate_free_space(obs.domain, obs.obstacles);
-    if (!tri.ok()) throw std::logic_error("NetsTightener: a net's space could not be triangulated");
-    const Tightener t(tri);
+    const SpaceTightener st(space.obstacles(i, NetSpaceLevel::Full, w == dom ? std::nullopt : std::optional<Box>(w)),
+                            TightenOrientations::Any);
+    const Tightener& t = st.tightener();
     if (SpaceTightener::is_loop(line)) {  // closed up at its start, which may be an obstacle's vertex
       std::vector<std::int32_t> cycle;
       return t.band(line, cycle, seg, where);
@@ -501,9 +498,7 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
       if (!is_sketch(i)) {  // a piece pulled through a joint of its net (another wire's end, a pin) is cut there
         std::vector<char> fz;
         NetLines recut = prepare(wires[i], space.net(i).pins, fz);
-        const bool untouched = std::find(fresh[i].begin(), fresh[i].end(), 1) != fresh[i].end();
-        if (recut != wires[i] && !untouched) {
-          fresh[i].clear();
+        if (recut != wires[i]) {  // (fresh[i] is empty here: only sketches as drawn have it)
           wires[i] = std::move(recut);
           frozen[i] = std::move(fz);
           for (std::size_t k = 0; k < wires[i].size(); ++k) frozen[i][k] = frozen[i][k] || SpaceTightener::is_loop(wires[i][k]);

@@ -270,17 +270,6 @@ NetResult route_net_bends(const io::Layout& layout, const io::Net& net, const Be
   return r;
 }
 
-// Every net's pins as the net router takes them.
-std::vector<router::NetPins> net_pins(const io::Layout& layout) {
-  std::vector<router::NetPins> pins;
-  for (const io::Net& net : layout.nets) {
-    router::NetPins np;
-    np.name = net.name;
-    for (const io::Pin& pin : net.pins) np.pins.push_back(io::pin_polygon(pin));
-    pins.push_back(std::move(np));
-  }
-  return pins;
-}
 
 // route --tighten: a two-pin net with a <sketch>, or a net with a loop sketch, is routed by its
 // sketch pulled taut in its class among the obstacles the net router gives (so the other nets
@@ -491,7 +480,7 @@ void add_route(CLI::App& app, int& status) {
         std::vector<Diagnostic> errors;
         for (const io::Net& net : layout->nets) {
           if (!follows_sketch(net)) continue;
-          if (!plain) plain.emplace(norm, orient_word);
+          if (!plain) plain.emplace(norm, "any");  // only the lift and the loop's class are read
           const auto res = plain->run(net.sketch->points);
           if (res.contractible) contractible_loop.insert(net.name);  // out of the together tightening
           if (res.taut.status != router::TightenStatus::Ok)
@@ -649,7 +638,6 @@ void add_route(CLI::App& app, int& status) {
         for (std::size_t i = 0; i < layout->nets.size(); ++i) {
           const io::Net& net = layout->nets[i];
           io::Route& route = routes.routes[i];
-          router::NetTightenOutcome oc = outs[i];
           const bool was_routed = route.status == "routed";
           const bool loop_net = follows_sketch(net) && WireTightener::is_loop(net.sketch->points);
           if (loop_net && contractible_loop.count(net.name)) {  // the net router was told so: said here

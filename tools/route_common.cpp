@@ -142,6 +142,18 @@ std::string WireTightener::failure_text(const io::Layout& layout, const std::str
   return text;
 }
 
+// Every net's pins as the net router takes them.
+std::vector<router::NetPins> net_pins(const io::Layout& layout) {
+  std::vector<router::NetPins> pins;
+  for (const io::Net& net : layout.nets) {
+    router::NetPins np;
+    np.name = net.name;
+    for (const io::Pin& pin : net.pins) np.pins.push_back(io::pin_polygon(pin));
+    pins.push_back(std::move(np));
+  }
+  return pins;
+}
+
 std::string no_staircase_reason(const std::string& orientations) {
   const auto set = geom::LatticeDirections::parse(orientations);
   // both diagonals, and not both axes: a cone between the diagonals, whose steps keep x + y's parity

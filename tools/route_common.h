@@ -82,6 +82,9 @@ nlohmann::ordered_json together_stats_json(const router::NetsTightenStats& s);
 // router::TightenOrientations; anything else is taken as any.
 router::TightenOrientations tighten_orientations(const std::string& orientations);
 
+// Every net's pins as the net router takes them.
+std::vector<router::NetPins> net_pins(const io::Layout& layout);
+
 // The reason written for a net with no lattice staircase in its class (TIGHTEN-0004).
 std::string no_staircase_reason(const std::string& orientations);
 

@@ -199,16 +199,9 @@ void add_tighten(CLI::App& app, int& status) {
       router::NetRules rules{width, spacing};
       geom::Box domain = io::routing_domain(*layout, extra);
       if (!layout->boundary) domain = geom::grown_box(domain, grow + std::max<std::int64_t>(width + spacing, 1));
-      std::vector<router::NetPins> pins;
-      for (const io::Net& net : layout->nets) {
-        router::NetPins np;
-        np.name = net.name;
-        for (const io::Pin& pin : net.pins) np.pins.push_back(io::pin_polygon(pin));
-        pins.push_back(std::move(np));
-      }
       const geom::NormalizedObstacles plain = routing_obstacles(*layout, extra);
       try {
-        net_space = std::make_unique<router::NetSpace>(domain, plain.obstacles, std::move(pins), rules);
+        net_space = std::make_unique<router::NetSpace>(domain, plain.obstacles, net_pins(*layout), rules);
       } catch (const std::domain_error& e) {
         print_diagnostics({Diagnostic{Severity::Error, "TIGHTEN-0007", layout->file, layout->rules->line, 0,
                                       std::string("--clearance: ") + e.what() + " (" + std::to_string(grow) +
