@@ -429,4 +429,101 @@ MinLinkPath MinLinker::path(std::span<const geom::Point> taut) const {
   throw std::logic_error("MinLinker: the sweep does not end");
 }
 
+MinLinkLoop MinLinker::loop(std::span<const geom::Point> taut_loop, std::size_t max_starts) const {
+  if (taut_loop.size() < 2 || taut_loop.front() != taut_loop.back())
+    throw std::invalid_argument("MinLinker::loop: the loop is not closed");
+  // the loop's vertices, cyclically, without repeats
+  std::vector<Point> v;
+  for (std::size_t i = 0; i + 1 < taut_loop.size(); ++i)
+    if (v.empty() || v.back() != taut_loop[i]) v.push_back(taut_loop[i]);
+  while (v.size() > 1 && v.back() == v.front()) v.pop_back();
+  const std::size_t n = v.size();
+  if (n < 3) throw std::invalid_argument("MinLinker::loop: a loop of fewer than three vertices");
+  std::vector<int> label(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    label[i] = sgn(cross(zvec(v[(i + n - 1) % n], v[i]), zvec(v[i], v[(i + 1) % n])));
+    if (label[i] == 0) throw std::invalid_argument("MinLinker::loop: the loop does not turn at a vertex");
+  }
+  // From edge (v[a], v[a+1]): the path v[a], v[a+1], ..., v[a+n] = v[a], v[a+n+1] = v[a+1].
+  auto from_edge = [&](std::size_t a) {
+    std::vector<Point> p;
+    p.reserve(n + 2);
+    for (std::size_t i = 0; i <= n + 1; ++i) p.push_back(v[(a + i) % n]);
+    MinLinkPath m = path(p);
+    // m: v[a], the bends, v[a+1]; its first and last links lie on the edge's line, one link of
+    // the loop (from the last bend on through v[a] and v[a+1] to the first bend)
+    if (m.points.size() < 4) throw std::logic_error("MinLinker::loop: a loop path with fewer than three links");
+    MinLinkLoop l;
+    l.points.assign(m.points.begin() + 1, m.points.end() - 1);
+    l.points.push_back(l.points.front());
+    return l;
+  };
+  MinLinkLoop best;
+  for (std::size_t a = 0; a < n; ++a)
+    if (label[a] != label[(a + 1) % n]) {
+      best = from_edge(a);
+      best.minimal = true;
+      best.inflection = true;
+      best.starts = 1;
+      best.at_least = best.links();
+      return best;
+    }
+  // Convex: the lower bound from the winding numbers round the blockages met by the loop's fans
+  // (each blockage's once: the number is the same at every point inside it).
+  {
+    std::vector<char> seen;
+    const auto& tris = t_->triangles();
+    const auto& P = t_->vertices();
+    std::size_t w_max = 0;
+    for (const Point x : v) {
+      const auto it = std::lower_bound(P.begin(), P.end(), x);
+      if (it == P.end() || *it != x) throw std::invalid_argument("MinLinker::loop: a vertex is not a triangulation vertex");
+      const std::size_t id = static_cast<std::size_t>(it - P.begin());
+      for (std::int32_t f = fan_start_[id]; f < fan_start_[id + 1]; ++f) {
+        const geom::FreeTriangle& tr = tris[static_cast<std::size_t>(fan_[static_cast<std::size_t>(f)])];
+        for (std::size_t e = 0; e < 3; ++e) {
+          const std::int32_t ob = tr.constraint[e];
+          if (ob == geom::kUnconstrained || ob == geom::kDomainEdge || ob < 0) continue;
+          if (static_cast<std::size_t>(ob) >= seen.size()) seen.resize(static_cast<std::size_t>(ob) + 1, 0);
+          if (seen[static_cast<std::size_t>(ob)]) continue;
+          seen[static_cast<std::size_t>(ob)] = 1;
+          // the point just inside the blockage from the edge's middle m: m + eps n, n the edge's
+          // right normal (the free triangle is on its left); the ray from it along n, in doubled
+          // coordinates so that m is an integer point
+          const Point a = P[static_cast<std::size_t>(tr.v[e])], b = P[static_cast<std::size_t>(tr.v[(e + 1) % 3])];
+          const ZVec nn{Z(b.y) - a.y, Z(a.x) - b.x};
+          const Z mx = Z(a.x) + b.x, my = Z(a.y) + b.y;
+          auto side = [&](Point x) { return sgn(cross(nn, ZVec{2 * Z(x.x) - mx, 2 * Z(x.y) - my})) >= 0 ? 1 : -1; };
+          long wind = 0;
+          for (std::size_t i = 0; i < n; ++i) {
+            const Point x = v[i], y = v[(i + 1) % n];
+            const int sx = side(x), sy = side(y);
+            if (sx == sy) continue;
+            // where the edge meets the ray's line: m + t n with t = cross(x - m, y - x) / cross(n, y - x)
+            const ZVec xy = zvec(x, y);
+            const Z num = cross(ZVec{2 * Z(x.x) - mx, 2 * Z(x.y) - my}, xy), den = cross(nn, xy);
+            if (sgn(num) * sgn(den) <= 0) continue;  // behind the point, or through m itself
+            wind += sgn(den);
+          }
+          w_max = std::max<std::size_t>(w_max, static_cast<std::size_t>(wind < 0 ? -wind : wind));
+        }
+      }
+    }
+    best.at_least = std::max<std::size_t>(3, 2 * w_max + 1);
+  }
+  const std::size_t tries = std::max<std::size_t>(1, std::min(n, max_starts));
+  std::size_t runs = 0;
+  const std::size_t at_least = best.at_least;
+  for (std::size_t k = 0; k < tries && (best.points.empty() || best.links() > at_least); ++k) {
+    MinLinkLoop l = from_edge(k * n / tries);
+    ++runs;
+    if (best.points.empty() || l.links() < best.links()) best = std::move(l);
+  }
+  best.at_least = at_least;
+  best.starts = runs;
+  if (best.links() < best.at_least) throw std::logic_error("MinLinker::loop: fewer links than the winding allows");
+  best.minimal = best.links() == best.at_least;
+  return best;
+}
+
 }  // namespace taut::router

@@ -55,6 +55,24 @@ struct MinLinkPath {
   std::size_t links() const { return points.empty() ? 0 : points.size() - 1; }
 };
 
+// A closed path (front == back) with few links, freely homotopic to a given loop (section 5.2).
+struct MinLinkLoop {
+  std::vector<RPoint> points;  // the bends, closed: points.front() == points.back()
+  std::size_t links() const { return points.empty() ? 0 : points.size() - 1; }
+  // The loop has the fewest links of its class: the class's shortest loop has an inflection
+  // edge (Lemma 4.1), or the loop has `at_least` links. Otherwise (a convex shortest loop: every
+  // turn the same way) the loop is the best of the greedy runs started on the lines of the
+  // shortest loop's edges, and a loop with fewer links may exist (the nested-polygon case,
+  // Aggarwal et al.; not computed).
+  bool minimal = false;
+  // A lower bound on the links of every loop of the class: 2w + 1 for the largest number of
+  // times w the loop winds round a blockage (each link turns less than a half turn as seen from
+  // a point inside it, and the winding number does not change within the class), at least 3.
+  std::size_t at_least = 3;
+  bool inflection = false;  // the shortest loop has an inflection edge (so the loop is minimal)
+  std::size_t starts = 0;  // greedy runs made (1 when the loop has an inflection edge)
+};
+
 class MinLinker {
  public:
   // The triangulation must outlive the MinLinker and be ok().
@@ -64,6 +82,18 @@ class MinLinker {
   // Tightener::tighten returns it (every bend a strict turn at a triangulation vertex). Throws
   // std::invalid_argument when it is not.
   MinLinkPath path(std::span<const geom::Point> taut) const;
+
+  // A loop with few links freely homotopic to `taut_loop`, which must be a shortest loop of its
+  // class as Tightener::tighten_loop returns it (closed, every vertex a strict turn at a
+  // triangulation vertex; not contractible). With an inflection edge e = (a, b): the path from a
+  // once around to b, whose first and last links both lie on e's extension (the ends of the path
+  // are on the extension, and Lemma 4.1 puts a link on it), so they join into one link of the
+  // loop and the loop has one link less than that path; some minimum-link loop has a link on e's
+  // extension too (Lemma 4.1 for loops, section 5.2), and cutting it there gives a path of the
+  // same class with one link more, so the loop is minimal. A convex loop has no inflection edge:
+  // the same is done from up to `max_starts` of its edges (spread evenly round it), the fewest
+  // kept. Throws std::invalid_argument when the input is not such a loop.
+  MinLinkLoop loop(std::span<const geom::Point> taut_loop, std::size_t max_starts = 64) const;
 
  private:
   struct Sweep;

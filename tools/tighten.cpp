@@ -11,9 +11,10 @@
 // or with no integer staircase in its class (TIGHTEN-0004) is written as failed (exit status 1).
 // `c:0,90` and `c:0,45,90,135` name rectilinear and octilinear; `c:` sets with a direction at
 // another angle are refused (CLI-0027) or, from <rules>, replaced by `any` (TIGHTEN-0003).
-// --min-link adds each open wire's minimum-link path of its class (router/minlink.h, any angle,
-// exact rational bends) to --stats and --svg; it is not written as a wire (FORMAT.md coordinates
-// are integers).
+// --min-link adds each wire's minimum-link path of its class (router/minlink.h, any angle,
+// exact rational bends; a loop's minimum-link loop, section 5.2, proven minimal unless its shortest
+// loop is convex with more than three links) to --stats and --svg; it is not written as a wire
+// (FORMAT.md coordinates are integers).
 #include <chrono>
 #include <optional>
 #include <cstdio>
@@ -45,9 +46,26 @@ struct NetTightening {
   std::size_t sleeve = 0, crossings = 0;
   // --min-link: the minimum-link path of each open wire's class (exact rational bends)
   std::size_t min_links = 0;
+  std::size_t min_links_at_least = 0;  // a lower bound (= min_links when proven)
   std::vector<router::MinLinkPath> min_link;
-  bool loop = false;  // minimum-link loops (section 5.2) are not computed
+  bool loop = false;
+  // a loop's: false when its shortest loop is convex and the loop found has more than three
+  // links (router::MinLinkLoop::minimal), so min_links is only an upper bound
+  bool min_links_proven = true;
   bool min_link_failed = false;  // TIGHTEN-0008
+  // the minimum-link path of a taut line (a loop's when `loop`)
+  void add_min_link(const router::MinLinker& ml, std::span<const geom::Point> taut, bool is_loop) {
+    if (is_loop) {
+      router::MinLinkLoop l = ml.loop(taut);
+      min_links_proven = min_links_proven && l.minimal;
+      min_links_at_least += l.minimal ? l.links() : l.at_least;
+      min_link.push_back(router::MinLinkPath{std::move(l.points)});
+    } else {
+      min_link.push_back(ml.path(taut));
+      min_links_at_least += min_link.back().links();
+    }
+    min_links += min_link.back().links();
+  }
 };
 
 std::string fixed3(double v) {
@@ -302,17 +320,25 @@ void add_tighten(CLI::App& app, int& status) {
         st.sleeve = oc.sleeve;
         st.crossings = oc.crossings;
         if (!contractible && !no_staircase) out_lines = together[i];
-        if (args->min_link && !contractible && !no_staircase && !st.loop) {
+        if (args->min_link && !contractible && !no_staircase) {
           // the minimum-link path of each wire's class among what its net was tightened among
           try {
             const router::SpaceTightener sp(net_space->obstacles(i, router::NetSpaceLevel::Full),
                                             router::TightenOrientations::Any);
             const router::MinLinker ml(sp.triangulation());
             for (const auto& w : out_lines) {
-              const router::Tightened r = sp.tightener().tighten(w);
-              if (r.status != router::TightenStatus::Ok) throw std::runtime_error(router::tighten_status_text(r.status));
-              st.min_link.push_back(ml.path(r.points));
-              st.min_links += st.min_link.back().links();
+              const bool is_loop = WireTightener::is_loop(w);
+              std::vector<geom::Point> taut;
+              if (is_loop) {
+                router::Tightener::Loop l = sp.tightener().tighten_loop(w);
+                if (l.status != router::TightenStatus::Ok) throw std::runtime_error(router::tighten_status_text(l.status));
+                taut = std::move(l.points);
+              } else {
+                router::Tightened r = sp.tightener().tighten(w);
+                if (r.status != router::TightenStatus::Ok) throw std::runtime_error(router::tighten_status_text(r.status));
+                taut = std::move(r.points);
+              }
+              st.add_min_link(ml, taut, is_loop);
             }
           } catch (const std::exception& e) {
             st.min_link_failed = true;
@@ -340,12 +366,11 @@ void add_tighten(CLI::App& app, int& status) {
           continue;
         }
         st.taut += router::euclidean_length(r.points);
-        if (args->min_link && !res.loop && !st.min_link_failed) {
+        if (args->min_link && !st.min_link_failed) {
           // an optional statistic: a failure here must not cost the tightened layout
           try {
             if (!min_linker) min_linker = std::make_unique<router::MinLinker>(wt.triangulation());
-            st.min_link.push_back(min_linker->path(r.points));
-            st.min_links += st.min_link.back().links();
+            st.add_min_link(*min_linker, r.points, res.loop);
           } catch (const std::exception& e) {
             st.min_link_failed = true;
             print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0008", layout->file, in.line_numbers[k], 0,
@@ -456,7 +481,11 @@ void add_tighten(CLI::App& app, int& status) {
             paths.push_back(pts);
           }
           nets.back()["min_links"] =
-              s.loop || s.min_link_failed ? nlohmann::ordered_json() : nlohmann::ordered_json(s.min_links);
+              !s.min_links_proven || s.min_link_failed ? nlohmann::ordered_json() : nlohmann::ordered_json(s.min_links);
+          if (!s.min_links_proven && !s.min_link_failed) {
+            nets.back()["min_links_at_least"] = s.min_links_at_least;
+            nets.back()["min_links_at_most"] = s.min_links;
+          }
           nets.back()["min_link_wires"] = paths;
         }
       }
@@ -490,7 +519,13 @@ void add_tighten(CLI::App& app, int& status) {
                   << fixed3(s.after);
         if (c_oriented) std::cerr << " " << orientations << " (taut " << fixed3(s.taut) << ")";
         std::cerr << ", bends " << s.bends_before << " -> " << s.bends_after;
-        if (!s.min_link.empty() && !s.loop && !s.min_link_failed) std::cerr << ", minimum links " << s.min_links;
+        if (!s.min_link.empty() && !s.min_link_failed) {
+          if (s.min_links_proven)
+            std::cerr << ", minimum links " << s.min_links;
+          else
+            std::cerr << ", minimum links " << s.min_links_at_least << " to " << s.min_links
+                      << " (a convex loop: found " << s.min_links << ", not proven minimal)";
+        }
         std::cerr << '\n';
       }
       std::cerr << args->file << ": tightened " << done << " of " << layout->nets.size() << " nets, length "

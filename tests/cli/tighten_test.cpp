@@ -229,6 +229,27 @@ TEST(Tighten, WindingSketches) {
   EXPECT_EQ(ring[0].size(), 7u);
 }
 
+// A net's one minimum-link wire from the --stats JSON ("p/q" strings), exactly.
+std::vector<oracle::QPoint> min_link_wire(const nlohmann::json& net) {
+  std::vector<oracle::QPoint> q;
+  EXPECT_EQ(net["min_link_wires"].size(), 1u);
+  if (net["min_link_wires"].empty()) return q;
+  for (const auto& p : net["min_link_wires"][0])
+    q.push_back({mpq_class(p[0].get<std::string>()), mpq_class(p[1].get<std::string>())});
+  return q;
+}
+
+// A minimum-link loop: closed, every link free, freely homotopic to the sketch.
+void expect_loop_in_class(const std::vector<oracle::QPoint>& q, const Path& sketch, const geom::Box& domain,
+                          const std::vector<geom::Polygon>& obstacles, const oracle::HomotopyWords& h) {
+  ASSERT_GE(q.size(), 4u);
+  EXPECT_TRUE(q.front().x == q.back().x && q.front().y == q.back().y);
+  for (std::size_t k = 0; k + 1 < q.size(); ++k)
+    EXPECT_TRUE(oracle::segment_free(q[k], q[k + 1], domain, obstacles)) << "link " << k;
+  EXPECT_TRUE(same_up_to_rotation(cyclic_word(h.word(std::span<const oracle::QPoint>(q))), cyclic_word(h.word(sketch))))
+      << "another free homotopy class";
+}
+
 // --min-link: each open wire's minimum-link path, exact, in the stats; checked against the
 // rational references (free, same class) and against the written (shortest) wire's links.
 TEST(Tighten, MinLinkPathsInTheStats) {
@@ -251,16 +272,16 @@ TEST(Tighten, MinLinkPathsInTheStats) {
     const Path& sketch = rr.layout->nets[i].sketch->points;
     const auto& e = nets[i];
     SCOPED_TRACE(e["net"].get<std::string>());
-    if (sketch.front() == sketch.back()) {  // a loop: not computed, said so
-      EXPECT_TRUE(e["min_links"].is_null());
-      continue;
-    }
-    ASSERT_EQ(e["min_link_wires"].size(), 1u);
-    std::vector<oracle::QPoint> q;
-    for (const auto& p : e["min_link_wires"][0])
-      q.push_back({mpq_class(p[0].get<std::string>()), mpq_class(p[1].get<std::string>())});
+    const std::vector<oracle::QPoint> q = min_link_wire(e);
     ASSERT_GE(q.size(), 2u);
     EXPECT_EQ(e["min_links"].get<std::size_t>(), q.size() - 1);
+    if (sketch.front() == sketch.back()) {
+      // the guard ring round the hexagon: a triangle (three links: no fewer can wind round
+      // anything)
+      EXPECT_EQ(q.size(), 4u);
+      expect_loop_in_class(q, sketch, r.norm.domain, r.norm.obstacles, h);
+      continue;
+    }
     EXPECT_TRUE(q.front().x == sketch.front().x && q.front().y == sketch.front().y);
     EXPECT_TRUE(q.back().x == sketch.back().x && q.back().y == sketch.back().y);
     for (std::size_t k = 0; k + 1 < q.size(); ++k)
@@ -273,6 +294,79 @@ TEST(Tighten, MinLinkPathsInTheStats) {
   EXPECT_GE(fewer, 2);  // the slalom and the spiral save links
   EXPECT_NE(read_text(dir + "/w.svg").find("class=\"min-link\""), std::string::npos);
   EXPECT_NE(run.err.find("minimum links"), std::string::npos) << run.err;
+}
+
+// --min-link on loops (section 5.2): a ring wound twice round a square has a convex shortest
+// loop, and its five links are proven minimal by the winding number; a ring round two squares with a third pushed in between them from above has inflection edges
+// (it bends the other way under the third), so its count is the minimum, with and without
+// --clearance.
+TEST(Tighten, MinLinkLoopsInTheStats) {
+  const std::string dir = temp_dir("tighten_minlink_loops");
+  const std::string body =
+      "  <boundary x0=\"0\" y0=\"0\" x1=\"400\" y1=\"240\"/>\n"
+      "  <rules wire-width=\"2\" spacing=\"1\" orientations=\"any\"/>\n"
+      "  <blockage id=\"a\"><rect x0=\"40\" y0=\"40\" x1=\"60\" y1=\"60\"/></blockage>\n"
+      "  <blockage id=\"b\"><rect x0=\"140\" y0=\"40\" x1=\"160\" y1=\"60\"/></blockage>\n"
+      "  <blockage id=\"dent\"><rect x0=\"90\" y0=\"55\" x1=\"110\" y1=\"110\"/></blockage>\n"
+      "  <blockage id=\"c\"><rect x0=\"290\" y0=\"110\" x1=\"310\" y1=\"130\"/></blockage>\n"
+      "  <net name=\"twice\"><sketch points=\"270,120 300,80 330,120 300,160 270,120 300,80 330,120 300,160 270,120\"/></net>\n"
+      "  <net name=\"dented\"><sketch points=\"20,50 30,20 170,20 180,50 150,72 100,46 50,72 20,50\"/></net>\n";
+  const std::string file = layout_file("tighten_minlink_loops_in", body);
+  const auto r = reference_for<oracle::L1Reference>(file);
+  const oracle::HomotopyWords h(r.norm.domain, r.norm.obstacles);
+  io::ReadResult in = io::read_layout(file);
+  ASSERT_TRUE(in.layout);
+  for (const bool clearance : {false, true}) {
+    SCOPED_TRACE(clearance ? "--clearance" : "plain");
+    std::vector<std::string> args{"tighten", file, "-o", dir + "/t.xml", "--stats", dir + "/t.json", "--min-link"};
+    if (clearance) args.push_back("--clearance");
+    const auto run = run_taut(args);
+    ASSERT_EQ(run.status, 0) << run.err;
+    const auto j = nlohmann::json::parse(read_text(dir + "/t.json"));
+    const auto& nets = j["tighten"]["nets"];
+    ASSERT_EQ(nets.size(), 2u);
+    for (std::size_t i = 0; i < 2; ++i) {
+      const auto& e = nets[i];
+      SCOPED_TRACE(e["net"].get<std::string>());
+      const std::vector<oracle::QPoint> q = min_link_wire(e);
+      expect_loop_in_class(q, in.layout->nets[i].sketch->points, r.norm.domain, r.norm.obstacles, h);
+      ASSERT_GE(q.size(), 4u);
+      EXPECT_EQ(e["min_links"].get<std::size_t>(), q.size() - 1);
+      EXPECT_FALSE(e.contains("min_links_at_most"));
+      if (i == 0) {
+        // twice round: five links, proven by the winding number (a closed path of four links
+        // winds at most once round a point)
+        EXPECT_EQ(q.size(), 6u);
+      } else {
+        // plain: four links, a long one under both squares and a V under the dent (every link
+        // grazes a corner); the blockages grown by the clearance leave no room for it: five
+        EXPECT_EQ(q.size(), clearance ? 6u : 5u);
+      }
+    }
+    EXPECT_NE(run.err.find("twice (sketch): length 400.000 -> " + std::string(clearance ? "192" : "160") +
+                           ".000, bends 7 -> 7, minimum links 5\n"),
+              std::string::npos)
+        << run.err;
+    EXPECT_NE(run.err.find(clearance ? "bends 6 -> 7, minimum links 5" : "bends 6 -> 7, minimum links 4"), std::string::npos)
+        << run.err;
+  }
+  // a ring round two triangles whose shortest loop is convex, where the greedy runs find four
+  // links and the winding number only proves three: both bounds, min_links null
+  const std::string pair = layout_file("tighten_minlink_pair_in",
+                                       "  <boundary x0=\"0\" y0=\"0\" x1=\"120\" y1=\"120\"/>\n"
+                                       "  <rules orientations=\"any\"/>\n"
+                                       "  <blockage id=\"a\"><polygon points=\"30,80 50,110 30,110\"/></blockage>\n"
+                                       "  <blockage id=\"b\"><polygon points=\"50,70 80,100 50,100\"/></blockage>\n"
+                                       "  <blockage id=\"c\"><polygon points=\"70,10 80,10 80,30\"/></blockage>\n"
+                                       "  <net name=\"pair\"><sketch points=\"45,65 65,5 85,5 85,105 48,103 45,65\"/></net>\n");
+  const auto run = run_taut({"tighten", pair, "-o", dir + "/p.xml", "--stats", dir + "/p.json", "--min-link"});
+  ASSERT_EQ(run.status, 0) << run.err;
+  const auto e = nlohmann::json::parse(read_text(dir + "/p.json"))["tighten"]["nets"][0];
+  EXPECT_TRUE(e["min_links"].is_null());
+  EXPECT_EQ(e["min_links_at_least"], 3);
+  EXPECT_EQ(e["min_links_at_most"], 4);
+  EXPECT_EQ(min_link_wire(e).size(), 5u);
+  EXPECT_NE(run.err.find("minimum links 3 to 4 (a convex loop: found 4, not proven minimal)"), std::string::npos) << run.err;
 }
 
 TEST(Tighten, RoutedWiresOfTheDemo) {

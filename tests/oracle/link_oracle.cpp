@@ -1,7 +1,10 @@
 #include "oracle/link_oracle.h"
 
 #include <algorithm>
+#include <cstdlib>
+#include <numeric>
 #include <optional>
+#include <tuple>
 
 namespace taut::oracle {
 
@@ -183,6 +186,69 @@ int LinkSearch::fewest(Point p, Point q0, const std::vector<int>& word, int max_
         }
       }
   return 0;
+}
+
+bool LinkSearch::triangle_loop(const std::function<bool(const std::vector<QPoint>&)>& in_class,
+                               std::vector<QPoint>* loop) const {
+  std::vector<Point> pts = vertices_;
+  for (const Point c : {domain_.lo, Point{domain_.hi.x, domain_.lo.y}, domain_.hi, Point{domain_.lo.x, domain_.hi.y}})
+    pts.push_back(c);
+  std::sort(pts.begin(), pts.end());
+  pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+  // the distinct lines through two candidate points, as a x + b y = c with (a, b, c) reduced
+  struct Line {
+    long a, b, c;
+    bool operator<(const Line& o) const { return std::tie(a, b, c) < std::tie(o.a, o.b, o.c); }
+    bool operator==(const Line& o) const { return a == o.a && b == o.b && c == o.c; }
+  };
+  std::vector<Line> lines;
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    for (std::size_t j = i + 1; j < pts.size(); ++j) {
+      long a = static_cast<long>(pts[j].y) - pts[i].y, b = static_cast<long>(pts[i].x) - pts[j].x;
+      long c = a * pts[i].x + b * pts[i].y;
+      const long g = std::gcd(std::gcd(std::labs(a), std::labs(b)), std::labs(c));
+      a /= g, b /= g, c /= g;
+      if (a < 0 || (a == 0 && b < 0)) a = -a, b = -b, c = -c;
+      lines.push_back({a, b, c});
+    }
+  std::sort(lines.begin(), lines.end());
+  lines.erase(std::unique(lines.begin(), lines.end()), lines.end());
+  const std::size_t L = lines.size();
+  // the free meeting point of every two lines (inside the domain, not in material)
+  std::vector<std::optional<QPoint>> at(L * L);
+  for (std::size_t i = 0; i < L; ++i)
+    for (std::size_t j = i + 1; j < L; ++j) {
+      const Line &u = lines[i], &v = lines[j];
+      const long den = u.a * v.b - u.b * v.a;
+      if (den == 0) continue;
+      QPoint y{mpq_class(u.c * v.b - u.b * v.c, den), mpq_class(u.a * v.c - u.c * v.a, den)};
+      y.x.canonicalize();
+      y.y.canonicalize();
+      if (y.x < domain_.lo.x || y.x > domain_.hi.x || y.y < domain_.lo.y || y.y > domain_.hi.y) continue;
+      if (in_material(y, obstacles_)) continue;
+      at[i * L + j] = y;
+      at[j * L + i] = y;
+    }
+  for (std::size_t i = 0; i < L; ++i)
+    for (std::size_t j = i + 1; j < L; ++j) {
+      const auto& A = at[i * L + j];
+      if (!A) continue;
+      for (std::size_t k = j + 1; k < L; ++k) {
+        const auto &B = at[j * L + k], &C = at[k * L + i];
+        if (!B || !C) continue;
+        if (cross(B->x - A->x, B->y - A->y, C->x - A->x, C->y - A->y) == 0) continue;  // no triangle
+        for (int turn = 0; turn < 2; ++turn) {  // both ways round
+          std::vector<QPoint> t = turn == 0 ? std::vector<QPoint>{*A, *B, *C, *A} : std::vector<QPoint>{*A, *C, *B, *A};
+          if (!in_class(t)) continue;
+          bool free = true;
+          for (std::size_t e = 0; e < 3 && free; ++e) free = segment_free(t[e], t[e + 1], domain_, obstacles_);
+          if (!free) break;
+          if (loop) *loop = std::move(t);
+          return true;
+        }
+      }
+    }
+  return false;
 }
 
 }  // namespace taut::oracle

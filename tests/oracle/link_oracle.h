@@ -22,6 +22,7 @@
 
 #include <gmpxx.h>
 
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -41,6 +42,13 @@ class LinkSearch {
   int fewest(geom::Point p, geom::Point q, const std::vector<int>& word, int max_links,
              std::vector<QPoint>* path = nullptr) const;
   bool path_ok(const std::vector<QPoint>& path, const std::vector<int>& word) const;
+  // Closed paths: whether a triangle (three links, the fewest any loop around something can
+  // have) whose sides lie on candidate lines (through two of the obstacle vertices and the
+  // domain's corners) is free and `in_class` (the caller's test of its free homotopy class; the
+  // triangle is given closed, front == back); the first found goes to `loop`. Finding none
+  // proves nothing (a minimum-link loop's links need not lie on such lines).
+  bool triangle_loop(const std::function<bool(const std::vector<QPoint>&)>& in_class,
+                     std::vector<QPoint>* loop = nullptr) const;
 
  private:
   geom::Box domain_;

@@ -22,6 +22,7 @@
 #include "router/tighten.h"
 #include "support/sanitized.h"
 #include "support/sketcher.h"
+#include "support/taut_check.h"
 #include "support/wavefront_cases.h"
 #include "support/wavefront_hand.h"
 
@@ -139,13 +140,14 @@ TEST(MinLink, SlalomBendsOncePerPillar) {
   EXPECT_EQ(w.search->fewest({5, 5}, {105, 95}, w.h->word(taut), kSanitized ? 2 : 3), 0);
 }
 
-// Small random scenes: rectangles and right triangles on a 0..12 grid.
-Scene random_scene(std::mt19937_64& rng) {
+// Small random scenes: rectangles and right triangles on a 0..12 grid (denser: four to seven
+// of them on a 0..16 grid).
+Scene random_scene(std::mt19937_64& rng, bool dense = false) {
   auto r = [&](int lo, int hi) { return lo + static_cast<int>(rng() % static_cast<std::uint64_t>(hi - lo + 1)); };
   std::vector<geom::Polygon> ps;
-  const int n = r(1, 3);
+  const int n = dense ? r(4, 7) : r(1, 3), top = dense ? 12 : 8;
   for (int i = 0; i < n; ++i) {
-    const int x0 = r(1, 8), y0 = r(1, 8), w = r(1, 3), h = r(1, 3);
+    const int x0 = r(1, top), y0 = r(1, top), w = r(1, 3), h = r(1, 3);
     if (r(0, 2) == 0) {
       ps.push_back(rect(x0, y0, x0 + w, y0 + h));
     } else {
@@ -160,7 +162,7 @@ Scene random_scene(std::mt19937_64& rng) {
       ps.push_back({t, {}});
     }
   }
-  return normalized({{0, 0}, {12, 12}}, ps);
+  return normalized({{0, 0}, {dense ? 16 : 12, dense ? 16 : 12}}, ps);
 }
 
 TEST(MinLink, RandomSketchesAgainstTheReferences) {
@@ -219,6 +221,22 @@ TEST(MinLink, RandomSketchesAgainstTheReferences) {
   EXPECT_GE(same * 100, small * 90);
 }
 
+// The points sketches go through in a wavefront test case: its free candidates and the blockage
+// vertices with one free wedge; `pinch`: some vertex has more.
+std::vector<Point> sketch_points(const WavefrontCase& c, const oracle::L1Reference& ref, bool& pinch) {
+  std::vector<Point> pts;
+  for (Point p : c.candidates)
+    if (ref.is_free(p)) pts.push_back(p);
+  pinch = false;
+  for (const auto& o : c.obstacles)
+    for (Point v : o.outer) {
+      const std::size_t k = ref.wedges_at(v).size();
+      pinch = pinch || k > 1;
+      if (k == 1) pts.push_back(v);
+    }
+  return pts;
+}
+
 // The wavefront tests' seeded layouts: every `taut gen` kind and the degenerate families (shared
 // coordinates, collinear edges, touching blockages, rings, pinches), larger than the scenes above,
 // so only the checks that need no search: free, same class, never more links than the shortest.
@@ -236,16 +254,8 @@ TEST(MinLink, DegenerateFamiliesStayFreeAndInClass) {
     if (!ref.problems().empty()) continue;
     const World w(Scene{c.domain, c.obstacles});
     ASSERT_TRUE(w.t.ok()) << "seed " << seed;
-    std::vector<Point> pts;
-    for (Point p : c.candidates)
-      if (ref.is_free(p)) pts.push_back(p);
     bool pinch = false;
-    for (const auto& o : c.obstacles)
-      for (Point v : o.outer) {
-        const std::size_t k = ref.wedges_at(v).size();
-        pinch = pinch || k > 1;
-        if (k == 1) pts.push_back(v);
-      }
+    const std::vector<Point> pts = sketch_points(c, ref, pinch);
     if (pts.size() < 3) continue;
     std::mt19937_64 rng(static_cast<std::uint64_t>(seed) * 40503 + 11);
     Sketcher sk{ref, *w.h, pts, rng};
@@ -261,6 +271,198 @@ TEST(MinLink, DegenerateFamiliesStayFreeAndInClass) {
   }
   std::printf("%lld min-link paths on the degenerate families (%lld in layouts with pinches)\n", paths, pinched);
   EXPECT_GE(paths, sanitized_share(900, 10));
+}
+
+// Minimum-link loops (section 5.2). A loop from MinLinker::loop is checked to be closed, free,
+// freely homotopic to the input (cyclic words equal up to rotation), of at least its lower bound
+// and at most as many links as the shortest loop has vertices; when it claims to be minimal with
+// four links, no triangle on candidate lines may be free and of the class (the search also runs
+// on the convex ones it does not claim, and counts how often a triangle beats them).
+struct LoopCheck {
+  long long loops = 0, minimal = 0, convex_open = 0, gap_one = 0, searched = 0, triangles_beat_convex = 0;
+  std::vector<int> links_hist = std::vector<int>(8, 0);
+  std::vector<int> inflection_hist = std::vector<int>(8, 0);  // loops with an inflection edge
+};
+
+router::MinLinkLoop check_loop(const World& w, const Path& loop, const std::string& where, LoopCheck& c,
+                               bool search) {
+  const router::Tightener::Loop l = w.tight->tighten_loop(loop);
+  if (l.status != router::TightenStatus::Ok || l.contractible) return {};
+  const router::MinLinkLoop m = w.ml->loop(l.points);
+  const std::vector<oracle::QPoint> q = to_q(router::MinLinkPath{m.points});
+  const std::string ctx = where + " loop " + str(loop) + " taut " + str(l.points) + " min-link " + str(q) +
+                          (m.minimal ? " (minimal)" : " (convex, not proven)");
+  EXPECT_GE(q.size(), 4u) << ctx;
+  if (q.size() < 4) return m;
+  EXPECT_TRUE(q.front().x == q.back().x && q.front().y == q.back().y) << ctx << ": not closed";
+  for (std::size_t i = 0; i + 1 < q.size(); ++i)
+    EXPECT_TRUE(oracle::segment_free(q[i], q[i + 1], w.sc.domain, w.sc.obstacles)) << ctx << ": link " << i << " leaves free space";
+  const std::vector<int> want = cyclic_word(w.h->word(loop));
+  EXPECT_TRUE(same_up_to_rotation(cyclic_word(w.h->word(std::span<const oracle::QPoint>(q))), want))
+      << ctx << ": another free homotopy class";
+  EXPECT_LE(m.links(), l.points.size() - 1) << ctx << ": more links than the shortest loop";
+  EXPECT_EQ(m.minimal, m.links() == m.at_least || m.inflection) << ctx;
+  EXPECT_GE(m.links(), m.at_least) << ctx;
+  if (m.inflection) EXPECT_EQ(m.starts, 1u) << ctx;
+  ++c.loops;
+  c.gap_one += !m.minimal && m.links() == m.at_least + 1;
+  c.minimal += m.minimal;
+  c.convex_open += !m.minimal;
+  ++c.links_hist[std::min<std::size_t>(m.links(), 7)];
+  if (m.inflection) ++c.inflection_hist[std::min<std::size_t>(m.links(), 7)];
+  if (search && m.links() == 4) {
+    ++c.searched;
+    std::vector<oracle::QPoint> tri;
+    const bool found = w.search->triangle_loop(
+        [&](const std::vector<oracle::QPoint>& t) {
+          return same_up_to_rotation(cyclic_word(w.h->word(std::span<const oracle::QPoint>(t))), want);
+        },
+        &tri);
+    if (m.minimal) EXPECT_FALSE(found) << ctx << ": called minimal, but the triangle " << str(tri) << " is free and of the class";
+    c.triangles_beat_convex += found && !m.minimal;
+  }
+  return m;
+}
+
+TEST(MinLinkLoop, HandCases) {
+  LoopCheck c;
+  {
+    const World w(normalized({{0, 0}, {100, 100}}, {rect(40, 40, 60, 60)}));
+    ASSERT_TRUE(w.t.ok());
+    // round a square: a triangle (its shortest loop, the square, is convex)
+    const auto m = check_loop(w, {{20, 50}, {50, 10}, {90, 50}, {50, 90}, {20, 50}}, "square", c, false);
+    EXPECT_EQ(m.links(), 3u);
+    EXPECT_TRUE(m.minimal);
+    EXPECT_FALSE(m.inflection);
+    // twice round: the shortest loop wraps every corner twice; a closed path of five links, a
+    // pentagram, winds twice round the square's middle, and none of four can
+    const auto m2 = check_loop(w, {{20, 50}, {50, 10}, {90, 50}, {50, 90}, {20, 50}, {50, 10}, {90, 50}, {50, 90}, {20, 50}},
+                               "twice", c, false);
+    EXPECT_EQ(m2.links(), 5u);
+    EXPECT_EQ(m2.at_least, 5u);  // the square's points are wound round twice
+    EXPECT_TRUE(m2.minimal);
+  }
+  {
+    // a figure eight round two squares: inflection edges where it crosses between them
+    const World w(normalized({{0, 0}, {200, 100}}, {rect(40, 40, 60, 60), rect(140, 40, 160, 60)}));
+    ASSERT_TRUE(w.t.ok());
+    const auto m = check_loop(w, {{100, 50}, {50, 10}, {10, 50}, {50, 90}, {100, 50}, {150, 10}, {190, 50}, {150, 90}, {100, 50}},
+                              "eight", c, false);
+    EXPECT_TRUE(m.minimal);
+    EXPECT_TRUE(m.inflection);
+    // a bow tie: four links (a closed path of three is a triangle, which is simple)
+    EXPECT_EQ(m.links(), 4u) << str(to_q(router::MinLinkPath{m.points}));
+  }
+  {
+    // round two squares with a third pushed in between them from above: the shortest loop bends
+    // round the third's bottom corners the other way (two inflection edges)
+    const World w(normalized({{0, 0}, {200, 120}},
+                             {rect(40, 40, 60, 60), rect(140, 40, 160, 60), rect(90, 55, 110, 110)}));
+    ASSERT_TRUE(w.t.ok());
+    const auto m = check_loop(w, {{20, 50}, {30, 20}, {170, 20}, {180, 50}, {150, 66}, {100, 52}, {50, 66}, {20, 50}}, "dent", c, true);
+    EXPECT_TRUE(m.minimal);
+    EXPECT_TRUE(m.inflection);
+    // under the squares, up round the right one, in under the third, out round the left one
+    EXPECT_EQ(m.links(), 5u) << str(to_q(router::MinLinkPath{m.points}));
+  }
+  EXPECT_FALSE(::testing::Test::HasFailure());
+}
+
+TEST(MinLinkLoop, RandomLoopsAgainstTheReferences) {
+  LoopCheck c;
+  long long tried = 0;
+  const int n = sanitized_share(600, 20);
+  for (int seed = 1; seed <= 2 * n; ++seed) {
+    // the first n scenes small (searched for triangles), then n dense ones (more inflections)
+    const bool dense = seed > n;
+    std::mt19937_64 rng(static_cast<std::uint64_t>(seed) * 7919 + 3);
+    Scene sc;
+    try {
+      sc = random_scene(rng, dense);
+    } catch (const std::exception&) {
+      continue;
+    }
+    const oracle::L1Reference ref(sc.domain, sc.obstacles);
+    if (!ref.problems().empty()) continue;
+    const World w(sc);
+    if (!w.t.ok()) continue;
+    std::vector<Point> pts;
+    for (int x = 0; x <= sc.domain.hi.x; ++x)
+      for (int y = 0; y <= sc.domain.hi.y; ++y)
+        if (ref.is_free({x, y}) && ref.wedges_at({x, y}).size() == 1) pts.push_back({x, y});
+    if (pts.size() < 3) continue;
+    Sketcher sk{ref, *w.h, pts, rng};
+    std::string obs;
+    for (const auto& o : sc.obstacles) obs += str(o.outer) + " ";
+    for (int k = 0; k < 12; ++k) {
+      // long walks that weave between the blockages (inflections), or loops wound round some
+      Path loop = sk.walk(k % 3 == 2 ? 2 + static_cast<int>(rng() % 4) : 4 + static_cast<int>(rng() % 5));
+      if (loop.size() < 2) continue;
+      if (k % 3 == 2) sk.add_loops(loop);
+      if (!ref.visible(loop.back(), loop.front())) continue;
+      loop.push_back(loop.front());
+      if (loop.size() < 4) continue;
+      ++tried;
+      check_loop(w, loop, "seed " + std::to_string(seed) + " obstacles " + obs, c,
+                 !dense && c.searched < (kSanitized ? 2 : 60));
+      ASSERT_FALSE(::testing::Test::HasFailure()) << "stopping at the first failing loop";
+    }
+  }
+  std::printf("%lld loops tried, %lld not contractible: %lld minimal, %lld convex above the winding bound (not "
+              "proven; %lld by one link); links 3..7+: %d %d %d %d %d, of loops with an inflection edge %d %d %d %d %d; %lld with four "
+              "links searched for a triangle, which beats %lld of the convex ones\n",
+              tried, c.loops, c.minimal, c.convex_open, c.gap_one, c.links_hist[3], c.links_hist[4], c.links_hist[5],
+              c.links_hist[6], c.links_hist[7], c.inflection_hist[3], c.inflection_hist[4], c.inflection_hist[5],
+              c.inflection_hist[6], c.inflection_hist[7], c.searched, c.triangles_beat_convex);
+  EXPECT_GE(c.loops, sanitized_share(300, 5));
+  long long inflections = 0;
+  for (int k : c.inflection_hist) inflections += k;
+  EXPECT_GE(inflections, sanitized_share(100, 0)) << "too few loops with inflection edges";
+  EXPECT_GE(c.searched, sanitized_share(10, 0));
+}
+
+// Loops on the wavefront tests' degenerate families (shared coordinates, collinear edges,
+// touching blockages, pinches): the checks without the search.
+TEST(MinLinkLoop, DegenerateFamiliesStayFreeAndInClass) {
+  LoopCheck c;
+  long long pinched = 0;
+  const int n = sanitized_share(600, 10);
+  for (int seed = 1; seed <= n; ++seed) {
+    WavefrontCase wc;
+    try {
+      wc = make_wavefront_case(static_cast<std::uint64_t>(seed));
+    } catch (const std::exception&) {
+      continue;
+    }
+    if (wc.obstacles.empty()) continue;
+    const oracle::L1Reference ref(wc.domain, wc.obstacles);
+    if (!ref.problems().empty()) continue;
+    const World w(Scene{wc.domain, wc.obstacles});
+    ASSERT_TRUE(w.t.ok()) << "seed " << seed;
+    bool pinch = false;
+    const std::vector<Point> pts = sketch_points(wc, ref, pinch);
+    if (pts.size() < 3) continue;
+    std::mt19937_64 rng(static_cast<std::uint64_t>(seed) * 7717 + 5);
+    Sketcher sk{ref, *w.h, pts, rng};
+    for (int k = 0; k < 16; ++k) {
+      Path loop = sk.walk(3 + static_cast<int>(rng() % 5));
+      if (loop.size() < 2) continue;
+      if (k % 4 == 3) sk.add_loops(loop);
+      if (!ref.visible(loop.back(), loop.front())) continue;
+      loop.push_back(loop.front());
+      if (loop.size() < 4) continue;
+      const long long before = c.loops;
+      check_loop(w, loop, "seed " + std::to_string(seed) + " (" + wc.family + ")", c, false);
+      ASSERT_FALSE(::testing::Test::HasFailure()) << "stopping at the first failing loop";
+      pinched += c.loops > before && pinch;
+    }
+  }
+  long long inflections = 0;
+  for (int k : c.inflection_hist) inflections += k;
+  std::printf("%lld loops on the degenerate families (%lld in layouts with pinches): %lld minimal (%lld with an "
+              "inflection edge), %lld not proven\n",
+              c.loops, pinched, c.minimal, inflections, c.convex_open);
+  EXPECT_GE(c.loops, sanitized_share(500, 5));
 }
 
 }  // namespace
