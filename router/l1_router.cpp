@@ -1,6 +1,7 @@
 #include "router/l1_router.h"
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 #include <map>
 #include <set>
@@ -270,6 +271,8 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t) {
     std::set<std::vector<Point>> tried;
     const std::vector<geom::Coord>& xs = pins_.vertex_xs();
     const std::vector<geom::Coord>& ys = pins_.vertex_ys();
+    std::vector<Point> sorted_pins(pins.begin(), pins.end());
+    std::sort(sorted_pins.begin(), sorted_pins.end());
     while (true) {
       bool changed = false;
       const std::optional<MetalGraph> graph = metal_graph(t.wires, pins);
@@ -374,6 +377,162 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t) {
         if (w.points.size() >= 2) t.wires.push_back(std::move(w.points));
         changed = true;
         break;
+      }
+      if (changed) {
+        ++changes;
+        continue;
+      }
+      // No single path gains: move a Steiner point. A key node u of degree three or more (or a
+      // pin of degree two or more), with the key paths at it taken out, leaves one part per path
+      // (and the pin, a part of its own); the point s (in free space) with the least sum of the
+      // parts' distances to it, joined to each part by a shortest path, replaces those paths when
+      // that sum is strictly smaller than theirs. Candidates for s: the grid of
+      // the x and y of u, the paths' far ends and the tree's nodes within their box, and of the
+      // obstacle vertices there while the grid stays small (an optimal Steiner point of three
+      // points among rectangles lies on the extended Hanan grid of the points and the obstacles'
+      // corners; the parts are more than points, so this is a heuristic with the exact distances).
+      for (std::size_t u = 0; u < g.nodes.size() && !changed; ++u) {
+        const bool is_pin = std::binary_search(sorted_pins.begin(), sorted_pins.end(), g.nodes[u]);
+        if (!g.key[u] || g.adj[u].size() < (is_pin ? 2u : 3u)) continue;
+        std::vector<std::size_t> at_u;
+        for (std::size_t pi = 0; pi < paths.size(); ++pi)
+          if (paths[pi].nodes.front() == u || paths[pi].nodes.back() == u) at_u.push_back(pi);
+        if (at_u.size() != g.adj[u].size()) continue;  // (a path from u back to u: not in a tree)
+        std::vector<Point> memo_key{g.nodes[u]};
+        std::vector<char> gone(g.edges.size(), 0);
+        std::vector<std::size_t> far;
+        std::int64_t old_length = 0;
+        for (const std::size_t pi : at_u) {
+          const KeyPath& kp = paths[pi];
+          for (const std::size_t e : kp.edges) gone[e] = 1;
+          far.push_back(kp.nodes.front() == u ? kp.nodes.back() : kp.nodes.front());
+          old_length += kp.length;
+          for (const std::size_t n : kp.nodes) memo_key.push_back(g.nodes[n]);
+        }
+        if (!tried.insert(memo_key).second) continue;
+        // the parts: flood fills from the far ends over the edges left
+        std::vector<int> part(g.nodes.size(), -1);
+        bool tree = true;
+        for (std::size_t k = 0; k < far.size() && tree; ++k) {
+          if (part[far[k]] >= 0) tree = false;  // two far ends joined without u: not a tree
+          std::vector<std::size_t> stack{far[k]};
+          part[far[k]] = static_cast<int>(k);
+          while (!stack.empty()) {
+            const std::size_t a = stack.back();
+            stack.pop_back();
+            for (const auto& [b, e] : g.adj[a])
+              if (!gone[e] && part[b] < 0) {
+                part[b] = static_cast<int>(k);
+                stack.push_back(b);
+              }
+          }
+        }
+        if (!tree) continue;
+        // the candidate grid
+        geom::Coord x0 = g.nodes[u].x, x1 = x0, y0 = g.nodes[u].y, y1 = y0;
+        for (const std::size_t f : far) {
+          x0 = std::min(x0, g.nodes[f].x), x1 = std::max(x1, g.nodes[f].x);
+          y0 = std::min(y0, g.nodes[f].y), y1 = std::max(y1, g.nodes[f].y);
+        }
+        std::vector<geom::Coord> gx, gy;
+        for (const Point q : g.nodes) {
+          if (x0 <= q.x && q.x <= x1) gx.push_back(q.x);
+          if (y0 <= q.y && q.y <= y1) gy.push_back(q.y);
+        }
+        auto add_obstacles = [](std::vector<geom::Coord>& v, const std::vector<geom::Coord>& all, geom::Coord lo,
+                                geom::Coord hi) {
+          const auto a = std::lower_bound(all.begin(), all.end(), lo), b = std::upper_bound(all.begin(), all.end(), hi);
+          if (b - a <= static_cast<std::ptrdiff_t>(kMoveGridSide)) v.insert(v.end(), a, b);
+        };
+        add_obstacles(gx, xs, x0, x1);
+        add_obstacles(gy, ys, y0, y1);
+        for (auto* v : {&gx, &gy}) {
+          std::sort(v->begin(), v->end());
+          v->erase(std::unique(v->begin(), v->end()), v->end());
+        }
+        if (gx.size() * gy.size() > kMoveGridPoints) continue;
+        std::vector<Point> grid;
+        for (const geom::Coord x : gx)
+          for (const geom::Coord y : gy) grid.push_back({x, y});
+        keep_free(grid, wavefront_);
+        // not where blockages touch: the parts' paths would meet there from different free wedges,
+        // and the tree would pass through the pinch (FORMAT.md forbids it)
+        grid.erase(std::remove_if(grid.begin(), grid.end(), [&](Point q) { return wavefront_.vertex_wedges(q).size() > 1; }),
+                   grid.end());
+        if (grid.empty()) continue;
+        // each part's metal: its key nodes and its edges
+        std::vector<std::vector<Point>> part_points(far.size());
+        std::vector<std::vector<geom::Segment>> part_segments(far.size());
+        for (std::size_t n = 0; n < g.nodes.size(); ++n)
+          if (part[n] >= 0 && (g.key[n] || g.adj[n].empty())) part_points[static_cast<std::size_t>(part[n])].push_back(g.nodes[n]);
+        for (std::size_t k = 0; k < far.size(); ++k)
+          if (part_points[k].empty()) part_points[k].push_back(g.nodes[far[k]]);
+        if (is_pin) {  // the pin stays, a part of its own
+          part_points.push_back({g.nodes[u]});
+          part_segments.emplace_back();
+        }
+        for (std::size_t e = 0; e < g.edges.size(); ++e)
+          if (!gone[e] && part[g.edges[e].first] >= 0)
+            part_segments[static_cast<std::size_t>(part[g.edges[e].first])].push_back(
+                {g.nodes[g.edges[e].first], g.nodes[g.edges[e].second]});
+        // A lower bound of each part's distance: the L1 distance to its metal, blockages ignored.
+        // Candidates whose bound, with the exact distances of the parts run so far, reaches the
+        // old length are dropped before each run (most moves end here without a run at all).
+        auto l1_to_part = [&](Point q, std::size_t k) {
+          std::int64_t d = std::numeric_limits<std::int64_t>::max();
+          auto gap = [](geom::Coord v, geom::Coord lo, geom::Coord hi) {
+            return v < lo ? std::int64_t{lo} - v : v > hi ? std::int64_t{v} - hi : std::int64_t{0};
+          };
+          for (const Point a : part_points[k]) d = std::min(d, gap(q.x, a.x, a.x) + gap(q.y, a.y, a.y));
+          for (const geom::Segment& sg : part_segments[k])
+            d = std::min(d, gap(q.x, std::min(sg.a.x, sg.b.x), std::max(sg.a.x, sg.b.x)) +
+                                gap(q.y, std::min(sg.a.y, sg.b.y), std::max(sg.a.y, sg.b.y)));
+          return d;
+        };
+        const std::size_t parts = part_points.size();
+        std::vector<std::vector<std::int64_t>> bound(grid.size(), std::vector<std::int64_t>(parts));
+        std::vector<std::int64_t> sum(grid.size(), 0);  // exact so far plus the bounds of the rest
+        for (std::size_t j = 0; j < grid.size(); ++j)
+          for (std::size_t k = 0; k < parts; ++k) {
+            bound[j][k] = l1_to_part(grid[j], k);
+            sum[j] += bound[j][k];
+          }
+        std::vector<std::size_t> alive;
+        for (std::size_t j = 0; j < grid.size(); ++j)
+          if (sum[j] < old_length) alive.push_back(j);
+        for (std::size_t k = 0; k < parts && !alive.empty(); ++k) {
+          std::vector<Point> targets;
+          for (const std::size_t j : alive) targets.push_back(grid[j]);
+          wavefront_.run(part_points[k], part_segments[k], targets, WavefrontStop::AllTargets);
+          std::vector<std::size_t> still;
+          for (std::size_t i = 0; i < alive.size(); ++i) {
+            const auto d = wavefront_.target_distance(i);
+            if (!d) continue;
+            const std::size_t j = alive[i];
+            sum[j] += *d - bound[j][k];
+            if (sum[j] < old_length) still.push_back(j);
+          }
+          alive = std::move(still);
+        }
+        std::optional<std::size_t> best;
+        for (const std::size_t j : alive)
+          if (!best || sum[j] < sum[*best]) best = j;
+        if (!best) continue;
+        std::vector<std::vector<Point>> joins;
+        bool ok = true;
+        for (std::size_t k = 0; k < part_points.size() && ok; ++k) {
+          wavefront_.run(part_points[k], part_segments[k], std::vector<Point>{grid[*best]}, WavefrontStop::FirstTarget);
+          Wire w = finish(std::size_t{0});
+          ok = w.status == WireStatus::Ok;
+          if (ok && w.points.size() >= 2) joins.push_back(std::move(w.points));
+        }
+        if (!ok) continue;
+        std::vector<std::vector<Point>> wires;
+        for (std::size_t e = 0; e < g.edges.size(); ++e)
+          if (!gone[e]) wires.push_back({g.nodes[g.edges[e].first], g.nodes[g.edges[e].second]});
+        for (auto& w : joins) wires.push_back(std::move(w));
+        t.wires = std::move(wires);
+        changed = true;
       }
       if (changed) {
         ++changes;

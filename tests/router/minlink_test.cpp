@@ -303,7 +303,9 @@ router::MinLinkLoop check_loop(const World& w, const Path& loop, const std::stri
   EXPECT_LE(m.links(), l.points.size() - 1) << ctx << ": more links than the shortest loop";
   EXPECT_EQ(m.minimal, m.links() == m.at_least || m.inflection) << ctx;
   EXPECT_GE(m.links(), m.at_least) << ctx;
-  if (m.inflection) EXPECT_EQ(m.starts, 1u) << ctx;
+  if (m.inflection) {
+    EXPECT_EQ(m.starts, 1u) << ctx;
+  }
   ++c.loops;
   c.gap_one += !m.minimal && m.links() == m.at_least + 1;
   c.minimal += m.minimal;
@@ -318,7 +320,9 @@ router::MinLinkLoop check_loop(const World& w, const Path& loop, const std::stri
           return same_up_to_rotation(cyclic_word(w.h->word(std::span<const oracle::QPoint>(t))), want);
         },
         &tri);
-    if (m.minimal) EXPECT_FALSE(found) << ctx << ": called minimal, but the triangle " << str(tri) << " is free and of the class";
+    if (m.minimal) {
+      EXPECT_FALSE(found) << ctx << ": called minimal, but the triangle " << str(tri) << " is free and of the class";
+    }
     c.triangles_beat_convex += found && !m.minimal;
   }
   return m;
@@ -417,8 +421,8 @@ TEST(MinLinkLoop, RandomLoopsAgainstTheReferences) {
   EXPECT_GE(c.loops, sanitized_share(300, 5));
   long long inflections = 0;
   for (int k : c.inflection_hist) inflections += k;
-  EXPECT_GE(inflections, sanitized_share(100, 0)) << "too few loops with inflection edges";
-  EXPECT_GE(c.searched, sanitized_share(10, 0));
+  EXPECT_GE(inflections, kSanitized ? 0 : 100) << "too few loops with inflection edges";
+  EXPECT_GE(c.searched, kSanitized ? 0 : 10);
 }
 
 // Loops on the wavefront tests' degenerate families (shared coordinates, collinear edges,
@@ -462,7 +466,7 @@ TEST(MinLinkLoop, DegenerateFamiliesStayFreeAndInClass) {
   std::printf("%lld loops on the degenerate families (%lld in layouts with pinches): %lld minimal (%lld with an "
               "inflection edge), %lld not proven\n",
               c.loops, pinched, c.minimal, inflections, c.convex_open);
-  EXPECT_GE(c.loops, sanitized_share(500, 5));
+  EXPECT_GE(c.loops, sanitized_share(500, 20));
 }
 
 }  // namespace

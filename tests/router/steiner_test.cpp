@@ -6,8 +6,8 @@
 // the minimum, equal to it for two pins, and at most twice it (Prim's rule never exceeds the
 // terminals' minimum spanning tree, itself at most twice the Steiner minimum); unreachable pins
 // exactly when the oracle finds no tree. The mean and worst excess over the minimum are printed
-// and held (the target, mean under 2 % and worst under 10 %: the mean is met, the worst
-// not reliably); the improvement pass never lengthens a tree (against the same search without it).
+// and held to the target (mean under 2 %, worst under 10 %); the improvement pass never
+// lengthens a tree (against the same search without it).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -98,12 +98,11 @@ TEST(SteinerTree, LegalAndNearTheMinimum) {
               improved);
   EXPECT_EQ(failed, 0);
   EXPECT_GE(trees, kSanitized ? 100 : 1000);
-  // The target is a mean excess under 2 % and a worst under 10 %. The mean is met with a
-  // wide margin (0.05-0.08 % on four sets of 1,500 nets); the worst is not reliably: 5.6-11.1 %
-  // on those sets (11.1 % on this one, seed 1135: one hard net decides it). Held here so that
-  // neither gets worse.
+  // The target: a mean excess under 2 % and a worst under 10 %. With the Steiner point
+  // moves, ten sets of 1,500 nets (this one and nine other seed bases) gave means of 0.03-0.07 %
+  // and worsts of 3.7-7.7 % (before them: 0.10 % and 11.1 % here, 15.7 % on one other set).
   EXPECT_LT(excess_sum / std::max(trees, 1), 0.02);
-  EXPECT_LT(worst, 0.12);
+  EXPECT_LT(worst, 0.10);
   EXPECT_GT(improved, kSanitized ? 5 : 100);
 }
 
@@ -123,6 +122,67 @@ TEST(SteinerTree, WalledInAndBlockedPins) {
   const auto u = router.steiner(inside);
   EXPECT_EQ(u.status, router::WireStatus::TargetNotFree);
   EXPECT_EQ(u.failed, std::optional<std::size_t>(1));
+}
+
+// The two nets that decided the worst excess before the Steiner point moves (seed 1135 of this
+// file's set and seed 1037 of another): no single path of the improved tree gains, but moving a
+// branch point does. 1135: the point joining the pin at (27,10), the trunk from the left and the
+// pin at (39,20) moves from (27,12) to (27,20) (80 -> 72); 1037: the pin at (27,18), of degree
+// two, is joined to a trunk at x = 19 that the pin at (19,7) now climbs (59 -> 52; a path then
+// re-leaves the trunk: 51). Both are the exact minima.
+TEST(SteinerTree, PointMovesReachTheMinimumOfTwoHardNets) {
+  struct Case {
+    std::vector<geom::Box> boxes;
+    std::vector<Point> pins;
+    std::int64_t minimum;
+  };
+  const std::vector<Case> cases{
+      {{{{3, 24}, {11, 31}}, {{12, 5}, {18, 12}}, {{5, 10}, {7, 18}}, {{33, 27}, {34, 32}}, {{32, 9}, {39, 12}}, {{33, 13}, {34, 19}}},
+       {{3, 37}, {0, 24}, {6, 24}, {27, 10}, {12, 30}, {39, 20}},
+       72},
+      {{{{19, 21}, {26, 28}}, {{27, 13}, {35, 16}}, {{25, 3}, {26, 6}}, {{9, 12}, {13, 20}}},
+       {{27, 18}, {20, 36}, {12, 35}, {19, 42}, {19, 7}},
+       51},
+  };
+  for (const Case& c : cases) {
+    const geom::NormalizedObstacles norm = geom::normalize_obstacles(box_polygons(c.boxes), geom::Box{{0, 0}, {44, 44}});
+    router::L1Router router(norm.domain, norm.obstacles);
+    EXPECT_EQ(oracle::steiner_minimal_length(norm.domain, norm.obstacles, c.pins), std::optional<std::int64_t>(c.minimum));
+    const auto plain = router.steiner(c.pins, 8, false);
+    const auto t = router.steiner(c.pins);
+    ASSERT_EQ(t.status, router::WireStatus::Ok);
+    EXPECT_GT(plain.length, c.minimum);
+    EXPECT_EQ(t.length, c.minimum);
+    router::CheckNet net;
+    net.name = "n";
+    net.routed = true;
+    for (std::size_t i = 0; i < c.pins.size(); ++i) net.pins.push_back({"p" + std::to_string(i), c.pins[i], std::nullopt, static_cast<int>(i)});
+    for (const auto& w : t.wires) net.wires.push_back({w, 100});
+    EXPECT_TRUE(router::check_routes(norm, std::vector<router::CheckNet>{net}).problems.empty());
+  }
+}
+
+// Two blockages touching at a corner (a pinch, which no wire may pass): pins on both sides of it
+// near the touching point. A Steiner point move must not put the branch point on the pinch (the
+// moves' candidate grid holds it: it is an obstacle vertex); the tree goes round a blockage, and
+// the independent checker passes it. (Found by the tightening tests' random touching layouts,
+// seed 900645: a tree through a pinch.)
+TEST(SteinerTree, NoBranchPointAtAPinch) {
+  const std::vector<geom::Box> boxes{{{10, 10}, {20, 20}}, {{20, 20}, {30, 30}}};
+  const geom::NormalizedObstacles norm = geom::normalize_obstacles(box_polygons(boxes), geom::Box{{0, 0}, {40, 40}});
+  router::L1Router router(norm.domain, norm.obstacles);
+  for (const std::vector<Point>& pins : {std::vector<Point>{{18, 22}, {22, 18}, {12, 28}, {28, 12}},
+                                         std::vector<Point>{{16, 24}, {24, 16}, {19, 21}}}) {
+    const auto t = router.steiner(pins);
+    ASSERT_EQ(t.status, router::WireStatus::Ok);
+    router::CheckNet net;
+    net.name = "n";
+    net.routed = true;
+    for (std::size_t i = 0; i < pins.size(); ++i) net.pins.push_back({"p" + std::to_string(i), pins[i], std::nullopt, static_cast<int>(i)});
+    for (const auto& w : t.wires) net.wires.push_back({w, 100});
+    const auto problems = router::check_routes(norm, std::vector<router::CheckNet>{net}).problems;
+    EXPECT_TRUE(problems.empty()) << problems.front().message;
+  }
 }
 
 }  // namespace
