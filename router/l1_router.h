@@ -123,7 +123,8 @@ class BasicRouter {
   // the paths' far ends, the tree's nodes and, while few, the obstacle vertices in their box)
   // with the least sum of exact distances from the parts (one run per part, to the candidates
   // whose L1 bound, blockages ignored, could still gain) is joined to each part by a shortest
-  // path when that sum is strictly less than the paths' length; then the path pass again. The
+  // path when that sum is strictly less than the paths' length; then the path pass again (a move
+  // tried without a gain is not tried again after later changes, like a path). The
   // result is never longer and still joins every pin. Not minimal in general: tests/oracle's
   // Dreyfus-Wagner reference measures the excess (router/steiner_test.cpp). starts x (k - 1)
   // runs for k pins, plus one run per path tried and up to one per part and move tried.

@@ -452,7 +452,7 @@ MinLinkLoop MinLinker::loop(std::span<const geom::Point> taut_loop, std::size_t 
     MinLinkPath m = path(p);
     // m: v[a], the bends, v[a+1]; its first and last links lie on the edge's line, one link of
     // the loop (from the last bend on through v[a] and v[a+1] to the first bend)
-    if (m.points.size() < 4) throw std::logic_error("MinLinker::loop: a loop path with fewer than three links");
+    if (m.points.size() < 5) throw std::logic_error("MinLinker::loop: a loop of fewer than three links");
     MinLinkLoop l;
     l.points.assign(m.points.begin() + 1, m.points.end() - 1);
     l.points.push_back(l.points.front());

@@ -13,7 +13,8 @@
 // another angle are refused (CLI-0027) or, from <rules>, replaced by `any` (TIGHTEN-0003).
 // --min-link adds each wire's minimum-link path of its class (router/minlink.h, any angle,
 // exact rational bends; a loop's minimum-link loop, section 5.2, proven minimal unless its shortest
-// loop is convex with more than three links) to --stats and --svg; it is not written as a wire
+// loop is convex and the loop found is above the winding bound) to --stats and --svg; it is not
+// written as a wire
 // (FORMAT.md coordinates are integers).
 #include <chrono>
 #include <optional>
@@ -48,8 +49,7 @@ struct NetTightening {
   std::size_t min_links = 0;
   std::size_t min_links_at_least = 0;  // a lower bound (= min_links when proven)
   std::vector<router::MinLinkPath> min_link;
-  bool loop = false;
-  // a loop's: false when its shortest loop is convex and the loop found has more than three
+  // a loop's: false when its shortest loop is convex and the loop found has more links than the
   // links (router::MinLinkLoop::minimal), so min_links is only an upper bound
   bool min_links_proven = true;
   bool min_link_failed = false;  // TIGHTEN-0008
@@ -266,7 +266,6 @@ void add_tighten(CLI::App& app, int& status) {
       if (args->clearance) {
         using St = router::NetTightenOutcome::Status;
         const router::NetTightenOutcome& oc = together_out[i];
-        st.loop = oc.loop;
         if (oc.status == St::NotFree && oc.round == 0) {
           // the input is not in its net's space: the piece that failed, and the input line it is on
           const std::vector<geom::Point>& piece = together[i][oc.wire];
@@ -332,6 +331,7 @@ void add_tighten(CLI::App& app, int& status) {
               if (is_loop) {
                 router::Tightener::Loop l = sp.tightener().tighten_loop(w);
                 if (l.status != router::TightenStatus::Ok) throw std::runtime_error(router::tighten_status_text(l.status));
+                if (l.contractible) throw std::runtime_error("the loop winds around no blockage");
                 taut = std::move(l.points);
               } else {
                 router::Tightened r = sp.tightener().tighten(w);
@@ -360,7 +360,6 @@ void add_tighten(CLI::App& app, int& status) {
           ok = false;
           continue;
         }
-        st.loop = st.loop || res.loop;
         if (res.contractible) {  // the other lines are still lifted: their errors are said
           contractible = true;
           continue;
@@ -451,6 +450,11 @@ void add_tighten(CLI::App& app, int& status) {
       so.caption = args->min_link ? "tightened (input dashed, minimum-link dotted red)" : "tightened (input dashed)";
       svg = io::layout_to_svg(out, so);
     }
+    auto stats_failed = [&](std::size_t i) {
+      for (const io::Route& r : out.routes->routes)
+        if (r.net == layout->nets[i].name) return r.status != "routed";
+      return true;
+    };
     double before = 0, after = 0;
     for (const NetTightening& s : stats) {
       before += s.before;
@@ -480,9 +484,11 @@ void add_tighten(CLI::App& app, int& status) {
             for (const router::RPoint& p : m.points) pts.push_back({p.x.str(), p.y.str()});
             paths.push_back(pts);
           }
+          // null: not found (TIGHTEN-0008), nothing to count (a failed net), or not proven (a range)
+          const bool counted = !s.min_link_failed && !s.min_link.empty() && !stats_failed(i);
           nets.back()["min_links"] =
-              !s.min_links_proven || s.min_link_failed ? nlohmann::ordered_json() : nlohmann::ordered_json(s.min_links);
-          if (!s.min_links_proven && !s.min_link_failed) {
+              counted && s.min_links_proven ? nlohmann::ordered_json(s.min_links) : nlohmann::ordered_json();
+          if (counted && !s.min_links_proven) {
             nets.back()["min_links_at_least"] = s.min_links_at_least;
             nets.back()["min_links_at_most"] = s.min_links;
           }
@@ -505,11 +511,6 @@ void add_tighten(CLI::App& app, int& status) {
       status = kInvalid;
       return;
     }
-    auto stats_failed = [&](std::size_t i) {
-      for (const io::Route& r : out.routes->routes)
-        if (r.net == layout->nets[i].name) return r.status != "routed";
-      return true;
-    };
     if (!args->load.quiet) {
       for (std::size_t i = 0; i < layout->nets.size(); ++i) {
         if (inputs[i].lines.empty()) continue;
@@ -524,7 +525,7 @@ void add_tighten(CLI::App& app, int& status) {
             std::cerr << ", minimum links " << s.min_links;
           else
             std::cerr << ", minimum links " << s.min_links_at_least << " to " << s.min_links
-                      << " (a convex loop: found " << s.min_links << ", not proven minimal)";
+                      << " (a convex loop's minimum is not proven)";
         }
         std::cerr << '\n';
       }
