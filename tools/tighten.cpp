@@ -325,17 +325,23 @@ void add_tighten(CLI::App& app, int& status) {
             const router::SpaceTightener sp(net_space->obstacles(i, router::NetSpaceLevel::Full),
                                             router::TightenOrientations::Any);
             const router::MinLinker ml(sp.triangulation());
+            // (A wire that another net's wire has come to exactly the clearance of runs in a gap
+            // of width zero in this space: its lift fails, and TIGHTEN-0008 says where.)
             for (const auto& w : out_lines) {
               const bool is_loop = WireTightener::is_loop(w);
               std::vector<geom::Point> taut;
               if (is_loop) {
                 router::Tightener::Loop l = sp.tightener().tighten_loop(w);
-                if (l.status != router::TightenStatus::Ok) throw std::runtime_error(router::tighten_status_text(l.status));
+                if (l.status != router::TightenStatus::Ok)
+                  throw std::runtime_error(std::string(router::tighten_status_text(l.status)) + " at or after " +
+                                           point_text(l.where));
                 if (l.contractible) throw std::runtime_error("the loop winds around no blockage");
                 taut = std::move(l.points);
               } else {
                 router::Tightened r = sp.tightener().tighten(w);
-                if (r.status != router::TightenStatus::Ok) throw std::runtime_error(router::tighten_status_text(r.status));
+                if (r.status != router::TightenStatus::Ok)
+                  throw std::runtime_error(std::string(router::tighten_status_text(r.status)) + " at or after " +
+                                           point_text(r.where));
                 taut = std::move(r.points);
               }
               st.add_min_link(ml, taut, is_loop);
