@@ -18,7 +18,9 @@
 // wire in rectilinear, octilinear, c:0,45 and c:45,135 directions (router::c_oriented: the fewest-link
 // staircases of the class, best of R, as a ratio to tightening them), and the minimum-link paths
 // of the first 1,000 (router::MinLinker: time, links against the shortest wire's, and
-// the longest exact coordinate written out). Targets (issue #5): funnel >= 10^7 triangles/s; 10^4 wires on a
+// the longest exact coordinate written out), and minimum-link loops (MinLinker::loop) of up to 300
+// shortest loops of random closed walks among nearby free points (time as a ratio to tightening
+// those loops again, links, how many are proven minimal). Targets (issue #5): funnel >= 10^7 triangles/s; 10^4 wires on a
 // 10^5-vertex layout under 10 s.
 //
 //   bench_tighten [--sizes N,N,..] [--wires W] [--kind rects|polygons|maze|degenerate] [--reps R]
@@ -194,6 +196,49 @@ int main(int argc, char** argv) {
           }
         },
         1);
+    // minimum-link loops (MinLinker::loop): closed walks of six free segments between random free
+    // points near each other, tightened to their shortest loops (the contractible ones dropped)
+    std::vector<std::vector<Point>> loops;
+    {
+      std::mt19937_64 lr(23);
+      const std::int64_t radius = (std::int64_t{D.hi.x} - D.lo.x) / 6;
+      auto near = [&](Point a, Point q) {
+        return std::llabs(std::int64_t{a.x} - q.x) + std::llabs(std::int64_t{a.y} - q.y) <= radius;
+      };
+      auto free_segment = [&](Point a, Point q) {
+        const auto r = tight.tighten(std::vector<Point>{a, q});
+        return r.status == taut::router::TightenStatus::Ok && r.points.size() == 2;
+      };
+      for (int tries = 0; tries < 200000 && loops.size() < 300; ++tries) {
+        std::vector<Point> w{pts[lr() % pts.size()]};
+        for (int k = 0; k < 4000 && w.size() < 6; ++k) {
+          const Point q = pts[lr() % pts.size()];
+          if (q != w.back() && near(w.front(), q) && free_segment(w.back(), q)) w.push_back(q);
+        }
+        if (w.size() < 6 || !free_segment(w.back(), w.front())) continue;
+        w.push_back(w.front());
+        const auto l = tight.tighten_loop(w);
+        if (l.status == taut::router::TightenStatus::Ok && !l.contractible) loops.push_back(l.points);
+      }
+    }
+    long long loop_links = 0, loop_vertices = 0, loop_proven = 0, loop_inflection = 0;
+    const double t_loops = seconds_of(
+        [&] {
+          loop_links = loop_vertices = loop_proven = loop_inflection = 0;
+          for (const auto& l : loops) {
+            const auto m = ml.loop(l);
+            loop_links += static_cast<long long>(m.links());
+            loop_vertices += static_cast<long long>(l.size()) - 1;
+            loop_proven += m.minimal;
+            loop_inflection += m.inflection;
+          }
+        },
+        1);
+    const double t_tighten_loops = seconds_of(
+        [&] {
+          for (const auto& l : loops) sink = sink + static_cast<std::int64_t>(tight.tighten_loop(l).points.size());
+        },
+        reps);
     const auto& tris = tri.triangles();
     const double t_pass = seconds_of(
         [&] {
@@ -222,6 +267,13 @@ int main(int argc, char** argv) {
                 t_minlink / static_cast<double>(taut_paths.size()) / (t_tighten / static_cast<double>(sketches.size())),
                 static_cast<double>(ml_links) / static_cast<double>(taut_paths.size()),
                 static_cast<double>(taut_links) / static_cast<double>(taut_paths.size()), ml_digits);
+    if (!loops.empty())
+      std::printf("%9s minimum-link loops of %zu shortest loops: %.3f s (%.2f ms per loop, %.1f x tightening one), %.2f "
+                  "links per loop against %.2f vertices of the shortest, %lld proven minimal (%lld by an inflection edge)\n",
+                  "", loops.size(), t_loops, t_loops / static_cast<double>(loops.size()) * 1e3,
+                  t_loops / (t_tighten_loops > 0 ? t_tighten_loops : 1e-9),
+                  static_cast<double>(loop_links) / static_cast<double>(loops.size()),
+                  static_cast<double>(loop_vertices) / static_cast<double>(loops.size()), loop_proven, loop_inflection);
     std::fflush(stdout);
     failures_total += failures;
     if (si + 1 == sizes.size()) {
