@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <utility>
 
@@ -511,11 +512,19 @@ MinLinkLoop MinLinker::loop(std::span<const geom::Point> taut_loop, std::size_t 
     }
     best.at_least = std::max<std::size_t>(3, 2 * w_max + 1);
   }
-  const std::size_t tries = std::max<std::size_t>(1, std::min(n, max_starts));
+  // The distinct edges (a loop wound w times repeats each of its edges w times), up to max_starts
+  // of them spread evenly round the loop.
+  std::vector<std::size_t> distinct;
+  {
+    std::set<std::pair<Point, Point>> seen;
+    for (std::size_t a = 0; a < n; ++a)
+      if (seen.insert({v[a], v[(a + 1) % n]}).second) distinct.push_back(a);
+  }
+  const std::size_t m = distinct.size(), tries = std::max<std::size_t>(1, std::min(m, max_starts));
   std::size_t runs = 0;
   const std::size_t at_least = best.at_least;
   for (std::size_t k = 0; k < tries && (best.points.empty() || best.links() > at_least); ++k) {
-    MinLinkLoop l = from_edge(k * n / tries);
+    MinLinkLoop l = from_edge(distinct[k * m / tries]);
     ++runs;
     if (best.points.empty() || l.links() < best.links()) best = std::move(l);
   }

@@ -91,8 +91,8 @@ class MinLinker {
   // loop and the loop has one link less than that path; some minimum-link loop has a link on e's
   // extension too (Lemma 4.1 for loops, section 5.2), and cutting it there gives a path of the
   // same class with one link more, so the loop is minimal. A convex loop has no inflection edge:
-  // the same is done from up to `max_starts` of its edges (spread evenly round it), the fewest
-  // kept. Throws std::invalid_argument when the input is not such a loop.
+  // the same is done from up to `max_starts` of its distinct edges (spread evenly round it; a loop
+  // wound several times repeats its edges), the fewest kept. Throws std::invalid_argument when the input is not such a loop.
   MinLinkLoop loop(std::span<const geom::Point> taut_loop, std::size_t max_starts = 64) const;
 
  private:
