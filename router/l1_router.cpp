@@ -490,12 +490,12 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t) {
           return d;
         };
         const std::size_t parts = part_points.size();
-        std::vector<std::vector<std::int64_t>> bound(grid.size(), std::vector<std::int64_t>(parts));
+        std::vector<std::int64_t> bound(grid.size() * parts);  // [j * parts + k]
         std::vector<std::int64_t> sum(grid.size(), 0);  // exact so far plus the bounds of the rest
         for (std::size_t j = 0; j < grid.size(); ++j)
           for (std::size_t k = 0; k < parts; ++k) {
-            bound[j][k] = l1_to_part(grid[j], k);
-            sum[j] += bound[j][k];
+            bound[j * parts + k] = l1_to_part(grid[j], k);
+            sum[j] += bound[j * parts + k];
           }
         std::vector<std::size_t> alive;
         for (std::size_t j = 0; j < grid.size(); ++j)
@@ -509,7 +509,7 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t) {
             const auto d = wavefront_.target_distance(i);
             if (!d) continue;
             const std::size_t j = alive[i];
-            sum[j] += *d - bound[j][k];
+            sum[j] += *d - bound[j * parts + k];
             if (sum[j] < old_length) still.push_back(j);
           }
           alive = std::move(still);

@@ -297,9 +297,9 @@ TEST(Tighten, MinLinkPathsInTheStats) {
 }
 
 // --min-link on loops (section 5.2): a ring wound twice round a square has a convex shortest
-// loop, and its five links are proven minimal by the winding number; a ring round two squares with a third pushed in between them from above has inflection edges
-// (it bends the other way under the third), so its count is the minimum, with and without
-// --clearance.
+// loop, and its five links are proven minimal by the winding number; a ring round two squares
+// with a third pushed in between them from above has inflection edges (it bends the other way
+// under the third), so its count is the minimum, with and without --clearance.
 TEST(Tighten, MinLinkLoopsInTheStats) {
   const std::string dir = temp_dir("tighten_minlink_loops");
   const std::string body =

@@ -237,12 +237,11 @@ std::vector<Point> sketch_points(const WavefrontCase& c, const oracle::L1Referen
   return pts;
 }
 
-// The wavefront tests' seeded layouts: every `taut gen` kind and the degenerate families (shared
-// coordinates, collinear edges, touching blockages, rings, pinches), larger than the scenes above,
-// so only the checks that need no search: free, same class, never more links than the shortest.
-TEST(MinLink, DegenerateFamiliesStayFreeAndInClass) {
-  long long paths = 0, pinched = 0;
-  const int n = sanitized_share(300, 10);
+// Every wavefront test case of seeds 1..n whose reference has no problems, with its world and
+// at least three sketch points: fn(seed, case, reference, world, points, pinch). Stops at the
+// first seed with a failure.
+template <class Fn>
+void for_each_wavefront_case(int n, Fn fn) {
   for (int seed = 1; seed <= n; ++seed) {
     WavefrontCase c;
     try {
@@ -257,6 +256,19 @@ TEST(MinLink, DegenerateFamiliesStayFreeAndInClass) {
     bool pinch = false;
     const std::vector<Point> pts = sketch_points(c, ref, pinch);
     if (pts.size() < 3) continue;
+    fn(seed, c, ref, w, pts, pinch);
+    if (::testing::Test::HasFailure()) return;
+  }
+}
+
+// The wavefront tests' seeded layouts: every `taut gen` kind and the degenerate families (shared
+// coordinates, collinear edges, touching blockages, rings, pinches), larger than the scenes above,
+// so only the checks that need no search: free, same class, never more links than the shortest.
+TEST(MinLink, DegenerateFamiliesStayFreeAndInClass) {
+  long long paths = 0, pinched = 0;
+  const int n = sanitized_share(300, 10);
+  for_each_wavefront_case(n, [&](int seed, const WavefrontCase& c, const oracle::L1Reference& ref, const World& w,
+                                 const std::vector<Point>& pts, bool pinch) {
     std::mt19937_64 rng(static_cast<std::uint64_t>(seed) * 40503 + 11);
     Sketcher sk{ref, *w.h, pts, rng};
     for (int k = 0; k < 6; ++k) {
@@ -268,7 +280,7 @@ TEST(MinLink, DegenerateFamiliesStayFreeAndInClass) {
       paths += !q.empty();
       pinched += !q.empty() && pinch;
     }
-  }
+  });
   std::printf("%lld min-link paths on the degenerate families (%lld in layouts with pinches)\n", paths, pinched);
   EXPECT_GE(paths, sanitized_share(900, 10));
 }
@@ -431,21 +443,9 @@ TEST(MinLinkLoop, DegenerateFamiliesStayFreeAndInClass) {
   LoopCheck c;
   long long pinched = 0;
   const int n = sanitized_share(600, 10);
-  for (int seed = 1; seed <= n; ++seed) {
-    WavefrontCase wc;
-    try {
-      wc = make_wavefront_case(static_cast<std::uint64_t>(seed));
-    } catch (const std::exception&) {
-      continue;
-    }
-    if (wc.obstacles.empty()) continue;
-    const oracle::L1Reference ref(wc.domain, wc.obstacles);
-    if (!ref.problems().empty()) continue;
-    const World w(Scene{wc.domain, wc.obstacles});
-    ASSERT_TRUE(w.t.ok()) << "seed " << seed;
-    bool pinch = false;
-    const std::vector<Point> pts = sketch_points(wc, ref, pinch);
-    if (pts.size() < 3) continue;
+  for_each_wavefront_case(n, [&](int seed, const WavefrontCase& wc, const oracle::L1Reference& ref, const World& w,
+                                 const std::vector<Point>& pts, bool pinch) {
+    if (wc.obstacles.empty()) return;
     std::mt19937_64 rng(static_cast<std::uint64_t>(seed) * 7717 + 5);
     Sketcher sk{ref, *w.h, pts, rng};
     for (int k = 0; k < 16; ++k) {
@@ -460,7 +460,7 @@ TEST(MinLinkLoop, DegenerateFamiliesStayFreeAndInClass) {
       ASSERT_FALSE(::testing::Test::HasFailure()) << "stopping at the first failing loop";
       pinched += c.loops > before && pinch;
     }
-  }
+  });
   long long inflections = 0;
   for (int k : c.inflection_hist) inflections += k;
   std::printf("%lld loops on the degenerate families (%lld in layouts with pinches): %lld minimal (%lld with an "
