@@ -445,19 +445,77 @@ int links_to_cut_point(const BaseReach& t, std::int64_t position) {
   return std::min(t.at.contains(position) ? t.links : t.links + 1, t.along);
 }
 
-LinkPointQueries::LinkPointQueries(const Ring& polygon) : tree_(polygon) {
+struct LinkPointQueries::Leaves {
+  Tree tree;  // (closed leaf rectangle, node index)
+};
+
+LinkPointQueries::~LinkPointQueries() = default;
+LinkPointQueries::LinkPointQueries(LinkPointQueries&&) noexcept = default;
+LinkPointQueries& LinkPointQueries::operator=(LinkPointQueries&&) noexcept = default;
+
+LinkPointQueries::LinkPointQueries(const Ring& polygon) : tree_(polygon), leaves_(std::make_unique<Leaves>()) {
   const auto& nodes = tree_.nodes();
   parts_.resize(nodes.size());
+  std::vector<Item> leaves;
   for (std::size_t k = 0; k < nodes.size(); ++k) {
     const auto& node = nodes[k];
-    if (!node.cut) continue;
+    if (!node.cut) {
+      const auto [lo, hi] = std::minmax_element(node.polygon.begin(), node.polygon.end(),
+                                                [](Point p, Point q) { return std::pair{p.x, p.y} < std::pair{q.x, q.y}; });
+      leaves.push_back({geom::Box{*lo, *hi}, static_cast<std::uint32_t>(k)});
+      continue;
+    }
     for (int side = 0; side < 2; ++side)
       parts_[k][static_cast<std::size_t>(side)].emplace(nodes[static_cast<std::size_t>(side == 0 ? node.left : node.right)].polygon,
                                                         node.cut->from, node.cut->to);
   }
+  leaves_->tree = Tree(leaves);
+}
+
+std::int32_t LinkPointQueries::common_ancestor(std::int32_t a, std::int32_t b) const {
+  const auto& nodes = tree_.nodes();
+  auto at = [&](std::int32_t k) -> const CutTree::Node& { return nodes[static_cast<std::size_t>(k)]; };
+  while (at(a).depth > at(b).depth) a = at(a).parent;
+  while (at(b).depth > at(a).depth) b = at(b).parent;
+  while (a != b) a = at(a).parent, b = at(b).parent;
+  return a;
+}
+
+std::optional<std::int32_t> LinkPointQueries::stop_node(Point p) const {
+  std::optional<std::int32_t> stop;
+  for (auto it = leaves_->tree.qbegin(bgi::intersects(geom::Box{p, p})); it != leaves_->tree.qend(); ++it) {
+    const auto leaf = static_cast<std::int32_t>(it->second);
+    stop = stop ? common_ancestor(*stop, leaf) : leaf;
+  }
+  return stop;
 }
 
 std::optional<int> LinkPointQueries::links(Point a, Point b) const {
+  const auto sa = stop_node(a), sb = stop_node(b);
+  if (!sa || !sb) return std::nullopt;
+  const auto& nodes = tree_.nodes();
+  const std::int32_t k = common_ancestor(*sa, *sb);
+  const auto& node = nodes[static_cast<std::size_t>(k)];
+  if (!node.cut) return rectangle_links(a, b);
+  const PolygonCut& c = *node.cut;
+  const bool on_a = geom::on_segment(a, c.from, c.to), on_b = geom::on_segment(b, c.from, c.to);
+  if (on_a && on_b) return a == b ? 0 : 1;
+  // a point off the cut stops below k, in one part: its record there
+  auto record = [&](Point p, std::int32_t stop) {
+    while (nodes[static_cast<std::size_t>(stop)].parent != k) stop = nodes[static_cast<std::size_t>(stop)].parent;
+    const int side = stop == node.left ? 0 : 1;
+    const auto r = parts_[static_cast<std::size_t>(k)][static_cast<std::size_t>(side)]->at(p);
+    if (!r) throw std::logic_error("LinkPointQueries: a point in a leaf has no record in its part");
+    return std::pair{side, *r};
+  };
+  if (on_a) return links_to_cut_point(record(b, *sb).second, cut_position(c, a));
+  if (on_b) return links_to_cut_point(record(a, *sa).second, cut_position(c, b));
+  const auto ra = record(a, *sa), rb = record(b, *sb);
+  if (ra.first == rb.first) throw std::logic_error("LinkPointQueries: two points part at a node on the same side");
+  return links_across(ra.second, rb.second);
+}
+
+std::optional<int> LinkPointQueries::links_by_descent(Point a, Point b) const {
   const auto& nodes = tree_.nodes();
   for (std::size_t k = 0;;) {
     const auto& node = nodes[k];

@@ -91,6 +91,45 @@ class CutReach {
 // their reach intervals meet), or a path along the cut's line from one or both sides.
 int links_across(const BaseReach& s, const BaseReach& t);
 
+// d(q, t) for q on a cut at `position` (from its first end) and t off it, from t's record.
+int links_to_cut_point(const BaseReach& t, std::int64_t position);
+
+// Link distances between any two points of the polygon (section 3.2): the cut tree with both
+// parts' CutReach kept at every cut. A query locates each point among the tree's leaf rectangles
+// (one R-tree query: the leaves whose closed rectangle holds it, at most four); the node where a
+// point stops going down the tree is the lowest common ancestor of its leaves (a point on a node's
+// cut lies in both parts, so in leaves on both sides; a point off it in one part only), and the
+// node where the two points part is the lowest common ancestor of those two (parent pointers,
+// O(depth)). Only there is a point's record looked up (one CutReach::at, an R-tree query): then
+// links_across() of the two records, or links_to_cut_point() when one lies on the cut, or 0, 1 or 2
+// in a leaf rectangle. O(log n) per query, as in the paper (which uses a monotone subdivision's
+// optimal point location where this uses R-trees: their O(log n) is the expected case for
+// disjoint boxes, not a worst-case bound). Memory: every part's decomposition cells and segments,
+// O(n log n).
+//
+// links_by_descent() answers the same by walking down the tree, locating each point in a part at
+// every level (O(log n) levels, O(log^2 n)): the benchmark's baseline and the tests' cross-check.
+class LinkPointQueries {
+ public:
+  explicit LinkPointQueries(const geom::Ring& polygon);  // counter-clockwise, no collinear vertices
+  ~LinkPointQueries();
+  LinkPointQueries(LinkPointQueries&&) noexcept;
+  LinkPointQueries& operator=(LinkPointQueries&&) noexcept;
+  std::optional<int> links(geom::Point a, geom::Point b) const;  // std::nullopt: a or b outside
+  std::optional<int> links_by_descent(geom::Point a, geom::Point b) const;
+  const CutTree& tree() const { return tree_; }
+
+ private:
+  struct Leaves;
+  // The node where p stops going down the tree (see above); nullopt outside the polygon.
+  std::optional<std::int32_t> stop_node(geom::Point p) const;
+  std::int32_t common_ancestor(std::int32_t a, std::int32_t b) const;
+
+  CutTree tree_;
+  std::vector<std::array<std::optional<CutReach>, 2>> parts_;  // per node with a cut
+  std::unique_ptr<Leaves> leaves_;                             // the leaf rectangles, in an R-tree
+};
+
 // De Berg's query structure for the vertices of a simple rectilinear polygon (section 3.1): the
 // cut tree with base_reach() of both parts at every cut, and for every vertex its way down the
 // tree (the node, side and index of its record at each level, until it lies on a node's cut or
@@ -101,26 +140,6 @@ int links_across(const BaseReach& s, const BaseReach& t);
 //
 //   const LinkVertexQueries q(ring);   // counter-clockwise, no collinear vertices
 //   int d = q.links(i, j);              // d(ring[i], ring[j]) in links
-// d(q, t) for q on a cut at `position` (from its first end) and t off it, from t's record.
-int links_to_cut_point(const BaseReach& t, std::int64_t position);
-
-// Link distances between any two points of the polygon (section 3.2): the cut tree with both
-// parts' CutReach kept at every cut. A query goes down while both points lie on one side (each
-// located in a part by that part's R-tree), then takes links_across() of their records, or
-// links_to_cut_point() when one lies on the cut, or 0, 1 or 2 in a leaf rectangle. O(log n) per
-// level, O(log^2 n) in all (the paper: O(log n) with a monotone subdivision's point location).
-// Memory: every part's decomposition cells and segments, O(n log n).
-class LinkPointQueries {
- public:
-  explicit LinkPointQueries(const geom::Ring& polygon);  // counter-clockwise, no collinear vertices
-  std::optional<int> links(geom::Point a, geom::Point b) const;  // std::nullopt: a or b outside
-  const CutTree& tree() const { return tree_; }
-
- private:
-  CutTree tree_;
-  std::vector<std::array<std::optional<CutReach>, 2>> parts_;  // per node with a cut
-};
-
 class LinkVertexQueries {
  public:
   explicit LinkVertexQueries(const geom::Ring& polygon);

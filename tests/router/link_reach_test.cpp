@@ -271,7 +271,8 @@ TEST(LinkVertexQueries, ChannelsAndACombMatchTheGraph) {
 
 // Any two points (section 3.2): vertices, points inside edges, points on the cuts of the tree
 // (their ends included), points on a vertex's lines, lattice points anywhere in the box (some
-// outside), against the reference's distance (nullopt outside).
+// outside), against the reference's distance (nullopt outside); both the query (leaf location and
+// lowest common ancestors) and the walk down the tree.
 TEST(LinkPointQueries, RandomPointsMatchTheReference) {
   const int count = kSanitized ? 60 : 300;
   long long pairs = 0, outside = 0, on_cuts = 0;
@@ -315,13 +316,13 @@ TEST(LinkPointQueries, RandomPointsMatchTheReference) {
     }
     for (const Point a : pts)
       for (const Point b : pts) {
-        const std::optional<int> want = ref.distance(a, b), got = q.links(a, b);
+        const std::optional<int> want = ref.distance(a, b), got = q.links(a, b), down = q.links_by_descent(a, b);
         ++pairs;
         outside += !want;
         for (const Point c : cut_points) on_cuts += c == a;
-        if (got != want && failed++ < 8)
+        if ((got != want || down != want) && failed++ < 8)
           ADD_FAILURE() << "seed " << seed << " " << str(ring) << ": d(" << str(a) << " ; " << str(b) << ") = " << (want ? *want : -1)
-                        << ", the queries " << (got ? *got : -1);
+                        << ", the queries " << (got ? *got : -1) << ", walking down the tree " << (down ? *down : -1);
       }
   }
   std::printf("%lld point pairs (%lld with a point outside, %lld from a point on a cut)\n", pairs, outside, on_cuts);
