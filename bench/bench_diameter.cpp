@@ -44,7 +44,7 @@ struct Row {
   int links = 0;
   double build = 0, diameter = 0, query = 0, all = -1, ref = -1, cuts = 0;
   // de Berg's structure (router/link_reach.h): its build, its diameter, one vertex-pair query
-  double qbuild = 0, qdiameter = 0, qlinks = 0, hybrid = 0, pbuild = 0, plinks = 0, pdescent = 0, pgraph = 0;
+  double qbuild = 0, qdiameter = 0, qlinks = 0, hybrid = 0, pbuild = 0, plinks = 0, pdescent = 0, pgraph = 0, ppath = 0, pgraph_path = 0, plinks_per_path = 0;
   bool hybrid_cut_tree = false;
   std::size_t records = 0;
   bool q_agree = true;
@@ -159,6 +159,23 @@ int main(int argc, char** argv) {
       row.pgraph = seconds_of([&] {
                      for (std::size_t i = 0; i + 1 < pts.size(); i += 20) sink -= *poly->distance(pts[i], pts[i + 1]);
                    }, 1) / static_cast<double>(pts.size() / 20);
+      // section 3.3: the paths, against the graph's path query (links and L1 length equal)
+      long long path_links = 0;
+      row.ppath = seconds_of([&] {
+                    for (std::size_t i = 0; i + 1 < pts.size(); i += 2) path_links += static_cast<long long>(pq->path(pts[i], pts[i + 1])->size()) - 1;
+                  }, 1) / static_cast<double>(pts.size() / 2);
+      row.plinks_per_path = static_cast<double>(path_links) / static_cast<double>(pts.size() / 2);
+      row.pgraph_path = seconds_of([&] {
+                          for (std::size_t i = 0; i + 1 < pts.size(); i += 20) sink += poly->path(pts[i], pts[i + 1])->links;
+                        }, 1) / static_cast<double>(pts.size() / 20);
+      for (std::size_t i = 0; i + 1 < pts.size(); i += 20) {
+        const auto g = poly->path(pts[i], pts[i + 1]);
+        const auto p = pq->path(pts[i], pts[i + 1]);
+        std::int64_t length = 0;
+        for (std::size_t k = 0; k + 1 < p->size(); ++k)
+          length += std::abs(std::int64_t{(*p)[k + 1].x} - (*p)[k].x) + std::abs(std::int64_t{(*p)[k + 1].y} - (*p)[k].y);
+        row.q_agree = row.q_agree && static_cast<int>(p->size()) - 1 == g->links && length == g->length;
+      }
       for (std::size_t i = 0; i + 1 < pts.size(); i += 20) row.q_agree = row.q_agree && pq->links(pts[i], pts[i + 1]) == poly->distance(pts[i], pts[i + 1]);
       for (std::size_t i = 0; i + 1 < pts.size(); i += 2) row.q_agree = row.q_agree && pq->links(pts[i], pts[i + 1]) == pq->links_by_descent(pts[i], pts[i + 1]);
       taut::bench::keep(sink);
@@ -205,8 +222,9 @@ int main(int argc, char** argv) {
                 (row.build + row.diameter) / (row.qbuild + row.qdiameter), row.qlinks * 1e6, row.query / row.qlinks, row.hybrid,
                 row.hybrid_cut_tree ? "cut tree" : "bounds");
     std::printf("%8s any two points (section 3.2): build %.3f s (%.2f x the graph's); a query %.2f us (graph distance query / this: %.0f; "
-                "walking down the tree / this: %.1f)\n",
-                "", row.pbuild, row.pbuild / row.build, row.plinks * 1e6, row.pgraph / row.plinks, row.pdescent / row.plinks);
+                "walking down the tree / this: %.1f); a path (section 3.3, %.1f links) %.2f us (graph path query / this: %.0f)\n",
+                "", row.pbuild, row.pbuild / row.build, row.plinks * 1e6, row.pgraph / row.plinks, row.pdescent / row.plinks,
+                row.plinks_per_path, row.ppath * 1e6, row.pgraph_path / row.ppath);
     std::fflush(stdout);
     if (!row.all_agree || !row.ref_agree || !row.q_agree) {
       std::fprintf(stderr, "MISMATCH at n = %zu\n", row.n);

@@ -225,6 +225,42 @@ struct CutReach::Impl {
   std::vector<ReachInterval> reach;
   Tree vtree, htree;
   std::vector<BaseReach> vertices;
+  std::vector<std::uint32_t> start, adj;  // the adjacency, as compressed rows
+  std::uint32_t base_line = 0;            // the maximal segment along b
+
+  // The nodes each first link from p (in the frame) runs along: the maximal segment through p
+  // when p lies on one, else the cell whose closure holds p (p on no segment lies inside one
+  // cell's span that way); std::nullopt outside.
+  std::optional<std::pair<std::uint32_t, std::uint32_t>> locate(Point p) const {
+    const geom::Box box{p, p};
+    auto find = [&](const Tree& tree, Kind segment_kind) -> std::optional<std::uint32_t> {
+      std::optional<std::uint32_t> cell;
+      for (auto it = tree.qbegin(bgi::intersects(box)); it != tree.qend(); ++it) {
+        if (nodes[it->second].kind == segment_kind) return it->second;
+        cell = it->second;
+      }
+      return cell;
+    };
+    const auto v = find(vtree, kVSeg), h = find(htree, kHSeg);
+    if (!v || !h) return std::nullopt;
+    return std::pair{*v, *h};
+  }
+  ReachInterval from_base(ReachInterval r) const {  // the inverse of to_base
+    if (r.empty()) return r;
+    if (c1.x > c0.x) return ReachInterval{r.lo + c0.x, r.hi + c0.x};
+    return ReachInterval{c0.x - r.hi, c0.x - r.lo};
+  }
+  // A node's link in the polygon's coordinates: its axis there and its fixed coordinate's range.
+  CutReach::Run run_of(std::uint32_t x) const {
+    const Node& n = nodes[x];
+    const bool v = vertical(n.kind);
+    const Point a = v ? Point{n.box.lo.x, 0} : Point{0, n.box.lo.y}, b = v ? Point{n.box.hi.x, 0} : Point{0, n.box.hi.y};
+    const Point wa = rotate(a, 4 - k), wb = rotate(b, 4 - k);
+    const bool world_vertical = v == (k % 2 == 0);
+    const i64 lo = world_vertical ? std::min(wa.x, wb.x) : std::min(wa.y, wb.y);
+    const i64 hi = world_vertical ? std::max(wa.x, wb.x) : std::max(wa.y, wb.y);
+    return {world_vertical, lo, hi};
+  }
 
   ReachInterval to_base(ReachInterval r) const {  // x in the frame -> distance from b0 along b
     if (r.empty()) return r;
@@ -272,20 +308,90 @@ const std::vector<BaseReach>& CutReach::vertices() const { return impl_->vertice
 std::optional<BaseReach> CutReach::at(Point q) const {
   const Impl& m = *impl_;
   const Point p = rotate(q, m.k);
-  const geom::Box box{p, p};
-  // the node each first link runs along: the maximal segment through p when p lies on one, else
-  // the cell whose closure holds p (p on no segment lies inside one cell's span that way)
-  auto find = [&](const Tree& tree, Kind segment_kind) -> std::optional<std::uint32_t> {
-    std::optional<std::uint32_t> cell;
-    for (auto it = tree.qbegin(bgi::intersects(box)); it != tree.qend(); ++it) {
-      if (m.nodes[it->second].kind == segment_kind) return it->second;
-      cell = it->second;
-    }
-    return cell;
+  const auto vh = m.locate(p);
+  if (!vh) return std::nullopt;
+  return m.record(p, vh->first, vh->second);
+}
+
+std::optional<CutReach::Ways> CutReach::ways(Point q) const {
+  const Impl& m = *impl_;
+  const Point p = rotate(q, m.k);
+  if (p.y == m.yb && m.xa <= p.x && p.x <= m.xb) return std::nullopt;
+  const auto vh = m.locate(p);
+  if (!vh) return std::nullopt;
+  const auto [v, h] = *vh;
+  Ways w;
+  const std::uint32_t best = m.level[v] <= m.level[h] ? v : h, other = best == v ? h : v;
+  auto way = [&](std::uint32_t x) {
+    if (m.level[x] == kNone) return Way{};
+    // a point inside a cell standing on b reaches only its own foot with one link
+    const ReachInterval r = m.nodes[x].kind == kVCell && m.level[x] == 1 ? ReachInterval{p.x, p.x} : m.reach[x];
+    return Way{m.level[x], m.to_base(r)};
   };
-  const auto v = find(m.vtree, kVSeg), h = find(m.htree, kHSeg);
-  if (!v || !h) return std::nullopt;
-  return m.record(p, *v, *h);
+  w.first = way(best), w.second = way(other);
+  const int a = std::min(m.level2[v], m.level2[h]);
+  if (a != kNone) w.along = {a + 1, m.to_base({m.xa, m.xb})};
+  return w;
+}
+
+std::vector<CutReach::Run> CutReach::runs(Point q, int way, ReachInterval& within) const {
+  const Impl& m = *impl_;
+  const Point p = rotate(q, m.k);
+  const auto vh = m.locate(p);
+  if (!vh) throw std::invalid_argument("CutReach::runs: the point is outside the part");
+  const auto [v, h] = *vh;
+  // the way's levels: the first search's (to land on b), or the second's (to reach b's line)
+  const bool along = way == 2;
+  const std::vector<int>& level = along ? m.level2 : m.level;
+  const std::uint32_t best = level[v] <= level[h] ? v : h, n0 = way == 1 ? (best == v ? h : v) : best;
+  if (level[n0] == kNone) throw std::invalid_argument("CutReach::runs: no such way");
+  // positions of b in the frame (x on b's line) the path may still land on
+  ReachInterval r = m.from_base(within);
+  auto narrow = [](ReachInterval a, ReachInterval b) { return ReachInterval{std::max(a.lo, b.lo), std::min(a.hi, b.hi)}; };
+  if (!along && m.nodes[n0].kind == kVCell && m.level[n0] == 1) r = narrow(r, {p.x, p.x});
+  // The current optimal sets of the two coordinate chains (see LinkPointQueries::path), in the
+  // frame: of the nodes one level down (all of which give the fewest links), the one nearest to
+  // its chain's set is taken. Taking any other fails the tests' L1 check.
+  ReachInterval sx{p.x, p.x}, sy{p.y, p.y};
+  auto step = [](ReachInterval& s, i64 lo, i64 hi) {
+    if (std::max(s.lo, lo) <= std::min(s.hi, hi)) s = {std::max(s.lo, lo), std::min(s.hi, hi)};
+    else s = lo > s.hi ? ReachInterval{lo, lo} : ReachInterval{hi, hi};
+  };
+  auto range = [&](std::uint32_t x) {
+    const geom::Box& b = m.nodes[x].box;
+    return vertical(m.nodes[x].kind) ? std::pair<i64, i64>{b.lo.x, b.hi.x} : std::pair<i64, i64>{b.lo.y, b.hi.y};
+  };
+  std::vector<Run> out;
+  for (std::uint32_t n = n0;;) {
+    if (r.empty()) throw std::logic_error("link_reach: a way's nodes reach none of the positions asked for");
+    out.push_back(m.run_of(n));
+    const auto [lo, hi] = range(n);
+    step(vertical(m.nodes[n].kind) ? sx : sy, lo, hi);
+    if (along && n == m.base_line) return out;  // the last link, along b's line
+    if (!along && m.level[n] == 1) {            // a vertical node on b: the landing, narrowed to r
+      const ReachInterval landing = narrow(r, {lo, hi});
+      if (landing.empty()) throw std::logic_error("link_reach: a node on the base does not reach the positions asked for");
+      const Point wa = rotate({static_cast<Coord>(landing.lo), 0}, 4 - m.k), wb = rotate({static_cast<Coord>(landing.hi), 0}, 4 - m.k);
+      Run& last = out.back();
+      last.lo = last.vertical ? std::min(wa.x, wb.x) : std::min(wa.y, wb.y);
+      last.hi = last.vertical ? std::max(wa.x, wb.x) : std::max(wa.y, wb.y);
+      within = m.to_base(landing);
+      return out;
+    }
+    std::optional<std::uint32_t> pick;
+    i64 pick_gap = 0;
+    const ReachInterval& s = vertical(m.nodes[n].kind) ? sy : sx;  // the next node's chain
+    for (std::uint32_t i = m.start[n]; i < m.start[n + 1]; ++i) {
+      const std::uint32_t y = m.adj[i];
+      if (level[y] != level[n] - 1 || (!along && !m.reach[y].meets(r))) continue;
+      const auto [ylo, yhi] = range(y);
+      const i64 gap = ylo > s.hi ? ylo - s.hi : s.lo > yhi ? s.lo - yhi : 0;
+      if (!pick || gap < pick_gap) pick = y, pick_gap = gap;
+    }
+    if (!pick) throw std::logic_error("link_reach: a node has no neighbour one level down on its way");
+    if (!along) r = narrow(r, m.reach[*pick]);
+    n = *pick;
+  }
 }
 
 std::vector<BaseReach> base_reach(const Ring& polygon, Point b0, Point b1) { return CutReach(polygon, b0, b1).vertices(); }
@@ -345,7 +451,7 @@ CutReach::CutReach(const Ring& polygon, Point b0, Point b1) : impl_(std::make_un
   std::vector<Through> at_vertex;
   at_vertex.reserve(n);
   for (const Point p : ring) at_vertex.push_back(through(p));
-  const std::uint32_t base_line = through(c0).h;
+  const std::uint32_t base_line = m.base_line = through(c0).h;
   through(c1);  // (its vertical segment: a point on the cut up from c1 lies on it)
 
   std::vector<Item> vitems, hitems;
@@ -353,7 +459,9 @@ CutReach::CutReach(const Ring& polygon, Point b0, Point b1) : impl_(std::make_un
   m.vtree = Tree(vitems), m.htree = Tree(hitems);
   const Tree& htree = m.htree;
   // the adjacency, found once (from the vertical nodes' side) for both searches, as compressed rows
-  std::vector<std::uint32_t> start(nodes.size() + 1, 0), adj;
+  std::vector<std::uint32_t>& start = m.start;
+  std::vector<std::uint32_t>& adj = m.adj;
+  start.assign(nodes.size() + 1, 0);
   {
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
     std::vector<Item> found;
@@ -513,6 +621,166 @@ std::optional<int> LinkPointQueries::links(Point a, Point b) const {
   const auto ra = record(a, *sa), rb = record(b, *sb);
   if (ra.first == rb.first) throw std::logic_error("LinkPointQueries: two points part at a node on the same side");
   return links_across(ra.second, rb.second);
+}
+
+namespace {
+
+using Run = CutReach::Run;
+
+// Values v_i in the closed intervals iv[i] minimising |from - v_0| + sum |v_i - v_{i+1}| +
+// |v_last - to|. Forward, the least cost of the prefix is c + dist(v, S_i) on iv[i] for an
+// interval S_i (the optimal set: S_i = S_{i-1} meet iv[i], or iv[i]'s nearer end when they do
+// not meet); backward, v_i = the point of S_i nearest v_{i+1}.
+std::vector<i64> least_variation(i64 from, const std::vector<std::pair<i64, i64>>& iv, i64 to) {
+  std::vector<std::pair<i64, i64>> best(iv.size());
+  i64 lo = from, hi = from;
+  for (std::size_t i = 0; i < iv.size(); ++i) {
+    const auto [a, b] = iv[i];
+    if (std::max(lo, a) <= std::min(hi, b)) lo = std::max(lo, a), hi = std::min(hi, b);
+    else lo = hi = a > hi ? a : b;
+    best[i] = {lo, hi};
+  }
+  std::vector<i64> v(iv.size());
+  i64 next = to;
+  for (std::size_t i = iv.size(); i-- > 0;) v[i] = next = std::clamp(next, best[i].first, best[i].second);
+  return v;
+}
+
+// The path through the runs from a to b with the least L1 length (see LinkPointQueries::path).
+std::vector<Point> realise(Point a, std::vector<Run> runs, Point b) {
+  if (runs.empty()) throw std::logic_error("link_reach: a path without links");
+  auto pin = [](Run& r, Point p) {
+    const i64 c = r.vertical ? p.x : p.y;
+    if (c < r.lo || c > r.hi) throw std::logic_error("link_reach: an end of a path is off its first or last link");
+    r.lo = r.hi = c;
+  };
+  pin(runs.front(), a);
+  pin(runs.back(), b);
+  std::vector<std::pair<i64, i64>> xs, ys;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    if (runs[i].lo > runs[i].hi) throw std::logic_error("link_reach: a link with no room");
+    if (i > 0 && runs[i].vertical == runs[i - 1].vertical) throw std::logic_error("link_reach: two links of a path on one axis");
+    (runs[i].vertical ? xs : ys).push_back({runs[i].lo, runs[i].hi});
+  }
+  const std::vector<i64> x = least_variation(a.x, xs, b.x), y = least_variation(a.y, ys, b.y);
+  std::vector<Point> pts{a};
+  std::size_t ix = 0, iy = 0;
+  for (std::size_t i = 0; i + 1 < runs.size(); ++i) {  // the bend between runs i and i + 1
+    const i64 bx = runs[i].vertical ? x[ix++] : x[ix], by = runs[i].vertical ? y[iy] : y[iy++];
+    pts.push_back({static_cast<Coord>(bx), static_cast<Coord>(by)});
+  }
+  pts.push_back(b);
+  // links of length zero and straight bends go
+  std::vector<Point> out;
+  for (const Point p : pts) {
+    if (!out.empty() && out.back() == p) continue;
+    if (out.size() >= 2 && geom::orientation(out[out.size() - 2], out.back(), p) == 0) out.back() = p;
+    else out.push_back(p);
+  }
+  return out;
+}
+
+// The fewest links over the ways of two records meeting on a cut, and the pair of ways (0 first,
+// 1 second, 2 along) that gives it: two perpendicular ways land on one point (their last links
+// are one) or on two joined along the cut; an along way meets a perpendicular one where it lands;
+// two along ways share their last link.
+struct Glue {
+  int links = std::numeric_limits<int>::max(), wa = -1, wb = -1;
+};
+Glue best_glue(const CutReach::Ways& a, const CutReach::Ways& b) {
+  const CutReach::Way* wa[3] = {&a.first, &a.second, &a.along};
+  const CutReach::Way* wb[3] = {&b.first, &b.second, &b.along};
+  Glue g;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      if (wa[i]->links < 0 || wb[j]->links < 0) continue;
+      int links = wa[i]->links + wb[j]->links;
+      if (i == 2 && j == 2) links -= 1;
+      else if (i < 2 && j < 2) links += wa[i]->at.meets(wb[j]->at) ? -1 : 1;
+      if (links < g.links) g = {links, i, j};
+    }
+  return g;
+}
+
+}  // namespace
+
+std::optional<std::vector<Point>> LinkPointQueries::path(Point a, Point b) const {
+  const auto sa = stop_node(a), sb = stop_node(b);
+  if (!sa || !sb) return std::nullopt;
+  if (a == b) return std::vector<Point>{a};
+  const auto& nodes = tree_.nodes();
+  const std::int32_t k = common_ancestor(*sa, *sb);
+  const auto& node = nodes[static_cast<std::size_t>(k)];
+  if (!node.cut) {  // a rectangle: any L
+    if (a.x == b.x || a.y == b.y) return std::vector<Point>{a, b};
+    return std::vector<Point>{a, Point{b.x, a.y}, b};
+  }
+  const PolygonCut& c = *node.cut;
+  const bool on_a = geom::on_segment(a, c.from, c.to), on_b = geom::on_segment(b, c.from, c.to);
+  if (on_a && on_b) return std::vector<Point>{a, b};
+  auto part = [&](std::int32_t stop) -> const CutReach& {
+    while (nodes[static_cast<std::size_t>(stop)].parent != k) stop = nodes[static_cast<std::size_t>(stop)].parent;
+    return *parts_[static_cast<std::size_t>(k)][stop == node.left ? 0 : 1];
+  };
+  const bool vertical_cut = c.from.x == c.to.x;
+  const Run along_cut{vertical_cut, vertical_cut ? c.from.x : c.from.y, vertical_cut ? c.from.x : c.from.y};
+  auto reversed = [](std::vector<Run> r) {
+    std::reverse(r.begin(), r.end());
+    return r;
+  };
+  if (on_a || on_b) {  // from the point off the cut to the one on it, then turned round if needed
+    const Point q = on_a ? b : a, on = on_a ? a : b;
+    const CutReach& reach = part(on_a ? *sb : *sa);
+    const auto w = reach.ways(q);
+    if (!w) throw std::logic_error("LinkPointQueries: a point in a leaf has no ways in its part");
+    const i64 pos = cut_position(c, on);
+    const ReachInterval here{pos, pos};
+    // land on the point, or elsewhere and then along the cut, or come along the cut's line
+    int links = std::numeric_limits<int>::max(), way = -1;
+    bool then_along = false;
+    const CutReach::Way* ws[3] = {&w->first, &w->second, &w->along};
+    for (int i = 0; i < 3; ++i) {
+      if (ws[i]->links < 0) continue;
+      const bool lands = i == 2 || ws[i]->at.contains(pos);
+      const int l = ws[i]->links + (lands ? 0 : 1);
+      if (l < links) links = l, way = i, then_along = !lands;
+    }
+    ReachInterval within = then_along || way == 2 ? ws[way]->at : here;
+    std::vector<Run> runs = reach.runs(q, way, within);
+    if (then_along) runs.push_back(along_cut);
+    std::vector<Point> p = realise(q, std::move(runs), on);
+    if (on_a) std::reverse(p.begin(), p.end());
+    return p;
+  }
+  const CutReach &ra = part(*sa), &rb = part(*sb);
+  const auto wa = ra.ways(a), wb = rb.ways(b);
+  if (!wa || !wb) throw std::logic_error("LinkPointQueries: a point in a leaf has no ways in its part");
+  const Glue g = best_glue(*wa, *wb);
+  const CutReach::Way* was[3] = {&wa->first, &wa->second, &wa->along};
+  const CutReach::Way* wbs[3] = {&wb->first, &wb->second, &wb->along};
+  std::vector<Run> runs;
+  if (g.wa < 2 && g.wb < 2 && was[g.wa]->at.meets(wbs[g.wb]->at)) {  // one landing: the last links are one
+    const ReachInterval& x = was[g.wa]->at;
+    const ReachInterval& y = wbs[g.wb]->at;
+    ReachInterval within{std::max(x.lo, y.lo), std::min(x.hi, y.hi)};
+    runs = ra.runs(a, g.wa, within);
+    std::vector<Run> rest = reversed(rb.runs(b, g.wb, within));
+    Run& joint = runs.back();
+    joint.lo = std::max(joint.lo, rest.front().lo), joint.hi = std::min(joint.hi, rest.front().hi);
+    runs.insert(runs.end(), rest.begin() + 1, rest.end());
+  } else {
+    ReachInterval wi = was[g.wa]->at, wj = wbs[g.wb]->at;
+    runs = ra.runs(a, g.wa, wi);
+    std::vector<Run> rest = reversed(rb.runs(b, g.wb, wj));
+    if (g.wa == 2 && g.wb == 2) {  // both along the cut's line: one link
+      runs.insert(runs.end(), rest.begin() + 1, rest.end());
+    } else {
+      if (g.wa < 2 && g.wb < 2) runs.push_back(along_cut);  // two landings, joined along the cut
+      runs.insert(runs.end(), rest.begin(), rest.end());
+    }
+  }
+  std::vector<Point> p = realise(a, std::move(runs), b);
+  return p;
 }
 
 std::optional<int> LinkPointQueries::links_by_descent(Point a, Point b) const {

@@ -81,6 +81,32 @@ class CutReach {
   std::optional<BaseReach> at(geom::Point q) const;  // std::nullopt when q is outside
   const std::vector<BaseReach>& vertices() const;   // base_reach()
 
+  // The paths behind a point's record (section 3.3's building blocks, for LinkPointQueries::path).
+  // A point q of the part off b has up to three ways to b: `first`, a path ending perpendicular on
+  // b that starts along the node through q with the lower level; `second`, one that starts along
+  // the other node (one link more); `along`, one whose last link runs along b's line. links -1:
+  // no such way. `at`: the positions of b (from b's first end) a perpendicular way can land on.
+  struct Way {
+    int links = -1;
+    ReachInterval at;
+  };
+  struct Ways {
+    Way first, second, along;
+  };
+  std::optional<Ways> ways(geom::Point q) const;  // std::nullopt when q is outside or on b
+  // A way's links from q to b, in the polygon's coordinates: each link's axis and the closed
+  // interval its fixed coordinate may take (x for a vertical link, y for a horizontal one). Any
+  // choice of those coordinates, with the first link through q, gives a path in the polygon with
+  // that many links (each link stays in one node's closed cell or segment, which is convex, and
+  // consecutive links' nodes cross). A perpendicular way lands on b inside `within`, which is
+  // narrowed to the positions every node chosen on the way still reaches (it must meet the way's
+  // `at`); the along way's last link lies on b's line.
+  struct Run {
+    bool vertical = false;
+    std::int64_t lo = 0, hi = -1;
+  };
+  std::vector<Run> runs(geom::Point q, int way, ReachInterval& within) const;  // way: 0, 1, 2
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
@@ -117,6 +143,17 @@ class LinkPointQueries {
   LinkPointQueries& operator=(LinkPointQueries&&) noexcept;
   std::optional<int> links(geom::Point a, geom::Point b) const;  // std::nullopt: a or b outside
   std::optional<int> links_by_descent(geom::Point a, geom::Point b) const;
+  // A path from a to b with links(a, b) links that is also L1-shortest (section 3.3): a, its
+  // bends, b (just {a} when a == b); std::nullopt when a or b is outside. The ways of both
+  // records at the node where the points part are glued on the cut (the paper's gluing, Figure
+  // 6), and the free coordinate of every link is then chosen to minimise the L1 length: the x's
+  // of the vertical links and the y's of the horizontal ones are two independent chains of
+  // intervals, each solved exactly by one pass forward and one back (the least total variation
+  // through intervals). Where a node has several neighbours one level down on the way, the one
+  // nearest to its coordinate chain's optimal set so far is taken (the paper's "as close to the
+  // entrance as possible"; checked against the L1 reference, not proven here). O(log n) plus the
+  // degrees of the nodes on the way (the paper: O(log n + l)).
+  std::optional<std::vector<geom::Point>> path(geom::Point a, geom::Point b) const;
   const CutTree& tree() const { return tree_; }
 
  private:

@@ -17,11 +17,10 @@
 #include <string>
 
 #include "geom/predicates.h"
-#include "io/generate.h"
-#include "io/layout_geometry.h"
 #include "oracle/link_polygon_oracle.h"
 #include "router/link_polygon.h"
 #include "router/link_reach.h"
+#include "support/polygon_frame.h"
 #include "support/random_shapes.h"
 #include "support/sanitized.h"
 
@@ -139,15 +138,8 @@ TEST(ApproximateLinkDiameter, LargerPolyominoes) {
 TEST(ApproximateLinkDiameter, ChannelsAndCombs) {
   Tally t;
   for (const std::int64_t size : {100, 400, 1500, 5000}) {
-    io::GenOptions go;
-    go.kind = io::GenKind::Channel;
-    go.size = size;
-    go.nets = 0;
-    go.seed = static_cast<std::uint64_t>(size + 3);
-    const io::Layout layout = io::generate_layout(go);
-    const router::FreeSpacePolygon f = router::free_space_polygon(layout.boundary->box, io::blockage_polygons(layout));
-    ASSERT_EQ(f.status, router::FreeSpacePolygon::Status::Ok);
-    check(f.ring, router::LinkVertexQueries(f.ring).diameter().links, "channel " + std::to_string(size), t);
+    const Ring channel = channel_ring(size, static_cast<std::uint64_t>(size + 3));
+    check(channel, router::LinkVertexQueries(channel).diameter().links, "channel " + std::to_string(size), t);
   }
   // A comb (teeth of width 1 and depth 5, gaps of 1, on a spine) and a staircase, as unions of boxes.
   for (const int teeth : {1, 2, 7, 40}) {

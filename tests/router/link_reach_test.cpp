@@ -18,11 +18,10 @@
 #include <random>
 
 #include "geom/predicates.h"
-#include "io/generate.h"
-#include "io/layout_geometry.h"
 #include "oracle/link_polygon_oracle.h"
 #include "router/link_cut.h"
 #include "router/link_polygon.h"
+#include "support/polygon_frame.h"
 #include "support/random_shapes.h"
 #include "support/sanitized.h"
 
@@ -223,15 +222,8 @@ TEST(LinkVertexQueries, EveryPairMatches) {
 TEST(LinkVertexQueries, ChannelsAndACombMatchTheGraph) {
   std::vector<std::pair<std::string, Ring>> cases;
   for (const std::int64_t size : {kSanitized ? 200 : 1000, 300}) {
-    io::GenOptions go;
-    go.kind = io::GenKind::Channel;
-    go.size = size;
-    go.nets = 0;
-    go.seed = static_cast<std::uint64_t>(size);
-    const io::Layout layout = io::generate_layout(go);
-    const router::FreeSpacePolygon f = router::free_space_polygon(layout.boundary->box, io::blockage_polygons(layout));
-    ASSERT_EQ(f.status, router::FreeSpacePolygon::Status::Ok);
-    cases.emplace_back("channel " + std::to_string(size), f.ring);
+    const Ring channel = channel_ring(size, static_cast<std::uint64_t>(size));
+    cases.emplace_back("channel " + std::to_string(size), channel);
   }
   const int teeth = 40;  // spine y in [0, 1], teeth of width 1 up to y = 5
   Ring comb;
@@ -269,51 +261,73 @@ TEST(LinkVertexQueries, ChannelsAndACombMatchTheGraph) {
   EXPECT_GE(diameter, 30);
 }
 
-// Any two points (section 3.2): vertices, points inside edges, points on the cuts of the tree
-// (their ends included), points on a vertex's lines, lattice points anywhere in the box (some
-// outside), against the reference's distance (nullopt outside); both the query (leaf location and
-// lowest common ancestors) and the walk down the tree.
+// Query points for a polygon and its cut tree: vertices, points inside edges, points on the
+// tree's cuts (their ends included), points on a vertex's lines, lattice points anywhere in the
+// box (some outside). `cut_points`: the cut points drawn from.
+std::vector<Point> query_points(std::mt19937& rng, const Ring& ring, const router::CutTree& tree, std::vector<Point>& cut_points) {
+  geom::Coord x0 = ring[0].x, x1 = x0, y0 = ring[0].y, y1 = y0;
+  for (const Point p : ring) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+  auto between = [&](geom::Coord lo, geom::Coord hi) { return static_cast<geom::Coord>(lo + static_cast<geom::Coord>(rng() % static_cast<unsigned>(hi - lo + 1))); };
+  cut_points.clear();
+  for (const auto& node : tree.nodes())
+    if (node.cut) {
+      const Point a = node.cut->from, b = node.cut->to;
+      cut_points.push_back(b);
+      cut_points.push_back({between(std::min(a.x, b.x), std::max(a.x, b.x)), between(std::min(a.y, b.y), std::max(a.y, b.y))});
+    }
+  std::vector<Point> pts;
+  for (int i = 0; i < 18; ++i) {
+    const Point v = ring[rng() % ring.size()], w = ring[(rng() % ring.size())];
+    switch (rng() % 5) {
+      case 0: pts.push_back(v); break;
+      case 1: {  // inside an edge
+        const std::size_t e = rng() % ring.size();
+        const Point a = ring[e], b = ring[(e + 1) % ring.size()];
+        pts.push_back({between(std::min(a.x, b.x), std::max(a.x, b.x)), between(std::min(a.y, b.y), std::max(a.y, b.y))});
+        break;
+      }
+      case 2:
+        if (!cut_points.empty()) {
+          pts.push_back(cut_points[rng() % cut_points.size()]);
+          break;
+        }
+        [[fallthrough]];
+      case 3: pts.push_back(rng() % 2 ? Point{v.x, w.y} : Point{v.x, between(y0, y1)}); break;  // on a vertex's line
+      default: pts.push_back({between(x0 - 1, x1 + 1), between(y0 - 1, y1 + 1)});
+    }
+  }
+  return pts;
+}
+
+// Random polygons with their query structure and query_points(): seeds 1..count, rng seeded with
+// seed_base + seed, polygons of random_polygon(rng, seed, 3 + seed % side, 6 + seed % cells,
+// 1 + seed % stretch) with at most max_size vertices (larger ones skipped).
+struct PolygonSizes {
+  int side, cells, stretch;
+  std::size_t max_size;
+};
+template <class F>
+void for_each_query_polygon(int count, unsigned seed_base, PolygonSizes z, F&& f) {
+  for (int seed = 1; seed <= count; ++seed) {
+    std::mt19937 rng(seed_base + static_cast<unsigned>(seed));
+    const Ring ring = random_polygon(rng, seed, 3 + seed % z.side, 6 + seed % z.cells, 1 + seed % z.stretch);
+    if (ring.size() > z.max_size) continue;
+    const router::LinkPointQueries q(ring);
+    std::vector<Point> cut_points;
+    const std::vector<Point> pts = query_points(rng, ring, q.tree(), cut_points);
+    f(seed, ring, q, pts, cut_points);
+  }
+}
+
+// Any two points (section 3.2) of query_points(), against the reference's distance (nullopt
+// outside); both the query (leaf location and lowest common ancestors) and the walk down the tree.
 TEST(LinkPointQueries, RandomPointsMatchTheReference) {
   const int count = kSanitized ? 60 : 300;
   long long pairs = 0, outside = 0, on_cuts = 0;
   int failed = 0;
-  for (int seed = 1; seed <= count; ++seed) {
-    std::mt19937 rng(static_cast<unsigned>(13000 + seed));
-    const Ring ring = random_polygon(rng, seed, 3 + seed % 5, 6 + seed % 20, 1 + seed % 4);
-    if (ring.size() > 36) continue;
-    const router::LinkPointQueries q(ring);
+  for_each_query_polygon(count, 13000, {5, 20, 4, 36}, [&](int seed, const Ring& ring, const router::LinkPointQueries& q,
+                                                          const std::vector<Point>& pts, const std::vector<Point>& cut_points) {
     const oracle::LinkPolygonReference ref(ring);
-    geom::Coord x0 = ring[0].x, x1 = x0, y0 = ring[0].y, y1 = y0;
-    for (const Point p : ring) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
-    auto between = [&](geom::Coord lo, geom::Coord hi) { return static_cast<geom::Coord>(lo + static_cast<geom::Coord>(rng() % static_cast<unsigned>(hi - lo + 1))); };
-    std::vector<Point> cut_points;
-    for (const auto& node : q.tree().nodes())
-      if (node.cut) {
-        const Point a = node.cut->from, b = node.cut->to;
-        cut_points.push_back(b);
-        cut_points.push_back({between(std::min(a.x, b.x), std::max(a.x, b.x)), between(std::min(a.y, b.y), std::max(a.y, b.y))});
-      }
-    std::vector<Point> pts;
-    for (int i = 0; i < 18; ++i) {
-      const Point v = ring[rng() % ring.size()], w = ring[(rng() % ring.size())];
-      switch (rng() % 5) {
-        case 0: pts.push_back(v); break;
-        case 1: {  // inside an edge
-          const std::size_t e = rng() % ring.size();
-          const Point a = ring[e], b = ring[(e + 1) % ring.size()];
-          pts.push_back({between(std::min(a.x, b.x), std::max(a.x, b.x)), between(std::min(a.y, b.y), std::max(a.y, b.y))});
-          break;
-        }
-        case 2:
-          if (!cut_points.empty()) {
-            pts.push_back(cut_points[rng() % cut_points.size()]);
-            break;
-          }
-          [[fallthrough]];
-        case 3: pts.push_back(rng() % 2 ? Point{v.x, w.y} : Point{v.x, between(y0, y1)}); break;  // on a vertex's line
-        default: pts.push_back({between(x0 - 1, x1 + 1), between(y0 - 1, y1 + 1)});
-      }
-    }
     for (const Point a : pts)
       for (const Point b : pts) {
         const std::optional<int> want = ref.distance(a, b), got = q.links(a, b), down = q.links_by_descent(a, b);
@@ -324,12 +338,157 @@ TEST(LinkPointQueries, RandomPointsMatchTheReference) {
           ADD_FAILURE() << "seed " << seed << " " << str(ring) << ": d(" << str(a) << " ; " << str(b) << ") = " << (want ? *want : -1)
                         << ", the queries " << (got ? *got : -1) << ", walking down the tree " << (down ? *down : -1);
       }
-  }
+  });
   std::printf("%lld point pairs (%lld with a point outside, %lld from a point on a cut)\n", pairs, outside, on_cuts);
   EXPECT_EQ(failed, 0);
   EXPECT_GE(pairs, kSanitized ? 10000 : 50000);
   EXPECT_GE(outside, 500);
   EXPECT_GE(on_cuts, 500);
+}
+
+// The structure's paths (section 3.3) between points of query_points(): from a to b, every link
+// axis-parallel, of positive length, inside the polygon (the reference's distance of its ends is
+// 1) and turning at every bend; as many links as the reference's distance; and as long in L1 as
+// the L1 reference's distance (a visibility graph with Dijkstra round the polygon as a hole in a
+// frame). Nothing for a point outside.
+TEST(LinkPointQueries, PathsAreFewestLinksAndL1Shortest) {
+  const int count = kSanitized ? 150 : 1500;
+  long long pairs = 0, through_cuts = 0, along_cuts = 0;
+  int failed = 0;
+  for_each_query_polygon(count, 17000, {9, 40, 5, 70}, [&](int seed, const Ring& ring, const router::LinkPointQueries& q,
+                                                          const std::vector<Point>& pts, const std::vector<Point>&) {
+    const oracle::LinkPolygonReference ref(ring);
+    const L1InPolygon l1(ring);
+    for (std::size_t i = 0; i < pts.size(); ++i)
+      for (std::size_t j = i % 3; j < pts.size(); j += 3) {
+        const Point a = pts[i], b = pts[j];
+        const std::optional<int> want = ref.distance(a, b);
+        const auto got = q.path(a, b);
+        auto fail = [&](const std::string& m) {
+          if (failed++ < 8) ADD_FAILURE() << "seed " << seed << " " << str(ring) << ": " << str(a) << " -> " << str(b) << ": " << m;
+        };
+        ++pairs;
+        if (!want) {
+          if (got) fail("a path for a point outside");
+          continue;
+        }
+        if (!got) {
+          fail("no path");
+          continue;
+        }
+        const std::vector<Point>& p = *got;
+        if (p.front() != a || p.back() != b) fail("the path does not join the points");
+        std::int64_t length = 0;
+        bool legal = true;
+        for (std::size_t k = 0; k + 1 < p.size(); ++k) {
+          const Point u = p[k], v = p[k + 1];
+          legal = legal && u != v && (u.x == v.x || u.y == v.y) && ref.distance(u, v) == std::optional<int>(1);
+          legal = legal && (k == 0 || geom::orientation(p[k - 1], u, v) != 0);
+          length += std::abs(std::int64_t{v.x} - u.x) + std::abs(std::int64_t{v.y} - u.y);
+          for (const auto& node : q.tree().nodes())
+            if (node.cut && geom::on_segment(u, node.cut->from, node.cut->to) && geom::on_segment(v, node.cut->from, node.cut->to) && u != v)
+              ++along_cuts;
+        }
+        through_cuts += p.size() > 2;
+        const int links = static_cast<int>(p.size()) - 1;
+        const std::optional<std::int64_t> l1_want = l1.ref->distance(a, b);
+        if (!legal) fail("a link is not free, not axis-parallel, empty or straight on: " + str(Ring(p.begin(), p.end())));
+        else if (links != *want) fail(std::to_string(links) + " links, the reference " + std::to_string(*want) + ": " + str(Ring(p.begin(), p.end())));
+        else if (!l1_want || length != *l1_want)
+          fail("L1 length " + std::to_string(length) + ", the reference " + (l1_want ? std::to_string(*l1_want) : "none") + ": " +
+               str(Ring(p.begin(), p.end())));
+      }
+  });
+  std::printf("%lld point pairs (%lld paths with a bend, %lld links along a cut)\n", pairs, through_cuts, along_cuts);
+  EXPECT_EQ(failed, 0);
+  EXPECT_GE(pairs, kSanitized ? 15000 : 150000);
+  EXPECT_GE(along_cuts, 100);
+}
+
+// Pairs a first version got wrong, found by a larger run of the test above: a way along the cut's
+// line took the first node one level down (here the line y = 4, 8 longer than y = 8), not the one
+// nearest to its coordinate chain.
+TEST(LinkPointQueries, PathsFoundTooLongOnce) {
+  struct Case {
+    Ring ring;
+    Point a, b;
+    std::int64_t length;
+  };
+  const Case cases[] = {
+      {{{0, 4}, {3, 4}, {3, 0}, {12, 0}, {12, 4}, {10, 4}, {10, 13}, {12, 13}, {12, 26}, {10, 26}, {10, 29}, {0, 29}, {0, 26}, {6, 26}, {6, 22},
+        {10, 22}, {10, 16}, {6, 16}, {6, 8}, {4, 8}, {4, 18}, {0, 18}},
+       {10, 16}, {4, 18}, 24},
+      {{{0, 0}, {10, 0}, {10, 2}, {12, 2}, {12, 5}, {10, 5}, {10, 8}, {7, 8}, {7, 5}, {6, 5}, {6, 11}, {10, 11}, {10, 13}, {7, 13}, {7, 16}, {10, 16},
+        {10, 17}, {13, 17}, {13, 20}, {7, 20}, {7, 21}, {6, 21}, {6, 23}, {5, 23}, {5, 21}, {3, 21}, {3, 20}, {0, 20}},
+       {10, 8}, {6, 13}, 15},
+      {{{0, 0}, {10, 0}, {10, 2}, {12, 2}, {12, 5}, {10, 5}, {10, 8}, {7, 8}, {7, 5}, {6, 5}, {6, 11}, {10, 11}, {10, 13}, {7, 13}, {7, 16}, {10, 16},
+        {10, 17}, {13, 17}, {13, 20}, {7, 20}, {7, 21}, {6, 21}, {6, 23}, {5, 23}, {5, 21}, {3, 21}, {3, 20}, {0, 20}},
+       {7, 6}, {6, 13}, 10},
+  };
+  for (const Case& c : cases) {
+    const router::LinkPointQueries q(c.ring);
+    const oracle::LinkPolygonReference ref(c.ring);
+    for (const auto& [a, b] : {std::pair{c.a, c.b}, std::pair{c.b, c.a}}) {
+      const auto p = q.path(a, b);
+      ASSERT_TRUE(p.has_value());
+      std::int64_t length = 0;
+      for (std::size_t k = 0; k + 1 < p->size(); ++k) length += std::abs(std::int64_t{(*p)[k + 1].x} - (*p)[k].x) + std::abs(std::int64_t{(*p)[k + 1].y} - (*p)[k].y);
+      EXPECT_EQ(length, c.length) << str(a) << " -> " << str(b) << ": " << str(Ring(p->begin(), p->end()));
+      EXPECT_EQ(static_cast<int>(p->size()) - 1, ref.distance(a, b));
+      EXPECT_EQ(L1InPolygon(c.ring).ref->distance(a, b), std::optional<std::int64_t>(c.length));
+    }
+  }
+}
+
+// The same on channels of 500 and 2,000 vertices (too large for the references), against the
+// graph search of router::LinkPolygon: as many links as its distance, as long as its path (which
+// its own tests check against the L1 reference), every link free by its distance of 1.
+TEST(LinkPointQueries, PathsOnChannelsMatchTheGraphSearch) {
+  long long pairs = 0, links_total = 0;
+  int failed = 0;
+  for (const std::int64_t size : {500, 2000}) {
+    const Ring channel = channel_ring(size, static_cast<std::uint64_t>(size + 3));
+    const router::LinkPolygon graph(channel);
+    const router::LinkPointQueries q(graph.ring());
+    const Ring& ring = graph.ring();
+    geom::Coord x0 = ring[0].x, x1 = x0, y0 = ring[0].y, y1 = y0;
+    for (const Point p : ring) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+    std::mt19937 rng(static_cast<unsigned>(size));
+    std::vector<Point> pts;
+    while (pts.size() < (kSanitized ? 40u : 200u)) {
+      const Point p = rng() % 3 == 0 ? ring[rng() % ring.size()]
+                                     : Point{static_cast<geom::Coord>(x0 + static_cast<geom::Coord>(rng() % static_cast<unsigned>(x1 - x0 + 1))),
+                                             static_cast<geom::Coord>(y0 + static_cast<geom::Coord>(rng() % static_cast<unsigned>(y1 - y0 + 1)))};
+      if (graph.contains(p)) pts.push_back(p);
+    }
+    for (std::size_t i = 0; i + 1 < pts.size(); i += 2) {
+      const Point a = pts[i], b = pts[i + 1];
+      const auto want = graph.path(a, b);
+      const auto got = q.path(a, b);
+      ++pairs;
+      std::string why;
+      if (!want || !got) why = "no path";
+      else {
+        const std::vector<Point>& p = *got;
+        std::int64_t length = 0;
+        for (std::size_t k = 0; k + 1 < p.size(); ++k) {
+          const Point u = p[k], v = p[k + 1];
+          if (u == v || (u.x != v.x && u.y != v.y) || graph.distance(u, v) != std::optional<int>(1) || (k > 0 && geom::orientation(p[k - 1], u, v) == 0))
+            why = "link " + str(u) + " - " + str(v) + " is not a free straight link";
+          length += std::abs(std::int64_t{v.x} - u.x) + std::abs(std::int64_t{v.y} - u.y);
+        }
+        const int links = static_cast<int>(p.size()) - 1;
+        links_total += links;
+        if (p.front() != a || p.back() != b) why = "the path does not join the points";
+        else if (links != want->links) why = std::to_string(links) + " links, the graph's " + std::to_string(want->links);
+        else if (length != want->length) why = "L1 length " + std::to_string(length) + ", the graph's " + std::to_string(want->length);
+      }
+      if (!why.empty() && failed++ < 8) ADD_FAILURE() << "channel " << size << ": " << str(a) << " -> " << str(b) << ": " << why;
+    }
+  }
+  std::printf("%lld pairs, %lld links in all\n", pairs, links_total);
+  EXPECT_EQ(failed, 0);
+  EXPECT_GE(links_total, pairs * 10);
 }
 
 // The divide-and-conquer diameter: the reference's diameter over convex vertices on small
@@ -355,15 +514,8 @@ TEST(LinkVertexQueries, DiameterMatches) {
     check(ring, oracle::LinkPolygonReference(ring).convex_vertex_diameter(), "seed " + std::to_string(seed) + " " + str(ring));
   }
   for (const std::int64_t size : {200, 500, 1000, 2000}) {
-    io::GenOptions go;
-    go.kind = io::GenKind::Channel;
-    go.size = size;
-    go.nets = 0;
-    go.seed = static_cast<std::uint64_t>(size + 7);
-    const io::Layout layout = io::generate_layout(go);
-    const router::FreeSpacePolygon f = router::free_space_polygon(layout.boundary->box, io::blockage_polygons(layout));
-    ASSERT_EQ(f.status, router::FreeSpacePolygon::Status::Ok);
-    check(f.ring, router::LinkPolygon(f.ring).diameter(SIZE_MAX).links, "channel " + std::to_string(size));
+    const Ring channel = channel_ring(size, static_cast<std::uint64_t>(size + 7));
+    check(channel, router::LinkPolygon(channel).diameter(SIZE_MAX).links, "channel " + std::to_string(size));
   }
   std::printf("%d polygons, diameters up to %d\n", checked, largest);
   EXPECT_EQ(failed, 0);

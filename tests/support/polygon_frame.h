@@ -3,14 +3,34 @@
 #pragma once
 
 #include <algorithm>
+#include <cstdint>
 #include <memory>
+#include <stdexcept>
+#include <string>
 
 #include "geom/normalize.h"
 #include "geom/predicates.h"
 #include "geom/types.h"
+#include "io/generate.h"
+#include "io/layout_geometry.h"
 #include "oracle/l1_oracle.h"
+#include "router/link_polygon.h"
 
 namespace taut::test {
+
+// The free space of `taut gen channel --size size --seed seed` (no nets): one winding simple
+// rectilinear polygon, counter-clockwise and cleaned. Throws if it is not one polygon.
+inline geom::Ring channel_ring(std::int64_t size, std::uint64_t seed) {
+  io::GenOptions go;
+  go.kind = io::GenKind::Channel;
+  go.size = size;
+  go.nets = 0;
+  go.seed = seed;
+  const io::Layout layout = io::generate_layout(go);
+  const router::FreeSpacePolygon f = router::free_space_polygon(layout.boundary->box, io::blockage_polygons(layout));
+  if (f.status != router::FreeSpacePolygon::Status::Ok) throw std::logic_error("channel " + std::to_string(size) + ": not one polygon");
+  return f.ring;
+}
 
 inline geom::Box ring_box(const geom::Ring& r) {
   geom::Box b{r[0], r[0]};
