@@ -17,7 +17,13 @@
 // (what `route --independent --tighten` does, no clearance); time, its ratio to the baseline,
 // rounds, wires moved and kept, and the bends before and after.
 //
-//   bench_net_router [--sizes N,..] [--nets M,..] [--threads T,..] [--rounds R] [--tighten]    (--sizes: blockage vertices)
+// --metric combined|link [--bend-cost C] (default C = 1000): the bend-aware metrics routed
+// together (NetRouter::bend_router, NetRouterOptions::cost), against each net alone on one
+// router::BendRouter (the tree of optimal paths from the first pin); length and bends both
+// compared. (--tighten applies to l1 only.)
+//
+//   bench_net_router [--sizes N,..] [--nets M,..] [--threads T,..] [--rounds R] [--tighten] [--metric l1|combined|link] [--bend-cost C]
+//   (--sizes: blockage vertices)
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -30,6 +36,7 @@
 
 #include "bench/bench_util.h"
 #include "bench/free_points.h"
+#include "router/bend_router.h"
 #include "router/l1_router.h"
 #include "router/net_router.h"
 #include "router/tighten_nets.h"
@@ -47,18 +54,44 @@ int main(int argc, char** argv) {
   std::vector<std::int64_t> sizes = {1000}, net_counts = {10, 30, 100}, thread_counts;
   int rounds = taut::router::NetRouterOptions{}.max_rounds;
   bool tighten = false;
+  std::string metric = "l1";
+  std::int64_t bend_cost = 1000;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--sizes") && i + 1 < argc) sizes = taut::bench::parse_list(argv[++i]);
     else if (!std::strcmp(argv[i], "--nets") && i + 1 < argc) net_counts = taut::bench::parse_list(argv[++i]);
     else if (!std::strcmp(argv[i], "--threads") && i + 1 < argc) thread_counts = taut::bench::parse_list(argv[++i]);
     else if (!std::strcmp(argv[i], "--rounds") && i + 1 < argc) rounds = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--tighten")) tighten = true;
+    else if (!std::strcmp(argv[i], "--metric") && i + 1 < argc) metric = argv[++i];
+    else if (!std::strcmp(argv[i], "--bend-cost") && i + 1 < argc) bend_cost = std::atoll(argv[++i]);
     else {
-      std::fprintf(stderr, "usage: %s [--sizes N,..] [--nets M,..] [--threads T,..] [--rounds R] [--tighten]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--sizes N,..] [--nets M,..] [--threads T,..] [--rounds R] [--tighten] [--metric l1|combined|link] [--bend-cost C]\n", argv[0]);
       return 2;
     }
   }
-  std::printf("net router vs each net alone (baseline), rects layouts, local nets of 2-5 point pins (pins 42 apart), w = s = 10\n");
+  if (metric != "l1" && metric != "combined" && metric != "link") {
+    std::fprintf(stderr, "--metric: l1, combined or link\n");
+    return 2;
+  }
+  const bool bends = metric != "l1";
+  if (bends) tighten = false;
+  const taut::router::BendMetric bm = metric == "link" ? taut::router::BendMetric::Link : taut::router::BendMetric::Combined;
+  if (metric == "link") bend_cost = 0;
+  auto route_fn = [&] { return bends ? taut::router::NetRouter::bend_router(bm, bend_cost) : taut::router::NetRouter::l1_router(false); };
+  auto options = [&](int threads) {
+    taut::router::NetRouterOptions o;
+    o.threads = threads;
+    o.max_rounds = rounds;
+    o.cost = !bends ? taut::router::NetRouterOptions::Cost::Length
+             : metric == "link" ? taut::router::NetRouterOptions::Cost::Link : taut::router::NetRouterOptions::Cost::Combined;
+    o.bend_cost = bend_cost;
+    return o;
+  };
+  const taut::router::NetRules rules{10, 10, bends ? taut::router::kDefaultCoverPieces : 0};
+  std::printf("net router vs each net alone (baseline), rects layouts, local nets of 2-5 point pins (pins 42 apart), w = s = 10, metric %s",
+              metric.c_str());
+  if (metric == "combined") std::printf(" (C = %lld)", static_cast<long long>(bend_cost));
+  std::printf("\n");
   std::printf("%9s %6s | %8s %8s %7s | %9s %9s %8s %6s | %s\n", "vertices", "nets", "routed", "1st pass", "rips", "alone s",
               "together s", "/alone", "growth", "len/alone");
   for (const std::int64_t size : sizes) {
@@ -115,7 +148,21 @@ int main(int argc, char** argv) {
       // baseline: each net alone on one router (what --independent does)
       std::vector<std::int64_t> alone_len(nets.size(), -1);
       std::size_t alone_ok = 0;
+      std::int64_t alone_bends = 0;
       const double alone_s = taut::bench::seconds_of([&] {
+        if (bends) {
+          const taut::router::BendRouter r(dom, lay.norm.obstacles);
+          for (std::size_t i = 0; i < nets.size(); ++i) {
+            const auto& pins = nets[i].pins;
+            const auto t = r.tree(pins[0], std::span<const Polygon>(pins).subspan(1), bm, bend_cost);
+            if (t.status == taut::router::WireStatus::Ok) {
+              alone_len[i] = total_length(t.wires);
+              for (const auto& w : t.wires) alone_bends += taut::geom::count_bends(w);
+            }
+            alone_ok += alone_len[i] >= 0;
+          }
+          return;
+        }
         taut::router::L1Router r(dom, lay.norm.obstacles);
         for (std::size_t i = 0; i < nets.size(); ++i) {
           const auto& pins = nets[i].pins;
@@ -129,14 +176,13 @@ int main(int argc, char** argv) {
           alone_ok += alone_len[i] >= 0;
         }
       }, 1);
-      taut::router::NetRouterOptions one;
-      one.max_rounds = rounds;
-      taut::router::NetRouter nr(dom, lay.norm.obstacles, nets, {10, 10}, one);
-      const double together_s = taut::bench::seconds_of([&] { nr.run(taut::router::NetRouter::l1_router(false)); }, 1);
+      taut::router::NetRouter nr(dom, lay.norm.obstacles, nets, rules, options(1));
+      const double together_s = taut::bench::seconds_of([&] { nr.run(route_fn()); }, 1);
       std::size_t routed = 0;
-      std::int64_t len = 0, len_alone_same = 0;
+      std::int64_t len = 0, len_alone_same = 0, together_bends = 0;
       for (std::size_t i = 0; i < nets.size(); ++i) {
         routed += nr.outcomes()[i].routed;
+        for (const auto& w : nr.outcomes()[i].wires) together_bends += taut::geom::count_bends(w);
         if (nr.outcomes()[i].routed && alone_len[i] >= 0) {
           len += total_length(nr.outcomes()[i].wires);
           len_alone_same += alone_len[i];
@@ -153,6 +199,10 @@ int main(int argc, char** argv) {
       std::printf("%18s unrouted:", "");
       for (const auto& [c, k] : codes) std::printf(" %s %d", c.c_str(), k);
       std::printf("\n");
+      if (bends)
+        std::printf("%18s bends: %lld together, %lld alone (all nets each way); %lld windows checked by the relaxation\n", "",
+                    static_cast<long long>(together_bends), static_cast<long long>(alone_bends),
+                    static_cast<long long>(nr.stats().relaxed));
       std::printf("%18s nets tried %lld times in %lld windows (%lld whole): building spaces %.3f s, paths %.3f s\n", "",
                   static_cast<long long>(nr.stats().attempts), static_cast<long long>(nr.stats().windows),
                   static_cast<long long>(nr.stats().whole), nr.stats().space_seconds, nr.stats().route_seconds);
@@ -188,11 +238,8 @@ int main(int argc, char** argv) {
                     static_cast<long long>(nt.stats().windows), static_cast<long long>(nt.stats().whole));
       }
       for (const std::int64_t t : thread_counts) {
-        taut::router::NetRouterOptions opt;
-        opt.threads = static_cast<int>(t);
-        opt.max_rounds = rounds;
-        taut::router::NetRouter par(dom, lay.norm.obstacles, nets, {10, 10}, opt);
-        const double par_s = taut::bench::seconds_of([&] { par.run(taut::router::NetRouter::l1_router(false)); }, 1);
+        taut::router::NetRouter par(dom, lay.norm.obstacles, nets, rules, options(static_cast<int>(t)));
+        const double par_s = taut::bench::seconds_of([&] { par.run(route_fn()); }, 1);
         bool same = true;
         for (std::size_t i = 0; i < nets.size(); ++i) {
           const auto &x = nr.outcomes()[i], &y = par.outcomes()[i];

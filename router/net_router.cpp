@@ -17,6 +17,7 @@
 
 #include "geom/bg.h"
 #include "geom/predicates.h"
+#include "router/bend_router.h"
 #include "router/l1_router.h"
 #include "router/oct_router.h"
 #include "router/wavefront.h"
@@ -242,14 +243,30 @@ NetSpace::NetSpace(const geom::Box& domain, std::span<const geom::Polygon> obsta
         ix.pieces.push_back({Polygon{grown_segment(pin.outer[0], pin.outer[0], b_), {}}, Index::GrownPin, n});
         continue;
       }
-      // a shape pin: the shape itself, and its edges grown by max(a, 1)
+      // a shape pin: the shape itself, and its edges grown by max(a, 1); with cover_pieces, its
+      // sloped edges' boxes instead of those edges (each box holds its piece of the edge, so the
+      // box grown holds the piece grown)
+      const std::int64_t g = std::max<std::int64_t>(a_, 1);
       ix.pieces.push_back({pin, Index::ShapePin, n});
       std::vector<const Ring*> rings{&pin.outer};
       for (const Ring& h : pin.holes) rings.push_back(&h);
+      const bool cover = rules.cover_pieces > 0;
       for (const Ring* r : rings)
-        for (std::size_t i = 0; i < r->size(); ++i)
-          ix.pieces.push_back({Polygon{grown_segment((*r)[i], (*r)[(i + 1) % r->size()], std::max<std::int64_t>(a_, 1)), {}},
-                               Index::GrownPin, n});
+        for (std::size_t i = 0; i < r->size(); ++i) {
+          const Point p = (*r)[i], q = (*r)[(i + 1) % r->size()];
+          if (cover && p.x != q.x && p.y != q.y) continue;
+          ix.pieces.push_back({Polygon{grown_segment(p, q, g), {}}, Index::GrownPin, n});
+        }
+      if (cover) {
+        const Polygon only[1] = {pin};
+        const std::vector<Polygon> c = rectilinear_cover(only, nullptr, rules.cover_pieces);
+        for (std::size_t i = 1; i < c.size(); ++i) {  // c[0] is the pin itself
+          const Box b = box_of(c[i].outer);
+          ix.pieces.push_back({c[i], Index::ShapePin, n});
+          const Box gb = geom::grown_box(b, g);  // clamped to the coordinate limit: never smaller in the domain
+          ix.pieces.push_back({Polygon{{gb.lo, {gb.hi.x, gb.lo.y}, gb.hi, {gb.lo.x, gb.hi.y}}, {}}, Index::GrownPin, n});
+        }
+      }
     }
   std::vector<Index::Entry> entries;  // the pins' pieces (the blockages' are found through the components)
   for (std::size_t i = 0; i < ix.pieces.size(); ++i)
@@ -533,6 +550,7 @@ void add_counts(NetRouterStats& to, const NetRouterStats& c) {
   to.attempts += c.attempts;
   to.windows += c.windows;
   to.whole += c.whole;
+  to.relaxed += c.relaxed;
   to.space_seconds += c.space_seconds;
   to.route_seconds += c.route_seconds;
 }
@@ -666,7 +684,47 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
       if (w.hi.y < dom.hi.y) d = std::min<std::int64_t>(d, std::int64_t{w.hi.y} - b.hi.y);
       return d;
     };
-    if (a.routed) {
+    if (a.routed && options_.cost != NetRouterOptions::Cost::Length) {
+      // the bend-aware metrics (see the header): per sink, the least a path out of the window costs
+      if (a.sink_costs.size() + 1 != pins.pins.size()) throw std::logic_error("NetRouter: a bend-aware attempt without its sinks' costs");
+      const std::int64_t out = 2 * (inner(hp) - 2);
+      const bool link = options_.cost == NetRouterOptions::Cost::Link;
+      const __int128 c = options_.bend_cost;
+      bool proven = true;
+      __int128 worst = 0;
+      for (std::size_t i = 0; i < a.sink_costs.size(); ++i) {
+        const auto [len, bends] = a.sink_costs[i];
+        std::int64_t least = out;
+        if (is_point_pin(pins.pins[0]) && is_point_pin(pins.pins[i + 1])) {
+          const Point p = pins.pins[0].outer[0], q = pins.pins[i + 1].outer[0];
+          least += std::abs(std::int64_t{p.x} - q.x) + std::abs(std::int64_t{p.y} - q.y);
+        }
+        if (link) proven = proven && (bends < 2 || (bends == 2 && len <= least));
+        else proven = proven && __int128{len} + c * bends <= __int128{least} + 2 * c;
+        worst = std::max(worst, __int128{len} + c * bends);
+      }
+      if (!proven) {
+        // The relaxation (see the header): the window's pieces with its sides opened onto a free
+        // ring one unit wide. Every way of the whole layout, clamped into the window and the ring,
+        // is a way there that costs no more, so the ring's optimum is at most the layout's; when
+        // every sink costs the same there as in the window, the window's optimum is the layout's.
+        geom::NormalizedObstacles open = obs;
+        open.domain = clipped(geom::grown_box(w, 1), dom);
+        const auto r0 = Clock::now();
+        const NetAttempt r = route(net, pins, open);
+        st.route_seconds += std::chrono::duration<double>(Clock::now() - r0).count();
+        ++st.relaxed;
+        proven = r.routed && r.sink_costs.size() == a.sink_costs.size();
+        for (std::size_t i = 0; proven && i < r.sink_costs.size(); ++i) {
+          const auto [l0, b0] = a.sink_costs[i];
+          const auto [l1, b1] = r.sink_costs[i];
+          proven = link ? (b0 == b1 && l0 == l1) : __int128{l0} + c * b0 == __int128{l1} + c * b1;
+        }
+      }
+      if (proven) return t;
+      const __int128 grow = std::max<__int128>(4 * __int128{m}, worst + 3);
+      m = static_cast<std::int64_t>(std::min<__int128>(grow, std::numeric_limits<std::int64_t>::max() / 8));
+    } else if (a.routed) {
       const std::int64_t len = l1_length(a.wires);
       bool proven;
       if (pins.pins.size() == 2 && is_point_pin(pins.pins[0]) && is_point_pin(pins.pins[1])) {
@@ -1160,7 +1218,43 @@ NetAttempt route_with(const NetPins& net, const geom::NormalizedObstacles& obs, 
   return a;
 }
 
+// The route function of bend_router: the tree of optimal paths from the first pin (two pins: the
+// optimal wire), with every sink's cost for the windows' proof.
+NetAttempt route_bends(const NetPins& net, const geom::NormalizedObstacles& obs, BendMetric metric, std::int64_t bend_cost) {
+  NetAttempt a;
+  if (net.pins.size() < 2) {
+    a.code = "ROUTE-0006";
+    a.reason = "fewer than two pins";
+    return a;
+  }
+  const BendRouter r(obs.domain, obs.obstacles);
+  for (const Polygon& pin : net.pins)
+    if (!pin_shape_supported(pin) || r.pin_meets_obstacle(pin)) {
+      a.code = "ROUTE-0005";
+      a.reason = "a shape pin this router does not take here";
+      return a;
+    }
+  const BendTree t = r.tree(net.pins[0], std::span<const Polygon>(net.pins).subspan(1), metric, bend_cost);
+  if (t.status != WireStatus::Ok) {
+    a.code = t.status == WireStatus::Unreachable ? "ROUTE-0002" : "ROUTE-0001";
+    a.reason = to_string(t.status);
+    return a;
+  }
+  a.wires = t.wires;
+  for (auto& w : a.wires)
+    if (w.size() == 1) w.push_back(w[0]);  // pins at one point
+  for (const auto& p : t.paths) a.sink_costs.push_back({l1_length(Lines{p}), geom::count_bends(p)});
+  a.routed = true;
+  return a;
+}
+
 }  // namespace
+
+NetRouteFn NetRouter::bend_router(BendMetric metric, std::int64_t bend_cost) {
+  return [metric, bend_cost](std::size_t, const NetPins& net, const geom::NormalizedObstacles& obs) {
+    return route_bends(net, obs, metric, bend_cost);
+  };
+}
 
 NetRouteFn NetRouter::l1_router(bool steiner) {
   return [steiner](std::size_t, const NetPins& net, const geom::NormalizedObstacles& obs) {

@@ -51,6 +51,24 @@
 // answer stands; other failures (a pin not free, no integer staircase) are decided near the pins
 // and end the search in the first window.
 //
+// With the bend-aware metrics (NetRouterOptions::cost: length + C x bends, or bends then length)
+// every sink's path from the first pin is optimal on its own (router::BendRouter::tree), and the
+// window is kept when, for every sink, the cost of its path is at most the least a path out of
+// the window could cost: such a path leaves through a side at distance d >= d_min from the pins'
+// box and comes back, so it is at least 2(d_min - 2) long (plus |dx| + |dy| between two point
+// pins), and it runs away from the box and back along one axis, so it has two antiparallel links
+// and at least two bends (an optimal path never reverses on itself). Combined: cost <= that
+// length + 2C; Link: fewer than two bends, or two and no longer than that length. Otherwise the
+// net is routed once more in a relaxation: the window's pieces with the window's sides opened onto
+// a free ring one unit wide (the domain grown by 1, clipped to the layout's). Clamping a way of the
+// whole layout into the window and the ring never lengthens it nor adds a bend, and keeps it out
+// of the pieces (inside the window it is unchanged; the ring holds none), so the relaxation's
+// optimum is at most the layout's, which is at most the window's; when every sink costs the same
+// in both, the window's answer is the layout's. Else the window grows as above (m := max(4m,
+// cost + 3)), up to the whole domain. The blockages must be
+// rectilinear here (the router replaces sloped ones by their rectilinear cover before it starts,
+// so a window never clips a sloped edge and the cover is the same in every window).
+//
 // Order and rip-up. Nets go shortest first (by the half-perimeter of their pins' bounding box,
 // then by their place in the file): a short net has the fewest ways round, a long one the most
 // room to detour (the usual order of sequential routers). Then, while some net is unrouted and
@@ -95,11 +113,19 @@
 #include "geom/normalize.h"
 #include "geom/root2.h"
 #include "geom/types.h"
+#include "router/bend_router.h"
 
 namespace taut::router {
 
 struct NetRules {
   std::int64_t wire_width = 0, spacing = 0;  // <rules wire-width spacing>, each >= 0
+  // 0: the other nets' shape pins are obstacles as they are. k > 0 (the bend-aware metrics, whose
+  // router takes rectilinear obstacles only): a shape pin with a sloped edge is taken with its
+  // rectilinear cover (router::rectilinear_cover with k pieces: the pin plus the boxes along its
+  // sloped edges), and grown by the boxes grown instead of by its sloped edges grown; never less
+  // clearance, and every piece a net is routed among then has horizontal and vertical edges only
+  // (when the blockages have).
+  int cover_pieces = 0;
 };
 
 // A net's pins: a point pin is an outer ring of one point, a shape pin a polygon.
@@ -169,6 +195,9 @@ struct NetAttempt {
   // (L1, or octilinear a + b sqrt2). Every point that wave labelled lies that near the first pin,
   // which proves a window whose sides are farther (NetRouter); nullopt: not such a tree.
   std::optional<geom::Root2> radius;
+  // With NetRouterOptions::cost Combined or Link: per sink (every pin but the first), the L1
+  // length and the bends of its optimal path from the first pin (what the windows' proof bounds).
+  std::vector<std::pair<std::int64_t, std::int64_t>> sink_costs;
   // ROUTE-0002 must mean "the pins are in different parts of free space": the one failure a
   // larger window can undo (NetRouter widens the window for it, and for no other code).
 };
@@ -217,6 +246,12 @@ struct NetRouterOptions {
   bool windows = true;  // false: every net on the whole domain (for tests and benchmarks)
   bool octilinear = false;  // the route function's wires are octilinear (the windows' proof
                             // then measures their octilinear length)
+  // What the route function's wires minimise: their length (L1, or octilinear), or length +
+  // bend_cost x bends (Combined), or bends then length (Link; the bend-aware router,
+  // router/bend_router.h). With Combined or Link the windows' proof bounds that cost, from
+  // NetAttempt::sink_costs (see the header).
+  enum class Cost { Length, Combined, Link } cost = Cost::Length;
+  std::int64_t bend_cost = 0;
   // Asked before every window is routed: true stops the run (NetRouterStopped). A window's
   // route is not interrupted, so a run stops within one window's time.
   std::function<bool()> stop;
@@ -239,6 +274,7 @@ struct NetRouterStats {
   std::int64_t attempts = 0;      // nets tried (each in one or more windows)
   std::int64_t windows = 0;       // calls of the route function (one per window tried)
   std::int64_t whole = 0;         // of those, on the whole domain
+  std::int64_t relaxed = 0;       // bend-aware metrics: windows checked by the relaxation (see above)
   std::int64_t rips = 0;          // nets ripped up in all
   std::size_t first_pass = 0;     // nets routed by the first pass
   // With threads > 1: attempts made ahead of their turn, and those of them tried again because a
@@ -262,6 +298,11 @@ class NetRouter {
   // The same for octilinear wires (router/oct_router.h; shortest-path trees): run it with
   // NetRouterOptions::octilinear.
   static NetRouteFn oct_router();
+  // The same for the bend-aware metrics (router/bend_router.h: length + bend_cost x bends, or
+  // bends then length): the tree of optimal paths from the first pin (two pins: the optimal
+  // wire), point and shape pins. Run it with NetRouterOptions::cost set to the same metric, on
+  // rectilinear blockages (rectilinear_cover) with NetRules::cover_pieces > 0.
+  static NetRouteFn bend_router(BendMetric metric, std::int64_t bend_cost);
 
   const std::vector<NetOutcome>& outcomes() const { return out_; }
   const std::vector<std::size_t>& order() const { return order_; }

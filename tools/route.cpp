@@ -54,6 +54,7 @@ struct NetResult {
   io::Route route;
   std::string code;  // ROUTE-xxxx when failed
   std::optional<geom::Root2> radius;  // a shortest-path tree's: router::NetAttempt::radius
+  std::vector<std::pair<std::int64_t, std::int64_t>> sink_costs;  // bend metrics: router::NetAttempt::sink_costs
 };
 
 // A net written as failed, with the code and reason that stderr names.
@@ -222,6 +223,22 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router
   return finish({io::Wire{w.points}});
 }
 
+// A net as the net router left it: its wires with their length and bends, or failed with its reason.
+NetResult outcome_result(const io::Net& net, const router::NetOutcome& o) {
+  if (!o.routed) return failed(net, o.code.c_str(), o.reason);
+  NetResult r;
+  r.route.net = net.name;
+  long bends = 0;
+  for (const auto& w : o.wires) {
+    r.route.wires.push_back(io::Wire{w});
+    bends += geom::count_bends(w);
+  }
+  r.route.status = "routed";
+  r.route.length = io::format_total_length(o.wires);
+  r.route.bends = bends;
+  return r;
+}
+
 // --metric combined / link (router::BendRouter): nets of point and shape pins. Two pins: the
 // best wire; more: the tree of best paths from the first pin (router::BendTree).
 NetResult route_net_bends(const io::Layout& layout, const io::Net& net, const BendObstacles& obs,
@@ -263,6 +280,11 @@ NetResult route_net_bends(const io::Layout& layout, const io::Net& net, const Be
     bends += geom::count_bends(w);
     r.route.wires.push_back(io::Wire{w});
     lines.push_back(std::move(w));
+  }
+  for (const std::vector<geom::Point>& p : t.paths) {
+    std::int64_t length = 0;
+    for (std::size_t i = 1; i < p.size(); ++i) length += std::abs(std::int64_t{p[i].x} - p[i - 1].x) + std::abs(std::int64_t{p[i].y} - p[i - 1].y);
+    r.sink_costs.push_back({length, geom::count_bends(p)});
   }
   r.route.status = "routed";
   r.route.length = io::format_total_length(lines);
@@ -397,11 +419,10 @@ void add_route(CLI::App& app, int& status) {
       status = kInvalid;
       return;
     }
-    if (args->threads != 1 && (bends || args->independent))  // said, not dropped silently
+    if (args->threads != 1 && args->independent)  // said, not dropped silently
       print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0017", layout->file, 0, 0,
-                                    "--threads applies to the nets routed together; " +
-                                        std::string(bends ? "--metric " + args->routing.metric : "--independent") +
-                                        " routes the nets one after another on one thread"}},
+                                    "--threads applies to the nets routed together; --independent routes the nets one "
+                                    "after another on one thread"}},
                         args->load.quiet);
     io::Routes routes;
     routes.tool = "taut " + std::string(router::version());
@@ -414,25 +435,68 @@ void add_route(CLI::App& app, int& status) {
       const BendObstacles obs = bend_obstacles(*layout, {}, args->routing.metric, args->load.quiet,
                                                static_cast<int>(args->routing.cover_pieces.value_or(router::kDefaultCoverPieces)));
       const geom::NormalizedObstacles& norm = obs.norm;
-      const router::BendRouter br(norm.domain, norm.obstacles);
       const bool link = args->routing.metric == "link";
+      const router::BendMetric metric = link ? router::BendMetric::Link : router::BendMetric::Combined;
       const std::int64_t c = link ? 0 : routing_bend_cost(args->routing, *layout);
       routes.metric = args->routing.metric;
       routes.orientations = "rectilinear";
       if (!link) routes.bend_cost = c;
-      if (layout->nets.size() > 1 || (layout->rules && (layout->rules->wire_width > 0 || layout->rules->spacing > 0)))
-        print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0015", layout->file, 0, 0,
-                                      "--metric " + args->routing.metric + " routes each net alone among the blockages: "
-                                      "wires of different nets may cross, and the clearance of <rules> is not kept "
-                                      "(taut check finds where; --metric l1 routes the nets together)"}},
-                          args->load.quiet);
-      t1 = Clock::now();
-      for (const io::Net& net : layout->nets) {
-        if (stop()) throw router::NetRouterStopped();
+      for (const io::Net& net : layout->nets)
         if (args->tree == "steiner")  // said, not dropped silently
-          if (const auto why = no_steiner_tree(net, args->routing.metric, false))
-            warn_no_steiner_tree(*layout, net, *why, args->load.quiet);
-        NetResult r = route_net_bends(*layout, net, obs, br, link ? router::BendMetric::Link : router::BendMetric::Combined, c);
+          if (const auto why = no_steiner_tree(net, args->routing.metric, false)) warn_no_steiner_tree(*layout, net, *why, args->load.quiet);
+      std::vector<NetResult> results(layout->nets.size());
+      if (args->independent) {  // each net alone among the blockages (their rectilinear covers)
+        const router::BendRouter br(norm.domain, norm.obstacles);
+        t1 = Clock::now();
+        for (std::size_t i = 0; i < layout->nets.size(); ++i) {
+          if (stop()) throw router::NetRouterStopped();
+          results[i] = route_net_bends(*layout, layout->nets[i], obs, br, metric, c);
+        }
+      } else {
+        // Together (router::NetRouter, as for --metric l1): each net among the covers grown by
+        // ceil(w/2) + s and the other nets' wires and pins grown by w + s, with rip-up; every
+        // window's answer is kept only when no path out of it can cost less (net_router.h).
+        router::NetRules rules;
+        if (layout->rules) rules = {layout->rules->wire_width, layout->rules->spacing};
+        rules.cover_pieces = obs.pieces;  // other nets' sloped shape pins by their covers, as the blockages
+        geom::Box domain = norm.domain;
+        if (!layout->boundary) {  // room to go round a grown blockage in the unbounded plane
+          const std::int64_t grow = (rules.wire_width + 1) / 2 + rules.spacing + std::max<std::int64_t>(rules.wire_width + rules.spacing, 1);
+          domain = geom::grown_box(norm.domain, grow);
+        }
+        t1 = Clock::now();
+        try {
+          router::NetRouterOptions nro;
+          nro.cost = link ? router::NetRouterOptions::Cost::Link : router::NetRouterOptions::Cost::Combined;
+          nro.bend_cost = c;
+          nro.stop = stop;
+          nro.progress = progress;
+          nro.threads = static_cast<int>(args->threads ? args->threads : std::max(1u, std::thread::hardware_concurrency()));
+          net_threads = nro.threads;
+          router::NetRouter nr(domain, norm.obstacles, net_pins(*layout), rules, nro);
+          nr.run([&](std::size_t i, const router::NetPins&, const geom::NormalizedObstacles& w) {
+            const router::BendRouter br(w.domain, w.obstacles);
+            NetResult r = route_net_bends(*layout, layout->nets[i], obs, br, metric, c);
+            router::NetAttempt a;
+            a.routed = r.route.status == "routed";
+            for (const io::Wire& wire : r.route.wires) a.wires.push_back(wire.points);
+            a.code = r.code;
+            a.reason = r.route.reason.value_or("");
+            a.sink_costs = std::move(r.sink_costs);
+            return a;
+          });
+          net_stats = nr.stats();
+          for (std::size_t i = 0; i < layout->nets.size(); ++i) results[i] = outcome_result(layout->nets[i], nr.outcomes()[i]);
+        } catch (const std::domain_error& e) {
+          print_diagnostics({Diagnostic{Severity::Error, "ROUTE-0014", layout->file, layout->rules ? layout->rules->line : 0, 0,
+                                        std::string("the clearance of <rules>: ") + e.what()}});
+          status = kInvalid;
+          return;
+        }
+      }
+      for (std::size_t i = 0; i < layout->nets.size(); ++i) {
+        const io::Net& net = layout->nets[i];
+        NetResult& r = results[i];
         if (r.route.status == "routed") {
           ++routed;
           if (net.sketch)
@@ -546,27 +610,7 @@ void add_route(CLI::App& app, int& status) {
             return a;
           });
           net_stats = nr.stats();
-          for (std::size_t i = 0; i < layout->nets.size(); ++i) {
-            const router::NetOutcome& o = nr.outcomes()[i];
-            const io::Net& net = layout->nets[i];
-            if (!o.routed) {
-              together.push_back(failed(net, o.code.c_str(), o.reason));
-              continue;
-            }
-            NetResult r;
-            r.route.net = net.name;
-            std::vector<std::vector<geom::Point>> lines;
-            long nbends = 0;
-            for (const auto& w : o.wires) {
-              r.route.wires.push_back(io::Wire{w});
-              nbends += geom::count_bends(w);
-              lines.push_back(w);
-            }
-            r.route.status = "routed";
-            r.route.length = io::format_total_length(lines);
-            r.route.bends = nbends;
-            together.push_back(std::move(r));
-          }
+          for (std::size_t i = 0; i < layout->nets.size(); ++i) together.push_back(outcome_result(layout->nets[i], nr.outcomes()[i]));
         } catch (const std::domain_error& e) {
           print_diagnostics({Diagnostic{Severity::Error, "ROUTE-0014", layout->file, layout->rules ? layout->rules->line : 0, 0,
                                         std::string("the clearance of <rules>: ") + e.what()}});
@@ -759,6 +803,7 @@ void add_route(CLI::App& app, int& status) {
                          {"attempts", net_stats->attempts},
                          {"windows", net_stats->windows},
                          {"whole_domain_windows", net_stats->whole},
+                         {"relaxed_windows", net_stats->relaxed},
                          {"threads", net_threads},
                          {"speculative_attempts", net_stats->speculated},
                          {"speculative_redone", net_stats->redone},

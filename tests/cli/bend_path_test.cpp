@@ -447,9 +447,34 @@ TEST(BendRoute, BendsDesignPicturesAndRoutes) {
   EXPECT_EQ(t.status, 2);
   EXPECT_NE(t.err.find("CLI-0020"), std::string::npos) << t.err;
   EXPECT_FALSE(test::file_exists(dir + "/t.xml"));
-  // the demo: every net routed (clk's three pins as a tree from drv; bump between two shape pins,
-  // a rectangle and a diamond)
-  const auto d = run_taut({"route", kDemo, "--metric", "combined", "--bend-cost", "1000", "-o", dir + "/demo.xml"});
+  // the demo, together (the default): every net routed, and the whole check passes, the clearance
+  // of the demo's <rules> included (the bend-aware wires among the others' grown wires and pins);
+  // both metrics
+  for (const std::vector<std::string>& m : {std::vector<std::string>{"--metric", "combined", "--bend-cost", "1000"},
+                                           std::vector<std::string>{"--metric", "link"}}) {
+    std::vector<std::string> args{"route", kDemo, "-o", dir + "/together.xml", "--stats", dir + "/together.json"};
+    args.insert(args.end(), m.begin(), m.end());
+    const auto r = run_taut(args);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err.find("not routed"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("ROUTE-0015"), std::string::npos) << r.err;
+    const auto c = run_taut({"check", dir + "/together.xml"});
+    EXPECT_EQ(c.status, 0) << c.out << c.err;
+    EXPECT_NE(c.out.find("clearance ok"), std::string::npos) << c.out;
+    const nlohmann::json j = nlohmann::json::parse(test::read_text(dir + "/together.json"));
+    EXPECT_TRUE(j.contains("net_router")) << j.dump();
+    // two threads write the same file byte for byte
+    args[3] = dir + "/together2.xml";
+    args.insert(args.end(), {"--threads", "2"});
+    const auto r2 = run_taut(args);
+    EXPECT_EQ(r2.status, 0) << r2.err;
+    EXPECT_EQ(r2.err.find("ROUTE-0017"), std::string::npos) << r2.err;
+    EXPECT_EQ(test::read_text(dir + "/together2.xml"), test::read_text(dir + "/together.xml"));
+  }
+  // the demo with --independent: each net alone among the blockages, so each wire is the best
+  // there (clk's three pins as a tree from drv; bump between two shape pins, a rectangle and a
+  // diamond)
+  const auto d = run_taut({"route", kDemo, "--metric", "combined", "--bend-cost", "1000", "--independent", "-o", dir + "/demo.xml"});
   EXPECT_EQ(d.status, 0) << d.err;
   EXPECT_EQ(d.err.find("not routed"), std::string::npos) << d.err;
   const io::ReadResult rd = io::read_layout(dir + "/demo.xml");
@@ -508,7 +533,8 @@ TEST(BendRoute, BendsDesignPicturesAndRoutes) {
   <net name="touch"><pin name="a" x="10" y="10"/><pin name="b"><rect x0="50" y0="20" x1="60" y1="30"/></pin></net>
 </layout>
 )");
-  const auto p = run_taut({"route", bad, "--metric", "link", "-o", dir + "/pins.routed.xml"});
+  // (--independent: the four nets share the pin at 10,10, which no two nets routed together can)
+  const auto p = run_taut({"route", bad, "--metric", "link", "--independent", "-o", dir + "/pins.routed.xml"});
   EXPECT_EQ(p.status, 1) << p.err;
   EXPECT_NE(p.err.find("[ROUTE-0005] net \"under\" not routed: pin \"b\" lies partly under blockage \"wall\" (" + bad + ":3)"),
             std::string::npos) << p.err;
