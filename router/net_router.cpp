@@ -502,7 +502,21 @@ std::vector<std::size_t> NetSpace::pin_blockers(std::size_t net, std::span<const
 
 NetRouter::NetRouter(const geom::Box& domain, std::span<const geom::Polygon> obstacles, std::vector<NetPins> nets,
                      NetRules rules, NetRouterOptions options)
-    : space_(domain, obstacles, std::move(nets), rules), options_(options) {}
+    : space_(domain, obstacles, std::move(nets), rules), options_(options) {
+  if (options_.cost == NetRouterOptions::Cost::Length) return;
+  // the bend-aware router takes rectilinear obstacles only (see the header)
+  if (rules.cover_pieces <= 0) throw std::invalid_argument("NetRouter: a bend-aware cost needs NetRules::cover_pieces > 0");
+  for (const Polygon& p : obstacles) {
+    std::vector<const geom::Ring*> rings{&p.outer};
+    for (const geom::Ring& h : p.holes) rings.push_back(&h);
+    for (const geom::Ring* r : rings)
+      for (std::size_t i = 0; i < r->size(); ++i) {
+        const Point a = (*r)[i], b = (*r)[(i + 1) % r->size()];
+        if (a.x != b.x && a.y != b.y)
+          throw std::invalid_argument("NetRouter: a bend-aware cost needs rectilinear blockages (router::rectilinear_cover)");
+      }
+  }
+}
 
 namespace {
 

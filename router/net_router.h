@@ -66,8 +66,10 @@
 // optimum is at most the layout's, which is at most the window's; when every sink costs the same
 // in both, the window's answer is the layout's. Else the window grows as above (m := max(4m,
 // cost + 3)), up to the whole domain. The blockages must be
-// rectilinear here (the router replaces sloped ones by their rectilinear cover before it starts,
-// so a window never clips a sloped edge and the cover is the same in every window).
+// rectilinear here: the caller replaces sloped ones by their rectilinear cover before it builds
+// the router (as `taut route` does), so a window never clips a sloped edge and the cover is the
+// same in every window; the constructor throws std::invalid_argument for a sloped blockage edge
+// when NetRouterOptions::cost is not Length, and for NetRules::cover_pieces 0 with it.
 //
 // Order and rip-up. Nets go shortest first (by the half-perimeter of their pins' bounding box,
 // then by their place in the file): a short net has the fewest ways round, a long one the most

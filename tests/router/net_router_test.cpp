@@ -482,6 +482,14 @@ TEST(NetRouter, BendMetricsRouteRoundADiamondPin) {
     EXPECT_TRUE(nr.outcomes()[0].routed && nr.outcomes()[1].routed) << nr.outcomes()[1].reason;
     EXPECT_TRUE(router::check_routes(none, check_nets(nets, nr), {2, 2}).problems.empty());
   }
+  // the bend-aware costs refuse a sloped blockage (its cover is the caller's) and no cover of pins
+  const geom::NormalizedObstacles tri = geom::normalize_obstacles(std::vector<Polygon>{Polygon{{{20, 20}, {40, 20}, {40, 40}}, {}}},
+                                                                  geom::Box{{0, 0}, {100, 100}});
+  router::NetRouterOptions opt;
+  opt.cost = router::NetRouterOptions::Cost::Combined;
+  EXPECT_THROW(router::NetRouter(tri.domain, tri.obstacles, nets, {2, 2, router::kDefaultCoverPieces}, opt), std::invalid_argument);
+  EXPECT_THROW(router::NetRouter(none.domain, none.obstacles, nets, {2, 2, 0}, opt), std::invalid_argument);
+  EXPECT_NO_THROW(router::NetRouter(tri.domain, tri.obstacles, nets, {2, 2, 0}));  // L1: sloped blockages are fine
 }
 
 // Found by review, kept: (1) an octilinear net whose window was kept by the L1 bound although a
