@@ -5,9 +5,11 @@
 // to baselines measured in the same run: `sort` (std::sort of the n vertices, an n log n unit)
 // and `l1` (one exact L1 query of router::L1Router, Mitchell's wavefront, on the same pairs:
 // the query the combined metric generalises). The growth exponent between consecutive sizes is
-// log(t2 / t1) / log(n2 / n1). Up to --ref-max vertices (default 200) the brute-force
+// log(t2 / t1) / log(n2 / n1). Up to --ref-max vertices (default 1,000) the brute-force
 // state-graph reference (tests/oracle/bend_oracle.h: Hanan grid x direction) answers the same
-// combined queries in the same run, and its answers are compared. `shape`: the same pairs with each
+// combined queries in the same run, one after another until --ref-seconds (default 60) are
+// spent at that size, and its answers are compared. (At 9,216 vertices, --ref-max 10000, it was
+// built in 484 s and took 362 s for its first query on 2026-12-01.) `shape`: the same pairs with each
 // end a square pin at that vertex (the largest of side domain/100, /200, ... that overlaps no
 // obstacle; a wire may end anywhere on it: the search starts from the square's candidate points),
 // combined metric, as a ratio to the point query. `map`: section 4's structure for one fixed
@@ -16,10 +18,14 @@
 // every vertex and from as many lattice points (cost only) as a ratio of the graph query's time
 // to the map's; and the same map with the target's square pin as the target (its candidate
 // points are the Dijkstra run's sources; a query adds its straight shots onto the square), as
-// ratios to the point target's.
+// ratios to the point target's. The map's queries are timed three ways, alternating: the default
+// search (O(log n): fractional cascading for long intervals), a binary search in every covering
+// node (O(log^2 n), the baseline) and cascading every query, as ratios to the default.
 //
-//   bench_bends [--sizes N,N,...] [--queries Q] [--kind rects|maze] [--ref-max N]
+//   bench_bends [--sizes N,N,...] [--queries Q] [--kind rects|maze] [--ref-max N] [--ref-seconds S]
+#include <chrono>
 #include <cmath>
+#include <optional>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -38,9 +44,11 @@ using taut::geom::Point;
 struct Row {
   std::int64_t n = 0;
   double sort = 0, build = 0, combined = 0, link = 0, l1 = 0, ref = -1, shape = 0, map_build = 0, map_query = 0;
-  double map_pieces = 0, map_mib = 0, pin_map_build = 0, pin_map_query = 0;
+  double map_pieces = 0, map_mib = 0, pin_map_build = 0, pin_map_query = 0, map_query_per_node = 0, map_query_cascading = 0;
+  double map_entries = 0;
   int map_agree = 0, map_checked = 0;
-  int ref_agree = 0;
+  int ref_agree = 0, ref_done = 0;
+  double ref_build = 0;
   taut::router::BendGraphStats stats;
   std::size_t edges = 0;
   int found = 0, l1_found = 0, queries = 0;
@@ -52,12 +60,14 @@ int main(int argc, char** argv) {
   std::vector<std::int64_t> sizes = {100, 1000, 10000, 100000};
   int queries = 20;
   std::string kind_name = "rects";
-  std::int64_t ref_max = 200;
+  std::int64_t ref_max = 1000;
+  double ref_seconds = 60;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--sizes") && i + 1 < argc) sizes = taut::bench::parse_list(argv[++i]);
     else if (!std::strcmp(argv[i], "--queries") && i + 1 < argc) queries = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--kind") && i + 1 < argc) kind_name = argv[++i];
     else if (!std::strcmp(argv[i], "--ref-max") && i + 1 < argc) ref_max = std::atoll(argv[++i]);
+    else if (!std::strcmp(argv[i], "--ref-seconds") && i + 1 < argc) ref_seconds = std::atof(argv[++i]);
     else {
       std::fprintf(stderr, "usage: %s [--sizes N,N,...] [--queries Q] [--kind rects|maze] [--ref-max N]\n", argv[0]);
       return 2;
@@ -135,9 +145,23 @@ int main(int argc, char** argv) {
         qs.push_back({static_cast<taut::geom::Coord>(d.lo.x + fx), static_cast<taut::geom::Coord>(d.lo.y + fy)});
       }
       std::int64_t sink = 0;
-      row.map_query = seconds_of([&] {
-                        for (const Point q : qs) sink += map->cost(q).length;
-                      }, 1) / static_cast<double>(qs.size());
+      row.map_entries = static_cast<double>(map->catalog_entries()) / static_cast<double>(std::max<std::int64_t>(1, row.n));
+      // the default search (Bounded, O(log n)) against the baseline, a binary search in every
+      // covering node (O(log^2 n)), and cascading every query; the three alternate five times and
+      // the best of each is kept
+      using Search = taut::router::BendTargetMap::SlabSearch;
+      row.map_query = row.map_query_per_node = row.map_query_cascading = 1e30;
+      auto time_queries = [&](Search m) {
+        map->set_slab_search(m);
+        return seconds_of([&] {
+                 for (const Point q : qs) sink += map->cost(q).length;
+               }, 1) / static_cast<double>(qs.size());
+      };
+      for (int rep = 0; rep < 5; ++rep) {
+        row.map_query_per_node = std::min(row.map_query_per_node, time_queries(Search::PerNode));
+        row.map_query_cascading = std::min(row.map_query_cascading, time_queries(Search::Cascading));
+        row.map_query = std::min(row.map_query, time_queries(Search::Bounded));
+      }
       // the graph query answers the same (on a sample)
       for (std::size_t i = 0; i < qs.size(); i += std::max<std::size_t>(1, qs.size() / 20)) {
         const auto want = router->path(qs[i], target, taut::router::BendMetric::Combined, 1000);
@@ -161,17 +185,25 @@ int main(int argc, char** argv) {
                for (const auto& [s, t] : pairs) row.l1_found += l1.shortest(s, t).status == taut::router::WireStatus::Ok;
              }, 1) / std::max<std::size_t>(1, pairs.size());
     if (row.n <= ref_max) {
+      // query by query until the budget is spent (the reference's Hanan grid has about n^2 / 4
+      // nodes); its time per query against the graph query's
+      const auto t0 = std::chrono::steady_clock::now();
       const taut::oracle::BendReference ref(b.norm.domain, b.norm.obstacles);
-      row.ref = seconds_of([&] {
-                  row.ref_agree = 0;
-                  for (const auto& [s, t] : pairs) {
-                    const auto want = ref.best(s, t, false, 1000);
-                    const auto got = router->path(s, t, taut::router::BendMetric::Combined, 1000);
-                    row.ref_agree += want ? got.status == taut::router::WireStatus::Ok && got.length == want->length &&
-                                                got.bends == want->bends
-                                          : got.status != taut::router::WireStatus::Ok;
-                  }
-                }, 1) / std::max<std::size_t>(1, pairs.size());
+      row.ref_build = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      row.ref_agree = 0;
+      double spent = 0;
+      for (const auto& [s, t] : pairs) {
+        if (spent > ref_seconds) break;
+        std::optional<taut::oracle::BendAnswer> want;
+        const double one = seconds_of([&] { want = ref.best(s, t, false, 1000); }, 1);
+        spent += one;
+        ++row.ref_done;
+        const auto got = router->path(s, t, taut::router::BendMetric::Combined, 1000);
+        row.ref_agree += want ? got.status == taut::router::WireStatus::Ok && got.length == want->length &&
+                                    got.bends == want->bends
+                              : got.status != taut::router::WireStatus::Ok;
+      }
+      row.ref = spent / std::max(1, row.ref_done);
     }
     const auto& st = row.stats;
     std::printf("%8lld %8zu %9zu %10zu %10zu | %9.3f %9.1f | %10.2f %10.2f %10.2f | %8.2f %8.2f %5d/%d (%d) | %10.2f | %9.3f %9.1f %9.1f %9.2f %9.0f\n",
@@ -179,13 +211,18 @@ int main(int argc, char** argv) {
                 row.build / row.sort, row.combined * 1e3, row.link * 1e3, row.l1 * 1e3, row.combined / row.l1,
                 row.link / row.l1, row.found, row.queries, row.l1_found, row.shape / row.combined, row.map_build,
                 row.map_build / row.combined, row.map_pieces, row.map_query * 1e6, row.combined / row.map_query);
-    std::printf("%8s map answers equal to the graph query's on %d of %d sampled points; %.1f MiB in all\n", "",
-                row.map_agree, row.map_checked, row.map_mib);
+    std::printf("%8s map answers equal to the graph query's on %d of %d sampled points; %.1f MiB in all, %.0f catalog entries per vertex\n", "",
+                row.map_agree, row.map_checked, row.map_mib, row.map_entries);
+    std::printf("%8s map query: bounded (default) %.2f us, binary search per node %.2f us (%.2f x bounded), cascading always %.2f us (%.2f x bounded)\n", "",
+                row.map_query * 1e6, row.map_query_per_node * 1e6, row.map_query_per_node / row.map_query,
+                row.map_query_cascading * 1e6, row.map_query_cascading / row.map_query);
     std::printf("%8s map to the target's square pin: build %.3f s (%.2f x the point's), query %.2f us (%.2f x the point's)\n", "",
                 row.pin_map_build, row.pin_map_build / row.map_build, row.pin_map_query * 1e6, row.pin_map_query / row.map_query);
     if (row.ref >= 0)
-      std::printf("%8s reference: %.2f ms per query (%.0f x combined), %d of %d answers equal\n", "", row.ref * 1e3,
-                  row.ref / row.combined, row.ref_agree, row.queries);
+      std::printf("%8s reference: built in %.2f s, %.2f ms per query (%.0f x combined), %d of %d queries run, %d answers equal\n", "",
+                  row.ref_build, row.ref * 1e3, row.ref / row.combined, row.ref_done, row.queries, row.ref_agree);
+    else
+      std::printf("%8s reference: not run (n > --ref-max %lld)\n", "", static_cast<long long>(ref_max));
     std::fflush(stdout);
     rows.push_back(row);
   }

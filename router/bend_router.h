@@ -26,7 +26,8 @@
 // (Boost.Graph) on it, with the cost ordered lexicographically as (length + C * bends, bends)
 // or (bends, length), gives the optimum with its tie broken the same way every time.
 //
-// Construction (the two plane sweeps of section 3, as tracks). From every node, in every
+// Construction (section 3 builds the graph by two plane sweeps; here the tracks come from ray
+// shooting in an R-tree and the L edges from one sweep). From every node, in every
 // direction its wedge allows, a track: the free segment until the first vertex (it ends there,
 // as an edge to that vertex's node: the vertex's own tracks go on), a blockage edge crossed, or
 // the domain side (exact ray shooting, geom::ObstacleIndex). The L edges are the crossings of a
@@ -162,9 +163,10 @@ class BendRouter {
 };
 
 // Many queries to one fixed target (section 4 of de Berg, van Kreveld, Nilsson, Overmars): the
-// cost of an optimal path from any query point to the target in O(log^2 n) time, its path in
-// time proportional to its links, after O(E log n) preprocessing (one Dijkstra run from the
-// target over the graph) and O(n log n) storage.
+// cost of an optimal path from any query point to the target in O(log n) time plus the R-tree's
+// ray shots (expected O(log n)), its path by following the Dijkstra tree (a step per graph
+// vertex on it: its links, and the vertices its straight runs pass), after O(E log n)
+// preprocessing (one Dijkstra run from the target over the graph) and O(n log n) storage.
 //
 // An optimal path from a query point q that is no vertex leaves q by a "simple step" to the
 // first vertex p it touches (Lemma 2.1): straight along one of q's four tracks to the vertex the
@@ -176,10 +178,10 @@ class BendRouter {
 // query interval (q's leftward track). The paper's slab tree: the vertices in x order at the
 // leaves of a balanced tree, each node holding the lower envelope of its vertices' keys along
 // y (a piecewise-constant function, linear in the node's vertices: a Davenport-Schinzel
-// sequence); a query takes the O(log n) nodes that cover the interval and looks up y in each
-// (a binary search: O(log^2 n). The paper's fractional cascading makes it O(log n); it was built
-// and measured slower here, see SlabTree in the .cpp). The intervals are found by ray shooting
-// in the R-tree (the paper's interval finding structure).
+// sequence); a query takes the O(log n) nodes that cover the interval and looks up y in each,
+// by fractional cascading as in the paper: one binary search, then O(1) per node, so O(log n)
+// (see SlabTree in the .cpp). The intervals are found by ray shooting in the R-tree (the paper's
+// interval finding structure).
 // Exact, and equal to BendRouter::path's cost for every query (tested against it and the
 // reference).
 class BendTargetMap {
@@ -207,8 +209,18 @@ class BendTargetMap {
   BendCost cost(geom::Point q, WireStatus* status = nullptr) const;
   // An optimal path from q to the target, as BendRouter::path gives one (its cost equal).
   BendPath path(geom::Point q) const;
-  // Pieces stored in the eight slab trees' envelopes (the structure's size).
+  // Pieces of the eight slab trees' envelopes, and the entries of their catalogs (what is
+  // stored: about 4/3 of the pieces, 16 bytes each).
   std::size_t pieces() const;
+  std::size_t catalog_entries() const;
+  // How a query searches the slab trees (the same answers every way). Bounded, the default:
+  // O(log n), fractional cascading from the lowest node that holds the query's interval, except
+  // that an interval under a node of at most 4,096 leaves (most: a track from the query point to
+  // the first obstacle is short) is searched node by node, a constant's work. Cascading: always
+  // cascading (O(log n); about 1.4 times Bounded's time, measured). PerNode: a binary search in
+  // every node that covers the interval (O(log^2 n)); the benchmark's baseline.
+  enum class SlabSearch { Bounded, Cascading, PerNode };
+  void set_slab_search(SlabSearch s);
 
  private:
   struct Impl;

@@ -5,17 +5,15 @@
 // `any` keeps the Euclidean shortest wire; rectilinear, octilinear and the other lattice c: sets
 // (directions at multiples of 45 degrees: c:0,45, c:45,135, c:0,45,90, ...; geom/directions.h)
 // write the shortest wire of the class in those directions with the fewest links
-// (router::c_oriented). The ends stay where
-// they are and every vertex is an integer. A sketch or wire that leaves free space is an input
+// (router::c_oriented). The ends stay where they are and every vertex is an integer. A sketch or wire that leaves free space is an input
 // error (TIGHTEN-0001, file:line, nothing written); a net with nothing to tighten (TIGHTEN-0002)
 // or with no integer staircase in its class (TIGHTEN-0004) is written as failed (exit status 1).
 // `c:0,90` and `c:0,45,90,135` name rectilinear and octilinear; `c:` sets with a direction at
 // another angle are refused (CLI-0027) or, from <rules>, replaced by `any` (TIGHTEN-0003).
-// --min-link adds each wire's minimum-link path of its class (router/minlink.h, any angle,
-// exact rational bends; a loop's minimum-link loop, section 5.2, proven minimal unless its shortest
-// loop is convex and the loop found is above the winding bound) to --stats and --svg; it is not
-// written as a wire
-// (FORMAT.md coordinates are integers).
+// --min-link adds each wire's minimum-link path of its class (router/minlink.h, any angle, exact
+// rational bends; for a loop its minimum-link loop, section 5.2, proven minimal unless its
+// shortest loop is convex and the loop found is above the winding bound) to --stats and --svg;
+// it is not written as a wire (FORMAT.md coordinates are integers).
 #include <chrono>
 #include <optional>
 #include <cstdio>
@@ -49,11 +47,11 @@ struct NetTightening {
   std::size_t min_links = 0;
   std::size_t min_links_at_least = 0;  // a lower bound (= min_links when proven)
   std::vector<router::MinLinkPath> min_link;
-  // a loop's: false when its shortest loop is convex and the loop found has more links than the
-  // links (router::MinLinkLoop::minimal), so min_links is only an upper bound
+  // false when some loop's shortest loop is convex and the loop found has more links than the
+  // winding bound (router::MinLinkLoop::minimal), so min_links is only an upper bound
   bool min_links_proven = true;
   bool min_link_failed = false;  // TIGHTEN-0008
-  // the minimum-link path of a taut line (a loop's when `loop`)
+  // adds the minimum-link path of a taut line, or the minimum-link loop when is_loop
   void add_min_link(const router::MinLinker& ml, std::span<const geom::Point> taut, bool is_loop) {
     if (is_loop) {
       router::MinLinkLoop l = ml.loop(taut);

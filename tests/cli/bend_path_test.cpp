@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <tuple>
 #include <nlohmann/json.hpp>
 
 #include "geom/normalize.h"
@@ -434,6 +435,28 @@ TEST(BendRoute, BendsDesignPicturesAndRoutes) {
     EXPECT_EQ(got->length, k.length);
     EXPECT_EQ(got->bends, k.bends);
     test::expect_routes_check_except_clearance(xml);
+  }
+  // the rules' bend cost when no --bend-cost is given: bends.xml with bend-cost="5000" in its
+  // <rules> routes the 4-bend wire of C = 5000, and --bend-cost 0 still overrides it
+  {
+    std::string text = test::read_text(design);
+    const std::string from = "<rules bend-cost=\"0\"";
+    ASSERT_NE(text.find(from), std::string::npos);
+    text.replace(text.find(from), from.size(), "<rules bend-cost=\"5000\"");
+    const std::string rules = dir + "/rules5000.xml";
+    test::write_text(rules, text);
+    for (const auto& [extra, c, bends] : {std::tuple{std::vector<std::string>{}, 5000, 4},
+                                          std::tuple{std::vector<std::string>{"--bend-cost", "0"}, 0, 7}}) {
+      std::vector<std::string> args{"route", rules, "-q", "--metric", "combined", "-o", dir + "/rules.routed.xml"};
+      args.insert(args.end(), extra.begin(), extra.end());
+      const auto r = run_taut(args);
+      ASSERT_EQ(r.status, 0) << r.err;
+      const io::ReadResult rr = io::read_layout(dir + "/rules.routed.xml");
+      ASSERT_TRUE(rr.layout && rr.layout->routes);
+      EXPECT_EQ(rr.layout->routes->bend_cost.value_or(-1), c);
+      ASSERT_EQ(rr.layout->routes->routes.size(), 1u);
+      EXPECT_EQ(rr.layout->routes->routes[0].bends.value_or(-1), bends);
+    }
   }
   // link: no bend-cost attribute; route --tighten does not combine with it
   const auto l = run_taut({"route", design, "-q", "--metric", "link", "-o", dir + "/link.xml"});

@@ -697,9 +697,26 @@ TEST(BendRouter, TargetMapMatchesTheReference) {
     for (const bool link : {false, true})
       for (const i64 C : link ? std::vector<i64>{0} : std::vector<i64>{0, 1, 7, 1000}) {
         const BendMetric metric = link ? BendMetric::Link : BendMetric::Combined;
-        const router::BendTargetMap map(router, target, metric, C);
+        router::BendTargetMap map(router, target, metric, C);
         pieces += static_cast<i64>(map.pieces());
         const bool target_free = ref.l1().is_free(target);
+        // every query is checked below with the default search (Bounded: these small trees are
+        // searched node by node); cascading every query (the walk down from the lowest common
+        // ancestor) and the binary search per node answer the same
+        using Search = router::BendTargetMap::SlabSearch;
+        std::vector<router::BendCost> bounded;
+        for (const Point q : qs) bounded.push_back(map.cost(q));
+        for (const Search m : {Search::Cascading, Search::PerNode}) {
+          map.set_slab_search(m);
+          for (std::size_t k = 0; k < qs.size(); ++k)
+            if (const router::BendCost c = map.cost(qs[k]);
+                c.reached != bounded[k].reached || c.length != bounded[k].length || c.bends != bounded[k].bends) {
+              if (failed++ < 5)
+                ADD_FAILURE() << "seed " << seed << ": from " << str(qs[k]) << (m == Search::Cascading ? " cascading " : " per node ")
+                              << c.length << "/" << c.bends << ", bounded " << bounded[k].length << "/" << bounded[k].bends;
+            }
+        }
+        map.set_slab_search(Search::Bounded);
         if ((map.status() == WireStatus::Ok) != target_free) {
           if (failed++ < 5) ADD_FAILURE() << "seed " << seed << ": target " << str(target) << " status " << str(map.status());
           continue;
