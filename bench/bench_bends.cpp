@@ -25,9 +25,9 @@
 //   bench_bends [--sizes N,N,...] [--queries Q] [--kind rects|maze] [--ref-max N] [--ref-seconds S]
 #include <chrono>
 #include <cmath>
-#include <optional>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -69,7 +69,7 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--ref-max") && i + 1 < argc) ref_max = std::atoll(argv[++i]);
     else if (!std::strcmp(argv[i], "--ref-seconds") && i + 1 < argc) ref_seconds = std::atof(argv[++i]);
     else {
-      std::fprintf(stderr, "usage: %s [--sizes N,N,...] [--queries Q] [--kind rects|maze] [--ref-max N]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--sizes N,N,...] [--queries Q] [--kind rects|maze] [--ref-max N] [--ref-seconds S]\n", argv[0]);
       return 2;
     }
   }

@@ -22,7 +22,12 @@
 // router::BendRouter (the tree of optimal paths from the first pin); length and bends both
 // compared. (--tighten applies to l1 only.)
 //
-//   bench_net_router [--sizes N,..] [--nets M,..] [--threads T,..] [--rounds R] [--tighten] [--metric l1|combined|link] [--bend-cost C]
+// --planted: instead of nets on spread free points, nets drawn with their wires first
+// (bench/planted_nets.h: legs kept only where they keep the clearance, the whole routing then
+// passed by the independent checker), so a legal routing of every net is known to exist: the
+// completion target's instance. Their planted length is printed beside the routed length.
+//
+//   bench_net_router [--sizes N,..] [--nets M,..] [--threads T,..] [--rounds R] [--tighten] [--planted] [--metric l1|combined|link] [--bend-cost C]
 //   (--sizes: blockage vertices)
 #include <cmath>
 #include <cstdio>
@@ -36,6 +41,7 @@
 
 #include "bench/bench_util.h"
 #include "bench/free_points.h"
+#include "bench/planted_nets.h"
 #include "router/bend_router.h"
 #include "router/l1_router.h"
 #include "router/net_router.h"
@@ -53,7 +59,7 @@ using taut::geom::Polygon;
 int main(int argc, char** argv) {
   std::vector<std::int64_t> sizes = {1000}, net_counts = {10, 30, 100}, thread_counts;
   int rounds = taut::router::NetRouterOptions{}.max_rounds;
-  bool tighten = false;
+  bool tighten = false, planted = false;
   std::string metric = "l1";
   std::int64_t bend_cost = 1000;
   for (int i = 1; i < argc; ++i) {
@@ -62,10 +68,11 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--threads") && i + 1 < argc) thread_counts = taut::bench::parse_list(argv[++i]);
     else if (!std::strcmp(argv[i], "--rounds") && i + 1 < argc) rounds = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--tighten")) tighten = true;
+    else if (!std::strcmp(argv[i], "--planted")) planted = true;
     else if (!std::strcmp(argv[i], "--metric") && i + 1 < argc) metric = argv[++i];
     else if (!std::strcmp(argv[i], "--bend-cost") && i + 1 < argc) bend_cost = std::atoll(argv[++i]);
     else {
-      std::fprintf(stderr, "usage: %s [--sizes N,..] [--nets M,..] [--threads T,..] [--rounds R] [--tighten] [--metric l1|combined|link] [--bend-cost C]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--sizes N,..] [--nets M,..] [--threads T,..] [--rounds R] [--tighten] [--planted] [--metric l1|combined|link] [--bend-cost C]\n", argv[0]);
       return 2;
     }
   }
@@ -119,11 +126,21 @@ int main(int argc, char** argv) {
     double last_t = 0, last_m = 0;
     for (const std::int64_t m : net_counts) {
       std::vector<taut::router::NetPins> nets;
+      std::int64_t planted_length = -1;
+      if (planted) {
+        const taut::bench::PlantedNets pl = taut::bench::planted_nets(lay.norm, static_cast<std::size_t>(m), 10, 10, side / 2,
+                                                                      static_cast<std::uint64_t>(size * 31 + m));
+        nets = pl.nets;
+        planted_length = 0;
+        for (const auto& ws : pl.wires) planted_length += total_length(ws);
+        std::printf("%18s planted: %zu nets with a legal routing (checked; %zu drawn, %zu dropped by the checker), its length %lld\n", "",
+                    pl.nets.size(), pl.drawn, pl.checker_drops, static_cast<long long>(planted_length));
+      }
       std::mt19937_64 rng(static_cast<std::uint64_t>(size * 31 + m));
       std::map<std::pair<std::int64_t, std::int64_t>, std::vector<std::size_t>> buckets;  // unused pool points
       for (std::size_t i = 0; i < pool.size(); ++i) buckets[{pool[i].x / side, pool[i].y / side}].push_back(i);
       std::vector<char> used(pool.size(), 0);
-      for (std::int64_t tries = 0; static_cast<std::int64_t>(nets.size()) < m && tries < 20 * m; ++tries) {
+      for (std::int64_t tries = 0; !planted && static_cast<std::int64_t>(nets.size()) < m && tries < 20 * m; ++tries) {
         const std::size_t c = rng() % pool.size();
         if (used[c]) continue;
         const std::size_t k = 2 + nets.size() % 4;
@@ -193,6 +210,14 @@ int main(int argc, char** argv) {
                   static_cast<long long>(lay.points.size()), nets.size(), routed, nr.stats().first_pass,
                   static_cast<long long>(nr.stats().rips), alone_s, together_s, together_s / alone_s, growth,
                   len_alone_same > 0 ? static_cast<double>(len) / static_cast<double>(len_alone_same) : 0.0, alone_ok);
+      if (planted) {
+        std::int64_t all_len = 0;
+        for (const auto& o : nr.outcomes())
+          if (o.routed) all_len += total_length(o.wires);
+        std::printf("%18s planted nets routed: %zu of %zu (%.2f %%); routed length %lld, the planted routing's %lld\n", "", routed,
+                    nets.size(), 100.0 * static_cast<double>(routed) / static_cast<double>(std::max<std::size_t>(1, nets.size())),
+                    static_cast<long long>(all_len), static_cast<long long>(planted_length));
+      }
       std::map<std::string, int> codes;
       for (const auto& o : nr.outcomes())
         if (!o.routed) ++codes[o.code];

@@ -1031,10 +1031,11 @@ namespace {
 // query point to the first obstacle, usually short, and then a binary search in each covering
 // node is faster than the walk (which touches twice the nodes): so an interval under a node of
 // at most kDirectSpan leaves is searched that way, a constant's work, and only longer ones
-// cascade. Measured (bench_bends, 9,216 vertices): cascading every query 8.8 us a map query,
-// this 6.1 us, a binary search in every covering node (O(log^2 n), query_by_search: the
-// benchmark's baseline) 6.0 us. The catalogs hold about kSample / (kSample - 1) times the
-// envelopes' breakpoints; the envelopes are not kept.
+// cascade. Measured (bench_bends, README's Performance): this takes 1.00-1.19 times the time of a
+// binary search in every covering node (O(log^2 n), query_by_search: the benchmark's baseline),
+// cascading every query 1.12-1.45 times. A catalog holds at most kSample / (kSample - 1) times
+// its envelope's breakpoints (about 1.02 times on the benchmark's layouts: samples often repeat
+// a breakpoint); the envelopes are not kept.
 struct SlabTree {
   struct Item {
     Coord u;
@@ -1058,8 +1059,8 @@ struct SlabTree {
   static constexpr std::size_t kDirectSpan = 4096;
   std::vector<Item> items;     // sorted by u
   std::size_t leaves = 0;      // a power of two; node 1 is the root, leaf i is node leaves + i
-  std::vector<Entry> entries;  // every node's catalog, node n's at [first[n], first[n + 1])
-  std::vector<std::uint32_t> first;
+  std::vector<Entry> entries;  // every node's catalog, node n's the len[n] entries from at[n]
+  std::vector<std::uint32_t> at, len;
   std::size_t breakpoints = 0;  // of all envelopes
 
   bool better(std::int32_t a, std::int32_t b) const {
@@ -1095,16 +1096,19 @@ struct SlabTree {
     items = std::move(all);
     leaves = 1;
     while (leaves < items.size()) leaves *= 2;
-    // Children before parents; a node's envelope is freed once its parent's is made (only the
-    // catalogs are kept).
+    // Children before parents, each catalog appended to `entries` as it is made; a node's
+    // envelope is freed once its parent's is made (only the catalogs are kept).
     std::vector<std::vector<Piece>> env(2 * leaves);
-    std::vector<std::vector<Entry>> cat(2 * leaves);
     for (std::size_t i = 0; i < items.size(); ++i) {
       const Item& it = items[i];
       env[leaves + i] = {{it.vlo, static_cast<std::int32_t>(i)}, {static_cast<Coord>(it.vhi + 1), -1}};  // |v| < 2^30
     }
     breakpoints = 0;
+    entries.clear();
+    at.assign(2 * leaves, 0);
+    len.assign(2 * leaves, 0);
     std::vector<Coord> vs;
+    std::vector<Entry> out;
     for (std::size_t n = 2 * leaves; n-- > 1;) {
       const bool leaf = n >= leaves;
       if (!leaf) env[n] = merge(env[2 * n], env[2 * n + 1]);
@@ -1114,11 +1118,10 @@ struct SlabTree {
       for (const Piece& pc : env[n]) vs.push_back(pc.v0);
       if (!leaf)
         for (const std::size_t c : {2 * n, 2 * n + 1})
-          for (std::size_t k = kSample - 1; k < cat[c].size(); k += kSample) vs.push_back(cat[c][k].v);
+          for (std::size_t k = kSample - 1; k < len[c]; k += kSample) vs.push_back(entries[at[c] + k].v);
       std::sort(vs.begin(), vs.end());
       vs.erase(std::unique(vs.begin(), vs.end()), vs.end());
-      std::vector<Entry>& out = cat[n];
-      out.reserve(vs.size());
+      out.clear();
       std::size_t e = 0, d[2] = {0, 0};
       std::int32_t item = -1;
       for (const Coord v : vs) {
@@ -1126,29 +1129,23 @@ struct SlabTree {
         Entry en{v, item, {-1, -1}};
         if (!leaf)
           for (std::size_t k = 0; k < 2; ++k) {
-            const std::vector<Entry>& cc = cat[2 * n + k];
-            while (d[k] < cc.size() && cc[d[k]].v <= v) ++d[k];
+            const std::size_t c = 2 * n + k;
+            while (d[k] < len[c] && entries[at[c] + d[k]].v <= v) ++d[k];
             en.down[k] = static_cast<std::int32_t>(d[k]) - 1;
           }
         out.push_back(en);
       }
+      if (entries.size() + out.size() > std::numeric_limits<std::int32_t>::max())
+        throw std::length_error("BendTargetMap: a slab tree past 2^31 catalog entries");
+      at[n] = static_cast<std::uint32_t>(entries.size());
+      len[n] = static_cast<std::uint32_t>(out.size());
+      entries.insert(entries.end(), out.begin(), out.end());
       if (!leaf) {
         std::vector<Piece>().swap(env[2 * n]);
         std::vector<Piece>().swap(env[2 * n + 1]);
       }
     }
-    first.assign(2 * leaves + 1, 0);
-    for (std::size_t n = 1; n < 2 * leaves; ++n) {
-      if (first[n] + cat[n].size() > std::numeric_limits<std::uint32_t>::max())
-        throw std::length_error("BendTargetMap: a slab tree past 2^32 catalog entries");
-      first[n + 1] = first[n] + static_cast<std::uint32_t>(cat[n].size());
-    }
-    entries.clear();
-    entries.reserve(first[2 * leaves]);
-    for (std::size_t n = 1; n < 2 * leaves; ++n) {
-      entries.insert(entries.end(), cat[n].begin(), cat[n].end());
-      std::vector<Entry>().swap(cat[n]);
-    }
+    entries.shrink_to_fit();
   }
   // The leaves [lo, hi) of the items with u in [ulo, uhi].
   std::pair<std::size_t, std::size_t> leaf_range(Coord ulo, Coord uhi) const {
@@ -1158,8 +1155,8 @@ struct SlabTree {
   }
   // Node n's catalog's last entry with v' <= v (-1: none), by binary search.
   std::int32_t position(std::size_t n, Coord v) const {
-    const Entry* b = entries.data() + first[n];
-    const Entry* e = entries.data() + first[n + 1];
+    const Entry* b = entries.data() + at[n];
+    const Entry* e = b + len[n];
     return static_cast<std::int32_t>(std::upper_bound(b, e, v, [](Coord x, const Entry& en) { return x < en.v; }) - b) - 1;
   }
   // The best item with u in [ulo, uhi] whose range holds v; -1: none. O(log n): cascading from
@@ -1183,8 +1180,8 @@ struct SlabTree {
     std::int32_t best = -1;
     auto look = [&](std::size_t n) {
       const std::int32_t p = position(n, v);
-      if (p >= 0 && better(entries[first[n] + static_cast<std::size_t>(p)].item, best))
-        best = entries[first[n] + static_cast<std::size_t>(p)].item;
+      if (p >= 0 && better(entries[at[n] + static_cast<std::size_t>(p)].item, best))
+        best = entries[at[n] + static_cast<std::size_t>(p)].item;
     };
     for (lo += leaves, hi += leaves; lo < hi; lo >>= 1, hi >>= 1) {
       if (lo & 1) look(lo++);
@@ -1196,7 +1193,7 @@ struct SlabTree {
   void descend(std::size_t n, std::size_t nlo, std::size_t nhi, std::int32_t p, std::size_t lo, std::size_t hi,
                Coord v, std::int32_t& best) const {
     if (hi <= nlo || nhi <= lo) return;
-    const Entry* cat = entries.data() + first[n];
+    const Entry* cat = entries.data() + at[n];
     if (lo <= nlo && nhi <= hi) {
       if (p >= 0 && better(cat[p].item, best)) best = cat[p].item;
       return;
@@ -1204,10 +1201,12 @@ struct SlabTree {
     const std::size_t mid = (nlo + nhi) / 2;
     for (std::size_t k = 0; k < 2; ++k) {
       const std::size_t c = 2 * n + k;
-      const Entry* cc = entries.data() + first[c];
-      const auto size = static_cast<std::int32_t>(first[c + 1] - first[c]);
+      if (hi <= (k == 0 ? nlo : mid) || (k == 0 ? mid : nhi) <= lo) continue;
+      const Entry* cc = entries.data() + at[c];
+      const auto size = static_cast<std::int32_t>(len[c]);
       std::int32_t q = p >= 0 ? cat[p].down[k] : -1;
-      while (q + 1 < size && cc[q + 1].v <= v) ++q;  // fewer than kSample steps
+      for (std::size_t steps = 0; q + 1 < size && cc[q + 1].v <= v; ++q)
+        if (++steps >= kSample) throw std::logic_error("BendTargetMap: a slab tree's catalog pointer is off");
       descend(c, k == 0 ? nlo : mid, k == 0 ? mid : nhi, q, lo, hi, v, best);
     }
   }

@@ -210,7 +210,8 @@ class BendTargetMap {
   // An optimal path from q to the target, as BendRouter::path gives one (its cost equal).
   BendPath path(geom::Point q) const;
   // Pieces of the eight slab trees' envelopes, and the entries of their catalogs (what is
-  // stored: about 4/3 of the pieces, 16 bytes each).
+  // stored: at most 4/3 of the pieces, about 1.02 times on the benchmark's layouts; 16 bytes
+  // each).
   std::size_t pieces() const;
   std::size_t catalog_entries() const;
   // How a query searches the slab trees (the same answers every way). Bounded, the default:
