@@ -30,6 +30,7 @@
 #include "geom/types.h"
 #include "router/check.h"
 #include "router/net_router.h"
+#include "router/spm.h"
 
 namespace taut::bench {
 
@@ -76,17 +77,8 @@ inline PlantedNets planted_nets(const geom::NormalizedObstacles& norm, std::size
   auto meets_open = [](const Seg& g, std::int64_t x0, std::int64_t y0, std::int64_t x1, std::int64_t y1) {
     return g.x1 > x0 && g.x0 < x1 && g.y1 > y0 && g.y0 < y1;
   };
-  // A point strictly inside a closed obstacle or on its boundary (not free for a pin or a leg).
-  auto in_obstacle = [&](geom::Point p) {
-    // no edge through p, and an odd count of edges crossed by the ray to the right
-    std::int64_t crossings = 0;
-    for (auto it = blockage_edges.qbegin(bgi::intersects(BBox(BPoint(p.x, p.y), BPoint(dom.hi.x, p.y)))); it != blockage_edges.qend(); ++it) {
-      const Seg& g = it->second;
-      if (g.x0 <= p.x && p.x <= g.x1 && g.y0 <= p.y && p.y <= g.y1) return true;  // on an edge
-      if (g.x0 == g.x1 && g.x0 > p.x && g.y0 <= p.y && p.y < g.y1) ++crossings;  // half-open in y
-    }
-    return crossings % 2 == 1;
-  };
+  // Whether a point is free (one point location in a source-less shortest path map).
+  const router::L1Map probe(dom, norm.obstacles, {});
   auto leg_ok = [&](geom::Point p, geom::Point q, std::size_t net) {
     const Seg g = seg_of(p, q);
     if (g.x0 - a < dom.lo.x || g.y0 - a < dom.lo.y || g.x1 + a > dom.hi.x || g.y1 + a > dom.hi.y) return false;
@@ -94,7 +86,7 @@ inline PlantedNets planted_nets(const geom::NormalizedObstacles& norm, std::size
     for (auto it = blockage_edges.qbegin(bgi::intersects(ga)); it != blockage_edges.qend(); ++it)
       if (meets_open(it->second, g.x0 - a, g.y0 - a, g.x1 + a, g.y1 + a)) return false;
     // no edge meets the open grown box, so it lies in one face: free when p is
-    if (in_obstacle(p)) return false;
+    if (!probe.is_free(p)) return false;
     const BBox gb(BPoint(g.x0 - b, g.y0 - b), BPoint(g.x1 + b, g.y1 + b));
     for (auto it = planted.qbegin(bgi::intersects(gb)); it != planted.qend(); ++it) {
       if (it->second == net) continue;
@@ -114,7 +106,7 @@ inline PlantedNets planted_nets(const geom::NormalizedObstacles& norm, std::size
     const std::size_t id = out.nets.size();
     const std::size_t k = 2 + id % (max_pins - 1);
     const geom::Point p0{static_cast<geom::Coord>(coord(dom.lo.x + a, dom.hi.x - a)), static_cast<geom::Coord>(coord(dom.lo.y + a, dom.hi.y - a))};
-    if (in_obstacle(p0) || !leg_ok(p0, p0, id)) continue;
+    if (!leg_ok(p0, p0, id)) continue;
     std::vector<geom::Point> pins{p0}, verts{p0};
     std::vector<std::vector<geom::Point>> wires;
     for (int attempt = 0; pins.size() < k && attempt < 20 * static_cast<int>(k); ++attempt) {
