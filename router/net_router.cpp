@@ -103,6 +103,15 @@ bool segment_enters(Point p, Point q, const Ring& c) {
   return convex_interiors_meet(p == q ? Ring{p} : Ring{p, q}, c);
 }
 
+// The closed segment pq meets the closed polygon bounded by ring c.
+bool segment_touches(Point p, Point q, const Ring& c) {
+  if (geom::locate(p, c) != geom::Location::Outside || geom::locate(q, c) != geom::Location::Outside) return true;
+  for (std::size_t i = 0; i < c.size(); ++i)
+    if (geom::intersect(geom::Segment{p, q}, geom::Segment{c[i], c[(i + 1) % c.size()]}) != geom::SegmentIntersection::None)
+      return true;
+  return false;
+}
+
 }  // namespace
 
 struct NetSpace::Index {
@@ -444,20 +453,28 @@ geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel lev
   return out;
 }
 
-std::vector<std::size_t> NetSpace::wire_blockers(std::size_t net, std::span<const Point> line) const {
-  const Index& ix = *index_;
+namespace {
+// The nets (other than `net`) with a grown wire piece that `meets` a segment of the line.
+template <class Index, class Meets>
+std::vector<std::size_t> nets_met(const Index& ix, std::size_t net, std::span<const Point> line, Meets meets) {
   std::set<std::size_t> out;
-  if (line.empty()) return {};
   for_segments(line, [&](Point p, Point q) {
     const Point pq[2] = {p, q};
-    const Box sb = box_of(pq);
-    std::vector<Index::WireEntry> wf;
-    ix.wire_tree.query(bgi::intersects(sb), std::back_inserter(wf));
+    std::vector<typename Index::WireEntry> wf;
+    ix.wire_tree.query(bgi::intersects(box_of(pq)), std::back_inserter(wf));
     for (const auto& [box, id] : wf)
-      if (id.first != net && !out.count(id.first) && segment_enters(p, q, ix.wire_pieces[id.first][id.second]))
-        out.insert(id.first);
+      if (id.first != net && !out.count(id.first) && meets(p, q, ix.wire_pieces[id.first][id.second])) out.insert(id.first);
   });
   return {out.begin(), out.end()};
+}
+}  // namespace
+
+std::vector<std::size_t> NetSpace::wire_blockers(std::size_t net, std::span<const Point> line) const {
+  return nets_met(*index_, net, line, segment_enters);
+}
+
+std::vector<std::size_t> NetSpace::wire_touchers(std::size_t net, std::span<const Point> line) const {
+  return nets_met(*index_, net, line, segment_touches);
 }
 
 std::vector<Box> NetSpace::wire_boxes(std::size_t net) const {
@@ -1172,7 +1189,21 @@ NetRouter::Explained NetRouter::explain(const NetRouteFn& route, std::size_t net
     for (const std::size_t x : space_.wire_blockers(net, line)) bl.insert(x);
   for (const std::size_t x : space_.pad_blockers(net)) bl.insert(x);
   e.blockers.assign(bl.begin(), bl.end());
-  if (e.blockers.empty()) return e;  // keeps the full attempt's own reason
+  if (e.blockers.empty()) {
+    // Its way alone enters no other net's grown wire. When it runs at exactly the clearance from
+    // some, those may close it: two grown obstacles that touch merge, so a gap of width zero
+    // between them, where a wire would be legal, is shut (see the header's limits).
+    std::set<std::size_t> touch;
+    for (const auto& line : pins.wires)
+      for (const std::size_t x : space_.wire_touchers(net, line)) touch.insert(x);
+    if (touch.empty()) return e;  // keeps the full attempt's own reason
+    e.blockers.assign(touch.begin(), touch.end());
+    e.code = "ROUTE-0012";
+    e.reason = "the wires of other nets block every way: its way alone runs at exactly the clearance (" + b +
+               " DBU, w + s) from the wires of nets " + net_list(e.blockers, name) +
+               ", in a gap of width zero between grown wires, which the router closes (a limitation)";
+    return e;
+  }
   e.code = "ROUTE-0012";
   bool limit = false;
   for (const std::size_t x : e.blockers) limit = limit || out_[x].rips >= options_.max_rips;

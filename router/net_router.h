@@ -168,6 +168,9 @@ class NetSpace {
   // and, separately, the nets whose grown pins it enters.
   std::vector<std::size_t> wire_blockers(std::size_t net, std::span<const geom::Point> line) const;
   std::vector<std::size_t> pin_blockers(std::size_t net, std::span<const geom::Point> line) const;
+  // The nets (other than `net`) whose grown wires the polyline touches (meets, boundary
+  // included): where it enters none, the ones it runs at exactly the clearance from.
+  std::vector<std::size_t> wire_touchers(std::size_t net, std::span<const geom::Point> line) const;
   // The nets (other than `net`) whose grown wires enter one of its shape pins (for a shape that
   // is not a rectangle: whose box they meet), which the router then cannot take.
   std::vector<std::size_t> pad_blockers(std::size_t net) const;

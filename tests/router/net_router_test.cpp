@@ -788,6 +788,46 @@ TEST(NetRouter, RipUpLetsACutOffNetThrough) {
   EXPECT_NE(stuck.outcomes()[1].reason.find("\"a\""), std::string::npos) << stuck.outcomes()[1].reason;
 }
 
+// A net whose only way runs at exactly the clearance between two other nets' wires: legal (the
+// checker passes it), but the grown wires touch there and merge, closing the gap (a limitation).
+// Its reason names both nets (the way alone enters neither, so the wire test alone named none
+// and the net kept the full attempt's own reason, walled in: found on planted benchmark nets).
+TEST(NetRouter, AGapOfWidthZeroBetweenWiresIsNamed) {
+  const geom::Box domain{{0, 0}, {100, 100}};
+  // a band 47 < y < 53 between two blockages; w = 0, s = 1: wires keep 1 from blockages and
+  // from each other
+  const std::vector<Polygon> walls{{{{0, 0}, {100, 0}, {100, 47}, {0, 47}}, {}}, {{{0, 53}, {100, 53}, {100, 100}, {0, 100}}, {}}};
+  const geom::NormalizedObstacles norm = geom::normalize_obstacles(walls, domain);
+  std::vector<router::NetPins> nets(3);
+  nets[0] = {"a", {Polygon{{{20, 49}}, {}}, Polygon{{{80, 49}}, {}}}};
+  nets[1] = {"c", {Polygon{{{30, 51}}, {}}, Polygon{{{70, 51}}, {}}}};  // its pins away from a's
+  nets[2] = {"b", {Polygon{{{5, 50}}, {}}, Polygon{{{95, 50}}, {}}}};
+  const router::NetRules rules{0, 1};
+  // the wire along y = 50 is legal among a's and c's straight wires
+  {
+    std::vector<router::CheckNet> planted(3);
+    const std::vector<std::vector<Point>> ws{{{20, 49}, {80, 49}}, {{30, 51}, {70, 51}}, {{5, 50}, {95, 50}}};
+    for (std::size_t i = 0; i < 3; ++i) {
+      planted[i].name = nets[i].name;
+      for (const Polygon& p : nets[i].pins) planted[i].pins.push_back({"p", p.outer.front(), std::nullopt, 0});
+      planted[i].wires.push_back({ws[i], 0});
+      planted[i].routed = true;
+    }
+    EXPECT_TRUE(router::check_routes(norm, planted, {0, 1}).problems.empty());
+  }
+  router::NetRouter nr(norm.domain, norm.obstacles, nets, rules);
+  nr.run(router::NetRouter::l1_router(false));
+  ASSERT_TRUE(nr.outcomes()[0].routed);
+  ASSERT_TRUE(nr.outcomes()[1].routed);
+  const router::NetOutcome& o = nr.outcomes()[2];
+  ASSERT_FALSE(o.routed);
+  EXPECT_EQ(o.code, "ROUTE-0012") << o.reason;
+  EXPECT_EQ(o.blockers, (std::vector<std::size_t>{0, 1}));
+  EXPECT_NE(o.reason.find("gap of width zero"), std::string::npos) << o.reason;
+  EXPECT_NE(o.reason.find("\"a\""), std::string::npos) << o.reason;
+  EXPECT_NE(o.reason.find("\"c\""), std::string::npos) << o.reason;
+}
+
 // A net that cannot be routed says why, at the first level where it fails: walled in by a ring
 // of blockage (the router's own reason), shut out by the clearance (a gap too narrow for w/2 + s
 // on each side), or cut off by the pins of another net.
