@@ -31,6 +31,7 @@
 #include "router/check.h"
 #include "router/net_router.h"
 #include "router/spm.h"
+#include "support/net_layouts.h"
 
 namespace taut::bench {
 
@@ -72,7 +73,7 @@ inline PlantedNets planted_nets(const geom::NormalizedObstacles& norm, std::size
     for (const auto& h : o.holes) ring(h);
   }
   bgi::rtree<std::pair<BBox, Seg>, bgi::quadratic<16>> blockage_edges(edges.begin(), edges.end());
-  bgi::rtree<std::pair<BBox, std::size_t>, bgi::quadratic<16>> planted;  // legs, with their net
+  bgi::rtree<std::pair<BBox, std::pair<Seg, std::size_t>>, bgi::quadratic<16>> planted;  // legs, with their net
   // Does the closed segment g meet the open box (x0, x1) x (y0, y1)?
   auto meets_open = [](const Seg& g, std::int64_t x0, std::int64_t y0, std::int64_t x1, std::int64_t y1) {
     return g.x1 > x0 && g.x0 < x1 && g.y1 > y0 && g.y0 < y1;
@@ -88,19 +89,13 @@ inline PlantedNets planted_nets(const geom::NormalizedObstacles& norm, std::size
     // no edge meets the open grown box, so it lies in one face: free when p is
     if (!probe.is_free(p)) return false;
     const BBox gb(BPoint(g.x0 - b, g.y0 - b), BPoint(g.x1 + b, g.y1 + b));
-    for (auto it = planted.qbegin(bgi::intersects(gb)); it != planted.qend(); ++it) {
-      if (it->second == net) continue;
-      const BBox& o = it->first;
-      const Seg og{bg::get<bg::min_corner, 0>(o), bg::get<bg::min_corner, 1>(o), bg::get<bg::max_corner, 0>(o),
-                   bg::get<bg::max_corner, 1>(o)};
-      if (meets_open(og, g.x0 - b, g.y0 - b, g.x1 + b, g.y1 + b)) return false;
-    }
+    for (auto it = planted.qbegin(bgi::intersects(gb)); it != planted.qend(); ++it)
+      if (it->second.second != net && meets_open(it->second.first, g.x0 - b, g.y0 - b, g.x1 + b, g.y1 + b)) return false;
     return true;
   };
   std::mt19937_64 rng(seed);
   auto coord = [&](std::int64_t lo, std::int64_t hi) { return lo + static_cast<std::int64_t>(rng() % static_cast<std::uint64_t>(hi - lo + 1)); };
   PlantedNets out;
-  std::vector<std::size_t> net_of;  // planted index -> net index in `out`
   for (std::size_t tries = 0; out.nets.size() < m && tries < 50 * m; ++tries) {
     ++out.drawn;
     const std::size_t id = out.nets.size();
@@ -126,7 +121,10 @@ inline PlantedNets planted_nets(const geom::NormalizedObstacles& norm, std::size
     }
     if (pins.size() < k) continue;
     for (const auto& wire : wires)
-      for (std::size_t i = 0; i + 1 < wire.size(); ++i) planted.insert({box_of(seg_of(wire[i], wire[i + 1])), id});
+      for (std::size_t i = 0; i + 1 < wire.size(); ++i) {
+        const Seg g = seg_of(wire[i], wire[i + 1]);
+        planted.insert({box_of(g), {g, id}});
+      }
     router::NetPins np;
     np.name = "n" + std::to_string(id);
     for (const geom::Point p : pins) np.pins.push_back(geom::Polygon{{p}, {}});
@@ -134,14 +132,8 @@ inline PlantedNets planted_nets(const geom::NormalizedObstacles& norm, std::size
     out.wires.push_back(std::move(wires));
   }
   // the independent checker on the planted routing; nets with a problem are dropped
-  std::vector<router::CheckNet> check(out.nets.size());
-  for (std::size_t i = 0; i < out.nets.size(); ++i) {
-    check[i].name = out.nets[i].name;
-    for (const geom::Polygon& p : out.nets[i].pins) check[i].pins.push_back({"p", p.outer.front(), std::nullopt, 0});
-    for (const auto& wv : out.wires[i]) check[i].wires.push_back({wv, 0});
-    check[i].routed = true;
-  }
-  const router::CheckResult r = router::check_routes(norm, check, router::CheckRules{w, s});
+  const router::CheckResult r =
+      router::check_routes(norm, test::check_nets(out.nets, out.wires), router::CheckRules{w, s});
   std::vector<char> bad(out.nets.size(), 0);
   for (const router::CheckProblem& p : r.problems) bad[p.net] = 1;
   PlantedNets kept;

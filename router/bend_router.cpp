@@ -1032,7 +1032,7 @@ namespace {
 // node is faster than the walk (which touches twice the nodes): so an interval under a node of
 // at most kDirectSpan leaves is searched that way, a constant's work, and only longer ones
 // cascade. Measured (bench_bends, README's Performance): this takes 1.00-1.19 times the time of a
-// binary search in every covering node (O(log^2 n), query_by_search: the benchmark's baseline),
+// binary search in every covering node (O(log^2 n), query with direct_span unbounded: the benchmark's baseline),
 // cascading every query 1.12-1.45 times. A catalog holds at most kSample / (kSample - 1) times
 // its envelope's breakpoints (about 1.02 times on the benchmark's layouts: samples often repeat
 // a breakpoint); the envelopes are not kept.
@@ -1161,7 +1161,8 @@ struct SlabTree {
   }
   // The best item with u in [ulo, uhi] whose range holds v; -1: none. O(log n): cascading from
   // the lowest common ancestor when it spans more than direct_span leaves, else a binary search
-  // in each covering node (O(log^2 direct_span), a constant).
+  // in each covering node (O(log^2 direct_span), a constant; with direct_span >= leaves always
+  // that, O(log^2 n): the benchmark's baseline).
   std::int32_t query(Coord ulo, Coord uhi, Coord v, std::size_t direct_span) const {
     if (ulo > uhi || items.empty()) return -1;
     const auto [lo, hi] = leaf_range(ulo, uhi);
@@ -1192,7 +1193,7 @@ struct SlabTree {
   // Node n spans leaves [nlo, nhi); p: its catalog's last entry with v' <= v (-1: none).
   void descend(std::size_t n, std::size_t nlo, std::size_t nhi, std::int32_t p, std::size_t lo, std::size_t hi,
                Coord v, std::int32_t& best) const {
-    if (hi <= nlo || nhi <= lo) return;
+    // [nlo, nhi) meets [lo, hi): the caller skips the children outside it
     const Entry* cat = entries.data() + at[n];
     if (lo <= nlo && nhi <= hi) {
       if (p >= 0 && better(cat[p].item, best)) best = cat[p].item;
@@ -1209,12 +1210,6 @@ struct SlabTree {
         if (++steps >= kSample) throw std::logic_error("BendTargetMap: a slab tree's catalog pointer is off");
       descend(c, k == 0 ? nlo : mid, k == 0 ? mid : nhi, q, lo, hi, v, best);
     }
-  }
-  // The same answer by a binary search in every node that covers the interval: O(log^2 n).
-  std::int32_t query_by_search(Coord ulo, Coord uhi, Coord v) const {
-    if (ulo > uhi || items.empty()) return -1;
-    const auto [lo, hi] = leaf_range(ulo, uhi);
-    return search_nodes(lo, hi, v);
   }
   std::size_t pieces() const { return breakpoints; }
   std::size_t catalog_entries() const { return entries.size(); }
@@ -1324,8 +1319,10 @@ WireStatus BendTargetMap::Impl::best(Point q, Best& b) const {
     for (const int bdir : {(a + 1) & 3, (a + 3) & 3}) {
       const SlabTree& s = slabs[kind(a, bdir)];
       const Coord v = h ? q.y : q.x;
-      const std::int32_t i = search == SlabSearch::PerNode ? s.query_by_search(range->first, range->second, v)
-                             : s.query(range->first, range->second, v, search == SlabSearch::Cascading ? 0 : SlabTree::kDirectSpan);
+      const std::size_t direct = search == SlabSearch::PerNode     ? std::numeric_limits<std::size_t>::max()
+                                 : search == SlabSearch::Cascading ? 0
+                                                                   : SlabTree::kDirectSpan;
+      const std::int32_t i = s.query(range->first, range->second, v, direct);
       if (i < 0) continue;
       const SlabTree::Item& it = s.items[static_cast<std::size_t>(i)];
       // cost: key + C - (kStep[a] + kStep[b]) . q in the length

@@ -804,17 +804,8 @@ TEST(NetRouter, AGapOfWidthZeroBetweenWiresIsNamed) {
   nets[2] = {"b", {Polygon{{{5, 50}}, {}}, Polygon{{{95, 50}}, {}}}};
   const router::NetRules rules{0, 1};
   // the wire along y = 50 is legal among a's and c's straight wires
-  {
-    std::vector<router::CheckNet> planted(3);
-    const std::vector<std::vector<Point>> ws{{{20, 49}, {80, 49}}, {{30, 51}, {70, 51}}, {{5, 50}, {95, 50}}};
-    for (std::size_t i = 0; i < 3; ++i) {
-      planted[i].name = nets[i].name;
-      for (const Polygon& p : nets[i].pins) planted[i].pins.push_back({"p", p.outer.front(), std::nullopt, 0});
-      planted[i].wires.push_back({ws[i], 0});
-      planted[i].routed = true;
-    }
-    EXPECT_TRUE(router::check_routes(norm, planted, {0, 1}).problems.empty());
-  }
+  const std::vector<std::vector<std::vector<Point>>> ws{{{{20, 49}, {80, 49}}}, {{{30, 51}, {70, 51}}}, {{{5, 50}, {95, 50}}}};
+  EXPECT_TRUE(router::check_routes(norm, check_nets(nets, ws), {0, 1}).problems.empty());
   router::NetRouter nr(norm.domain, norm.obstacles, nets, rules);
   nr.run(router::NetRouter::l1_router(false));
   ASSERT_TRUE(nr.outcomes()[0].routed);
