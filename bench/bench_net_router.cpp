@@ -228,9 +228,10 @@ int main(int argc, char** argv) {
         std::printf("%18s bends: %lld together, %lld alone (all nets each way); %lld windows checked by the relaxation\n", "",
                     static_cast<long long>(together_bends), static_cast<long long>(alone_bends),
                     static_cast<long long>(nr.stats().relaxed));
-      std::printf("%18s nets tried %lld times in %lld windows (%lld whole): building spaces %.3f s, paths %.3f s\n", "",
+      std::printf("%18s nets tried %lld times in %lld windows (%lld whole): building spaces %.3f s, paths %.3f s (whole windows: %.3f s); %lld attempts stopped at the window limit, last pass routed %zu of %zu\n", "",
                   static_cast<long long>(nr.stats().attempts), static_cast<long long>(nr.stats().windows),
-                  static_cast<long long>(nr.stats().whole), nr.stats().space_seconds, nr.stats().route_seconds);
+                  static_cast<long long>(nr.stats().whole), nr.stats().space_seconds, nr.stats().route_seconds, nr.stats().whole_seconds,
+                  static_cast<long long>(nr.stats().capped), nr.stats().last_pass_routed, nr.stats().last_pass);
       if (tighten) {
         std::vector<taut::router::NetLines> wires;
         std::int64_t bends_before = 0, bends_after = 0, bends_alone = 0, pieces = 0;

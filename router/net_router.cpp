@@ -584,6 +584,8 @@ void add_counts(NetRouterStats& to, const NetRouterStats& c) {
   to.relaxed += c.relaxed;
   to.space_seconds += c.space_seconds;
   to.route_seconds += c.route_seconds;
+  to.whole_seconds += c.whole_seconds;
+  to.capped += c.capped;
 }
 
 // Calls f(k) for k in [0, n) on up to `threads` threads (the caller's one of them); then rethrows
@@ -703,6 +705,7 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
     const auto t2 = Clock::now();
     st.space_seconds += std::chrono::duration<double>(t1 - t0).count();
     st.route_seconds += std::chrono::duration<double>(t2 - t1).count();
+    if (whole) st.whole_seconds += std::chrono::duration<double>(t2 - t0).count();
     ++st.windows;
     st.whole += whole;
     if (whole) return t;
@@ -798,6 +801,13 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
       m = std::max(4 * m, len + 3);
     } else if (a.code == "ROUTE-0002") {  // unreachable: a larger window may hold a way round,
       if (apart_in_window(obs, pins, w)) return t;  // unless a pin is shut in inside this one
+      // While rounds remain, a net the other nets' wires shut out of its first windows is taken as
+      // blocked (its blockers are ripped up) rather than followed round a detour up to the whole
+      // domain; the last pass (run) tries every net left unrouted without this limit.
+      if (level == NetSpaceLevel::Full && capped_ && options_.search_windows > 0 && st.windows >= options_.search_windows) {
+        ++st.capped;
+        return t;
+      }
       m *= 4;
     } else {  // a pin that is not free, or no staircase: decided near the pins, in any window
       return t;
@@ -1019,6 +1029,7 @@ void NetRouter::run(const NetRouteFn& route) {
     prog.routed = routed_now;
     options_.progress(prog);
   };
+  capped_ = true;
   route_in_order(route, order_, [&](std::size_t i) {
     routed_now += out_[i].routed;
     tell();
@@ -1118,6 +1129,17 @@ void NetRouter::run(const NetRouteFn& route) {
       out_[i].rips = rips[i];
       space_.set_wires(i, out_[i].wires);
     }
+  }
+  // The last pass: every net still unrouted, tried without the window limit of the rounds (a
+  // detour the rounds did not look for, or a net the best state had left behind), in order.
+  capped_ = false;
+  {
+    std::vector<std::size_t> left;
+    for (const std::size_t i : order_)
+      if (!out_[i].routed) left.push_back(i);
+    stats_.last_pass = left.size();
+    route_in_order(route, left, [&](std::size_t i) { stats_.last_pass_routed += out_[i].routed; });
+    best_score = score();
   }
   // Explaining reads the final state only: the nets are explained at once.
   prog.phase = NetRouterProgress::Phase::Explain;

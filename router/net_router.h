@@ -79,7 +79,10 @@
 // net is routed, and the blockers are routed again after it (in their order). A net is ripped up
 // at most `max_rips` times (PathFinder's history, in its simplest form: a net that keeps being
 // in the way stays put). The best state seen (most nets routed, then least total length) is the
-// one kept. When nets stay unrouted, each gets the most telling reason (NetOutcome::reason):
+// one kept. In the first pass and the rounds a net finding no way in its first search_windows
+// windows (NetRouterOptions) is taken as blocked there, not widened to the whole domain; the
+// last pass then tries each net still unrouted without that limit, and places what it routes.
+// When nets stay unrouted, each gets the most telling reason (NetOutcome::reason):
 //   - the net cannot be routed even alone, among the plain blockages: the router's own reason
 //     (an enclosed pin, a pin in a blockage, ...);
 //   - alone with the clearance it cannot: the clearance closes its way (a gap narrower than the
@@ -272,6 +275,12 @@ struct NetRouterOptions {
   // to be placed is likely to change its first window (few attempts are then wasted). false:
   // any net ahead is tried (for tests: every check of an attempt's validity is then exercised).
   bool cautious = true;
+  // In the first pass and the rip-up rounds, a net that finds no way among the other nets' wires
+  // in this many windows (each 4 times the last's margin) is taken as blocked by them, and its
+  // blockers are ripped up, instead of its window growing to the whole domain to look for a
+  // detour. Every net still unrouted after the rounds is then tried once more without the limit
+  // (so a net is left unrouted only when no way exists in the whole final layout). 0: no limit.
+  int search_windows = 2;
 };
 
 struct NetRouterStats {
@@ -282,11 +291,16 @@ struct NetRouterStats {
   std::int64_t relaxed = 0;       // bend-aware metrics: windows checked by the relaxation (see above)
   std::int64_t rips = 0;          // nets ripped up in all
   std::size_t first_pass = 0;     // nets routed by the first pass
+  // Nets unrouted after the rounds, tried again in the last pass without the window limit
+  // (NetRouterOptions::search_windows), and how many of them it routed.
+  std::size_t last_pass = 0, last_pass_routed = 0;
+  std::int64_t capped = 0;  // attempts that stopped at the window limit
   // With threads > 1: attempts made ahead of their turn, and those of them tried again because a
   // wire placed in between met their window (not counted in attempts/windows above, which are
   // the same for every thread count; these two depend on timing).
   std::int64_t speculated = 0, redone = 0;
   double space_seconds = 0, route_seconds = 0;  // building obstacles; routing in them
+  double whole_seconds = 0;  // of those two, in windows on the whole domain
 };
 
 class NetRouter {
@@ -346,6 +360,7 @@ class NetRouter {
   std::vector<std::size_t> order_;
   NetRouterStats stats_;
   std::vector<std::optional<NetAttempt>> alone_;  // alone(), per net
+  bool capped_ = false;  // Full attempts stop after options_.search_windows unreachable windows
   // With threads > 1: the boxes of every wire piece placed or removed since speculation began,
   // with their net (a speculative attempt is kept when none of another net meets its window).
   std::vector<std::pair<geom::Box, std::size_t>> changed_;

@@ -788,6 +788,51 @@ TEST(NetRouter, RipUpLetsACutOffNetThrough) {
   EXPECT_NE(stuck.outcomes()[1].reason.find("\"a\""), std::string::npos) << stuck.outcomes()[1].reason;
 }
 
+// NetRouterOptions::search_windows: a net shut out of its first two windows by another net's wire
+// is taken as blocked while the rounds last, and the last pass routes it round its detour. A
+// wall of blockage across the layout has a gap, which net b's short wire plugs (b goes first:
+// shortest first); a's only way is over the wall's top, 45,000 above its pins, outside its
+// second window (margin 4 x 4,036). With no rip-up allowed the rounds cannot help; a must still
+// be routed, by the last pass, with the wires the unlimited search gives.
+TEST(NetRouter, TheLastPassRoutesADetourBeyondTheWindowLimit) {
+  const geom::Box domain{{0, 0}, {10000, 100000}};
+  const std::vector<Polygon> wall{{{{4900, 0}, {5100, 0}, {5100, 49000}, {4900, 49000}}, {}},
+                                  {{{4900, 51000}, {5100, 51000}, {5100, 95000}, {4900, 95000}}, {}}};
+  const geom::NormalizedObstacles norm = geom::normalize_obstacles(wall, domain);
+  std::vector<router::NetPins> nets(2);
+  nets[0] = {"a", {Polygon{{{1000, 50000}}, {}}, Polygon{{{9000, 50000}}, {}}}};
+  nets[1] = {"b", {Polygon{{{5000, 49000}}, {}}, Polygon{{{5000, 51000}}, {}}}};
+  auto run = [&](int search_windows) {
+    router::NetRouterOptions o;
+    o.max_rips = 0;
+    o.search_windows = search_windows;
+    auto nr = std::make_unique<router::NetRouter>(norm.domain, norm.obstacles, nets, router::NetRules{0, 0}, o);
+    nr->run(router::NetRouter::l1_router(false));
+    return nr;
+  };
+  const auto limited = run(2), unlimited = run(0);
+  EXPECT_EQ(limited->order(), (std::vector<std::size_t>{1, 0}));
+  for (const auto* nr : {limited.get(), unlimited.get()}) {
+    ASSERT_TRUE(nr->outcomes()[0].routed);
+    ASSERT_TRUE(nr->outcomes()[1].routed);
+    EXPECT_TRUE(router::check_routes(norm, check_nets(nets, *nr), {0, 0}).problems.empty());
+  }
+  EXPECT_EQ(limited->outcomes()[0].wires, unlimited->outcomes()[0].wires);
+  std::int64_t len = 0;
+  for (const auto& w : limited->outcomes()[0].wires)
+    for (std::size_t i = 1; i < w.size(); ++i) len += std::abs(w[i].x - w[i - 1].x) + std::abs(w[i].y - w[i - 1].y);
+  EXPECT_EQ(len, 8000 + 2 * 45000);  // over the wall's top at y = 95,000
+  // limited: a stopped at the limit (first pass and rounds), then routed by the last pass
+  EXPECT_EQ(limited->stats().first_pass, 1u);
+  EXPECT_GE(limited->stats().capped, 2);
+  EXPECT_EQ(limited->stats().last_pass, 1u);
+  EXPECT_EQ(limited->stats().last_pass_routed, 1u);
+  // unlimited: a follows its detour in the first pass
+  EXPECT_EQ(unlimited->stats().first_pass, 2u);
+  EXPECT_EQ(unlimited->stats().capped, 0);
+  EXPECT_EQ(unlimited->stats().last_pass, 0u);
+}
+
 // A net whose only way runs at exactly the clearance between two other nets' wires: legal (the
 // checker passes it), but the grown wires touch there and merge, closing the gap (a limitation).
 // Its reason names both nets (the way alone enters neither, so the wire test alone named none
