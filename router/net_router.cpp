@@ -325,7 +325,8 @@ void NetSpace::set_wires(std::size_t net, const Lines& wires) {
     ix.union_tree.insert(Index::WireEntry{box_of(ix.wire_union[net][k].outer), {net, k}});
 }
 
-geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel level, std::optional<geom::Box> window) const {
+geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel level, std::optional<geom::Box> window,
+                                              std::span<const char> only) const {
   const Index& ix = *index_;
   const Box dom = window ? clipped(*window, domain_) : domain_;
   const bool plain = level == NetSpaceLevel::Plain;
@@ -355,7 +356,7 @@ geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel lev
     ix.union_tree.query(bgi::intersects(dom), std::back_inserter(wf));
     std::sort(wf.begin(), wf.end(), [](const Index::WireEntry& x, const Index::WireEntry& y) { return x.second < y.second; });
     for (const auto& [box, id] : wf)
-      if (id.first != net) {
+      if (id.first != net && (only.empty() || only[id.first])) {
         dynamic.push_back(ix.wire_union[id.first][id.second]);
         dynamic_boxes.push_back(box);
       }
@@ -663,7 +664,7 @@ Box NetRouter::first_window(std::size_t net) const {
   return clipped(geom::grown_box(hp, first_margin(space_.net(net), hp, space_.blockage_clearance(), space_.net_clearance())), dom);
 }
 
-NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, NetSpaceLevel level) const {
+NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, NetSpaceLevel level, std::span<const char> only) const {
   using Clock = std::chrono::steady_clock;
   Tried t;
   NetRouterStats& st = t.counts;
@@ -674,6 +675,7 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
   const Box& dom = space_.domain();
   const Box hp = pts.empty() ? dom : box_of(pts);
   std::int64_t m = first_margin(pins, hp, space_.blockage_clearance(), space_.net_clearance());  // as first_window()
+  bool fitted = false;  // grown once to the margin its answer needs (see below)
   // the net's rectangular shape pins (cut out of the grown blockages) that meet none of its
   // other pins (the wires over a pad are trimmed, and one that reaches another pin there must stay)
   std::vector<Box> pads;
@@ -695,7 +697,7 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
       // the space may be read by several threads at once, and is changed only by place()
       std::shared_lock lock(space_mutex_);
       if (st.windows == 0) t.since = changed_.size();
-      obs = space_.obstacles(net, level, whole ? std::nullopt : std::optional<Box>(w));
+      obs = space_.obstacles(net, level, whole ? std::nullopt : std::optional<Box>(w), only);
     }
     const auto t1 = Clock::now();
     t.window = w;
@@ -761,6 +763,7 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
     } else if (a.routed) {
       const std::int64_t len = l1_length(a.wires);
       bool proven;
+      std::optional<std::int64_t> fit;  // a margin in which this answer would pass its proof
       if (pins.pins.size() == 2 && is_point_pin(pins.pins[0]) && is_point_pin(pins.pins[1])) {
         // A way out through a top or bottom side at distance d from the pins' box climbs at
         // least |dy| + 2d, through a left or right one |dx| + 2d: a lower bound in L1 and in
@@ -775,6 +778,7 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
         if (w.hi.x < dom.hi.x) bound = std::min(bound, dx + 2 * (std::int64_t{w.hi.x} - hp.hi.x - 2));
         if (!options_.octilinear) {
           proven = len <= dx + dy + 2 * (inner(hp) - 2);  // L1: the way out also covers the other axis
+          fit = (len - dx - dy + 1) / 2 + 3;  // then len <= dx + dy + 2 (m - 2)
         } else {  // the octilinear length a + b sqrt2 (axis a, diagonal b) <= bound, exactly
           std::int64_t ax = 0, dg = 0;
           for (const auto& wire : a.wires)
@@ -785,6 +789,7 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
             }
           const __int128 room = static_cast<__int128>(bound) - ax;
           proven = room >= 0 && 2 * static_cast<__int128>(dg) * dg <= room * room;
+          fit = (len + 1) / 2 + 3;  // every side's bound is then >= len (L1) >= the octilinear length
         }
       } else {
         // A tree grown from the first pin alone: its wave labelled only points within its radius
@@ -796,9 +801,18 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
         for (const auto& wire : a.wires) all.insert(all.end(), wire.begin(), wire.end());
         proven = len < inner(box_of(all)) - 2 ||
                  (a.radius && *a.radius < geom::Root2{inner(box_of(pins.pins[0].outer)) - 2, 0});
+        if (a.radius && a.radius->a >= 0 && a.radius->b >= 0) fit = a.radius->a + 2 * a.radius->b + 3;  // > radius + 2
       }
       if (proven) return t;
-      m = std::max(4 * m, len + 3);
+      // The next window: the first time, just wide enough for this answer to pass its proof there
+      // (a wider window keeps every way of this one, so its answer is no longer and passes too);
+      // after that (or without such a margin) four times as wide, or the length, whichever is more.
+      if (fit && !fitted) {
+        m = std::max(m + 1, *fit);
+        fitted = true;
+      } else {
+        m = std::max(4 * m, len + 3);
+      }
     } else if (a.code == "ROUTE-0002") {  // unreachable: a larger window may hold a way round,
       if (apart_in_window(obs, pins, w)) return t;  // unless a pin is shut in inside this one
       // While rounds remain, a net the other nets' wires shut out of its first windows is taken as
@@ -1101,8 +1115,33 @@ void NetRouter::run(const NetRouteFn& route) {
       if (blockers.empty()) continue;
       bool can = true;
       for (const std::size_t b : blockers) can = can && out_[b].rips < options_.max_rips;
-      if (!can) continue;
+      if (!can) {
+        // Some of them may not be ripped up again: look for a way round those nets' wires alone
+        // (the other nets' pins kept), and rip up the nets that way crosses instead.
+        std::vector<char> fixed(n, 0);
+        bool any = false;
+        for (std::size_t j = 0; j < n; ++j)
+          if (j != i && out_[j].routed && out_[j].rips >= options_.max_rips) fixed[j] = 1, any = true;
+        if (!any) continue;
+        Tried around = try_net(route, i, NetSpaceLevel::Full, fixed);
+        add_counts(stats_, around.counts);
+        if (!around.a.routed) continue;
+        ++stats_.around_fixed;
+        blockers.clear();
+        for (const auto& line : around.a.wires)
+          for (const std::size_t b : space_.wire_blockers(i, line)) blockers.insert(b);
+        for (const std::size_t b : space_.pad_blockers(i)) blockers.insert(b);
+        if (blockers.empty()) continue;
+        can = true;
+        for (const std::size_t b : blockers) can = can && out_[b].rips < options_.max_rips;
+        if (!can) continue;
+      }
+      std::vector<std::pair<std::size_t, NetAttempt>> before;  // the blockers' wires, to undo
       for (const std::size_t b : blockers) {
+        NetAttempt was;
+        was.routed = true;
+        was.wires = out_[b].wires;
+        before.push_back({b, std::move(was)});
         place(b, NetAttempt{});
         ++out_[b].rips;
         ++stats_.rips;
@@ -1111,6 +1150,13 @@ void NetRouter::run(const NetRouteFn& route) {
       for (const std::size_t j : order_)
         if (blockers.count(j)) again_nets.push_back(j);
       route_in_order(route, again_nets, [](std::size_t) {});
+      std::size_t now = 0;
+      for (const std::size_t j : again_nets) now += out_[j].routed;
+      if (now < blockers.size()) {  // fewer nets routed than before: put the blockers back
+        ++stats_.undone;
+        for (const std::size_t j : again_nets) place(j, NetAttempt{});
+        for (auto& [b, was] : before) place(b, std::move(was));
+      }
     }
     const auto s = score();
     if (s > best_score) {

@@ -78,7 +78,11 @@
 // wires; the nets whose grown wires that wire enters are its blockers; they are ripped up, the
 // net is routed, and the blockers are routed again after it (in their order). A net is ripped up
 // at most `max_rips` times (PathFinder's history, in its simplest form: a net that keeps being
-// in the way stays put). The best state seen (most nets routed, then least total length) is the
+// in the way stays put); when some blocker has reached that limit, the net is routed among the
+// other nets' pins and the wires of the nets at the limit alone, and the nets that way crosses
+// are its blockers instead. A rip-up after which fewer of the net and its blockers are routed
+// than before is undone (the blockers' wires put back: a state that held before, so legal).
+// The best state seen (most nets routed, then least total length) is the
 // one kept. In the first pass and the rounds a net finding no way in its first search_windows
 // windows (NetRouterOptions) is taken as blocked there, not widened to the whole domain; the
 // last pass then tries each net still unrouted without that limit, and places what it routes.
@@ -164,8 +168,10 @@ class NetSpace {
 
   // The obstacles net `net` is routed among at `level`, normalized in `window` (clipped to the
   // domain; the whole domain when nullopt): every piece meeting the window, found in R-trees.
+  // `only` (Full level; empty: every net): the wires of the nets j with only[j] != 0 alone.
   geom::NormalizedObstacles obstacles(std::size_t net, NetSpaceLevel level,
-                                      std::optional<geom::Box> window = std::nullopt) const;
+                                      std::optional<geom::Box> window = std::nullopt,
+                                      std::span<const char> only = {}) const;
 
   // The nets (other than `net`) whose grown wires the polyline enters (meets in their interior),
   // and, separately, the nets whose grown pins it enters.
@@ -295,6 +301,9 @@ struct NetRouterStats {
   // (NetRouterOptions::search_windows), and how many of them it routed.
   std::size_t last_pass = 0, last_pass_routed = 0;
   std::int64_t capped = 0;  // attempts that stopped at the window limit
+  // Rip-ups planned round the wires of nets that may not be ripped up again (see above).
+  std::int64_t around_fixed = 0;
+  std::int64_t undone = 0;  // rip-ups undone: fewer of the net and its blockers routed after
   // With threads > 1: attempts made ahead of their turn, and those of them tried again because a
   // wire placed in between met their window (not counted in attempts/windows above, which are
   // the same for every thread count; these two depend on timing).
@@ -337,7 +346,7 @@ class NetRouter {
     NetRouterStats counts;
     std::size_t since = 0;  // the length of changed_ when it first read the space
   };
-  Tried try_net(const NetRouteFn& route, std::size_t net, NetSpaceLevel level) const;
+  Tried try_net(const NetRouteFn& route, std::size_t net, NetSpaceLevel level, std::span<const char> only = {}) const;
   geom::Box first_window(std::size_t net) const;  // the first window try_net tries
   NetAttempt attempt(const NetRouteFn& route, std::size_t net, NetSpaceLevel level);  // counted
   // The net at the Pins level (the blockages and other nets' pins only: fixed for the run, so
