@@ -148,7 +148,7 @@ int orient_sign(Point a, Point b, const RPoint& v) {
   return sign(dx * vy - dy * vx);
 }
 
-UnionResult union_loops(const std::vector<Loop>& loops, const Box& domain) {
+UnionResult union_loops(const std::vector<Loop>& loops, const Box& domain, std::int64_t sweep_budget) {
   UnionResult result;
 
   // --- Edges of the loops and of the domain box.
@@ -168,49 +168,95 @@ UnionResult union_loops(const std::vector<Loop>& loops, const Box& domain) {
   }
   const int ns = static_cast<int>(segs.size());
 
-  // --- Split points from every pair of edges whose boxes overlap.
+  // --- Split points from every pair of edges whose closed boxes meet. The pairs come from a
+  // sweep over x (boxes by their left side, compared with the boxes still open, whose right side
+  // is not left of it): on layouts few boxes span a sweep line, and this took a third of the
+  // R-tree's time there. When the comparisons pass 64 per box plus 2^20 (many long edges
+  // open at once), the pairs are found again with a packed R-tree of the boxes instead. The
+  // pairs, and so the splits, are the same either way (and the order they come in changes no
+  // output: every split point is sorted and deduplicated below).
   std::vector<std::pair<int, RPoint>> splits;
   {
-    namespace bg = boost::geometry;
-    namespace bgi = boost::geometry::index;
-    // int64 like index.cpp: the R*-tree sums coordinates (centroids), which overflows int at
-    // the wavefront's frame (domain +- 1, up to 2^30).
-    using BPoint = bg::model::point<std::int64_t, 2, bg::cs::cartesian>;
-    using BBox = bg::model::box<BPoint>;
-    using Value = std::pair<BBox, int>;
-    std::vector<Value> values;
-    values.reserve(segs.size());
-    auto seg_box = [](const Seg& s) {
-      return BBox(BPoint(std::min(s.a.x, s.b.x), std::min(s.a.y, s.b.y)),
-                  BPoint(std::max(s.a.x, s.b.x), std::max(s.a.y, s.b.y)));
+    struct SBox {
+      Coord lox, loy, hix, hiy;
     };
-    for (int i = 0; i < ns; ++i) values.emplace_back(seg_box(segs[i]), i);
-    const bgi::rtree<Value, bgi::rstar<16>> tree(values.begin(), values.end());
-    std::vector<Value> hits;
+    std::vector<SBox> boxes(static_cast<std::size_t>(ns));
     for (int i = 0; i < ns; ++i) {
-      hits.clear();
-      tree.query(bgi::intersects(values[i].first), std::back_inserter(hits));
-      const Seg& s = segs[i];
-      for (const Value& h : hits) {
-        const int j = h.second;
-        if (j <= i) continue;
-        const Seg& t = segs[j];
-        const SegmentIntersection r = intersect({s.a, s.b}, {t.a, t.b});
-        if (r == SegmentIntersection::None) continue;
-        if (r == SegmentIntersection::Proper) {
-          const RPoint p = to_rpoint(line_intersection({s.a, s.b}, {t.a, t.b}));
-          splits.emplace_back(i, p);
-          splits.emplace_back(j, p);
-          if (p.is_integer()) continue;
-          ++result.proper_crossings;
-          continue;
-        }
-        for (Point e : {s.a, s.b})
-          if (e != t.a && e != t.b && on_segment(e, t.a, t.b)) splits.emplace_back(j, to_rpoint(e));
-        for (Point e : {t.a, t.b})
-          if (e != s.a && e != s.b && on_segment(e, s.a, s.b)) splits.emplace_back(i, to_rpoint(e));
+      const Seg& g = segs[static_cast<std::size_t>(i)];
+      boxes[static_cast<std::size_t>(i)] = {std::min(g.a.x, g.b.x), std::min(g.a.y, g.b.y), std::max(g.a.x, g.b.x),
+                                            std::max(g.a.y, g.b.y)};
+    }
+    auto consider = [&](int i, int j) {  // i < j, their boxes meet
+      const Seg& s = segs[static_cast<std::size_t>(i)];
+      const Seg& t = segs[static_cast<std::size_t>(j)];
+      const SegmentIntersection r = intersect({s.a, s.b}, {t.a, t.b});
+      if (r == SegmentIntersection::None) return;
+      if (r == SegmentIntersection::Proper) {
+        const RPoint p = to_rpoint(line_intersection({s.a, s.b}, {t.a, t.b}));
+        splits.emplace_back(i, p);
+        splits.emplace_back(j, p);
+        if (!p.is_integer()) ++result.proper_crossings;
+        return;
+      }
+      for (Point e : {s.a, s.b})
+        if (e != t.a && e != t.b && on_segment(e, t.a, t.b)) splits.emplace_back(j, to_rpoint(e));
+      for (Point e : {t.a, t.b})
+        if (e != s.a && e != s.b && on_segment(e, s.a, s.b)) splits.emplace_back(i, to_rpoint(e));
+    };
+    std::vector<int> by_left(static_cast<std::size_t>(ns));
+    std::iota(by_left.begin(), by_left.end(), 0);
+    std::sort(by_left.begin(), by_left.end(), [&](int a, int b) {
+      const SBox &x = boxes[static_cast<std::size_t>(a)], &y = boxes[static_cast<std::size_t>(b)];
+      return x.lox != y.lox ? x.lox < y.lox : a < b;
+    });
+    const std::int64_t budget = sweep_budget >= 0 ? sweep_budget : 64 * static_cast<std::int64_t>(ns) + (std::int64_t{1} << 20);
+    std::int64_t compared = 0;
+    std::vector<int> open;
+    bool swept = true;
+    for (const int b : by_left) {
+      const SBox& bb = boxes[static_cast<std::size_t>(b)];
+      std::size_t keep = 0;
+      for (std::size_t k = 0; k < open.size(); ++k) {
+        const int a = open[k];
+        const SBox& ab = boxes[static_cast<std::size_t>(a)];
+        if (ab.hix < bb.lox) continue;  // closed for good: every later box starts right of it
+        open[keep++] = a;
+        if (ab.loy <= bb.hiy && bb.loy <= ab.hiy) consider(std::min(a, b), std::max(a, b));
+      }
+      open.resize(keep);
+      open.push_back(b);
+      compared += static_cast<std::int64_t>(keep);
+      if (compared > budget || sweep_budget == 0) {
+        swept = false;
+        break;
       }
     }
+    if (!swept) {
+      splits.clear();
+      result.proper_crossings = 0;
+      namespace bg = boost::geometry;
+      namespace bgi = boost::geometry::index;
+      // int64 like index.cpp: the R*-tree sums coordinates (centroids), which overflows int at
+      // the wavefront's frame (domain +- 1, up to 2^30).
+      using BPoint = bg::model::point<std::int64_t, 2, bg::cs::cartesian>;
+      using BBox = bg::model::box<BPoint>;
+      using Value = std::pair<BBox, int>;
+      std::vector<Value> values;
+      values.reserve(segs.size());
+      for (int i = 0; i < ns; ++i) {
+        const SBox& x = boxes[static_cast<std::size_t>(i)];
+        values.emplace_back(BBox(BPoint(x.lox, x.loy), BPoint(x.hix, x.hiy)), i);
+      }
+      const bgi::rtree<Value, bgi::rstar<16>> tree(values.begin(), values.end());
+      std::vector<Value> hits;
+      for (int i = 0; i < ns; ++i) {
+        hits.clear();
+        tree.query(bgi::intersects(values[static_cast<std::size_t>(i)].first), std::back_inserter(hits));
+        for (const Value& h : hits)
+          if (h.second > i) consider(i, h.second);
+      }
+    }
+    result.pairs_by_rtree = !swept;
   }
 
   // --- Vertex ids in lexicographic order.

@@ -7,7 +7,8 @@
 // so the winding number is the number of inputs covering a point; rounded rings fed back in a
 // later pass may overlap, which the same rule handles.
 //
-// Steps, all exact: (1) candidate edge pairs from a packed R-tree of edge boxes, each decided
+// Steps, all exact: (1) candidate edge pairs from a sweep over x of the edge boxes (or, when
+// many long edges are open at once, a packed R-tree of them), each decided
 // by intersect() (predicates.h); (2) every edge split at every point where another edge meets
 // it, collinear overlapping pieces merged (their windings add); (3) a sweep in lexicographic
 // (x, y) order (a vertical edge is the limit of a slightly tilted one) keeps the pieces
@@ -19,7 +20,8 @@
 // of free space and obstacles touching at a point end up in one ring; (5) rings are grouped
 // into connected obstacles: rings through a common vertex, and a boundary piece with covered
 // points below it and its nearest boundary piece below (the vertical segment between them is
-// covered). Cost O((n + k) log n) for the sweep; the R-tree reports pairs of edges whose boxes
+// covered). Cost O((n + k) log n) for the sweep; finding the pairs costs O(n log n) plus the
+// comparisons (at most the budget below) or, by the R-tree, the pairs of edges whose boxes
 // overlap (equal to k for axis-parallel edges).
 #pragma once
 
@@ -70,8 +72,11 @@ struct UnionResult {
   std::vector<std::pair<std::int64_t, int>> tag_components;  // (loop tag, component), sorted
   std::int64_t proper_crossings = 0;
   std::int64_t rational_vertices = 0;  // ring vertices that are not integer
+  bool pairs_by_rtree = false;  // the edge pairs were found by the R-tree (see sweep_budget)
 };
 
-UnionResult union_loops(const std::vector<Loop>& loops, const Box& domain);
+// sweep_budget: the box comparisons the sweep for edge pairs may make before the pairs are found
+// by an R-tree instead (-1: 64 per edge plus 2^20; 0: the R-tree at once). Same result either way.
+UnionResult union_loops(const std::vector<Loop>& loops, const Box& domain, std::int64_t sweep_budget = -1);
 
 }  // namespace taut::geom::detail

@@ -14,6 +14,7 @@
 
 #include "geom/normalize.h"
 #include "geom/predicates.h"
+#include "geom/union_sweep.h"
 #include "io/movingai.h"
 #include "oracle/union_oracle.h"
 
@@ -468,6 +469,83 @@ TEST(UnionCases, SpikeTipPointingAtTheDomainSide) {
 }
 
 // 10^6 input vertices: run by hand in Release with --gtest_also_run_disabled_tests.
+// The union engine finds its candidate edge pairs by a sweep over x, and by an R-tree when the
+// sweep's comparisons pass its budget: both give the same union, ring for ring, on random
+// rectangles (shared edges and corners) and star polygons (proper crossings), and on many long
+// edges open at once (a stack of thin bars across the domain, posts through them), whose union
+// the rasterized reference then checks.
+namespace ud = taut::geom::detail;
+
+std::vector<ud::Loop> loops_of(const std::vector<Polygon>& in) {
+  std::vector<ud::Loop> loops;
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    loops.push_back({in[i].outer, static_cast<std::int64_t>(i)});
+    for (const Ring& h : in[i].holes) loops.push_back({h, static_cast<std::int64_t>(i)});
+  }
+  return loops;
+}
+
+void expect_same_union(const ud::UnionResult& a, const ud::UnionResult& b) {
+  ASSERT_EQ(a.rings.size(), b.rings.size());
+  for (std::size_t r = 0; r < a.rings.size(); ++r) {
+    EXPECT_TRUE(a.rings[r].vertices == b.rings[r].vertices) << "ring " << r;
+    EXPECT_TRUE(a.rings[r].lines == b.rings[r].lines) << "ring " << r;
+    EXPECT_EQ(a.rings[r].component, b.rings[r].component) << "ring " << r;
+  }
+  EXPECT_EQ(a.components, b.components);
+  EXPECT_EQ(a.tag_components, b.tag_components);
+  EXPECT_EQ(a.proper_crossings, b.proper_crossings);
+  EXPECT_EQ(a.rational_vertices, b.rational_vertices);
+}
+
+TEST(UnionPairs, SweepAndRTreeGiveTheSameUnion) {
+  int crossings = 0;
+  for (unsigned it = 0; it < 1500; ++it) {
+    const unsigned seed = 991000 + it;
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    std::mt19937 rng(seed);
+    std::vector<Polygon> in;
+    const int n = 1 + static_cast<int>(rng() % 14);
+    const bool stars = it % 2 == 1;
+    while (static_cast<int>(in.size()) < n) {
+      if (stars) {
+        Polygon p;
+        const Point c{static_cast<Coord>(rng() % 120), static_cast<Coord>(rng() % 120)};
+        p.outer = star(rng, c, 3 + static_cast<int>(rng() % 9), 60);
+        if (valid_single(p)) in.push_back(p);
+      } else {
+        const Coord g = 1 + static_cast<Coord>(rng() % 4);
+        const Coord x0 = g * static_cast<Coord>(rng() % 10), y0 = g * static_cast<Coord>(rng() % 10);
+        in.push_back(rect(x0, y0, x0 + g * (1 + static_cast<Coord>(rng() % 5)), y0 + g * (1 + static_cast<Coord>(rng() % 5))));
+      }
+    }
+    const Box dom = rng() % 3 == 0 ? Box{{20, 20}, {100, 110}} : Box{{-10, -10}, {200, 200}};
+    const std::vector<ud::Loop> loops = loops_of(in);
+    const ud::UnionResult swept = ud::union_loops(loops, dom), by_tree = ud::union_loops(loops, dom, 0);
+    EXPECT_FALSE(swept.pairs_by_rtree);
+    EXPECT_TRUE(by_tree.pairs_by_rtree);
+    expect_same_union(swept, by_tree);
+    crossings += swept.proper_crossings > 0;
+    if (HasFailure()) return;
+  }
+  EXPECT_GT(crossings, 300);  // the star layouts cross
+}
+
+TEST(UnionPairs, ManyLongEdgesOpenAtOnceTakeTheRTree) {
+  std::vector<Polygon> in;
+  for (Coord k = 0; k < 80; ++k) in.push_back(rect(0, 3 * k, 5000 + k, 3 * k + 2));  // bars across
+  for (Coord k = 0; k < 10; ++k) in.push_back(rect(500 * k + 7, 0, 500 * k + 9, 240));  // posts through them
+  const std::vector<ud::Loop> loops = loops_of(in);
+  const Box dom{{-1, -1}, {5081, 241}};
+  // the default budget (64 per edge + 2^20) lets the sweep finish here; 5,000 comparisons stop
+  // it part way, and the R-tree starts again from nothing
+  const ud::UnionResult swept = ud::union_loops(loops, dom), by_tree = ud::union_loops(loops, dom, 5000);
+  EXPECT_FALSE(swept.pairs_by_rtree);
+  EXPECT_TRUE(by_tree.pairs_by_rtree);
+  expect_same_union(swept, by_tree);
+  check_rectilinear(in, dom);
+}
+
 TEST(UnionScale, DISABLED_MillionVerticesOfRandomRectangles) {
   std::mt19937 rng(5);
   std::vector<Polygon> in;
