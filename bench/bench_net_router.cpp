@@ -10,7 +10,7 @@
 // must be the same: the run fails otherwise).
 //
 // --rounds R sets NetRouterOptions::max_rounds (0: the first pass only), --max-rips K
-// NetRouterOptions::max_rips.
+// NetRouterOptions::max_rips, --search-windows W NetRouterOptions::search_windows (0: no limit).
 //
 // --tighten: each row's routed wires are then tightened together (router::NetsTightener, what
 // `route --tighten` does: the clearance kept, rounds until no wire shortens), against a baseline
@@ -28,7 +28,7 @@
 // passed by the independent checker), so a legal routing of every net is known to exist: the
 // completion target's instance. Their planted length is printed beside the routed length.
 //
-//   bench_net_router [--sizes N,..] [--nets M,..] [--threads T,..] [--rounds R] [--max-rips K] [--tighten] [--planted] [--metric l1|combined|link] [--bend-cost C]
+//   bench_net_router [--sizes N,..] [--nets M,..] [--threads T,..] [--rounds R] [--max-rips K] [--search-windows W] [--tighten] [--planted] [--metric l1|combined|link] [--bend-cost C]
 //   (--sizes: blockage vertices)
 #include <cmath>
 #include <cstdio>
@@ -59,7 +59,8 @@ using taut::geom::Polygon;
 
 int main(int argc, char** argv) {
   std::vector<std::int64_t> sizes = {1000}, net_counts = {10, 30, 100}, thread_counts;
-  int rounds = taut::router::NetRouterOptions{}.max_rounds, max_rips = taut::router::NetRouterOptions{}.max_rips;
+  int rounds = taut::router::NetRouterOptions{}.max_rounds, max_rips = taut::router::NetRouterOptions{}.max_rips,
+      search_windows = taut::router::NetRouterOptions{}.search_windows;
   bool tighten = false, planted = false;
   std::string metric = "l1";
   std::int64_t bend_cost = 1000;
@@ -69,12 +70,13 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--threads") && i + 1 < argc) thread_counts = taut::bench::parse_list(argv[++i]);
     else if (!std::strcmp(argv[i], "--rounds") && i + 1 < argc) rounds = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--max-rips") && i + 1 < argc) max_rips = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--search-windows") && i + 1 < argc) search_windows = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--tighten")) tighten = true;
     else if (!std::strcmp(argv[i], "--planted")) planted = true;
     else if (!std::strcmp(argv[i], "--metric") && i + 1 < argc) metric = argv[++i];
     else if (!std::strcmp(argv[i], "--bend-cost") && i + 1 < argc) bend_cost = std::atoll(argv[++i]);
     else {
-      std::fprintf(stderr, "usage: %s [--sizes N,..] [--nets M,..] [--threads T,..] [--rounds R] [--max-rips K] [--tighten] [--planted] [--metric l1|combined|link] [--bend-cost C]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--sizes N,..] [--nets M,..] [--threads T,..] [--rounds R] [--max-rips K] [--search-windows W] [--tighten] [--planted] [--metric l1|combined|link] [--bend-cost C]\n", argv[0]);
       return 2;
     }
   }
@@ -92,6 +94,7 @@ int main(int argc, char** argv) {
     o.threads = threads;
     o.max_rounds = rounds;
     o.max_rips = max_rips;
+    o.search_windows = search_windows;
     o.cost = !bends ? taut::router::NetRouterOptions::Cost::Length
              : metric == "link" ? taut::router::NetRouterOptions::Cost::Link : taut::router::NetRouterOptions::Cost::Combined;
     o.bend_cost = bend_cost;
