@@ -845,6 +845,14 @@ void NetRouter::place(std::size_t i, NetAttempt a) {
     for (const Box& b : space_.wire_boxes(i)) changed_.push_back({b, i});
 }
 
+std::set<std::size_t> NetRouter::way_blockers(std::size_t net, const std::vector<std::vector<Point>>& wires) const {
+  std::set<std::size_t> bl;
+  for (const auto& line : wires)
+    for (const std::size_t x : space_.wire_blockers(net, line)) bl.insert(x);
+  for (const std::size_t x : space_.pad_blockers(net)) bl.insert(x);
+  return bl;
+}
+
 const NetAttempt& NetRouter::alone(const NetRouteFn& route, std::size_t net) {
   if (!alone_[net]) {
     Tried t = try_net(route, net, NetSpaceLevel::Pins);
@@ -1108,14 +1116,12 @@ void NetRouter::run(const NetRouteFn& route) {
       }
       const NetAttempt& by_itself = alone(route, i);
       if (!by_itself.routed) continue;  // not the wires' doing: explained at the end
-      std::set<std::size_t> blockers;
-      for (const auto& line : by_itself.wires)
-        for (const std::size_t b : space_.wire_blockers(i, line)) blockers.insert(b);
-      for (const std::size_t b : space_.pad_blockers(i)) blockers.insert(b);
+      std::set<std::size_t> blockers = way_blockers(i, by_itself.wires);
       if (blockers.empty()) continue;
-      bool can = true;
-      for (const std::size_t b : blockers) can = can && out_[b].rips < options_.max_rips;
-      if (!can) {
+      auto movable = [&] {
+        return std::all_of(blockers.begin(), blockers.end(), [&](std::size_t b) { return out_[b].rips < options_.max_rips; });
+      };
+      if (!movable()) {
         // Some of them may not be ripped up again: look for a way round those nets' wires alone
         // (the other nets' pins kept), and rip up the nets that way crosses instead.
         std::vector<char> fixed(n, 0);
@@ -1127,14 +1133,8 @@ void NetRouter::run(const NetRouteFn& route) {
         add_counts(stats_, around.counts);
         if (!around.a.routed) continue;
         ++stats_.around_fixed;
-        blockers.clear();
-        for (const auto& line : around.a.wires)
-          for (const std::size_t b : space_.wire_blockers(i, line)) blockers.insert(b);
-        for (const std::size_t b : space_.pad_blockers(i)) blockers.insert(b);
-        if (blockers.empty()) continue;
-        can = true;
-        for (const std::size_t b : blockers) can = can && out_[b].rips < options_.max_rips;
-        if (!can) continue;
+        blockers = way_blockers(i, around.a.wires);
+        if (blockers.empty() || !movable()) continue;
       }
       std::vector<std::pair<std::size_t, NetAttempt>> before;  // the blockers' wires, to undo
       for (const std::size_t b : blockers) {
@@ -1252,10 +1252,7 @@ NetRouter::Explained NetRouter::explain(const NetRouteFn& route, std::size_t net
     if (!e.blockers.empty()) e.reason += ": its way alone passes the pins of nets " + net_list(e.blockers, name);
     return e;
   }
-  std::set<std::size_t> bl;
-  for (const auto& line : pins.wires)
-    for (const std::size_t x : space_.wire_blockers(net, line)) bl.insert(x);
-  for (const std::size_t x : space_.pad_blockers(net)) bl.insert(x);
+  const std::set<std::size_t> bl = way_blockers(net, pins.wires);
   e.blockers.assign(bl.begin(), bl.end());
   if (e.blockers.empty()) {
     // Its way alone enters no other net's grown wire. When it runs at exactly the clearance from

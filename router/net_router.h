@@ -112,6 +112,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <set>
 #include <shared_mutex>
 #include <span>
 #include <stdexcept>
@@ -352,6 +353,8 @@ class NetRouter {
   // The net at the Pins level (the blockages and other nets' pins only: fixed for the run, so
   // tried once per net and kept).
   const NetAttempt& alone(const NetRouteFn& route, std::size_t net);
+  // The nets whose grown wires these wires of net `net` enter, and those that enter its pads.
+  std::set<std::size_t> way_blockers(std::size_t net, const std::vector<std::vector<geom::Point>>& wires) const;
   // Routes `nets` at the Full level one after another, placing each (as if with one thread).
   void route_in_order(const NetRouteFn& route, std::span<const std::size_t> nets,
                       const std::function<void(std::size_t)>& after);
