@@ -1027,6 +1027,7 @@ void NetRouter::run(const NetRouteFn& route) {
   out_.assign(n, NetOutcome{});
   stats_ = {};
   alone_.assign(n, std::nullopt);
+  final_undone_.clear();
   changed_.clear();  // the log of wire pieces placed and removed (with threads only)
   for (std::size_t i = 0; i < n; ++i) space_.set_wires(i, {});  // a second run starts afresh
   // shortest first: half-perimeter of the pins' bounding box, then the file's order
@@ -1067,6 +1068,56 @@ void NetRouter::run(const NetRouteFn& route) {
   std::vector<NetOutcome> best = out_;
   auto best_score = score();
   int stale = 0;
+  // Rips up the nets in net i's way (found without the other nets' wires) and routes i, then
+  // them; undone (then true) when fewer of them are routed after, or with `gain` not more than
+  // before. A net ripped up `limit` times stays put.
+  auto rip_up = [&](std::size_t i, int limit, bool gain) -> bool {
+    const NetAttempt& by_itself = alone(route, i);
+    if (!by_itself.routed) return false;  // not the wires' doing: explained at the end
+    std::set<std::size_t> blockers = way_blockers(i, by_itself.wires);
+    if (blockers.empty()) return false;
+    auto movable = [&] {
+      return std::all_of(blockers.begin(), blockers.end(), [&](std::size_t b) { return out_[b].rips < limit; });
+    };
+    if (!movable()) {
+      // Some of them may not be ripped up again: look for a way round those nets' wires alone
+      // (the other nets' pins kept), and rip up the nets that way crosses instead.
+      std::vector<char> fixed(n, 0);
+      bool any = false;
+      for (std::size_t j = 0; j < n; ++j)
+        if (j != i && out_[j].routed && out_[j].rips >= limit) fixed[j] = 1, any = true;
+      if (!any) return false;
+      Tried around = try_net(route, i, NetSpaceLevel::Full, fixed);
+      add_counts(stats_, around.counts);
+      if (!around.a.routed) return false;
+      ++stats_.around_fixed;
+      blockers = way_blockers(i, around.a.wires);
+      if (blockers.empty() || !movable()) return false;
+    }
+    std::vector<std::pair<std::size_t, NetAttempt>> before;  // the blockers' wires, to undo
+    for (const std::size_t b : blockers) {
+      NetAttempt was;
+      was.routed = true;
+      was.wires = out_[b].wires;
+      before.push_back({b, std::move(was)});
+      place(b, NetAttempt{});
+      ++out_[b].rips;
+      ++stats_.rips;
+    }
+    std::vector<std::size_t> again_nets{i};  // the net, then its blockers in their order
+    for (const std::size_t j : order_)
+      if (blockers.count(j)) again_nets.push_back(j);
+    route_in_order(route, again_nets, [](std::size_t) {});
+    std::size_t now = 0;
+    for (const std::size_t j : again_nets) now += out_[j].routed;
+    if (now < blockers.size() + gain) {  // fewer nets routed than before: put the blockers back
+      ++stats_.undone;
+      for (const std::size_t j : again_nets) place(j, NetAttempt{});
+      for (auto& [b, was] : before) place(b, std::move(was));
+      return true;
+    }
+    return false;
+  };
   for (int round = 0; round < options_.max_rounds && best_score.first < n && stale < 2; ++round) {
     ++stats_.rounds;
     prog.phase = NetRouterProgress::Phase::RipUp;
@@ -1114,49 +1165,7 @@ void NetRouter::run(const NetRouteFn& route) {
         add_counts(stats_, ahead_alone[i]->counts);
         alone_[i] = std::move(ahead_alone[i]->a);
       }
-      const NetAttempt& by_itself = alone(route, i);
-      if (!by_itself.routed) continue;  // not the wires' doing: explained at the end
-      std::set<std::size_t> blockers = way_blockers(i, by_itself.wires);
-      if (blockers.empty()) continue;
-      auto movable = [&] {
-        return std::all_of(blockers.begin(), blockers.end(), [&](std::size_t b) { return out_[b].rips < options_.max_rips; });
-      };
-      if (!movable()) {
-        // Some of them may not be ripped up again: look for a way round those nets' wires alone
-        // (the other nets' pins kept), and rip up the nets that way crosses instead.
-        std::vector<char> fixed(n, 0);
-        bool any = false;
-        for (std::size_t j = 0; j < n; ++j)
-          if (j != i && out_[j].routed && out_[j].rips >= options_.max_rips) fixed[j] = 1, any = true;
-        if (!any) continue;
-        Tried around = try_net(route, i, NetSpaceLevel::Full, fixed);
-        add_counts(stats_, around.counts);
-        if (!around.a.routed) continue;
-        ++stats_.around_fixed;
-        blockers = way_blockers(i, around.a.wires);
-        if (blockers.empty() || !movable()) continue;
-      }
-      std::vector<std::pair<std::size_t, NetAttempt>> before;  // the blockers' wires, to undo
-      for (const std::size_t b : blockers) {
-        NetAttempt was;
-        was.routed = true;
-        was.wires = out_[b].wires;
-        before.push_back({b, std::move(was)});
-        place(b, NetAttempt{});
-        ++out_[b].rips;
-        ++stats_.rips;
-      }
-      std::vector<std::size_t> again_nets{i};  // the net, then its blockers in their order
-      for (const std::size_t j : order_)
-        if (blockers.count(j)) again_nets.push_back(j);
-      route_in_order(route, again_nets, [](std::size_t) {});
-      std::size_t now = 0;
-      for (const std::size_t j : again_nets) now += out_[j].routed;
-      if (now < blockers.size()) {  // fewer nets routed than before: put the blockers back
-        ++stats_.undone;
-        for (const std::size_t j : again_nets) place(j, NetAttempt{});
-        for (auto& [b, was] : before) place(b, std::move(was));
-      }
+      (void)rip_up(i, options_.max_rips, false);
     }
     const auto s = score();
     if (s > best_score) {
@@ -1175,6 +1184,28 @@ void NetRouter::run(const NetRouteFn& route) {
       out_[i].rips = rips[i];
       space_.set_wires(i, out_[i].wires);
     }
+  }
+  // The final round: each net still unrouted in the best state is tried again, and else its
+  // blockers are ripped up whatever their rips. A rip-up kept must route more of them than
+  // before (else it is undone), so this round only gains nets: those the rip limit held.
+  if (options_.final_round && best_score.first < n) {
+    prog.phase = NetRouterProgress::Phase::RipUp;
+    prog.round = stats_.rounds + 1;
+    prog.tried = 0;
+    const std::size_t had = best_score.first;
+    final_undone_.assign(n, 0);
+    for (const std::size_t i : order_) {
+      if (out_[i].routed) continue;
+      ++stats_.final_round;
+      tell();
+      NetAttempt again = attempt(route, i, NetSpaceLevel::Full);
+      if (again.routed)
+        place(i, std::move(again));
+      else if (rip_up(i, std::numeric_limits<int>::max(), true))
+        final_undone_[i] = 1;
+    }
+    best_score = score();
+    stats_.final_round_routed = best_score.first - had;
   }
   // The last pass: every net still unrouted, tried without the window limit of the rounds (a
   // detour the rounds did not look for, or a net the best state had left behind), in order.
@@ -1274,7 +1305,10 @@ NetRouter::Explained NetRouter::explain(const NetRouteFn& route, std::size_t net
   for (const std::size_t x : e.blockers) limit = limit || out_[x].rips >= options_.max_rips;
   e.reason = "the wires of other nets block every way (kept " + b + " DBU, w + s, apart): its way alone crosses nets " +
              net_list(e.blockers, name) +
-             (limit ? "; they may not be ripped up again (each net at most " + std::to_string(options_.max_rips) + " times)"
+             (limit ? "; they may not be ripped up again (each net at most " + std::to_string(options_.max_rips) + " times" +
+                          (net < final_undone_.size() && final_undone_[net]
+                               ? "; ripping them up once more in the final round routed no more nets and was undone)"
+                               : ")")
                     : "; ripping them up and routing them again left no way either");
   return e;
 }

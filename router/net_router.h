@@ -83,7 +83,8 @@
 // are its blockers instead. A rip-up after which fewer of the net and its blockers are routed
 // than before is undone (the blockers' wires put back: a state that held before, so legal).
 // The best state seen (most nets routed, then least total length) is the
-// one kept. In the first pass and the rounds a net finding no way in its first search_windows
+// one kept; a final round then tries each net still unrouted once more, its blockers ripped up
+// whatever their rips, and keeps only the rip-ups that route more nets. In the first pass and the rounds a net finding no way in its first search_windows
 // windows (NetRouterOptions) is taken as blocked there, not widened to the whole domain; the
 // last pass then tries each net still unrouted without that limit, and places what it routes.
 // When nets stay unrouted, each gets the most telling reason (NetOutcome::reason):
@@ -288,6 +289,10 @@ struct NetRouterOptions {
   // detour. Every net still unrouted after the rounds is then tried once more without the limit
   // (so a net is left unrouted only when no way exists in the whole final layout). 0: no limit.
   int search_windows = 2;
+  // After the rounds, one final round over the nets still unrouted in the best state, in which
+  // every blocker may be ripped up whatever its rips; a rip-up there is kept only when it routes
+  // more of the net and its blockers than before (so the round never loses a net). false: none.
+  bool final_round = true;
 };
 
 struct NetRouterStats {
@@ -301,6 +306,8 @@ struct NetRouterStats {
   // Nets unrouted after the rounds, tried again in the last pass without the window limit
   // (NetRouterOptions::search_windows), and how many of them it routed.
   std::size_t last_pass = 0, last_pass_routed = 0;
+  // Nets tried in the final round (NetRouterOptions::final_round), and the nets it gained.
+  std::size_t final_round = 0, final_round_routed = 0;
   std::int64_t capped = 0;  // attempts that stopped at the window limit
   // Rip-ups planned round the wires of nets that may not be ripped up again (see above).
   std::int64_t around_fixed = 0;
@@ -372,6 +379,7 @@ class NetRouter {
   std::vector<std::size_t> order_;
   NetRouterStats stats_;
   std::vector<std::optional<NetAttempt>> alone_;  // alone(), per net
+  std::vector<char> final_undone_;  // per net: its rip-up in the final round was undone
   bool capped_ = false;  // Full attempts stop after options_.search_windows unreachable windows
   // With threads > 1: the boxes of every wire piece placed or removed since speculation began,
   // with their net (a speculative attempt is kept when none of another net meets its window).
