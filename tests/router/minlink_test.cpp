@@ -167,7 +167,7 @@ Scene random_scene(std::mt19937_64& rng, bool dense = false) {
 
 TEST(MinLink, RandomSketchesAgainstTheReferences) {
   long long paths = 0, searched = 0, small = 0, same = 0, fewer_than_taut = 0, wound = 0;
-  const int n = sanitized_share(300, 20);
+  const int n = sanitized_share(200, 13);  // 300 until 2026-12-02 (make test's time on CI)
   for (int seed = 1; seed <= n; ++seed) {
     std::mt19937_64 rng(static_cast<std::uint64_t>(seed) * 2654435761u);
     Scene sc;
@@ -214,9 +214,9 @@ TEST(MinLink, RandomSketchesAgainstTheReferences) {
   std::printf("%lld min-link paths (%lld from winding sketches), %lld with fewer links than the shortest path; "
               "%lld searched exhaustively for fewer links; of the %lld with at most 3 links, %lld matched by candidate lines\n",
               paths, wound, fewer_than_taut, searched, small, same);
-  EXPECT_GE(paths, sanitized_share(600, 20));
-  // the search is not vacuous: its lines reach the router's count almost always (708 of 721 =
-  // 98.2 % on the Release tree's scenes, 33 of 35 = 94.3 % on the sanitizer tree's fifteen; the
+  EXPECT_GE(paths, sanitized_share(400, 20));
+  // the search is not vacuous: its lines reach the router's count almost always (472 of 479 =
+  // 98.5 % on the Release tree's 200 scenes, 33 of 35 = 94.3 % on the sanitizer tree's fifteen; the
   // rest need a link from an extension's end). A broken search matches far fewer.
   EXPECT_GE(same * 100, small * 90);
 }

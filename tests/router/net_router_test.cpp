@@ -126,7 +126,7 @@ TEST(NetRouter, EveryRoutedNetPassesTheChecker) {
   std::int64_t nets = 0, routed = 0, ripped = 0, first = 0, pads = 0, octilinear = 0, undone = 0, around = 0, last = 0,
                final_gain = 0;
   std::map<std::string, int> reasons;
-  for (int seed = 1; seed <= sanitized_share(2000, 8); ++seed) {
+  for (int seed = 1; seed <= sanitized_share(2000, 12); ++seed) {
     const RandomLayout L = random_layout(700000 + seed);
     // every fifth layout octilinear; a third of the rest with Steiner trees
     router::NetRouterOptions opt;
