@@ -1110,7 +1110,7 @@ void NetRouter::run(const NetRouteFn& route) {
     route_in_order(route, again_nets, [](std::size_t) {});
     std::size_t now = 0;
     for (const std::size_t j : again_nets) now += out_[j].routed;
-    if (now < blockers.size() + gain) {  // fewer nets routed than before: put the blockers back
+    if (now < blockers.size() + gain) {  // fewer routed than before (with gain: not more): put them back
       ++stats_.undone;
       for (const std::size_t j : again_nets) place(j, NetAttempt{});
       for (auto& [b, was] : before) place(b, std::move(was));

@@ -84,7 +84,8 @@
 // than before is undone (the blockers' wires put back: a state that held before, so legal).
 // The best state seen (most nets routed, then least total length) is the
 // one kept; a final round then tries each net still unrouted once more, its blockers ripped up
-// whatever their rips, and keeps only the rip-ups that route more nets. In the first pass and the rounds a net finding no way in its first search_windows
+// whatever their rips, and keeps only the rip-ups that route more nets. In the first pass and
+// the rounds a net finding no way in its first search_windows
 // windows (NetRouterOptions) is taken as blocked there, not widened to the whole domain; the
 // last pass then tries each net still unrouted without that limit, and places what it routes.
 // When nets stay unrouted, each gets the most telling reason (NetOutcome::reason):
