@@ -5,7 +5,7 @@ BUILD ?= build
 ASAN_BUILD ?= build-asan
 CMAKE_FLAGS ?=
 
-.PHONY: all deps build build-asan run test test-release test-asan test-long bench install clean
+.PHONY: all deps build build-asan build-tests build-asan-tests run test test-release test-asan test-long bench install clean
 
 all: build
 
@@ -23,6 +23,16 @@ $(ASAN_BUILD)/CMakeCache.txt: | deps
 
 build-asan: deps $(ASAN_BUILD)/CMakeCache.txt
 	@cmake --build $(ASAN_BUILD) -j $(JOBS) -- --no-print-directory
+
+# What make test needs: the command and the tests (not the benchmarks nor the long tests).
+# cmake_check_build_system first: a tree configured before taut_tests existed learns of it.
+build-tests: deps $(BUILD)/CMakeCache.txt
+	@cmake --build $(BUILD) --target cmake_check_build_system -- --no-print-directory
+	@cmake --build $(BUILD) -j $(JOBS) --target taut_tests -- --no-print-directory
+
+build-asan-tests: deps $(ASAN_BUILD)/CMakeCache.txt
+	@cmake --build $(ASAN_BUILD) --target cmake_check_build_system -- --no-print-directory
+	@cmake --build $(ASAN_BUILD) -j $(JOBS) --target taut_tests -- --no-print-directory
 
 run: build
 	@mkdir -p out
@@ -52,11 +62,11 @@ test: deps
 # CTestCostData.txt), so ctest starts them first; a tree that has run keeps its own.
 COSTS = Testing/Temporary/CTestCostData.txt
 
-test-release: build
+test-release: build-tests
 	@mkdir -p $(BUILD)/Testing/Temporary && (test -f $(BUILD)/$(COSTS) || cp tests/cost/release.txt $(BUILD)/$(COSTS))
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE long
 
-test-asan: build-asan
+test-asan: build-asan-tests
 	@mkdir -p $(ASAN_BUILD)/Testing/Temporary && (test -f $(ASAN_BUILD)/$(COSTS) || cp tests/cost/asan.txt $(ASAN_BUILD)/$(COSTS))
 	cd $(ASAN_BUILD) && ctest --output-on-failure -j $(JOBS) -LE long
 

@@ -367,8 +367,8 @@ TEST(Route, TightenTogetherKeepsTheRules) {
       EXPECT_FALSE(j["tighten"]["capped"].get<bool>());
       io::ReadResult a = io::read_layout(plain), b = io::read_layout(tight);
       ASSERT_TRUE(a.layout && a.layout->routes && b.layout && b.layout->routes);
-      const Reference ref = reference_for(in);
-      const oracle::HomotopyWords words(ref.norm.domain, ref.norm.obstacles);
+      const geom::NormalizedObstacles norm = normalized_for(in);
+      const oracle::HomotopyWords words(norm.domain, norm.obstacles);
       for (std::size_t i = 0; i < a.layout->routes->routes.size(); ++i) {
         const io::Route& x = a.layout->routes->routes[i];
         const io::Route& y = b.layout->routes->routes[i];
@@ -425,8 +425,8 @@ TEST(Route, TightenTogetherKeepsTheRules) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_GE(nlohmann::json::parse(read_text(dir + "/sketch.json"))["net_router"]["rip_ups"].get<int>(), 1);
   EXPECT_EQ(run_taut({"check", out, "-q"}).status, 0);
-  const Reference ref = reference_for(in);
-  const oracle::HomotopyWords words(ref.norm.domain, ref.norm.obstacles);
+  const geom::NormalizedObstacles norm = normalized_for(in);
+  const oracle::HomotopyWords words(norm.domain, norm.obstacles);
   io::ReadResult got = io::read_layout(out);
   ASSERT_TRUE(got.layout && got.layout->routes);
   const io::Route& a = got.layout->routes->routes[0];

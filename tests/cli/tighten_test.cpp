@@ -262,8 +262,8 @@ TEST(Tighten, MinLinkPathsInTheStats) {
   ASSERT_TRUE(rr.layout);
   std::vector<Point> extra;
   for (const io::Net& n : rr.layout->nets) extra.insert(extra.end(), n.sketch->points.begin(), n.sketch->points.end());
-  const auto r = reference_for<oracle::L1Reference>(in, extra);
-  const oracle::HomotopyWords h(r.norm.domain, r.norm.obstacles);
+  const geom::NormalizedObstacles norm = normalized_for(in, extra);
+  const oracle::HomotopyWords h(norm.domain, norm.obstacles);
   const auto j = nlohmann::json::parse(read_text(dir + "/w.json"));
   const auto& nets = j["tighten"]["nets"];
   ASSERT_EQ(nets.size(), rr.layout->nets.size());
@@ -279,13 +279,13 @@ TEST(Tighten, MinLinkPathsInTheStats) {
       // the guard ring round the hexagon: a triangle (three links: no fewer can wind round
       // anything)
       EXPECT_EQ(q.size(), 4u);
-      expect_loop_in_class(q, sketch, r.norm.domain, r.norm.obstacles, h);
+      expect_loop_in_class(q, sketch, norm.domain, norm.obstacles, h);
       continue;
     }
     EXPECT_TRUE(q.front().x == sketch.front().x && q.front().y == sketch.front().y);
     EXPECT_TRUE(q.back().x == sketch.back().x && q.back().y == sketch.back().y);
     for (std::size_t k = 0; k + 1 < q.size(); ++k)
-      EXPECT_TRUE(oracle::segment_free(q[k], q[k + 1], r.norm.domain, r.norm.obstacles)) << "link " << k;
+      EXPECT_TRUE(oracle::segment_free(q[k], q[k + 1], norm.domain, norm.obstacles)) << "link " << k;
     EXPECT_EQ(h.word(std::span<const oracle::QPoint>(q)), h.word(sketch)) << "another homotopy class";
     const long links_after = e["bends_after"].get<long>() + 1;
     EXPECT_LE(static_cast<long>(q.size()) - 1, links_after);
@@ -312,8 +312,8 @@ TEST(Tighten, MinLinkLoopsInTheStats) {
       "  <net name=\"twice\"><sketch points=\"270,120 300,80 330,120 300,160 270,120 300,80 330,120 300,160 270,120\"/></net>\n"
       "  <net name=\"dented\"><sketch points=\"20,50 30,20 170,20 180,50 150,72 100,46 50,72 20,50\"/></net>\n";
   const std::string file = layout_file("tighten_minlink_loops_in", body);
-  const auto r = reference_for<oracle::L1Reference>(file);
-  const oracle::HomotopyWords h(r.norm.domain, r.norm.obstacles);
+  const geom::NormalizedObstacles norm = normalized_for(file);
+  const oracle::HomotopyWords h(norm.domain, norm.obstacles);
   io::ReadResult in = io::read_layout(file);
   ASSERT_TRUE(in.layout);
   for (const bool clearance : {false, true}) {
@@ -329,7 +329,7 @@ TEST(Tighten, MinLinkLoopsInTheStats) {
       const auto& e = nets[i];
       SCOPED_TRACE(e["net"].get<std::string>());
       const std::vector<oracle::QPoint> q = min_link_wire(e);
-      expect_loop_in_class(q, in.layout->nets[i].sketch->points, r.norm.domain, r.norm.obstacles, h);
+      expect_loop_in_class(q, in.layout->nets[i].sketch->points, norm.domain, norm.obstacles, h);
       ASSERT_GE(q.size(), 4u);
       EXPECT_EQ(e["min_links"].get<std::size_t>(), q.size() - 1);
       EXPECT_FALSE(e.contains("min_links_at_most"));
@@ -593,8 +593,8 @@ TEST(Tighten, TogetherReviewCases) {
   const std::string wind = kDesigns + "wind.xml";
   io::ReadResult in = io::read_layout(wind);
   ASSERT_TRUE(in.layout);
-  const auto r = reference_for<oracle::L1Reference>(wind);
-  const oracle::HomotopyWords h(r.norm.domain, r.norm.obstacles);
+  const geom::NormalizedObstacles norm = normalized_for(wind);
+  const oracle::HomotopyWords h(norm.domain, norm.obstacles);
   const io::Net* spiral = nullptr;
   for (const io::Net& n : in.layout->nets)
     if (n.name == "spiral") spiral = &n;

@@ -21,6 +21,15 @@ struct LayoutReference {
   std::unique_ptr<Ref> ref;  // null when the file does not read (a test failure is recorded)
 };
 
+// The file's obstacles normalized in the routing domain, without a reference (building one costs
+// a visibility graph: most of a test's time under the sanitizers when only the obstacles are used).
+inline geom::NormalizedObstacles normalized_for(const std::string& file, const std::vector<geom::Point>& extra = {}) {
+  io::ReadResult rr = io::read_layout(file);
+  EXPECT_TRUE(rr.layout.has_value()) << file;
+  if (!rr.layout) return {};
+  return geom::normalize_obstacles(io::blockage_polygons(*rr.layout), io::routing_domain(*rr.layout, extra));
+}
+
 template <class Ref>
 LayoutReference<Ref> reference_for(const std::string& file, const std::vector<geom::Point>& extra = {}) {
   io::ReadResult rr = io::read_layout(file);

@@ -305,16 +305,17 @@ inline void run_spm_seeds(const std::vector<std::uint64_t>& seeds, const std::fu
   }
 }
 
-// Seeds 1..n (a quarter of them under the sanitizers) through check, or only the seed the
-// environment variable `env` names. False when it named one (the caller's totals then mean
+// Seeds 1..n (n / sanitized_divisor of them under the sanitizers) through check, or only the seed
+// the environment variable `env` names. False when it named one (the caller's totals then mean
 // nothing and its thresholds are skipped).
-inline bool run_seed_range(const char* env, std::int64_t n, const std::function<std::string(std::uint64_t)>& check) {
+inline bool run_seed_range(const char* env, std::int64_t n, const std::function<std::string(std::uint64_t)>& check,
+                           std::int64_t sanitized_divisor = 4) {
   if (const char* s = std::getenv(env)) {
     run_spm_seeds({std::strtoull(s, nullptr, 10)}, check, env);
     return false;
   }
   std::vector<std::uint64_t> seeds;
-  for (std::int64_t s = 1; s <= sanitized_share(n, 4); ++s) seeds.push_back(static_cast<std::uint64_t>(s));
+  for (std::int64_t s = 1; s <= sanitized_share(n, sanitized_divisor); ++s) seeds.push_back(static_cast<std::uint64_t>(s));
   run_spm_seeds(seeds, check, env);
   return true;
 }
