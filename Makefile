@@ -24,7 +24,7 @@ $(ASAN_BUILD)/CMakeCache.txt: | deps
 build-asan: deps $(ASAN_BUILD)/CMakeCache.txt
 	@cmake --build $(ASAN_BUILD) -j $(JOBS) -- --no-print-directory
 
-# What make test needs: the command and the tests (not the benchmarks nor the long tests).
+# What make test needs: the command and the tests (not the benchmarks).
 # cmake_check_build_system first: a tree configured before taut_tests existed learns of it.
 build-tests: deps $(BUILD)/CMakeCache.txt
 	@cmake --build $(BUILD) --target cmake_check_build_system -- --no-print-directory
