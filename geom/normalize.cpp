@@ -366,6 +366,51 @@ NormalizedObstacles normalize_obstacles(std::span<const Polygon> inputs,
   return result;
 }
 
+namespace {
+// cut_beyond's ring: empty when the ring lies strictly beyond a side of d.
+Ring cut_ring_beyond(const Ring& ring, const Box& d) {
+  Ring r = ring;
+  for (int side = 0; side < 4; ++side) {
+    const std::size_t n = r.size();
+    if (n < 4) break;  // a triangle has no run of three
+    auto beyond = [&](Point p) {
+      switch (side) {
+        case 0: return p.x < d.lo.x;
+        case 1: return p.x > d.hi.x;
+        case 2: return p.y < d.lo.y;
+        default: return p.y > d.hi.y;
+      }
+    };
+    std::vector<char> b(n);
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < n; ++i) count += b[i] = beyond(r[i]);
+    if (count == n) return {};
+    if (count < 3) continue;
+    Ring out;
+    out.reserve(n);
+    for (std::size_t i = 0; i < n; ++i)
+      if (!(b[i] && b[(i + n - 1) % n] && b[(i + 1) % n])) out.push_back(r[i]);
+    if (out.size() == n) continue;
+    const i128 before = twice_area(r), after = twice_area(out);
+    if ((before > 0) != (after > 0) || (before < 0) != (after < 0)) continue;  // keep this side's run
+    r = std::move(out);
+  }
+  return r;
+}
+}  // namespace
+
+std::optional<Polygon> cut_beyond(const Polygon& polygon, const Box& d) {
+  if (std::all_of(polygon.outer.begin(), polygon.outer.end(), [&](Point p) { return in_box(p, d); })) return polygon;
+  Polygon out;
+  out.outer = cut_ring_beyond(polygon.outer, d);
+  if (out.outer.empty()) return std::nullopt;
+  for (const Ring& h : polygon.holes) {
+    Ring c = cut_ring_beyond(h, d);
+    if (!c.empty()) out.holes.push_back(std::move(c));
+  }
+  return out;
+}
+
 std::vector<Polygon> square_grown(std::span<const Polygon> polygons, Coord r) {
   if (r < 0) throw std::invalid_argument("square_grown: negative r");
   std::vector<Polygon> out;

@@ -95,6 +95,17 @@ NormalizedObstacles normalize_obstacles(std::span<const Polygon> inputs,
 // grown coordinate would pass kMaxCoord.
 std::vector<Polygon> square_grown(std::span<const Polygon> polygons, Coord r);
 
+// The polygon (a valid one, as normalize_obstacles takes) with less of it outside the box d,
+// for normalize_obstacles(..., d), whose result depends only on the part in d: side after side,
+// each run of consecutive ring vertices strictly beyond that side of d is cut to its first and
+// last vertex. The chord between them lies strictly beyond the side too, so the ring's winding
+// number is unchanged at every point of d (a ray from there away from the side never meets what
+// changed); a ring cut so that its signed area would change sign (possible when the chord
+// crosses another stretch of the ring out there) is kept whole, so normalize_obstacles orients
+// it as before. A hole entirely beyond a side is dropped; nullopt when the outer ring is (then
+// the polygon has no point in d). Exact; no vertex is moved or added.
+std::optional<Polygon> cut_beyond(const Polygon& polygon, const Box& d);
+
 // The box grown by r >= 0 on every side, clamped to the coordinate limit.
 Box grown_box(const Box& box, std::int64_t r);
 

@@ -278,18 +278,44 @@ UnionResult union_loops(const std::vector<Loop>& loops, const Box& domain, std::
   splits.shrink_to_fit();
   std::vector<int> order(pts.size());
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return lex_less(pts[a], pts[b]); });
+  if (std::all_of(pts.begin(), pts.end(), [](const RPoint& p) { return p.is_integer(); })) {
+    // Integer points only (always with axis-parallel edges): the same order as lex_less by one
+    // 64-bit key per point, (x, y) offset to unsigned, sorted directly (the indirect sort by
+    // lex_less was a tenth of the union's time on the net router's windows).
+    auto key = [](const RPoint& p) {
+      return (std::uint64_t{static_cast<std::uint32_t>(p.xi) ^ 0x80000000u} << 32) |
+             (static_cast<std::uint32_t>(p.yi) ^ 0x80000000u);
+    };
+    std::vector<std::pair<std::uint64_t, int>> keyed(pts.size());
+    for (std::size_t k = 0; k < pts.size(); ++k) keyed[k] = {key(pts[k]), static_cast<int>(k)};
+    std::sort(keyed.begin(), keyed.end());
+    for (std::size_t k = 0; k < keyed.size(); ++k) order[k] = keyed[k].second;
+  } else {
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return lex_less(pts[a], pts[b]); });
+  }
   std::vector<RPoint> verts;
-  std::vector<std::pair<int, int>> seg_vertex;  // (segment, vertex id)
-  seg_vertex.reserve(order.size());
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    if (k == 0 || !(pts[order[k]] == verts.back())) verts.push_back(pts[order[k]]);
-    seg_vertex.emplace_back(owner[order[k]], static_cast<int>(verts.size()) - 1);
+  // (segment, vertex id) for every vertex on a segment, by segment, then by vertex: a counting
+  // sort by segment of the vertices in order (each segment's list then comes sorted by id),
+  // duplicates (a split at an end, or twice) dropped.
+  std::vector<std::pair<int, int>> seg_vertex;
+  {
+    std::vector<int> vid(order.size());
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      if (k == 0 || !(pts[order[k]] == verts.back())) verts.push_back(pts[order[k]]);
+      vid[k] = static_cast<int>(verts.size()) - 1;
+    }
+    std::vector<int> first(static_cast<std::size_t>(ns) + 1, 0);
+    for (const int k : order) ++first[static_cast<std::size_t>(owner[k]) + 1];
+    for (int i = 0; i < ns; ++i) first[i + 1] += first[i];
+    seg_vertex.resize(order.size());
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      const int sgm = owner[order[k]];
+      seg_vertex[static_cast<std::size_t>(first[sgm]++)] = {sgm, vid[k]};
+    }
   }
   pts = {};
   owner = {};
   order = {};
-  std::sort(seg_vertex.begin(), seg_vertex.end());
   seg_vertex.erase(std::unique(seg_vertex.begin(), seg_vertex.end()), seg_vertex.end());
   const int nv = static_cast<int>(verts.size());
 

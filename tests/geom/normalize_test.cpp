@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "support/run.h"
+#include "support/sanitized.h"
 
 #include <algorithm>
 #include <cmath>
@@ -200,4 +201,109 @@ TEST(SquareGrown, CoversTheMinkowskiSum) {
   }
   std::printf("%lld lattice points, %lld covered (%lld by the union's outward rounding)\n", points, covered, rounded);
   EXPECT_LT(rounded * 100, covered);
+}
+
+namespace {
+// Winding number of ring r around q, all coordinates times 4 (q off the ring): Sunday's rule.
+int winding4(const Ring& r, Point q4) {
+  int w = 0;
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    const Point a{r[i].x * 4, r[i].y * 4}, b{r[(i + 1) % r.size()].x * 4, r[(i + 1) % r.size()].y * 4};
+    const std::int64_t o = (std::int64_t{b.x} - a.x) * (std::int64_t{q4.y} - a.y) - (std::int64_t{b.y} - a.y) * (std::int64_t{q4.x} - a.x);
+    if (a.y <= q4.y && q4.y < b.y && o > 0) ++w;
+    if (b.y <= q4.y && q4.y < a.y && o < 0) --w;
+  }
+  return w;
+}
+bool on_ring4(const Ring& r, Point q4) {
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    const Point a{r[i].x * 4, r[i].y * 4}, b{r[(i + 1) % r.size()].x * 4, r[(i + 1) % r.size()].y * 4};
+    if (taut::geom::on_segment(q4, a, b)) return true;
+  }
+  return false;
+}
+}  // namespace
+
+// cut_beyond(): the components of random unions of rectangles, triangles (sloped edges) and
+// rings with holes, cut against random boxes (sides through vertices and edges, boxes inside,
+// across and beside the shapes): every ring keeps its winding number at every point of the box
+// off both rings (points at quarter units, so on sloped edges too), the union in the box is the
+// same polygon for polygon (normalize_obstacles with the box as its domain), nothing is moved or
+// added, and the runs beyond the sides are in fact cut.
+TEST(CutBeyond, KeepsEverythingInTheBox) {
+  long long boxes = 0, cut_vertices = 0, dropped = 0, points = 0, inside_points = 0;
+  const auto seeds = static_cast<std::uint64_t>(taut::test::sanitized_share(1500, 5));
+  for (std::uint64_t seed = 1; seed <= seeds; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    std::mt19937_64 rng(seed * 7919);
+    auto r_ = [&](int lo, int hi) { return lo + static_cast<int>(rng() % static_cast<std::uint64_t>(hi - lo + 1)); };
+    std::vector<Polygon> in;
+    for (int k = r_(2, 9); k-- > 0;) {
+      const int x = r_(0, 30), y = r_(0, 30);
+      switch (r_(0, 3)) {
+        case 0: case 1: in.push_back(Polygon{{{x, y}, {x + r_(1, 12), y}, {x + r_(1, 12), y + r_(1, 12)}, {x, y + r_(1, 12)}}, {}}); break;
+        case 2: in.push_back(Polygon{{{x, y}, {x + r_(2, 9), y + r_(-3, 3)}, {x + r_(-2, 3), y + r_(2, 9)}}, {}}); break;
+        default: in.push_back(Polygon{{{x, y}, {x + 10, y}, {x + 10, y + 10}, {x, y + 10}}, {{{x + 2, y + 2}, {x + 2, y + 8}, {x + 8, y + 8}, {x + 8, y + 2}}}});
+      }
+    }
+    for (Polygon& p : in) p = taut::geom::normalize_polygon(p);
+    bool valid = true;
+    for (const Polygon& p : in) valid = valid && taut::geom::twice_area(p.outer) > 0;
+    if (!valid) continue;
+    const std::vector<Polygon> comps = taut::geom::normalize_obstacles(in, taut::geom::Box{{-100, -100}, {100, 100}}).obstacles;
+    for (int t = 0; t < 4; ++t) {
+      const int x0 = r_(-4, 36), y0 = r_(-4, 36);
+      const taut::geom::Box d{{x0, y0}, {x0 + r_(0, 20), y0 + r_(0, 20)}};
+      ++boxes;
+      std::vector<Polygon> cut;
+      for (const Polygon& p : comps) {
+        const std::optional<Polygon> c = taut::geom::cut_beyond(p, d);
+        std::vector<const Ring*> before{&p.outer}, after;
+        for (const Ring& h : p.holes) before.push_back(&h);
+        if (c) {
+          after.push_back(&c->outer);
+          for (const Ring& h : c->holes) after.push_back(&h);
+          for (const Ring* r : after)  // no vertex moved or added
+            for (Point v : *r) {
+              bool found = false;
+              for (const Ring* b : before) found = found || std::find(b->begin(), b->end(), v) != b->end();
+              ASSERT_TRUE(found) << "vertex (" << v.x << ", " << v.y << ") is new";
+            }
+          std::size_t nb = 0, na = 0;
+          for (const Ring* r : before) nb += r->size();
+          for (const Ring* r : after) na += r->size();
+          cut_vertices += static_cast<long long>(nb - na);
+          cut.push_back(*c);
+        } else {
+          ++dropped;
+        }
+        // winding at every point of d at quarter units, off the rings: the sum over the rings
+        for (int qx = 4 * d.lo.x; qx <= 4 * d.hi.x; ++qx)
+          for (int qy = 4 * d.lo.y; qy <= 4 * d.hi.y; ++qy) {
+            // lattice points, and points a quarter and three quarters off them (never on an
+            // axis-parallel edge)
+            const int mx = ((qx % 4) + 4) % 4, my = ((qy % 4) + 4) % 4;
+            if (!(mx == 0 && my == 0) && !(mx == 1 && my == 3)) continue;
+            const Point q{qx, qy};
+            bool on = false;
+            for (const Ring* r : before) on = on || on_ring4(*r, q);
+            for (const Ring* r : after) on = on || on_ring4(*r, q);
+            if (on) continue;
+            int wb = 0, wa = 0;
+            for (const Ring* r : before) wb += winding4(*r, q);
+            for (const Ring* r : after) wa += winding4(*r, q);
+            ASSERT_EQ(wa, wb) << "at (" << qx / 4.0 << ", " << qy / 4.0 << ")";
+            ++points;
+            inside_points += wb != 0;
+          }
+      }
+      EXPECT_EQ(taut::geom::normalize_obstacles(cut, d).obstacles, taut::geom::normalize_obstacles(comps, d).obstacles);
+    }
+  }
+  std::printf("%lld boxes: %lld vertices cut, %lld polygons beyond a side; %lld points compared, %lld inside\n", boxes,
+              cut_vertices, dropped, points, inside_points);
+  EXPECT_GT(boxes, taut::test::sanitized_share(4000, 5));
+  EXPECT_GT(cut_vertices, taut::test::sanitized_share(5000, 5));
+  EXPECT_GT(dropped, taut::test::sanitized_share(500, 5));
+  EXPECT_GT(inside_points, taut::test::sanitized_share(100000, 5));
 }

@@ -479,6 +479,7 @@ void fam_gen(Rand& r, Draft& d, io::GenKind kind, int scale) {
       d.grid = 50;
       break;
     case io::GenKind::Degenerate:
+    case io::GenKind::Channel:  // no family draws it; here so the switch names every kind
       o.size = r.range(3, 40) * scale;
       d.grid = 50;
       break;
