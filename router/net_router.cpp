@@ -431,8 +431,9 @@ geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel lev
   // threw on the overlap). So a passed component whose box meets an obstacle of the union's
   // output joins the rest, and the union is made again, until none does (disjoint closed boxes:
   // disjoint sets). Almost always one pass.
-  // What lies beyond the window's sides does not count (geom::cut_beyond): on the planted-net
-  // benchmark the pieces that cross a side carried a fifth of the union's input vertices.
+  // (First, what lies beyond the window's sides does not count, geom::cut_beyond: on 3,000
+  // planted nets the pieces that cross a side carried a fifth of the union's input vertices, and
+  // the cut removes 7 % of all of them. Then the union and its loop.)
   {
     std::vector<Polygon> cut_rest;
     cut_rest.reserve(rest.size());
