@@ -391,24 +391,23 @@ Ring cut_ring_beyond(const Ring& ring, const Box& d) {
     for (std::size_t i = 0; i < n; ++i)
       if (!(b[i] && b[(i + n - 1) % n] && b[(i + 1) % n])) out.push_back(r[i]);
     if (out.size() == n) continue;
-    const i128 before = twice_area(r), after = twice_area(out);
-    if ((before > 0) != (after > 0) || (before < 0) != (after < 0)) continue;  // keep this side's run
+    if (sign(twice_area(out)) != sign(twice_area(r))) continue;  // keep this side's run
     r = std::move(out);
   }
   return r;
 }
 }  // namespace
 
-std::optional<Polygon> cut_beyond(const Polygon& polygon, const Box& d) {
-  if (std::all_of(polygon.outer.begin(), polygon.outer.end(), [&](Point p) { return in_box(p, d); })) return polygon;
-  Polygon out;
-  out.outer = cut_ring_beyond(polygon.outer, d);
-  if (out.outer.empty()) return std::nullopt;
-  for (const Ring& h : polygon.holes) {
-    Ring c = cut_ring_beyond(h, d);
-    if (!c.empty()) out.holes.push_back(std::move(c));
-  }
-  return out;
+bool cut_beyond(Polygon& polygon, const Box& d) {
+  if (std::all_of(polygon.outer.begin(), polygon.outer.end(), [&](Point p) { return in_box(p, d); })) return true;
+  Ring outer = cut_ring_beyond(polygon.outer, d);
+  if (outer.empty()) return false;
+  polygon.outer = std::move(outer);
+  std::vector<Ring> holes;
+  for (const Ring& h : polygon.holes)
+    if (Ring c = cut_ring_beyond(h, d); !c.empty()) holes.push_back(std::move(c));
+  polygon.holes = std::move(holes);
+  return true;
 }
 
 std::vector<Polygon> square_grown(std::span<const Polygon> polygons, Coord r) {

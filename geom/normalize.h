@@ -102,9 +102,10 @@ std::vector<Polygon> square_grown(std::span<const Polygon> polygons, Coord r);
 // number is unchanged at every point of d (a ray from there away from the side never meets what
 // changed); a ring cut so that its signed area would change sign (possible when the chord
 // crosses another stretch of the ring out there) is kept whole, so normalize_obstacles orients
-// it as before. A hole entirely beyond a side is dropped; nullopt when the outer ring is (then
-// the polygon has no point in d). Exact; no vertex is moved or added.
-std::optional<Polygon> cut_beyond(const Polygon& polygon, const Box& d);
+// it as before. A hole entirely beyond a side is dropped; when the outer ring is (then
+// the polygon has no point in d: false, the polygon left as it was). In place; a polygon with
+// its outer ring in d is not touched. Exact; no vertex is moved or added.
+bool cut_beyond(Polygon& polygon, const Box& d);
 
 // The box grown by r >= 0 on every side, clamped to the coordinate limit.
 Box grown_box(const Box& box, std::int64_t r);

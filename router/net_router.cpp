@@ -434,13 +434,7 @@ geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel lev
   // (First, what lies beyond the window's sides does not count, geom::cut_beyond: on 3,000
   // planted nets the pieces that cross a side carried a fifth of the union's input vertices, and
   // the cut removes 7 % of all of them. Then the union and its loop.)
-  {
-    std::vector<Polygon> cut_rest;
-    cut_rest.reserve(rest.size());
-    for (const Polygon& p : rest)
-      if (std::optional<Polygon> c = geom::cut_beyond(p, dom)) cut_rest.push_back(std::move(*c));
-    rest = std::move(cut_rest);
-  }
+  std::erase_if(rest, [&](Polygon& p) { return !geom::cut_beyond(p, dom); });
   geom::NormalizedObstacles out;
   for (;;) {
     out = geom::normalize_obstacles(rest, dom);
