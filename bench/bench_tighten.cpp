@@ -18,7 +18,9 @@
 // wire in rectilinear, octilinear, c:0,45 and c:45,135 directions (router::c_oriented: the fewest-link
 // staircases of the class, best of R, as a ratio to tightening them), and the minimum-link paths
 // of the first 1,000 (router::MinLinker: time, links against the shortest wire's, and
-// the longest exact coordinate written out), and minimum-link loops (MinLinker::loop) of up to 300
+// the longest exact coordinate written out), minimum-link octilinear and c:0,45,90 paths of the
+// same wires (router::CMinLinker, section 6.3: time, links against the shortest wire's in that
+// set, sweeps and pieces per wire, and the time per wire by the taut wire's vertices), and minimum-link loops (MinLinker::loop) of up to 300
 // shortest loops of random closed walks among nearby free points (time as a ratio to tightening
 // those loops again, links, how many are proven minimal). Targets (issue #5): funnel >= 10^7 triangles/s; 10^4 wires on a
 // 10^5-vertex layout under 10 s.
@@ -37,6 +39,7 @@
 #include "bench/free_points.h"
 #include "geom/triangulation.h"
 #include "router/spm.h"
+#include "router/c_minlink.h"
 #include "router/minlink.h"
 #include "router/tighten.h"
 
@@ -196,6 +199,39 @@ int main(int argc, char** argv) {
           }
         },
         1);
+    // minimum-link octilinear and c:0,45,90 paths of the same taut wires (router::CMinLinker, H&S
+    // section 6.3, exact rationals), against the links of the shortest wire in those directions
+    // (router::c_oriented); per wire the time, bucketed by the taut wire's vertices (growth)
+    const taut::router::CMinLinker cml(tri);
+    const taut::geom::LatticeDirections m_sets[2] = {taut::geom::LatticeDirections::octilinear(),
+                                                     *taut::geom::LatticeDirections::parse("c:0,45,90")};
+    struct MStats {
+      double seconds = 0;
+      long long links = 0, shortest_links = 0, fewer = 0, none = 0, sweeps = 0, pieces = 0;
+      std::map<int, std::pair<double, long long>> by_vertices;  // log2(vertices) -> (seconds, wires)
+    } ms[2];
+    for (int o = 0; o < 2; ++o) {
+      for (const auto& t : taut_paths) {
+        const auto c = taut::router::c_oriented(tight, sb, t, m_sets[o]);
+        taut::router::CMinLinkPath m;
+        const double tw = seconds_of([&] { m = cml.path(t, m_sets[o]); }, 1);
+        ms[o].seconds += tw;
+        auto& bk = ms[o].by_vertices[static_cast<int>(std::log2(static_cast<double>(t.size())))];
+        bk.first += tw;
+        ++bk.second;
+        if (!m.ok()) {
+          ++ms[o].none;
+          continue;
+        }
+        ms[o].links += static_cast<long long>(m.links());
+        ms[o].sweeps += static_cast<long long>(m.sweeps);
+        ms[o].pieces += static_cast<long long>(m.pieces);
+        if (!c.points.empty()) {
+          ms[o].shortest_links += static_cast<long long>(taut::geom::count_bends(c.points)) + 1;
+          ms[o].fewer += static_cast<long long>(m.links()) < static_cast<long long>(taut::geom::count_bends(c.points)) + 1;
+        }
+      }
+    }
     // minimum-link loops (MinLinker::loop): closed walks of six free segments between random free
     // points near each other, tightened to their shortest loops (the contractible ones dropped)
     std::vector<std::vector<Point>> loops;
@@ -267,6 +303,22 @@ int main(int argc, char** argv) {
                 t_minlink / static_cast<double>(taut_paths.size()) / (t_tighten / static_cast<double>(sketches.size())),
                 static_cast<double>(ml_links) / static_cast<double>(taut_paths.size()),
                 static_cast<double>(taut_links) / static_cast<double>(taut_paths.size()), ml_digits);
+    for (int o = 0; o < 2; ++o) {
+      const double n = static_cast<double>(taut_paths.size());
+      std::printf("%9s minimum-link %s paths of the first 1,000 wires: %.3f s (%.2f ms per wire, %.1f x tightening one), "
+                  "%.2f links per wire against %.2f for the shortest %s wire (fewer on %lld), %lld with none, %.1f "
+                  "sweeps and %.0f pieces per wire\n",
+                  "", m_sets[o].name().c_str(), ms[o].seconds, ms[o].seconds / n * 1e3,
+                  ms[o].seconds / n / (t_tighten / static_cast<double>(sketches.size())),
+                  static_cast<double>(ms[o].links) / (n - static_cast<double>(ms[o].none)),
+                  static_cast<double>(ms[o].shortest_links) / (n - static_cast<double>(ms[o].none)),
+                  m_sets[o].name().c_str(), ms[o].fewer, ms[o].none,
+                  static_cast<double>(ms[o].sweeps) / (n - static_cast<double>(ms[o].none)),
+                  static_cast<double>(ms[o].pieces) / (n - static_cast<double>(ms[o].none)));
+      std::printf("%9s   growth: taut vertices", "");
+      for (const auto& [k, v] : ms[o].by_vertices) std::printf(" | %d..%d: %.2f ms", 1 << k, (2 << k) - 1, v.first / static_cast<double>(v.second) * 1e3);
+      std::printf("\n");
+    }
     if (!loops.empty())
       std::printf("%9s minimum-link loops of %zu shortest loops: %.3f s (%.2f ms per loop, %.1f x tightening one), %.2f "
                   "links per loop against %.2f vertices of the shortest, %lld proven minimal (%lld by an inflection edge)\n",

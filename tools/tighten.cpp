@@ -12,8 +12,10 @@
 // another angle are refused (CLI-0027) or, from <rules>, replaced by `any` (TIGHTEN-0003).
 // --min-link adds each wire's minimum-link path of its class (router/minlink.h, any angle, exact
 // rational bends; for a loop its minimum-link loop, section 5.2, proven minimal unless its
-// shortest loop is convex and the loop found is above the winding bound) to --stats and --svg;
-// it is not written as a wire (FORMAT.md coordinates are integers).
+// shortest loop is convex and the loop found is above the winding bound) to --stats and --svg,
+// and in a lattice direction set also its minimum-link path in those directions (router/c_minlink.h,
+// section 6.3, open wires only); they are not written as wires (FORMAT.md coordinates are
+// integers, and these bends are rationals).
 #include <chrono>
 #include <optional>
 #include <cstdio>
@@ -26,6 +28,7 @@
 #include "io/layout_writer.h"
 #include "io/stats_json.h"
 #include "io/svg.h"
+#include "router/c_minlink.h"
 #include "router/minlink.h"
 #include "router/tighten.h"
 #include "router/tighten_nets.h"
@@ -51,8 +54,25 @@ struct NetTightening {
   // winding bound (router::MinLinkLoop::minimal), so min_links is only an upper bound
   bool min_links_proven = true;
   bool min_link_failed = false;  // TIGHTEN-0008
-  // adds the minimum-link path of a taut line, or the minimum-link loop when is_loop
-  void add_min_link(const router::MinLinker& ml, std::span<const geom::Point> taut, bool is_loop) {
+  // --min-link in a lattice direction set: the minimum-link path of each open wire's class in
+  // those directions (section 6.3; exact rational bends)
+  std::size_t oriented_min_links = 0;
+  std::vector<router::CMinLinkPath> oriented_min_link;
+  std::string oriented_none;  // a wire with no path in the set (why), or a loop (not computed)
+  // adds the minimum-link path of a taut line, or the minimum-link loop when is_loop; and with a
+  // direction set, the minimum-link path in it
+  void add_min_link(const router::MinLinker& ml, std::span<const geom::Point> taut, bool is_loop,
+                    const geom::FreeSpaceTriangulation& t, const std::optional<geom::LatticeDirections>& set) {
+    if (set) {
+      if (is_loop) {
+        oriented_none = "a loop (minimum-link loops in a direction set are not computed)";
+      } else {
+        router::CMinLinkPath c = router::CMinLinker(t).path(taut, *set);
+        if (!c.ok()) oriented_none = c.why;
+        oriented_min_links += c.links();
+        oriented_min_link.push_back(std::move(c));
+      }
+    }
     if (is_loop) {
       router::MinLinkLoop l = ml.loop(taut);
       min_links_proven = min_links_proven && l.minimal;
@@ -97,9 +117,10 @@ void add_tighten(CLI::App& app, int& status) {
                 "keep half the wire width plus the spacing of <rules> from every blockage (tighten against "
                 "blockages grown by that much)");
   sub->add_flag("--min-link", args->min_link,
-                "also find each wire's minimum-link path of its class (any angle, exact rational bends): "
-                "its link count and bends go to --stats, its drawing to --svg; the written wires are "
-                "still the shortest ones");
+                "also find each wire's minimum-link path of its class (any angle, exact rational bends) "
+                "and, with rectilinear, octilinear or a c: set, its minimum-link path in those directions: "
+                "their link counts and bends go to --stats, their drawings to --svg; the written wires "
+                "are still the shortest ones");
   add_input_options(sub, args->file, args->load, "do not print warnings or the summary");
   sub->callback([args, &status] {
     using Clock = std::chrono::steady_clock;
@@ -141,6 +162,9 @@ void add_tighten(CLI::App& app, int& status) {
       }
     }
     const bool c_oriented = orientations != "any";
+    // --min-link in a lattice direction set also finds the minimum-link paths in it
+    std::optional<geom::LatticeDirections> min_link_set;
+    if (args->min_link && c_oriented) min_link_set = geom::LatticeDirections::parse(orientations);
 
     // What each net tightens: its sketch, else its routed wires.
     struct Input {
@@ -342,7 +366,7 @@ void add_tighten(CLI::App& app, int& status) {
                                            point_text(r.where));
                 taut = std::move(r.points);
               }
-              st.add_min_link(ml, taut, is_loop);
+              st.add_min_link(ml, taut, is_loop, sp.triangulation(), min_link_set);
             }
           } catch (const std::exception& e) {
             st.min_link_failed = true;
@@ -373,7 +397,7 @@ void add_tighten(CLI::App& app, int& status) {
           // an optional statistic: a failure here must not cost the tightened layout
           try {
             if (!min_linker) min_linker = std::make_unique<router::MinLinker>(wt.triangulation());
-            st.add_min_link(*min_linker, r.points, res.loop);
+            st.add_min_link(*min_linker, r.points, res.loop, wt.triangulation(), min_link_set);
           } catch (const std::exception& e) {
             st.min_link_failed = true;
             print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0008", layout->file, in.line_numbers[k], 0,
@@ -451,7 +475,19 @@ void add_tighten(CLI::App& app, int& status) {
           so.overlay += "<polyline class=\"min-link\" points=\"" + pts +
                         "\" fill=\"none\" stroke=\"#c0392b\" stroke-width=\"@1.5\" stroke-dasharray=\"@2 @3\"/>\n";
         }
-      so.caption = args->min_link ? "tightened (input dashed, minimum-link dotted red)" : "tightened (input dashed)";
+      for (const NetTightening& st : stats)
+        for (const router::CMinLinkPath& m : st.oriented_min_link) {
+          std::string pts;
+          for (const router::RPoint& p : m.points)
+            pts += (pts.empty() ? "" : " ") + fixed3(p.x.convert_to<double>()) + "," + fixed3(p.y.convert_to<double>());
+          if (!pts.empty())
+            so.overlay += "<polyline class=\"oriented-min-link\" points=\"" + pts +
+                          "\" fill=\"none\" stroke=\"#111111\" stroke-width=\"@1.5\" stroke-dasharray=\"@5 @2 @1 @2\"/>\n";
+        }
+      so.caption = !args->min_link ? "tightened (input dashed)"
+                   : min_link_set ? "tightened (input dashed, minimum-link dotted red, minimum-link in " + orientations +
+                                        " dash-dotted black)"
+                                  : "tightened (input dashed, minimum-link dotted red)";
       svg = io::layout_to_svg(out, so);
     }
     auto stats_failed = [&](std::size_t i) {
@@ -497,6 +533,20 @@ void add_tighten(CLI::App& app, int& status) {
             nets.back()["min_links_at_most"] = s.min_links;
           }
           nets.back()["min_link_wires"] = paths;
+          if (min_link_set) {
+            // the same in the output's directions (section 6.3); null when some wire has none
+            nlohmann::ordered_json opaths = nlohmann::ordered_json::array();
+            for (const router::CMinLinkPath& m : s.oriented_min_link) {
+              nlohmann::ordered_json pts = nlohmann::ordered_json::array();
+              for (const router::RPoint& p : m.points) pts.push_back({p.x.str(), p.y.str()});
+              opaths.push_back(pts);
+            }
+            const bool ocounted = counted && s.oriented_none.empty();
+            nets.back()["oriented_min_links"] =
+                ocounted ? nlohmann::ordered_json(s.oriented_min_links) : nlohmann::ordered_json();
+            if (!s.oriented_none.empty()) nets.back()["oriented_min_links_none"] = s.oriented_none;
+            nets.back()["oriented_min_link_wires"] = opaths;
+          }
         }
       }
       j["tighten"] = {{"orientations", orientations},
@@ -530,6 +580,7 @@ void add_tighten(CLI::App& app, int& status) {
           else
             std::cerr << ", minimum links " << s.min_links_at_least << " to " << s.min_links
                       << " (a convex loop's minimum is not proven)";
+          if (min_link_set && s.oriented_none.empty()) std::cerr << " (" << orientations << ": " << s.oriented_min_links << ")";
         }
         std::cerr << '\n';
       }

@@ -250,21 +250,37 @@ void expect_loop_in_class(const std::vector<oracle::QPoint>& q, const Path& sket
       << "another free homotopy class";
 }
 
+// taut tighten designs/wind.xml --min-link in the given orientations, with what the tests judge it
+// by: the layout, its normalized blockages (sketch points included in the domain), the homotopy
+// reference and the --stats JSON.
+struct WindMinLink {
+  WindMinLink(const std::string& name, const std::string& orientations)
+      : dir(temp_dir(name)),
+        run(run_taut({"tighten", kDesigns + "wind.xml", "-o", dir + "/w.xml", "--orientations", orientations, "--svg",
+                      dir + "/w.svg", "--stats", dir + "/w.json", "--min-link"})),
+        rr(io::read_layout(kDesigns + "wind.xml")),
+        norm(normalized_for(kDesigns + "wind.xml", sketch_points(rr))),
+        h(norm.domain, norm.obstacles),
+        j(run.status == 0 ? nlohmann::json::parse(read_text(dir + "/w.json")) : nlohmann::json()) {}
+  static std::vector<Point> sketch_points(const io::ReadResult& r) {
+    std::vector<Point> extra;
+    for (const io::Net& n : r.layout->nets) extra.insert(extra.end(), n.sketch->points.begin(), n.sketch->points.end());
+    return extra;
+  }
+  std::string dir;
+  RunResult run;
+  io::ReadResult rr;
+  geom::NormalizedObstacles norm;
+  oracle::HomotopyWords h;
+  nlohmann::json j;
+};
+
 // --min-link: each open wire's minimum-link path, exact, in the stats; checked against the
 // rational references (free, same class) and against the written (shortest) wire's links.
 TEST(Tighten, MinLinkPathsInTheStats) {
-  const std::string dir = temp_dir("tighten_minlink");
-  const std::string in = kDesigns + "wind.xml";
-  const auto run = run_taut({"tighten", in, "-o", dir + "/w.xml", "--orientations", "any", "--svg", dir + "/w.svg",
-                             "--stats", dir + "/w.json", "--min-link"});
-  ASSERT_EQ(run.status, 0) << run.err;
-  io::ReadResult rr = io::read_layout(in);
-  ASSERT_TRUE(rr.layout);
-  std::vector<Point> extra;
-  for (const io::Net& n : rr.layout->nets) extra.insert(extra.end(), n.sketch->points.begin(), n.sketch->points.end());
-  const geom::NormalizedObstacles norm = normalized_for(in, extra);
-  const oracle::HomotopyWords h(norm.domain, norm.obstacles);
-  const auto j = nlohmann::json::parse(read_text(dir + "/w.json"));
+  const WindMinLink w("tighten_minlink", "any");
+  ASSERT_EQ(w.run.status, 0) << w.run.err;
+  const auto& [dir, run, rr, norm, h, j] = w;
   const auto& nets = j["tighten"]["nets"];
   ASSERT_EQ(nets.size(), rr.layout->nets.size());
   int fewer = 0;
@@ -294,6 +310,54 @@ TEST(Tighten, MinLinkPathsInTheStats) {
   EXPECT_GE(fewer, 2);  // the slalom and the spiral save links
   EXPECT_NE(read_text(dir + "/w.svg").find("class=\"min-link\""), std::string::npos);
   EXPECT_NE(run.err.find("minimum links"), std::string::npos) << run.err;
+}
+
+// --min-link --orientations octilinear: each open wire's minimum-link octilinear path of its class
+// (section 6.3), exact, in the stats and drawn; checked against the rational references (ends, free,
+// same class, every link along one of the eight directions), never more links than the written
+// (shortest) octilinear wire, and never fewer than the any-angle minimum. The guard ring (a loop)
+// has none: null, and the reason.
+TEST(Tighten, OrientedMinLinkPathsInTheStats) {
+  const WindMinLink w("tighten_oriented_minlink", "octilinear");
+  ASSERT_EQ(w.run.status, 0) << w.run.err;
+  const auto& [dir, run, rr, norm, h, j] = w;
+  const auto& nets = j["tighten"]["nets"];
+  ASSERT_EQ(nets.size(), rr.layout->nets.size());
+  int fewer = 0, open = 0;
+  for (std::size_t i = 0; i < nets.size(); ++i) {
+    const Path& sketch = rr.layout->nets[i].sketch->points;
+    const auto& e = nets[i];
+    SCOPED_TRACE(e["net"].get<std::string>());
+    if (sketch.front() == sketch.back()) {
+      EXPECT_TRUE(e["oriented_min_links"].is_null());
+      EXPECT_NE(e["oriented_min_links_none"].get<std::string>().find("loop"), std::string::npos);
+      continue;
+    }
+    ++open;
+    ASSERT_EQ(e["oriented_min_link_wires"].size(), 1u);
+    std::vector<oracle::QPoint> q;
+    for (const auto& p : e["oriented_min_link_wires"][0])
+      q.push_back({mpq_class(p[0].get<std::string>()), mpq_class(p[1].get<std::string>())});
+    ASSERT_GE(q.size(), 2u);
+    const std::size_t links = q.size() - 1;
+    EXPECT_EQ(e["oriented_min_links"].get<std::size_t>(), links);
+    EXPECT_TRUE(q.front().x == sketch.front().x && q.front().y == sketch.front().y);
+    EXPECT_TRUE(q.back().x == sketch.back().x && q.back().y == sketch.back().y);
+    for (std::size_t k = 0; k + 1 < q.size(); ++k) {
+      EXPECT_TRUE(oracle::segment_free(q[k], q[k + 1], norm.domain, norm.obstacles)) << "link " << k;
+      const mpq_class dx = q[k + 1].x - q[k].x, dy = q[k + 1].y - q[k].y;
+      EXPECT_TRUE(dx == 0 || dy == 0 || dx == dy || dx == -dy) << "link " << k << " is not octilinear";
+    }
+    EXPECT_EQ(h.word(std::span<const oracle::QPoint>(q)), h.word(sketch)) << "another homotopy class";
+    const std::size_t written = e["bends_after"].get<std::size_t>() + 1;
+    EXPECT_LE(links, written);
+    EXPECT_GE(links, e["min_links"].get<std::size_t>());
+    fewer += links < written;
+  }
+  EXPECT_EQ(open, 5);
+  EXPECT_GE(fewer, 3);  // the slalom, the spiral, the loop and the squeeze save links (diag does not)
+  EXPECT_NE(read_text(dir + "/w.svg").find("class=\"oriented-min-link\""), std::string::npos);
+  EXPECT_NE(run.err.find("(octilinear: "), std::string::npos) << run.err;
 }
 
 // --min-link on loops (section 5.2): a ring wound twice round a square has a convex shortest

@@ -36,6 +36,7 @@
 #include "support/sanitized.h"
 #include "support/sketcher.h"
 #include "support/taut_check.h"
+#include "support/taut_scenes.h"
 #include "support/wavefront_cases.h"
 #include "support/wavefront_hand.h"
 
@@ -43,18 +44,6 @@ namespace taut::test {
 namespace {
 
 using geom::Point;
-using Path = std::vector<Point>;
-
-struct Scenery {
-  geom::FreeSpaceTriangulation t;
-  std::unique_ptr<router::Tightener> tight;
-};
-Scenery setup(const geom::Box& domain, const std::vector<geom::Polygon>& obstacles) {
-  Scenery s;
-  s.t = geom::triangulate_free_space(domain, obstacles);
-  if (s.t.ok()) s.tight = std::make_unique<router::Tightener>(s.t);
-  return s;
-}
 
 TEST(Tighten, AroundOneSquare) {
   const Scene sc = normalized({{0, 0}, {100, 100}}, {rect(40, 40, 60, 60)});
@@ -285,47 +274,6 @@ void check_seed(std::uint64_t seed, Totals& tot) {
   }
 }
 
-// The fewest bends of a lattice path from a to b made of unit steps in the set (4 axis steps, or
-// 8 with the diagonals), of exactly `axis` axis steps and `diag` diagonal ones (the length
-// axis + diag*sqrt2: equal lengths have equal counts, sqrt2 being irrational), in the homotopy
-// class `word`, every step and every turn allowed by the reference. Exhaustive: a DP over
-// (point, last step, steps of each kind, reduced word so far). -1 when there is none.
-// Unit steps of the lattice as the references see them: a step is free (and its word of crossed
-// cuts), a turn (or going straight on) at a point is allowed (not through a pinch).
-struct LatticeSteps {
-  static constexpr Point kSteps[8] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}, {1, 1}, {-1, 1}, {-1, -1}, {1, -1}};
-  const oracle::L1Reference& ref;
-  const oracle::HomotopyWords& h;
-  geom::Box D;
-  std::map<std::pair<Point, int>, std::pair<bool, std::vector<int>>> step_cache;
-  std::map<std::tuple<Point, int, int>, bool> turn_cache;
-  const std::pair<bool, std::vector<int>>& step(Point p, int d) {
-    auto it = step_cache.find({p, d});
-    if (it != step_cache.end()) return it->second;
-    const Point q{p.x + kSteps[d].x, p.y + kSteps[d].y};
-    const bool in = q.x >= D.lo.x && q.x <= D.hi.x && q.y >= D.lo.y && q.y <= D.hi.y;
-    std::pair<bool, std::vector<int>> v{in && ref.visible(p, q), {}};
-    if (v.first) v.second = h.word(Path{p, q});
-    return step_cache.emplace(std::pair{p, d}, std::move(v)).first->second;
-  }
-  bool turn_ok(Point p, int din, int dout) {
-    auto [it, fresh] = turn_cache.emplace(std::tuple{p, din, dout}, false);
-    if (fresh) {
-      const Point prev{p.x - kSteps[din].x, p.y - kSteps[din].y}, next{p.x + kSteps[dout].x, p.y + kSteps[dout].y};
-      it->second = ref.check_path(Path{prev, p, next}).has_value();
-    }
-    return it->second;
-  }
-  // the reduced word of w followed by the step's word
-  static std::vector<int> append(std::vector<int> w, const std::vector<int>& more) {
-    for (int x : more) {
-      if (!w.empty() && w.back() == -x) w.pop_back();
-      else w.push_back(x);
-    }
-    return w;
-  }
-};
-
 // The fewest bends of a lattice path from a to b in the class `word` made of exactly `axis` unit
 // axis steps and `diag` diagonal ones, using only the steps LatticeSteps::kSteps[d] whose bit d is
 // set in `steps` (0x0F: rectilinear, 0xFF: octilinear): a layered search over every such path.
@@ -380,186 +328,10 @@ int fewest_bends_exhaustive(const oracle::L1Reference& ref, const oracle::Homoto
   return best;
 }
 
-// The fewest bends of any rectilinear lattice path from a to b in the class `word`, of any length
-// (unit steps, no reversal, turns allowed by the reference): a 0-1 BFS over (point, last step,
-// reduced word) with cost = bends, exhaustive up to `cap` bends. -1 when there is none within cap.
-int fewest_bends_any_length(const oracle::L1Reference& ref, const oracle::HomotopyWords& h, const geom::Box& D, Point a,
-                            Point b, const std::vector<int>& word, int cap) {
-  if (a == b) return word.empty() ? 0 : -1;
-  LatticeSteps ls{ref, h, D, {}, {}};
-  using State = std::tuple<Point, int, std::vector<int>>;
-  std::map<State, int> dist;
-  std::deque<std::pair<State, int>> queue;
-  for (int d = 0; d < 4; ++d) {
-    const auto& st = ls.step(a, d);
-    if (!st.first) continue;
-    const Point q{a.x + LatticeSteps::kSteps[d].x, a.y + LatticeSteps::kSteps[d].y};
-    State s{q, d, st.second};
-    if (dist.emplace(s, 0).second) queue.emplace_back(std::move(s), 0);
-  }
-  while (!queue.empty()) {
-    auto [s, c] = std::move(queue.front());
-    queue.pop_front();
-    if (dist.at(s) < c) continue;
-    const auto& [p, dir, w] = s;
-    if (p == b && w == word) return c;
-    for (int d = 0; d < 4; ++d) {
-      if ((d + 2) % 4 == dir) continue;  // no reversal
-      const int nc = c + (d != dir);
-      if (nc > cap) continue;
-      const auto& st = ls.step(p, d);
-      if (!st.first || !ls.turn_ok(p, dir, d)) continue;
-      const Point q{p.x + LatticeSteps::kSteps[d].x, p.y + LatticeSteps::kSteps[d].y};
-      State n{q, d, LatticeSteps::append(w, st.second)};
-      auto [it, fresh] = dist.emplace(n, nc);
-      if (!fresh && it->second <= nc) continue;
-      it->second = nc;
-      if (nc == c) queue.emplace_front(std::move(n), nc);
-      else queue.emplace_back(std::move(n), nc);
-    }
-  }
-  return -1;
-}
-
 // Degenerate small layouts (from a review of staircase_in_class; 9x9): sloped triangles, rectangles
 // touching at corners and edges, octilinear diamonds and 45-degree triangles, T-pinches (a tip on
 // the middle of a rectangle's edge), sloped slivers. Every c-oriented wire against the exhaustive
 // search: the same bends, and a missing wire only when the search finds none either.
-// A random sketch (a walk of `legs` legs, with loops appended when asked) and its taut path;
-// nullopt when the sketch is closed or does not tighten.
-struct TautSketch {
-  Path sketch;
-  router::Tightened taut;
-};
-std::optional<TautSketch> taut_sketch(Sketcher& sk, const router::Tightener& tight, int legs, bool loops) {
-  TautSketch r{sk.walk(legs), {}};
-  if (loops) sk.add_loops(r.sketch);
-  if (r.sketch.size() < 2 || r.sketch.front() == r.sketch.back()) return std::nullopt;
-  r.taut = tight.tighten(r.sketch);
-  if (r.taut.status != router::TightenStatus::Ok) return std::nullopt;
-  return r;
-}
-
-// Lattice points of [0, N]^2 that are free with one wedge (where the sketches start, end and bend).
-std::vector<Point> single_wedge_points(const oracle::L1Reference& ref, int N) {
-  std::vector<Point> pts;
-  for (int x = 0; x <= N; ++x)
-    for (int y = 0; y <= N; ++y)
-      if (ref.is_free({x, y}) && ref.wedges_at({x, y}).size() == 1) pts.push_back({x, y});
-  return pts;
-}
-
-// First slab 1: the pieces gather their walls from many slabs even in small layouts.
-router::StaircaseBuilder many_slabs(const Scene& sc) {
-  router::StaircaseOptions so;
-  so.first_slab = 1;
-  return router::StaircaseBuilder(sc.domain, sc.obstacles, so);
-}
-
-// A small scene with what the c-oriented tests judge by. The homotopy reference is built first:
-// it cuts every normalized layout (obstacles pinched at their top vertex included), so a throw
-// there fails the test; a layout the L1 reference finds problems in is skipped by the caller.
-struct Judged {
-  explicit Judged(const Scene& s)
-      : sc(s), h(sc.domain, sc.obstacles), ref(sc.domain, sc.obstacles), st(setup(sc.domain, sc.obstacles)),
-        sb(many_slabs(sc)) {}
-  Scene sc;
-  oracle::HomotopyWords h;
-  oracle::L1Reference ref;
-  Scenery st;
-  router::StaircaseBuilder sb;
-};
-// The judged scene, or nullptr when the L1 reference finds problems in it (skipped).
-std::unique_ptr<Judged> judge(const Scene& sc) {
-  auto j = std::make_unique<Judged>(sc);
-  if (!j->ref.problems().empty()) return nullptr;
-  return j;
-}
-
-// A polygon from its vertices in either orientation (counter-clockwise as normalization wants).
-geom::Polygon poly(std::vector<Point> r) {
-  if (geom::twice_area(r) < 0) std::reverse(r.begin(), r.end());
-  return {r, {}};
-}
-
-std::vector<geom::Polygon> degenerate_scene(std::mt19937& rng, int kind, int N) {
-  auto uni = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
-  std::vector<geom::Polygon> out;
-  const geom::Box dom{{0, 0}, {N, N}};
-  if (kind == 0) return random_triangles(rng, dom, 4);
-  if (kind == 1) {  // rects touching at corners / edges plus a triangle
-    int x0 = uni(1, N - 5), y0 = uni(1, N - 5);
-    int w = uni(1, 3), hh = uni(1, 3);
-    out.push_back(rect(x0, y0, x0 + w, y0 + hh));
-    for (int i = 0; i < uni(1, 3); ++i) {
-      int c = uni(0, 3);
-      int w2 = uni(1, 3), h2 = uni(1, 3);
-      int cx = (c & 1) ? x0 + w : x0, cy = (c & 2) ? y0 + hh : y0;
-      int nx = (c & 1) ? cx : cx - w2, ny = (c & 2) ? cy : cy - h2;
-      if (nx < 0 || ny < 0 || nx + w2 > N || ny + h2 > N) continue;
-      out.push_back(rect(nx, ny, nx + w2, ny + h2));
-    }
-    auto t = random_triangles(rng, dom, 2);
-    out.insert(out.end(), t.begin(), t.end());
-    return out;
-  }
-  if (kind == 2) {  // octilinear shapes
-    for (int i = 0; i < uni(1, 4); ++i) {
-      int cx = uni(1, N - 1), cy = uni(1, N - 1), r = uni(1, 2);
-      int s = uni(0, 3);
-      if (s == 0) out.push_back(poly({{cx - r, cy}, {cx, cy - r}, {cx + r, cy}, {cx, cy + r}}));
-      else if (s == 1) out.push_back(poly({{cx, cy}, {cx + 2 * r, cy}, {cx, cy + 2 * r}}));
-      else if (s == 2) out.push_back(poly({{cx, cy}, {cx + 2 * r, cy}, {cx + 2 * r, cy + 2 * r}}));
-      else out.push_back(rect(cx, cy, cx + r, cy + r));
-    }
-    return out;
-  }
-  if (kind == 3) {  // T pinches: a triangle/diamond tip touching the middle of a rect edge
-    int x0 = uni(2, N - 6), y0 = uni(2, N - 6), w = uni(2, 4), hh = uni(2, 4);
-    out.push_back(rect(x0, y0, x0 + w, y0 + hh));
-    for (int i = 0; i < uni(1, 3); ++i) {
-      int side = uni(0, 3);
-      Point tip;
-      if (side == 0) tip = {uni(x0 + 1, x0 + w - 1), y0};
-      else if (side == 1) tip = {uni(x0 + 1, x0 + w - 1), y0 + hh};
-      else if (side == 2) tip = {x0, uni(y0 + 1, y0 + hh - 1)};
-      else tip = {x0 + w, uni(y0 + 1, y0 + hh - 1)};
-      int dx = side == 2 ? -1 : side == 3 ? 1 : 0, dy = side == 0 ? -1 : side == 1 ? 1 : 0;
-      int L = uni(1, 3), a = uni(1, 3), b = uni(0, 2);
-      Point base = {tip.x + dx * L, tip.y + dy * L};
-      Point p1 = {base.x + (dy != 0 ? a : b), base.y + (dx != 0 ? a : b)};
-      Point p2 = {base.x - (dy != 0 ? uni(1, 3) : b), base.y - (dx != 0 ? uni(1, 3) : b)};
-      bool okp = true;
-      for (Point p : {p1, p2}) okp = okp && p.x >= 0 && p.y >= 0 && p.x <= N && p.y <= N;
-      if (!okp || geom::twice_area(geom::Ring{tip, p1, p2}) == 0) continue;
-      out.push_back(poly({tip, p1, p2}));
-    }
-    auto t = random_triangles(rng, dom, 1);
-    out.insert(out.end(), t.begin(), t.end());
-    return out;
-  }
-  // kind 4: thin slivers and quads with sloped sides
-  for (int i = 0; i < uni(2, 5); ++i) {
-    std::vector<Point> r;
-    int n = uni(3, 4);
-    int cx = uni(1, N - 1), cy = uni(1, N - 1);
-    for (int k = 0; k < n; ++k) r.push_back({std::clamp(cx + uni(-3, 3), 0, N), std::clamp(cy + uni(-3, 3), 0, N)});
-    if (n == 4) {
-      // ordered by angle around the centroid (normalization rejects what is still not simple)
-      double mx = 0, my = 0;
-      for (auto p : r) mx += p.x, my += p.y;
-      mx /= 4, my /= 4;
-      std::sort(r.begin(), r.end(), [&](Point a, Point b) { return std::atan2(a.y - my, a.x - mx) < std::atan2(b.y - my, b.x - mx); });
-      bool simple = true;
-      for (int k = 0; k < 4; ++k) simple = simple && !(r[k] == r[(k + 1) % 4]);
-      if (!simple) continue;
-    }
-    if (geom::twice_area(r) == 0) continue;
-    out.push_back(poly(r));
-  }
-  return out;
-}
-
 TEST(Tighten, COrientedFewestLinksOnDegenerateScenes) {
   long long compared = 0, missing = 0, scenes = 0;
   const int N = 9, n = static_cast<int>(sanitized_share(60, 15));
@@ -709,21 +481,9 @@ TEST(Tighten, COrientedLatticeSetsAgainstExhaustiveSearch) {
   for (int seed = 1; seed <= n; ++seed) {
     for (int kind = 0; kind < 6; ++kind) {
       std::mt19937 rng(static_cast<unsigned>(seed * 131 + kind));
-      Scene sc;
-      try {
-        if (kind < 5) {
-          sc = normalized({{0, 0}, {N, N}}, degenerate_scene(rng, kind, N));
-        } else {
-          std::vector<geom::Polygon> rects;
-          for (int i = 0, k = 1 + static_cast<int>(rng() % 3); i < k; ++i) {
-            const int x0 = 1 + static_cast<int>(rng() % 6), y0 = 1 + static_cast<int>(rng() % 6);
-            rects.push_back(rect(x0, y0, x0 + 1 + static_cast<int>(rng() % 3), y0 + 1 + static_cast<int>(rng() % 3)));
-          }
-          sc = normalized({{0, 0}, {N, N}}, rects);
-        }
-      } catch (const std::exception&) {
-        continue;  // not a valid layout
-      }
+      const std::optional<Scene> scene = small_scene(rng, kind, N);
+      if (!scene) continue;
+      const Scene& sc = *scene;
       const auto judged = judge(sc);
       if (!judged) continue;
       const auto& [sc_, h, ref, st, sb] = *judged;
