@@ -888,14 +888,16 @@ void NetRouter::route_in_order(const NetRouteFn& route, std::span<const std::siz
     }
     return;
   }
-  // A pipeline: `threads` - 1 workers try nets not placed yet that have no attempt (among the next
+  // A pipeline: `threads` workers try nets not placed yet that have no attempt (among the next
   // `ahead`, the earliest first) against the space as it is then; this thread places them in
   // order, each when its attempt is valid: no wire piece placed or removed since the attempt
   // first read the space meets the windows it was tried in (it depends on nothing else); it tries
-  // the next net itself when no worker has, or again when the attempt was not valid. Workers
-  // take a net early only when no net before it still to be placed is likely to change its first
-  // window: the wires of one already tried, or the first window of one not tried yet (grown by
-  // b), meet it. So few attempts are wasted; the next net to place is always free to take.
+  // the next net itself when no worker has, or again when the attempt was not valid, and
+  // otherwise only waits (with `threads` - 1 workers and this thread trying, the worker took the
+  // next net first and this thread waited for it: two threads took turns, 1.02 times one
+  // thread's time on 3,000 planted nets). Workers take a net early only when no net before it
+  // still to be placed is likely to change its first window: the wires of one already tried, or
+  // the first window of one not tried yet (grown by b), meet it. So few attempts are wasted.
   const std::size_t n = nets.size(), ahead = 16 * static_cast<std::size_t>(threads);
   std::vector<Box> first(n), reach(n);  // first windows; the same grown by b (where their wires' pieces lie)
   for (std::size_t k = 0; k < n; ++k) {
@@ -976,7 +978,7 @@ void NetRouter::route_in_order(const NetRouteFn& route, std::span<const std::siz
     pool.clear();  // joins
   };
   try {
-    for (int t = 1; t < threads; ++t) pool.emplace_back(work);  // and this thread
+    for (int t = 0; t < threads; ++t) pool.emplace_back(work);
     std::unique_lock lock(m);
     while (next < n) {
       if (stopped) break;
