@@ -67,6 +67,15 @@ std::optional<Path> way_along(const std::vector<Path>& wires, Point a, Point b) 
   return way_between(router::cut_at_joints(std::vector<std::vector<Point>>(wires.begin(), wires.end()), ends), a, b);
 }
 
+// The README's picture of the demo is what `taut route designs/demo.xml --svg` (make run) draws now.
+TEST(Route, DemoPictureInTheReadme) {
+  const std::string dir = temp_dir("route_demo_picture");
+  const auto r = run_taut({"route", kDemo, "-q", "-o", dir + "/d.xml", "--svg", dir + "/d.svg"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(read_text(dir + "/d.svg"), read_text(std::string(TAUT_SOURCE_DIR) + "/docs/demo.svg"))
+      << "docs/demo.svg is not what taut draws now: copy " << dir << "/d.svg";
+}
+
 TEST(Path, DemoJsonIsShortestRectilinearAndFree) {
   const Reference r = reference_for(kDemo);
   const std::vector<std::pair<Point, Point>> cases = {

@@ -357,6 +357,12 @@ TEST(Tighten, OrientedMinLinkPathsInTheStats) {
   EXPECT_EQ(open, 5);
   EXPECT_GE(fewer, 3);  // the slalom, the spiral, the loop and the squeeze save links (diag does not)
   EXPECT_NE(read_text(dir + "/w.svg").find("class=\"oriented-min-link\""), std::string::npos);
+  // the README's picture: make run's command (with --clearance) draws it
+  const auto pic = run_taut({"tighten", kDesigns + "wind.xml", "-q", "--clearance", "--min-link", "--orientations",
+                             "octilinear", "-o", dir + "/c.xml", "--svg", dir + "/c.svg"});
+  ASSERT_EQ(pic.status, 0) << pic.err;
+  EXPECT_EQ(read_text(dir + "/c.svg"), read_text(std::string(TAUT_SOURCE_DIR) + "/docs/wind-oct-minlink.svg"))
+      << "docs/wind-oct-minlink.svg is not what taut draws now: copy " << dir << "/c.svg";
   EXPECT_NE(run.err.find("(octilinear: "), std::string::npos) << run.err;
 }
 
