@@ -559,4 +559,98 @@ std::vector<Ring> convex_minus_box(const Ring& convex, Box s) {
   return out;
 }
 
+std::optional<Ring> octilinear_convex_ring(const Ring& in) {
+  // without repeated vertices and vertices where the ring runs straight on
+  Ring r;
+  for (const Point p : in)
+    if (r.empty() || !(r.back() == p)) r.push_back(p);
+  while (r.size() > 1 && r.front() == r.back()) r.pop_back();
+  for (bool changed = true; changed && r.size() >= 3;) {
+    changed = false;
+    for (std::size_t i = 0; i < r.size() && r.size() >= 3; ++i) {
+      const Point a = r[(i + r.size() - 1) % r.size()], b = r[i], c = r[(i + 1) % r.size()];
+      if (orientation(a, b, c) != 0) continue;
+      if (dot(a, b, b, c) <= 0) return std::nullopt;  // a spike: not convex
+      r.erase(r.begin() + static_cast<std::ptrdiff_t>(i));
+      changed = true;
+      break;
+    }
+  }
+  if (r.size() < 3) return std::nullopt;
+  int turn = 0;
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    const Point a = r[i], b = r[(i + 1) % r.size()], c = r[(i + 2) % r.size()];
+    const std::int64_t dx = std::int64_t{b.x} - a.x, dy = std::int64_t{b.y} - a.y;
+    if (dx != 0 && dy != 0 && dx != dy && dx != -dy) return std::nullopt;
+    const int o = orientation(a, b, c);
+    if (turn != 0 && o != turn) return std::nullopt;
+    turn = o;
+  }
+  if (turn < 0) std::reverse(r.begin(), r.end());
+  return r;
+}
+
+namespace {
+
+// The convex polygon c (counter-clockwise, integer) intersected with the closed convex polygon t
+// (counter-clockwise, integer vertices, every edge horizontal, vertical or at 45 degrees), each
+// crossing of c's edges with t's edges at a non-integer point replaced by its two integer
+// neighbours along t's edge, as the hull of those points (see convex_minus_pad).
+Ring clip_octilinear_rounded(const Ring& c, const Ring& t) {
+  using i128 = __int128;
+  auto inside = [](const Ring& r, Point q) {
+    for (std::size_t i = 0; i < r.size(); ++i)
+      if (orient(r[i], r[(i + 1) % r.size()], q) < 0) return false;
+    return true;
+  };
+  std::vector<Point> pts;
+  for (const Point p : c)
+    if (inside(t, p)) pts.push_back(p);
+  for (const Point p : t)
+    if (inside(c, p)) pts.push_back(p);
+  for (std::size_t j = 0; j < t.size(); ++j) {
+    const Point P = t[j], Q = t[(j + 1) % t.size()];
+    const std::int64_t ex = std::int64_t{Q.x} - P.x, ey = std::int64_t{Q.y} - P.y;
+    const std::int64_t len = std::max(std::abs(ex), std::abs(ey));  // in unit lattice steps u
+    const std::int64_t ux = ex / len, uy = ey / len;
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      const Point a = c[i], b = c[(i + 1) % c.size()];
+      const std::int64_t dx = std::int64_t{b.x} - a.x, dy = std::int64_t{b.y} - a.y;
+      const i128 den = i128{ux} * dy - i128{uy} * dx;  // cross(u, b - a)
+      if (den == 0) continue;  // parallel: their common points are vertices, taken above
+      // P + s u on the line of ab: s = cross(a - P, b - a) / cross(u, b - a)
+      i128 num = i128{std::int64_t{a.x} - P.x} * dy - i128{std::int64_t{a.y} - P.y} * dx;
+      i128 d = den;
+      if (d < 0) d = -d, num = -num;
+      if (num <= 0 || num >= i128{len} * d) continue;  // not strictly inside t's edge
+      // and within ab: the crossing's side of P's line along ab's normal (orientation tests)
+      const int oP = orientation(a, b, P), oQ = orientation(a, b, Q);
+      if (oP == oQ) continue;
+      const int oa = orientation(P, Q, a), ob = orientation(P, Q, b);
+      if (oa != 0 && oa == ob) continue;
+      const i128 lo = num / d;  // floor (num > 0)
+      const i128 hi = lo * d == num ? lo : lo + 1;
+      for (const i128 k : {lo, hi})
+        pts.push_back({static_cast<Coord>(P.x + k * ux), static_cast<Coord>(P.y + k * uy)});
+    }
+  }
+  return convex_hull(std::move(pts));
+}
+
+}  // namespace
+
+std::vector<Ring> convex_minus_pad(const Ring& convex, const Ring& pad) {
+  std::vector<Ring> out = convex_minus_box(convex, bounding_box(pad));
+  // the corners of the box that the pad's 45-degree edges cut off
+  for (std::size_t i = 0; i < pad.size(); ++i) {
+    const Point a = pad[i], b = pad[(i + 1) % pad.size()];
+    if (a.x == b.x || a.y == b.y) continue;
+    Point corner{a.x, b.y};
+    if (orient(a, b, corner) >= 0) corner = {b.x, a.y};  // the one right of a -> b (outside)
+    Ring tri = clip_octilinear_rounded(convex, Ring{a, corner, b});
+    if (tri.size() >= 3) out.push_back(std::move(tri));
+  }
+  return out;
+}
+
 }  // namespace taut::geom

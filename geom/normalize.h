@@ -140,4 +140,19 @@ Ring square_grown_segment(Point a, Point b, Coord r);
 // when they lie on s's boundary, which is free anyway).
 std::vector<Ring> convex_minus_box(const Ring& convex, Box s);
 
+// A pad: a convex polygon whose edges are horizontal, vertical or at 45 degrees (a rectangle, a
+// diamond, an octagon, a box with cut corners), in either orientation, repeated vertices and
+// vertices where it runs straight on allowed. Its ring counter-clockwise without those vertices;
+// nullopt for any other ring.
+std::optional<Ring> octilinear_convex_ring(const Ring& r);
+
+// The same as convex_minus_box for a pad (a counter-clockwise octilinear_convex_ring): convex
+// pieces whose union covers the closed convex polygon minus the open pad, none entering the open
+// pad: the parts outside the pad's box (convex_minus_box), and the parts in the triangles its
+// 45-degree edges cut off the box's corners. A crossing of `convex`'s boundary with a triangle's
+// side at a non-integer point is replaced by its two integer neighbours along that side (the
+// side's ends are integers, so they stay on it), so a part reaches at most about 1 DBU beyond
+// `convex` and never into the open pad.
+std::vector<Ring> convex_minus_pad(const Ring& convex, const Ring& pad);
+
 }  // namespace taut::geom

@@ -80,6 +80,21 @@ bool is_rectangle(const Polygon& p) {
   return b.lo.x < b.hi.x && b.lo.y < b.hi.y;
 }
 
+// A shape pin cut out of its net's grown blockage edges (a pad, see NetSpace::obstacles): a
+// rectangle, or with `shapes` any convex polygon without holes whose edges are horizontal,
+// vertical or at 45 degrees (not for the bend-aware metrics, whose router takes rectilinear
+// obstacles only: a 45-degree cut would give them sloped edges).
+bool is_pad(const Polygon& p, bool shapes) {
+  return is_rectangle(p) || (shapes && p.holes.empty() && geom::octilinear_convex_ring(p.outer));
+}
+// Its ring counter-clockwise (without repeated vertices or ones where it runs straight on).
+Ring pad_ring(const Polygon& p) {
+  if (auto r = geom::octilinear_convex_ring(p.outer)) return *r;
+  Ring r = p.outer;
+  if (geom::twice_area(r) < 0) std::reverse(r.begin(), r.end());
+  return r;
+}
+
 // Do the interiors of two convex counter-clockwise polygons meet? Not when an edge line of one
 // has the other on its outer closed side (separating axes, exact: the separating line of two
 // convex sets can always be taken along an edge of one of them). Either may be a segment (two
@@ -157,13 +172,15 @@ bool box_inside(const Box& in, const Box& out) {
 }
 using geom::boxes_meet;
 
-// The wires without their parts of positive length in the closed rectangles `pads` (the net's own
-// pads, which are metal of the net: a wire's stretch over or along one is redundant, and where
-// the pad lies on a blockage's edge that stretch would come too near it). Each wire is cut where
-// it enters and leaves a pad, the pieces keep those points (so they still touch the pad), and
-// pieces of one point are dropped. Cut points of horizontal, vertical and 45-degree segments
-// against a rectangle's sides are integers; a segment of another slope is kept whole.
-Lines trim_at_pads(const Lines& wires, std::span<const Box> pads) {
+// The wires without their parts of positive length in the closed pads `pads` (the net's own pads,
+// counter-clockwise convex rings with edges at 0, 45 or 90 degrees: metal of the net, so a wire's
+// stretch over or along one is redundant, and where the pad lies on a blockage's edge that stretch
+// would come too near it). Each wire is cut where it enters and leaves a pad, the pieces keep those
+// points (so they still touch the pad), and pieces of one point are dropped. A horizontal,
+// vertical or 45-degree segment is cut at integer points: its unit steps k meet each pad edge's
+// line at an integer k, except a 45-degree segment against a 45-degree edge, where k may be a half;
+// such a segment, and a segment of another slope, is kept whole.
+Lines trim_at_pads(const Lines& wires, std::span<const Ring> pads) {
   if (pads.empty()) return wires;
   Lines out;
   for (const auto& w : wires) {
@@ -186,24 +203,39 @@ Lines trim_at_pads(const Lines& wires, std::span<const Box> pads) {
         if (cur.back() != q) cur.push_back(q);
         continue;
       }
-      // the steps k in [0, len] (p + k u, u the unit step) inside each pad: an interval; cut out
-      // the ones of positive length
+      // the steps k in [0, len] (p + k u, u the unit step) inside each pad: an interval (left of
+      // every edge: c0 + k c1 >= 0 with the edge's unit direction e, c0 = cross(e, p - a),
+      // c1 = cross(e, u)); cut out the ones of positive length
       const std::int64_t ux = dx / len, uy = dy / len;
       std::vector<std::pair<std::int64_t, std::int64_t>> cuts;
-      for (const Box& b : pads) {
+      bool whole = false;
+      for (const Ring& r : pads) {
         std::int64_t lo = 0, hi = len;
-        auto clip = [&](std::int64_t c0, std::int64_t u, std::int64_t a, std::int64_t z) {  // a <= c0 + k u <= z
-          if (u == 0) {
-            if (c0 < a || c0 > z) lo = 1, hi = 0;
-            return;
+        for (std::size_t e = 0; e < r.size() && lo <= hi; ++e) {
+          const Point a = r[e], b = r[(e + 1) % r.size()];
+          const std::int64_t ex = std::int64_t{b.x} - a.x, ey = std::int64_t{b.y} - a.y;
+          const std::int64_t el = std::max(std::abs(ex), std::abs(ey));
+          const std::int64_t vx = ex / el, vy = ey / el;
+          const std::int64_t c0 = vx * (std::int64_t{p.y} - a.y) - vy * (std::int64_t{p.x} - a.x);
+          const std::int64_t c1 = vx * uy - vy * ux;
+          if (c1 == 0) {
+            if (c0 < 0) lo = 1, hi = 0;
+            continue;
           }
-          std::int64_t k0 = (a - c0) * u, k1 = (z - c0) * u;  // u = +-1: exact
-          if (k0 > k1) std::swap(k0, k1);
-          lo = std::max(lo, k0), hi = std::min(hi, k1);
-        };
-        clip(p.x, ux, b.lo.x, b.hi.x);
-        clip(p.y, uy, b.lo.y, b.hi.y);
+          if (c0 % c1 != 0) {  // a half step: not cut
+            whole = true;
+            break;
+          }
+          const std::int64_t k = -c0 / c1;  // c0 + k c1 = 0
+          if (c1 > 0) lo = std::max(lo, k);
+          else hi = std::min(hi, k);
+        }
+        if (whole) break;
         if (lo < hi) cuts.push_back({lo, hi});
+      }
+      if (whole) {
+        if (cur.back() != q) cur.push_back(q);
+        continue;
       }
       std::sort(cuts.begin(), cuts.end());
       auto at = [&](std::int64_t k) { return Point{static_cast<geom::Coord>(p.x + k * ux), static_cast<geom::Coord>(p.y + k * uy)}; };
@@ -232,6 +264,7 @@ NetSpace::NetSpace(const geom::Box& domain, std::span<const geom::Polygon> obsta
                    NetRules rules)
     : domain_(domain), nets_(std::move(nets)), index_(std::make_unique<Index>()) {
   if (rules.wire_width < 0 || rules.spacing < 0) throw std::invalid_argument("NetSpace: negative width or spacing");
+  cut_shapes_ = rules.cover_pieces == 0;
   a_ = (rules.wire_width + 1) / 2 + rules.spacing;
   b_ = std::max<std::int64_t>(rules.wire_width + rules.spacing, 1);
   if (a_ > geom::kMaxCoord || b_ > geom::kMaxCoord) throw std::domain_error("the clearance of <rules> passes the coordinate limit");
@@ -371,13 +404,19 @@ geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel lev
   // And the net's own rectangular shape pins (pads), cut out of them too: a pad is free space
   // for its net (FORMAT.md), so a pad on a blockage's edge is reached from outside the grown
   // blockage; the wire keeps the clearance up to its end on the pad.
+  // (A pad that is not a rectangle, when cut_shapes_: its box, and the corner triangles its
+  // 45-degree edges cut off it, geom::convex_minus_pad; access_ring holds its ring.)
   std::vector<Box> access;
+  std::vector<Ring> access_ring;  // per access box: empty, or the pad's ring when not a rectangle
   if (!plain) {
     for (const Polygon& pin : nets_[net].pins) {
-      if (is_point_pin(pin))
+      if (is_point_pin(pin)) {
         access.push_back(geom::grown_box(Box{pin.outer[0], pin.outer[0]}, a_));
-      else if (is_rectangle(pin))
+        access_ring.emplace_back();
+      } else if (is_pad(pin, cut_shapes_)) {
         access.push_back(box_of(pin.outer));
+        access_ring.push_back(is_rectangle(pin) ? Ring{} : pad_ring(pin));
+      }
     }
   }
   // The static components in the window: passed through as they are when they lie inside it and
@@ -408,11 +447,13 @@ geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel lev
         }
         std::vector<Ring> cur{pc.poly.outer};
         const Box pb = box_of(pc.poly.outer);
-        for (const Box& sq : access) {
+        for (std::size_t k = 0; k < access.size(); ++k) {
+          const Box& sq = access[k];
           if (!(sq.lo.x < pb.hi.x && pb.lo.x < sq.hi.x && sq.lo.y < pb.hi.y && pb.lo.y < sq.hi.y)) continue;
           std::vector<Ring> next;
           for (const Ring& r : cur)
-            for (Ring& part : geom::convex_minus_box(r, sq)) next.push_back(std::move(part));
+            for (Ring& part : access_ring[k].empty() ? geom::convex_minus_box(r, sq) : geom::convex_minus_pad(r, access_ring[k]))
+              next.push_back(std::move(part));
           cur = std::move(next);
         }
         for (Ring& r : cur) rest.push_back(Polygon{std::move(r), {}});
@@ -680,16 +721,16 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
   const Box hp = pts.empty() ? dom : box_of(pts);
   std::int64_t m = first_margin(pins, hp, space_.blockage_clearance(), space_.net_clearance());  // as first_window()
   bool fitted = false;  // grown once to the margin its answer needs (see below)
-  // the net's rectangular shape pins (cut out of the grown blockages) that meet none of its
-  // other pins (the wires over a pad are trimmed, and one that reaches another pin there must stay)
-  std::vector<Box> pads;
+  // the net's pads (shape pins cut out of the grown blockages) that meet none of its other pins
+  // (the wires over a pad are trimmed, and one that reaches another pin there must stay)
+  std::vector<Ring> pads;
   for (std::size_t i = 0; i < pins.pins.size(); ++i) {
-    if (!is_rectangle(pins.pins[i])) continue;
+    if (!is_pad(pins.pins[i], space_.cuts_shape_pads())) continue;
     const Box b = box_of(pins.pins[i].outer);
     bool alone = true;
     for (std::size_t j = 0; j < pins.pins.size() && alone; ++j)
       if (j != i) alone = !boxes_meet(b, box_of(pins.pins[j].outer));
-    if (alone) pads.push_back(b);
+    if (alone) pads.push_back(pad_ring(pins.pins[i]));
   }
   while (true) {
     if (options_.stop && options_.stop()) throw NetRouterStopped();

@@ -25,11 +25,14 @@
 //     touching obstacles as a pinch), so a gap of exactly 2a between blockages, or a track at
 //     exactly the pitch between two wires, does not take a wire although one would be legal
 //     there; gaps one unit wider do;
-//   - a net's own rectangular shape pins (pads) are cut out of the grown blockage edges like
-//     the access squares (so a pad on a blockage's edge is reached from outside the grown
-//     blockage), other shape pins are not: such a pin within a of a blockage is not routed
-//     (ROUTE-0010); a pad that another net's grown wire enters cannot be taken, and that net
-//     counts as a blocker (ripped up like one);
+//   - a net's own pads (shape pins that are rectangles, or, with NetRules::cover_pieces 0, any
+//     convex shape whose edges are horizontal, vertical or at 45 degrees: diamonds, octagons)
+//     are cut out of the grown blockage edges like the access squares (geom::convex_minus_box,
+//     geom::convex_minus_pad: so a pad on a blockage's edge is reached from outside the grown
+//     blockage, and the wire's stretch inside the pad is trimmed); other shape pins are not
+//     (a concave one, or with the bend-aware metrics a sloped one): such a pin within a of a
+//     blockage is not routed (ROUTE-0010); a pad that another net's grown wire enters cannot be
+//     taken, and that net counts as a blocker (ripped up like one);
 //   - cost: every window is a new union of its pieces and a new wavefront (no reuse between
 //     nets); a net whose pins are far apart pays for a window as big as its span.
 //
@@ -165,6 +168,10 @@ class NetSpace {
 
   std::int64_t blockage_clearance() const { return a_; }  // a = ceil(w/2) + s
   std::int64_t net_clearance() const { return b_; }       // b = max(w + s, 1)
+  // Whether a net's shape pins that are convex with 0, 45 and 90-degree edges are cut out of the
+  // grown blockages like its rectangular ones (pads): not with NetRules::cover_pieces (the
+  // bend-aware metrics take rectilinear obstacles only).
+  bool cuts_shape_pads() const { return cut_shapes_; }
 
   // Net `net`'s wires as the other nets see them (replacing earlier ones; empty: none).
   void set_wires(std::size_t net, const std::vector<std::vector<geom::Point>>& wires);
@@ -199,6 +206,7 @@ class NetSpace {
   geom::Box domain_;
   std::vector<NetPins> nets_;
   std::int64_t a_ = 0, b_ = 1;
+  bool cut_shapes_ = true;
   std::unique_ptr<Index> index_;
 };
 
