@@ -260,7 +260,7 @@ std::vector<Point> path_points(const MetalGraph& g, const KeyPath& p) {
 }  // namespace
 
 template <class W>
-std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t) {
+std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t, std::span<const geom::Polygon> pads) {
   if constexpr (kOctilinear) {
     return 0;
   } else {
@@ -275,8 +275,18 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t) {
     std::sort(sorted_pins.begin(), sorted_pins.end());
     while (true) {
       bool changed = false;
-      const std::optional<MetalGraph> graph = metal_graph(t.wires, pins);
+      std::optional<MetalGraph> graph = metal_graph(t.wires, pins);
       if (!graph) return changes;  // not rectilinear: left as it is
+      // Pads (shape pins) are metal: the nodes lying on one are key (a path ends where it meets
+      // a pad) and joined through it.
+      std::vector<std::vector<std::size_t>> members(pads.size()), pad_of(graph->nodes.size());
+      for (std::size_t k = 0; k < pads.size(); ++k)
+        for (std::size_t n = 0; n < graph->nodes.size(); ++n)
+          if (in_pin(graph->nodes[n], pads[k])) {
+            members[k].push_back(n);
+            pad_of[n].push_back(k);
+            graph->key[n] = 1;
+          }
       const MetalGraph& g = *graph;
       const std::vector<KeyPath> paths = key_paths(g);
       std::vector<std::size_t> longest_first(paths.size());
@@ -304,6 +314,12 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t) {
                 side[v] = 1;
                 stack.push_back(v);
               }
+            for (const std::size_t k : pad_of[u])
+              for (const std::size_t v : members[k])
+                if (!side[v]) {
+                  side[v] = 1;
+                  stack.push_back(v);
+                }
           }
         };
         part_of(p.nodes.front());
@@ -360,6 +376,22 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t) {
               targets.push_back(horizontal ? Point{*it, a.y} : Point{a.x, *it});
           }
         }
+        // the pads: the first part's are sources along their edges; the other part's targets at
+        // their candidate points against the first part's nodes
+        if (!pads.empty()) {
+          geom::Polygon first;
+          for (std::size_t n = 0; n < g.nodes.size(); ++n)
+            if (side[n]) first.outer.push_back(g.nodes[n]);
+          for (std::size_t k = 0; k < pads.size(); ++k) {
+            if (members[k].empty()) continue;
+            if (side[members[k][0]]) {
+              for_each_pin_edge(pads[k], [&](Point a, Point b) { segments.push_back({a, b}); });
+            } else {
+              const std::vector<Point> c = pin_candidates(pads[k], first);
+              targets.insert(targets.end(), c.begin(), c.end());
+            }
+          }
+        }
         std::sort(targets.begin(), targets.end());
         targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
         keep_free(targets, wavefront_);
@@ -381,6 +413,12 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t) {
       if (changed) {
         ++changes;
         continue;
+      }
+      if (!pads.empty()) {  // the moves take point pins only
+        std::vector<std::vector<Point>> wires;
+        for (const KeyPath& p : paths) wires.push_back(path_points(g, p));
+        if (!wires.empty()) t.wires = std::move(wires);
+        break;
       }
       // No single path gains: move a Steiner point. A key node u of degree three or more (or a
       // pin of degree two or more), with the key paths at it taken out, leaves one part per path
@@ -554,6 +592,62 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t) {
 
 template <class W>
 typename BasicRouter<W>::Steiner BasicRouter<W>::steiner_from_first(std::span<const Point> pins) {
+  // Point pins are one-vertex shapes: the shape version joins them as point sources and aims at
+  // the points themselves, so it is the same search.
+  std::vector<geom::Polygon> shapes;
+  shapes.reserve(pins.size());
+  for (const Point p : pins) shapes.push_back(geom::Polygon{{p}, {}});
+  return steiner_from_first(std::span<const geom::Polygon>(shapes));
+}
+
+template <class W>
+typename BasicRouter<W>::Steiner BasicRouter<W>::steiner(std::span<const geom::Polygon> pins, std::size_t starts,
+                                                         bool improve_tree) {
+  bool points = true;
+  for (const geom::Polygon& p : pins) points = points && is_point_pin(p);
+  if (points) {
+    std::vector<Point> pts;
+    for (const geom::Polygon& p : pins) pts.push_back(p.outer[0]);
+    return steiner(pts, starts, improve_tree);
+  }
+  // As the point version: from each of the first `starts` pins, the shortest kept (the first on
+  // ties); a pin not free or walled in is the same from every start.
+  std::vector<Steiner> ok;  // in start order
+  Steiner first_failure;
+  const std::size_t tries = std::max<std::size_t>(1, std::min(starts, pins.size()));
+  for (std::size_t s0 = 0; s0 < tries; ++s0) {
+    std::vector<geom::Polygon> rotated(pins.begin() + static_cast<std::ptrdiff_t>(s0), pins.end());
+    rotated.insert(rotated.end(), pins.begin(), pins.begin() + static_cast<std::ptrdiff_t>(s0));
+    Steiner t = steiner_from_first(std::span<const geom::Polygon>(rotated));
+    auto back = [&](std::size_t i) { return (i + s0) % pins.size(); };
+    if (t.failed) t.failed = back(*t.failed);
+    for (std::size_t& i : t.order) i = back(i);
+    if (t.status == WireStatus::SourceNotFree || t.status == WireStatus::TargetNotFree || t.status == WireStatus::Unreachable)
+      return t;
+    if (t.status == WireStatus::Ok) ok.push_back(std::move(t));
+    else if (s0 == 0) first_failure = std::move(t);
+  }
+  if (ok.empty()) return first_failure;
+  // The improvement pass's path re-embedding (the pads metal, see improve()) on the shortest few.
+  std::stable_sort(ok.begin(), ok.end(), [](const Steiner& a, const Steiner& b) { return a.length < b.length; });
+  if (improve_tree) {
+    std::vector<Point> points;
+    std::vector<geom::Polygon> pads;
+    for (const geom::Polygon& p : pins) {
+      if (is_point_pin(p)) points.push_back(p.outer[0]);
+      else pads.push_back(p);
+    }
+    for (std::size_t i = 0; i < ok.size() && i < kImproved; ++i)
+      if (ok[i].length > 0) ok[i].improved = improve(points, ok[i], pads);
+  }
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < ok.size(); ++i)
+    if (ok[i].length < ok[best].length) best = i;
+  return std::move(ok[best]);
+}
+
+template <class W>
+typename BasicRouter<W>::Steiner BasicRouter<W>::steiner_from_first(std::span<const geom::Polygon> pins) {
   Steiner t;
   if constexpr (kOctilinear) {
     throw std::logic_error("BasicRouter::steiner: rectilinear (L1) wires only");
@@ -562,21 +656,49 @@ typename BasicRouter<W>::Steiner BasicRouter<W>::steiner_from_first(std::span<co
       t.status = WireStatus::Ok;
       return t;
     }
-    for (std::size_t i = 0; i < pins.size(); ++i)
-      if (!wavefront_.is_free(pins[i])) {
+    // every pin has a free point (a shape: a free candidate against the others' vertices)
+    geom::Polygon all;
+    for (const geom::Polygon& p : pins) all.outer.insert(all.outer.end(), p.outer.begin(), p.outer.end());
+    for (std::size_t i = 0; i < pins.size(); ++i) {
+      std::vector<Point> c = is_point_pin(pins[i]) ? std::vector<Point>{pins[i].outer[0]} : pin_candidates(pins[i], all);
+      keep_free(c, wavefront_);
+      if (c.empty()) {
         t.status = i == 0 ? WireStatus::SourceNotFree : WireStatus::TargetNotFree;
         t.failed = i;
         return t;
       }
-    std::vector<Point> points{pins[0]};
+    }
+    // The tree so far: points (point pins) and segments (wires, and the joined shapes' edges);
+    // `metal` every point of it (what the shapes' candidates are projected from).
+    std::vector<Point> points;
     std::vector<geom::Segment> segments;
+    geom::Polygon metal;
+    auto join = [&](const geom::Polygon& pin) {
+      if (is_point_pin(pin)) {
+        points.push_back(pin.outer[0]);
+      } else {
+        for_each_pin_edge(pin, [&](Point a, Point b) { segments.push_back({a, b}); });
+        for (const geom::Ring& h : pin.holes) metal.outer.insert(metal.outer.end(), h.begin(), h.end());
+      }
+      metal.outer.insert(metal.outer.end(), pin.outer.begin(), pin.outer.end());
+    };
+    join(pins[0]);
+    t.order.push_back(0);
     std::vector<std::size_t> left;
     for (std::size_t i = 1; i < pins.size(); ++i) left.push_back(i);
-    t.order.push_back(0);
     std::vector<std::vector<Point>> wires;
     while (!left.empty()) {
       std::vector<Point> targets;
-      for (const std::size_t i : left) targets.push_back(pins[i]);
+      std::vector<std::size_t> owner;  // targets[j] is a point of pins[left[owner[j]]]
+      for (std::size_t k = 0; k < left.size(); ++k) {
+        const geom::Polygon& pin = pins[left[k]];
+        std::vector<Point> c = is_point_pin(pin) ? std::vector<Point>{pin.outer[0]} : pin_candidates(pin, metal);
+        keep_free(c, wavefront_);
+        for (const Point p : c) {
+          targets.push_back(p);
+          owner.push_back(k);
+        }
+      }
       wavefront_.run(points, segments, targets, WavefrontStop::FirstTarget);
       std::optional<std::size_t> best;
       for (std::size_t j = 0; j < targets.size(); ++j) {
@@ -588,20 +710,26 @@ typename BasicRouter<W>::Steiner BasicRouter<W>::steiner_from_first(std::span<co
         t.failed = left.front();
         return t;
       }
+      const std::size_t k = owner[*best];
       Wire w = finish(best);
       if (w.status != WireStatus::Ok) {
         t.status = w.status;
-        t.failed = left[*best];
+        t.failed = left[k];
         return t;
       }
       for (std::size_t i = 1; i < w.points.size(); ++i) segments.push_back({w.points[i - 1], w.points[i]});
+      metal.outer.insert(metal.outer.end(), w.points.begin(), w.points.end());
       if (w.points.size() >= 2) wires.push_back(std::move(w.points));
-      points.push_back(pins[left[*best]]);
-      t.order.push_back(left[*best]);
-      left.erase(left.begin() + static_cast<std::ptrdiff_t>(*best));
+      join(pins[left[k]]);
+      t.order.push_back(left[k]);
+      left.erase(left.begin() + static_cast<std::ptrdiff_t>(k));
     }
     t.wires = without_overlaps(wires);
-    if (t.wires.empty()) t.wires.push_back({pins[0]});  // every pin at one point
+    if (t.wires.empty()) {  // every pin touches the first: one free point of it
+      std::vector<Point> c = is_point_pin(pins[0]) ? std::vector<Point>{pins[0].outer[0]} : pin_candidates(pins[0], all);
+      keep_free(c, wavefront_);
+      t.wires.push_back({c.front()});
+    }
     for (const auto& w : t.wires)
       for (std::size_t i = 1; i < w.size(); ++i)
         t.length += std::abs(std::int64_t{w[i].x} - w[i - 1].x) + std::abs(std::int64_t{w[i].y} - w[i - 1].y);

@@ -142,6 +142,20 @@ class BasicRouter {
   // improve = false: without the improvement pass (the tests measure what it gains).
   Steiner steiner(std::span<const geom::Point> pins, std::size_t starts = 8, bool improve = true);
 
+  // The same for pins that may be shapes (points, or shapes as shortest(pin, pin) takes them; a
+  // wire may end anywhere on a shape, and a shape is metal of its net: what touches it is joined).
+  // All points: the overload above. Otherwise the tree is grown the same way, with the shapes
+  // joined so far as segment sources along every edge, to the nearest point a pin not yet joined
+  // may be reached at: itself for a point, for a shape its candidate points against every point
+  // of the tree so far (pin_candidates: a shortest path from the tree leaves it at a point r, a
+  // tree vertex or a point of a tree segment it runs straight from, and reaches the shape at a
+  // point s minimising |s - r|_1 along an edge, so at a vertex or a projection of a tree vertex
+  // or obstacle vertex); from each of the first `starts` pins, the shortest kept; then the
+  // improvement pass without its Steiner point moves (improve(): the pads as metal), on the
+  // kImproved shortest starts' trees; tests/router/steiner_test.cpp measures the excess over the
+  // exact minimum with rectangular pads. `failed` indexes `pins`.
+  Steiner steiner(std::span<const geom::Polygon> pins, std::size_t starts = 8, bool improve = true);
+
   // The points of pin `pin` a shortest wire from it may be taken to start at (and why those:
   // PinShapes::candidates, router/pin_shapes.h).
   std::vector<geom::Point> pin_candidates(const geom::Polygon& pin, const geom::Polygon& other) const;
@@ -172,9 +186,13 @@ class BasicRouter {
   static constexpr std::size_t kMoveGridPoints = 2304;
   // steiner() grown from pins[0] only.
   Steiner steiner_from_first(std::span<const geom::Point> pins);
+  Steiner steiner_from_first(std::span<const geom::Polygon> pins);
   // The improvement pass of steiner() (see there): returns how many paths it replaced or dropped
   // and Steiner points it moved.
-  std::size_t improve(std::span<const geom::Point> pins, Steiner& t);
+  // With pads (shape pins; `pins` then the point pins only), the paths are re-embedded with the
+  // pads as metal (a pad's nodes key, joined through it; a part's pads sources along their edges,
+  // the other part's pads targets at their candidate points) and no Steiner point is moved.
+  std::size_t improve(std::span<const geom::Point> pins, Steiner& t, std::span<const geom::Polygon> pads = {});
   // The wire to target `target` of the last run (Unreachable when none).
   Wire finish(std::optional<std::size_t> target);
 

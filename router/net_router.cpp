@@ -1385,17 +1385,13 @@ NetAttempt route_with(const NetPins& net, const geom::NormalizedObstacles& obs, 
       a.reason = "a shape pin this router does not take here";
       return a;
     }
-  bool points = true;
-  for (const Polygon& pin : net.pins) points = points && is_point_pin(pin);
   if (net.pins.size() == 2) {
     const typename Router::Wire w = r.shortest(net.pins[0], net.pins[1]);
     if (w.status != WireStatus::Ok) return fail(w.status);
     a.wires = {w.points};
-  } else if (steiner && points && !Router::kOctilinear) {
+  } else if (steiner && !Router::kOctilinear) {
     if constexpr (!Router::kOctilinear) {
-      std::vector<Point> pts;
-      for (const Polygon& pin : net.pins) pts.push_back(pin.outer[0]);
-      const typename Router::Steiner t = r.steiner(pts);
+      const typename Router::Steiner t = r.steiner(std::span<const Polygon>(net.pins));
       if (t.status != WireStatus::Ok) return fail(t.status);
       a.wires = t.wires;
     }

@@ -74,25 +74,24 @@ std::optional<NetResult> too_few_pins(const io::Net& net) {
 
 // Router: router::L1Router (rectilinear wires) or router::OctRouter (octilinear).
 // With --tree steiner: why this net of three or more pins does not get a Steiner tree (they are
-// built for rectilinear L1 wires between point pins), or nullopt when it does or needs no tree.
+// built for rectilinear L1 wires, between point pins and shape pins), or nullopt when it does or
+// needs no tree.
 std::optional<std::string> no_steiner_tree(const io::Net& net, const std::string& metric, bool octilinear) {
   if (net.pins.size() <= 2) return std::nullopt;
   if (metric != "l1") return "--metric " + metric + " gives it the tree of best paths from its first pin";
   if (octilinear) return "octilinear wires give it the shortest-path tree from its first pin";
-  for (const io::Pin& pin : net.pins)
-    if (!pin.point) return "its shape pin \"" + pin.name + "\" gives it the shortest-path tree from its first pin";
   return std::nullopt;
 }
 
 // Says (ROUTE-0009) that the net does not get the Steiner tree --tree steiner asked for.
 void warn_no_steiner_tree(const io::Layout& layout, const io::Net& net, const std::string& why, bool quiet) {
   print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0009", layout.file, net.line, 0,
-                                "net \"" + net.name + "\": Steiner trees are built for rectilinear L1 wires between point "
-                                "pins only in this version; " + why}},
+                                "net \"" + net.name + "\": Steiner trees are built for rectilinear L1 wires only in this "
+                                "version; " + why}},
                     quiet);
 }
 
-// steiner: the net (three or more point pins, L1 rectilinear: no_steiner_tree() is nullopt) gets
+// steiner: the net (three or more pins, L1 rectilinear: no_steiner_tree() is nullopt) gets
 // a Steiner tree; otherwise a net of three or more pins gets the shortest-path tree from its
 // first pin.
 template <class Router>
@@ -150,9 +149,7 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router
   if constexpr (!oct) {
     if (net.pins.size() > 2 && steiner) {
       // A rectilinear Steiner tree (router::L1Router::steiner): short total length.
-      std::vector<geom::Point> pins;
-      for (const io::Pin& pin : net.pins) pins.push_back(*pin.point);
-      const router::L1Router::Steiner t = router.steiner(pins);
+      const router::L1Router::Steiner t = router.steiner(std::span<const geom::Polygon>(geometry));
       const io::Pin* bad = t.failed ? &net.pins[*t.failed] : nullptr;
       switch (t.status) {
         case router::WireStatus::Ok: break;
@@ -365,7 +362,7 @@ void add_route(CLI::App& app, int& status) {
       ->check(CLI::Range(0u, 1024u));
   sub->add_option("--tree", args->tree,
                   "nets of three or more pins: spt (default: a shortest-path tree from the first pin, every pin at its "
-                  "shortest distance) or steiner (short total length; rectilinear L1 wires between point pins)");
+                  "shortest distance) or steiner (short total length; rectilinear L1 wires, point and shape pins)");
   add_input_options(sub, args->file, args->load, "do not print warnings or the summary");
   sub->callback([args, &status] {
     using Clock = std::chrono::steady_clock;

@@ -632,6 +632,48 @@ TEST(Route, DemoRoutesEveryNet) {
   EXPECT_EQ(stats["routes"]["sda"]["status"], "routed") << stats.dump();
 }
 
+// --tree steiner with shape pins (pads, one touching a blockage, and a diamond) and a point pin,
+// routed together with the rules' clearance: no ROUTE-0009, the routed file passes the whole
+// `taut check` (clearance included), and the tree is shorter than the shortest-path tree.
+TEST(Route, SteinerTreesJoinShapePins) {
+  const std::string dir = temp_dir("route_steiner_pads");
+  const std::string file = dir + "/pads.xml";
+  write_text(file, R"(<?xml version="1.0" encoding="UTF-8"?>
+<layout name="pads" version="1">
+  <boundary x0="0" y0="0" x1="20000" y1="12000"/>
+  <rules wire-width="200" spacing="200"/>
+  <blockage id="macro"><rect x0="6000" y0="3000" x1="11000" y1="8000"/></blockage>
+  <blockage id="ram"><rect x0="14000" y0="7000" x1="17000" y1="10000"/></blockage>
+  <net name="vdd">
+    <pin name="b0"><rect x0="1000" y0="1000" x1="2000" y1="2000"/></pin>
+    <pin name="b1"><rect x0="11000" y0="4000" x1="12000" y1="5000"/></pin>
+    <pin name="b2"><rect x0="17000" y0="1000" x1="18000" y1="2000"/></pin>
+    <pin name="b3"><polygon points="3000,9500 3500,9000 4000,9500 3500,10000"/></pin>
+    <pin name="tap" x="15500" y="11000"/>
+  </net>
+  <net name="sig">
+    <pin name="a" x="500" y="6000"/>
+    <pin name="z" x="19500" y="6000"/>
+  </net>
+</layout>
+)");
+  const auto steiner = run_taut({"route", file, "--tree", "steiner", "-o", dir + "/st.xml", "--stats", dir + "/st.json"});
+  ASSERT_EQ(steiner.status, 0) << steiner.err;
+  EXPECT_EQ(steiner.err.find("ROUTE-0009"), std::string::npos) << steiner.err;
+  const auto check = run_taut({"check", dir + "/st.xml", "-q"});
+  EXPECT_EQ(check.status, 0) << check.err;
+  const auto spt = run_taut({"route", file, "-o", dir + "/spt.xml", "--stats", dir + "/spt.json"});
+  ASSERT_EQ(spt.status, 0) << spt.err;
+  const auto a = nlohmann::json::parse(read_text(dir + "/st.json")), b = nlohmann::json::parse(read_text(dir + "/spt.json"));
+  const double st_len = std::stod(a["routes"]["vdd"]["length"].dump()), spt_len = std::stod(b["routes"]["vdd"]["length"].dump());
+  EXPECT_LT(st_len, spt_len) << a["routes"]["vdd"].dump() << " " << b["routes"]["vdd"].dump();
+  // --independent (each net alone, no clearance) takes the same trees
+  const auto ind = run_taut({"route", file, "--independent", "--tree", "steiner", "-o", dir + "/ind.xml"});
+  EXPECT_EQ(ind.status, 0) << ind.err;
+  EXPECT_EQ(ind.err.find("ROUTE-0009"), std::string::npos) << ind.err;
+  test::expect_routes_check_except_clearance(dir + "/ind.xml");
+}
+
 // Generated layouts of every kind: each two-pin net is routed with exactly the reference's
 // shortest length, or reported unreachable exactly when the reference finds no path; a net
 // left without a wire for lack of an integer staircase must still be reachable.

@@ -13,6 +13,13 @@ namespace taut::oracle {
 
 std::optional<std::int64_t> steiner_minimal_length(const geom::Box& domain, std::span<const geom::Polygon> obstacles,
                                                     std::span<const geom::Point> terminals) {
+  std::vector<geom::Box> boxes;
+  for (const geom::Point t : terminals) boxes.push_back({t, t});
+  return steiner_minimal_length(domain, obstacles, std::span<const geom::Box>(boxes));
+}
+
+std::optional<std::int64_t> steiner_minimal_length(const geom::Box& domain, std::span<const geom::Polygon> obstacles,
+                                                    std::span<const geom::Box> terminals) {
   const std::size_t k = terminals.size();
   if (k > 10) throw std::invalid_argument("steiner_minimal_length: at most 10 terminals");
   if (k <= 1) return 0;
@@ -29,9 +36,9 @@ std::optional<std::int64_t> steiner_minimal_length(const geom::Box& domain, std:
     add_ring(p.outer);
     for (const geom::Ring& h : p.holes) add_ring(h);
   }
-  for (const geom::Point t : terminals) {
-    xs.push_back(t.x);
-    ys.push_back(t.y);
+  for (const geom::Box& t : terminals) {
+    xs.insert(xs.end(), {t.lo.x, t.hi.x});
+    ys.insert(ys.end(), {t.lo.y, t.hi.y});
   }
   std::sort(xs.begin(), xs.end());
   xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
@@ -60,18 +67,38 @@ std::optional<std::int64_t> steiner_minimal_length(const geom::Box& domain, std:
       if (i + 1 < nx) join(id(i, j), id(i + 1, j));
       if (j + 1 < ny) join(id(i, j), id(i, j + 1));
     }
+  // Each terminal is one node: a point's grid node, or for a pad a node of its own joined at no
+  // cost to every free grid node in its closed box (the pad's metal carries a connection across
+  // it: a tree may reach a pad at one point and go on from another).
   std::vector<std::size_t> term(k);
+  std::size_t total = n;
   for (std::size_t t = 0; t < k; ++t) {
-    const auto ix = std::lower_bound(xs.begin(), xs.end(), terminals[t].x) - xs.begin();
-    const auto iy = std::lower_bound(ys.begin(), ys.end(), terminals[t].y) - ys.begin();
-    term[t] = id(static_cast<std::size_t>(ix), static_cast<std::size_t>(iy));
-    if (!free[term[t]]) return std::nullopt;
+    const auto x0 = std::lower_bound(xs.begin(), xs.end(), terminals[t].lo.x) - xs.begin();
+    const auto x1 = std::upper_bound(xs.begin(), xs.end(), terminals[t].hi.x) - xs.begin();
+    const auto y0 = std::lower_bound(ys.begin(), ys.end(), terminals[t].lo.y) - ys.begin();
+    const auto y1 = std::upper_bound(ys.begin(), ys.end(), terminals[t].hi.y) - ys.begin();
+    std::vector<std::size_t> in;
+    for (auto i = x0; i < x1; ++i)
+      for (auto j = y0; j < y1; ++j)
+        if (free[id(static_cast<std::size_t>(i), static_cast<std::size_t>(j))])
+          in.push_back(id(static_cast<std::size_t>(i), static_cast<std::size_t>(j)));
+    if (in.empty()) return std::nullopt;
+    if (terminals[t].lo == terminals[t].hi) {
+      term[t] = in[0];
+      continue;
+    }
+    term[t] = total++;
+    adj.emplace_back();
+    for (const std::size_t v : in) {
+      adj[term[t]].push_back({v, 0});
+      adj[v].push_back({term[t], 0});
+    }
   }
   constexpr std::int64_t kInf = std::numeric_limits<std::int64_t>::max() / 4;
   auto relax = [&](std::vector<std::int64_t>& d) {  // Dijkstra from every node at its value
     using Item = std::pair<std::int64_t, std::size_t>;
     std::priority_queue<Item, std::vector<Item>, std::greater<>> q;
-    for (std::size_t v = 0; v < n; ++v)
+    for (std::size_t v = 0; v < d.size(); ++v)
       if (d[v] < kInf) q.push({d[v], v});
     while (!q.empty()) {
       const auto [dv, v] = q.top();
@@ -88,7 +115,7 @@ std::optional<std::int64_t> steiner_minimal_length(const geom::Box& domain, std:
   std::vector<std::vector<std::int64_t>> dp(full + 1);
   for (std::size_t mask = 1; mask <= full; ++mask) {
     std::vector<std::int64_t>& d = dp[mask];
-    d.assign(n, kInf);
+    d.assign(total, kInf);
     if ((mask & (mask - 1)) == 0) {
       d[term[static_cast<std::size_t>(__builtin_ctzll(mask))]] = 0;
     } else {
@@ -96,7 +123,7 @@ std::optional<std::int64_t> steiner_minimal_length(const geom::Box& domain, std:
       for (std::size_t sub = (mask - 1) & mask; sub > 0; sub = (sub - 1) & mask) {
         if (!(sub & low)) continue;  // each split once
         const std::vector<std::int64_t>&a = dp[sub], &b = dp[mask ^ sub];
-        for (std::size_t v = 0; v < n; ++v)
+        for (std::size_t v = 0; v < total; ++v)
           if (a[v] < kInf && b[v] < kInf) d[v] = std::min(d[v], a[v] + b[v]);
       }
     }

@@ -30,4 +30,13 @@ namespace taut::oracle {
 std::optional<std::int64_t> steiner_minimal_length(const geom::Box& domain, std::span<const geom::Polygon> obstacles,
                                                     std::span<const geom::Point> terminals);
 
+// The same with rectangular terminals (pads; a point is a box of one point): a pad is metal, so
+// the tree may touch it anywhere and carry a connection across it: each pad is a node of its own
+// joined at no cost to every free grid node in its closed box, and Dreyfus-Wagner runs on that
+// graph with the pads' nodes as terminals. The grid also takes the lines of every pad's sides: a
+// tree touching a pad side can slide along it to one of them, as the Hanan argument slides
+// segments.
+std::optional<std::int64_t> steiner_minimal_length(const geom::Box& domain, std::span<const geom::Polygon> obstacles,
+                                                    std::span<const geom::Box> terminals);
+
 }  // namespace taut::oracle
