@@ -247,6 +247,13 @@ int main(int argc, char** argv) {
                   static_cast<long long>(nr.stats().whole), nr.stats().space_seconds, nr.stats().route_seconds, nr.stats().whole_seconds,
                   static_cast<long long>(nr.stats().capped), nr.stats().final_round_routed, nr.stats().final_round,
                   nr.stats().last_pass_routed, nr.stats().last_pass);
+      {
+        const auto& ph = nr.stats().phase_seconds;
+        std::printf("%18s phases (wall clock): first pass %.3f s, rip-up rounds %.3f s, final round %.3f s, last pass %.3f s, explaining %.3f s\n", "",
+                    ph.first_pass, ph.rounds, ph.final_round, ph.last_pass, ph.explain);
+        std::printf("%18s taken again without routing (nothing changed in their windows): %lld failed attempts, %lld undone rip-ups\n", "",
+                    static_cast<long long>(nr.stats().reused), static_cast<long long>(nr.stats().replayed));
+      }
       if (tighten) {
         std::vector<taut::router::NetLines> wires;
         std::int64_t bends_before = 0, bends_after = 0, bends_alone = 0, pieces = 0;

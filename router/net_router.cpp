@@ -523,6 +523,16 @@ std::vector<std::size_t> NetSpace::wire_touchers(std::size_t net, std::span<cons
   return nets_met(*index_, net, line, segment_touches);
 }
 
+std::vector<std::size_t> NetSpace::wire_nets_in(const Box& window) const {
+  std::vector<Index::WireEntry> wf;
+  index_->union_tree.query(bgi::intersects(clipped(window, domain_)), std::back_inserter(wf));
+  std::vector<std::size_t> out;
+  for (const auto& [box, id] : wf) out.push_back(id.first);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
 std::vector<Box> NetSpace::wire_boxes(std::size_t net) const {
   std::vector<Box> out;
   for (const Polygon& p : index_->wire_union[net]) out.push_back(box_of(p.outer));
@@ -875,19 +885,16 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
 }
 
 void NetRouter::place(std::size_t i, NetAttempt a) {
-  const bool track = options_.threads > 1;  // with one thread nothing reads the log or races
-  std::unique_lock lock(space_mutex_, std::defer_lock);
-  if (track) {
-    lock.lock();
-    for (const Box& b : space_.wire_boxes(i)) changed_.push_back({b, i});
-  }
+  // the log (changed_) tells attempts made ahead (threads) and failed attempts kept (failed_)
+  // whether the space in their windows is still what they saw
+  std::unique_lock lock(space_mutex_);
+  for (const Box& b : space_.wire_boxes(i)) changed_.push_back({b, i});
   out_[i].routed = a.routed;
   out_[i].wires = a.routed ? std::move(a.wires) : Lines{};
   out_[i].code = a.routed ? std::string() : std::move(a.code);
   out_[i].reason = a.routed ? std::string() : std::move(a.reason);
   space_.set_wires(i, out_[i].wires);
-  if (track)
-    for (const Box& b : space_.wire_boxes(i)) changed_.push_back({b, i});
+  for (const Box& b : space_.wire_boxes(i)) changed_.push_back({b, i});
 }
 
 std::set<std::size_t> NetRouter::way_blockers(std::size_t net, const std::vector<std::vector<Point>>& wires) const {
@@ -917,15 +924,25 @@ bool changed_in(std::span<const std::pair<Box, std::size_t>> changed, std::size_
   return false;
 }
 
+// ... of any net, one of the windows ws?
+bool changed_in(std::span<const std::pair<Box, std::size_t>> changed, std::size_t since, std::span<const Box> ws) {
+  for (std::size_t k = since; k < changed.size(); ++k)
+    for (const Box& w : ws)
+      if (boxes_meet(changed[k].first, w)) return true;
+  return false;
+}
+
 }  // namespace
 
 void NetRouter::route_in_order(const NetRouteFn& route, std::span<const std::size_t> nets,
-                               const std::function<void(std::size_t)>& after) {
+                               const std::function<bool(std::size_t, const Box&)>& after) {
   const int threads = std::max(options_.threads, 1);
   if (threads == 1 || nets.size() < 2) {
     for (const std::size_t i : nets) {
-      place(i, attempt(route, i, NetSpaceLevel::Full));
-      after(i);
+      Tried t = try_net(route, i, NetSpaceLevel::Full);
+      add_counts(stats_, t.counts);
+      place(i, std::move(t.a));
+      if (!after(i, t.window)) return;
     }
     return;
   }
@@ -1044,6 +1061,7 @@ void NetRouter::route_in_order(const NetRouteFn& route, std::span<const std::siz
       s.tried.reset();
       const std::size_t placed = nets[next];
       add_counts(stats_, t.counts);
+      const Box window = t.window;
       lock.unlock();
       place(placed, std::move(t.a));  // under the space's own lock: the workers go on
       lock.lock();
@@ -1057,8 +1075,9 @@ void NetRouter::route_in_order(const NetRouteFn& route, std::span<const std::siz
         }
       cv.notify_all();
       lock.unlock();
-      after(placed);
+      const bool go_on = after(placed, window);
       lock.lock();
+      if (!go_on) break;
     }
   } catch (...) {
     finish();
@@ -1075,7 +1094,10 @@ void NetRouter::run(const NetRouteFn& route) {
   stats_ = {};
   alone_.assign(n, std::nullopt);
   final_undone_.clear();
-  changed_.clear();  // the log of wire pieces placed and removed (with threads only)
+  changed_.clear();  // the log of wire pieces placed and removed
+  failed_.assign(n, std::nullopt);
+  undone_.assign(n, std::nullopt);
+  around_.assign(n, std::nullopt);
   for (std::size_t i = 0; i < n; ++i) space_.set_wires(i, {});  // a second run starts afresh
   // shortest first: half-perimeter of the pins' bounding box, then the file's order
   std::vector<std::int64_t> hpwl(n, 0);
@@ -1100,10 +1122,18 @@ void NetRouter::run(const NetRouteFn& route) {
     options_.progress(prog);
   };
   capped_ = true;
-  route_in_order(route, order_, [&](std::size_t i) {
+  // the wall-clock time of each phase (NetRouterStats::phase_seconds)
+  auto lap = [t = std::chrono::steady_clock::now()](double& to) mutable {
+    const auto now = std::chrono::steady_clock::now();
+    to += std::chrono::duration<double>(now - t).count();
+    t = now;
+  };
+  route_in_order(route, order_, [&](std::size_t i, const Box&) {
     routed_now += out_[i].routed;
     tell();
+    return true;
   });
+  lap(stats_.phase_seconds.first_pass);
   auto score = [&] {
     std::size_t routed = 0;
     std::int64_t len = 0;
@@ -1134,14 +1164,45 @@ void NetRouter::run(const NetRouteFn& route) {
       for (std::size_t j = 0; j < n; ++j)
         if (j != i && out_[j].routed && out_[j].rips >= limit) fixed[j] = 1, any = true;
       if (!any) return false;
-      Tried around = try_net(route, i, NetSpaceLevel::Full, fixed);
-      add_counts(stats_, around.counts);
+      // (The last such way is taken again when no wire has changed in its windows since and the
+      // nets fixed among those with wires there are the same: it depends on nothing else.)
+      auto fixed_there = [&](const Box& w) {
+        std::vector<std::size_t> f;
+        for (const std::size_t j : space_.wire_nets_in(w))
+          if (fixed[j]) f.push_back(j);
+        return f;
+      };
+      Tried around;
+      if (const auto& c = around_[i];
+          options_.reuse && c && !changed_in(changed_, c->tried.since, c->tried.window, i) &&
+          c->fixed == fixed_there(c->tried.window)) {
+        around = c->tried;
+        ++stats_.reused;
+      } else {
+        around = try_net(route, i, NetSpaceLevel::Full, fixed);
+        add_counts(stats_, around.counts);
+        around_[i] = AroundWay{around, fixed_there(around.window)};
+      }
       if (!around.a.routed) return false;
       ++stats_.around_fixed;
       blockers = way_blockers(i, around.a.wires);
       if (blockers.empty() || !movable()) return false;
     }
+    // The same rip-up undone before, and no wire placed or removed since in the windows its
+    // attempts read: it would go the same way, bit for bit (see undone_). Its rips are counted,
+    // and nothing else changes.
+    if (const auto& u = undone_[i];
+        options_.reuse && u && u->blockers == blockers && u->gain == gain && !changed_in(changed_, u->mark, u->windows)) {
+      for (const std::size_t b : blockers) ++out_[b].rips;
+      stats_.rips += static_cast<std::int64_t>(blockers.size());
+      ++stats_.undone;
+      ++stats_.replayed;
+      out_[i].code.clear();
+      out_[i].reason.clear();
+      return true;
+    }
     std::vector<std::pair<std::size_t, NetAttempt>> before;  // the blockers' wires, to undo
+    const std::size_t mark = changed_.size();  // the log before the rip-up
     for (const std::size_t b : blockers) {
       NetAttempt was;
       was.routed = true;
@@ -1154,16 +1215,55 @@ void NetRouter::run(const NetRouteFn& route) {
     std::vector<std::size_t> again_nets{i};  // the net, then its blockers in their order
     for (const std::size_t j : order_)
       if (blockers.count(j)) again_nets.push_back(j);
-    route_in_order(route, again_nets, [](std::size_t) {});
+    // Undone when more than 1 - gain of them stay unrouted: once that many have failed, the rest
+    // are not tried (the undo puts back the same state either way).
+    std::size_t failed = 0;
+    std::vector<Box> windows;
+    route_in_order(route, again_nets, [&](std::size_t j, const Box& w) {
+      failed += !out_[j].routed;
+      windows.push_back(w);
+      return failed + gain <= 1 || !options_.reuse;
+    });
     std::size_t now = 0;
     for (const std::size_t j : again_nets) now += out_[j].routed;
     if (now < blockers.size() + gain) {  // fewer routed than before (with gain: not more): put them back
       ++stats_.undone;
       for (const std::size_t j : again_nets) place(j, NetAttempt{});
       for (auto& [b, was] : before) place(b, std::move(was));
+      // Every wire is back as it was (the net itself had none): the space is what it was at
+      // `mark`, so the log's entries since then are dropped, and what was tried against the space
+      // before the rip-up (failed_, attempts made ahead) stays valid.
+      std::unique_lock lock(space_mutex_);
+      changed_.resize(mark);
+      undone_[i] = UndoneRipUp{std::move(blockers), gain, mark, std::move(windows)};
       return true;
     }
+    undone_[i].reset();
     return false;
+  };
+  // Net i at the Full level in a round: the attempt made ahead when still valid; else its last
+  // failed attempt when no other net's wire has changed in its windows since (an attempt depends
+  // on nothing else: it would fail the same way, bit for bit); else a new one. A failed one is
+  // kept for the next time (failed_).
+  auto full = [&](std::size_t i, std::optional<Tried>& ahead_i) -> NetAttempt {
+    std::optional<Tried> t;
+    if (ahead_i && !changed_in(changed_, ahead_i->since, ahead_i->window, i)) {
+      add_counts(stats_, ahead_i->counts);
+      t = std::move(ahead_i);
+    } else if (options_.reuse && failed_[i] && !changed_in(changed_, failed_[i]->since, failed_[i]->window, i)) {
+      ++stats_.reused;
+      return failed_[i]->a;
+    } else {
+      stats_.redone += ahead_i.has_value();
+      t = try_net(route, i, NetSpaceLevel::Full);
+      add_counts(stats_, t->counts);
+    }
+    if (t->a.routed) {
+      failed_[i].reset();
+      return std::move(t->a);
+    }
+    failed_[i] = t;
+    return std::move(t->a);
   };
   for (int round = 0; round < options_.max_rounds && best_score.first < n && stale < 2; ++round) {
     ++stats_.rounds;
@@ -1180,9 +1280,10 @@ void NetRouter::run(const NetRouteFn& route) {
       parallel_for(2 * todo.size(), threads, [&](std::size_t k) {
         const std::size_t i = todo[k / 2];
         try {
-          if (k % 2 == 0)
-            ahead[i] = try_net(route, i, NetSpaceLevel::Full);
-          else if (!alone_[i])
+          if (k % 2 == 0) {
+            if (!options_.reuse || !failed_[i] || changed_in(changed_, failed_[i]->since, failed_[i]->window, i))
+              ahead[i] = try_net(route, i, NetSpaceLevel::Full);
+          } else if (!alone_[i])
             ahead_alone[i] = try_net(route, i, NetSpaceLevel::Pins);
         } catch (const NetRouterStopped&) {
           throw;
@@ -1196,14 +1297,7 @@ void NetRouter::run(const NetRouteFn& route) {
       routed_now = 0;
       for (const NetOutcome& o : out_) routed_now += o.routed;
       tell();
-      NetAttempt again;  // others may have moved
-      if (ahead[i] && !changed_in(changed_, ahead[i]->since, ahead[i]->window, i)) {
-        add_counts(stats_, ahead[i]->counts);
-        again = std::move(ahead[i]->a);
-      } else {
-        stats_.redone += ahead[i].has_value();
-        again = attempt(route, i, NetSpaceLevel::Full);
-      }
+      NetAttempt again = full(i, ahead[i]);  // others may have moved
       if (again.routed) {
         place(i, std::move(again));
         continue;
@@ -1226,12 +1320,17 @@ void NetRouter::run(const NetRouteFn& route) {
   {
     std::vector<int> rips(n);
     for (std::size_t i = 0; i < n; ++i) rips[i] = out_[i].rips;
-    out_ = std::move(best);
     for (std::size_t i = 0; i < n; ++i) {
-      out_[i].rips = rips[i];
-      space_.set_wires(i, out_[i].wires);
+      best[i].rips = rips[i];
+      if (best[i].wires == out_[i].wires) continue;
+      NetAttempt was;
+      was.routed = best[i].routed;
+      was.wires = best[i].wires;
+      place(i, std::move(was));
     }
+    out_ = std::move(best);
   }
+  lap(stats_.phase_seconds.rounds);
   // The final round: each net still unrouted in the best state is tried again, and else its
   // blockers are ripped up whatever their rips. A rip-up kept must route more of them than
   // before (else it is undone), so this round only gains nets: those the rip limit held.
@@ -1245,7 +1344,8 @@ void NetRouter::run(const NetRouteFn& route) {
       if (out_[i].routed) continue;
       ++stats_.final_round;
       tell();
-      NetAttempt again = attempt(route, i, NetSpaceLevel::Full);
+      std::optional<Tried> none;
+      NetAttempt again = full(i, none);
       if (again.routed)
         place(i, std::move(again));
       else if (rip_up(i, std::numeric_limits<int>::max(), true))
@@ -1254,6 +1354,7 @@ void NetRouter::run(const NetRouteFn& route) {
     best_score = score();
     stats_.final_round_routed = best_score.first - had;
   }
+  lap(stats_.phase_seconds.final_round);
   // The last pass: every net still unrouted, tried without the window limit of the rounds (a
   // detour the rounds did not look for, or a net the best state had left behind), in order.
   capped_ = false;
@@ -1262,9 +1363,13 @@ void NetRouter::run(const NetRouteFn& route) {
     for (const std::size_t i : order_)
       if (!out_[i].routed) left.push_back(i);
     stats_.last_pass = left.size();
-    route_in_order(route, left, [&](std::size_t i) { stats_.last_pass_routed += out_[i].routed; });
+    route_in_order(route, left, [&](std::size_t i, const Box&) {
+      stats_.last_pass_routed += out_[i].routed;
+      return true;
+    });
     best_score = score();
   }
+  lap(stats_.phase_seconds.last_pass);
   // Explaining reads the final state only: the nets are explained at once.
   prog.phase = NetRouterProgress::Phase::Explain;
   prog.tried = 0;
@@ -1288,6 +1393,7 @@ void NetRouter::run(const NetRouteFn& route) {
       tell();
     }
   }
+  lap(stats_.phase_seconds.explain);
 }
 
 NetRouter::Explained NetRouter::explain(const NetRouteFn& route, std::size_t net) const {

@@ -91,6 +91,16 @@
 // the rounds a net finding no way in its first search_windows
 // windows (NetRouterOptions) is taken as blocked there, not widened to the whole domain; the
 // last pass then tries each net still unrouted without that limit, and places what it routes.
+// Work whose outcome is known is not done again (NetRouterOptions::reuse; the outcome is the
+// same, bit for bit): every wire piece placed or removed is logged (changed_), and an attempt
+// depends on nothing but the pieces meeting its windows, so a net's failed attempt in a round is
+// taken again while no other net's piece has changed in its last window, and likewise its way
+// round the nets at the rip limit (while the same nets there are at the limit); a rip-up that is
+// undone leaves the space as it was, so its log entries are dropped, and the same rip-up (same
+// blockers) is not made again while nothing has changed in the windows its attempts read (its
+// rips are still counted); and a rip-up's nets stop being routed once so many failed that it
+// will be undone. On 10^4 planted nets over 91,830 vertices: 18,035 -> 15,891 windows, the same
+// routing.
 // When nets stay unrouted, each gets the most telling reason (NetOutcome::reason):
 //   - the net cannot be routed even alone, among the plain blockages: the router's own reason
 //     (an enclosed pin, a pin in a blockage, ...);
@@ -193,6 +203,9 @@ class NetSpace {
   // The nets (other than `net`) whose grown wires enter one of its shape pins (for a shape that
   // is not a rectangle: whose box they meet), which the router then cannot take.
   std::vector<std::size_t> pad_blockers(std::size_t net) const;
+  // The nets whose wires the other nets see in `window` (the union of their grown segments meets
+  // it, clipped to the domain, as obstacles() reads them), in increasing order.
+  std::vector<std::size_t> wire_nets_in(const geom::Box& window) const;
   // The boxes of what the other nets see of net `net`'s wires (the union of its grown segments).
   std::vector<geom::Box> wire_boxes(std::size_t net) const;
 
@@ -302,6 +315,13 @@ struct NetRouterOptions {
   // every blocker may be ripped up whatever its rips; a rip-up there is kept only when it routes
   // more of the net and its blockers than before (so the round never loses a net). false: none.
   bool final_round = true;
+  // In the rip-up rounds and the final round, work whose outcome is known is not done again (the
+  // outcome is the same, bit for bit; see the header's Rip-up): a net's failed attempt, or its
+  // way round the nets at the rip limit, is taken again while no wire has changed in its
+  // windows; a rip-up that was undone is not made again while nothing has changed in the windows
+  // it read; and a rip-up's nets stop being routed once it is sure to be undone. false: every
+  // attempt made afresh (for tests).
+  bool reuse = true;
 };
 
 struct NetRouterStats {
@@ -325,8 +345,22 @@ struct NetRouterStats {
   // wire placed in between met their window (not counted in attempts/windows above, which are
   // the same for every thread count; these two depend on timing).
   std::int64_t speculated = 0, redone = 0;
+  // Attempts of the rip-up rounds and the final round taken again without routing: a net's last
+  // failed attempt, or its last way round the nets at the rip limit, when no other net's wire has
+  // been placed or removed in its windows since (the same outcome, bit for bit; not counted in
+  // attempts and windows).
+  std::int64_t reused = 0;
+  // Rip-ups not made again because the same one was undone before and nothing has changed in the
+  // windows its attempts read (it would be undone again: its rips are counted, in rips and undone).
+  std::int64_t replayed = 0;
   double space_seconds = 0, route_seconds = 0;  // building obstacles; routing in them
   double whole_seconds = 0;  // of those two, in windows on the whole domain
+  // Wall-clock time of each phase of run(): the first pass, the rip-up rounds, the final round,
+  // the last pass and the explanations of the nets left (the space and path seconds above are
+  // summed over threads and over every phase).
+  struct Phases {
+    double first_pass = 0, rounds = 0, final_round = 0, last_pass = 0, explain = 0;
+  } phase_seconds;
 };
 
 class NetRouter {
@@ -372,8 +406,9 @@ class NetRouter {
   // The nets whose grown wires these wires of net `net` enter, and those that enter its pads.
   std::set<std::size_t> way_blockers(std::size_t net, const std::vector<std::vector<geom::Point>>& wires) const;
   // Routes `nets` at the Full level one after another, placing each (as if with one thread).
+  // `after` is told each net placed and the last window its attempt read; false stops there (the nets after it are left as they are).
   void route_in_order(const NetRouteFn& route, std::span<const std::size_t> nets,
-                      const std::function<void(std::size_t)>& after);
+                      const std::function<bool(std::size_t, const geom::Box&)>& after);
   void place(std::size_t net, NetAttempt a);
   struct Explained {
     std::string code, reason;
@@ -390,9 +425,31 @@ class NetRouter {
   std::vector<std::optional<NetAttempt>> alone_;  // alone(), per net
   std::vector<char> final_undone_;  // per net: its rip-up in the final round was undone
   bool capped_ = false;  // Full attempts stop after options_.search_windows unreachable windows
-  // With threads > 1: the boxes of every wire piece placed or removed since speculation began,
-  // with their net (a speculative attempt is kept when none of another net meets its window).
+  // The boxes of every wire piece placed or removed since run() began, with their net (an attempt
+  // made ahead, or a failed one kept, is valid while none of another net meets its last window).
+  // A rip-up that is undone drops its entries (the space is then as it was before it).
   std::vector<std::pair<geom::Box, std::size_t>> changed_;
+  // Per net: its last failed attempt at the Full level in the rip-up rounds and the final round.
+  std::vector<std::optional<Tried>> failed_;
+  // Per net: its last rip-up, when it was undone: the blockers ripped up, whether it had to gain
+  // nets (the final round), the log's length before it and the windows its attempts read (the
+  // state after an undo is the state before, so the same rip-up would go the same way while no
+  // wire of any net is placed or removed in those windows).
+  struct UndoneRipUp {
+    std::set<std::size_t> blockers;
+    bool gain = false;
+    std::size_t mark = 0;
+    std::vector<geom::Box> windows;
+  };
+  std::vector<std::optional<UndoneRipUp>> undone_;
+  // Per net: its last way round the wires of the nets that may not be ripped up again (rip_up in
+  // run), with those of them whose wires met its last window (valid while no wire changes there
+  // and the same nets there are fixed).
+  struct AroundWay {
+    Tried tried;
+    std::vector<std::size_t> fixed;
+  };
+  std::vector<std::optional<AroundWay>> around_;
   mutable std::shared_mutex space_mutex_;  // place() writes space_ and changed_; attempts read them
 };
 

@@ -809,8 +809,16 @@ void add_route(CLI::App& app, int& status) {
                          {"threads", net_threads},
                          {"speculative_attempts", net_stats->speculated},
                          {"speculative_redone", net_stats->redone},
+                         {"reused_attempts", net_stats->reused},
+                         {"replayed_rip_ups", net_stats->replayed},
                          {"space_seconds", net_stats->space_seconds},
-                         {"path_seconds", net_stats->route_seconds}};
+                         {"path_seconds", net_stats->route_seconds},
+                         {"phase_seconds",
+                          {{"first_pass", net_stats->phase_seconds.first_pass},
+                           {"rip_up_rounds", net_stats->phase_seconds.rounds},
+                           {"final_round", net_stats->phase_seconds.final_round},
+                           {"last_pass", net_stats->phase_seconds.last_pass},
+                           {"explain", net_stats->phase_seconds.explain}}}};
     if (tighten_stats)
       j["tighten"] = together_stats_json(*tighten_stats);
     if (!args->stats.empty()) stats = j.dump(2) + "\n";
