@@ -1363,10 +1363,32 @@ void NetRouter::run(const NetRouteFn& route) {
     for (const std::size_t i : order_)
       if (!out_[i].routed) left.push_back(i);
     stats_.last_pass = left.size();
-    route_in_order(route, left, [&](std::size_t i, const Box&) {
-      stats_.last_pass_routed += out_[i].routed;
-      return true;
-    });
+    // A net whose last failed attempt of the rounds never met the window limit, with nothing
+    // changed in its window since, would fail the same way without the limit (the windows grow
+    // the same way, and no other step depends on the limit): that attempt is placed in its turn.
+    std::vector<std::size_t> batch;
+    auto flush = [&] {
+      route_in_order(route, batch, [&](std::size_t i, const Box&) {
+        stats_.last_pass_routed += out_[i].routed;
+        return true;
+      });
+      batch.clear();
+    };
+    for (const std::size_t i : left) {
+      const auto& f = failed_[i];
+      if (!options_.reuse || !f || f->counts.capped > 0) {
+        batch.push_back(i);
+        continue;
+      }
+      flush();
+      if (changed_in(changed_, f->since, f->window, i)) {
+        batch.push_back(i);
+        continue;
+      }
+      ++stats_.reused;
+      place(i, f->a);
+    }
+    flush();
     best_score = score();
   }
   lap(stats_.phase_seconds.last_pass);
