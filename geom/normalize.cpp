@@ -436,6 +436,14 @@ std::vector<Polygon> square_grown(std::span<const Polygon> polygons, Coord r) {
   return out;
 }
 
+Polygon domain_frame(const Box& d) {
+  const Box g{{d.lo.x - 1, d.lo.y - 1}, {d.hi.x + 1, d.hi.y + 1}};
+  Polygon frame;
+  frame.outer = {g.lo, {g.hi.x, g.lo.y}, g.hi, {g.lo.x, g.hi.y}};
+  frame.holes.push_back({d.lo, {d.lo.x, d.hi.y}, d.hi, {d.hi.x, d.lo.y}});
+  return frame;
+}
+
 Box grown_box(const Box& b, std::int64_t r) {
   auto c = [](std::int64_t v) { return static_cast<Coord>(std::clamp<std::int64_t>(v, -kMaxCoord, kMaxCoord)); };
   return {{c(std::int64_t{b.lo.x} - r), c(std::int64_t{b.lo.y} - r)}, {c(std::int64_t{b.hi.x} + r), c(std::int64_t{b.hi.y} + r)}};

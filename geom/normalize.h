@@ -107,6 +107,12 @@ std::vector<Polygon> square_grown(std::span<const Polygon> polygons, Coord r);
 // its outer ring in d is not touched. Exact; no vertex is moved or added.
 bool cut_beyond(Polygon& polygon, const Box& d);
 
+// The frame of a domain box d: the box one unit larger on every side (not clamped: d must lie
+// within the coordinate limit, so the frame lies within it plus one) with d as its hole, outer
+// ring counter-clockwise from its lower-left corner. The wavefronts wall a domain with it
+// (router/wavefront.h); its interior holds no point of d.
+Polygon domain_frame(const Box& d);
+
 // The box grown by r >= 0 on every side, clamped to the coordinate limit.
 Box grown_box(const Box& box, std::int64_t r);
 

@@ -170,6 +170,9 @@ void index_components(NetSpace::Index::Components& c) {
 bool box_inside(const Box& in, const Box& out) {
   return in.lo.x >= out.lo.x && in.lo.y >= out.lo.y && in.hi.x <= out.hi.x && in.hi.y <= out.hi.y;
 }
+bool box_strictly_inside(const Box& in, const Box& out) {
+  return in.lo.x > out.lo.x && in.lo.y > out.lo.y && in.hi.x < out.hi.x && in.hi.y < out.hi.y;
+}
 using geom::boxes_meet;
 
 // The wires without their parts of positive length in the closed pads `pads` (the net's own pads,
@@ -359,7 +362,7 @@ void NetSpace::set_wires(std::size_t net, const Lines& wires) {
 }
 
 geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel level, std::optional<geom::Box> window,
-                                              std::span<const char> only) const {
+                                              std::span<const char> only, bool framed) const {
   const Index& ix = *index_;
   const Box dom = window ? clipped(*window, domain_) : domain_;
   const bool plain = level == NetSpaceLevel::Plain;
@@ -460,7 +463,9 @@ geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel lev
       }
       continue;
     }
-    bool alone = box_inside(box, dom) && dyn_tree.qbegin(bgi::intersects(box)) == dyn_tree.qend();
+    // (framed: a component on a side of the window joins the frame in the union)
+    bool alone = (framed ? box_strictly_inside(box, dom) : box_inside(box, dom)) &&
+                 dyn_tree.qbegin(bgi::intersects(box)) == dyn_tree.qend();
     for (std::size_t k = 0; k < cut_boxes.size() && alone; ++k) alone = !boxes_meet(box, cut_boxes[k]);
     (alone ? pass : rest).push_back(comps.polys[c]);
   }
@@ -476,9 +481,13 @@ geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel lev
   // planted nets the pieces that cross a side carried a fifth of the union's input vertices, and
   // the cut removes 7 % of all of them. Then the union and its loop.)
   std::erase_if(rest, [&](Polygon& p) { return !geom::cut_beyond(p, dom); });
+  // framed: the frame lies in the box one unit larger (what the cut left beyond the window's
+  // sides joins it there), and the union is clipped to that box
+  const Box clip = framed ? Box{{dom.lo.x - 1, dom.lo.y - 1}, {dom.hi.x + 1, dom.hi.y + 1}} : dom;
+  if (framed) rest.push_back(geom::domain_frame(dom));
   geom::NormalizedObstacles out;
   for (;;) {
-    out = geom::normalize_obstacles(rest, dom);
+    out = geom::normalize_obstacles(rest, clip);
     // nothing rounded: the union is exactly the rest's, which no passed component meets
     if (pass.empty() || out.stats.rounded == 0) break;
     std::vector<Index::Entry> ob;
@@ -496,6 +505,7 @@ geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel lev
   std::sort(out.obstacles.begin(), out.obstacles.end(),
             [](const Polygon& x, const Polygon& y) { return x.outer[0] < y.outer[0]; });
   out.sources.clear();
+  out.domain = dom;
   return out;
 }
 
@@ -731,6 +741,8 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
   const Box hp = pts.empty() ? dom : box_of(pts);
   std::int64_t m = first_margin(pins, hp, space_.blockage_clearance(), space_.net_clearance());  // as first_window()
   bool fitted = false;  // grown once to the margin its answer needs (see below)
+  // the wavefronts' frame merged in the space's union
+  const bool framed = options_.framed ? options_.framed(net) : takes_frames(route);
   // the net's pads (shape pins cut out of the grown blockages) that meet none of its other pins
   // (the wires over a pad are trimmed, and one that reaches another pin there must stay)
   std::vector<Ring> pads;
@@ -752,7 +764,7 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
       // the space may be read by several threads at once, and is changed only by place()
       std::shared_lock lock(space_mutex_);
       if (st.windows == 0) t.since = changed_.size();
-      obs = space_.obstacles(net, level, whole ? std::nullopt : std::optional<Box>(w), only);
+      obs = space_.obstacles(net, level, whole ? std::nullopt : std::optional<Box>(w), only, framed);
     }
     const auto t1 = Clock::now();
     t.window = w;
@@ -800,6 +812,10 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
         // is a way there that costs no more, so the ring's optimum is at most the layout's; when
         // every sink costs the same there as in the window, the window's optimum is the layout's.
         geom::NormalizedObstacles open = obs;
+        if (framed) {  // the window's pieces without its frame
+          std::shared_lock lock(space_mutex_);
+          open = space_.obstacles(net, level, whole ? std::nullopt : std::optional<Box>(w), only);
+        }
         open.domain = clipped(geom::grown_box(w, 1), dom);
         const auto r0 = Clock::now();
         const NetAttempt r = route(net, pins, open);
@@ -1571,16 +1587,28 @@ NetRouteFn NetRouter::bend_router(BendMetric metric, std::int64_t bend_cost) {
   };
 }
 
-NetRouteFn NetRouter::l1_router(bool steiner) {
-  return [steiner](std::size_t, const NetPins& net, const geom::NormalizedObstacles& obs) {
+namespace {
+// The route functions of l1_router and oct_router, by name: their wavefronts take windows with
+// the frame merged (NetSpace::obstacles(..., framed)), which try_net() recognises by these types.
+struct L1RouteFn {
+  bool steiner;
+  NetAttempt operator()(std::size_t, const NetPins& net, const geom::NormalizedObstacles& obs) const {
     return route_with<L1Router>(net, obs, steiner);
-  };
+  }
+};
+struct OctRouteFn {
+  NetAttempt operator()(std::size_t, const NetPins& net, const geom::NormalizedObstacles& obs) const {
+    return route_with<OctRouter>(net, obs, false);
+  }
+};
+}  // namespace
+
+bool NetRouter::takes_frames(const NetRouteFn& route) {
+  return route.target<L1RouteFn>() != nullptr || route.target<OctRouteFn>() != nullptr;
 }
 
-NetRouteFn NetRouter::oct_router() {
-  return [](std::size_t, const NetPins& net, const geom::NormalizedObstacles& obs) {
-    return route_with<OctRouter>(net, obs, false);
-  };
-}
+NetRouteFn NetRouter::l1_router(bool steiner) { return L1RouteFn{steiner}; }
+
+NetRouteFn NetRouter::oct_router() { return OctRouteFn{}; }
 
 }  // namespace taut::router

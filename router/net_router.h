@@ -190,9 +190,14 @@ class NetSpace {
   // The obstacles net `net` is routed among at `level`, normalized in `window` (clipped to the
   // domain; the whole domain when nullopt): every piece meeting the window, found in R-trees.
   // `only` (Full level; empty: every net): the wires of the nets j with only[j] != 0 alone.
+  // framed: the obstacles also hold the domain's frame (geom::domain_frame) merged with every
+  // obstacle that touches the domain's sides, in the one union that makes them: what the L1 and
+  // octilinear wavefronts would otherwise merge again themselves (router/wavefront.h). Every
+  // point of the domain is free or not as without the frame. (Not for the plain blockages of the
+  // whole domain: those are returned as they are, unframed.)
   geom::NormalizedObstacles obstacles(std::size_t net, NetSpaceLevel level,
                                       std::optional<geom::Box> window = std::nullopt,
-                                      std::span<const char> only = {}) const;
+                                      std::span<const char> only = {}, bool framed = false) const;
 
   // The nets (other than `net`) whose grown wires the polyline enters (meets in their interior),
   // and, separately, the nets whose grown pins it enters.
@@ -323,6 +328,12 @@ struct NetRouterOptions {
   // it read; and a rip-up's nets stop being routed once it is sure to be undone. false: every
   // attempt made afresh (for tests).
   bool reuse = true;
+  // The nets whose windows the route function takes with the domain's frame merged into their
+  // obstacles (NetSpace::obstacles(..., framed)): one union per window instead of two (the
+  // space's, then the wavefront's own merge of the frame). Only for a route function that reads
+  // the obstacles through L1Router, OctRouter or their wavefronts alone. Empty: every net when
+  // the route function is l1_router's or oct_router's (NetRouter::takes_frames), none otherwise.
+  std::function<bool(std::size_t net)> framed;
 };
 
 struct NetRouterStats {
@@ -378,6 +389,10 @@ class NetRouter {
   // The same for octilinear wires (router/oct_router.h; shortest-path trees): run it with
   // NetRouterOptions::octilinear.
   static NetRouteFn oct_router();
+  // The route function is l1_router's or oct_router's, whose wavefronts take the windows'
+  // obstacles with the domain's frame merged (NetSpace::obstacles(..., framed)): one union per
+  // window instead of two.
+  static bool takes_frames(const NetRouteFn& route);
   // The same for the bend-aware metrics (router/bend_router.h: length + bend_cost x bends, or
   // bends then length): the tree of optimal paths from the first pin (two pins: the optimal
   // wire), point and shape pins. Run it with NetRouterOptions::cost set to the same metric, on

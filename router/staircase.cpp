@@ -175,10 +175,12 @@ struct Core {
     return w;
   }
 
-  // p lies on no edge: is it inside an obstacle? Crossing number along the ray to the east.
+  // p lies on no edge: is it inside an obstacle? Crossing number along the ray to the east (all
+  // of it: an obstacle may reach beyond the domain, as a frame merged with the obstacles on the
+  // domain's sides does, NetSpace::obstacles(..., framed)).
   bool inside_obstacle(Point p) const {
     bool inside = false;
-    for (const std::uint32_t id : index.edges_in_box({p, {domain.hi.x, p.y}})) {
+    for (const std::uint32_t id : index.edges_in_box({p, {std::numeric_limits<geom::Coord>::max(), p.y}})) {
       const Segment& e = index.edge(id);
       if ((e.a.y > p.y) != (e.b.y > p.y)) {
         const Point lo = e.a.y < e.b.y ? e.a : e.b, hi = e.a.y < e.b.y ? e.b : e.a;

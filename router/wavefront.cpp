@@ -34,6 +34,7 @@ using std::uint64_t;
 using std::uint8_t;
 
 constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
+constexpr uint32_t kUnknown = kNone - 1;  // a track ray not shot yet (WaveCore::ray_cache)
 
 // A number c0 + c1*e + c2*e^2 for an infinitesimal e > 0, compared lexicographically.
 struct T3 {
@@ -878,13 +879,20 @@ struct WaveCore {
   }
   std::vector<uint32_t> ent_begin;                  // per vertex point: entities [begin, begin+1..)
   std::vector<Entity> ents;                         // vertex entities [0, nvent), run-time after
-  std::vector<typename M::Bits> ent_bits;           // per entity: compute_wedge_bits()
+  // per entity: compute_wedge_bits(), made when first read (a net's window labels about a fifth
+  // of its entities)
+  mutable std::vector<typename M::Bits> ent_bits;
+  mutable std::vector<char> bits_made;
   uint32_t nvent = 0;
   KdTree<M> vertex_tree;
   // Track-ray answers per vertex point and world direction (M::kRaySlots per point: two per
-  // mode of sweep_rays(), the mode's direction and its opposite): the edge id hit, or kNone.
-  // Query points shoot on the R-tree instead (shoot_uncached()).
+  // mode of sweep_rays(), the mode's direction and its opposite): the edge id hit, or kNone;
+  // kUnknown until shot. A vertex's rays are shot one by one on the R-tree (shoot_uncached()),
+  // as a query point's are, until a mode has shot nvert / 8 of them; then sweep_rays() answers
+  // the rest of that mode at once (a run that labels few of the vertices, as a net's window
+  // does, never pays for the sweep; one that labels most pays for at most an eighth more).
   std::vector<uint32_t> ray_cache;
+  std::array<uint32_t, M::kRaySlots / 2> lazy_rays{};  // per mode: rays shot one by one
   std::vector<uint32_t> box_edges;  // scratch for edges_in_box
   i64 ray_window = 64;              // first window length of a track ray (set in the constructor)
 
@@ -1038,7 +1046,7 @@ struct WaveCore {
     ent_begin[nvert] = static_cast<uint32_t>(ents.size());
     nvent = static_cast<uint32_t>(ents.size());
     ent_bits.resize(nvent);
-    for (uint32_t i = 0; i < nvent; ++i) ent_bits[i] = compute_wedge_bits(ents[i]);
+    bits_made.assign(nvent, 0);
     stats.vertices = nvert;
     stats.entities = nvent;
     // Edge id -> point ids.
@@ -1055,8 +1063,7 @@ struct WaveCore {
       items.push_back({q, v});
     }
     vertex_tree = KdTree<M>(std::move(items), nvert);
-    ray_cache.assign(std::size_t{M::kRaySlots} * nvert, kNone);
-    for (int mode = 0; mode < M::kRaySlots / 2; ++mode) sweep_rays(mode);
+    ray_cache.assign(std::size_t{M::kRaySlots} * nvert, kUnknown);
   }
 
   // Track rays of every vertex point at once, by one plane sweep per orientation (two for L1,
@@ -1150,11 +1157,16 @@ struct WaveCore {
     for (uint32_t v = 0; v < nvert; ++v) order[v] = v;
     std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return lex_less(mp(a), mp(b)); });
     const std::size_t up = 2 * static_cast<std::size_t>(mode), down = up + 1;  // slots (shoot())
+    // (a ray already shot on the R-tree must get the same answer: both are exact)
+    auto put = [&](uint32_t& slot, uint32_t hit) {
+      if (slot != kUnknown && slot != hit) throw std::logic_error("WaveCore: a track ray's sweep and R-tree answers differ");
+      slot = hit;
+    };
     for (const uint32_t q : order) {
       for (uint32_t i = ends[q]; i < ends[q + 1]; ++i) active.erase(where[end_list[i]]);
       auto it = active.lower_bound(Key{mp(q)});
-      ray_cache[std::size_t{M::kRaySlots} * q + up] = it == active.end() ? kNone : *it;
-      ray_cache[std::size_t{M::kRaySlots} * q + down] = it == active.begin() ? kNone : *std::prev(it);
+      put(ray_cache[std::size_t{M::kRaySlots} * q + up], it == active.end() ? kNone : *it);
+      put(ray_cache[std::size_t{M::kRaySlots} * q + down], it == active.begin() ? kNone : *std::prev(it));
       for (uint32_t i = starts[q]; i < starts[q + 1]; ++i)
         where[start_list[i]] = active.insert(start_list[i]).first;
     }
@@ -1162,17 +1174,43 @@ struct WaveCore {
 
   // The domain side is a wall: a frame obstacle around the domain, merged with every obstacle
   // that touches the side, so a vertex touching it is a pinch.
+  // Obstacles that hold the frame already merged (NetSpace::obstacles(..., framed)) are taken as
+  // they are: one obstacle whose outer ring is the frame's and whose holes lie in the closed
+  // domain (so it holds the whole frame), and no other with a vertex on a side of the domain or
+  // beyond it (so none touches the frame). Otherwise the merge is made here.
   void merge_frame(std::span<const Polygon> obstacles) {
-    const Box g{{domain.lo.x - 1, domain.lo.y - 1}, {domain.hi.x + 1, domain.hi.y + 1}};
-    Polygon frame;
-    frame.outer = {g.lo, {g.hi.x, g.lo.y}, g.hi, {g.lo.x, g.hi.y}};
-    frame.holes.push_back({domain.lo, {domain.lo.x, domain.hi.y}, domain.hi, {domain.hi.x, domain.lo.y}});
+    const Polygon frame = geom::domain_frame(domain);
+    auto on_side = [&](Point q) {
+      return q.x == domain.lo.x || q.x == domain.hi.x || q.y == domain.lo.y || q.y == domain.hi.y;
+    };
+    {
+      int framed = 0;
+      bool apart = true;
+      for (const Polygon& p : obstacles) {
+        if (p.outer == frame.outer && !p.holes.empty()) {
+          ++framed;
+          for (const geom::Ring& h : p.holes)
+            for (Point q : h) apart = apart && in_domain(q);
+          continue;
+        }
+        for (Point q : p.outer) apart = apart && in_domain(q) && !on_side(q);
+      }
+      if (framed == 1 && apart) {
+        polys.assign(obstacles.begin(), obstacles.end());
+        return;
+      }
+    }
+    // (what has a vertex on a side or beyond it is merged too: a frame of an earlier merge, or
+    // an obstacle the caller did not clip to the domain)
+    const Box g{frame.outer[0], frame.outer[2]};
     std::vector<Polygon> touching{frame};
     for (const Polygon& p : obstacles) {
       bool t = false;
       for (Point q : p.outer)
-        if (q.x == domain.lo.x || q.x == domain.hi.x || q.y == domain.lo.y || q.y == domain.hi.y)
-          t = true;
+        if (on_side(q) || !in_domain(q)) t = true;
+      for (const geom::Ring& h : p.holes)
+        for (Point q : h)
+          if (on_side(q) || !in_domain(q)) t = true;
       if (t)
         touching.push_back(p);
       else
@@ -1247,7 +1285,13 @@ struct WaveCore {
     }
     return bits;
   }
-  uint32_t wedge_bits(uint32_t ent, int d) const { return get_bits(ent_bits[ent], d - M::kFirst); }
+  uint32_t wedge_bits(uint32_t ent, int d) const {
+    if (!bits_made[ent]) {
+      ent_bits[ent] = compute_wedge_bits(ents[ent]);
+      bits_made[ent] = 1;
+    }
+    return get_bits(ent_bits[ent], d - M::kFirst);
+  }
 
   bool wedge_contains(const Entity& e, const Dir& x) const {
     if (e.full) return true;
@@ -1310,6 +1354,7 @@ struct WaveCore {
         }
         ents.push_back(e);
         ent_bits.push_back(compute_wedge_bits(e));
+        bits_made.push_back(1);
         return {static_cast<uint32_t>(ents.size() - 1)};
       }
     }
@@ -1327,8 +1372,21 @@ struct WaveCore {
     const Frame& f = kFrames[d];
     const int mode = vertical ? f.north_mode : f.east_mode;
     const int s = vertical ? f.north_sense : f.east_sense;  // +1: along the mode's direction
-    const uint32_t hit = o < nvert ? ray_cache[std::size_t{M::kRaySlots} * o + 2 * mode + (s > 0 ? 0 : 1)]
-                                   : shoot_uncached(s, mode, o);
+    uint32_t hit;
+    if (o < nvert) {
+      uint32_t& slot = ray_cache[std::size_t{M::kRaySlots} * o + 2 * mode + (s > 0 ? 0 : 1)];
+      if (slot == kUnknown) {
+        if (lazy_rays[mode] < nvert / 8) {
+          ++lazy_rays[mode];
+          slot = shoot_uncached(s, mode, o);
+        } else {
+          sweep_rays(mode);
+        }
+      }
+      hit = slot;
+    } else {
+      hit = shoot_uncached(s, mode, o);
+    }
     if (hit == kNone) return false;
     ea = edge_pts[hit].first;
     eb = edge_pts[hit].second;

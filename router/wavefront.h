@@ -94,8 +94,9 @@ struct WavefrontStats {
   std::int64_t labelled = 0;      // entities reached
   std::int64_t drag_queries = 0;  // segment-dragging (k-d tree) queries
   std::int64_t drag_nodes = 0;    // k-d tree nodes those queries visited
-  std::int64_t ray_queries = 0;   // track rays shot on the R-tree (from query points; the
-                                  // rays of obstacle vertices come from the construction's sweep)
+  std::int64_t ray_queries = 0;   // track rays shot on the R-tree: from query points, and from
+                                  // obstacle vertices until a direction has shot an eighth of
+                                  // them (a plane sweep then answers the rest of it at once)
 };
 
 // A free wedge of an obstacle vertex p: it runs counter-clockwise from the direction of ring

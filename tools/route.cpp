@@ -576,6 +576,9 @@ void add_route(CLI::App& app, int& status) {
           nro.octilinear = octilinear;
           nro.stop = stop;
           nro.progress = progress;
+          // the nets routed by L1Router or OctRouter alone take framed windows (a sketch's
+          // tightening reads the obstacles itself)
+          nro.framed = [&](std::size_t i) { return !follows_sketch(layout->nets[i]); };
           nro.threads = static_cast<int>(args->threads ? args->threads : std::max(1u, std::thread::hardware_concurrency()));
           net_threads = nro.threads;
           router::NetRouter nr(space.domain, space.obstacles, std::move(pins), rules, nro);

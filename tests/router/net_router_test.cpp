@@ -869,6 +869,57 @@ TEST(NetRouter, ThreadsGiveTheSameOutcomes) {
 // the rip-ups stopped once sure to be undone give the outcome of doing everything afresh, bit for
 // bit (every net's wires, code, reason, blockers and rips, and the run's rips and undos), on the
 // crowded random layouts (rip-ups in every round) and on local nets (rip-ups apart).
+// The two runs made the same decisions and left every net the same: wires, codes, reasons,
+// blockers and rips, and the same counts of rips, undone rip-ups, rounds and each phase's routed.
+bool same_outcomes(const router::NetRouter& r, const router::NetRouter& s) {
+  const auto &x = r.stats(), &y = s.stats();
+  bool ok = x.rips == y.rips && x.undone == y.undone && x.rounds == y.rounds && x.first_pass == y.first_pass &&
+            x.final_round_routed == y.final_round_routed && x.last_pass_routed == y.last_pass_routed &&
+            r.outcomes().size() == s.outcomes().size();
+  for (std::size_t i = 0; ok && i < r.outcomes().size(); ++i) {
+    const auto &a = r.outcomes()[i], &b = s.outcomes()[i];
+    ok = a.routed == b.routed && a.wires == b.wires && a.code == b.code && a.reason == b.reason &&
+         a.blockers == b.blockers && a.rips == b.rips;
+  }
+  return ok;
+}
+
+// Crowded nets with a legal routing on a generated layout of about `size` blockage vertices
+// (bench/planted_nets.h, as in bench_net_router --planted), w = s = 10.
+struct Planted {
+  geom::NormalizedObstacles norm;
+  std::vector<router::NetPins> nets;
+};
+Planted planted_layout(std::uint64_t seed, int size, int nets) {
+  io::GenOptions go;
+  go.kind = io::GenKind::Rects;
+  go.size = size;
+  go.nets = 0;
+  go.seed = seed;
+  const io::Layout layout = io::generate_layout(go);
+  std::optional<geom::Box> boundary;
+  if (layout.boundary) boundary = layout.boundary->box;
+  Planted out;
+  out.norm = geom::normalize_obstacles(io::blockage_polygons(layout), boundary);
+  const std::int64_t side = std::int64_t{out.norm.domain.hi.x} - out.norm.domain.lo.x;
+  out.nets = bench::planted_nets(out.norm, nets, 10, 10, side / 40, seed).nets;
+  return out;
+}
+
+// compare(what, nets, obstacles, rules, options, route function) on 100 crowded random layouts
+// (L1 and octilinear, Steiner trees, rip limits 1-4; 10 under the sanitizers) of seeds base + 1...
+template <class Compare>
+void on_random_layouts(int base, Compare compare) {
+  for (int seed = 1; seed <= sanitized_share(100, 10); ++seed) {
+    const RandomLayout L = random_layout(base + seed);
+    router::NetRouterOptions opt;
+    opt.octilinear = seed % 5 == 4;
+    opt.max_rips = 1 + seed % 4;
+    const auto fn = opt.octilinear ? router::NetRouter::oct_router() : router::NetRouter::l1_router(seed % 3 == 0);
+    compare("seed " + std::to_string(base + seed), L.nets, L.norm, L.rules, opt, fn);
+  }
+}
+
 TEST(NetRouter, ReusedWorkGivesTheSameOutcomes) {
   int failed = 0;
   std::int64_t reused = 0, replayed = 0, windows = 0, fresh_windows = 0, rips = 0;
@@ -881,14 +932,7 @@ TEST(NetRouter, ReusedWorkGivesTheSameOutcomes) {
     router::NetRouter fresh(norm.domain, norm.obstacles, nets, rules, opt);
     fresh.run(fn);
     const auto &x = re.stats(), &y = fresh.stats();
-    bool ok = x.rips == y.rips && x.undone == y.undone && x.rounds == y.rounds && x.first_pass == y.first_pass &&
-              x.final_round_routed == y.final_round_routed && x.last_pass_routed == y.last_pass_routed && y.reused == 0 &&
-              y.replayed == 0;
-    for (std::size_t i = 0; i < nets.size(); ++i) {
-      const auto &a = re.outcomes()[i], &b = fresh.outcomes()[i];
-      ok = ok && a.routed == b.routed && a.wires == b.wires && a.code == b.code && a.reason == b.reason &&
-           a.blockers == b.blockers && a.rips == b.rips;
-    }
+    const bool ok = same_outcomes(re, fresh) && y.reused == 0 && y.replayed == 0;
     if (!ok && failed++ < 5) ADD_FAILURE() << at << ": reusing work changed the outcome";
     reused += x.reused;
     replayed += x.replayed;
@@ -896,14 +940,7 @@ TEST(NetRouter, ReusedWorkGivesTheSameOutcomes) {
     fresh_windows += y.windows;
     rips += x.rips;
   };
-  for (int seed = 1; seed <= sanitized_share(100, 10); ++seed) {
-    const RandomLayout L = random_layout(730000 + seed);
-    router::NetRouterOptions opt;
-    opt.octilinear = seed % 5 == 4;
-    opt.max_rips = 1 + seed % 4;
-    const auto fn = opt.octilinear ? router::NetRouter::oct_router() : router::NetRouter::l1_router(seed % 3 == 0);
-    compare("seed " + std::to_string(730000 + seed), L.nets, L.norm, L.rules, opt, fn);
-  }
+  on_random_layouts(730000, compare);
   for (int seed = 1; seed <= sanitized_share(5, 5); ++seed) {
     std::mt19937 rng(static_cast<unsigned>(740000 + seed));
     const geom::NormalizedObstacles norm = box_layout(rng).norm;
@@ -920,18 +957,8 @@ TEST(NetRouter, ReusedWorkGivesTheSameOutcomes) {
   // the benchmark's 3,000 nets). Not under the sanitizers (50 s there; the layouts above run the
   // same code).
   for (int seed = 1; seed <= (kSanitized ? 0 : 2); ++seed) {
-    io::GenOptions go;
-    go.kind = io::GenKind::Rects;
-    go.size = 3000;
-    go.nets = 0;
-    go.seed = static_cast<std::uint64_t>(750000 + seed);
-    const io::Layout layout = io::generate_layout(go);
-    std::optional<geom::Box> boundary;
-    if (layout.boundary) boundary = layout.boundary->box;
-    const geom::NormalizedObstacles norm = geom::normalize_obstacles(io::blockage_polygons(layout), boundary);
-    const std::int64_t side = std::int64_t{norm.domain.hi.x} - norm.domain.lo.x;
-    const bench::PlantedNets pl = bench::planted_nets(norm, 1500, 10, 10, side / 40, static_cast<std::uint64_t>(750000 + seed));
-    compare("planted seed " + std::to_string(750000 + seed), pl.nets, norm, {10, 10}, {}, router::NetRouter::l1_router(false));
+    const Planted pl = planted_layout(static_cast<std::uint64_t>(750000 + seed), 3000, 1500);
+    compare("planted seed " + std::to_string(750000 + seed), pl.nets, pl.norm, {10, 10}, {}, router::NetRouter::l1_router(false));
   }
   std::printf("%lld attempts taken again, %lld undone rip-ups not made again; %lld windows against %lld afresh; %lld rip-ups\n",
               static_cast<long long>(reused), static_cast<long long>(replayed), static_cast<long long>(windows),
@@ -941,6 +968,38 @@ TEST(NetRouter, ReusedWorkGivesTheSameOutcomes) {
   EXPECT_GT(reused, sanitized_share(100, 20));
   EXPECT_GE(replayed, kSanitized ? 0 : 3);
   EXPECT_LT(windows, fresh_windows);
+}
+
+// Windows whose obstacles hold the domain's frame merged (NetSpace::obstacles(..., framed), what
+// l1_router and oct_router take) route every net as unframed windows do: the same layouts as the
+// reuse test above, with NetRouterOptions::framed saying no to every net for the reference. A
+// route function that is not l1_router's or oct_router's takes no frames.
+TEST(NetRouter, FramedWindowsGiveTheSameOutcomes) {
+  EXPECT_TRUE(router::NetRouter::takes_frames(router::NetRouter::l1_router(false)));
+  EXPECT_TRUE(router::NetRouter::takes_frames(router::NetRouter::oct_router()));
+  const router::NetRouteFn l1 = router::NetRouter::l1_router(true);
+  EXPECT_FALSE(router::NetRouter::takes_frames(
+      [&](std::size_t i, const router::NetPins& p, const geom::NormalizedObstacles& o) { return l1(i, p, o); }));
+  EXPECT_FALSE(router::NetRouter::takes_frames(router::NetRouter::bend_router(router::BendMetric::Link, 0)));
+  int failed = 0, routed = 0;
+  auto compare = [&](const std::string& at, const std::vector<router::NetPins>& nets, const geom::NormalizedObstacles& norm,
+                     const router::NetRules& rules, router::NetRouterOptions opt, const router::NetRouteFn& fn) {
+    router::NetRouter framed(norm.domain, norm.obstacles, nets, rules, opt);
+    framed.run(fn);
+    opt.framed = [](std::size_t) { return false; };
+    router::NetRouter plain(norm.domain, norm.obstacles, nets, rules, opt);
+    plain.run(fn);
+    if (!same_outcomes(framed, plain) && failed++ < 5) ADD_FAILURE() << at << ": framed windows changed the outcome";
+    for (const auto& o : framed.outcomes()) routed += o.routed;
+  };
+  on_random_layouts(760000, compare);
+  for (int seed = 1; seed <= (kSanitized ? 0 : 1); ++seed) {
+    const Planted pl = planted_layout(static_cast<std::uint64_t>(770000 + seed), 3000, 1500);
+    compare("planted seed " + std::to_string(770000 + seed), pl.nets, pl.norm, {10, 10}, {}, router::NetRouter::l1_router(false));
+  }
+  std::printf("%d nets routed in framed windows\n", routed);
+  EXPECT_EQ(failed, 0);
+  EXPECT_GT(routed, sanitized_share(300, 10));
 }
 
 // A stop asked from any thread ends the run with NetRouterStopped.

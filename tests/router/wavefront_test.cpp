@@ -8,6 +8,7 @@
 //   TAUT_WAVEFRONT_SEED=1234 build/tests/test_router_wavefront --gtest_filter='*Random*'
 // Keep every seed that once failed in kRegressionSeeds below.
 #include "router/wavefront.h"
+#include "router/l1_router.h"
 
 #include <gtest/gtest.h>
 
@@ -21,6 +22,7 @@
 #include "oracle/l1_oracle.h"
 #include "support/wavefront_cases.h"
 #include "support/wavefront_hand.h"
+#include "support/sanitized.h"
 
 namespace {
 
@@ -255,6 +257,67 @@ TEST(Wavefront, StatsArePlausible) {
   EXPECT_GT(wf.memory_bytes(), 0u);
   for (const Polygon& p : sc.obstacles)
     for (const Point v : p.outer) EXPECT_TRUE(wf.vertex_distance(v).has_value());
+}
+
+
+
+// Obstacles that hold the domain's frame already merged (the union of the obstacles and
+// geom::domain_frame(), clipped to the frame's box: what NetSpace::obstacles(..., framed) gives the
+// net router's wavefronts) answer every question as the obstacles alone do: is_free, distances
+// from one and from two sources, and L1Router's wires (whose staircase builder then meets an
+// obstacle reaching beyond the domain). On the random instances of the reference test (pinches,
+// touching obstacles, obstacles flush with the sides, huge coordinates).
+TEST(Wavefront, FramedObstaclesAnswerAsUnframed) {
+  std::int64_t instances = 0, compared = 0, reached = 0, wires = 0, failed = 0;
+  for (std::uint64_t seed = 1; seed <= static_cast<std::uint64_t>(taut::test::sanitized_share(400, 10)); ++seed) {
+    const taut::test::WavefrontCase c = taut::test::make_wavefront_case(seed);
+    const Box& d = c.domain;
+    std::vector<Polygon> with = c.obstacles;
+    with.push_back(taut::geom::domain_frame(d));
+    const Box g{{d.lo.x - 1, d.lo.y - 1}, {d.hi.x + 1, d.hi.y + 1}};
+    const taut::geom::NormalizedObstacles framed = taut::geom::normalize_obstacles(with, g);
+    int frames = 0;
+    for (const Polygon& p : framed.obstacles) frames += p.outer == taut::geom::domain_frame(d).outer;
+    ASSERT_EQ(frames, 1) << "seed " << seed;
+    ++instances;
+    L1Wavefront a(d, c.obstacles), b(d, framed.obstacles);
+    taut::router::OctWavefront oa(d, c.obstacles), ob(d, framed.obstacles);
+    std::vector<Point> sources;
+    for (const Point p : c.candidates) {
+      if (a.is_free(p) != b.is_free(p) || oa.is_free(p) != ob.is_free(p)) {
+        if (failed++ < 5) ADD_FAILURE() << "seed " << seed << ": is_free" << str(std::vector<Point>{p}) << " differs";
+      }
+      if (a.is_free(p) && sources.size() < 2) sources.push_back(p);
+    }
+    for (std::size_t k = 1; k <= sources.size(); ++k) {
+      const std::span<const Point> src(sources.data(), k);
+      a.run(src, c.candidates, taut::router::WavefrontStop::Never);
+      b.run(src, c.candidates, taut::router::WavefrontStop::Never);
+      oa.run(src, c.candidates, taut::router::WavefrontStop::Never);
+      ob.run(src, c.candidates, taut::router::WavefrontStop::Never);
+      for (std::size_t i = 0; i < c.candidates.size(); ++i) {
+        ++compared;
+        reached += a.target_distance(i).has_value();
+        if (a.target_distance(i) != b.target_distance(i) || oa.target_distance(i) != ob.target_distance(i)) {
+          if (failed++ < 5) ADD_FAILURE() << "seed " << seed << ": the distance to" << str(std::vector<Point>{c.candidates[i]}) << " differs";
+        }
+      }
+    }
+    if (sources.empty()) continue;
+    taut::router::L1Router ra(d, c.obstacles), rb(d, framed.obstacles);
+    for (std::size_t i = 0; i < c.candidates.size() && i < 6; ++i) {
+      const auto wa = ra.shortest(sources[0], c.candidates[i]), wb = rb.shortest(sources[0], c.candidates[i]);
+      wires += wa.status == taut::router::WireStatus::Ok;
+      if (wa.status != wb.status || wa.length != wb.length) {
+        if (failed++ < 5) ADD_FAILURE() << "seed " << seed << ": the wire to" << str(std::vector<Point>{c.candidates[i]}) << " differs";
+      }
+    }
+  }
+  std::printf("%lld instances, %lld distances compared (%lld reached), %lld wires\n", static_cast<long long>(instances),
+              static_cast<long long>(compared), static_cast<long long>(reached), static_cast<long long>(wires));
+  EXPECT_EQ(failed, 0);
+  EXPECT_GT(reached, taut::test::sanitized_share(4000, 10));
+  EXPECT_GT(wires, taut::test::sanitized_share(1000, 10));
 }
 
 }  // namespace
