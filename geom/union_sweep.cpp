@@ -211,21 +211,37 @@ UnionResult union_loops(const std::vector<Loop>& loops, const Box& domain, std::
     });
     const std::int64_t budget = sweep_budget >= 0 ? sweep_budget : 64 * static_cast<std::int64_t>(ns) + (std::int64_t{1} << 20);
     std::int64_t compared = 0;
-    std::vector<int> open;
+    // The open boxes are kept in bands of y (each box in every band its y-range meets; a closed
+    // one is dropped from a band when that band is next read), so a box is compared only with
+    // the open boxes in its own bands: on the net router's windows, long wire edges are open
+    // together over much of the sweep, and one list of them all cost some 40 comparisons per
+    // box. A pair whose boxes meet is considered once, in the band of the lower end of their
+    // common y-range (a band both lie in).
+    std::int64_t ylo = boxes[0].loy, yhi = boxes[0].hiy;
+    for (const SBox& x : boxes) ylo = std::min<std::int64_t>(ylo, x.loy), yhi = std::max<std::int64_t>(yhi, x.hiy);
+    const std::int64_t nbands = std::clamp<std::int64_t>(ns / 8, 1, 1024);
+    const std::int64_t band_height = (yhi - ylo) / nbands + 1;
+    auto band = [&](std::int64_t y) { return static_cast<std::size_t>((y - ylo) / band_height); };
+    std::vector<std::vector<int>> open(static_cast<std::size_t>(nbands));
     bool swept = true;
     for (const int b : by_left) {
       const SBox& bb = boxes[static_cast<std::size_t>(b)];
-      std::size_t keep = 0;
-      for (std::size_t k = 0; k < open.size(); ++k) {
-        const int a = open[k];
-        const SBox& ab = boxes[static_cast<std::size_t>(a)];
-        if (ab.hix < bb.lox) continue;  // closed for good: every later box starts right of it
-        open[keep++] = a;
-        if (ab.loy <= bb.hiy && bb.loy <= ab.hiy) consider(std::min(a, b), std::max(a, b));
+      const std::size_t k0 = band(bb.loy), k1 = band(bb.hiy);
+      for (std::size_t k = k0; k <= k1; ++k) {
+        std::vector<int>& list = open[k];
+        std::size_t keep = 0;
+        for (std::size_t m = 0; m < list.size(); ++m) {
+          const int a = list[m];
+          const SBox& ab = boxes[static_cast<std::size_t>(a)];
+          if (ab.hix < bb.lox) continue;  // closed for good: every later box starts right of it
+          list[keep++] = a;
+          if (ab.loy <= bb.hiy && bb.loy <= ab.hiy && band(std::max(ab.loy, bb.loy)) == k)
+            consider(std::min(a, b), std::max(a, b));
+        }
+        list.resize(keep);
+        list.push_back(b);
+        compared += static_cast<std::int64_t>(keep) + 1;
       }
-      open.resize(keep);
-      open.push_back(b);
-      compared += static_cast<std::int64_t>(keep);
       if (compared > budget || sweep_budget == 0) {
         swept = false;
         break;
