@@ -952,37 +952,43 @@ struct WaveCore {
     // (prev, next) on rings.
     std::vector<uint32_t> occ_begin;                       // per point: [begin, next begin)
     std::vector<std::pair<uint32_t, uint32_t>> occ_list;  // (prev, next) ids, flat
+    // the id of every ring vertex, in the order of the rings (outer, then holes, polygon after
+    // polygon), numbered by the sort that numbers the points (no search per vertex)
+    std::vector<uint32_t> ring_ids;
     {
-      std::vector<std::pair<uint64_t, Point>> order;
+      struct At {
+        uint64_t key;
+        Point q;
+        uint32_t at;  // index in ring_ids
+      };
+      std::vector<At> order;
       auto add_points = [&](const geom::Ring& ring) {
-        for (Point q : ring) order.push_back({morton(q), q});
+        for (Point q : ring) order.push_back({morton(q), q, static_cast<uint32_t>(order.size())});
       };
       for (const Polygon& p : polys) {
         add_points(p.outer);
         for (const geom::Ring& h : p.holes) add_points(h);
       }
-      std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
-        return a.first != b.first ? a.first < b.first : a.second < b.second;
+      std::sort(order.begin(), order.end(), [](const At& a, const At& b) {
+        return a.key != b.key ? a.key < b.key : a.q < b.q;
       });
-      order.erase(std::unique(order.begin(), order.end(),
-                              [](const auto& a, const auto& b) { return a.second == b.second; }),
-                  order.end());
-      pts.reserve(order.size());
-      point_ids.reserve(order.size());
-      for (const auto& [k, q] : order) {
-        point_ids.push_back({key_of(q), static_cast<uint32_t>(pts.size())});
-        pts.push_back(q);
+      ring_ids.resize(order.size());
+      for (std::size_t k = 0; k < order.size(); ++k) {
+        if (k == 0 || order[k].q != order[k - 1].q) {
+          point_ids.push_back({key_of(order[k].q), static_cast<uint32_t>(pts.size())});
+          pts.push_back(order[k].q);
+        }
+        ring_ids[order[k].at] = static_cast<uint32_t>(pts.size() - 1);
       }
     }
     std::sort(point_ids.begin(), point_ids.end());
-    auto id_of = [&](Point p) { return point_id(p); };
     occ_begin.assign(pts.size() + 1, 0);
-    std::vector<uint32_t> ids;
     for (int pass = 0; pass < 2; ++pass) {  // count, then fill
+      std::size_t base = 0;                  // the ring's first vertex in ring_ids
       auto add_ring = [&](const geom::Ring& ring) {
         const std::size_t n = ring.size();
-        ids.resize(n);
-        for (std::size_t i = 0; i < n; ++i) ids[i] = id_of(ring[i]);
+        const uint32_t* ids = ring_ids.data() + base;
+        base += n;
         for (std::size_t i = 0; i < n; ++i) {
           if (pass == 0)
             ++occ_begin[ids[i] + 1];
@@ -1049,12 +1055,25 @@ struct WaveCore {
     bits_made.assign(nvent, 0);
     stats.vertices = nvert;
     stats.entities = nvent;
-    // Edge id -> point ids.
-    edge_pts.resize(index->edge_count());
-    for (uint32_t e = 0; e < index->edge_count(); ++e) {
-      const geom::Segment& s = index->edge(e);
-      edge_pts[e] = {point_id(s.a), point_id(s.b)};
+    // Edge id -> point ids: the index numbers the ring edges in the rings' order, leaving out
+    // an edge of two equal points (geom/index.h).
+    edge_pts.reserve(index->edge_count());
+    {
+      std::size_t base = 0;
+      auto add_ring = [&](const geom::Ring& ring) {
+        const std::size_t n = ring.size();
+        for (std::size_t i = 0; i < n; ++i) {
+          const uint32_t a = ring_ids[base + i], b = ring_ids[base + (i + 1) % n];
+          if (a != b) edge_pts.push_back({a, b});
+        }
+        base += n;
+      };
+      for (const Polygon& p : polys) {
+        add_ring(p.outer);
+        for (const auto& h : p.holes) add_ring(h);
+      }
     }
+    if (edge_pts.size() != index->edge_count()) throw std::logic_error("WaveCore: the index's edges are not the rings'");
     std::vector<std::pair<Point, uint32_t>> items;
     items.reserve(nvert);
     for (uint32_t v = 0; v < nvert; ++v) {
