@@ -44,6 +44,26 @@ bool in_convex2(const geom::Ring& c, std::int64_t x2, std::int64_t y2) {
   return true;
 }
 
+// the open convex counter-clockwise ring contains p (doubled coordinates, as in_convex2)
+bool strictly_in_convex2(const geom::Ring& c, std::int64_t x2, std::int64_t y2) {
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    const Point u = c[i], v = c[(i + 1) % c.size()];
+    if ((2 * std::int64_t{v.x} - 2 * u.x) * (y2 - 2 * std::int64_t{u.y}) -
+            (2 * std::int64_t{v.y} - 2 * u.y) * (x2 - 2 * std::int64_t{u.x}) <=
+        0)
+      return false;
+  }
+  return true;
+}
+
+// p (doubled coordinates) lies within L-infinity 1 of the closed convex ring
+bool near_convex2(const geom::Ring& c, std::int64_t x2, std::int64_t y2) {
+  for (int dx = -2; dx <= 2; ++dx)
+    for (int dy = -2; dy <= 2; ++dy)
+      if (in_convex2(c, x2 + dx, y2 + dy)) return true;
+  return false;
+}
+
 TEST(ConvexMinusBox, CoversTheDifferenceAndStaysOutOfTheBox) {
   int failed = 0, cut = 0;
   for (int seed = 1; seed <= sanitized_share(3000, 5); ++seed) {
@@ -65,15 +85,7 @@ TEST(ConvexMinusBox, CoversTheDifferenceAndStaysOutOfTheBox) {
         for (const auto& p : parts) covered = covered || in_convex2(p, x2, y2);
         // a part's interior point in the open box: a half-lattice point strictly inside both
         bool enters = false;
-        for (const auto& p : parts) {
-          bool strictly = true;
-          for (std::size_t i = 0; i < p.size() && strictly; ++i) {
-            const Point u = p[i], v = p[(i + 1) % p.size()];
-            strictly = (2 * std::int64_t{v.x} - 2 * u.x) * (y2 - 2 * std::int64_t{u.y}) -
-                           (2 * std::int64_t{v.y} - 2 * u.y) * (x2 - 2 * std::int64_t{u.x}) > 0;
-          }
-          enters = enters || (strictly && in_box_open);
-        }
+        for (const auto& p : parts) enters = enters || (strictly_in_convex2(p, x2, y2) && in_box_open);
         // points on the box's boundary may be left out (a part of zero area there is dropped:
         // it has no interior, so it blocks nothing)
         const bool in_box_closed = x2 >= 2 * s.lo.x && x2 <= 2 * s.hi.x && y2 >= 2 * s.lo.y && y2 <= 2 * s.hi.y;
@@ -81,12 +93,8 @@ TEST(ConvexMinusBox, CoversTheDifferenceAndStaysOutOfTheBox) {
           ADD_FAILURE() << at << ": (" << x2 << "/2, " << y2 << "/2) of the polygon outside the box is not covered";
         if (enters && failed++ < 5) ADD_FAILURE() << at << ": a part enters the open box at (" << x2 << "/2, " << y2 << "/2)";
         // no more than 1 beyond c: a covered point within L-infinity 1 of c
-        if (covered && !in_convex2(c, x2, y2)) {
-          bool near = false;
-          for (int dx = -2; dx <= 2 && !near; ++dx)
-            for (int dy = -2; dy <= 2 && !near; ++dy) near = in_convex2(c, x2 + dx, y2 + dy);
-          if (!near && failed++ < 5) ADD_FAILURE() << at << ": a part reaches more than 1 beyond the polygon";
-        }
+        if (covered && !in_convex2(c, x2, y2) && !near_convex2(c, x2, y2) && failed++ < 5)
+          ADD_FAILURE() << at << ": a part reaches more than 1 beyond the polygon";
       }
   }
   EXPECT_EQ(failed, 0);
@@ -123,16 +131,6 @@ TEST(ConvexMinusPad, CoversTheDifferenceAndStaysOutOfThePad) {
     const std::vector<Ring> parts = geom::convex_minus_pad(c, pad);
     cut += parts.size() != 1 || parts[0] != c;
     const std::string at = "seed " + std::to_string(seed);
-    auto strictly_in = [](const Ring& p, std::int64_t x2, std::int64_t y2) {
-      for (std::size_t i = 0; i < p.size(); ++i) {
-        const Point u = p[i], v = p[(i + 1) % p.size()];
-        if ((2 * std::int64_t{v.x} - 2 * u.x) * (y2 - 2 * std::int64_t{u.y}) -
-                (2 * std::int64_t{v.y} - 2 * u.y) * (x2 - 2 * std::int64_t{u.x}) <=
-            0)
-          return false;
-      }
-      return true;
-    };
     for (const auto& p : parts)
       if (geom::orient(p[0], p[1], p[2]) <= 0 && failed++ < 5) ADD_FAILURE() << at << ": a part is not counter-clockwise";
     for (std::int64_t x2 = -12; x2 <= 60; ++x2)
@@ -140,17 +138,13 @@ TEST(ConvexMinusPad, CoversTheDifferenceAndStaysOutOfThePad) {
         bool covered = false, enters = false;
         for (const auto& p : parts) {
           covered = covered || in_convex2(p, x2, y2);
-          enters = enters || (strictly_in(p, x2, y2) && strictly_in(pad, x2, y2));
+          enters = enters || (strictly_in_convex2(p, x2, y2) && strictly_in_convex2(pad, x2, y2));
         }
         if (in_convex2(c, x2, y2) && !in_convex2(pad, x2, y2) && !covered && failed++ < 5)
           ADD_FAILURE() << at << ": (" << x2 << "/2, " << y2 << "/2) of the polygon outside the pad is not covered";
         if (enters && failed++ < 5) ADD_FAILURE() << at << ": a part enters the open pad at (" << x2 << "/2, " << y2 << "/2)";
-        if (covered && !in_convex2(c, x2, y2)) {
-          bool near = false;
-          for (int dx = -2; dx <= 2 && !near; ++dx)
-            for (int dy = -2; dy <= 2 && !near; ++dy) near = in_convex2(c, x2 + dx, y2 + dy);
-          if (!near && failed++ < 5) ADD_FAILURE() << at << ": a part reaches more than 1 beyond the polygon";
-        }
+        if (covered && !in_convex2(c, x2, y2) && !near_convex2(c, x2, y2) && failed++ < 5)
+          ADD_FAILURE() << at << ": a part reaches more than 1 beyond the polygon";
       }
   }
   EXPECT_EQ(failed, 0);
