@@ -1413,6 +1413,8 @@ struct WaveCore {
     eb = edge_pts[hit].second;
     return true;
   }
+  // The first edge the sheared ray from point o meets (see shoot()): for an axis direction by
+  // walking the cells of ray_grid along it, otherwise by R-tree windows that grow 4x.
   uint32_t shoot_uncached(int s, int mode, uint32_t o) {
     ++stats.ray_queries;
     const Point p = pts[o];
@@ -1432,6 +1434,80 @@ struct WaveCore {
     };
     const i64 lim_lo = vertical ? domain.lo.y - 1 : domain.lo.x - 1;
     const i64 lim_hi = vertical ? domain.hi.y + 1 : domain.hi.x + 1;
+    bool found = false;
+    i128 bn = 0, bd = 1;  // best crossing t = bn / bd
+    i64 bsn = 0, bsd = 1;  // its slope dt/dw
+    uint32_t best = kNone;
+    // Edge e, if it crosses the sheared ray no farther than t1, against the best so far.
+    auto consider = [&](uint32_t e, i64 t1) {
+      const auto [ia, ib] = edge_pts[e];
+      if (ia == o || ib == o) return;
+      const Point a = pts[ia], b = pts[ib];
+      const int sa = side(a), sb = side(b);
+      if (sa == 0 || sb == 0 || sa == sb) return;
+      // exact crossing of the line w = wc(p): t = ta + (wp - wa) (tb - ta) / (wb - wa)
+      i64 dw = wc(b) - wc(a), dt = tc(b) - tc(a);
+      i128 num = i128{tc(a)} * dw + i128{wc(p) - wc(a)} * dt;
+      i128 den = dw;
+      if (den < 0) {
+        num = -num;
+        den = -den;
+      }
+      // beyond p in direction s
+      const i128 rel = num - i128{tc(p)} * den;
+      if (rel == 0) return;  // through p: p lies on this edge
+      if ((rel > 0 ? 1 : -1) != s) return;
+      if (s > 0 ? num > i128{t1} * den : num < i128{t1} * den) return;
+      // slope dt/dw with dw > 0
+      i64 sn = dt, sd = dw;
+      if (sd < 0) {
+        sn = -sn;
+        sd = -sd;
+      }
+      bool better;
+      if (!found) {
+        better = true;
+      } else {
+        const i128 c = num * bd - bn * den;  // sign of (this t - best t)
+        if (c != 0) {
+          better = s > 0 ? c < 0 : c > 0;
+        } else {
+          better = i128{sn} * bsd > i128{bsn} * sd;  // larger slope is met first
+        }
+      }
+      if (better) {
+        found = true;
+        bn = num;
+        bd = den;
+        bsn = sn;
+        bsd = sd;
+        best = e;
+      }
+    };
+    auto within = [&](i64 t1) { return s > 0 ? bn <= i128{t1} * bd : bn >= i128{t1} * bd; };
+    if (md.y == 0 || (md.x == 0 && md.y == 1)) {
+      // An axis ray: the cells of its column (row) from p's on. Every edge that meets the ray's
+      // segment from p to the far side of a cell lies in the cells passed so far, so once the
+      // best crossing lies no farther than that side it is the first.
+      if (!ray_grid.built) build_ray_grid();
+      const RayGrid& g = ray_grid;
+      const i64 lim = s > 0 ? lim_hi : lim_lo;
+      // f: the coordinate the ray keeps (its column or row), t: the one it walks along
+      const i64 f = vertical ? p.x : p.y, f0 = vertical ? g.x0 : g.y0, nf = vertical ? g.nx : g.ny;
+      const i64 t = vertical ? p.y : p.x, t0 = vertical ? g.y0 : g.x0, nt = vertical ? g.ny : g.nx;
+      if (f < f0 || f >= f0 + g.cs * nf) return kNone;  // (no edge out there)
+      const i64 cf = (f - f0) / g.cs;
+      for (i64 ct = t < t0 ? -1 : std::min<i64>((t - t0) / g.cs, nt); s > 0 ? ct < nt : ct >= 0; ct += s) {
+        if (ct >= 0 && ct < nt) {
+          const std::size_t c = static_cast<std::size_t>(vertical ? ct * g.nx + cf : cf * g.nx + ct);
+          for (uint32_t k = g.start[c]; k < g.start[c + 1]; ++k) consider(g.items[k], lim);
+        }
+        // the cell's far side: every crossing up to it has been seen
+        const i64 far = s > 0 ? t0 + (ct + 1) * g.cs - 1 : t0 + ct * g.cs;
+        if (found && within(far)) return best;
+      }
+      return best;  // every cell passed: the best of all, or none
+    }
     // First window: about two typical gaps between edges (extent / sqrt(edges)); it grows 4x.
     i64 len = ray_window;
     while (true) {
@@ -1454,67 +1530,87 @@ struct WaveCore {
         box = Box{{static_cast<geom::Coord>(std::min(t0, t1)), p.y},
                   {static_cast<geom::Coord>(std::max(t0, t1)), p.y}};
       // Edges crossing the sheared line near the exact line x = p.x touch the exact segment
-      // (the sheared line is within an infinitesimal of it).
-      bool found = false;
-      i128 bn = 0, bd = 1;  // best crossing t = bn / bd
-      i64 bsn = 0, bsd = 1;  // its slope dt/dw
-      uint32_t best = kNone;
+      // (the sheared line is within an infinitesimal of it). Within the window: a sloped mode's
+      // box is the box around the ray's segment, so an edge may meet it and cross the ray
+      // beyond t1, past a nearer edge that misses the box; it is taken only by a wider window
+      // (consider() leaves it out). (For the axis modes the box is the segment itself and every
+      // edge meeting it crosses within [t0, t1].)
+      found = false;
+      best = kNone;
       index->edges_in_box(box, box_edges);
-      for (uint32_t e : box_edges) {
-        const auto [ia, ib] = edge_pts[e];
-        if (ia == o || ib == o) continue;
-        const Point a = pts[ia], b = pts[ib];
-        const int sa = side(a), sb = side(b);
-        if (sa == 0 || sb == 0 || sa == sb) continue;
-        // exact crossing of the line w = wc(p): t = ta + (wp - wa) (tb - ta) / (wb - wa)
-        i64 dw = wc(b) - wc(a), dt = tc(b) - tc(a);
-        i128 num = i128{tc(a)} * dw + i128{wc(p) - wc(a)} * dt;
-        i128 den = dw;
-        if (den < 0) {
-          num = -num;
-          den = -den;
-        }
-        // beyond p in direction s
-        const i128 rel = num - i128{tc(p)} * den;
-        if (rel == 0) continue;  // through p: p lies on this edge
-        if ((rel > 0 ? 1 : -1) != s) continue;
-        // Within the window: a sloped mode's box is the box around the ray's segment, so
-        // an edge may meet it and cross the ray beyond t1, past a nearer edge that misses the
-        // box; it is taken only by a wider window. (For the axis modes the box is the segment
-        // itself and every edge meeting it crosses within [t0, t1].)
-        if (s > 0 ? num > i128{t1} * den : num < i128{t1} * den) continue;
-        // slope dt/dw with dw > 0
-        i64 sn = dt, sd = dw;
-        if (sd < 0) {
-          sn = -sn;
-          sd = -sd;
-        }
-        bool better;
-        if (!found) {
-          better = true;
-        } else {
-          const i128 c = num * bd - bn * den;  // sign of (this t - best t)
-          if (c != 0) {
-            better = s > 0 ? c < 0 : c > 0;
-          } else {
-            better = i128{sn} * bsd > i128{bsn} * sd;  // larger slope is met first
-          }
-        }
-        if (better) {
-          found = true;
-          bn = num;
-          bd = den;
-          bsn = sn;
-          bsd = sd;
-          best = e;
-        }
-      }
+      for (uint32_t e : box_edges) consider(e, t1);
       // The crossing lies inside the window [t0, t1] (the edge met the box), and every edge
       // crossing the ray nearer meets the window too.
       if (found) return best;
       if (t1 == lim_hi || t1 == lim_lo) return kNone;
       len *= 4;
     }
+  }
+
+  // The edges by the cells of a grid over their points (about one edge per cell, cells square,
+  // at most 2^22 of them), each edge in every cell its segment passes (a superset, exactly
+  // computed per column): the axis track rays walk it (shoot_uncached()). Made at the first
+  // such ray.
+  struct RayGrid {
+    bool built = false;
+    i64 x0 = 0, y0 = 0, cs = 1, nx = 0, ny = 0;
+    std::vector<uint32_t> start, items;  // per cell (row-major): items[start[c], start[c + 1])
+  } ray_grid;
+  void build_ray_grid() {
+    RayGrid& g = ray_grid;
+    g.built = true;
+    const std::size_t m = edge_pts.size();
+    if (m == 0) {
+      g.nx = g.ny = 0;
+      g.start.assign(1, 0);
+      return;
+    }
+    i64 xlo = pts[edge_pts[0].first].x, xhi = xlo, ylo = pts[edge_pts[0].first].y, yhi = ylo;
+    for (const auto& [a, b] : edge_pts)
+      for (const uint32_t v : {a, b}) {
+        xlo = std::min<i64>(xlo, pts[v].x), xhi = std::max<i64>(xhi, pts[v].x);
+        ylo = std::min<i64>(ylo, pts[v].y), yhi = std::max<i64>(yhi, pts[v].y);
+      }
+    const double area = static_cast<double>(xhi - xlo + 1) * static_cast<double>(yhi - ylo + 1);
+    g.cs = std::max<i64>(1, static_cast<i64>(std::ceil(std::sqrt(area / static_cast<double>(m)))));
+    while (((xhi - xlo) / g.cs + 1) * ((yhi - ylo) / g.cs + 1) > (i64{1} << 22)) g.cs *= 2;
+    g.x0 = xlo;
+    g.y0 = ylo;
+    g.nx = (xhi - xlo) / g.cs + 1;
+    g.ny = (yhi - ylo) / g.cs + 1;
+    // cells of edge (a, b): per column its x-range meets, the rows between the segment's lowest
+    // and highest y over that column (exact: floor and ceiling of the rational end values)
+    auto cells = [&](Point a, Point b, auto&& put) {
+      if (a.x > b.x) std::swap(a, b);
+      const i64 c0 = (i64{a.x} - g.x0) / g.cs, c1 = (i64{b.x} - g.x0) / g.cs;
+      const i64 dx = i64{b.x} - a.x, dy = i64{b.y} - a.y;
+      auto floor_div = [](i128 n, i128 d) { return static_cast<i64>(n >= 0 ? n / d : -((-n + d - 1) / d)); };
+      for (i64 c = c0; c <= c1; ++c) {
+        i64 ya, yb;
+        if (dx == 0) {
+          ya = std::min(a.y, b.y);
+          yb = std::max(a.y, b.y);
+        } else {
+          // (the column is the real interval [x0 + c cs, x0 + (c + 1) cs): a horizontal ray's
+          // crossing may lie between its last integer and the next column's first)
+          const i64 xa = std::max<i64>(a.x, g.x0 + c * g.cs), xb = std::min<i64>(b.x, g.x0 + (c + 1) * g.cs);
+          // y(x) = a.y + dy (x - a.x) / dx at xa and xb, outwards
+          const i128 na = i128{a.y} * dx + i128{dy} * (xa - a.x), nb = i128{a.y} * dx + i128{dy} * (xb - a.x);
+          const i128 lo = std::min(na, nb), hi = std::max(na, nb);
+          ya = floor_div(lo, dx);
+          yb = -floor_div(-hi, dx);
+        }
+        const i64 r0 = std::max<i64>(0, (ya - g.y0) / g.cs), r1 = std::min<i64>(g.ny - 1, (yb - g.y0) / g.cs);
+        for (i64 r = r0; r <= r1; ++r) put(static_cast<std::size_t>(r * g.nx + c));
+      }
+    };
+    g.start.assign(static_cast<std::size_t>(g.nx * g.ny) + 1, 0);
+    for (const auto& [a, b] : edge_pts) cells(pts[a], pts[b], [&](std::size_t c) { ++g.start[c + 1]; });
+    for (std::size_t c = 0; c + 1 < g.start.size(); ++c) g.start[c + 1] += g.start[c];
+    g.items.resize(g.start.back());
+    std::vector<uint32_t> fill(g.start.begin(), g.start.end() - 1);
+    for (uint32_t e = 0; e < m; ++e)
+      cells(pts[edge_pts[e].first], pts[edge_pts[e].second], [&](std::size_t c) { g.items[fill[c]++] = e; });
   }
 
   uint32_t far_end(int d, uint32_t a, uint32_t b) const {
