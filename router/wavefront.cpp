@@ -2068,7 +2068,8 @@ std::size_t memory_of(const Core& m) {
                   m.ent_begin.capacity() * sizeof(uint32_t) +
                   m.ent_bits.capacity() * sizeof(m.ent_bits[0]) +
                   m.edge_pts.capacity() * sizeof(m.edge_pts[0]) + m.vertex_tree.memory_bytes() +
-                  m.ray_cache.capacity() * sizeof(uint32_t) +
+                  m.ray_cache.capacity() * sizeof(uint32_t) + m.bits_made.capacity() +
+                  (m.ray_grid.start.capacity() + m.ray_grid.items.capacity()) * sizeof(uint32_t) +
                   m.point_ids.capacity() * sizeof(m.point_ids[0]);
   for (const Polygon& p : m.polys) {
     b += p.outer.capacity() * sizeof(Point);
