@@ -1900,6 +1900,7 @@ struct WaveCore {
     pts.resize(nvert);
     ents.resize(nvent);  // run-time entities go; vertex entities of the last run are reset
     ent_bits.resize(nvent);
+    bits_made.resize(nvent);
     for (const uint32_t e : touched) {
       ents[e].labelled = false;
       ents[e].d = Lv{};
