@@ -993,7 +993,7 @@ TEST(NetRouter, FramedWindowsGiveTheSameOutcomes) {
   }
   std::printf("%d nets routed in framed windows\n", routed);
   EXPECT_EQ(failed, 0);
-  EXPECT_GT(routed, sanitized_share(300, 10));
+  EXPECT_GT(routed, kSanitized ? 15 : 1000);  // 1,774 here (the planted layout most); 25 in the sanitizer tree
 }
 
 // A stop asked from any thread ends the run with NetRouterStopped.
