@@ -887,7 +887,8 @@ struct WaveCore {
   KdTree<M> vertex_tree;
   // Track-ray answers per vertex point and world direction (M::kRaySlots per point: two per
   // mode of sweep_rays(), the mode's direction and its opposite): the edge id hit, or kNone;
-  // kUnknown until shot. A vertex's rays are shot one by one on the R-tree (shoot_uncached()),
+  // kUnknown until shot. A vertex's rays are shot one by one (shoot_uncached(): vertical and
+  // horizontal rays walk ray_grid's cells, diagonal and norm rays query the R-tree),
   // as a query point's are, until a mode has shot nvert of them (half its slots); then
   // sweep_rays() answers the rest of that mode at once. A run that labels few of the vertices,
   // as a net's window does (about a fifth), seldom pays for the sweep. (Measured on 3,000
@@ -1178,9 +1179,10 @@ struct WaveCore {
     for (uint32_t v = 0; v < nvert; ++v) order[v] = v;
     std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return lex_less(mp(a), mp(b)); });
     const std::size_t up = 2 * static_cast<std::size_t>(mode), down = up + 1;  // slots (shoot())
-    // (a ray already shot on the R-tree must get the same answer: both are exact)
+    // (a ray already shot one by one, on the grid or the R-tree, must get the same answer:
+    // all are exact)
     auto put = [&](uint32_t& slot, uint32_t hit) {
-      if (slot != kUnknown && slot != hit) throw std::logic_error("WaveCore: a track ray's sweep and R-tree answers differ");
+      if (slot != kUnknown && slot != hit) throw std::logic_error("WaveCore: a track ray's sweep and single-ray answers differ");
       slot = hit;
     };
     for (const uint32_t q : order) {

@@ -94,9 +94,10 @@ struct WavefrontStats {
   std::int64_t labelled = 0;      // entities reached
   std::int64_t drag_queries = 0;  // segment-dragging (k-d tree) queries
   std::int64_t drag_nodes = 0;    // k-d tree nodes those queries visited
-  std::int64_t ray_queries = 0;   // track rays shot on the R-tree: from query points, and from
-                                  // obstacle vertices until an orientation has shot as many as
-                                  // there are vertices (a plane sweep then answers the rest)
+  std::int64_t ray_queries = 0;   // track rays shot one by one (ray grid or R-tree): from query
+                                  // points, and from obstacle vertices until an orientation has
+                                  // shot as many as there are vertices (a plane sweep then
+                                  // answers the rest)
 };
 
 // A free wedge of an obstacle vertex p: it runs counter-clockwise from the direction of ring
