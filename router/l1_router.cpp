@@ -138,7 +138,7 @@ typename BasicRouter<W>::Steiner BasicRouter<W>::steiner(std::span<const Point> 
   std::stable_sort(ok.begin(), ok.end(), [](const Steiner& a, const Steiner& b) { return a.length < b.length; });
   if (improve_tree)
     for (std::size_t i = 0; i < ok.size() && i < kImproved; ++i)
-      if (ok[i].length > 0) ok[i].improved = improve(pins, ok[i]);
+      if (ok[i].length > Len{}) ok[i].improved = improve(pins, ok[i]);
   std::size_t best = 0;
   for (std::size_t i = 1; i < ok.size(); ++i)
     if (ok[i].length < ok[best].length) best = i;
@@ -147,8 +147,11 @@ typename BasicRouter<W>::Steiner BasicRouter<W>::steiner(std::span<const Point> 
 
 namespace {
 
-// A tree's metal as a graph: every axis-parallel segment split at every segment end, pin and
-// crossing lying on it; a piece two wires share is one edge.
+// A tree's metal as a graph: every segment (axis-parallel; octilinear: or diagonal) split at
+// every segment end, pin and crossing lying on it; a piece two wires share is one edge. A
+// diagonal crossing a diagonal halfway between lattice points is no node (the graph then only
+// understates how the metal is joined: a path it takes for needed may be re-joined, never one
+// that is needed dropped).
 struct MetalGraph {
   std::vector<Point> nodes;                                       // ascending
   std::vector<std::pair<std::size_t, std::size_t>> edges;         // node indices
@@ -159,23 +162,36 @@ struct MetalGraph {
   }
 };
 
-// nullopt when a segment is neither horizontal nor vertical (not a rectilinear tree).
-std::optional<MetalGraph> metal_graph(const std::vector<std::vector<Point>>& wires, std::span<const Point> pins) {
+// nullopt when a segment is neither horizontal nor vertical (not a rectilinear tree), or with
+// `octilinear` not diagonal either.
+std::optional<MetalGraph> metal_graph(const std::vector<std::vector<Point>>& wires, std::span<const Point> pins,
+                                      bool octilinear = false) {
   std::vector<geom::Segment> segs;
   for (const auto& w : wires)
     for (std::size_t i = 1; i < w.size(); ++i) {
       if (w[i] == w[i - 1]) continue;
-      if (w[i].x != w[i - 1].x && w[i].y != w[i - 1].y) return std::nullopt;
+      const i64 dx = i64{w[i].x} - w[i - 1].x, dy = i64{w[i].y} - w[i - 1].y;
+      if (dx != 0 && dy != 0 && (!octilinear || (dx != dy && dx != -dy))) return std::nullopt;
       segs.push_back({std::min(w[i - 1], w[i]), std::max(w[i - 1], w[i])});
     }
   MetalGraph g;
   for (const geom::Segment& s : segs) g.nodes.insert(g.nodes.end(), {s.a, s.b});
   g.nodes.insert(g.nodes.end(), pins.begin(), pins.end());
-  for (const geom::Segment& h : segs)  // crossings of a horizontal and a vertical segment
-    if (h.a.y == h.b.y)
-      for (const geom::Segment& v : segs)
-        if (v.a.x == v.b.x && h.a.x <= v.a.x && v.a.x <= h.b.x && v.a.y <= h.a.y && h.a.y <= v.b.y)
-          g.nodes.push_back({v.a.x, h.a.y});
+  if (octilinear) {  // proper crossings at lattice points (ends on a segment are nodes already)
+    for (std::size_t i = 0; i < segs.size(); ++i)
+      for (std::size_t j = i + 1; j < segs.size(); ++j)
+        if (geom::intersect(segs[i], segs[j]) == geom::SegmentIntersection::Proper) {
+          const geom::RationalPoint r = geom::line_intersection(segs[i], segs[j]);
+          if (r.x_num % r.den == 0 && r.y_num % r.den == 0)
+            g.nodes.push_back({static_cast<geom::Coord>(r.x_num / r.den), static_cast<geom::Coord>(r.y_num / r.den)});
+        }
+  } else {
+    for (const geom::Segment& h : segs)  // crossings of a horizontal and a vertical segment
+      if (h.a.y == h.b.y)
+        for (const geom::Segment& v : segs)
+          if (v.a.x == v.b.x && h.a.x <= v.a.x && v.a.x <= h.b.x && v.a.y <= h.a.y && h.a.y <= v.b.y)
+            g.nodes.push_back({v.a.x, h.a.y});
+  }
   std::sort(g.nodes.begin(), g.nodes.end());
   g.nodes.erase(std::unique(g.nodes.begin(), g.nodes.end()), g.nodes.end());
   std::vector<std::pair<std::size_t, std::size_t>> pieces;
@@ -185,7 +201,7 @@ std::optional<MetalGraph> metal_graph(const std::vector<std::vector<Point>>& wir
     const bool horizontal = s.a.y == s.b.y;
     for (std::size_t i = g.at(s.a); i < g.nodes.size() && g.nodes[i] <= s.b; ++i) {
       const Point p = g.nodes[i];
-      if (horizontal ? p.y == s.a.y : p.x == s.a.x) on.push_back(i);
+      if (octilinear ? geom::orient(s.a, s.b, p) == 0 : horizontal ? p.y == s.a.y : p.x == s.a.x) on.push_back(i);
     }
     for (std::size_t k = 1; k < on.size(); ++k) pieces.push_back({on[k - 1], on[k]});
   }
@@ -203,20 +219,24 @@ std::optional<MetalGraph> metal_graph(const std::vector<std::vector<Point>>& wir
   return g;
 }
 
-// The chains between key nodes: node and edge sequences, and their L1 lengths.
+// The chains between key nodes: node and edge sequences, and their lengths (Len: std::int64_t,
+// L1; geom::Root2, octilinear).
+template <class Len>
 struct KeyPath {
   std::vector<std::size_t> nodes, edges;
-  std::int64_t length = 0;
+  Len length{};
 };
-std::vector<KeyPath> key_paths(const MetalGraph& g) {
-  std::vector<KeyPath> out;
+template <class Len>
+std::vector<KeyPath<Len>> key_paths(const MetalGraph& g) {
+  std::vector<KeyPath<Len>> out;
   std::vector<char> used(g.edges.size(), 0);
   auto len = [&](std::size_t e) {
     const Point a = g.nodes[g.edges[e].first], b = g.nodes[g.edges[e].second];
-    return std::abs(std::int64_t{a.x} - b.x) + std::abs(std::int64_t{a.y} - b.y);
+    if constexpr (std::is_same_v<Len, geom::Root2>) return geom::octilinear_length(i64{b.x} - a.x, i64{b.y} - a.y);
+    else return std::abs(std::int64_t{a.x} - b.x) + std::abs(std::int64_t{a.y} - b.y);
   };
   auto walk = [&](std::size_t u, std::size_t e0, std::size_t v0) {
-    KeyPath p;
+    KeyPath<Len> p;
     p.nodes = {u};
     std::size_t e = e0, v = v0;
     while (true) {
@@ -241,13 +261,15 @@ std::vector<KeyPath> key_paths(const MetalGraph& g) {
 }
 
 // The polyline of a path's nodes without the points where it goes straight on.
-std::vector<Point> path_points(const MetalGraph& g, const KeyPath& p) {
+template <class Len>
+std::vector<Point> path_points(const MetalGraph& g, const KeyPath<Len>& p) {
   std::vector<Point> out;
   for (const std::size_t n : p.nodes) {
     const Point q = g.nodes[n];
     if (out.size() >= 2) {
       const Point a = out[out.size() - 2], b = out.back();
-      if ((a.x == b.x && b.x == q.x) || (a.y == b.y && b.y == q.y)) {
+      // (collinear is straight on: consecutive pieces of a path do not overlap)
+      if ((a.x == b.x && b.x == q.x) || (a.y == b.y && b.y == q.y) || geom::orient(a, b, q) == 0) {
         out.back() = q;
         continue;
       }
@@ -261,9 +283,7 @@ std::vector<Point> path_points(const MetalGraph& g, const KeyPath& p) {
 
 template <class W>
 std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t, std::span<const geom::Polygon> pads) {
-  if constexpr (kOctilinear) {
-    return 0;
-  } else {
+  {
     std::size_t changes = 0;
     // Paths (by their points) already tried without a gain: not tried again after changes
     // elsewhere. A change elsewhere can open a gain for them, so this trades a little length for
@@ -275,8 +295,8 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t, std
     std::sort(sorted_pins.begin(), sorted_pins.end());
     while (true) {
       bool changed = false;
-      std::optional<MetalGraph> graph = metal_graph(t.wires, pins);
-      if (!graph) return changes;  // not rectilinear: left as it is
+      std::optional<MetalGraph> graph = metal_graph(t.wires, pins, kOctilinear);
+      if (!graph) return changes;  // not rectilinear (octilinear): left as it is
       // Pads (shape pins) are metal: the nodes lying on one are key (a path ends where it meets
       // a pad) and joined through it.
       std::vector<std::vector<std::size_t>> members(pads.size()), pad_of(graph->nodes.size());
@@ -288,13 +308,13 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t, std
             graph->key[n] = 1;
           }
       const MetalGraph& g = *graph;
-      const std::vector<KeyPath> paths = key_paths(g);
+      const std::vector<KeyPath<Len>> paths = key_paths<Len>(g);
       std::vector<std::size_t> longest_first(paths.size());
       for (std::size_t i = 0; i < paths.size(); ++i) longest_first[i] = i;
       std::stable_sort(longest_first.begin(), longest_first.end(),
                        [&](std::size_t a, std::size_t b) { return paths[a].length > paths[b].length; });
       for (const std::size_t pi : longest_first) {
-        const KeyPath& p = paths[pi];
+        const KeyPath<Len>& p = paths[pi];
         std::vector<Point> shape;
         for (const std::size_t n : p.nodes) shape.push_back(g.nodes[n]);
         if (shape.back() < shape.front()) std::reverse(shape.begin(), shape.end());
@@ -362,11 +382,33 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t, std
         }
         std::sort(axs.begin(), axs.end());
         std::sort(ays.begin(), ays.end());
+        // octilinear: the projections along the four orientations (ProjectionLines, wavefront.h)
+        std::optional<ProjectionLines> first_lines;
+        if constexpr (kOctilinear) {
+          first_lines.emplace(true);
+          for (std::size_t n = 0; n < g.nodes.size(); ++n)
+            if (side[n]) first_lines->add(g.nodes[n]);
+          first_lines->done();
+          if (!obstacle_lines_) {
+            obstacle_lines_.emplace(true);
+            for (const geom::Polygon& o : wavefront_.frame_obstacles()) {
+              for (const Point v : o.outer) obstacle_lines_->add(v);
+              for (const geom::Ring& h : o.holes)
+                for (const Point v : h) obstacle_lines_->add(v);
+            }
+            obstacle_lines_->done();
+          }
+        }
         for (std::size_t e = 0; e < g.edges.size(); ++e) {
           if (gone[e]) continue;
           const Point a = g.nodes[g.edges[e].first], b = g.nodes[g.edges[e].second];  // a < b
           if (side[g.edges[e].first]) {
             segments.push_back({a, b});
+            continue;
+          }
+          if constexpr (kOctilinear) {
+            obstacle_lines_->inside(a, b, targets);
+            first_lines->inside(a, b, targets);
             continue;
           }
           const bool horizontal = a.y == b.y;
@@ -414,12 +456,13 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t, std
         ++changes;
         continue;
       }
-      if (!pads.empty()) {  // the moves take point pins only
+      if (!pads.empty() || kOctilinear) {  // the moves take point pins and L1 paths only
         std::vector<std::vector<Point>> wires;
-        for (const KeyPath& p : paths) wires.push_back(path_points(g, p));
+        for (const KeyPath<Len>& p : paths) wires.push_back(path_points(g, p));
         if (!wires.empty()) t.wires = std::move(wires);
         break;
       }
+      if constexpr (!kOctilinear) {
       // No single path gains: move a Steiner point. A key node u of degree three or more (or a
       // pin of degree two or more), with the key paths at it taken out, leaves one part per path
       // (and the pin, a part of its own); the point s (in free space) with the least sum of the
@@ -441,7 +484,7 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t, std
         std::vector<std::size_t> far;
         std::int64_t old_length = 0;
         for (const std::size_t pi : at_u) {
-          const KeyPath& kp = paths[pi];
+          const KeyPath<Len>& kp = paths[pi];
           for (const std::size_t e : kp.edges) gone[e] = 1;
           far.push_back(kp.nodes.front() == u ? kp.nodes.back() : kp.nodes.front());
           old_length += kp.length;
@@ -578,14 +621,18 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t, std
       }
       // nothing improves: written as the key paths, one wire each
       std::vector<std::vector<Point>> wires;
-      for (const KeyPath& p : paths) wires.push_back(path_points(g, p));
+      for (const KeyPath<Len>& p : paths) wires.push_back(path_points(g, p));
       if (!wires.empty()) t.wires = std::move(wires);
       break;
+      }
     }
-    t.length = 0;
+    t.length = Len{};
     for (const auto& w : t.wires)
-      for (std::size_t i = 1; i < w.size(); ++i)
-        t.length += std::abs(std::int64_t{w[i].x} - w[i - 1].x) + std::abs(std::int64_t{w[i].y} - w[i - 1].y);
+      for (std::size_t i = 1; i < w.size(); ++i) {
+        const i64 dx = i64{w[i].x} - w[i - 1].x, dy = i64{w[i].y} - w[i - 1].y;
+        if constexpr (kOctilinear) t.length += geom::octilinear_length(dx, dy);
+        else t.length += std::abs(dx) + std::abs(dy);
+      }
     return changes;
   }
 }
@@ -638,7 +685,7 @@ typename BasicRouter<W>::Steiner BasicRouter<W>::steiner(std::span<const geom::P
       else pads.push_back(p);
     }
     for (std::size_t i = 0; i < ok.size() && i < kImproved; ++i)
-      if (ok[i].length > 0) ok[i].improved = improve(points, ok[i], pads);
+      if (ok[i].length > Len{}) ok[i].improved = improve(points, ok[i], pads);
   }
   std::size_t best = 0;
   for (std::size_t i = 1; i < ok.size(); ++i)
@@ -649,9 +696,7 @@ typename BasicRouter<W>::Steiner BasicRouter<W>::steiner(std::span<const geom::P
 template <class W>
 typename BasicRouter<W>::Steiner BasicRouter<W>::steiner_from_first(std::span<const geom::Polygon> pins) {
   Steiner t;
-  if constexpr (kOctilinear) {
-    throw std::logic_error("BasicRouter::steiner: rectilinear (L1) wires only");
-  } else {
+  {
     if (pins.empty()) {
       t.status = WireStatus::Ok;
       return t;
@@ -731,8 +776,11 @@ typename BasicRouter<W>::Steiner BasicRouter<W>::steiner_from_first(std::span<co
       t.wires.push_back({c.front()});
     }
     for (const auto& w : t.wires)
-      for (std::size_t i = 1; i < w.size(); ++i)
-        t.length += std::abs(std::int64_t{w[i].x} - w[i - 1].x) + std::abs(std::int64_t{w[i].y} - w[i - 1].y);
+      for (std::size_t i = 1; i < w.size(); ++i) {
+        const i64 dx = i64{w[i].x} - w[i - 1].x, dy = i64{w[i].y} - w[i - 1].y;
+        if constexpr (kOctilinear) t.length += geom::octilinear_length(dx, dy);
+        else t.length += std::abs(dx) + std::abs(dy);
+      }
     t.status = WireStatus::Ok;
     return t;
   }

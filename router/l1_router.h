@@ -97,7 +97,7 @@ class BasicRouter {
   };
   Tree tree(const geom::Polygon& source, std::span<const geom::Polygon> sinks);
 
-  // Point pins joined by a rectilinear STEINER TREE among the obstacles (issue #7, L1 only):
+  // Point pins joined by a rectilinear (octilinear) STEINER TREE among the obstacles (issue #7):
   // short total length instead of shortest paths from a source. How: the tree starts as the
   // first pin; then, repeatedly, one wavefront run from the whole tree so far (its points, and
   // its wires as segment sources: a new wire may leave the tree anywhere along it) that stops
@@ -128,12 +128,20 @@ class BasicRouter {
   // result is never longer and still joins every pin. Not minimal in general: tests/oracle's
   // Dreyfus-Wagner reference measures the excess (router/steiner_test.cpp). starts x (k - 1)
   // runs for k pins, plus one run per path tried and up to one per part and move tried.
+  // OCTILINEAR (OctRouter): the tree is grown the same way, each step an exact shortest
+  // octilinear path from the tree so far (OctWavefront's segment sources: the tree's wires,
+  // diagonal ones included, leave it at any of their lattice points) staircased with integer
+  // vertices; the improvement pass is not run (its metal graph and Steiner point moves are
+  // rectilinear), so the tree is the best of the starts' Prim trees. tests/router/steiner_test.cpp
+  // measures its excess over the exact minimum among trees with integer vertices
+  // (tests/oracle/oct_steiner_oracle.h).
   struct Steiner {
     // Ok; SourceNotFree (the first pin); TargetNotFree / Unreachable / NoIntegerStaircase for
     // pin `failed` (an index into pins).
     WireStatus status = WireStatus::Unreachable;
     std::optional<std::size_t> failed;
-    std::int64_t length = 0;                      // Ok: the tree's total L1 length
+    Len length{};                                 // Ok: the tree's total length (L1, or
+                                                  // octilinear: a + b sqrt2)
     std::vector<std::vector<geom::Point>> wires;  // Ok: as Tree::wires
     std::vector<std::size_t> order;               // the pins in the order they were joined
     std::size_t improved = 0;                     // paths the improvement pass replaced or dropped,
@@ -153,7 +161,11 @@ class BasicRouter {
   // or obstacle vertex); from each of the first `starts` pins, the shortest kept; then the
   // improvement pass without its Steiner point moves (improve(): the pads as metal), on the
   // kImproved shortest starts' trees; tests/router/steiner_test.cpp measures the excess over the
-  // exact minimum with rectangular pads. `failed` indexes `pins`.
+  // exact minimum with rectangular pads. `failed` indexes `pins`. Octilinear: shapes with
+  // horizontal and vertical edges (supports_pin()), the same candidates (for a fixed r the d8
+  // length of s - r along such an edge is least at r's projection, pin_shapes.h; as r runs along
+  // a straight tree segment, at one of its ends or where the segment reaches the edge's line, a
+  // tree vertex or a point the shape touches), no improvement pass.
   Steiner steiner(std::span<const geom::Polygon> pins, std::size_t starts = 8, bool improve = true);
 
   // The points of pin `pin` a shortest wire from it may be taken to start at (and why those:
@@ -200,6 +212,9 @@ class BasicRouter {
   StaircaseBuilder staircase_;
   PinShapes pins_;
   StaircaseStats staircase_stats_;
+  // Octilinear improve(): the obstacle vertices (the frame's too) projected onto the other part's
+  // segments, built at the first use.
+  std::optional<ProjectionLines> obstacle_lines_;
 };
 
 using L1Router = BasicRouter<L1Wavefront>;

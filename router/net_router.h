@@ -384,11 +384,11 @@ class NetRouter {
   void run(const NetRouteFn& route);
 
   // A route function for L1 rectilinear wires (router/l1_router.h): two pins by shortest(), more
-  // by tree() from the first pin, or by steiner() when `steiner` and every pin is a point.
+  // by tree() from the first pin, or by steiner() when `steiner` (point and shape pins).
   static NetRouteFn l1_router(bool steiner);
-  // The same for octilinear wires (router/oct_router.h; shortest-path trees): run it with
+  // The same for octilinear wires (router/oct_router.h): run it with
   // NetRouterOptions::octilinear.
-  static NetRouteFn oct_router();
+  static NetRouteFn oct_router(bool steiner = false);
   // The route function is l1_router's or oct_router's, whose wavefronts take the windows'
   // obstacles with the domain's frame merged (NetSpace::obstacles(..., framed)): one union per
   // window instead of two.

@@ -1992,19 +1992,22 @@ struct WaveCore {
   }
 };
 
-}  // namespace
-
-struct L1Wavefront::Impl : WaveCore<L1Metric> {
-  using WaveCore::WaveCore;
-  // Per point source of the run: the source index the caller sees (run with segment sources);
-  // empty: the identity.
+// Per point source of the run: the source index the caller sees (run with segment sources);
+// empty: the identity.
+struct SourceOrigin {
   std::vector<std::size_t> source_origin;
   std::optional<std::size_t> origin(uint32_t s) const {
     if (s == kNone) return std::nullopt;
     return source_origin.empty() ? std::size_t{s} : source_origin[s];
   }
 };
-struct OctWavefront::Impl : WaveCore<OctMetric> {
+
+}  // namespace
+
+struct L1Wavefront::Impl : WaveCore<L1Metric>, SourceOrigin {
+  using WaveCore::WaveCore;
+};
+struct OctWavefront::Impl : WaveCore<OctMetric>, SourceOrigin {
   using WaveCore::WaveCore;
 };
 
@@ -2100,51 +2103,89 @@ void L1Wavefront::run(std::span<const Point> sources, std::span<const Point> tar
   impl_->run(sources, targets, stop);
 }
 
-void L1Wavefront::run(std::span<const Point> sources, std::span<const geom::Segment> segment_sources,
-                      std::span<const Point> targets, Stop stop) {
-  Impl& c = *impl_;
-  // Distinct x and y of the ring vertices (frame included) and the targets: where projections
-  // onto a segment can fall.
-  std::vector<i64> xs, ys;
-  xs.reserve(c.nvert + targets.size());
-  ys.reserve(c.nvert + targets.size());
-  for (uint32_t v = 0; v < c.nvert; ++v) {
-    xs.push_back(c.pts[v].x);
-    ys.push_back(c.pts[v].y);
+void ProjectionLines::add(Point p) {
+  xs_.push_back(p.x);
+  ys_.push_back(p.y);
+  if (octilinear_) {
+    ds_.push_back(i64{p.y} - p.x);
+    ss_.push_back(i64{p.x} + p.y);
   }
-  for (const Point t : targets) {
-    xs.push_back(t.x);
-    ys.push_back(t.y);
-  }
-  for (auto* v : {&xs, &ys}) {
+}
+
+void ProjectionLines::done() {
+  for (auto* v : {&xs_, &ys_, &ds_, &ss_}) {
     std::sort(v->begin(), v->end());
     v->erase(std::unique(v->begin(), v->end()), v->end());
   }
+}
+
+void ProjectionLines::inside(Point a, Point b, std::vector<Point>& cand) const {
   auto strictly_between = [](const std::vector<i64>& v, i64 lo, i64 hi) {
     if (hi <= lo + 1) return std::span<const i64>();  // (a single point has no inside)
     return std::span<const i64>(std::upper_bound(v.begin(), v.end(), lo), std::lower_bound(v.begin(), v.end(), hi));
   };
+  if (b < a) std::swap(a, b);  // a before b: by x, then y
+  auto at = [](i64 x, i64 y) { return Point{static_cast<geom::Coord>(x), static_cast<geom::Coord>(y)}; };
+  if (a.x == b.x) {
+    // x = a.x: y level with a point, or on a diagonal through one (y - x = d, x + y = s)
+    for (const i64 y : strictly_between(ys_, a.y, b.y)) cand.push_back(at(a.x, y));
+    if (octilinear_) {
+      for (const i64 d : strictly_between(ds_, a.y - i64{a.x}, b.y - i64{a.x})) cand.push_back(at(a.x, a.x + d));
+      for (const i64 s : strictly_between(ss_, a.y + i64{a.x}, b.y + i64{a.x})) cand.push_back(at(a.x, s - a.x));
+    }
+    return;
+  }
+  const i64 sl = (b.y > a.y) - (b.y < a.y);  // slope 0, 1 or -1
+  auto on = [&](i64 x) { return at(x, a.y + sl * (x - a.x)); };
+  for (const i64 x : strictly_between(xs_, a.x, b.x)) cand.push_back(on(x));  // vertical projections
+  if (sl != 0)  // horizontal projections
+    for (const i64 y : strictly_between(ys_, std::min(a.y, b.y), std::max(a.y, b.y))) cand.push_back(on(a.x + sl * (y - a.y)));
+  if (!octilinear_) return;
+  if (sl == 0) {
+    // y = a.y: on the diagonal y - x = d at x = y - d, on x + y = s at x = s - y
+    for (const i64 d : strictly_between(ds_, a.y - i64{b.x}, a.y - i64{a.x})) cand.push_back(on(a.y - d));
+    for (const i64 s : strictly_between(ss_, i64{a.x} + a.y, i64{b.x} + a.y)) cand.push_back(on(s - a.y));
+    return;
+  }
+  // along y - x = c (sl = 1) the other diagonal x + y = s meets it at x = (s - c) / 2; along
+  // x + y = c (sl = -1) the diagonal y - x = d at x = (c - d) / 2; halfway: both neighbours (by
+  // symmetry they are as far from the point when nothing is in the way; an obstacle may part them)
+  const i64 c0 = sl == 1 ? i64{a.y} - a.x : i64{a.y} + a.x;
+  const std::vector<i64>& other = sl == 1 ? ss_ : ds_;
+  const i64 lo = sl == 1 ? i64{a.x} + a.y : i64{b.y} - b.x, hi = sl == 1 ? i64{b.x} + b.y : i64{a.y} - a.x;
+  for (const i64 v : strictly_between(other, lo, hi)) {
+    const i64 twice = sl == 1 ? v - c0 : c0 - v;  // 2x
+    const i64 x0 = floor_div(twice, 2), x1 = x0 + (twice % 2 != 0);
+    for (const i64 x : {x0, x1})
+      if (a.x < x && x < b.x) cand.push_back(on(x));
+  }
+}
+
+namespace {
+
+// A run with segment sources (L1Wavefront::run and OctWavefront::run with segments,
+// wavefront.h): from the point sources, then for each segment every free point of it where the
+// least distance to a target may be taken (its ends and the ProjectionLines of the ring vertices
+// and targets), each mapped to the source index the caller sees (Impl: WaveCore and SourceOrigin).
+template <class Impl>
+void run_with_segment_sources(Impl& c, std::span<const Point> sources, std::span<const geom::Segment> segment_sources,
+                              std::span<const Point> targets, WavefrontStop stop, bool octilinear) {
+  // The ring vertices (frame included) and the targets: where projections onto a segment fall.
+  ProjectionLines lines(octilinear);
+  for (uint32_t v = 0; v < c.nvert; ++v) lines.add(c.pts[v]);
+  for (const Point t : targets) lines.add(t);
+  lines.done();
   std::vector<Point> pts(sources.begin(), sources.end());
-  std::vector<std::size_t> origin(sources.size());
-  for (std::size_t i = 0; i < sources.size(); ++i) origin[i] = i;
+  std::vector<std::size_t> origin;
+  for (std::size_t i = 0; i < sources.size(); ++i) origin.push_back(i);
   std::vector<Point> cand;
   for (std::size_t k = 0; k < segment_sources.size(); ++k) {
-    Point a = segment_sources[k].a, b = segment_sources[k].b;
+    const Point a = segment_sources[k].a, b = segment_sources[k].b;
     const i64 dx = i64{b.x} - a.x, dy = i64{b.y} - a.y;
     if (dx != 0 && dy != 0 && dx != dy && dx != -dy)
       throw std::invalid_argument("a segment source must be horizontal, vertical or at 45 degrees");
-    if (b < a) std::swap(a, b);  // a before b: by x, then y
     cand.assign({a, b});
-    if (a.x == b.x) {
-      for (const i64 y : strictly_between(ys, a.y, b.y)) cand.push_back({a.x, static_cast<geom::Coord>(y)});
-    } else {
-      const i64 s = (b.y > a.y) - (b.y < a.y);  // slope 0, 1 or -1
-      for (const i64 x : strictly_between(xs, a.x, b.x))  // vertical projections
-        cand.push_back({static_cast<geom::Coord>(x), static_cast<geom::Coord>(a.y + s * (x - a.x))});
-      if (s != 0)  // horizontal projections
-        for (const i64 y : strictly_between(ys, std::min(a.y, b.y), std::max(a.y, b.y)))
-          cand.push_back({static_cast<geom::Coord>(a.x + s * (y - a.y)), static_cast<geom::Coord>(y)});
-    }
+    lines.inside(a, b, cand);
     std::sort(cand.begin(), cand.end());
     cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
     for (const Point p : cand)
@@ -2155,6 +2196,13 @@ void L1Wavefront::run(std::span<const Point> sources, std::span<const geom::Segm
   }
   c.run(pts, targets, stop);
   c.source_origin = std::move(origin);
+}
+
+}  // namespace
+
+void L1Wavefront::run(std::span<const Point> sources, std::span<const geom::Segment> segment_sources,
+                      std::span<const Point> targets, Stop stop) {
+  run_with_segment_sources(*impl_, sources, segment_sources, targets, stop, false);
 }
 
 std::optional<std::int64_t> L1Wavefront::target_distance(std::size_t i) const {
@@ -2199,7 +2247,13 @@ OctWavefront& OctWavefront::operator=(OctWavefront&&) noexcept = default;
 bool OctWavefront::is_free(Point p) const { return impl_->is_free(p); }
 
 void OctWavefront::run(std::span<const Point> sources, std::span<const Point> targets, Stop stop) {
+  impl_->source_origin.clear();
   impl_->run(sources, targets, stop);
+}
+
+void OctWavefront::run(std::span<const Point> sources, std::span<const geom::Segment> segment_sources,
+                       std::span<const Point> targets, Stop stop) {
+  run_with_segment_sources(*impl_, sources, segment_sources, targets, stop, true);
 }
 
 std::optional<geom::Root2> OctWavefront::target_distance(std::size_t i) const {
@@ -2211,7 +2265,7 @@ std::optional<geom::Root2> OctWavefront::target_distance(std::size_t i) const {
 std::optional<std::size_t> OctWavefront::target_source(std::size_t i) const {
   auto e = impl_->best_target_entity(i);
   if (!e) return std::nullopt;
-  return impl_->ents[*e].source;
+  return impl_->origin(impl_->ents[*e].source);
 }
 
 std::vector<Point> OctWavefront::target_path(std::size_t i) const { return path_of(*impl_, i); }
@@ -2223,7 +2277,10 @@ std::optional<geom::Root2> OctWavefront::vertex_distance(Point p) const {
 std::span<const Polygon> OctWavefront::frame_obstacles() const { return impl_->polys; }
 
 std::vector<OctWavefront::Wedge> OctWavefront::vertex_wedges(Point p) const {
-  return wedges_of<OctMetric>(*impl_, p);
+  std::vector<Wedge> w = wedges_of<OctMetric>(*impl_, p);
+  for (Wedge& x : w)
+    if (x.source) x.source = impl_->origin(static_cast<uint32_t>(*x.source));
+  return w;
 }
 
 std::vector<Point> OctWavefront::wedge_path(Point p, std::size_t k) const { return wedge_path_of(*impl_, p, k); }

@@ -214,6 +214,19 @@ class OctWavefront {
   using Stop = WavefrontStop;
   void run(std::span<const geom::Point> sources, std::span<const geom::Point> targets,
            Stop stop = Stop::AllTargets);
+  // With SEGMENT sources too, numbered and checked as L1Wavefront's: each segment, horizontal,
+  // vertical or at 45 degrees, is a source at each of its LATTICE points (integer points: a wire
+  // leaving it starts at one, as wire vertices are integers). How: as L1Wavefront's, with d8 for
+  // L1. A shortest path from S leaves it at p and runs to its first bend w with length d8(w - p),
+  // piecewise linear along S with its breaks where w - p is horizontal, vertical or diagonal (the
+  // four projections of w onto S), over the part of S from which such a path reaches w, whose
+  // ends are projections of blocking obstacles' vertices; so the least over S's lattice points
+  // is at S's ends or next to a projection of a ring vertex or a target along one of the four
+  // orientations: those (a projection halfway between two lattice points, as along one diagonal
+  // onto the other, gives both) are the sources. The least over all points of S may be less
+  // (at a half-integer point), not reachable by a wire with integer vertices.
+  void run(std::span<const geom::Point> sources, std::span<const geom::Segment> segment_sources,
+           std::span<const geom::Point> targets, Stop stop);
   std::optional<geom::Root2> target_distance(std::size_t i) const;
   std::optional<std::size_t> target_source(std::size_t i) const;
   std::vector<geom::Point> target_path(std::size_t i) const;
@@ -272,6 +285,26 @@ class NormWavefront {
   struct Impl;
   std::unique_ptr<Impl> impl_;
   int order_ = 0;
+};
+
+// Where a shortest path to or from a segment may leave or reach it (the segment sources of
+// L1Wavefront::run and OctWavefront::run, and the Steiner trees' re-joins, l1_router.h): the
+// lines through a set of points along which a projection onto a segment falls. add() points,
+// then done() sorts; the diagonal keys only when `octilinear`.
+class ProjectionLines {
+ public:
+  explicit ProjectionLines(bool octilinear) : octilinear_(octilinear) {}
+  void add(geom::Point p);
+  void done();
+  // Appends to `out` the lattice points of segment ab (horizontal, vertical or at 45 degrees;
+  // not checked) STRICTLY between a and b that are level with one of the points (same x or
+  // same y), or for octilinear on a diagonal through one of them, rounded down and up to the
+  // segment's lattice when the diagonal meets it halfway between two lattice points.
+  void inside(geom::Point a, geom::Point b, std::vector<geom::Point>& out) const;
+
+ private:
+  bool octilinear_;
+  std::vector<std::int64_t> xs_, ys_, ds_, ss_;  // distinct x, y, y - x, x + y, ascending
 };
 
 // Convenience: the exact L1 distance between two points among the obstacles (nullopt when

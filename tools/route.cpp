@@ -74,24 +74,23 @@ std::optional<NetResult> too_few_pins(const io::Net& net) {
 
 // Router: router::L1Router (rectilinear wires) or router::OctRouter (octilinear).
 // With --tree steiner: why this net of three or more pins does not get a Steiner tree (they are
-// built for rectilinear L1 wires, between point pins and shape pins), or nullopt when it does or
-// needs no tree.
-std::optional<std::string> no_steiner_tree(const io::Net& net, const std::string& metric, bool octilinear) {
+// built for L1 wires, rectilinear and octilinear, between point pins and shape pins), or nullopt
+// when it does or needs no tree.
+std::optional<std::string> no_steiner_tree(const io::Net& net, const std::string& metric) {
   if (net.pins.size() <= 2) return std::nullopt;
   if (metric != "l1") return "--metric " + metric + " gives it the tree of best paths from its first pin";
-  if (octilinear) return "octilinear wires give it the shortest-path tree from its first pin";
   return std::nullopt;
 }
 
 // Says (ROUTE-0009) that the net does not get the Steiner tree --tree steiner asked for.
 void warn_no_steiner_tree(const io::Layout& layout, const io::Net& net, const std::string& why, bool quiet) {
   print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0009", layout.file, net.line, 0,
-                                "net \"" + net.name + "\": Steiner trees are built for rectilinear L1 wires only in this "
+                                "net \"" + net.name + "\": Steiner trees are built for L1 wires (rectilinear and octilinear) only in this "
                                 "version; " + why}},
                     quiet);
 }
 
-// steiner: the net (three or more pins, L1 rectilinear: no_steiner_tree() is nullopt) gets
+// steiner: the net (three or more pins, L1 rectilinear or octilinear: no_steiner_tree() is nullopt) gets
 // a Steiner tree; otherwise a net of three or more pins gets the shortest-path tree from its
 // first pin.
 template <class Router>
@@ -146,10 +145,10 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router
     r.route.wires = std::move(wires);
     return r;
   };
-  if constexpr (!oct) {
+  {
     if (net.pins.size() > 2 && steiner) {
-      // A rectilinear Steiner tree (router::L1Router::steiner): short total length.
-      const router::L1Router::Steiner t = router.steiner(std::span<const geom::Polygon>(geometry));
+      // A rectilinear (octilinear) Steiner tree (router::BasicRouter::steiner): short total length.
+      const typename Router::Steiner t = router.steiner(std::span<const geom::Polygon>(geometry));
       const io::Pin* bad = t.failed ? &net.pins[*t.failed] : nullptr;
       switch (t.status) {
         case router::WireStatus::Ok: break;
@@ -160,9 +159,10 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router
           return fail("ROUTE-0002", "pin \"" + bad->name + "\" is in another part of free space than pin \"" + a.name +
                                         "\": blockages wall one of them in");
         case router::WireStatus::NoIntegerStaircase:
-          return fail("ROUTE-0003", "pin \"" + bad->name + "\" is joined to the tree by a shortest path with no "
-                                    "rectilinear wire of integer vertices of its length (sloped blockages pinch every "
-                                    "lattice staircase)");
+          return fail("ROUTE-0003", "pin \"" + bad->name + "\" is joined to the tree by a shortest path with no " +
+                                        std::string(oct ? "octilinear" : "rectilinear") +
+                                        " wire of integer vertices of its length (sloped blockages pinch every "
+                                        "lattice staircase)");
       }
       std::vector<io::Wire> wires;
       for (const auto& pts : t.wires) wires.push_back(io::Wire{pts});
@@ -362,7 +362,7 @@ void add_route(CLI::App& app, int& status) {
       ->check(CLI::Range(0u, 1024u));
   sub->add_option("--tree", args->tree,
                   "nets of three or more pins: spt (default: a shortest-path tree from the first pin, every pin at its "
-                  "shortest distance) or steiner (short total length; rectilinear L1 wires, point and shape pins)");
+                  "shortest distance) or steiner (short total length; L1 wires, rectilinear or octilinear, point and shape pins)");
   add_input_options(sub, args->file, args->load, "do not print warnings or the summary");
   sub->callback([args, &status] {
     using Clock = std::chrono::steady_clock;
@@ -440,7 +440,7 @@ void add_route(CLI::App& app, int& status) {
       if (!link) routes.bend_cost = c;
       for (const io::Net& net : layout->nets)
         if (args->tree == "steiner")  // said, not dropped silently
-          if (const auto why = no_steiner_tree(net, args->routing.metric, false)) warn_no_steiner_tree(*layout, net, *why, args->load.quiet);
+          if (const auto why = no_steiner_tree(net, args->routing.metric)) warn_no_steiner_tree(*layout, net, *why, args->load.quiet);
       std::vector<NetResult> results(layout->nets.size());
       if (args->independent) {  // each net alone among the blockages (their rectilinear covers)
         const router::BendRouter br(norm.domain, norm.obstacles);
@@ -567,7 +567,7 @@ void add_route(CLI::App& app, int& status) {
         std::vector<bool> steiner_ok(layout->nets.size());
         for (std::size_t i = 0; i < layout->nets.size(); ++i) {
           const io::Net& net = layout->nets[i];
-          const std::optional<std::string> why = args->tree == "steiner" ? no_steiner_tree(net, "l1", octilinear) : std::nullopt;
+          const std::optional<std::string> why = args->tree == "steiner" ? no_steiner_tree(net, "l1") : std::nullopt;
           if (why) warn_no_steiner_tree(*layout, net, *why, args->load.quiet);  // said, not dropped silently
           steiner_ok[i] = args->tree == "steiner" && !why;
         }
@@ -629,7 +629,7 @@ void add_route(CLI::App& app, int& status) {
         NetResult r;
         if (args->independent) {
           if (stop()) throw router::NetRouterStopped();
-          const std::optional<std::string> why = args->tree == "steiner" ? no_steiner_tree(net, "l1", octilinear) : std::nullopt;
+          const std::optional<std::string> why = args->tree == "steiner" ? no_steiner_tree(net, "l1") : std::nullopt;
           if (why) warn_no_steiner_tree(*layout, net, *why, args->load.quiet);  // said, not dropped silently
           const bool steiner = args->tree == "steiner" && !why;
           r = l1 ? route_net(*layout, net, *l1, steiner) : route_net(*layout, net, *oct, steiner);

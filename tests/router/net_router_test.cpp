@@ -189,12 +189,12 @@ TEST(NetRouter, EveryRoutedNetPassesTheChecker) {
   std::map<std::string, int> reasons;
   for (int seed = 1; seed <= sanitized_share(2000, 24); ++seed) {
     const RandomLayout L = random_layout(700000 + seed);
-    // every fifth layout octilinear; a third of the rest with Steiner trees
+    // every fifth layout octilinear; a third of them all with Steiner trees
     router::NetRouterOptions opt;
     opt.octilinear = seed % 5 == 4;
     octilinear += opt.octilinear;
     router::NetRouter nr(L.norm.domain, L.norm.obstacles, L.nets, L.rules, opt);
-    nr.run(opt.octilinear ? router::NetRouter::oct_router() : router::NetRouter::l1_router(seed % 3 == 0));
+    nr.run(opt.octilinear ? router::NetRouter::oct_router(seed % 3 == 0) : router::NetRouter::l1_router(seed % 3 == 0));
     for (std::size_t i = 0; i < L.nets.size(); ++i)
       for (const Polygon& g : L.nets[i].pins) pads += g.outer.size() > 1 && nr.outcomes()[i].routed;
     ++layouts;
@@ -749,7 +749,7 @@ TEST(NetRouter, RoundedUnionStaysApartFromPassedComponents) {
     router::NetRouterOptions opt;
     opt.octilinear = seed % 5 == 4;
     router::NetRouter nr(L.norm.domain, L.norm.obstacles, L.nets, L.rules, opt);
-    nr.run(opt.octilinear ? router::NetRouter::oct_router() : router::NetRouter::l1_router(seed % 3 == 0));
+    nr.run(opt.octilinear ? router::NetRouter::oct_router(seed % 3 == 0) : router::NetRouter::l1_router(seed % 3 == 0));
     router::CheckRules rules;
     rules.wire_width = L.rules.wire_width;
     rules.spacing = L.rules.spacing;
@@ -823,7 +823,7 @@ TEST(NetRouter, ThreadsGiveTheSameOutcomes) {
     const RandomLayout L = random_layout(710000 + seed);
     router::NetRouterOptions opt;
     opt.octilinear = seed % 5 == 4;
-    const auto fn = opt.octilinear ? router::NetRouter::oct_router() : router::NetRouter::l1_router(seed % 3 == 0);
+    const auto fn = opt.octilinear ? router::NetRouter::oct_router(seed % 3 == 0) : router::NetRouter::l1_router(seed % 3 == 0);
     router::NetRouter one(L.norm.domain, L.norm.obstacles, L.nets, L.rules, opt);
     one.run(fn);
     opt.threads = 2 + seed % 4;
@@ -909,7 +909,7 @@ void on_random_layouts(int base, Compare compare) {
     router::NetRouterOptions opt;
     opt.octilinear = seed % 5 == 4;
     opt.max_rips = 1 + seed % 4;
-    const auto fn = opt.octilinear ? router::NetRouter::oct_router() : router::NetRouter::l1_router(seed % 3 == 0);
+    const auto fn = opt.octilinear ? router::NetRouter::oct_router(seed % 3 == 0) : router::NetRouter::l1_router(seed % 3 == 0);
     compare("seed " + std::to_string(base + seed), L.nets, L.norm, L.rules, opt, fn);
   }
 }

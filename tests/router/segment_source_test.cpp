@@ -17,9 +17,12 @@
 
 #include <cstdlib>
 #include <random>
+#include <sstream>
+#include <type_traits>
 
 #include "geom/index.h"
 #include "oracle/l1_oracle.h"
+#include "oracle/oct_oracle.h"
 #include "router/wavefront.h"
 #include "support/sanitized.h"
 #include "support/spm_check.h"
@@ -49,7 +52,12 @@ struct Tally {
   i64 instances = 0, skipped = 0, queries = 0, reached = 0, from_segment = 0, inside_segment = 0, scaled = 0;
 };
 
+// Ref, Wavefront: L1Reference and L1Wavefront, or OctilinearReference and OctWavefront. The
+// octilinear segment's sources are its lattice points only (wavefront.h), so the scaled check
+// (half-integer points) is for L1.
+template <class Ref, class Wavefront>
 std::string check_seed(std::uint64_t seed, Tally& tally) {
+  constexpr bool kL1 = std::is_same_v<Wavefront, router::L1Wavefront>;
   WavefrontCase c;
   try {
     c = make_wavefront_case(seed);
@@ -57,7 +65,7 @@ std::string check_seed(std::uint64_t seed, Tally& tally) {
     ++tally.skipped;
     return "";
   }
-  const oracle::L1Reference ref(c.domain, c.obstacles);
+  const Ref ref(c.domain, c.obstacles);
   if (!ref.problems().empty()) {
     ++tally.skipped;
     return "";
@@ -101,7 +109,14 @@ std::string check_seed(std::uint64_t seed, Tally& tally) {
     queries.push_back({static_cast<geom::Coord>(x), static_cast<geom::Coord>(y)});
   }
   // The reference: every lattice point of each source.
-  std::vector<std::vector<std::optional<i64>>> per_source;  // [source][query]
+  using Len = typename decltype(ref.distances(Point{}, std::vector<Point>{}))::value_type::value_type;
+  auto text = [](const std::optional<Len>& d) {
+    if (!d) return std::string("none");
+    std::ostringstream o;
+    o << *d;
+    return o.str();
+  };
+  std::vector<std::vector<std::optional<Len>>> per_source;  // [source][query]
   for (const Point p : points) per_source.push_back(least_distances(ref, {p}, queries));
   for (const auto& s : segs) per_source.push_back(least_distances(ref, lattice_points(s), queries));
 
@@ -111,20 +126,19 @@ std::string check_seed(std::uint64_t seed, Tally& tally) {
   for (const Point p : points) head += " " + spm_pt(p);
   head += "\n";
 
-  router::L1Wavefront wf(c.domain, c.obstacles);
+  Wavefront wf(c.domain, c.obstacles);
   wf.run(points, segs, queries, router::WavefrontStop::AllTargets);
   ++tally.instances;
   for (std::size_t i = 0; i < queries.size(); ++i) {
     const Point q = queries[i];
     const std::string where = head + "  query " + spm_pt(q) + ": ";
     ++tally.queries;
-    std::optional<i64> best;
+    std::optional<Len> best;
     for (const auto& d : per_source)
       if (d[i] && (!best || *d[i] < *best)) best = d[i];
     const auto got = wf.target_distance(i);
     if (got != best)
-      return where + "distance " + (got ? std::to_string(*got) : "none") + ", reference " +
-             (best ? std::to_string(*best) : "none") + "\n";
+      return where + "distance " + text(got) + ", reference " + text(best) + "\n";
     if (!best) continue;
     ++tally.reached;
     const auto src = wf.target_source(i);
@@ -141,11 +155,11 @@ std::string check_seed(std::uint64_t seed, Tally& tally) {
       tally.inside_segment += path.front() != s.a && path.front() != s.b;
     }
     const auto len = ref.check_path(path);
-    if (!len || *len != *best) return where + "the path is " + (len ? "of length " + std::to_string(*len) : std::string("not free")) + "\n";
+    if (!len || *len != *best) return where + "the path is " + (len ? "of length " + text(*len) : std::string("not free")) + "\n";
   }
   // Scaled by 2: the half-integer points of the segments become lattice points; none may be
   // nearer (every distance doubles).
-  if (!c.huge && pick(4) == 0) {
+  if (kL1 && !c.huge && pick(4) == 0) {
     auto twice = [](Point p) { return Point{2 * p.x, 2 * p.y}; };
     std::vector<geom::Polygon> obs2;
     for (const auto& p : c.obstacles) {
@@ -157,17 +171,16 @@ std::string check_seed(std::uint64_t seed, Tally& tally) {
       }
       obs2.push_back(std::move(q));
     }
-    const oracle::L1Reference ref2({twice(D.lo), twice(D.hi)}, obs2);
+    const Ref ref2({twice(D.lo), twice(D.hi)}, obs2);
     std::vector<Point> q2;
     for (const Point q : queries) q2.push_back(twice(q));
     for (std::size_t k = 0; k < segs.size(); ++k) {
       const auto d2 = least_distances(ref2, lattice_points({twice(segs[k].a), twice(segs[k].b)}), q2);
       for (std::size_t i = 0; i < queries.size(); ++i) {
         const auto& d1 = per_source[points.size() + k][i];
-        if (d2[i].has_value() != d1.has_value() || (d1 && *d2[i] != 2 * *d1))
+        if (d2[i].has_value() != d1.has_value() || (d1 && *d2[i] != *d1 + *d1))
           return head + "  query " + spm_pt(queries[i]) + ": scaled by 2, segment " + std::to_string(k) +
-                 " is " + (d2[i] ? std::to_string(*d2[i]) : "none") + " away, not twice " +
-                 (d1 ? std::to_string(*d1) : "none") + "\n";
+                 " is " + text(d2[i]) + " away, not twice " + text(d1) + "\n";
       }
     }
     ++tally.scaled;
@@ -177,7 +190,9 @@ std::string check_seed(std::uint64_t seed, Tally& tally) {
 
 TEST(SegmentSources, MatchTheReferenceOnRandomLayouts) {
   Tally t;
-  if (!run_seed_range("TAUT_SEGMENT_SOURCE_SEED", 1000, [&](std::uint64_t seed) { return check_seed(seed, t); })) return;
+  if (!run_seed_range("TAUT_SEGMENT_SOURCE_SEED", 1000,
+                      [&](std::uint64_t seed) { return check_seed<oracle::L1Reference, router::L1Wavefront>(seed, t); }))
+    return;
   std::cout << "instances " << t.instances << " (skipped " << t.skipped << ", scaled " << t.scaled << "), queries "
             << t.queries << ": reached " << t.reached << ", from a segment " << t.from_segment
             << " (leaving it between its ends " << t.inside_segment << ")\n";
@@ -185,6 +200,47 @@ TEST(SegmentSources, MatchTheReferenceOnRandomLayouts) {
   EXPECT_GE(t.reached, sanitized_share(25000, 4));
   EXPECT_GE(t.inside_segment, kSanitized ? 100 : 1000);  // (segments are half as long there)
   EXPECT_GE(t.scaled, sanitized_share(150, 4));
+}
+
+// OctWavefront with segment sources: the distance from a segment is the least octilinear
+// reference distance over its lattice points (the sources of wavefront.h's octilinear run),
+// with the same instances and checks (not scaled: a half-integer point of a diagonal segment
+// may be nearer, and no wire can leave from there).
+TEST(SegmentSources, OctilinearMatchTheReferenceOnRandomLayouts) {
+  Tally t;
+  if (!run_seed_range("TAUT_OCT_SEGMENT_SOURCE_SEED", 1000,
+                      [&](std::uint64_t seed) { return check_seed<oracle::OctilinearReference, router::OctWavefront>(seed, t); }))
+    return;
+  std::cout << "instances " << t.instances << " (skipped " << t.skipped << "), queries " << t.queries << ": reached "
+            << t.reached << ", from a segment " << t.from_segment << " (leaving it between its ends "
+            << t.inside_segment << ")\n";
+  EXPECT_GE(t.instances, sanitized_share(950, 4));
+  EXPECT_GE(t.reached, sanitized_share(25000, 4));
+  EXPECT_GE(t.inside_segment, kSanitized ? 100 : 1000);
+}
+
+// Worked by hand (octilinear): a diagonal wire from (0, 0) to (10, 10), no blockages. To (6, 0):
+// from (3, 3), where the other diagonal through (6, 0) meets the wire: 3 sqrt2. To (7, 0): that
+// diagonal meets the wire at (3.5, 3.5), no lattice point; from (3, 3) or (4, 4) it is
+// d8(4, -3) = d8(3, -4) = 1 + 3 sqrt2, less than 7 from the end (0, 0) (and more than the
+// 3.5 sqrt2 from (3.5, 3.5), where no wire can start). To (5, 5) on the wire: 0. To (15, 10):
+// from the end (10, 10), 5.
+TEST(SegmentSources, OctilinearDiagonalWire) {
+  const geom::Box dom{{-5, -5}, {20, 20}};
+  router::OctWavefront wf(dom, {});
+  const std::vector<geom::Segment> wire = {{{10, 10}, {0, 0}}};
+  const std::vector<Point> q = {{6, 0}, {7, 0}, {5, 5}, {15, 10}};
+  wf.run({}, wire, q, router::WavefrontStop::AllTargets);
+  EXPECT_EQ(wf.target_distance(0), (geom::Root2{0, 3}));
+  EXPECT_EQ(wf.target_distance(1), (geom::Root2{1, 3}));
+  EXPECT_EQ(wf.target_distance(2), (geom::Root2{0, 0}));
+  EXPECT_EQ(wf.target_distance(3), (geom::Root2{5, 0}));
+  EXPECT_EQ(wf.target_source(1), 0u);
+  const auto path = wf.target_path(1);
+  ASSERT_FALSE(path.empty());
+  EXPECT_TRUE(path.front() == Point(3, 3) || path.front() == Point(4, 4)) << spm_pt(path.front());
+  const std::vector<geom::Segment> sloped = {{{0, 0}, {2, 1}}};
+  EXPECT_THROW(wf.run({}, sloped, q, router::WavefrontStop::AllTargets), std::invalid_argument);
 }
 
 // Worked by hand: a horizontal wire below a bar. Wire y = 0, x in [0, 100]; bar x in [20, 80],

@@ -107,7 +107,7 @@ void check_layout(int seed, router::TightenOrientations orient, Totals& t) {
   router::NetRouterOptions opt;
   opt.octilinear = octilinear;
   router::NetRouter nr(L.norm.domain, L.norm.obstacles, L.nets, L.rules, opt);
-  nr.run(octilinear ? router::NetRouter::oct_router() : router::NetRouter::l1_router(seed % 3 == 0));
+  nr.run(octilinear ? router::NetRouter::oct_router(seed % 3 == 0) : router::NetRouter::l1_router(seed % 3 == 0));
   std::vector<NetLines> before;
   for (const auto& o : nr.outcomes()) before.push_back(o.routed ? o.wires : NetLines{});
   const std::string at = "seed " + std::to_string(seed) + " (" +

@@ -264,10 +264,10 @@ int grid_map_reference_mismatches(const GridMapCase& g) {
 
 // The least reference distance from any of the points (free ones) to each target; nullopt: none
 // reaches it.
+// The distance type is the reference's (int64 for L1Reference, Root2 for OctilinearReference).
 template <class Ref>
-std::vector<std::optional<std::int64_t>> least_distances(const Ref& ref, const std::vector<geom::Point>& from,
-                                                         const std::vector<geom::Point>& targets) {
-  std::vector<std::optional<std::int64_t>> best(targets.size());
+auto least_distances(const Ref& ref, const std::vector<geom::Point>& from, const std::vector<geom::Point>& targets) {
+  std::vector<typename decltype(ref.distances(geom::Point{}, targets))::value_type> best(targets.size());
   for (const geom::Point p : from) {
     if (!ref.is_free(p)) continue;
     const auto d = ref.distances(p, targets);
