@@ -54,6 +54,21 @@ typename BasicRouter<W>::Wire BasicRouter<W>::finish(std::optional<std::size_t> 
 }
 
 namespace {
+// The length of segment ab: L1 (Len std::int64_t) or octilinear d8 (geom::Root2).
+template <class Len>
+Len segment_length(Point a, Point b) {
+  const i64 dx = i64{b.x} - a.x, dy = i64{b.y} - a.y;
+  if constexpr (std::is_same_v<Len, geom::Root2>) return geom::octilinear_length(dx, dy);
+  else return std::abs(dx) + std::abs(dy);
+}
+// The total length of the wires.
+template <class Len>
+Len wires_length(const std::vector<std::vector<Point>>& wires) {
+  Len l{};
+  for (const auto& w : wires)
+    for (std::size_t i = 1; i < w.size(); ++i) l += segment_length<Len>(w[i - 1], w[i]);
+  return l;
+}
 // Drops the points the wavefront does not find free.
 template <class Wavefront>
 void keep_free(std::vector<Point>& v, const Wavefront& wf) {
@@ -182,7 +197,7 @@ std::optional<MetalGraph> metal_graph(const std::vector<std::vector<Point>>& wir
       for (std::size_t j = i + 1; j < segs.size(); ++j)
         if (geom::intersect(segs[i], segs[j]) == geom::SegmentIntersection::Proper) {
           const geom::RationalPoint r = geom::line_intersection(segs[i], segs[j]);
-          if (r.x_num % r.den == 0 && r.y_num % r.den == 0)
+          if (r.is_integer())
             g.nodes.push_back({static_cast<geom::Coord>(r.x_num / r.den), static_cast<geom::Coord>(r.y_num / r.den)});
         }
   } else {
@@ -230,11 +245,7 @@ template <class Len>
 std::vector<KeyPath<Len>> key_paths(const MetalGraph& g) {
   std::vector<KeyPath<Len>> out;
   std::vector<char> used(g.edges.size(), 0);
-  auto len = [&](std::size_t e) {
-    const Point a = g.nodes[g.edges[e].first], b = g.nodes[g.edges[e].second];
-    if constexpr (std::is_same_v<Len, geom::Root2>) return geom::octilinear_length(i64{b.x} - a.x, i64{b.y} - a.y);
-    else return std::abs(std::int64_t{a.x} - b.x) + std::abs(std::int64_t{a.y} - b.y);
-  };
+  auto len = [&](std::size_t e) { return segment_length<Len>(g.nodes[g.edges[e].first], g.nodes[g.edges[e].second]); };
   auto walk = [&](std::size_t u, std::size_t e0, std::size_t v0) {
     KeyPath<Len> p;
     p.nodes = {u};
@@ -626,13 +637,7 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t, std
       break;
       }
     }
-    t.length = Len{};
-    for (const auto& w : t.wires)
-      for (std::size_t i = 1; i < w.size(); ++i) {
-        const i64 dx = i64{w[i].x} - w[i - 1].x, dy = i64{w[i].y} - w[i - 1].y;
-        if constexpr (kOctilinear) t.length += geom::octilinear_length(dx, dy);
-        else t.length += std::abs(dx) + std::abs(dy);
-      }
+    t.length = wires_length<Len>(t.wires);
     return changes;
   }
 }
@@ -775,12 +780,7 @@ typename BasicRouter<W>::Steiner BasicRouter<W>::steiner_from_first(std::span<co
       keep_free(c, wavefront_);
       t.wires.push_back({c.front()});
     }
-    for (const auto& w : t.wires)
-      for (std::size_t i = 1; i < w.size(); ++i) {
-        const i64 dx = i64{w[i].x} - w[i - 1].x, dy = i64{w[i].y} - w[i - 1].y;
-        if constexpr (kOctilinear) t.length += geom::octilinear_length(dx, dy);
-        else t.length += std::abs(dx) + std::abs(dy);
-      }
+    t.length = wires_length<Len>(t.wires);
     t.status = WireStatus::Ok;
     return t;
   }

@@ -131,8 +131,9 @@ class BasicRouter {
   // OCTILINEAR (OctRouter): the tree is grown the same way, each step an exact shortest
   // octilinear path from the tree so far (OctWavefront's segment sources: the tree's wires,
   // diagonal ones included, leave it at any of their lattice points) staircased with integer
-  // vertices; the improvement pass is not run (its metal graph and Steiner point moves are
-  // rectilinear), so the tree is the best of the starts' Prim trees. tests/router/steiner_test.cpp
+  // vertices; the improvement pass re-embeds its paths as above (the metal graph takes diagonal
+  // pieces, the other part's targets are projected along the four orientations) but moves no
+  // Steiner point (the moves' bounds and grid are rectilinear). tests/router/steiner_test.cpp
   // measures its excess over the exact minimum among trees with integer vertices
   // (tests/oracle/oct_steiner_oracle.h).
   struct Steiner {
@@ -165,7 +166,7 @@ class BasicRouter {
   // horizontal and vertical edges (supports_pin()), the same candidates (for a fixed r the d8
   // length of s - r along such an edge is least at r's projection, pin_shapes.h; as r runs along
   // a straight tree segment, at one of its ends or where the segment reaches the edge's line, a
-  // tree vertex or a point the shape touches), no improvement pass.
+  // tree vertex or a point the shape touches), the same path re-embedding.
   Steiner steiner(std::span<const geom::Polygon> pins, std::size_t starts = 8, bool improve = true);
 
   // The points of pin `pin` a shortest wire from it may be taken to start at (and why those:

@@ -2155,7 +2155,7 @@ void ProjectionLines::inside(Point a, Point b, std::vector<Point>& cand) const {
   const i64 lo = sl == 1 ? i64{a.x} + a.y : i64{b.y} - b.x, hi = sl == 1 ? i64{b.x} + b.y : i64{a.y} - a.x;
   for (const i64 v : strictly_between(other, lo, hi)) {
     const i64 twice = sl == 1 ? v - c0 : c0 - v;  // 2x
-    const i64 x0 = floor_div(twice, 2), x1 = x0 + (twice % 2 != 0);
+    const i64 x0 = static_cast<i64>(floor_div(twice, 2)), x1 = static_cast<i64>(geom::ceil_div(twice, 2));
     for (const i64 x : {x0, x1})
       if (a.x < x && x < b.x) cand.push_back(on(x));
   }

@@ -224,7 +224,13 @@ class OctWavefront {
   // is at S's ends or next to a projection of a ring vertex or a target along one of the four
   // orientations: those (a projection halfway between two lattice points, as along one diagonal
   // onto the other, gives both) are the sources. The least over all points of S may be less
-  // (at a half-integer point), not reachable by a wire with integer vertices.
+  // (at a half-integer point), not reachable by a wire with integer vertices. The set is more
+  // than needed: along a horizontal or vertical segment d8(w - p) is least at w's perpendicular
+  // projection, and where an obstacle cuts the stretch a vertex of it takes w's place, so the
+  // diagonal projections there never win; likewise the second neighbour of a halfway point is
+  // as far as the first unless an obstacle parts them. The tests check that the set suffices
+  // (against the reference at every lattice point), not that each kind is needed; a smaller set
+  // would make runs cheaper.
   void run(std::span<const geom::Point> sources, std::span<const geom::Segment> segment_sources,
            std::span<const geom::Point> targets, Stop stop);
   std::optional<geom::Root2> target_distance(std::size_t i) const;

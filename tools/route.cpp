@@ -85,7 +85,7 @@ std::optional<std::string> no_steiner_tree(const io::Net& net, const std::string
 // Says (ROUTE-0009) that the net does not get the Steiner tree --tree steiner asked for.
 void warn_no_steiner_tree(const io::Layout& layout, const io::Net& net, const std::string& why, bool quiet) {
   print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0009", layout.file, net.line, 0,
-                                "net \"" + net.name + "\": Steiner trees are built for L1 wires (rectilinear and octilinear) only in this "
+                                "net \"" + net.name + "\": Steiner trees are built for --metric l1 wires (rectilinear and octilinear) only in this "
                                 "version; " + why}},
                     quiet);
 }

@@ -231,8 +231,6 @@ TEST(SteinerTree, PadsLegalAndNearTheMinimum) {
   EXPECT_GT(improved, kSanitized ? 1 : 20);
 }
 
-// A pin inside a ring of blockage (its hole) cannot be joined: Unreachable, naming that pin,
-// from any start; a pin inside the blockage itself is not free.
 // OCTILINEAR Steiner trees (OctRouter::steiner) against the exact minimum among octilinear
 // trees with integer vertices (oracle::oct_steiner_minimal_length: Dreyfus-Wagner on the
 // 8-connected lattice), on random layouts of rectangles that stay apart and without blockages,
@@ -321,6 +319,8 @@ TEST(SteinerTree, OctilinearLegalAndNearTheMinimum) {
   EXPECT_GT(improved, kSanitized ? 5 : 50);
 }
 
+// A pin inside a ring of blockage (its hole) cannot be joined: Unreachable, naming that pin,
+// from any start; a pin inside the blockage itself is not free.
 TEST(SteinerTree, WalledInAndBlockedPins) {
   const std::vector<geom::Polygon> ring{{{{20, 20}, {30, 20}, {30, 30}, {20, 30}}, {{{22, 22}, {22, 28}, {28, 28}, {28, 22}}}}};
   const geom::NormalizedObstacles norm = geom::normalize_obstacles(ring, geom::Box{{0, 0}, {50, 50}});
