@@ -2127,12 +2127,8 @@ void ProjectionLines::inside(Point a, Point b, std::vector<Point>& cand) const {
   if (b < a) std::swap(a, b);  // a before b: by x, then y
   auto at = [](i64 x, i64 y) { return Point{static_cast<geom::Coord>(x), static_cast<geom::Coord>(y)}; };
   if (a.x == b.x) {
-    // x = a.x: y level with a point, or on a diagonal through one (y - x = d, x + y = s)
+    // x = a.x: y level with a point (d8 along it is least there: OctWavefront::run)
     for (const i64 y : strictly_between(ys_, a.y, b.y)) cand.push_back(at(a.x, y));
-    if (octilinear_) {
-      for (const i64 d : strictly_between(ds_, a.y - i64{a.x}, b.y - i64{a.x})) cand.push_back(at(a.x, a.x + d));
-      for (const i64 s : strictly_between(ss_, a.y + i64{a.x}, b.y + i64{a.x})) cand.push_back(at(a.x, s - a.x));
-    }
     return;
   }
   const i64 sl = (b.y > a.y) - (b.y < a.y);  // slope 0, 1 or -1
@@ -2141,12 +2137,7 @@ void ProjectionLines::inside(Point a, Point b, std::vector<Point>& cand) const {
   if (sl != 0)  // horizontal projections
     for (const i64 y : strictly_between(ys_, std::min(a.y, b.y), std::max(a.y, b.y))) cand.push_back(on(a.x + sl * (y - a.y)));
   if (!octilinear_) return;
-  if (sl == 0) {
-    // y = a.y: on the diagonal y - x = d at x = y - d, on x + y = s at x = s - y
-    for (const i64 d : strictly_between(ds_, a.y - i64{b.x}, a.y - i64{a.x})) cand.push_back(on(a.y - d));
-    for (const i64 s : strictly_between(ss_, i64{a.x} + a.y, i64{b.x} + a.y)) cand.push_back(on(s - a.y));
-    return;
-  }
+  if (sl == 0) return;
   // along y - x = c (sl = 1) the other diagonal x + y = s meets it at x = (s - c) / 2; along
   // x + y = c (sl = -1) the diagonal y - x = d at x = (c - d) / 2; halfway: both neighbours (by
   // symmetry they are as far from the point when nothing is in the way; an obstacle may part them)
