@@ -39,10 +39,11 @@ run: build
 	$(BUILD)/tools/taut route designs/demo.xml -o out/demo.routed.xml --svg out/demo.svg --stats out/demo.stats.json
 	@# the nets are routed together with the rules' width and spacing: the whole check must pass
 	$(BUILD)/tools/taut check out/demo.routed.xml -q --json > out/demo.check.json
-	@# exit status 1 = some nets are not routed (bump's diamond pin, octilinear: named on stderr)
-	$(BUILD)/tools/taut route designs/demo.xml --orientations octilinear -q -o out/demo.oct.routed.xml --svg out/demo.oct.svg || test $$? -eq 1
+	@# octilinear wires: every net routed (bump's diamond pin too), the whole check passes
+	$(BUILD)/tools/taut route designs/demo.xml --orientations octilinear -q -o out/demo.oct.routed.xml --svg out/demo.oct.svg
+	$(BUILD)/tools/taut check out/demo.oct.routed.xml -q
 	@# clk by an octilinear Steiner tree (22,405 DBU against its shortest-path tree's 39,331); the file passes taut check
-	$(BUILD)/tools/taut route designs/demo.xml --orientations octilinear --tree steiner -q -o out/demo.oct.steiner.xml --svg out/demo.oct.steiner.svg --stats out/demo.oct.steiner.json || test $$? -eq 1
+	$(BUILD)/tools/taut route designs/demo.xml --orientations octilinear --tree steiner -q -o out/demo.oct.steiner.xml --svg out/demo.oct.steiner.svg --stats out/demo.oct.steiner.json
 	$(BUILD)/tools/taut check out/demo.oct.steiner.xml -q
 	$(BUILD)/tools/taut voronoi designs/demo.xml -q -o out/demo.cells.xml --svg out/demo.voronoi.svg > out/demo.voronoi.txt
 	$(BUILD)/tools/taut tighten designs/wind.xml -q --clearance --min-link -o out/wind.tightened.xml --svg out/wind.svg --stats out/wind.stats.json

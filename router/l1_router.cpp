@@ -16,7 +16,7 @@ using geom::Point;
 
 template <class W>
 BasicRouter<W>::BasicRouter(const geom::Box& domain, std::span<const geom::Polygon> obstacles)
-    : wavefront_(domain, obstacles), staircase_(domain, obstacles), pins_(obstacles, domain) {}
+    : wavefront_(domain, obstacles), staircase_(domain, obstacles), pins_(obstacles, domain, kOctilinear) {}
 
 template <class W>
 typename BasicRouter<W>::Wire BasicRouter<W>::shortest(geom::Point from, geom::Point to) {
@@ -83,11 +83,7 @@ std::optional<std::size_t> BasicRouter<W>::pin_meets_obstacle(const geom::Polygo
 
 template <class W>
 bool BasicRouter<W>::supports_pin(const geom::Polygon& pin) {
-  if (!pin_shape_supported(pin)) return false;
-  bool ok = true;
-  if (kOctilinear)
-    for_each_pin_edge(pin, [&](Point a, Point b) { ok = ok && (a.x == b.x || a.y == b.y); });
-  return ok;
+  return pin_shape_supported(pin);
 }
 
 template <class W>
@@ -467,13 +463,13 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t, std
         ++changes;
         continue;
       }
-      if (!pads.empty() || kOctilinear) {  // the moves take point pins and L1 paths only
+      if (!pads.empty()) {  // the moves take point pins only
         std::vector<std::vector<Point>> wires;
         for (const KeyPath<Len>& p : paths) wires.push_back(path_points(g, p));
         if (!wires.empty()) t.wires = std::move(wires);
         break;
       }
-      if constexpr (!kOctilinear) {
+      {
       // No single path gains: move a Steiner point. A key node u of degree three or more (or a
       // pin of degree two or more), with the key paths at it taken out, leaves one part per path
       // (and the pin, a part of its own); the point s (in free space) with the least sum of the
@@ -493,7 +489,7 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t, std
         std::vector<Point> memo_key{g.nodes[u]};
         std::vector<char> gone(g.edges.size(), 0);
         std::vector<std::size_t> far;
-        std::int64_t old_length = 0;
+        Len old_length{};
         for (const std::size_t pi : at_u) {
           const KeyPath<Len>& kp = paths[pi];
           for (const std::size_t e : kp.edges) gone[e] = 1;
@@ -527,9 +523,15 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t, std
           y0 = std::min(y0, g.nodes[f].y), y1 = std::max(y1, g.nodes[f].y);
         }
         std::vector<geom::Coord> gx, gy;
+        std::vector<std::int64_t> gsum, gdiff;  // octilinear: the diagonals x + y and x - y
         for (const Point q : g.nodes) {
           if (x0 <= q.x && q.x <= x1) gx.push_back(q.x);
           if (y0 <= q.y && q.y <= y1) gy.push_back(q.y);
+          if constexpr (kOctilinear)
+            if (x0 <= q.x && q.x <= x1 && y0 <= q.y && q.y <= y1) {
+              gsum.push_back(std::int64_t{q.x} + q.y);
+              gdiff.push_back(std::int64_t{q.x} - q.y);
+            }
         }
         auto add_obstacles = [](std::vector<geom::Coord>& v, const std::vector<geom::Coord>& all, geom::Coord lo,
                                 geom::Coord hi) {
@@ -542,10 +544,37 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t, std
           std::sort(v->begin(), v->end());
           v->erase(std::unique(v->begin(), v->end()), v->end());
         }
+        for (auto* v : {&gsum, &gdiff}) {
+          std::sort(v->begin(), v->end());
+          v->erase(std::unique(v->begin(), v->end()), v->end());
+        }
         if (gx.size() * gy.size() > kMoveGridPoints) continue;
         std::vector<Point> grid;
         for (const geom::Coord x : gx)
           for (const geom::Coord y : gy) grid.push_back({x, y});
+        if constexpr (kOctilinear) {
+          // Octilinear: also where a diagonal of a node meets another node's line, horizontal,
+          // vertical or the other diagonal (at integer points only), within the box: the lines
+          // of the octilinear Hanan grid of the nodes (the obstacle vertices add axis lines only).
+          const std::size_t diagonal_points = (gsum.size() + gdiff.size()) * (gx.size() + gy.size()) + gsum.size() * gdiff.size();
+          if (grid.size() + diagonal_points <= kMoveGridPoints) {
+          auto add = [&](std::int64_t x, std::int64_t y) {
+            if (x0 <= x && x <= x1 && y0 <= y && y <= y1) grid.push_back({static_cast<geom::Coord>(x), static_cast<geom::Coord>(y)});
+          };
+          for (const std::int64_t c : gsum) {
+            for (const geom::Coord x : gx) add(x, c - x);
+            for (const geom::Coord y : gy) add(c - y, y);
+            for (const std::int64_t d : gdiff)
+              if ((c + d) % 2 == 0) add((c + d) / 2, (c - d) / 2);
+          }
+          for (const std::int64_t d : gdiff) {
+            for (const geom::Coord x : gx) add(x, x - d);
+            for (const geom::Coord y : gy) add(y + d, y);
+          }
+          std::sort(grid.begin(), grid.end());
+          grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
+          }
+        }
         keep_free(grid, wavefront_);
         // not where blockages touch: the parts' paths would meet there from different free wedges,
         // and the tree would pass through the pinch (FORMAT.md forbids it)
@@ -567,26 +596,34 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t, std
           if (!gone[e] && part[g.edges[e].first] >= 0)
             part_segments[static_cast<std::size_t>(part[g.edges[e].first])].push_back(
                 {g.nodes[g.edges[e].first], g.nodes[g.edges[e].second]});
-        // A lower bound of each part's distance: the L1 distance to its metal, blockages ignored.
-        // Candidates whose bound, with the exact distances of the parts run so far, reaches the
-        // old length are dropped before each run (most moves end here without a run at all).
-        auto l1_to_part = [&](Point q, std::size_t k) {
-          std::int64_t d = std::numeric_limits<std::int64_t>::max();
+        // A lower bound of each part's distance: the distance (L1, or octilinear) to the box of
+        // each of its points and segments, blockages ignored (exact for a point and an axis
+        // segment; the length grows with |dx| and |dy|, which a box only shortens). Candidates
+        // whose bound, with the exact distances of the parts run so far, reaches the old length
+        // are dropped before each run (most moves end here without a run at all).
+        auto bound_to_part = [&](Point q, std::size_t k) {
           auto gap = [](geom::Coord v, geom::Coord lo, geom::Coord hi) {
             return v < lo ? std::int64_t{lo} - v : v > hi ? std::int64_t{v} - hi : std::int64_t{0};
           };
-          for (const Point a : part_points[k]) d = std::min(d, gap(q.x, a.x, a.x) + gap(q.y, a.y, a.y));
+          std::optional<Len> d;
+          auto take = [&](std::int64_t dx, std::int64_t dy) {
+            Len l;
+            if constexpr (kOctilinear) l = geom::octilinear_length(dx, dy);
+            else l = dx + dy;
+            if (!d || l < *d) d = l;
+          };
+          for (const Point a : part_points[k]) take(gap(q.x, a.x, a.x), gap(q.y, a.y, a.y));
           for (const geom::Segment& sg : part_segments[k])
-            d = std::min(d, gap(q.x, std::min(sg.a.x, sg.b.x), std::max(sg.a.x, sg.b.x)) +
-                                gap(q.y, std::min(sg.a.y, sg.b.y), std::max(sg.a.y, sg.b.y)));
-          return d;
+            take(gap(q.x, std::min(sg.a.x, sg.b.x), std::max(sg.a.x, sg.b.x)),
+                 gap(q.y, std::min(sg.a.y, sg.b.y), std::max(sg.a.y, sg.b.y)));
+          return *d;  // (every part has a point)
         };
         const std::size_t parts = part_points.size();
-        std::vector<std::int64_t> bound(grid.size() * parts);  // [j * parts + k]
-        std::vector<std::int64_t> sum(grid.size(), 0);  // exact so far plus the bounds of the rest
+        std::vector<Len> bound(grid.size() * parts);  // [j * parts + k]
+        std::vector<Len> sum(grid.size(), Len{});  // exact so far plus the bounds of the rest
         for (std::size_t j = 0; j < grid.size(); ++j)
           for (std::size_t k = 0; k < parts; ++k) {
-            bound[j * parts + k] = l1_to_part(grid[j], k);
+            bound[j * parts + k] = bound_to_part(grid[j], k);
             sum[j] += bound[j * parts + k];
           }
         std::vector<std::size_t> alive;

@@ -161,29 +161,35 @@ bool pin_shape_supported(const geom::Polygon& pin) {
   return ok;
 }
 
-PinShapes::PinShapes(std::span<const geom::Polygon> obstacles, std::optional<geom::Box> domain)
-    : domain_(domain), obstacles_(obstacles.begin(), obstacles.end()) {
-  auto add = [&](const geom::Ring& r) {
-    for (const Point v : r) {
-      xs_.push_back(v.x);
-      ys_.push_back(v.y);
+PinShapes::PinShapes(std::span<const geom::Polygon> obstacles, std::optional<geom::Box> domain, bool octilinear)
+    : octilinear_(octilinear), domain_(domain), obstacles_(obstacles.begin(), obstacles.end()) {
+  auto add_point = [&](Point v) {
+    xs_.push_back(v.x);
+    ys_.push_back(v.y);
+    if (octilinear_) {
+      sums_.push_back(i64{v.x} + v.y);
+      diffs_.push_back(i64{v.x} - v.y);
     }
+  };
+  auto add = [&](const geom::Ring& r) {
+    for (const Point v : r) add_point(v);
   };
   for (const geom::Polygon& p : obstacles_) {
     add(p.outer);
     for (const geom::Ring& h : p.holes) add(h);
     boxes_.push_back(ring_box(p.outer));
   }
-  if (domain_) {
-    for (const geom::Coord x : {domain_->lo.x, domain_->hi.x}) xs_.push_back(x);
-    for (const geom::Coord y : {domain_->lo.y, domain_->hi.y}) ys_.push_back(y);
-  }
+  if (domain_)
+    for (const geom::Coord x : {domain_->lo.x, domain_->hi.x})
+      for (const geom::Coord y : {domain_->lo.y, domain_->hi.y}) add_point({x, y});
   auto distinct = [](auto& v) {
     std::sort(v.begin(), v.end());
     v.erase(std::unique(v.begin(), v.end()), v.end());
   };
   distinct(xs_);
   distinct(ys_);
+  distinct(sums_);
+  distinct(diffs_);
 }
 
 std::optional<std::size_t> PinShapes::meets_obstacle(const geom::Polygon& pin) const {
@@ -240,6 +246,26 @@ std::vector<Point> PinShapes::candidates(const geom::Polygon& pin, const geom::P
         out.push_back(at_x(*it));
       for (const Point o : others)
         if (o.x >= xlo && o.x <= xhi) out.push_back(at_x(o.x));
+    }
+    if (octilinear_ && dx != 0 && dy != 0) {
+      // Projections along the other diagonal: on an edge along (1, 1) (x - y = k), the point
+      // with x + y = c is at x = (c + k) / 2; on one along (1, -1) (x + y = c), the point with
+      // x - y = d is at x = (c + d) / 2. Half-integers give both integer neighbours.
+      const bool rising = (dx > 0) == (dy > 0);
+      const i64 line = rising ? i64{a.x} - a.y : i64{a.x} + a.y;
+      auto project = [&](i64 other_line) {  // x + y (rising edge) or x - y (falling edge)
+        const i64 twice = other_line + line;
+        for (const i64 x : {floor_div(twice, 2), ceil_div(twice, 2)})
+          if (x >= xlo && x <= xhi) out.push_back(at_x(x));
+      };
+      // the other lines whose projection lies in [xlo, xhi]: 2 xlo - line <= other <= 2 xhi - line
+      const std::vector<i64>& lines = rising ? sums_ : diffs_;
+      for (auto it = std::lower_bound(lines.begin(), lines.end(), 2 * xlo - line); it != lines.end() && *it <= 2 * xhi - line; ++it)
+        project(*it);
+      for (const Point o : others) {
+        const i64 other_line = rising ? i64{o.x} + o.y : i64{o.x} - o.y;
+        if (other_line >= 2 * xlo - line && other_line <= 2 * xhi - line) project(other_line);
+      }
     }
   });
   std::sort(out.begin(), out.end());

@@ -57,7 +57,9 @@ class PinShapes {
   // Obstacles as geom::normalize_obstacles() returns them; the domain (the closed routing box),
   // when there is one: its corners' rows and columns are projected as the obstacle vertices' are,
   // and so are the points where the other pin's edges cross its sides.
-  explicit PinShapes(std::span<const geom::Polygon> obstacles, std::optional<geom::Box> domain = std::nullopt);
+  // octilinear: candidates() adds the diagonal projections onto 45-degree edges (below).
+  explicit PinShapes(std::span<const geom::Polygon> obstacles, std::optional<geom::Box> domain = std::nullopt,
+                     bool octilinear = false);
 
   // The points of pin `pin` an optimal wire from it may be taken to start at: its vertices, and
   // the horizontal and vertical projections onto its edges of every obstacle vertex, domain
@@ -76,9 +78,15 @@ class PinShapes {
   // Octilinear: along a horizontal edge the octilinear length of s - r, max(|dx|, |dy|) +
   // (sqrt2 - 1) min(|dx|, |dy|) with |dy| fixed, is convex and least where dx = 0, at r's
   // vertical projection (likewise for vertical edges), so the argument holds as it is; along a
-  // 45-degree edge the least point is r's projection along the other diagonal, which can be a
-  // half-integer point, which is why the octilinear router takes horizontal and vertical edges
-  // only.
+  // 45-degree edge it is convex with three breakpoints, where dx = 0, where dy = 0 (r's vertical
+  // and horizontal projections) and where |dx| = |dy| (r's projection along the other diagonal),
+  // so with `octilinear` the candidates add, on each 45-degree edge, the projections along the
+  // other diagonal of the same points (obstacle vertices, domain corners, the other pin's points
+  // above). Such a projection is a half-integer point when x + y of the point and x - y of the
+  // edge's line differ in parity; wire vertices are integers, and a convex function's least value
+  // over the integer points of the edge is at one of the two integer points beside its least
+  // point, so both are taken (tests/router/pin_test.cpp checks the lengths against every pair
+  // of free integer points of two shapes).
   //
   // For length + C * bends and for the link metric (rectilinear paths): take an optimal path and
   // let s be its last point on the pin. If s is not a vertex, slide the first link sideways,
@@ -109,6 +117,8 @@ class PinShapes {
 
  private:
   std::vector<geom::Coord> xs_, ys_;  // the distinct x and y of obstacle vertices, ascending
+  bool octilinear_ = false;
+  std::vector<std::int64_t> sums_, diffs_;  // octilinear: their distinct x + y and x - y, ascending
   std::optional<geom::Box> domain_;
   std::vector<geom::Polygon> obstacles_;
   std::vector<geom::Box> boxes_;

@@ -94,15 +94,12 @@ std::optional<Target> pin_target(const io::Layout& layout, const std::string& ne
 }
 
 // A shape the routers do not take as a target: ROUTE-0005 with the reason, else "".
-std::string shape_refusal(const Target& t, bool octilinear, const std::function<bool(const geom::Polygon&)>& meets,
+std::string shape_refusal(const Target& t, const std::function<bool(const geom::Polygon&)>& meets,
                           const std::function<std::string()>& why_under) {
   if (t.point) return "";
   if (!router::pin_shape_supported(t.pin))
     return t.label + " has a shape edge that is not horizontal, vertical or at 45 degrees; such shape pins are not "
                      "routed yet";
-  if (octilinear && !router::OctRouter::supports_pin(t.pin))
-    return t.label + " has a shape edge at 45 degrees; octilinear wires are routed to shapes with horizontal and "
-                     "vertical edges only in this version (rectilinear wires take 45-degree edges)";
   if (meets(t.pin)) return t.label + " " + why_under();
   return "";
 }
@@ -119,7 +116,7 @@ int bend_path(const io::Layout& layout, const RoutingOptions& routing, geom::Poi
   const router::BendRouter router(norm.domain, norm.obstacles);
   const router::BendMetric metric = link ? router::BendMetric::Link : router::BendMetric::Combined;
   const std::string refused = shape_refusal(
-      target, false, [&](const geom::Polygon& g) { return router.pin_meets_obstacle(g).has_value(); },
+      target, [&](const geom::Polygon& g) { return router.pin_meets_obstacle(g).has_value(); },
       [&] { return obs.why_under(layout, target.pin); });
   if (!refused.empty()) {
     print_usage_error("ROUTE-0005", refused);
@@ -191,7 +188,7 @@ int bend_paths_to(const io::Layout& layout, const RoutingOptions& routing, const
   if (to_pin.empty()) j["to"] = {target.point->x, target.point->y};
   else j["to_pin"] = {{"net", to_pin[0]}, {"pin", to_pin[1]}};
   const std::string refused = shape_refusal(
-      target, false, [&](const geom::Polygon& g) { return router.pin_meets_obstacle(g).has_value(); },
+      target, [&](const geom::Polygon& g) { return router.pin_meets_obstacle(g).has_value(); },
       [&] { return obs.why_under(layout, target.pin); });
   if (!refused.empty()) {  // no structure: every record says why
     print_usage_error("ROUTE-0005", refused);
@@ -344,13 +341,13 @@ void add_path(CLI::App& app, int& status) {
     if (oct) {
       router::OctRouter r(norm.domain, norm.obstacles);
       const std::string refused = shape_refusal(
-          *target, true, [&](const geom::Polygon& g) { return r.pin_meets_obstacle(g).has_value(); }, [&] { return under; });
+          *target, [&](const geom::Polygon& g) { return r.pin_meets_obstacle(g).has_value(); }, [&] { return under; });
       if (!refused.empty()) return refuse(refused);
       w = target->point ? r.shortest(*from, *target->point) : r.shortest(from_pin, target->pin);
     } else {
       router::L1Router r(norm.domain, norm.obstacles);
       const std::string refused = shape_refusal(
-          *target, false, [&](const geom::Polygon& g) { return r.pin_meets_obstacle(g).has_value(); }, [&] { return under; });
+          *target, [&](const geom::Polygon& g) { return r.pin_meets_obstacle(g).has_value(); }, [&] { return under; });
       if (!refused.empty()) return refuse(refused);
       router::L1Wire l = target->point ? r.shortest(*from, *target->point) : r.shortest(from_pin, target->pin);
       w = {l.status, std::nullopt, std::move(l.polygonal), std::move(l.points)};

@@ -109,11 +109,6 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router
       return fail("ROUTE-0005", "pin \"" + pin->name +
                                     "\" has a shape edge that is not horizontal, vertical or at 45 "
                                     "degrees; such shape pins are not routed yet");
-    if (!Router::supports_pin(*g))
-      return fail("ROUTE-0005", "pin \"" + pin->name +
-                                    "\" has a shape edge at 45 degrees; octilinear wires are routed "
-                                    "to shapes with horizontal and vertical edges only in this "
-                                    "version (rectilinear wires take 45-degree edges)");
     if (router.pin_meets_obstacle(*g))
       return fail("ROUTE-0005", "pin \"" + pin->name +
                                     "\" lies partly under a blockage; shape pins that overlap "

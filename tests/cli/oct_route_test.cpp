@@ -207,21 +207,31 @@ TEST(OctRoute, GeneratedLayoutsMatchTheReference) {
   EXPECT_GT(diagonal, sanitized_share(30, 3));
 }
 
-TEST(OctRoute, DemoRoutesAndNamesTheDiamondPin) {
+// The demo with octilinear wires: every net routed, bump's to the diamond pin "ball" (45-degree
+// shape edges, taken since 2026-12-03; before, ROUTE-0005 named it), its wire ending on the
+// diamond's boundary; the file passes the whole taut check (the clearance included).
+TEST(OctRoute, DemoRoutesEveryNetWithTheDiamondPin) {
   const std::string dir = temp_dir("oct_route_demo");
   const auto r = run_taut({"route", kDemo, "-o", dir + "/r.xml", "--orientations", "octilinear", "--svg",
                            dir + "/r.svg"});
-  EXPECT_EQ(r.status, 1) << r.err;
-  // bump's ball is a diamond: 45-degree shape edges are not taken for octilinear wires
-  EXPECT_NE(r.err.find("[ROUTE-0005] net \"bump\" not routed: pin \"ball\" has a shape edge at 45 degrees"),
-            std::string::npos)
-      << r.err;
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err.find("ROUTE-0005"), std::string::npos) << r.err;
   io::ReadResult rr = io::read_layout(dir + "/r.xml");
   ASSERT_TRUE(rr.layout && rr.layout->routes);
   EXPECT_EQ(rr.layout->routes->orientations, "octilinear");
   int routed = 0;
-  for (const io::Route& route : rr.layout->routes->routes) routed += route.status == "routed";
-  EXPECT_EQ(routed, 4);  // en, sda, rst, and clk (3 pins: a shortest-path tree); bump has a diamond pin
+  for (const io::Route& route : rr.layout->routes->routes) {
+    routed += route.status == "routed";
+    if (route.net != "bump") continue;
+    ASSERT_EQ(route.wires.size(), 1u);
+    ASSERT_FALSE(route.wires[0].points.empty());
+    const auto end = route.wires[0].points.back(), start = route.wires[0].points.front();
+    // the ball: the diamond |x - 22500| + |y - 2500| <= 500 (designs/demo.xml)
+    auto on_ball = [](auto p) { return std::abs(p.x - 22500) + std::abs(p.y - 2500) == 500; };
+    EXPECT_TRUE(on_ball(end) || on_ball(start)) << end.x << "," << end.y;
+  }
+  EXPECT_EQ(routed, 5);
+  EXPECT_EQ(run_taut({"check", dir + "/r.xml", "-q"}).status, 0);
   EXPECT_TRUE(file_exists(dir + "/r.svg"));
 }
 

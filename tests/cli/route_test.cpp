@@ -623,16 +623,16 @@ TEST(Route, DemoRoutesEveryNet) {
   EXPECT_EQ(bad_tree.status, 2);
   EXPECT_NE(bad_tree.err.find("CLI-0030"), std::string::npos) << bad_tree.err;
   EXPECT_FALSE(file_exists(dir + "/x.xml"));
-  // octilinear wires take --tree steiner too (no ROUTE-0009): the routed file passes the whole
-  // check (bump's diamond pin is not routed octilinear: exit status 1), and clk's octilinear
+  // octilinear wires take --tree steiner too (no ROUTE-0009): every net routed (bump's diamond
+  // pin too, since 2026-12-03), the routed file passes the whole check, and clk's octilinear
   // Steiner tree is shorter than its octilinear shortest-path tree
   const auto oct_run = run_taut({"route", kDemo, "--tree", "steiner", "--orientations", "octilinear", "-o", dir + "/o.xml",
                                  "--stats", dir + "/o.json"});
-  EXPECT_EQ(oct_run.status, 1) << oct_run.err;
+  EXPECT_EQ(oct_run.status, 0) << oct_run.err;
   EXPECT_EQ(oct_run.err.find("ROUTE-0009"), std::string::npos) << oct_run.err;
   EXPECT_EQ(run_taut({"check", dir + "/o.xml", "-q"}).status, 0);
   const auto oct_spt = run_taut({"route", kDemo, "--orientations", "octilinear", "-o", dir + "/ospt.xml", "--stats", dir + "/ospt.json"});
-  EXPECT_EQ(oct_spt.status, 1) << oct_spt.err;
+  EXPECT_EQ(oct_spt.status, 0) << oct_spt.err;
   const auto oj = nlohmann::json::parse(read_text(dir + "/o.json")), osj = nlohmann::json::parse(read_text(dir + "/ospt.json"));
   EXPECT_LT(std::stod(oj["routes"]["clk"]["length"].dump()), std::stod(osj["routes"]["clk"]["length"].dump()))
       << oj["routes"]["clk"].dump() << " " << osj["routes"]["clk"].dump();  // 22,405.382 against 39,330.866

@@ -628,7 +628,9 @@ TEST(NetRouter, ReviewCases) {
 // touches a blockage by hand, then random layouts where every pad touches or nearly touches a
 // blockage (sloped triangles too); every routed net passes the independent checker, and the cut
 // routes more nets than the same layouts without it (NetRules::cover_pieces > 0 turns it off, as
-// for the bend-aware metrics).
+// for the bend-aware metrics). The same layouts with octilinear wires (pads with 45-degree edges
+// are taken since 2026-12-03; Steiner trees on every other layout): every routed net passes the
+// checker, and at least 60 more route than the rectilinear run without the cut.
 TEST(NetRouter, OctilinearPadsNearBlockagesAreReached) {
   {
     const geom::Box domain{{-200, -200}, {200, 200}};
@@ -645,7 +647,7 @@ TEST(NetRouter, OctilinearPadsNearBlockagesAreReached) {
       }
     }
   }
-  long long layouts = 0, pads = 0, with_cut = 0, without = 0, checked = 0;
+  long long layouts = 0, pads = 0, with_cut = 0, without = 0, checked = 0, oct_routed = 0;
   const int n = static_cast<int>(sanitized_share(120, 4));
   for (int seed = 1; seed <= n; ++seed) {
     std::mt19937 rng(static_cast<unsigned>(seed) * 7919u);
@@ -714,12 +716,22 @@ TEST(NetRouter, OctilinearPadsNearBlockagesAreReached) {
         ++checked;
       }
     }
+    // octilinear wires to the same pads (45-degree edges taken since 2026-12-03), with Steiner
+    // trees on every other layout
+    {
+      router::NetRouter nr(norm.domain, norm.obstacles, nets, {w, s, 0});
+      nr.run(router::NetRouter::oct_router(seed % 2 == 0));
+      for (const router::NetOutcome& o : nr.outcomes()) oct_routed += o.routed;
+      const router::CheckResult cr = router::check_routes(norm, check_nets(nets, nr), {w, s});
+      EXPECT_TRUE(cr.problems.empty()) << "seed " << seed << " octilinear: " << cr.problems[0].message;
+    }
     ASSERT_FALSE(::testing::Test::HasFailure()) << "seed " << seed;
   }
   std::printf("%lld layouts, %lld pads near blockages: %lld nets routed with the pad cut (all passing the checker), %lld "
-              "without it\n",
-              layouts, pads, with_cut, without);
+              "without it; octilinear wires: %lld routed (all passing the checker)\n",
+              layouts, pads, with_cut, without, oct_routed);
   EXPECT_GE(with_cut, without + sanitized_share(60, 4));
+  EXPECT_GE(oct_routed, without + sanitized_share(60, 4));
   EXPECT_GE(checked, sanitized_share(100, 4));
 }
 

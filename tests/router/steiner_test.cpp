@@ -238,7 +238,7 @@ TEST(SteinerTree, PadsLegalAndNearTheMinimum) {
 // vertical or diagonal, its length (a + b sqrt2, exact) is what its wires measure, at least the
 // minimum, equal to it for two pins (a shortest octilinear path), and at most twice it (Prim's
 // rule with exact distances: at most the terminals' minimum spanning tree); unreachable exactly
-// when the oracle finds no tree; the improvement pass (path re-embedding, no Steiner point moves)
+// when the oracle finds no tree; the improvement pass (path re-embedding and Steiner point moves)
 // never lengthens a tree. Printed: the mean and worst excess, without the pass too, and the
 // shortest-path tree's (what octilinear nets got before). Held to the target for trees
 // (mean under 2 %, worst under 10 %).
@@ -337,6 +337,32 @@ TEST(SteinerTree, WalledInAndBlockedPins) {
   EXPECT_EQ(u.failed, std::optional<std::size_t>(1));
 }
 
+// A net that needs a Steiner point move to reach its minimum (the two tests below).
+template <class Len>
+struct HardNet {
+  std::vector<geom::Box> boxes;
+  std::vector<Point> pins;
+  Len minimum;
+};
+// Each net on the domain [0, side]^2: the oracle gives the minimum, the search without the
+// improvement pass is longer, the improved tree is the minimum, legal (tree_problem).
+template <class Router, class Len, class Oracle>
+void expect_hard_nets_reach_minimum(const std::vector<HardNet<Len>>& cases, geom::Coord side, Oracle minimal_length) {
+  for (const HardNet<Len>& c : cases) {
+    const geom::NormalizedObstacles norm = geom::normalize_obstacles(box_polygons(c.boxes), geom::Box{{0, 0}, {side, side}});
+    Router router(norm.domain, norm.obstacles);
+    EXPECT_EQ(minimal_length(norm, c.pins), std::optional<Len>(c.minimum));
+    const auto plain = router.steiner(c.pins, 8, false);
+    const auto t = router.steiner(c.pins);
+    ASSERT_EQ(t.status, router::WireStatus::Ok);
+    EXPECT_GT(plain.length, c.minimum);
+    EXPECT_EQ(t.length, c.minimum);
+    std::vector<router::CheckPin> check_pins;
+    for (std::size_t i = 0; i < c.pins.size(); ++i) check_pins.push_back({"p" + std::to_string(i), c.pins[i], std::nullopt, static_cast<int>(i)});
+    EXPECT_EQ(tree_problem(norm, std::move(check_pins), t), std::nullopt);
+  }
+}
+
 // The two nets that decided the worst excess before the Steiner point moves (seed 1135 of this
 // file's set and seed 1037 of another): no single path of the improved tree gains, but moving a
 // branch point does. 1135: the point joining the pin at (27,10), the trunk from the left and the
@@ -344,12 +370,7 @@ TEST(SteinerTree, WalledInAndBlockedPins) {
 // two, is joined to a trunk at x = 19 that the pin at (19,7) now climbs (59 -> 52; a path then
 // re-leaves the trunk: 51). Both are the exact minima.
 TEST(SteinerTree, PointMovesReachTheMinimumOfTwoHardNets) {
-  struct Case {
-    std::vector<geom::Box> boxes;
-    std::vector<Point> pins;
-    std::int64_t minimum;
-  };
-  const std::vector<Case> cases{
+  const std::vector<HardNet<std::int64_t>> cases{
       {{{{3, 24}, {11, 31}}, {{12, 5}, {18, 12}}, {{5, 10}, {7, 18}}, {{33, 27}, {34, 32}}, {{32, 9}, {39, 12}}, {{33, 13}, {34, 19}}},
        {{3, 37}, {0, 24}, {6, 24}, {27, 10}, {12, 30}, {39, 20}},
        72},
@@ -357,22 +378,28 @@ TEST(SteinerTree, PointMovesReachTheMinimumOfTwoHardNets) {
        {{27, 18}, {20, 36}, {12, 35}, {19, 42}, {19, 7}},
        51},
   };
-  for (const Case& c : cases) {
-    const geom::NormalizedObstacles norm = geom::normalize_obstacles(box_polygons(c.boxes), geom::Box{{0, 0}, {44, 44}});
-    router::L1Router router(norm.domain, norm.obstacles);
-    EXPECT_EQ(oracle::steiner_minimal_length(norm.domain, norm.obstacles, c.pins), std::optional<std::int64_t>(c.minimum));
-    const auto plain = router.steiner(c.pins, 8, false);
-    const auto t = router.steiner(c.pins);
-    ASSERT_EQ(t.status, router::WireStatus::Ok);
-    EXPECT_GT(plain.length, c.minimum);
-    EXPECT_EQ(t.length, c.minimum);
-    router::CheckNet net;
-    net.name = "n";
-    net.routed = true;
-    for (std::size_t i = 0; i < c.pins.size(); ++i) net.pins.push_back({"p" + std::to_string(i), c.pins[i], std::nullopt, static_cast<int>(i)});
-    for (const auto& w : t.wires) net.wires.push_back({w, 100});
-    EXPECT_TRUE(router::check_routes(norm, std::vector<router::CheckNet>{net}).problems.empty());
-  }
+  expect_hard_nets_reach_minimum<router::L1Router>(cases, 44, [](const geom::NormalizedObstacles& n, const std::vector<Point>& p) {
+    return oracle::steiner_minimal_length(n.domain, n.obstacles, p);
+  });
+}
+
+// The two octilinear nets that decided the worst excess before octilinear trees got Steiner point
+// moves (seeds 774 and 82 of OctilinearLegalAndNearTheMinimum's set): with the path re-embedding
+// alone they stayed at 55 + 7 sqrt2 (7.9 % over the minimum) and 32 + 10 sqrt2 (7.0 %); moving a
+// branch point, to a candidate where a node's diagonal meets another node's line, reaches the
+// exact minimum of the oracle (Dreyfus-Wagner on the 8-connected lattice).
+TEST(SteinerTree, OctilinearPointMovesReachTheMinimumOfTwoHardNets) {
+  const std::vector<HardNet<geom::Root2>> cases{
+      {{{{14, 15}, {21, 18}}, {{14, 8}, {15, 13}}, {{10, 22}, {17, 29}}},
+       {{12, 4}, {28, 4}, {5, 6}, {26, 4}, {18, 24}, {3, 30}},
+       {46, 10}},
+      {{{{7, 10}, {8, 17}}, {{22, 1}, {27, 7}}, {{1, 13}, {3, 17}}, {{11, 19}, {14, 23}}},
+       {{15, 1}, {2, 24}, {27, 5}, {7, 22}},
+       {12, 22}},
+  };
+  expect_hard_nets_reach_minimum<router::OctRouter>(cases, 30, [](const geom::NormalizedObstacles& n, const std::vector<Point>& p) {
+    return oracle::oct_steiner_minimal_length(n.domain, n.obstacles, p);
+  });
 }
 
 // Two blockages touching at a corner (a pinch, which no wire may pass): pins on both sides of it
