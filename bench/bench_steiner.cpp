@@ -7,7 +7,7 @@
 // tenth of the layout's side around a random free point, "global" pins anywhere. Every tree is
 // built on the same router; a net where either fails is counted and left out of the ratios.
 // A second table does the same for OCTILINEAR wires (OctRouter::steiner against OctRouter::tree,
-// lengths measured in d8; no improvement pass there).
+// lengths measured in d8; its improvement pass included).
 //
 //   bench_steiner [--sizes N,N,..] [--pins K,K,..] [--nets M] [--kind K]
 #include <algorithm>

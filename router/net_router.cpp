@@ -81,18 +81,53 @@ bool is_rectangle(const Polygon& p) {
 }
 
 // A shape pin cut out of its net's grown blockage edges (a pad, see NetSpace::obstacles): a
-// rectangle, or with `shapes` any convex polygon without holes whose edges are horizontal,
-// vertical or at 45 degrees (not for the bend-aware metrics, whose router takes rectilinear
-// obstacles only: a 45-degree cut would give them sloped edges).
+// rectangle, or with `shapes` any shape whose edges are horizontal, vertical or at 45 degrees
+// (convex or not, holes too: pad_pieces; not for the bend-aware metrics, whose router takes
+// rectilinear obstacles only: a 45-degree cut would give them sloped edges).
 bool is_pad(const Polygon& p, bool shapes) {
-  return is_rectangle(p) || (shapes && p.holes.empty() && geom::octilinear_convex_ring(p.outer));
+  return is_rectangle(p) || (shapes && !is_point_pin(p) && pin_shape_supported(p));
 }
-// Its ring counter-clockwise (without repeated vertices or ones where it runs straight on).
-Ring pad_ring(const Polygon& p) {
-  if (auto r = geom::octilinear_convex_ring(p.outer)) return *r;
-  Ring r = p.outer;
-  if (geom::twice_area(r) < 0) std::reverse(r.begin(), r.end());
-  return r;
+// A pad as convex pieces whose union is the pad, each a counter-clockwise octilinear_convex_ring
+// (what geom::convex_minus_pad takes): the pad itself when convex; else its vertical slabs
+// between consecutive vertex x's, each cut into the trapezoids between consecutive edges that
+// span it (even-odd, so holes stay out; the edges are at 0, 45 or 135 degrees, so every corner
+// is an integer point). Cutting every piece out of a grown blockage edge cuts the pad out (a
+// piece's open interior is removed; the segments between pieces lie inside the pad and go
+// with their neighbours, as the cut keeps only pieces of positive area).
+std::vector<Ring> pad_pieces(const Polygon& p) {
+  if (p.holes.empty())
+    if (auto r = geom::octilinear_convex_ring(p.outer)) return {*r};
+  std::vector<std::pair<Point, Point>> edges;  // non-vertical, left to right
+  std::vector<geom::Coord> xs;
+  for_each_pin_edge(p, [&](Point a, Point b) {
+    xs.push_back(a.x);
+    if (a.x != b.x) edges.push_back(a.x < b.x ? std::pair{a, b} : std::pair{b, a});
+  });
+  std::sort(xs.begin(), xs.end());
+  xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+  std::vector<Ring> out;
+  for (std::size_t k = 0; k + 1 < xs.size(); ++k) {
+    const geom::Coord x0 = xs[k], x1 = xs[k + 1];
+    // (y at x0, y at x1) of each edge spanning the slab: exact, |dy| = |dx| or 0
+    std::vector<std::pair<std::int64_t, std::int64_t>> ys;
+    for (const auto& [a, b] : edges)
+      if (a.x <= x0 && x1 <= b.x) {
+        const std::int64_t s = (std::int64_t{b.y} - a.y) / (std::int64_t{b.x} - a.x);  // -1, 0 or 1
+        ys.emplace_back(a.y + s * (x0 - a.x), a.y + s * (x1 - a.x));
+      }
+    // edges do not cross inside the slab: ordered by their sum of ends
+    std::sort(ys.begin(), ys.end(), [](const auto& u, const auto& v) { return u.first + u.second < v.first + v.second; });
+    for (std::size_t i = 0; i + 1 < ys.size(); i += 2) {
+      const auto [b0, b1] = ys[i];
+      const auto [t0, t1] = ys[i + 1];
+      const Ring trapezoid{{x0, static_cast<geom::Coord>(b0)},
+                           {x1, static_cast<geom::Coord>(b1)},
+                           {x1, static_cast<geom::Coord>(t1)},
+                           {x0, static_cast<geom::Coord>(t0)}};
+      if (auto r = geom::octilinear_convex_ring(trapezoid)) out.push_back(*r);
+    }
+  }
+  return out;
 }
 
 // Do the interiors of two convex counter-clockwise polygons meet? Not when an edge line of one
@@ -416,9 +451,14 @@ geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel lev
       if (is_point_pin(pin)) {
         access.push_back(geom::grown_box(Box{pin.outer[0], pin.outer[0]}, a_));
         access_ring.emplace_back();
-      } else if (is_pad(pin, cut_shapes_)) {
+      } else if (is_rectangle(pin)) {
         access.push_back(box_of(pin.outer));
-        access_ring.push_back(is_rectangle(pin) ? Ring{} : pad_ring(pin));
+        access_ring.emplace_back();
+      } else if (is_pad(pin, cut_shapes_)) {
+        for (Ring& piece : pad_pieces(pin)) {  // (a concave pad: one box per convex piece)
+          access.push_back(box_of(piece));
+          access_ring.push_back(std::move(piece));
+        }
       }
     }
   }
@@ -762,7 +802,8 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
     bool alone = true;
     for (std::size_t j = 0; j < pins.pins.size() && alone; ++j)
       if (j != i) alone = !boxes_meet(b, box_of(pins.pins[j].outer));
-    if (alone) pads.push_back(pad_ring(pins.pins[i]));
+    if (alone)
+      for (Ring& piece : pad_pieces(pins.pins[i])) pads.push_back(std::move(piece));
   }
   while (true) {
     if (options_.stop && options_.stop()) throw NetRouterStopped();

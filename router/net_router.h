@@ -26,12 +26,12 @@
 //     exactly the pitch between two wires, does not take a wire although one would be legal
 //     there; gaps one unit wider do;
 //   - a net's own pads (shape pins that are rectangles, or, with NetRules::cover_pieces 0, any
-//     convex shape whose edges are horizontal, vertical or at 45 degrees: diamonds, octagons)
-//     are cut out of the grown blockage edges like the access squares (geom::convex_minus_box,
-//     geom::convex_minus_pad: so a pad on a blockage's edge is reached from outside the grown
-//     blockage, and the wire's stretch inside the pad is trimmed); other shape pins are not
-//     (a concave one, or with the bend-aware metrics a sloped one): such a pin within a of a
-//     blockage is not routed (ROUTE-0010); a pad that another net's grown wire enters cannot be
+//     shape whose edges are horizontal, vertical or at 45 degrees: diamonds, octagons, and as
+//     convex pieces concave ones and ones with holes) are cut out of the grown blockage edges
+//     like the access squares (geom::convex_minus_box, geom::convex_minus_pad: so a pad on a
+//     blockage's edge is reached from outside the grown blockage, and the wire's stretch inside
+//     the pad is trimmed); with the bend-aware metrics a shape pin that is not a rectangle is
+//     not: such a pin within a of a blockage is not routed (ROUTE-0010); a pad that another net's grown wire enters cannot be
 //     taken, and that net counts as a blocker (ripped up like one);
 //   - cost: every window is a new union of its pieces and a new wavefront (no reuse between
 //     nets); a net whose pins are far apart pays for a window as big as its span.

@@ -623,14 +623,16 @@ TEST(NetRouter, ReviewCases) {
 }
 
 // Pads that are not rectangles (diamonds, octagons, boxes with a cut corner: convex, edges at 0,
-// 45 and 90 degrees) are cut out of their net's grown blockages like rectangular ones
+// 45 and 90 degrees; since 2026-12-03 concave ones too, L-shapes and squares with a V notch, as
+// convex pieces) are cut out of their net's grown blockages like rectangular ones
 // (geom::convex_minus_pad), so a pad touching or near a blockage is reached: a diamond whose tip
 // touches a blockage by hand, then random layouts where every pad touches or nearly touches a
 // blockage (sloped triangles too); every routed net passes the independent checker, and the cut
 // routes more nets than the same layouts without it (NetRules::cover_pieces > 0 turns it off, as
 // for the bend-aware metrics). The same layouts with octilinear wires (pads with 45-degree edges
 // are taken since 2026-12-03; Steiner trees on every other layout): every routed net passes the
-// checker, and at least 60 more route than the rectilinear run without the cut.
+// checker, and at least 60 more route than the rectilinear run without the cut; of the concave
+// pads, at least 20 more route with the cut than without.
 TEST(NetRouter, OctilinearPadsNearBlockagesAreReached) {
   {
     const geom::Box domain{{-200, -200}, {200, 200}};
@@ -648,6 +650,7 @@ TEST(NetRouter, OctilinearPadsNearBlockagesAreReached) {
     }
   }
   long long layouts = 0, pads = 0, with_cut = 0, without = 0, checked = 0, oct_routed = 0;
+  long long concave_pads = 0, concave_cut = 0, concave_without = 0;
   const int n = static_cast<int>(sanitized_share(120, 4));
   for (int seed = 1; seed <= n; ++seed) {
     std::mt19937 rng(static_cast<unsigned>(seed) * 7919u);
@@ -669,6 +672,7 @@ TEST(NetRouter, OctilinearPadsNearBlockagesAreReached) {
     const router::L1Router plain(norm.domain, norm.obstacles);
     const int w = uni(1, 4), s = uni(1, 3);
     std::vector<router::NetPins> nets;
+    std::vector<char> concave;  // per net: its pad is concave
     std::vector<geom::Box> taken;  // every pin's box grown by w + s: pins of different nets stay apart
     auto free_box = [&](const geom::Box& b) {
       for (const geom::Box& t : taken)
@@ -678,14 +682,16 @@ TEST(NetRouter, OctilinearPadsNearBlockagesAreReached) {
     for (int i = 0, k = uni(2, 4); i < k; ++i) {
       // a pad just right of (or above) a blockage rectangle's side: gap 0..2
       const geom::Box& r = rects[rng() % rects.size()];
-      const int size = uni(3, 8), gap = uni(0, 2), kind = uni(0, 2);  // c < size: no repeated vertex
+      const int size = uni(3, 8), gap = uni(0, 2), kind = uni(0, 4);  // c < size: no repeated vertex
       const bool right = rng() % 2;
       const int x0 = right ? r.hi.x + gap : uni(r.lo.x - size, r.hi.x), y0 = right ? uni(r.lo.y - size, r.hi.y) : r.hi.y + gap;
       const int x1 = x0 + 2 * size, y1 = y0 + 2 * size, c = uni(1, size - 1);
       Polygon pad;
       if (kind == 0) pad = Polygon{{{x0, y0 + size}, {x0 + size, y0}, {x1, y0 + size}, {x0 + size, y1}}, {}};  // diamond
       else if (kind == 1) pad = Polygon{{{x0 + c, y0}, {x1 - c, y0}, {x1, y0 + c}, {x1, y1 - c}, {x1 - c, y1}, {x0 + c, y1}, {x0, y1 - c}, {x0, y0 + c}}, {}};
-      else pad = Polygon{{{x0, y0}, {x1, y0}, {x1, y1 - c}, {x1 - c, y1}, {x0, y1}}, {}};  // one corner cut
+      else if (kind == 2) pad = Polygon{{{x0, y0}, {x1, y0}, {x1, y1 - c}, {x1 - c, y1}, {x0, y1}}, {}};  // one corner cut
+      else if (kind == 3) pad = Polygon{{{x0, y0}, {x1, y0}, {x1, y0 + c}, {x0 + c, y0 + c}, {x0 + c, y1}, {x0, y1}}, {}};  // an L
+      else pad = Polygon{{{x0, y0}, {x1, y0}, {x1, y1}, {x0 + size, y0 + size}, {x0, y1}}, {}};  // a V notch from the top
       const geom::Box pb{{x0, y0}, {x1, y1}};
       if (x0 < 0 || y0 < 0 || x1 > 200 || y1 > 200 || plain.pin_meets_obstacle(pad) || !free_box(pb)) continue;
       Point q{};
@@ -698,16 +704,19 @@ TEST(NetRouter, OctilinearPadsNearBlockagesAreReached) {
       taken.push_back(pb);
       taken.push_back({q, q});
       nets.push_back({"n" + std::to_string(i), {pad, Polygon{{q}, {}}}});
+      concave.push_back(kind >= 3);
     }
     if (nets.empty()) continue;
     ++layouts;
     pads += static_cast<long long>(nets.size());
+    concave_pads += std::count(concave.begin(), concave.end(), 1);
     for (const int cover : {0, 16}) {
       router::NetRouter nr(norm.domain, norm.obstacles, nets, {w, s, cover});
       nr.run(router::NetRouter::l1_router(false));
       long long routed = 0;
-      for (const router::NetOutcome& o : nr.outcomes()) {
-        routed += o.routed;
+      for (std::size_t i = 0; i < nets.size(); ++i) {
+        routed += nr.outcomes()[i].routed;
+        if (concave[i]) (cover == 0 ? concave_cut : concave_without) += nr.outcomes()[i].routed;
       }
       (cover == 0 ? with_cut : without) += routed;
       if (cover == 0) {
@@ -728,8 +737,10 @@ TEST(NetRouter, OctilinearPadsNearBlockagesAreReached) {
     ASSERT_FALSE(::testing::Test::HasFailure()) << "seed " << seed;
   }
   std::printf("%lld layouts, %lld pads near blockages: %lld nets routed with the pad cut (all passing the checker), %lld "
-              "without it; octilinear wires: %lld routed (all passing the checker)\n",
-              layouts, pads, with_cut, without, oct_routed);
+              "without it; octilinear wires: %lld routed (all passing the checker); of those pads %lld concave: %lld routed "
+              "with the cut, %lld without it\n",
+              layouts, pads, with_cut, without, oct_routed, concave_pads, concave_cut, concave_without);
+  EXPECT_GE(concave_cut, concave_without + sanitized_share(20, 4));
   EXPECT_GE(with_cut, without + sanitized_share(60, 4));
   EXPECT_GE(oct_routed, without + sanitized_share(60, 4));
   EXPECT_GE(checked, sanitized_share(100, 4));
