@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "geom/predicates.h"
 #include "oracle/oct_oracle.h"
 
 namespace taut::oracle {
@@ -121,14 +122,15 @@ void relax(const Lattice& g, Len* d, std::size_t n, std::size_t stop, const std:
 
 }  // namespace
 
-std::optional<Root2> oct_steiner_minimal_length(const geom::Box& domain, std::span<const geom::Polygon> obstacles,
-                                                 std::span<const Point> terminals) {
+namespace {
+
+// Both overloads: each terminal a set of lattice points (a point pin: one; a shape: every integer
+// point it holds), joined as the header says.
+std::optional<Root2> minimal_length(const geom::Box& domain, std::span<const geom::Polygon> obstacles,
+                                    const std::vector<std::vector<Point>>& terms) {
   const i64 nx = std::max<i64>(0, i64{domain.hi.x} - domain.lo.x + 1);
   const i64 ny = std::max<i64>(0, i64{domain.hi.y} - domain.lo.y + 1);
   if (nx * ny > 80 * 80) throw std::invalid_argument("oct_steiner_minimal_length: more than 80 * 80 lattice points");
-  std::vector<Point> terms(terminals.begin(), terminals.end());
-  std::sort(terms.begin(), terms.end());
-  terms.erase(std::unique(terms.begin(), terms.end()), terms.end());
   const std::size_t k = terms.size();
   if (k > 8) throw std::invalid_argument("oct_steiner_minimal_length: at most 8 distinct terminals");
   if (k == 0) return Root2{};
@@ -160,18 +162,20 @@ std::optional<Root2> oct_steiner_minimal_length(const geom::Box& domain, std::sp
   std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;  // undirected, with weights below
   std::vector<std::int32_t> kinds;
   for (std::size_t t = 0; t < k; ++t) {
-    if (!in_box(terms[t])) return std::nullopt;
-    const std::size_t i = index_of(terms[t]);
-    if (wedges[i].empty()) return std::nullopt;
-    if (wedges[i].size() == 1) {
-      term[t] = node0[i];
+    std::vector<std::size_t> at;  // its free lattice points
+    for (const Point p : terms[t])
+      if (in_box(p) && !wedges[index_of(p)].empty()) at.push_back(index_of(p));
+    if (at.empty() || (terms[t].size() == 1 && at.size() != 1)) return std::nullopt;
+    if (at.size() == 1 && wedges[at[0]].size() == 1) {
+      term[t] = node0[at[0]];
       continue;
     }
     term[t] = static_cast<std::uint32_t>(n++);
-    for (std::uint32_t v = node0[i]; v < node0[i + 1]; ++v) {
-      edges.push_back({term[t], v});
-      kinds.push_back(0);
-    }
+    for (const std::size_t i : at)
+      for (std::uint32_t v = node0[i]; v < node0[i + 1]; ++v) {
+        edges.push_back({term[t], v});
+        kinds.push_back(0);
+      }
   }
   if (k == 1) return Root2{};
 
@@ -232,6 +236,44 @@ std::optional<Root2> oct_steiner_minimal_length(const geom::Box& domain, std::sp
   const Len best = dp[full * n + root];
   if (best.key == kInfKey) return std::nullopt;
   return Root2{best.a, best.b};
+}
+
+}  // namespace
+
+std::optional<Root2> oct_steiner_minimal_length(const geom::Box& domain, std::span<const geom::Polygon> obstacles,
+                                                 std::span<const Point> terminals) {
+  std::vector<Point> pts(terminals.begin(), terminals.end());
+  std::sort(pts.begin(), pts.end());
+  pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+  if (pts.size() > 8) throw std::invalid_argument("oct_steiner_minimal_length: at most 8 distinct terminals");
+  std::vector<std::vector<Point>> terms;
+  for (const Point p : pts) terms.push_back({p});
+  return minimal_length(domain, obstacles, terms);
+}
+
+std::optional<Root2> oct_steiner_minimal_length(const geom::Box& domain, std::span<const geom::Polygon> obstacles,
+                                                 std::span<const geom::Polygon> terminals) {
+  if (terminals.size() > 8) throw std::invalid_argument("oct_steiner_minimal_length: at most 8 terminals");
+  std::vector<std::vector<Point>> terms;
+  for (const geom::Polygon& shape : terminals) {
+    std::vector<Point> pts;
+    if (shape.outer.size() == 1 && shape.holes.empty()) {
+      pts.push_back(shape.outer[0]);
+    } else {
+      geom::Box b{shape.outer[0], shape.outer[0]};
+      for (const Point v : shape.outer) {
+        b.lo = {std::min(b.lo.x, v.x), std::min(b.lo.y, v.y)};
+        b.hi = {std::max(b.hi.x, v.x), std::max(b.hi.y, v.y)};
+      }
+      for (i64 x = b.lo.x; x <= b.hi.x; ++x)
+        for (i64 y = b.lo.y; y <= b.hi.y; ++y) {
+          const Point p{static_cast<geom::Coord>(x), static_cast<geom::Coord>(y)};
+          if (geom::locate(p, shape) != geom::Location::Outside) pts.push_back(p);
+        }
+    }
+    terms.push_back(std::move(pts));
+  }
+  return minimal_length(domain, obstacles, terms);
 }
 
 }  // namespace taut::oracle

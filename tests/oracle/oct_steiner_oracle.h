@@ -66,4 +66,14 @@ namespace taut::oracle {
 std::optional<geom::Root2> oct_steiner_minimal_length(const geom::Box& domain, std::span<const geom::Polygon> obstacles,
                                                        std::span<const geom::Point> terminals);
 
+// The same with shape terminals (pads: a polygon with integer vertices; a point is a polygon of
+// one vertex): a pad is metal, so the tree may touch it at any of its integer points and carry a
+// connection across it: each shape is a node of its own joined at no cost to every node of every
+// free lattice point in the closed shape (tested with geom::locate), and Dreyfus-Wagner takes
+// those nodes as terminals. Exact for the class: a tree's vertices are integer points, so it
+// meets a shape at lattice points. std::nullopt also when a shape holds no free lattice point.
+// Shapes are not deduplicated.
+std::optional<geom::Root2> oct_steiner_minimal_length(const geom::Box& domain, std::span<const geom::Polygon> obstacles,
+                                                       std::span<const geom::Polygon> terminals);
+
 }  // namespace taut::oracle

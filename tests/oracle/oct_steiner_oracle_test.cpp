@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "geom/normalize.h"
+#include "geom/predicates.h"
 #include "oracle/oct_oracle.h"
 #include "support/random_shapes.h"
 #include "support/sanitized.h"
@@ -94,6 +95,50 @@ TEST(OctSteinerOracle, TwoTerminalsMatchTheDistance) {
   }
   std::printf("%d pairs, %d connected\n", compared, reached);
   EXPECT_EQ(failed, 0);
+}
+
+// Shape terminals: a diamond pad and a point are as far apart as the nearest free lattice point
+// of the pad is from the point (the reference's distance, minimised over the pad's lattice
+// points, found here by brute force with geom::locate); point pins given as one-vertex polygons
+// give what the point overload gives; a pad on no free lattice point has no tree.
+TEST(OctSteinerOracle, ShapeTerminalsMatchTheNearestPoint) {
+  int failed = 0, compared = 0;
+  for (int seed = 1; seed <= sanitized_share(300, 4); ++seed) {
+    SCOPED_TRACE(testing::Message() << "seed " << seed);
+    std::mt19937 rng(static_cast<unsigned>(5000 + seed));
+    const std::vector<geom::Polygon> obstacles = random_obstacles(rng);
+    const OctilinearReference ref(kDomain, obstacles);
+    const Point c = random_point(rng), b = random_free_point(rng, ref);
+    const geom::Coord r = static_cast<geom::Coord>(1 + rng() % 3);
+    const geom::Polygon diamond{{{c.x - r, c.y}, {c.x, c.y - r}, {c.x + r, c.y}, {c.x, c.y + r}}, {}};
+    Len want;
+    for (geom::Coord x = c.x - r; x <= c.x + r; ++x)
+      for (geom::Coord y = c.y - r; y <= c.y + r; ++y) {
+        const Point p{x, y};
+        if (geom::locate(p, diamond) == geom::Location::Outside || !ref.is_free(p)) continue;
+        const Len d = ref.distance(p, b);
+        if (d && (!want || *d < *want)) want = d;
+      }
+    const geom::Polygon t[] = {diamond, geom::Polygon{{b}, {}}};
+    const Len got = oct_steiner_minimal_length(kDomain, obstacles, std::span<const geom::Polygon>(t));
+    ++compared;
+    if (got != want && failed++ < 5)
+      ADD_FAILURE() << "diamond at (" << c.x << "," << c.y << ") r " << r << ", point (" << b.x << "," << b.y << "): oracle "
+                    << (got ? got->to_double() : -1) << ", nearest " << (want ? want->to_double() : -1);
+    const Point a = random_free_point(rng, ref), e = random_free_point(rng, ref);
+    const Point pts[] = {a, b, e};
+    const geom::Polygon as_shapes[] = {geom::Polygon{{a}, {}}, geom::Polygon{{b}, {}}, geom::Polygon{{e}, {}}};
+    if (oct_steiner_minimal_length(kDomain, obstacles, pts) !=
+            oct_steiner_minimal_length(kDomain, obstacles, std::span<const geom::Polygon>(as_shapes)) &&
+        failed++ < 5)
+      ADD_FAILURE() << "points as shapes differ";
+  }
+  std::printf("%d pads\n", compared);
+  EXPECT_EQ(failed, 0);
+  // a pad inside a blockage (no free lattice point): no tree
+  const std::vector<geom::Polygon> wall = normalized(kDomain, {{{10, 10}, {20, 20}}});
+  const geom::Polygon t[] = {geom::Polygon{{{14, 14}, {16, 14}, {16, 16}, {14, 16}}, {}}, geom::Polygon{{{2, 2}}, {}}};
+  EXPECT_EQ(oct_steiner_minimal_length(kDomain, wall, std::span<const geom::Polygon>(t)), std::nullopt);
 }
 
 TEST(OctSteinerOracle, ThreeTerminalsMatchTheBestBranchPoint) {
