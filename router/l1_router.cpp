@@ -463,12 +463,6 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t, std
         ++changes;
         continue;
       }
-      if (!pads.empty()) {  // the moves take point pins only
-        std::vector<std::vector<Point>> wires;
-        for (const KeyPath<Len>& p : paths) wires.push_back(path_points(g, p));
-        if (!wires.empty()) t.wires = std::move(wires);
-        break;
-      }
       {
       // No single path gains: move a Steiner point. A key node u of degree three or more (or a
       // pin of degree two or more), with the key paths at it taken out, leaves one part per path
@@ -482,6 +476,7 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t, std
       for (std::size_t u = 0; u < g.nodes.size() && !changed; ++u) {
         const bool is_pin = std::binary_search(sorted_pins.begin(), sorted_pins.end(), g.nodes[u]);
         if (!g.key[u] || g.adj[u].size() < (is_pin ? 2u : 3u)) continue;
+        if (!pad_of[u].empty()) continue;  // a join on a pad stays (the pad is metal there)
         std::vector<std::size_t> at_u;
         for (std::size_t pi = 0; pi < paths.size(); ++pi)
           if (paths[pi].nodes.front() == u || paths[pi].nodes.back() == u) at_u.push_back(pi);
@@ -513,6 +508,12 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t, std
                 part[b] = static_cast<int>(k);
                 stack.push_back(b);
               }
+            for (const std::size_t pk : pad_of[a])  // joined through a pad
+              for (const std::size_t b : members[pk])
+                if (part[b] < 0) {
+                  part[b] = static_cast<int>(k);
+                  stack.push_back(b);
+                }
           }
         }
         if (!tree) continue;
@@ -596,6 +597,12 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t, std
           if (!gone[e] && part[g.edges[e].first] >= 0)
             part_segments[static_cast<std::size_t>(part[g.edges[e].first])].push_back(
                 {g.nodes[g.edges[e].first], g.nodes[g.edges[e].second]});
+        // a part's pads are its metal too: sources along their edges
+        for (std::size_t pk = 0; pk < pads.size(); ++pk)
+          if (!members[pk].empty() && part[members[pk][0]] >= 0)
+            for_each_pin_edge(pads[pk], [&](Point a, Point b) {
+              part_segments[static_cast<std::size_t>(part[members[pk][0]])].push_back({a, b});
+            });
         // A lower bound of each part's distance: the distance (L1, or octilinear) to the box of
         // each of its points and segments, blockages ignored (exact for a point and an axis
         // segment; the length grows with |dx| and |dy|, which a box only shortens). Candidates

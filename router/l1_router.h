@@ -164,13 +164,13 @@ class BasicRouter {
   // tree vertex or a point of a tree segment it runs straight from, and reaches the shape at a
   // point s minimising |s - r|_1 along an edge, so at a vertex or a projection of a tree vertex
   // or obstacle vertex); from each of the first `starts` pins, the shortest kept; then the
-  // improvement pass without its Steiner point moves (improve(): the pads as metal), on the
-  // kImproved shortest starts' trees; tests/router/steiner_test.cpp measures the excess over the
-  // exact minimum with rectangular pads. `failed` indexes `pins`. Octilinear: shapes with
-  // horizontal and vertical edges (supports_pin()), the same candidates (for a fixed r the d8
-  // length of s - r along such an edge is least at r's projection, pin_shapes.h; as r runs along
-  // a straight tree segment, at one of its ends or where the segment reaches the edge's line, a
-  // tree vertex or a point the shape touches), the same path re-embedding.
+  // improvement pass (improve(): the pads as metal; Steiner points moved off the pads only), on
+  // the kImproved shortest starts' trees; tests/router/steiner_test.cpp measures the excess over
+  // the exact minimum with rectangular pads. `failed` indexes `pins`. Octilinear: shapes with
+  // edges at 0, 45 and 90 degrees (supports_pin()), the same candidates with the projections
+  // along the other diagonal onto 45-degree edges (pin_shapes.h; as r runs along a straight tree
+  // segment, at one of its ends or where a pin vertex projects onto it), the same pass;
+  // the excess is measured against the exact minimum with diamonds, triangles and cut boxes.
   Steiner steiner(std::span<const geom::Polygon> pins, std::size_t starts = 8, bool improve = true);
 
   // The points of pin `pin` a shortest wire from it may be taken to start at (and why those:
@@ -209,7 +209,9 @@ class BasicRouter {
   // and Steiner points it moved.
   // With pads (shape pins; `pins` then the point pins only), the paths are re-embedded with the
   // pads as metal (a pad's nodes key, joined through it; a part's pads sources along their edges,
-  // the other part's pads targets at their candidate points) and no Steiner point is moved.
+  // the other part's pads targets at their candidate points), and Steiner points off the pads
+  // are moved with each part's pads among its metal (a part floods through a pad; its edges are
+  // sources); a join on a pad stays.
   std::size_t improve(std::span<const geom::Point> pins, Steiner& t, std::span<const geom::Polygon> pads = {});
   // The wire to target `target` of the last run (Unreachable when none).
   Wire finish(std::optional<std::size_t> target);
