@@ -23,6 +23,7 @@
 #include "geom/predicates.h"
 #include "oracle/l1_oracle.h"
 #include "oracle/oct_oracle.h"
+#include "support/sanitized.h"
 #include "support/wavefront_cases.h"
 
 namespace {
@@ -231,19 +232,20 @@ TEST(Pins, ShapePinsMatchBruteForce) {
   EXPECT_EQ(c.unsupported, 0);
 }
 
-// The same for octilinear wires over 2,000 pairs: every wire is checked octilinear, free, from
+// The same for octilinear wires over 2,000 pairs (500 in the sanitizer tree): every wire is checked octilinear, free, from
 // pin to pin, of the least octilinear length over every pair of free integer points of the two
 // shapes. Diamonds and 45-degree triangles included (since 2026-12-03: their candidates add the
 // projections along the other diagonal, both integer neighbours of a half-integer one; without
 // those projections this test fails).
 TEST(Pins, OctilinearShapePinsMatchBruteForce) {
-  const Counts c = shape_pins_match_brute_force<OctRouter, OctilinearReference>(2000);
-  EXPECT_GE(c.compared, 2000);
-  EXPECT_GE(c.routed, 1000);
+  const int n = static_cast<int>(taut::test::sanitized_share(2000, 4));
+  const Counts c = shape_pins_match_brute_force<OctRouter, OctilinearReference>(n);
+  EXPECT_GE(c.compared, n);
+  EXPECT_GE(c.routed, n / 2);
   EXPECT_GE(c.refused, 10);
   EXPECT_GE(c.touching, 5);
-  EXPECT_GE(c.shapes, 1000);
-  EXPECT_GE(c.diagonal, 500);
+  EXPECT_GE(c.shapes, n / 2);
+  EXPECT_GE(c.diagonal, n / 4);
   EXPECT_EQ(c.unsupported, 0);
 }
 
