@@ -22,7 +22,8 @@
 // same wires (router::CMinLinker, section 6.3: time, links against the shortest wire's in that
 // set, sweeps and pieces per wire, and the time per wire by the taut wire's vertices), and minimum-link loops (MinLinker::loop) of up to 300
 // shortest loops of random closed walks among nearby free points (time as a ratio to tightening
-// those loops again, links, how many are proven minimal). Targets (issue #5): funnel >= 10^7 triangles/s; 10^4 wires on a
+// those loops again, links, how many are proven minimal), and the same loops in rectilinear and
+// octilinear (CMinLinker::loop: time, links, lower bound, proven, starts). Targets (issue #5): funnel >= 10^7 triangles/s; 10^4 wires on a
 // 10^5-vertex layout under 10 s.
 //
 //   bench_tighten [--sizes N,N,..] [--wires W] [--kind rects|polygons|maze|degenerate] [--reps R]
@@ -275,6 +276,29 @@ int main(int argc, char** argv) {
           for (const auto& l : loops) sink = sink + static_cast<std::int64_t>(tight.tighten_loop(l).points.size());
         },
         reps);
+    // the same loops in rectilinear and octilinear (CMinLinker::loop)
+    struct CLoops {
+      double seconds = 0;
+      long long links = 0, proven = 0, none = 0, starts = 0, bound = 0;
+    };
+    CLoops cl[2];
+    for (int o = 0; o < 2; ++o) {
+      const taut::geom::LatticeDirections set =
+          o == 0 ? taut::geom::LatticeDirections::rectilinear() : taut::geom::LatticeDirections::octilinear();
+      cl[o].seconds = seconds_of(
+          [&] {
+            cl[o] = CLoops{};
+            for (const auto& l : loops) {
+              const auto m = cml.loop(l, set);
+              cl[o].none += !m.ok();
+              cl[o].links += static_cast<long long>(m.links());
+              cl[o].proven += m.minimal;
+              cl[o].starts += static_cast<long long>(m.starts);
+              cl[o].bound += static_cast<long long>(m.at_least);
+            }
+          },
+          1);
+    }
     const auto& tris = tri.triangles();
     const double t_pass = seconds_of(
         [&] {
@@ -326,6 +350,14 @@ int main(int argc, char** argv) {
                   t_loops / (t_tighten_loops > 0 ? t_tighten_loops : 1e-9),
                   static_cast<double>(loop_links) / static_cast<double>(loops.size()),
                   static_cast<double>(loop_vertices) / static_cast<double>(loops.size()), loop_proven, loop_inflection);
+    for (int o = 0; o < 2 && !loops.empty(); ++o) {
+      const double n = static_cast<double>(loops.size()), found = n - static_cast<double>(cl[o].none);
+      std::printf("%9s minimum-link %s loops of the same loops: %.3f s (%.2f ms per loop, %.1f x tightening one), "
+                  "%.2f links per loop (lower bound %.2f), %lld proven minimal, %lld with none, %.1f starts per loop\n",
+                  "", o == 0 ? "rectilinear" : "octilinear", cl[o].seconds, cl[o].seconds / n * 1e3,
+                  cl[o].seconds / (t_tighten_loops > 0 ? t_tighten_loops : 1e-9), static_cast<double>(cl[o].links) / found,
+                  static_cast<double>(cl[o].bound) / found, cl[o].proven, cl[o].none, static_cast<double>(cl[o].starts) / n);
+    }
     std::fflush(stdout);
     failures_total += failures;
     if (si + 1 == sizes.size()) {

@@ -4,10 +4,12 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <unordered_map>
 #include <utility>
 
+#include "router/minlink.h"
 #include "router/tighten.h"
 
 namespace taut::router {
@@ -764,6 +766,124 @@ CMinLinkPath CMinLinker::path(std::span<const Point> taut, const geom::LatticeDi
     }
     frontier = std::move(next);
   }
+}
+
+CMinLinkLoop CMinLinker::loop(std::span<const Point> taut_loop, const geom::LatticeDirections& set,
+                              std::size_t max_starts) const {
+  if (taut_loop.size() < 2 || taut_loop.front() != taut_loop.back())
+    throw std::invalid_argument("CMinLinker::loop: the loop is not closed");
+  std::vector<Point> v;  // the loop's vertices, cyclically, without repeats
+  for (std::size_t i = 0; i + 1 < taut_loop.size(); ++i)
+    if (v.empty() || v.back() != taut_loop[i]) v.push_back(taut_loop[i]);
+  while (v.size() > 1 && v.back() == v.front()) v.pop_back();
+  const std::size_t n = v.size();
+  if (n < 3) throw std::invalid_argument("CMinLinker::loop: a loop of fewer than three vertices");
+  CMinLinkLoop best;
+  {
+    const MinLinkLoop any = MinLinker(*t_).loop(taut_loop);
+    std::size_t lb = std::max<std::size_t>(3, any.minimal ? any.links() : any.at_least);
+    if (set.steps().size() == 4) lb = std::max<std::size_t>(4, lb + lb % 2);
+    best.at_least = lb;
+  }
+  // the direction (a step of the set) of the link from a to b
+  auto step_of = [&](const RPoint& a, const RPoint& b) {
+    const Q dx = b.x - a.x, dy = b.y - a.y;
+    for (const Point d : set.steps())
+      if (Q(dx * d.y - dy * d.x).sign() == 0 && Q(dx * d.x + dy * d.y).sign() > 0) return d;
+    throw std::logic_error("CMinLinker::loop: a link not along the set");
+  };
+  // The starts, each a path in the cover whose ends close into a loop of the class:
+  //   - an edge (a, b) of the shortest loop along a direction of the set: the path from a once
+  //     round to b, whose first link runs along the edge; closed by the edge back to a;
+  //   - a vertex v and a direction d of the set strictly within the loop's turn at v: the path from v - d
+  //     through v once round to v and on to v + d (locally taut: the blockage at v lies inside
+  //     both of its turns there, which are within the loop's), whose first link runs along d
+  //     through v; closed by the segment back through v. When the path's last link runs along
+  //     the first one's line, the closing segment joins them into one link;
+  //   - a vertex v: the path from v once round back to v.
+  // A loop wound w times repeats its vertices and edges: each once.
+  struct Start {
+    std::size_t a;
+    int kind;    // 0 an edge from v[a], 1 vertex v[a] with direction d, 2 vertex v[a]
+    Point d{0, 0};
+  };
+  std::vector<Start> starts;
+  {
+    std::set<std::pair<Point, Point>> seen_edges;
+    for (std::size_t a = 0; a < n; ++a) {
+      const Point x = v[a], y = v[(a + 1) % n];
+      if (set.along(i64{y.x} - x.x, i64{y.y} - x.y) && seen_edges.insert({x, y}).second) starts.push_back({a, 0});
+    }
+    std::set<std::pair<Point, Point>> seen_dirs;
+    for (std::size_t a = 0; a < n; ++a) {
+      const Point x = v[a];
+      const V u = vec(v[(a + n - 1) % n], x), w = vec(x, v[(a + 1) % n]);
+      const int turn = sgn(cross(u, w));
+      for (const Point d : set.steps()) {
+        const V dv = vec(d);
+        const int cu = sgn(cross(u, dv)), cw = sgn(cross(dv, w));
+        // strictly inside (along u or w the path would not turn at v; the edge starts cover those)
+        const bool in_cone = turn * cu > 0 && turn * cw > 0;
+        if (in_cone && seen_dirs.insert({x, d}).second) starts.push_back({a, 1, d});
+      }
+    }
+    std::set<Point> seen;
+    for (std::size_t a = 0; a < n; ++a)
+      if (seen.insert(v[a]).second) starts.push_back({a, 2});
+  }
+  const std::size_t m = starts.size(), tries = std::max<std::size_t>(1, std::min(m, max_starts));
+  std::string why;
+  for (std::size_t k = 0; k < tries && (!best.ok() || best.links() > best.at_least); ++k) {
+    const Start st = starts[k * m / tries];
+    std::vector<Point> round;
+    round.reserve(n + 3);
+    if (st.kind == 1) round.push_back({v[st.a].x - st.d.x, v[st.a].y - st.d.y});
+    for (std::size_t i = 0; i <= n + (st.kind == 0 ? 1 : 0); ++i) round.push_back(v[(st.a + i) % n]);
+    if (st.kind == 1) round.push_back({v[st.a].x + st.d.x, v[st.a].y + st.d.y});
+    CMinLinkPath c;
+    if (st.kind == 1) {
+      // v - d and v + d may lie in a blockage or past a pinch: such a start is left out
+      const Tightener tight(*t_);
+      Sleeve probe;
+      if (tight.lift(round, probe) != TightenStatus::Ok) continue;
+    }
+    c = path(round, set);
+    ++best.starts;
+    if (!c.ok()) {
+      why = c.why;
+      continue;
+    }
+    if (c.points.size() < 2) throw std::logic_error("CMinLinker::loop: a path of no link");
+    // Closed: from the path's last point back to its first (along the edge, or through v) or at
+    // v. Links along one line (the closing one and its
+    // neighbours, or any two that meet there, the same way or back) join into one: the segment
+    // between their far ends lies on them, so the loop stays free and in its class.
+    std::vector<RPoint> l(c.points.begin(), c.points.end() - 1);
+    if (st.kind != 2) l.push_back(c.points.back());
+    for (bool again = true; again && l.size() >= 3;) {
+      again = false;
+      for (std::size_t i = 0; i < l.size() && l.size() >= 3; ++i) {
+        const std::size_t h = (i + l.size() - 1) % l.size(), j = (i + 1) % l.size();
+        const Q cr = (l[i].x - l[h].x) * (l[j].y - l[i].y) - (l[i].y - l[h].y) * (l[j].x - l[i].x);
+        if (cr.sign() != 0 && !(l[h] == l[i])) continue;
+        l.erase(l.begin() + static_cast<std::ptrdiff_t>(i));
+        if (l.size() >= 2 && l[(i + l.size() - 1) % l.size()] == l[i % l.size()]) l.erase(l.begin() + static_cast<std::ptrdiff_t>(i % l.size()));
+        again = true;
+        break;
+      }
+    }
+    if (l.size() < 3) throw std::logic_error("CMinLinker::loop: the loop closed to fewer than three links");
+    for (std::size_t i = 0; i < l.size(); ++i) (void)step_of(l[i], l[(i + 1) % l.size()]);
+    l.push_back(l.front());
+    if (!best.ok() || l.size() < best.points.size()) best.points = std::move(l);
+  }
+  if (!best.ok()) {
+    best.why = "from no vertex or edge of the shortest loop: " + why;
+    return best;
+  }
+  if (best.links() < best.at_least) throw std::logic_error("CMinLinker::loop: fewer links than the lower bound");
+  best.minimal = best.links() == best.at_least;
+  return best;
 }
 
 }  // namespace taut::router

@@ -1,7 +1,9 @@
 // Minimum-link c-oriented paths of a given homotopy class (Hershberger & Snoeyink, seeds/001,
 // section 6.3): the path with the fewest links among all paths homotopic to a given one, with the
 // same ends, whose every link runs in one of the directions of a set (the lattice sets of
-// geom/directions.h: rectilinear, octilinear, c:0,45,90, ...), of any length.
+// geom/directions.h: rectilinear, octilinear, c:0,45,90, ...), of any length. CMinLinker::loop
+// does the same for a loop (its free homotopy class), from starts on the shortest loop, with a
+// lower bound that proves most of them minimal.
 //
 //   const router::Tightener tight(t);
 //   const router::Tightened r = tight.tighten(sketch);   // the shortest path of the class
@@ -74,6 +76,21 @@ struct CMinLinkPath {
   std::size_t sweeps = 0, pieces = 0;
 };
 
+// A closed path (front == back) in the directions of a set, freely homotopic to a given loop,
+// with few links (the loop version of section 6.3, which the paper leaves open; see
+// CMinLinker::loop for what is proven).
+struct CMinLinkLoop {
+  std::vector<RPoint> points;  // the bends, closed: points.front() == points.back(); empty when none found
+  std::string why;             // when points is empty: why
+  bool ok() const { return !points.empty(); }
+  std::size_t links() const { return points.empty() ? 0 : points.size() - 1; }
+  // A lower bound on the links of every loop of the class in the set's directions (see loop());
+  // the loop is proven minimal when it has that many.
+  std::size_t at_least = 3;
+  bool minimal = false;
+  std::size_t starts = 0;  // paths computed (from vertices of the shortest loop)
+};
+
 class CMinLinker {
  public:
   // The triangulation must outlive the CMinLinker and be ok().
@@ -86,6 +103,29 @@ class CMinLinker {
   // std::logic_error when a step makes no progress (a bug) or the links pass `max_links`.
   CMinLinkPath path(std::span<const geom::Point> taut, const geom::LatticeDirections& set,
                     std::size_t max_links = 4096) const;
+
+  // A loop in the directions of `set` freely homotopic to `taut_loop`, which must be a shortest
+  // loop of its class as Tightener::tighten_loop returns it (closed, every vertex a strict turn at
+  // a triangulation vertex; not contractible), with few links:
+  //   - upper bound: from a vertex v of the shortest loop, the loop once round from v back to v is
+  //     a shortest path of its class in the universal cover (locally taut, hence shortest), so
+  //     path() gives its minimum-link path in the set from v to v's other lift; closed at v it is
+  //     a loop of the class, with one link less when its first and last links lie on one line
+  //     (they join through v). From an edge e = (a, b) of the shortest loop that runs along a
+  //     direction of the set: the path from a once round to b, whose first link runs along e,
+  //     closed by e back to a; when its last link runs along e too, the three join into one.
+  //     This is done from up to `max_starts` such edges and distinct vertices (edges first,
+  //     spread evenly), the fewest kept, stopping early at the lower bound.
+  //   - lower bound (at_least): a loop in the set's directions is a loop, so MinLinker::loop's
+  //     bound holds (its count when proven minimal, else 2w + 1 for a loop winding w times round
+  //     a blockage, at least 3); with two orientations the links of a minimum-link loop alternate
+  //     between them (two consecutive links of one orientation run back over each other and
+  //     merge into one), so the count is even, at least 4.
+  // minimal when the two meet. A loop with fewer links may exist otherwise (one whose links do
+  // not pass through the starts so). No loop (`why`) when no direction of the set leaves any
+  // start's free wedge. Throws std::invalid_argument when the input is not such a loop.
+  CMinLinkLoop loop(std::span<const geom::Point> taut_loop, const geom::LatticeDirections& set,
+                    std::size_t max_starts = 64) const;
 
  private:
   const geom::FreeSpaceTriangulation* t_;

@@ -82,11 +82,6 @@ std::optional<std::size_t> BasicRouter<W>::pin_meets_obstacle(const geom::Polygo
 }
 
 template <class W>
-bool BasicRouter<W>::supports_pin(const geom::Polygon& pin) {
-  return pin_shape_supported(pin);
-}
-
-template <class W>
 std::vector<Point> BasicRouter<W>::pin_candidates(const geom::Polygon& pin, const geom::Polygon& other) const {
   return pins_.candidates(pin, other);
 }
@@ -290,275 +285,274 @@ std::vector<Point> path_points(const MetalGraph& g, const KeyPath<Len>& p) {
 
 template <class W>
 std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t, std::span<const geom::Polygon> pads) {
-  {
-    std::size_t changes = 0;
-    // Paths (by their points) already tried without a gain: not tried again after changes
-    // elsewhere. A change elsewhere can open a gain for them, so this trades a little length for
-    // far fewer runs (measured in tests/router/steiner_test.cpp and bench_steiner).
-    std::set<std::vector<Point>> tried;
-    const std::vector<geom::Coord>& xs = pins_.vertex_xs();
-    const std::vector<geom::Coord>& ys = pins_.vertex_ys();
-    std::vector<Point> sorted_pins(pins.begin(), pins.end());
-    std::sort(sorted_pins.begin(), sorted_pins.end());
-    while (true) {
-      bool changed = false;
-      std::optional<MetalGraph> graph = metal_graph(t.wires, pins, kOctilinear);
-      if (!graph) return changes;  // not rectilinear (octilinear): left as it is
-      // Pads (shape pins) are metal: the nodes lying on one are key (a path ends where it meets
-      // a pad) and joined through it.
-      std::vector<std::vector<std::size_t>> members(pads.size()), pad_of(graph->nodes.size());
-      for (std::size_t k = 0; k < pads.size(); ++k)
-        for (std::size_t n = 0; n < graph->nodes.size(); ++n)
-          if (in_pin(graph->nodes[n], pads[k])) {
-            members[k].push_back(n);
-            pad_of[n].push_back(k);
-            graph->key[n] = 1;
-          }
-      const MetalGraph& g = *graph;
-      const std::vector<KeyPath<Len>> paths = key_paths<Len>(g);
-      std::vector<std::size_t> longest_first(paths.size());
-      for (std::size_t i = 0; i < paths.size(); ++i) longest_first[i] = i;
-      std::stable_sort(longest_first.begin(), longest_first.end(),
-                       [&](std::size_t a, std::size_t b) { return paths[a].length > paths[b].length; });
-      for (const std::size_t pi : longest_first) {
-        const KeyPath<Len>& p = paths[pi];
-        std::vector<Point> shape;
-        for (const std::size_t n : p.nodes) shape.push_back(g.nodes[n]);
-        if (shape.back() < shape.front()) std::reverse(shape.begin(), shape.end());
-        if (!tried.insert(shape).second) continue;
-        // the tree without p's edges and inner nodes: the part holding p's first end
-        std::vector<char> gone(g.edges.size(), 0), side;
-        for (const std::size_t e : p.edges) gone[e] = 1;
-        auto part_of = [&](std::size_t from) {
-          side.assign(g.nodes.size(), 0);
-          std::vector<std::size_t> stack{from};
-          side[from] = 1;
-          while (!stack.empty()) {
-            const std::size_t u = stack.back();
-            stack.pop_back();
-            for (const auto& [v, e] : g.adj[u])
-              if (!gone[e] && !side[v]) {
+  std::size_t changes = 0;
+  // Paths (by their points) already tried without a gain: not tried again after changes
+  // elsewhere. A change elsewhere can open a gain for them, so this trades a little length for
+  // far fewer runs (measured in tests/router/steiner_test.cpp and bench_steiner).
+  std::set<std::vector<Point>> tried;
+  const std::vector<geom::Coord>& xs = pins_.vertex_xs();
+  const std::vector<geom::Coord>& ys = pins_.vertex_ys();
+  std::vector<Point> sorted_pins(pins.begin(), pins.end());
+  std::sort(sorted_pins.begin(), sorted_pins.end());
+  while (true) {
+    bool changed = false;
+    std::optional<MetalGraph> graph = metal_graph(t.wires, pins, kOctilinear);
+    if (!graph) return changes;  // not rectilinear (octilinear): left as it is
+    // Pads (shape pins) are metal: the nodes lying on one are key (a path ends where it meets
+    // a pad) and joined through it.
+    std::vector<std::vector<std::size_t>> members(pads.size()), pad_of(graph->nodes.size());
+    for (std::size_t k = 0; k < pads.size(); ++k)
+      for (std::size_t n = 0; n < graph->nodes.size(); ++n)
+        if (in_pin(graph->nodes[n], pads[k])) {
+          members[k].push_back(n);
+          pad_of[n].push_back(k);
+          graph->key[n] = 1;
+        }
+    const MetalGraph& g = *graph;
+    const std::vector<KeyPath<Len>> paths = key_paths<Len>(g);
+    std::vector<std::size_t> longest_first(paths.size());
+    for (std::size_t i = 0; i < paths.size(); ++i) longest_first[i] = i;
+    std::stable_sort(longest_first.begin(), longest_first.end(),
+                     [&](std::size_t a, std::size_t b) { return paths[a].length > paths[b].length; });
+    for (const std::size_t pi : longest_first) {
+      const KeyPath<Len>& p = paths[pi];
+      std::vector<Point> shape;
+      for (const std::size_t n : p.nodes) shape.push_back(g.nodes[n]);
+      if (shape.back() < shape.front()) std::reverse(shape.begin(), shape.end());
+      if (!tried.insert(shape).second) continue;
+      // the tree without p's edges and inner nodes: the part holding p's first end
+      std::vector<char> gone(g.edges.size(), 0), side;
+      for (const std::size_t e : p.edges) gone[e] = 1;
+      auto part_of = [&](std::size_t from) {
+        side.assign(g.nodes.size(), 0);
+        std::vector<std::size_t> stack{from};
+        side[from] = 1;
+        while (!stack.empty()) {
+          const std::size_t u = stack.back();
+          stack.pop_back();
+          for (const auto& [v, e] : g.adj[u])
+            if (!gone[e] && !side[v]) {
+              side[v] = 1;
+              stack.push_back(v);
+            }
+          for (const std::size_t k : pad_of[u])
+            for (const std::size_t v : members[k])
+              if (!side[v]) {
                 side[v] = 1;
                 stack.push_back(v);
               }
-            for (const std::size_t k : pad_of[u])
-              for (const std::size_t v : members[k])
-                if (!side[v]) {
-                  side[v] = 1;
-                  stack.push_back(v);
-                }
-          }
-        };
-        part_of(p.nodes.front());
-        // the run leaves from the part with less metal (fewer segment sources to expand)
-        if (!side[p.nodes.back()]) {
-          std::int64_t here = 0, there = 0;
-          for (std::size_t e = 0; e < g.edges.size(); ++e) {
-            if (gone[e]) continue;
-            const Point a = g.nodes[g.edges[e].first], b = g.nodes[g.edges[e].second];
-            (side[g.edges[e].first] ? here : there) += std::abs(std::int64_t{a.x} - b.x) + std::abs(std::int64_t{a.y} - b.y);
-          }
-          if (here > there) part_of(p.nodes.back());
         }
-        auto rest = [&] {  // every edge but p's, as two-point wires
-          std::vector<std::vector<Point>> r;
-          for (std::size_t e = 0; e < g.edges.size(); ++e)
-            if (!gone[e]) r.push_back({g.nodes[g.edges[e].first], g.nodes[g.edges[e].second]});
-          return r;
-        };
-        if (side[p.nodes.back()] && side[p.nodes.front()]) {  // still joined without it: dropped
-          t.wires = rest();
-          changed = true;
-          break;
-        }
-        // sources: the first part's metal; targets: the other part's nodes and the projections
-        // onto its segments of the obstacle vertices, domain corners and the first part's nodes
-        std::vector<char> inner(g.nodes.size(), 0);
-        for (std::size_t k = 1; k + 1 < p.nodes.size(); ++k) inner[p.nodes[k]] = 1;
-        std::vector<Point> points, targets;
-        std::vector<geom::Segment> segments;
-        std::vector<geom::Coord> axs, ays;
-        for (std::size_t n = 0; n < g.nodes.size(); ++n) {
-          if (side[n]) {
-            axs.push_back(g.nodes[n].x);
-            ays.push_back(g.nodes[n].y);
-            if (g.key[n]) points.push_back(g.nodes[n]);
-          } else if (!inner[n]) {
-            targets.push_back(g.nodes[n]);
-          }
-        }
-        std::sort(axs.begin(), axs.end());
-        std::sort(ays.begin(), ays.end());
-        // octilinear: the projections along the four orientations (ProjectionLines, wavefront.h)
-        std::optional<ProjectionLines> first_lines;
-        if constexpr (kOctilinear) {
-          first_lines.emplace(true);
-          for (std::size_t n = 0; n < g.nodes.size(); ++n)
-            if (side[n]) first_lines->add(g.nodes[n]);
-          first_lines->done();
-          if (!obstacle_lines_) {
-            obstacle_lines_.emplace(true);
-            for (const geom::Polygon& o : wavefront_.frame_obstacles()) {
-              for (const Point v : o.outer) obstacle_lines_->add(v);
-              for (const geom::Ring& h : o.holes)
-                for (const Point v : h) obstacle_lines_->add(v);
-            }
-            obstacle_lines_->done();
-          }
-        }
+      };
+      part_of(p.nodes.front());
+      // the run leaves from the part with less metal (fewer segment sources to expand)
+      if (!side[p.nodes.back()]) {
+        std::int64_t here = 0, there = 0;
         for (std::size_t e = 0; e < g.edges.size(); ++e) {
           if (gone[e]) continue;
-          const Point a = g.nodes[g.edges[e].first], b = g.nodes[g.edges[e].second];  // a < b
-          if (side[g.edges[e].first]) {
-            segments.push_back({a, b});
-            continue;
-          }
-          if constexpr (kOctilinear) {
-            obstacle_lines_->inside(a, b, targets);
-            first_lines->inside(a, b, targets);
-            continue;
-          }
-          const bool horizontal = a.y == b.y;
-          for (const std::vector<geom::Coord>* v : {&(horizontal ? xs : ys), static_cast<const std::vector<geom::Coord>*>(&(horizontal ? axs : ays))}) {
-            const geom::Coord lo = horizontal ? a.x : a.y, hi = horizontal ? b.x : b.y;
-            for (auto it = std::upper_bound(v->begin(), v->end(), lo); it != v->end() && *it < hi; ++it)
-              targets.push_back(horizontal ? Point{*it, a.y} : Point{a.x, *it});
-          }
+          const Point a = g.nodes[g.edges[e].first], b = g.nodes[g.edges[e].second];
+          (side[g.edges[e].first] ? here : there) += std::abs(std::int64_t{a.x} - b.x) + std::abs(std::int64_t{a.y} - b.y);
         }
-        // the pads: the first part's are sources along their edges; the other part's targets at
-        // their candidate points against the first part's nodes
-        if (!pads.empty()) {
-          geom::Polygon first;
-          for (std::size_t n = 0; n < g.nodes.size(); ++n)
-            if (side[n]) first.outer.push_back(g.nodes[n]);
-          for (std::size_t k = 0; k < pads.size(); ++k) {
-            if (members[k].empty()) continue;
-            if (side[members[k][0]]) {
-              for_each_pin_edge(pads[k], [&](Point a, Point b) { segments.push_back({a, b}); });
-            } else {
-              const std::vector<Point> c = pin_candidates(pads[k], first);
-              targets.insert(targets.end(), c.begin(), c.end());
-            }
-          }
-        }
-        std::sort(targets.begin(), targets.end());
-        targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
-        keep_free(targets, wavefront_);
-        if (targets.empty()) continue;
-        wavefront_.run(points, segments, targets, WavefrontStop::FirstTarget);
-        std::optional<std::size_t> best;
-        for (std::size_t j = 0; j < targets.size(); ++j) {
-          const auto d = wavefront_.target_distance(j);
-          if (d && (!best || *d < *wavefront_.target_distance(*best))) best = j;
-        }
-        if (!best || *wavefront_.target_distance(*best) >= p.length) continue;
-        Wire w = finish(best);
-        if (w.status != WireStatus::Ok) continue;
+        if (here > there) part_of(p.nodes.back());
+      }
+      auto rest = [&] {  // every edge but p's, as two-point wires
+        std::vector<std::vector<Point>> r;
+        for (std::size_t e = 0; e < g.edges.size(); ++e)
+          if (!gone[e]) r.push_back({g.nodes[g.edges[e].first], g.nodes[g.edges[e].second]});
+        return r;
+      };
+      if (side[p.nodes.back()] && side[p.nodes.front()]) {  // still joined without it: dropped
         t.wires = rest();
-        if (w.points.size() >= 2) t.wires.push_back(std::move(w.points));
         changed = true;
         break;
       }
-      if (changed) {
-        ++changes;
-        continue;
-      }
-      {
-      // No single path gains: move a Steiner point. A key node u of degree three or more (or a
-      // pin of degree two or more), with the key paths at it taken out, leaves one part per path
-      // (and the pin, a part of its own); the point s (in free space) with the least sum of the
-      // parts' distances to it, joined to each part by a shortest path, replaces those paths when
-      // that sum is strictly smaller than theirs. Candidates for s: the grid of
-      // the x and y of u, the paths' far ends and the tree's nodes within their box, and of the
-      // obstacle vertices there while the grid stays small (an optimal Steiner point of three
-      // points among rectangles lies on the extended Hanan grid of the points and the obstacles'
-      // corners; the parts are more than points, so this is a heuristic with the exact distances).
-      for (std::size_t u = 0; u < g.nodes.size() && !changed; ++u) {
-        const bool is_pin = std::binary_search(sorted_pins.begin(), sorted_pins.end(), g.nodes[u]);
-        if (!g.key[u] || g.adj[u].size() < (is_pin ? 2u : 3u)) continue;
-        if (!pad_of[u].empty()) continue;  // a join on a pad stays (the pad is metal there)
-        std::vector<std::size_t> at_u;
-        for (std::size_t pi = 0; pi < paths.size(); ++pi)
-          if (paths[pi].nodes.front() == u || paths[pi].nodes.back() == u) at_u.push_back(pi);
-        if (at_u.size() != g.adj[u].size()) continue;  // (a path from u back to u: not in a tree)
-        std::vector<Point> memo_key{g.nodes[u]};
-        std::vector<char> gone(g.edges.size(), 0);
-        std::vector<std::size_t> far;
-        Len old_length{};
-        for (const std::size_t pi : at_u) {
-          const KeyPath<Len>& kp = paths[pi];
-          for (const std::size_t e : kp.edges) gone[e] = 1;
-          far.push_back(kp.nodes.front() == u ? kp.nodes.back() : kp.nodes.front());
-          old_length += kp.length;
-          for (const std::size_t n : kp.nodes) memo_key.push_back(g.nodes[n]);
+      // sources: the first part's metal; targets: the other part's nodes and the projections
+      // onto its segments of the obstacle vertices, domain corners and the first part's nodes
+      std::vector<char> inner(g.nodes.size(), 0);
+      for (std::size_t k = 1; k + 1 < p.nodes.size(); ++k) inner[p.nodes[k]] = 1;
+      std::vector<Point> points, targets;
+      std::vector<geom::Segment> segments;
+      std::vector<geom::Coord> axs, ays;
+      for (std::size_t n = 0; n < g.nodes.size(); ++n) {
+        if (side[n]) {
+          axs.push_back(g.nodes[n].x);
+          ays.push_back(g.nodes[n].y);
+          if (g.key[n]) points.push_back(g.nodes[n]);
+        } else if (!inner[n]) {
+          targets.push_back(g.nodes[n]);
         }
-        if (!tried.insert(memo_key).second) continue;
-        // the parts: flood fills from the far ends over the edges left
-        std::vector<int> part(g.nodes.size(), -1);
-        bool tree = true;
-        for (std::size_t k = 0; k < far.size() && tree; ++k) {
-          if (part[far[k]] >= 0) tree = false;  // two far ends joined without u: not a tree
-          std::vector<std::size_t> stack{far[k]};
-          part[far[k]] = static_cast<int>(k);
-          while (!stack.empty()) {
-            const std::size_t a = stack.back();
-            stack.pop_back();
-            for (const auto& [b, e] : g.adj[a])
-              if (!gone[e] && part[b] < 0) {
+      }
+      std::sort(axs.begin(), axs.end());
+      std::sort(ays.begin(), ays.end());
+      // octilinear: the projections along the four orientations (ProjectionLines, wavefront.h)
+      std::optional<ProjectionLines> first_lines;
+      if constexpr (kOctilinear) {
+        first_lines.emplace(true);
+        for (std::size_t n = 0; n < g.nodes.size(); ++n)
+          if (side[n]) first_lines->add(g.nodes[n]);
+        first_lines->done();
+        if (!obstacle_lines_) {
+          obstacle_lines_.emplace(true);
+          for (const geom::Polygon& o : wavefront_.frame_obstacles()) {
+            for (const Point v : o.outer) obstacle_lines_->add(v);
+            for (const geom::Ring& h : o.holes)
+              for (const Point v : h) obstacle_lines_->add(v);
+          }
+          obstacle_lines_->done();
+        }
+      }
+      for (std::size_t e = 0; e < g.edges.size(); ++e) {
+        if (gone[e]) continue;
+        const Point a = g.nodes[g.edges[e].first], b = g.nodes[g.edges[e].second];  // a < b
+        if (side[g.edges[e].first]) {
+          segments.push_back({a, b});
+          continue;
+        }
+        if constexpr (kOctilinear) {
+          obstacle_lines_->inside(a, b, targets);
+          first_lines->inside(a, b, targets);
+          continue;
+        }
+        const bool horizontal = a.y == b.y;
+        for (const std::vector<geom::Coord>* v : {&(horizontal ? xs : ys), static_cast<const std::vector<geom::Coord>*>(&(horizontal ? axs : ays))}) {
+          const geom::Coord lo = horizontal ? a.x : a.y, hi = horizontal ? b.x : b.y;
+          for (auto it = std::upper_bound(v->begin(), v->end(), lo); it != v->end() && *it < hi; ++it)
+            targets.push_back(horizontal ? Point{*it, a.y} : Point{a.x, *it});
+        }
+      }
+      // the pads: the first part's are sources along their edges; the other part's targets at
+      // their candidate points against the first part's nodes
+      if (!pads.empty()) {
+        geom::Polygon first;
+        for (std::size_t n = 0; n < g.nodes.size(); ++n)
+          if (side[n]) first.outer.push_back(g.nodes[n]);
+        for (std::size_t k = 0; k < pads.size(); ++k) {
+          if (members[k].empty()) continue;
+          if (side[members[k][0]]) {
+            for_each_pin_edge(pads[k], [&](Point a, Point b) { segments.push_back({a, b}); });
+          } else {
+            const std::vector<Point> c = pin_candidates(pads[k], first);
+            targets.insert(targets.end(), c.begin(), c.end());
+          }
+        }
+      }
+      std::sort(targets.begin(), targets.end());
+      targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
+      keep_free(targets, wavefront_);
+      if (targets.empty()) continue;
+      wavefront_.run(points, segments, targets, WavefrontStop::FirstTarget);
+      std::optional<std::size_t> best;
+      for (std::size_t j = 0; j < targets.size(); ++j) {
+        const auto d = wavefront_.target_distance(j);
+        if (d && (!best || *d < *wavefront_.target_distance(*best))) best = j;
+      }
+      if (!best || *wavefront_.target_distance(*best) >= p.length) continue;
+      Wire w = finish(best);
+      if (w.status != WireStatus::Ok) continue;
+      t.wires = rest();
+      if (w.points.size() >= 2) t.wires.push_back(std::move(w.points));
+      changed = true;
+      break;
+    }
+    if (changed) {
+      ++changes;
+      continue;
+    }
+    {
+    // No single path gains: move a Steiner point. A key node u of degree three or more (or a
+    // pin of degree two or more), with the key paths at it taken out, leaves one part per path
+    // (and the pin, a part of its own); the point s (in free space) with the least sum of the
+    // parts' distances to it, joined to each part by a shortest path, replaces those paths when
+    // that sum is strictly smaller than theirs. Candidates for s: the grid of
+    // the x and y of u, the paths' far ends and the tree's nodes within their box, and of the
+    // obstacle vertices there while the grid stays small (an optimal Steiner point of three
+    // points among rectangles lies on the extended Hanan grid of the points and the obstacles'
+    // corners; the parts are more than points, so this is a heuristic with the exact distances).
+    for (std::size_t u = 0; u < g.nodes.size() && !changed; ++u) {
+      const bool is_pin = std::binary_search(sorted_pins.begin(), sorted_pins.end(), g.nodes[u]);
+      if (!g.key[u] || g.adj[u].size() < (is_pin ? 2u : 3u)) continue;
+      if (!pad_of[u].empty()) continue;  // a join on a pad stays (the pad is metal there)
+      std::vector<std::size_t> at_u;
+      for (std::size_t pi = 0; pi < paths.size(); ++pi)
+        if (paths[pi].nodes.front() == u || paths[pi].nodes.back() == u) at_u.push_back(pi);
+      if (at_u.size() != g.adj[u].size()) continue;  // (a path from u back to u: not in a tree)
+      std::vector<Point> memo_key{g.nodes[u]};
+      std::vector<char> gone(g.edges.size(), 0);
+      std::vector<std::size_t> far;
+      Len old_length{};
+      for (const std::size_t pi : at_u) {
+        const KeyPath<Len>& kp = paths[pi];
+        for (const std::size_t e : kp.edges) gone[e] = 1;
+        far.push_back(kp.nodes.front() == u ? kp.nodes.back() : kp.nodes.front());
+        old_length += kp.length;
+        for (const std::size_t n : kp.nodes) memo_key.push_back(g.nodes[n]);
+      }
+      if (!tried.insert(memo_key).second) continue;
+      // the parts: flood fills from the far ends over the edges left
+      std::vector<int> part(g.nodes.size(), -1);
+      bool tree = true;
+      for (std::size_t k = 0; k < far.size() && tree; ++k) {
+        if (part[far[k]] >= 0) tree = false;  // two far ends joined without u: not a tree
+        std::vector<std::size_t> stack{far[k]};
+        part[far[k]] = static_cast<int>(k);
+        while (!stack.empty()) {
+          const std::size_t a = stack.back();
+          stack.pop_back();
+          for (const auto& [b, e] : g.adj[a])
+            if (!gone[e] && part[b] < 0) {
+              part[b] = static_cast<int>(k);
+              stack.push_back(b);
+            }
+          for (const std::size_t pk : pad_of[a])  // joined through a pad
+            for (const std::size_t b : members[pk])
+              if (part[b] < 0) {
                 part[b] = static_cast<int>(k);
                 stack.push_back(b);
               }
-            for (const std::size_t pk : pad_of[a])  // joined through a pad
-              for (const std::size_t b : members[pk])
-                if (part[b] < 0) {
-                  part[b] = static_cast<int>(k);
-                  stack.push_back(b);
-                }
+        }
+      }
+      if (!tree) continue;
+      // the candidate grid
+      geom::Coord x0 = g.nodes[u].x, x1 = x0, y0 = g.nodes[u].y, y1 = y0;
+      for (const std::size_t f : far) {
+        x0 = std::min(x0, g.nodes[f].x), x1 = std::max(x1, g.nodes[f].x);
+        y0 = std::min(y0, g.nodes[f].y), y1 = std::max(y1, g.nodes[f].y);
+      }
+      std::vector<geom::Coord> gx, gy;
+      std::vector<std::int64_t> gsum, gdiff;  // octilinear: the diagonals x + y and x - y
+      for (const Point q : g.nodes) {
+        if (x0 <= q.x && q.x <= x1) gx.push_back(q.x);
+        if (y0 <= q.y && q.y <= y1) gy.push_back(q.y);
+        if constexpr (kOctilinear)
+          if (x0 <= q.x && q.x <= x1 && y0 <= q.y && q.y <= y1) {
+            gsum.push_back(std::int64_t{q.x} + q.y);
+            gdiff.push_back(std::int64_t{q.x} - q.y);
           }
-        }
-        if (!tree) continue;
-        // the candidate grid
-        geom::Coord x0 = g.nodes[u].x, x1 = x0, y0 = g.nodes[u].y, y1 = y0;
-        for (const std::size_t f : far) {
-          x0 = std::min(x0, g.nodes[f].x), x1 = std::max(x1, g.nodes[f].x);
-          y0 = std::min(y0, g.nodes[f].y), y1 = std::max(y1, g.nodes[f].y);
-        }
-        std::vector<geom::Coord> gx, gy;
-        std::vector<std::int64_t> gsum, gdiff;  // octilinear: the diagonals x + y and x - y
-        for (const Point q : g.nodes) {
-          if (x0 <= q.x && q.x <= x1) gx.push_back(q.x);
-          if (y0 <= q.y && q.y <= y1) gy.push_back(q.y);
-          if constexpr (kOctilinear)
-            if (x0 <= q.x && q.x <= x1 && y0 <= q.y && q.y <= y1) {
-              gsum.push_back(std::int64_t{q.x} + q.y);
-              gdiff.push_back(std::int64_t{q.x} - q.y);
-            }
-        }
-        auto add_obstacles = [](std::vector<geom::Coord>& v, const std::vector<geom::Coord>& all, geom::Coord lo,
-                                geom::Coord hi) {
-          const auto a = std::lower_bound(all.begin(), all.end(), lo), b = std::upper_bound(all.begin(), all.end(), hi);
-          if (b - a <= static_cast<std::ptrdiff_t>(kMoveGridSide)) v.insert(v.end(), a, b);
-        };
-        add_obstacles(gx, xs, x0, x1);
-        add_obstacles(gy, ys, y0, y1);
-        for (auto* v : {&gx, &gy}) {
-          std::sort(v->begin(), v->end());
-          v->erase(std::unique(v->begin(), v->end()), v->end());
-        }
-        for (auto* v : {&gsum, &gdiff}) {
-          std::sort(v->begin(), v->end());
-          v->erase(std::unique(v->begin(), v->end()), v->end());
-        }
-        if (gx.size() * gy.size() > kMoveGridPoints) continue;
-        std::vector<Point> grid;
-        for (const geom::Coord x : gx)
-          for (const geom::Coord y : gy) grid.push_back({x, y});
-        if constexpr (kOctilinear) {
-          // Octilinear: also where a diagonal of a node meets another node's line, horizontal,
-          // vertical or the other diagonal (at integer points only), within the box: the lines
-          // of the octilinear Hanan grid of the nodes (the obstacle vertices add axis lines only).
-          const std::size_t diagonal_points = (gsum.size() + gdiff.size()) * (gx.size() + gy.size()) + gsum.size() * gdiff.size();
-          if (grid.size() + diagonal_points <= kMoveGridPoints) {
+      }
+      auto add_obstacles = [](std::vector<geom::Coord>& v, const std::vector<geom::Coord>& all, geom::Coord lo,
+                              geom::Coord hi) {
+        const auto a = std::lower_bound(all.begin(), all.end(), lo), b = std::upper_bound(all.begin(), all.end(), hi);
+        if (b - a <= static_cast<std::ptrdiff_t>(kMoveGridSide)) v.insert(v.end(), a, b);
+      };
+      add_obstacles(gx, xs, x0, x1);
+      add_obstacles(gy, ys, y0, y1);
+      for (auto* v : {&gx, &gy}) {
+        std::sort(v->begin(), v->end());
+        v->erase(std::unique(v->begin(), v->end()), v->end());
+      }
+      for (auto* v : {&gsum, &gdiff}) {
+        std::sort(v->begin(), v->end());
+        v->erase(std::unique(v->begin(), v->end()), v->end());
+      }
+      if (gx.size() * gy.size() > kMoveGridPoints) continue;
+      std::vector<Point> grid;
+      for (const geom::Coord x : gx)
+        for (const geom::Coord y : gy) grid.push_back({x, y});
+      if constexpr (kOctilinear) {
+        // Octilinear: also where a diagonal of a node meets another node's line, horizontal,
+        // vertical or the other diagonal (at integer points only), within the box: the lines
+        // of the octilinear Hanan grid of the nodes (the obstacle vertices add axis lines only).
+        const std::size_t diagonal_points = (gsum.size() + gdiff.size()) * (gx.size() + gy.size()) + gsum.size() * gdiff.size();
+        if (grid.size() + diagonal_points <= kMoveGridPoints) {
           auto add = [&](std::int64_t x, std::int64_t y) {
             if (x0 <= x && x <= x1 && y0 <= y && y <= y1) grid.push_back({static_cast<geom::Coord>(x), static_cast<geom::Coord>(y)});
           };
@@ -574,116 +568,115 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t, std
           }
           std::sort(grid.begin(), grid.end());
           grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
-          }
         }
-        keep_free(grid, wavefront_);
-        // not where blockages touch: the parts' paths would meet there from different free wedges,
-        // and the tree would pass through the pinch (FORMAT.md forbids it)
-        grid.erase(std::remove_if(grid.begin(), grid.end(), [&](Point q) { return wavefront_.vertex_wedges(q).size() > 1; }),
-                   grid.end());
-        if (grid.empty()) continue;
-        // each part's metal: its key nodes and its edges
-        std::vector<std::vector<Point>> part_points(far.size());
-        std::vector<std::vector<geom::Segment>> part_segments(far.size());
-        for (std::size_t n = 0; n < g.nodes.size(); ++n)
-          if (part[n] >= 0 && (g.key[n] || g.adj[n].empty())) part_points[static_cast<std::size_t>(part[n])].push_back(g.nodes[n]);
-        for (std::size_t k = 0; k < far.size(); ++k)
-          if (part_points[k].empty()) part_points[k].push_back(g.nodes[far[k]]);
-        if (is_pin) {  // the pin stays, a part of its own
-          part_points.push_back({g.nodes[u]});
-          part_segments.emplace_back();
-        }
-        for (std::size_t e = 0; e < g.edges.size(); ++e)
-          if (!gone[e] && part[g.edges[e].first] >= 0)
-            part_segments[static_cast<std::size_t>(part[g.edges[e].first])].push_back(
-                {g.nodes[g.edges[e].first], g.nodes[g.edges[e].second]});
-        // a part's pads are its metal too: sources along their edges
-        for (std::size_t pk = 0; pk < pads.size(); ++pk)
-          if (!members[pk].empty() && part[members[pk][0]] >= 0)
-            for_each_pin_edge(pads[pk], [&](Point a, Point b) {
-              part_segments[static_cast<std::size_t>(part[members[pk][0]])].push_back({a, b});
-            });
-        // A lower bound of each part's distance: the distance (L1, or octilinear) to the box of
-        // each of its points and segments, blockages ignored (exact for a point and an axis
-        // segment; the length grows with |dx| and |dy|, which a box only shortens). Candidates
-        // whose bound, with the exact distances of the parts run so far, reaches the old length
-        // are dropped before each run (most moves end here without a run at all).
-        auto bound_to_part = [&](Point q, std::size_t k) {
-          auto gap = [](geom::Coord v, geom::Coord lo, geom::Coord hi) {
-            return v < lo ? std::int64_t{lo} - v : v > hi ? std::int64_t{v} - hi : std::int64_t{0};
-          };
-          std::optional<Len> d;
-          auto take = [&](std::int64_t dx, std::int64_t dy) {
-            Len l;
-            if constexpr (kOctilinear) l = geom::octilinear_length(dx, dy);
-            else l = dx + dy;
-            if (!d || l < *d) d = l;
-          };
-          for (const Point a : part_points[k]) take(gap(q.x, a.x, a.x), gap(q.y, a.y, a.y));
-          for (const geom::Segment& sg : part_segments[k])
-            take(gap(q.x, std::min(sg.a.x, sg.b.x), std::max(sg.a.x, sg.b.x)),
-                 gap(q.y, std::min(sg.a.y, sg.b.y), std::max(sg.a.y, sg.b.y)));
-          return *d;  // (every part has a point)
+      }
+      keep_free(grid, wavefront_);
+      // not where blockages touch: the parts' paths would meet there from different free wedges,
+      // and the tree would pass through the pinch (FORMAT.md forbids it)
+      grid.erase(std::remove_if(grid.begin(), grid.end(), [&](Point q) { return wavefront_.vertex_wedges(q).size() > 1; }),
+                 grid.end());
+      if (grid.empty()) continue;
+      // each part's metal: its key nodes and its edges
+      std::vector<std::vector<Point>> part_points(far.size());
+      std::vector<std::vector<geom::Segment>> part_segments(far.size());
+      for (std::size_t n = 0; n < g.nodes.size(); ++n)
+        if (part[n] >= 0 && (g.key[n] || g.adj[n].empty())) part_points[static_cast<std::size_t>(part[n])].push_back(g.nodes[n]);
+      for (std::size_t k = 0; k < far.size(); ++k)
+        if (part_points[k].empty()) part_points[k].push_back(g.nodes[far[k]]);
+      if (is_pin) {  // the pin stays, a part of its own
+        part_points.push_back({g.nodes[u]});
+        part_segments.emplace_back();
+      }
+      for (std::size_t e = 0; e < g.edges.size(); ++e)
+        if (!gone[e] && part[g.edges[e].first] >= 0)
+          part_segments[static_cast<std::size_t>(part[g.edges[e].first])].push_back(
+              {g.nodes[g.edges[e].first], g.nodes[g.edges[e].second]});
+      // a part's pads are its metal too: sources along their edges
+      for (std::size_t pk = 0; pk < pads.size(); ++pk)
+        if (!members[pk].empty() && part[members[pk][0]] >= 0)
+          for_each_pin_edge(pads[pk], [&](Point a, Point b) {
+            part_segments[static_cast<std::size_t>(part[members[pk][0]])].push_back({a, b});
+          });
+      // A lower bound of each part's distance: the distance (L1, or octilinear) to the box of
+      // each of its points and segments, blockages ignored (exact for a point and an axis
+      // segment; the length grows with |dx| and |dy|, which a box only shortens). Candidates
+      // whose bound, with the exact distances of the parts run so far, reaches the old length
+      // are dropped before each run (most moves end here without a run at all).
+      auto bound_to_part = [&](Point q, std::size_t k) {
+        auto gap = [](geom::Coord v, geom::Coord lo, geom::Coord hi) {
+          return v < lo ? std::int64_t{lo} - v : v > hi ? std::int64_t{v} - hi : std::int64_t{0};
         };
-        const std::size_t parts = part_points.size();
-        std::vector<Len> bound(grid.size() * parts);  // [j * parts + k]
-        std::vector<Len> sum(grid.size(), Len{});  // exact so far plus the bounds of the rest
-        for (std::size_t j = 0; j < grid.size(); ++j)
-          for (std::size_t k = 0; k < parts; ++k) {
-            bound[j * parts + k] = bound_to_part(grid[j], k);
-            sum[j] += bound[j * parts + k];
-          }
-        std::vector<std::size_t> alive;
-        for (std::size_t j = 0; j < grid.size(); ++j)
-          if (sum[j] < old_length) alive.push_back(j);
-        for (std::size_t k = 0; k < parts && !alive.empty(); ++k) {
-          std::vector<Point> targets;
-          for (const std::size_t j : alive) targets.push_back(grid[j]);
-          wavefront_.run(part_points[k], part_segments[k], targets, WavefrontStop::AllTargets);
-          std::vector<std::size_t> still;
-          for (std::size_t i = 0; i < alive.size(); ++i) {
-            const auto d = wavefront_.target_distance(i);
-            if (!d) continue;
-            const std::size_t j = alive[i];
-            sum[j] += *d - bound[j * parts + k];
-            if (sum[j] < old_length) still.push_back(j);
-          }
-          alive = std::move(still);
+        std::optional<Len> d;
+        auto take = [&](std::int64_t dx, std::int64_t dy) {
+          Len l;
+          if constexpr (kOctilinear) l = geom::octilinear_length(dx, dy);
+          else l = dx + dy;
+          if (!d || l < *d) d = l;
+        };
+        for (const Point a : part_points[k]) take(gap(q.x, a.x, a.x), gap(q.y, a.y, a.y));
+        for (const geom::Segment& sg : part_segments[k])
+          take(gap(q.x, std::min(sg.a.x, sg.b.x), std::max(sg.a.x, sg.b.x)),
+               gap(q.y, std::min(sg.a.y, sg.b.y), std::max(sg.a.y, sg.b.y)));
+        return *d;  // (every part has a point)
+      };
+      const std::size_t parts = part_points.size();
+      std::vector<Len> bound(grid.size() * parts);  // [j * parts + k]
+      std::vector<Len> sum(grid.size(), Len{});  // exact so far plus the bounds of the rest
+      for (std::size_t j = 0; j < grid.size(); ++j)
+        for (std::size_t k = 0; k < parts; ++k) {
+          bound[j * parts + k] = bound_to_part(grid[j], k);
+          sum[j] += bound[j * parts + k];
         }
-        std::optional<std::size_t> best;
-        for (const std::size_t j : alive)
-          if (!best || sum[j] < sum[*best]) best = j;
-        if (!best) continue;
-        std::vector<std::vector<Point>> joins;
-        bool ok = true;
-        for (std::size_t k = 0; k < part_points.size() && ok; ++k) {
-          wavefront_.run(part_points[k], part_segments[k], std::vector<Point>{grid[*best]}, WavefrontStop::FirstTarget);
-          Wire w = finish(std::size_t{0});
-          ok = w.status == WireStatus::Ok;
-          if (ok && w.points.size() >= 2) joins.push_back(std::move(w.points));
+      std::vector<std::size_t> alive;
+      for (std::size_t j = 0; j < grid.size(); ++j)
+        if (sum[j] < old_length) alive.push_back(j);
+      for (std::size_t k = 0; k < parts && !alive.empty(); ++k) {
+        std::vector<Point> targets;
+        for (const std::size_t j : alive) targets.push_back(grid[j]);
+        wavefront_.run(part_points[k], part_segments[k], targets, WavefrontStop::AllTargets);
+        std::vector<std::size_t> still;
+        for (std::size_t i = 0; i < alive.size(); ++i) {
+          const auto d = wavefront_.target_distance(i);
+          if (!d) continue;
+          const std::size_t j = alive[i];
+          sum[j] += *d - bound[j * parts + k];
+          if (sum[j] < old_length) still.push_back(j);
         }
-        if (!ok) continue;
-        std::vector<std::vector<Point>> wires;
-        for (std::size_t e = 0; e < g.edges.size(); ++e)
-          if (!gone[e]) wires.push_back({g.nodes[g.edges[e].first], g.nodes[g.edges[e].second]});
-        for (auto& w : joins) wires.push_back(std::move(w));
-        t.wires = std::move(wires);
-        changed = true;
+        alive = std::move(still);
       }
-      if (changed) {
-        ++changes;
-        continue;
+      std::optional<std::size_t> best;
+      for (const std::size_t j : alive)
+        if (!best || sum[j] < sum[*best]) best = j;
+      if (!best) continue;
+      std::vector<std::vector<Point>> joins;
+      bool ok = true;
+      for (std::size_t k = 0; k < part_points.size() && ok; ++k) {
+        wavefront_.run(part_points[k], part_segments[k], std::vector<Point>{grid[*best]}, WavefrontStop::FirstTarget);
+        Wire w = finish(std::size_t{0});
+        ok = w.status == WireStatus::Ok;
+        if (ok && w.points.size() >= 2) joins.push_back(std::move(w.points));
       }
-      // nothing improves: written as the key paths, one wire each
+      if (!ok) continue;
       std::vector<std::vector<Point>> wires;
-      for (const KeyPath<Len>& p : paths) wires.push_back(path_points(g, p));
-      if (!wires.empty()) t.wires = std::move(wires);
-      break;
-      }
+      for (std::size_t e = 0; e < g.edges.size(); ++e)
+        if (!gone[e]) wires.push_back({g.nodes[g.edges[e].first], g.nodes[g.edges[e].second]});
+      for (auto& w : joins) wires.push_back(std::move(w));
+      t.wires = std::move(wires);
+      changed = true;
     }
-    t.length = wires_length<Len>(t.wires);
-    return changes;
+    if (changed) {
+      ++changes;
+      continue;
+    }
+    // nothing improves: written as the key paths, one wire each
+    std::vector<std::vector<Point>> wires;
+    for (const KeyPath<Len>& p : paths) wires.push_back(path_points(g, p));
+    if (!wires.empty()) t.wires = std::move(wires);
+    break;
+    }
   }
+  t.length = wires_length<Len>(t.wires);
+  return changes;
 }
 
 template <class W>

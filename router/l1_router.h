@@ -18,8 +18,9 @@
 //     caller reports it instead (a wire of another route of equal length is not searched).
 //
 // The same class serves the octilinear metric (router/oct_router.h: OctRouter = BasicRouter<
-// OctWavefront>, lengths a + b*sqrt2): the wavefront and the staircase style differ, and shape
-// pins must have horizontal and vertical edges only (pin_candidates(), supports_pin()).
+// OctWavefront>, lengths a + b*sqrt2): the wavefront and the staircase style differ; shape pins
+// take the same shapes (pin_shape_supported(): edges at 0, 45 and 90 degrees), with more
+// candidate points on 45-degree edges (pin_candidates(), router/pin_shapes.h).
 #pragma once
 
 #include <cstdint>
@@ -167,7 +168,7 @@ class BasicRouter {
   // improvement pass (improve(): the pads as metal; Steiner points moved off the pads only), on
   // the kImproved shortest starts' trees; tests/router/steiner_test.cpp measures the excess over
   // the exact minimum with rectangular pads. `failed` indexes `pins`. Octilinear: shapes with
-  // edges at 0, 45 and 90 degrees (supports_pin()), the same candidates with the projections
+  // edges at 0, 45 and 90 degrees (pin_shape_supported()), the same candidates with the projections
   // along the other diagonal onto 45-degree edges (pin_shapes.h; as r runs along a straight tree
   // segment, at one of its ends or where a pin vertex projects onto it), the same pass;
   // the excess is measured against the exact minimum with diamonds, triangles and cut boxes.
@@ -176,10 +177,6 @@ class BasicRouter {
   // The points of pin `pin` a shortest wire from it may be taken to start at (and why those:
   // PinShapes::candidates, router/pin_shapes.h).
   std::vector<geom::Point> pin_candidates(const geom::Polygon& pin, const geom::Polygon& other) const;
-
-  // Whether shortest(pin, pin) takes this pin: pin_shape_supported(), and for the octilinear
-  // router only horizontal and vertical edges.
-  static bool supports_pin(const geom::Polygon& pin);
 
   // The first obstacle whose interior meets the interior of a shape pin
   // (PinShapes::meets_obstacle).

@@ -1575,7 +1575,7 @@ NetAttempt route_with(const NetPins& net, const geom::NormalizedObstacles& obs, 
     return a;
   };
   for (const Polygon& pin : net.pins)
-    if (!Router::supports_pin(pin) || (!is_point_pin(pin) && r.pin_meets_obstacle(pin))) {
+    if (!pin_shape_supported(pin) || (!is_point_pin(pin) && r.pin_meets_obstacle(pin))) {
       a.code = "ROUTE-0005";
       a.reason = "a shape pin this router does not take here";
       return a;

@@ -3,8 +3,8 @@
 // the exact length a + b*sqrt2 and a polygonal shortest path; the staircase builder
 // (router/staircase.h, octilinear()) turns each link into a staircase of the two orientations
 // that bracket it (0, 45, 90, 135 degrees), with integer vertices, of the same octilinear length.
-// Same statuses, same shape-pin rules except that shape pins must have horizontal and vertical
-// edges only (OctRouter::supports_pin(); why: BasicRouter::pin_candidates()).
+// Same statuses, same shape-pin rules (pin_shape_supported(): edges at 0, 45 and 90 degrees; the
+// candidate points of a 45-degree edge add projections along the other diagonal: pin_shapes.h).
 //
 //   OctRouter router(normalized.domain, normalized.obstacles);
 //   OctWire w = router.shortest({500, 500}, {8000, 9000});

@@ -57,19 +57,29 @@ struct NetTightening {
   // --min-link in a lattice direction set: the minimum-link path of each open wire's class in
   // those directions (section 6.3; exact rational bends)
   std::size_t oriented_min_links = 0;
-  std::vector<router::CMinLinkPath> oriented_min_link;
-  std::string oriented_none;  // a wire with no path in the set (why), or a loop (not computed)
+  std::size_t oriented_at_least = 0;  // a lower bound (= oriented_min_links when proven)
+  bool oriented_proven = true;        // false when some loop's count is only an upper bound
+  std::vector<router::CMinLinkPath> oriented_min_link;  // a loop's closed
+  std::string oriented_none;  // a wire or loop with no path in the set (why)
   // adds the minimum-link path of a taut line, or the minimum-link loop when is_loop; and with a
   // direction set, the minimum-link path in it
   void add_min_link(const router::MinLinker& ml, std::span<const geom::Point> taut, bool is_loop,
                     const geom::FreeSpaceTriangulation& t, const std::optional<geom::LatticeDirections>& set) {
     if (set) {
       if (is_loop) {
-        oriented_none = "a loop (minimum-link loops in a direction set are not computed)";
+        router::CMinLinkLoop c = router::CMinLinker(t).loop(taut, *set);
+        if (!c.ok()) oriented_none = c.why;
+        oriented_min_links += c.links();
+        oriented_at_least += c.minimal ? c.links() : c.at_least;
+        oriented_proven = oriented_proven && c.minimal;
+        router::CMinLinkPath closed;
+        closed.points = std::move(c.points);
+        oriented_min_link.push_back(std::move(closed));
       } else {
         router::CMinLinkPath c = router::CMinLinker(t).path(taut, *set);
         if (!c.ok()) oriented_none = c.why;
         oriented_min_links += c.links();
+        oriented_at_least += c.links();
         oriented_min_link.push_back(std::move(c));
       }
     }
@@ -118,7 +128,8 @@ void add_tighten(CLI::App& app, int& status) {
                 "blockages grown by that much)");
   sub->add_flag("--min-link", args->min_link,
                 "also find each wire's minimum-link path of its class (any angle, exact rational bends) "
-                "and, with rectilinear, octilinear or a c: set, its minimum-link path in those directions: "
+                "and, with rectilinear, octilinear or a c: set, its minimum-link path in those directions "
+                "(for a loop, a closed loop with few links, proven minimal or given as a range): "
                 "their link counts and bends go to --stats, their drawings to --svg; the written wires "
                 "are still the shortest ones");
   add_input_options(sub, args->file, args->load, "do not print warnings or the summary");
@@ -543,7 +554,11 @@ void add_tighten(CLI::App& app, int& status) {
             }
             const bool ocounted = counted && s.oriented_none.empty();
             nets.back()["oriented_min_links"] =
-                ocounted ? nlohmann::ordered_json(s.oriented_min_links) : nlohmann::ordered_json();
+                ocounted && s.oriented_proven ? nlohmann::ordered_json(s.oriented_min_links) : nlohmann::ordered_json();
+            if (ocounted && !s.oriented_proven) {
+              nets.back()["oriented_min_links_at_least"] = s.oriented_at_least;
+              nets.back()["oriented_min_links_at_most"] = s.oriented_min_links;
+            }
             if (!s.oriented_none.empty()) nets.back()["oriented_min_links_none"] = s.oriented_none;
             nets.back()["oriented_min_link_wires"] = opaths;
           }
@@ -580,7 +595,11 @@ void add_tighten(CLI::App& app, int& status) {
           else
             std::cerr << ", minimum links " << s.min_links_at_least << " to " << s.min_links
                       << " (a convex loop's minimum is not proven)";
-          if (min_link_set && s.oriented_none.empty()) std::cerr << " (" << orientations << ": " << s.oriented_min_links << ")";
+          if (min_link_set && s.oriented_none.empty()) {
+            std::cerr << " (" << orientations << ": ";
+            if (!s.oriented_proven) std::cerr << s.oriented_at_least << " to ";
+            std::cerr << s.oriented_min_links << ")";
+          }
         }
         std::cerr << '\n';
       }

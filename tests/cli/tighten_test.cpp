@@ -316,7 +316,7 @@ TEST(Tighten, MinLinkPathsInTheStats) {
 // (section 6.3), exact, in the stats and drawn; checked against the rational references (ends, free,
 // same class, every link along one of the eight directions), never more links than the written
 // (shortest) octilinear wire, and never fewer than the any-angle minimum. The guard ring (a loop)
-// has none: null, and the reason.
+// gets its octilinear loop (CMinLinker::loop), checked the same way as a closed loop of its class.
 TEST(Tighten, OrientedMinLinkPathsInTheStats) {
   const WindMinLink w("tighten_oriented_minlink", "octilinear");
   ASSERT_EQ(w.run.status, 0) << w.run.err;
@@ -324,29 +324,44 @@ TEST(Tighten, OrientedMinLinkPathsInTheStats) {
   const auto& nets = j["tighten"]["nets"];
   ASSERT_EQ(nets.size(), rr.layout->nets.size());
   int fewer = 0, open = 0;
+  std::size_t loop_links = 0;
   for (std::size_t i = 0; i < nets.size(); ++i) {
     const Path& sketch = rr.layout->nets[i].sketch->points;
     const auto& e = nets[i];
     SCOPED_TRACE(e["net"].get<std::string>());
-    if (sketch.front() == sketch.back()) {
-      EXPECT_TRUE(e["oriented_min_links"].is_null());
-      EXPECT_NE(e["oriented_min_links_none"].get<std::string>().find("loop"), std::string::npos);
-      continue;
-    }
-    ++open;
     ASSERT_EQ(e["oriented_min_link_wires"].size(), 1u);
     std::vector<oracle::QPoint> q;
     for (const auto& p : e["oriented_min_link_wires"][0])
       q.push_back({mpq_class(p[0].get<std::string>()), mpq_class(p[1].get<std::string>())});
     ASSERT_GE(q.size(), 2u);
     const std::size_t links = q.size() - 1;
+    auto octilinear = [&](std::size_t k) {
+      const mpq_class dx = q[k + 1].x - q[k].x, dy = q[k + 1].y - q[k].y;
+      return dx == 0 || dy == 0 || dx == dy || dx == -dy;
+    };
+    if (sketch.front() == sketch.back()) {
+      // the guard ring: a closed octilinear loop of its class (since 2026-12-03), its count
+      // proven or given as a range, never below the any-angle minimum
+      EXPECT_FALSE(e.contains("oriented_min_links_none"));
+      expect_loop_in_class(q, sketch, norm.domain, norm.obstacles, h);
+      for (std::size_t k = 0; k + 1 < q.size(); ++k) EXPECT_TRUE(octilinear(k)) << "link " << k << " is not octilinear";
+      if (e["oriented_min_links"].is_null()) {
+        EXPECT_LE(e["oriented_min_links_at_least"].get<std::size_t>(), links);
+        EXPECT_EQ(e["oriented_min_links_at_most"].get<std::size_t>(), links);
+      } else {
+        EXPECT_EQ(e["oriented_min_links"].get<std::size_t>(), links);
+      }
+      EXPECT_GE(links, e["min_links"].get<std::size_t>());
+      loop_links = links;
+      continue;
+    }
+    ++open;
     EXPECT_EQ(e["oriented_min_links"].get<std::size_t>(), links);
     EXPECT_TRUE(q.front().x == sketch.front().x && q.front().y == sketch.front().y);
     EXPECT_TRUE(q.back().x == sketch.back().x && q.back().y == sketch.back().y);
     for (std::size_t k = 0; k + 1 < q.size(); ++k) {
       EXPECT_TRUE(oracle::segment_free(q[k], q[k + 1], norm.domain, norm.obstacles)) << "link " << k;
-      const mpq_class dx = q[k + 1].x - q[k].x, dy = q[k + 1].y - q[k].y;
-      EXPECT_TRUE(dx == 0 || dy == 0 || dx == dy || dx == -dy) << "link " << k << " is not octilinear";
+      EXPECT_TRUE(octilinear(k)) << "link " << k << " is not octilinear";
     }
     EXPECT_EQ(h.word(std::span<const oracle::QPoint>(q)), h.word(sketch)) << "another homotopy class";
     const std::size_t written = e["bends_after"].get<std::size_t>() + 1;
@@ -355,6 +370,7 @@ TEST(Tighten, OrientedMinLinkPathsInTheStats) {
     fewer += links < written;
   }
   EXPECT_EQ(open, 5);
+  EXPECT_EQ(loop_links, 3u);  // round the hexagon: a triangle of 0, 90 and 135 (or 45) degree links
   EXPECT_GE(fewer, 3);  // the slalom, the spiral, the loop and the squeeze save links (diag does not)
   EXPECT_NE(read_text(dir + "/w.svg").find("class=\"oriented-min-link\""), std::string::npos);
   // the README's picture: make run's command (with --clearance) draws it

@@ -141,6 +141,25 @@ TEST(SteinerTree, LegalAndNearTheMinimum) {
 // legal by the independent checker (free, every pin joined: a wire ending anywhere on a pad joins
 // it), never shorter than the exact minimum with pads as terminals (oracle::steiner_minimal_length
 // with boxes: Dreyfus-Wagner with every grid node of a pad in its terminal), and near it.
+// Adds pin g (a point or a pad) to a net being drawn when its box stays within [0, limit], keeps
+// a gap from every pin so far (pins do not touch one another), and the router takes it there
+// (a free point; a pad that meets no blockage's interior and has a candidate point).
+template <class Router>
+bool add_pin_apart(const Router& router, const geom::Polygon& g, geom::Coord limit, std::vector<geom::Box>& terms,
+                   std::vector<geom::Polygon>& pins) {
+  geom::Box b{g.outer[0], g.outer[0]};
+  for (const Point v : g.outer) b = {{std::min(b.lo.x, v.x), std::min(b.lo.y, v.y)}, {std::max(b.hi.x, v.x), std::max(b.hi.y, v.y)}};
+  if (b.hi.x > limit || b.hi.y > limit) return false;
+  for (const geom::Box& o : terms)
+    if (geom::boxes_meet(geom::grown_box(b, 1), o)) return false;
+  const bool pad = g.outer.size() > 1;
+  if (pad ? router.pin_meets_obstacle(g).has_value() : !router.is_free(g.outer[0])) return false;
+  if (pad && router.pin_candidates(g, g).empty()) return false;
+  terms.push_back(b);
+  pins.push_back(g);
+  return true;
+}
+
 // A tree of pins that may be pads, judged against the oracle's minimum `best`: none when the
 // oracle finds no tree (then the router must not either), a failure for a status other than Ok,
 // then legality (tree_problem, the pads as shape pins) and never below the minimum. Returns the
@@ -191,15 +210,7 @@ TEST(SteinerTree, PadsLegalAndNearTheMinimum) {
       const geom::Box b{p, pad ? Point{static_cast<geom::Coord>(p.x + 1 + static_cast<int>(rng() % 4)),
                                        static_cast<geom::Coord>(p.y + 1 + static_cast<int>(rng() % 4))}
                                : p};
-      if (b.hi.x > 44 || b.hi.y > 44) continue;
-      bool apart = true;  // pins do not touch one another
-      for (const geom::Box& o : terms) apart = apart && !geom::boxes_meet(geom::grown_box(b, 1), o);
-      if (!apart) continue;
-      const geom::Polygon g = pad ? box_polygons(std::vector<geom::Box>{b})[0] : geom::Polygon{{p}, {}};
-      if (pad ? router.pin_meets_obstacle(g).has_value() : !router.is_free(p)) continue;
-      if (pad && router.pin_candidates(g, g).empty()) continue;
-      terms.push_back(b);
-      pins.push_back(g);
+      add_pin_apart(router, pad ? box_polygons(std::vector<geom::Box>{b})[0] : geom::Polygon{{p}, {}}, 44, terms, pins);
     }
     if (pins.size() < 3) continue;
     const auto best = oracle::steiner_minimal_length(norm.domain, norm.obstacles, std::span<const geom::Box>(terms));
@@ -365,17 +376,7 @@ TEST(SteinerTree, OctilinearPadsLegalAndNearTheMinimum) {
         case 3: g = geom::Polygon{{{x, y}, {x + c, y}, {x, y + c}}, {}}; break;  // 45-degree triangle
         default: g = geom::Polygon{{{x, y}, {x + c + 1, y}, {x + c + 1, y + r}, {x + r + 1, y + c}, {x, y + c}}, {}};  // a cut corner
       }
-      geom::Box b{g.outer[0], g.outer[0]};
-      for (const Point v : g.outer) b = {{std::min(b.lo.x, v.x), std::min(b.lo.y, v.y)}, {std::max(b.hi.x, v.x), std::max(b.hi.y, v.y)}};
-      if (b.hi.x > 30 || b.hi.y > 30) continue;
-      bool apart = true;  // pins do not touch one another
-      for (const geom::Box& o : terms) apart = apart && !geom::boxes_meet(geom::grown_box(b, 1), o);
-      if (!apart) continue;
-      const bool pad = g.outer.size() > 1;
-      if (pad ? router.pin_meets_obstacle(g).has_value() : !router.is_free(g.outer[0])) continue;
-      if (pad && router.pin_candidates(g, g).empty()) continue;
-      terms.push_back(b);
-      pins.push_back(g);
+      add_pin_apart(router, g, 30, terms, pins);
     }
     if (pins.size() < 3) continue;
     const auto best = oracle::oct_steiner_minimal_length(norm.domain, norm.obstacles, std::span<const geom::Polygon>(pins));

@@ -381,7 +381,7 @@ void run_seed(std::uint64_t seed, Tally& t, bool verbose) {
       const Polygon p = random_pin(r, c, true);
       if (std::all_of(p.outer.begin(), p.outer.end(),
                       [&](Point v) { return v.x >= d.lo.x && v.x <= d.hi.x && v.y >= d.lo.y && v.y <= d.hi.y; }) &&
-          Router::supports_pin(p) && !router.pin_meets_obstacle(p))
+          taut::router::pin_shape_supported(p) && !router.pin_meets_obstacle(p))
         return p;
     }
     return Polygon{{c}, {}};

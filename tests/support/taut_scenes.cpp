@@ -25,11 +25,14 @@ unsigned step_mask(const geom::LatticeDirections& set) {
   return m;
 }
 
-int fewest_bends_any_length(const oracle::L1Reference& ref, const oracle::HomotopyWords& h, const geom::Box& D, Point a,
-                            Point b, const std::vector<int>& word, int cap, unsigned steps) {
-  if (a == b) return word.empty() ? 0 : -1;
+namespace {
+
+// The 0-1 BFS of fewest_bends_any_length (a to b) and fewest_bends_closed (closed: x to x, the
+// first step kept in the state for the closing turn).
+int lattice_bends_bfs(const oracle::L1Reference& ref, const oracle::HomotopyWords& h, const geom::Box& D, Point a,
+                      Point b, const std::vector<int>& word, int cap, unsigned steps, bool closed) {
   LatticeSteps ls{ref, h, D, {}, {}};
-  using State = std::tuple<Point, int, std::vector<int>>;
+  using State = std::tuple<Point, int, int, std::vector<int>>;  // point, last step, first step (closed), word
   std::map<State, int> dist;
   std::deque<std::pair<State, int>> queue;
   for (int d = 0; d < 8; ++d) {
@@ -37,15 +40,16 @@ int fewest_bends_any_length(const oracle::L1Reference& ref, const oracle::Homoto
     const auto& st = ls.step(a, d);
     if (!st.first) continue;
     const Point q{a.x + LatticeSteps::kSteps[d].x, a.y + LatticeSteps::kSteps[d].y};
-    State s{q, d, st.second};
+    State s{q, d, closed ? d : -1, st.second};
     if (dist.emplace(s, 0).second) queue.emplace_back(std::move(s), 0);
   }
   while (!queue.empty()) {
     auto [s, c] = std::move(queue.front());
     queue.pop_front();
     if (dist.at(s) < c) continue;
-    const auto& [p, dir, w] = s;
-    if (p == b && w == word) return c;
+    const auto& [p, dir, first, w] = s;
+    // closed: back at x with a turn there that stays in one free wedge (or none)
+    if (p == b && w == word && (!closed || dir == first || ls.turn_ok(b, dir, first))) return c;
     for (int d = 0; d < 8; ++d) {
       if (!((steps >> d) & 1)) continue;
       if ((d + 2) % 4 == dir % 4 && (d >= 4) == (dir >= 4)) continue;  // no reversal
@@ -54,7 +58,7 @@ int fewest_bends_any_length(const oracle::L1Reference& ref, const oracle::Homoto
       const auto& st = ls.step(p, d);
       if (!st.first || !ls.turn_ok(p, dir, d)) continue;
       const Point q{p.x + LatticeSteps::kSteps[d].x, p.y + LatticeSteps::kSteps[d].y};
-      State n{q, d, LatticeSteps::append(w, st.second)};
+      State n{q, d, first, LatticeSteps::append(w, st.second)};
       auto [it, fresh] = dist.emplace(n, nc);
       if (!fresh && it->second <= nc) continue;
       it->second = nc;
@@ -63,6 +67,19 @@ int fewest_bends_any_length(const oracle::L1Reference& ref, const oracle::Homoto
     }
   }
   return -1;
+}
+
+}  // namespace
+
+int fewest_bends_any_length(const oracle::L1Reference& ref, const oracle::HomotopyWords& h, const geom::Box& D, Point a,
+                            Point b, const std::vector<int>& word, int cap, unsigned steps) {
+  if (a == b) return word.empty() ? 0 : -1;
+  return lattice_bends_bfs(ref, h, D, a, b, word, cap, steps, false);
+}
+
+int fewest_bends_closed(const oracle::L1Reference& ref, const oracle::HomotopyWords& h, const geom::Box& D, Point x,
+                        const std::vector<int>& word, int cap, unsigned steps) {
+  return lattice_bends_bfs(ref, h, D, x, x, word, cap, steps, true);
 }
 
 std::optional<TautSketch> taut_sketch(Sketcher& sk, const router::Tightener& tight, int legs, bool loops) {

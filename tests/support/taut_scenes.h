@@ -81,6 +81,12 @@ int fewest_bends_any_length(const oracle::L1Reference& ref, const oracle::Homoto
                             geom::Point a, geom::Point b, const std::vector<int>& word, int cap,
                             unsigned steps = 0x0F);
 
+// The same search for closed paths: the fewest bends inside a lattice path from x back to x in the
+// class `word` (its reduced word from x), whose closing turn at x stays in one free wedge (or goes
+// straight on); b bends make a loop of at most b + 1 links. -1 when there is none within cap.
+int fewest_bends_closed(const oracle::L1Reference& ref, const oracle::HomotopyWords& h, const geom::Box& D,
+                        geom::Point x, const std::vector<int>& word, int cap, unsigned steps = 0x0F);
+
 // A random sketch (a walk of `legs` legs, with loops appended when asked) and its taut path;
 // nullopt when the sketch is closed or does not tighten.
 struct TautSketch {
