@@ -795,11 +795,11 @@ CMinLinkLoop CMinLinker::loop(std::span<const Point> taut_loop, const geom::Latt
   // The starts, each a path in the cover whose ends close into a loop of the class:
   //   - an edge (a, b) of the shortest loop along a direction of the set: the path from a once
   //     round to b, whose first link runs along the edge; closed by the edge back to a;
-  //   - a vertex v and a direction d of the set strictly within the loop's turn at v: the path from v - d
-  //     through v once round to v and on to v + d (locally taut: the blockage at v lies inside
-  //     both of its turns there, which are within the loop's), whose first link runs along d
-  //     through v; closed by the segment back through v. When the path's last link runs along
-  //     the first one's line, the closing segment joins them into one link;
+  //   - a vertex v and a direction d of the set strictly within the loop's turn at v: the path
+  //     from v - d through v once round to v and on to v + d (locally taut: the blockage at v
+  //     lies inside both of its turns there, which contain the loop's), whose first link runs
+  //     along d through v; closed by the segment back through v. When the path's last link runs
+  //     along the first one's line, the closing segment joins them into one link;
   //   - a vertex v: the path from v once round back to v.
   // A loop wound w times repeats its vertices and edges: each once.
   struct Start {
@@ -840,24 +840,22 @@ CMinLinkLoop CMinLinker::loop(std::span<const Point> taut_loop, const geom::Latt
     if (st.kind == 1) round.push_back({v[st.a].x - st.d.x, v[st.a].y - st.d.y});
     for (std::size_t i = 0; i <= n + (st.kind == 0 ? 1 : 0); ++i) round.push_back(v[(st.a + i) % n]);
     if (st.kind == 1) round.push_back({v[st.a].x + st.d.x, v[st.a].y + st.d.y});
-    CMinLinkPath c;
     if (st.kind == 1) {
       // v - d and v + d may lie in a blockage or past a pinch: such a start is left out
-      const Tightener tight(*t_);
       Sleeve probe;
-      if (tight.lift(round, probe) != TightenStatus::Ok) continue;
+      if (Tightener(*t_).lift(round, probe) != TightenStatus::Ok) continue;
     }
-    c = path(round, set);
+    CMinLinkPath c = path(round, set);
     ++best.starts;
     if (!c.ok()) {
       why = c.why;
       continue;
     }
     if (c.points.size() < 2) throw std::logic_error("CMinLinker::loop: a path of no link");
-    // Closed: from the path's last point back to its first (along the edge, or through v) or at
-    // v. Links along one line (the closing one and its
-    // neighbours, or any two that meet there, the same way or back) join into one: the segment
-    // between their far ends lies on them, so the loop stays free and in its class.
+    // Closed: from the path's last point back to its first (along the edge, or through v), or at
+    // v. Links along one line (the closing one and its neighbours, or any two that meet there,
+    // the same way or back) join into one: the segment between their far ends lies on them, so
+    // the loop stays free and in its class.
     std::vector<RPoint> l(c.points.begin(), c.points.end() - 1);
     if (st.kind != 2) l.push_back(c.points.back());
     for (bool again = true; again && l.size() >= 3;) {
