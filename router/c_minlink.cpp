@@ -769,18 +769,12 @@ CMinLinkPath CMinLinker::path(std::span<const Point> taut, const geom::LatticeDi
 }
 
 CMinLinkLoop CMinLinker::loop(std::span<const Point> taut_loop, const geom::LatticeDirections& set,
-                              std::size_t max_starts) const {
-  if (taut_loop.size() < 2 || taut_loop.front() != taut_loop.back())
-    throw std::invalid_argument("CMinLinker::loop: the loop is not closed");
-  std::vector<Point> v;  // the loop's vertices, cyclically, without repeats
-  for (std::size_t i = 0; i + 1 < taut_loop.size(); ++i)
-    if (v.empty() || v.back() != taut_loop[i]) v.push_back(taut_loop[i]);
-  while (v.size() > 1 && v.back() == v.front()) v.pop_back();
+                              const MinLinkLoop* any_angle, std::size_t max_starts) const {
+  const std::vector<Point> v = loop_vertices(taut_loop, "CMinLinker::loop");
   const std::size_t n = v.size();
-  if (n < 3) throw std::invalid_argument("CMinLinker::loop: a loop of fewer than three vertices");
   CMinLinkLoop best;
   {
-    const MinLinkLoop any = MinLinker(*t_).loop(taut_loop);
+    const MinLinkLoop any = any_angle ? *any_angle : MinLinker(*t_).loop(taut_loop);
     std::size_t lb = std::max<std::size_t>(3, any.minimal ? any.links() : any.at_least);
     if (set.steps().size() == 4) lb = std::max<std::size_t>(4, lb + lb % 2);
     best.at_least = lb;

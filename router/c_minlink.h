@@ -63,6 +63,7 @@
 #include "geom/directions.h"
 #include "geom/triangulation.h"
 #include "geom/types.h"
+#include "router/minlink.h"  // MinLinkLoop
 #include "router/spm.h"  // Rational, RPoint
 
 namespace taut::router {
@@ -121,11 +122,12 @@ class CMinLinker {
   //     a blockage, at least 3); with two orientations the links of a minimum-link loop alternate
   //     between them (two consecutive links of one orientation run back over each other and
   //     merge into one), so the count is even, at least 4.
-  // minimal when the two meet. A loop with fewer links may exist otherwise (one whose links do
-  // not pass through the starts so). No loop (`why`) when no direction of the set leaves any
+  // minimal when the two meet. A loop with fewer links may exist otherwise (one that passes
+  // through none of the starts in those ways). No loop (`why`) when no direction of the set leaves any
   // start's free wedge. Throws std::invalid_argument when the input is not such a loop.
+  // `any_angle`: MinLinker::loop of the same loop when the caller has it (else it is computed).
   CMinLinkLoop loop(std::span<const geom::Point> taut_loop, const geom::LatticeDirections& set,
-                    std::size_t max_starts = 64) const;
+                    const MinLinkLoop* any_angle = nullptr, std::size_t max_starts = 64) const;
 
  private:
   const geom::FreeSpaceTriangulation* t_;

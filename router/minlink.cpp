@@ -5,6 +5,7 @@
 #include <optional>
 #include <set>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace taut::router {
@@ -281,6 +282,17 @@ struct MinLinker::Sweep {
   }
 };
 
+std::vector<Point> loop_vertices(std::span<const Point> loop, const char* who) {
+  if (loop.size() < 2 || loop.front() != loop.back())
+    throw std::invalid_argument(std::string(who) + ": the loop is not closed");
+  std::vector<Point> v;
+  for (std::size_t i = 0; i + 1 < loop.size(); ++i)
+    if (v.empty() || v.back() != loop[i]) v.push_back(loop[i]);
+  while (v.size() > 1 && v.back() == v.front()) v.pop_back();
+  if (v.size() < 3) throw std::invalid_argument(std::string(who) + ": a loop of fewer than three vertices");
+  return v;
+}
+
 MinLinker::MinLinker(const geom::FreeSpaceTriangulation& t) : t_(&t) {
   geom::VertexFans f = geom::vertex_fans(t);
   fan_start_ = std::move(f.start);
@@ -431,15 +443,8 @@ MinLinkPath MinLinker::path(std::span<const geom::Point> taut) const {
 }
 
 MinLinkLoop MinLinker::loop(std::span<const geom::Point> taut_loop, std::size_t max_starts) const {
-  if (taut_loop.size() < 2 || taut_loop.front() != taut_loop.back())
-    throw std::invalid_argument("MinLinker::loop: the loop is not closed");
-  // the loop's vertices, cyclically, without repeats
-  std::vector<Point> v;
-  for (std::size_t i = 0; i + 1 < taut_loop.size(); ++i)
-    if (v.empty() || v.back() != taut_loop[i]) v.push_back(taut_loop[i]);
-  while (v.size() > 1 && v.back() == v.front()) v.pop_back();
+  const std::vector<Point> v = loop_vertices(taut_loop, "MinLinker::loop");
   const std::size_t n = v.size();
-  if (n < 3) throw std::invalid_argument("MinLinker::loop: a loop of fewer than three vertices");
   std::vector<int> label(n);
   for (std::size_t i = 0; i < n; ++i) {
     label[i] = sgn(cross(zvec(v[(i + n - 1) % n], v[i]), zvec(v[i], v[(i + 1) % n])));

@@ -73,6 +73,10 @@ struct MinLinkLoop {
   std::size_t starts = 0;  // greedy runs made (1 when the loop has an inflection edge)
 };
 
+// The vertices of a closed path (front == back), cyclically, without repeats. Throws
+// std::invalid_argument (prefixed by `who`) when it is not closed or has fewer than three.
+std::vector<geom::Point> loop_vertices(std::span<const geom::Point> loop, const char* who);
+
 class MinLinker {
  public:
   // The triangulation must outlive the MinLinker and be ok().

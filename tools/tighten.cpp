@@ -65,9 +65,11 @@ struct NetTightening {
   // direction set, the minimum-link path in it
   void add_min_link(const router::MinLinker& ml, std::span<const geom::Point> taut, bool is_loop,
                     const geom::FreeSpaceTriangulation& t, const std::optional<geom::LatticeDirections>& set) {
+    std::optional<router::MinLinkLoop> any_loop;  // the any-angle loop: also the bound of the set's
+    if (is_loop) any_loop = ml.loop(taut);
     if (set) {
       if (is_loop) {
-        router::CMinLinkLoop c = router::CMinLinker(t).loop(taut, *set);
+        router::CMinLinkLoop c = router::CMinLinker(t).loop(taut, *set, &*any_loop);
         if (!c.ok()) oriented_none = c.why;
         oriented_min_links += c.links();
         oriented_at_least += c.minimal ? c.links() : c.at_least;
@@ -84,7 +86,7 @@ struct NetTightening {
       }
     }
     if (is_loop) {
-      router::MinLinkLoop l = ml.loop(taut);
+      router::MinLinkLoop& l = *any_loop;
       min_links_proven = min_links_proven && l.minimal;
       min_links_at_least += l.minimal ? l.links() : l.at_least;
       min_link.push_back(router::MinLinkPath{std::move(l.points)});
