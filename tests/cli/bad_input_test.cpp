@@ -11,7 +11,7 @@
 #include "support/run.h"
 
 namespace taut::test {
-namespace {
+namespace bad_input_test {
 
 using Row = BadCase;
 
@@ -84,5 +84,5 @@ std::string row_name(const ::testing::TestParamInfo<Row>& info) {
 
 INSTANTIATE_TEST_SUITE_P(Corpus, BadInput, ::testing::ValuesIn(load_rows()), row_name);
 
-}  // namespace
+}  // namespace bad_input_test
 }  // namespace taut::test

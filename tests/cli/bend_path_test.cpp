@@ -20,7 +20,7 @@
 #include "support/sanitized.h"
 
 namespace taut {
-namespace {
+namespace bend_path_test {
 
 using geom::Point;
 using test::run_taut;
@@ -582,5 +582,5 @@ TEST(BendRoute, BendsDesignPicturesAndRoutes) {
   test::expect_routes_check_except_clearance(dir + "/demo.xml");
 }
 
-}  // namespace
+}  // namespace bend_path_test
 }  // namespace taut

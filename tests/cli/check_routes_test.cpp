@@ -11,7 +11,7 @@
 #include "support/run.h"
 
 namespace taut {
-namespace {
+namespace check_routes_test {
 
 using test::run_taut;
 
@@ -138,5 +138,5 @@ TEST(CheckRoutes, ClearanceOfTheRules) {
       << r.err;
 }
 
-}  // namespace
+}  // namespace check_routes_test
 }  // namespace taut

@@ -6,7 +6,7 @@
 #include "support/run.h"
 
 namespace taut::test {
-namespace {
+namespace cli_test {
 
 const std::string kDemo = std::string(TAUT_SOURCE_DIR) + "/designs/demo.xml";
 
@@ -111,11 +111,11 @@ TEST(Cli, StatsJson) {
   EXPECT_GT(j["nets"].get<int>(), 0);
 }
 
-}  // namespace
+}  // namespace cli_test
 }  // namespace taut::test
 
 namespace taut::test {
-namespace {
+namespace cli_test {
 
 // A routed layout whose written length/bends agree with its wires passes; one that lies fails
 // with exit status 1 and a CHECK-0001 naming the route.
@@ -178,5 +178,5 @@ TEST(Cli, CheckRoutesOrientations) {
   EXPECT_EQ(nlohmann::json::parse(r.out)["routes_check"]["orientations"], "not checked");
 }
 
-}  // namespace
+}  // namespace cli_test
 }  // namespace taut::test

@@ -21,7 +21,7 @@
 #include "support/run.h"
 
 namespace taut {
-namespace {
+namespace diameter_test {
 
 using geom::Point;
 using test::run_taut;
@@ -263,5 +263,5 @@ TEST(Diameter, RefusalsNameTheFileAndLine) {
   }
 }
 
-}  // namespace
+}  // namespace diameter_test
 }  // namespace taut

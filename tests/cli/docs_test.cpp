@@ -9,7 +9,7 @@
 #include "support/run.h"
 
 namespace taut::test {
-namespace {
+namespace docs_test {
 namespace fs = std::filesystem;
 
 std::set<std::string> codes_in_sources() {
@@ -41,5 +41,5 @@ TEST(Docs, QuickStart) {
   EXPECT_NE(readme.find("make test"), std::string::npos);
 }
 
-}  // namespace
+}  // namespace docs_test
 }  // namespace taut::test

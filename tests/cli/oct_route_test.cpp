@@ -16,7 +16,7 @@
 #include "support/sanitized.h"
 
 namespace taut::test {
-namespace {
+namespace oct_route_test {
 
 using geom::Point;
 using geom::Root2;
@@ -283,5 +283,5 @@ TEST(OctRoute, RectangularShapePins) {
   EXPECT_EQ(want_pt, (Root2{5, 15}));
 }
 
-}  // namespace
+}  // namespace oct_route_test
 }  // namespace taut::test

@@ -27,7 +27,7 @@
 #include "support/sanitized.h"
 
 namespace taut::test {
-namespace {
+namespace route_test {
 
 using geom::Point;
 using Path = std::vector<Point>;
@@ -796,5 +796,5 @@ TEST(Route, InvalidInputWritesNothingAndKeepsTheOldOutput) {
   EXPECT_FALSE(file_exists(dir + "/p.svg"));
 }
 
-}  // namespace
+}  // namespace route_test
 }  // namespace taut::test

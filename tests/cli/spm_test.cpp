@@ -22,7 +22,7 @@
 #include "support/sanitized.h"
 
 namespace taut::test {
-namespace {
+namespace spm_test {
 
 using geom::Point;
 using geom::Root2;
@@ -338,5 +338,5 @@ TEST(Spm, PointFiles) {
   EXPECT_NE(no_name.err.find("--query-file \"\": needs a file name"), std::string::npos) << no_name.err;
 }
 
-}  // namespace
+}  // namespace spm_test
 }  // namespace taut::test

@@ -20,7 +20,7 @@
 #include "support/taut_check.h"
 
 namespace taut::test {
-namespace {
+namespace tighten_test {
 
 using geom::Point;
 using Path = std::vector<Point>;
@@ -896,5 +896,5 @@ TEST(Tighten, BadInputExit2AndWritesNothing) {
   EXPECT_EQ(read_text(dir + "/t.xml"), "old");
 }
 
-}  // namespace
+}  // namespace tighten_test
 }  // namespace taut::test

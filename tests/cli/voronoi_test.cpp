@@ -20,7 +20,7 @@
 #include "support/run.h"
 
 namespace taut::test {
-namespace {
+namespace voronoi_test {
 
 using geom::Point;
 
@@ -344,5 +344,5 @@ TEST(Voronoi, BadInputIsRefusedAndWritesNothing) {
             mpq_class(10000));
 }
 
-}  // namespace
+}  // namespace voronoi_test
 }  // namespace taut::test

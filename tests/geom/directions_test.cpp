@@ -14,7 +14,7 @@
 #include <vector>
 
 namespace taut::geom {
-namespace {
+namespace directions_test {
 
 TEST(LatticeDirections, ParsesMultiplesOf45Only) {
   EXPECT_EQ(LatticeDirections::parse("rectilinear")->mask(), 0b0101u);
@@ -126,5 +126,5 @@ TEST(LatticeDirections, LengthIsTheShortestLatticePathInTheSet) {
   std::printf("%d lengths equal to the lattice's, %d shorter (half steps between the diagonals)\n", compared, halves);
 }
 
-}  // namespace
+}  // namespace directions_test
 }  // namespace taut::geom

@@ -12,7 +12,7 @@
 #include <optional>
 #include <random>
 
-namespace {
+namespace fixed_norm_test {
 
 using i64 = std::int64_t;
 using i128 = __int128;
@@ -102,4 +102,4 @@ TEST(FixedNorm, DirectionSets) {
   EXPECT_NEAR(static_cast<double>(taut::geom::fixed_norm_epsilon(4)), 0.0076, 0.0005);
 }
 
-}  // namespace
+}  // namespace fixed_norm_test

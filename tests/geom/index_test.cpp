@@ -14,7 +14,7 @@
 #include <vector>
 
 namespace taut::geom {
-namespace {
+namespace index_test {
 
 constexpr Coord L = kMaxCoord;
 constexpr std::uint64_t kBaseSeed = 77001;
@@ -398,5 +398,5 @@ TEST(ObstacleIndex, ManyEdgesIsFast) {
   EXPECT_GT(total_hits, rays / 2);
 }
 
-}  // namespace
+}  // namespace index_test
 }  // namespace taut::geom

@@ -13,7 +13,7 @@
 #include "geom/predicates.h"
 #include "io/movingai.h"
 
-namespace {
+namespace normalize_test {
 
 using taut::geom::Point;
 using taut::geom::Polygon;
@@ -132,7 +132,8 @@ TEST(MovingAi, LoadsSharedArena) {
   EXPECT_FALSE(r.layout->blockages.empty());
 }
 
-}  // namespace
+}  // namespace normalize_test
+using namespace normalize_test;
 
 // square_grown + normalize_obstacles against the definition of the Minkowski sum with the
 // square [-r, r]^2: a lattice point whose square (closed) meets some input polygon (the point
@@ -203,7 +204,7 @@ TEST(SquareGrown, CoversTheMinkowskiSum) {
   EXPECT_LT(rounded * 100, covered);
 }
 
-namespace {
+namespace normalize_test {
 // Winding number of ring r around q, all coordinates times 4 (q off the ring): Sunday's rule.
 int winding4(const Ring& r, Point q4) {
   int w = 0;
@@ -222,7 +223,8 @@ bool on_ring4(const Ring& r, Point q4) {
   }
   return false;
 }
-}  // namespace
+}  // namespace normalize_test
+using namespace normalize_test;
 
 // cut_beyond(): the components of random unions of rectangles, triangles (sloped edges) and
 // rings with holes, cut against random boxes (sides through vertices and edges, boxes inside,

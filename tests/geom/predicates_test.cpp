@@ -12,7 +12,7 @@
 #include <vector>
 
 namespace taut::geom {
-namespace {
+namespace predicates_test {
 
 constexpr Coord L = kMaxCoord;
 constexpr std::uint64_t kBaseSeed = 20240611;
@@ -449,5 +449,5 @@ TEST(Predicates, TwiceAreaMatchesGmp) {
   EXPECT_EQ(Z(twice_area(rev)), -8 * Z(L) * Z(L));
 }
 
-}  // namespace
+}  // namespace predicates_test
 }  // namespace taut::geom

@@ -15,7 +15,7 @@
 #include <vector>
 
 namespace taut::geom {
-namespace {
+namespace root2_test {
 
 using i64 = std::int64_t;
 constexpr i64 kBound = (i64{1} << 62) - 1;  // the magnitude root2.h promises exactness for
@@ -183,5 +183,5 @@ TEST(Root2, RandomPairsMatchGmp) {
   EXPECT_GT(near_ties, 20000);
 }
 
-}  // namespace
+}  // namespace root2_test
 }  // namespace taut::geom

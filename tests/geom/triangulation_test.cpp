@@ -17,7 +17,7 @@
 #include <vector>
 
 namespace taut::geom {
-namespace {
+namespace triangulation_test {
 
 using i64 = std::int64_t;
 using i128 = __int128;
@@ -772,5 +772,5 @@ TEST(TriangulationScale, DISABLED_Timing) {
   }
 }
 
-}  // namespace
+}  // namespace triangulation_test
 }  // namespace taut::geom

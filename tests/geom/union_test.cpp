@@ -18,7 +18,7 @@
 #include "io/movingai.h"
 #include "oracle/union_oracle.h"
 
-namespace {
+namespace union_test {
 
 using taut::geom::Box;
 using taut::geom::Coord;
@@ -559,4 +559,4 @@ TEST(UnionScale, DISABLED_MillionVerticesOfRandomRectangles) {
   EXPECT_GT(r.stats.output_obstacles, 0);
 }
 
-}  // namespace
+}  // namespace union_test

@@ -16,7 +16,7 @@
 #include "geom/predicates.h"
 
 namespace taut::geom {
-namespace {
+namespace validate_test {
 
 namespace bg = boost::geometry;
 constexpr std::uint64_t kBaseSeed = 5150;
@@ -300,5 +300,5 @@ TEST(Validate, MillionVerticesFast) {
   std::printf("[ validate ] %d holes: %.0f ms\n", kHoleGrid * kHoleGrid, std::chrono::duration<double, std::milli>(t1 - t0).count());
 }
 
-}  // namespace
+}  // namespace validate_test
 }  // namespace taut::geom

@@ -13,7 +13,7 @@
 #include "support/run.h"
 
 namespace taut::io {
-namespace {
+namespace atomic_file_test {
 
 namespace fs = std::filesystem;
 
@@ -113,5 +113,5 @@ TEST(AtomicFile, ReadOnlyFolderKeepsOldFile) {
   EXPECT_EQ(entries(dir), std::vector<std::string>{"out.xml"});
 }
 
-}  // namespace
+}  // namespace atomic_file_test
 }  // namespace taut::io

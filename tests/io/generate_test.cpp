@@ -11,7 +11,7 @@
 #include "io/validate_layout.h"
 
 namespace taut::io {
-namespace {
+namespace generate_test {
 
 using i128 = __int128;
 using Ring = std::vector<Point>;
@@ -334,5 +334,5 @@ TEST(Generate, MillionVerticesTiming) {
   }
 }
 
-}  // namespace
+}  // namespace generate_test
 }  // namespace taut::io

@@ -29,7 +29,7 @@ using taut::geom::Point;
 using taut::geom::Ring;
 using namespace taut::io;
 
-namespace {
+namespace reader_test {
 
 std::string data(const std::string& rel) { return std::string(TAUT_TEST_DATA) + "/" + rel; }
 
@@ -62,7 +62,8 @@ bool polygon_validation_available() {
   return !taut::geom::validate_ring({{0, 0}, {2, 2}, {2, 0}, {0, 3}}).empty();
 }
 
-}  // namespace
+}  // namespace reader_test
+using namespace reader_test;
 
 // ---------------------------------------------------------------------------------------------
 // The corpus.
@@ -286,7 +287,7 @@ TEST(ReaderGood, DefaultsWhenOptionalPartsAreAbsent) {
 // Numbers and points against an independent reference: a regex for the syntax and decimal
 // string comparison for the range (no from_chars).
 
-namespace {
+namespace reader_test {
 
 // -1: syntax error, 0: out of range, 1: accepted.
 using taut::test::reference_int;
@@ -302,7 +303,8 @@ std::string xml_escape(const std::string& s) {
   return o;
 }
 
-}  // namespace
+}  // namespace reader_test
+using namespace reader_test;
 
 TEST(ReaderNumbers, RandomStringsAgreeWithReference) {
   const unsigned base_seed = 20240611;
@@ -566,7 +568,7 @@ TEST(ReaderSpeed, ManyRects) {
   std::printf("[ speed    ] %d rects (%zu bytes): read %.3f s, validate %.3f s\n", n, doc.size(), read_s, val_s);
 }
 
-namespace {
+namespace reader_test {
 
 TEST(Orientations, CSetsThatNameRectilinearOrOctilinear) {
   using taut::io::canonical_orientations;
@@ -580,4 +582,5 @@ TEST(Orientations, CSetsThatNameRectilinearOrOctilinear) {
     EXPECT_EQ(canonical_orientations(other), other);
 }
 
-}  // namespace
+}  // namespace reader_test
+using namespace reader_test;

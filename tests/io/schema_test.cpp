@@ -21,7 +21,7 @@
 
 namespace fs = std::filesystem;
 
-namespace {
+namespace schema_test {
 
 const std::string kSchema = std::string(TAUT_SOURCE_DIR) + "/io/schema/layout.xsd";
 
@@ -69,7 +69,8 @@ std::vector<std::string> xml_files(const std::string& dir) {
 
 using taut::test::reference_int;
 
-}  // namespace
+}  // namespace schema_test
+using namespace schema_test;
 
 TEST(Schema, GoodFilesAndDesignsValidate) {
   if (!have_xmllint()) GTEST_SKIP() << "xmllint not installed";

@@ -10,7 +10,7 @@
 #include "io/stats_json.h"
 
 namespace taut::io {
-namespace {
+namespace stats_test {
 
 using Poly = std::vector<Point>;
 
@@ -237,5 +237,5 @@ TEST(LayoutStats, Routes) {
   EXPECT_NE(text.find("\"length\": 17.414"), std::string::npos) << text;
 }
 
-}  // namespace
+}  // namespace stats_test
 }  // namespace taut::io

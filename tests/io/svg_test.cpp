@@ -31,7 +31,7 @@ void xmlFreeTextReader(xmlTextReaderPtr reader);
 #endif
 
 namespace taut::io {
-namespace {
+namespace svg_test {
 
 SvgOptions svg_options(int width_px, bool labels) {
   SvgOptions o;
@@ -229,5 +229,5 @@ TEST(Svg, LabelsCanBeTurnedOff) {
   EXPECT_GT(with.count_name("text"), without.count_name("text") + static_cast<int>(l.blockages.size()) - 1);
 }
 
-}  // namespace
+}  // namespace svg_test
 }  // namespace taut::io

@@ -21,7 +21,7 @@ using taut::geom::Point;
 using taut::geom::Ring;
 using namespace taut::io;
 
-namespace {
+namespace validate_test {
 
 // A tiny builder so each test reads as a drawing.
 struct L {
@@ -128,7 +128,8 @@ std::vector<Diagnostic> with_code(const std::vector<Diagnostic>& ds, const std::
   return v;
 }
 
-}  // namespace
+}  // namespace validate_test
+using namespace validate_test;
 
 // ---------------------------------------------------------------------------------------------
 // Point pins against unions of rectangles: random, against unit cells.

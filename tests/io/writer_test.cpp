@@ -11,7 +11,7 @@
 #include "io/layout_writer.h"
 
 namespace taut::io {
-namespace {
+namespace writer_test {
 
 Layout read_back(const std::string& xml) {
   ReadResult r = parse_layout(xml, "written.xml");
@@ -298,5 +298,5 @@ TEST(SameDocument, IgnoresFileAndLinesOnly) {
   }
 }
 
-}  // namespace
+}  // namespace writer_test
 }  // namespace taut::io

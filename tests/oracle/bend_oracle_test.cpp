@@ -28,7 +28,7 @@
 #include "support/reach.h"
 #include "support/random_shapes.h"
 
-namespace {
+namespace bend_oracle_test {
 
 using taut::geom::Box;
 using taut::geom::Point;
@@ -419,4 +419,4 @@ TEST(BendOracle, MatchesCellLatticeSearchOnRandomLayouts) {
               pinch_queries, metric_matters);
 }
 
-}  // namespace
+}  // namespace bend_oracle_test

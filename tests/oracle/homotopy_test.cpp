@@ -25,7 +25,7 @@
 #include "support/wavefront_hand.h"
 
 namespace taut::test {
-namespace {
+namespace homotopy_test {
 
 using geom::Point;
 using Path = std::vector<Point>;
@@ -340,5 +340,5 @@ TEST(HomotopyWords, HomotopyMovesKeepTheWord) {
   EXPECT_GE(loops, sanitized_share(50, 4));
 }
 
-}  // namespace
+}  // namespace homotopy_test
 }  // namespace taut::test

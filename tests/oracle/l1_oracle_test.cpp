@@ -25,7 +25,7 @@
 #include "oracle/union_oracle.h"
 #include "support/reach.h"
 
-namespace {
+namespace l1_oracle_test {
 
 using taut::geom::Box;
 using taut::geom::Point;
@@ -610,4 +610,4 @@ TEST(L1Oracle, HugeCoordinates) {
   }
 }
 
-}  // namespace
+}  // namespace l1_oracle_test

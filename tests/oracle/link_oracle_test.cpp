@@ -7,7 +7,7 @@
 #include "support/wavefront_hand.h"
 
 namespace taut::test {
-namespace {
+namespace link_oracle_test {
 
 oracle::QPoint qp(long x, long y) { return {mpq_class(x), mpq_class(y)}; }
 
@@ -41,5 +41,5 @@ TEST(LinkOracle, SegmentFreeTouchingAndPinches) {
   EXPECT_TRUE(oracle::segment_free(qp(6, 0), qp(6, 6), two.domain, two.obstacles));              // up to the pinch
 }
 
-}  // namespace
+}  // namespace link_oracle_test
 }  // namespace taut::test

@@ -27,7 +27,7 @@
 #include "support/random_shapes.h"
 #include "support/sanitized.h"
 
-namespace {
+namespace link_polygon_oracle_test {
 
 using taut::geom::Box;
 using taut::geom::Coord;
@@ -417,4 +417,4 @@ TEST(LinkPolygonOracle, DiameterAtConvexVertices) {
   std::cout << "diameters (links:polygons):" << s.str() << "\n";
 }
 
-}  // namespace
+}  // namespace link_polygon_oracle_test

@@ -62,7 +62,7 @@
 #include "geom/predicates.h"
 #include "oracle/union_oracle.h"
 
-namespace {
+namespace oct_oracle_test {
 
 using taut::geom::Box;
 using taut::geom::NormalizedObstacles;
@@ -729,4 +729,4 @@ TEST(OctOracle, MetamorphicOnSlopedTriangles) {
   std::printf("checked %d pairs, %d unreachable\n", checked, unreachable);
 }
 
-}  // namespace
+}  // namespace oct_oracle_test

@@ -36,7 +36,7 @@
 #include "support/sanitized.h"
 
 namespace taut::oracle {
-namespace {
+namespace oct_steiner_oracle_test {
 
 using geom::Box;
 using geom::Point;
@@ -387,5 +387,5 @@ TEST(OctSteinerOracle, Limits) {
   EXPECT_THROW(oct_steiner_minimal_length({{0, 0}, {80, 79}}, {}, two), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace oct_steiner_oracle_test
 }  // namespace taut::oracle

@@ -16,7 +16,7 @@
 #include "support/sanitized.h"
 
 namespace taut::oracle {
-namespace {
+namespace steiner_oracle_test {
 
 using geom::Point;
 using test::sanitized_share;
@@ -92,5 +92,5 @@ TEST(SteinerOracle, HandCases) {
   EXPECT_EQ(steiner_minimal_length(d, wall, inside), std::nullopt);
 }
 
-}  // namespace
+}  // namespace steiner_oracle_test
 }  // namespace taut::oracle

@@ -58,7 +58,7 @@
 #include "support/sanitized.h"
 
 namespace taut::test {
-namespace {
+namespace bend_router_test {
 
 using geom::Box;
 using geom::Point;
@@ -1255,5 +1255,5 @@ TEST(BendRouter, RectilinearCoverContainsTheTriangles) {
   EXPECT_GT(tally.ok, count);
 }
 
-}  // namespace
+}  // namespace bend_router_test
 }  // namespace taut::test

@@ -38,7 +38,7 @@
 #include "support/wavefront_hand.h"
 
 namespace taut::test {
-namespace {
+namespace c_minlink_test {
 
 using geom::Point;
 using router::Rational;
@@ -469,5 +469,5 @@ TEST(CMinLinkLoop, RandomLoopsAgainstTheReferences) {
   EXPECT_GE(tot.search_equal * 10, tot.searched * 8);
 }
 
-}  // namespace
+}  // namespace c_minlink_test
 }  // namespace taut::test

@@ -23,7 +23,7 @@
 #include "support/wavefront_cases.h"
 
 namespace taut::test {
-namespace {
+namespace check_test {
 
 using geom::Point;
 
@@ -92,11 +92,11 @@ TEST(FreeSpaceChecker, AgreesWithTheReferenceOnRandomPolylines) {
   EXPECT_GE(polylines - legal, polylines / 10);
 }
 
-}  // namespace
+}  // namespace check_test
 }  // namespace taut::test
 
 namespace taut::test {
-namespace {
+namespace check_test {
 
 // Connectivity and shorts against a brute force on the unit lattice: rectilinear wires with
 // integer vertices meet only at lattice points, so two wires touch iff they share a lattice
@@ -278,11 +278,11 @@ TEST(CheckRoutes, ConnectivityAndShortsMatchALatticeBruteForce) {
   EXPECT_GE(connected_nets, kSanitized ? 10 : 100);
 }
 
-}  // namespace
+}  // namespace check_test
 }  // namespace taut::test
 
 namespace taut::test {
-namespace {
+namespace check_test {
 
 // The clearance of <rules> against a brute force for rectilinear wires among rectangles: the
 // distance between two axis-parallel boxes (a segment is a thin one, a point pin a point) is
@@ -452,11 +452,11 @@ TEST(CheckRoutes, ClearanceMatchesAGapBruteForce) {
   EXPECT_GE(clean_layouts, kSanitized ? 10 : 100);
 }
 
-}  // namespace
+}  // namespace check_test
 }  // namespace taut::test
 
 namespace taut::test {
-namespace {
+namespace check_test {
 
 // A pad gives no pin access (found by review): twenty wires that each end twice on the pad hug a
 // blockage 1 above it, where w/2 + s = 5 is needed; every one is reported.
@@ -557,5 +557,5 @@ TEST(CheckRoutes, ClearanceIsExactOnSlopes) {
   EXPECT_GE(net_problems(1, 1), 1);
 }
 
-}  // namespace
+}  // namespace check_test
 }  // namespace taut::test

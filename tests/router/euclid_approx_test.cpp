@@ -26,7 +26,7 @@
 #include "support/wavefront_cases.h"
 
 namespace taut::test {
-namespace {
+namespace euclid_approx_test {
 
 using geom::Point;
 
@@ -152,5 +152,5 @@ TEST(EuclidApprox, NormDistancesBoundTheEuclideanOne) {
   EXPECT_GT(worst[2], 1 + geom::fixed_norm_epsilon(2) / 2);
 }
 
-}  // namespace
+}  // namespace euclid_approx_test
 }  // namespace taut::test

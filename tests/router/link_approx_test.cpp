@@ -25,7 +25,7 @@
 #include "support/sanitized.h"
 
 namespace taut::test {
-namespace {
+namespace link_approx_test {
 
 using geom::Point;
 using geom::Ring;
@@ -200,5 +200,5 @@ TEST(ApproximateLinkDiameter, RectangleAndBadRings) {
                std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace link_approx_test
 }  // namespace taut::test

@@ -26,7 +26,7 @@
 #include "support/sanitized.h"
 
 namespace taut::test {
-namespace {
+namespace link_cut_test {
 
 using geom::Point;
 using geom::Ring;
@@ -353,5 +353,5 @@ TEST(CutTree, RectangleIsALeafAndBadInputIsRefused) {
   EXPECT_EQ(cut->right.size(), 4u);
 }
 
-}  // namespace
+}  // namespace link_cut_test
 }  // namespace taut::test

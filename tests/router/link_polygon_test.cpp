@@ -44,7 +44,7 @@
 #include "support/sanitized.h"
 
 namespace taut::test {
-namespace {
+namespace link_polygon_test {
 
 using geom::Box;
 using geom::Coord;
@@ -416,5 +416,5 @@ TEST(LinkPolygon, MovingAiWindows) {
   EXPECT_GE(islands + pieces + touches, sanitized_share(40, 6));
 }
 
-}  // namespace
+}  // namespace link_polygon_test
 }  // namespace taut::test

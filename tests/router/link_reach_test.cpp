@@ -26,7 +26,7 @@
 #include "support/sanitized.h"
 
 namespace taut::test {
-namespace {
+namespace link_reach_test {
 
 using geom::Point;
 using geom::Ring;
@@ -522,5 +522,5 @@ TEST(LinkVertexQueries, DiameterMatches) {
   EXPECT_GE(largest, 100);
 }
 
-}  // namespace
+}  // namespace link_reach_test
 }  // namespace taut::test

@@ -27,7 +27,7 @@
 #include "support/wavefront_hand.h"
 
 namespace taut::test {
-namespace {
+namespace minlink_test {
 
 using geom::Point;
 using Path = std::vector<Point>;
@@ -469,5 +469,5 @@ TEST(MinLinkLoop, DegenerateFamiliesStayFreeAndInClass) {
   EXPECT_GE(c.loops, sanitized_share(500, 20));
 }
 
-}  // namespace
+}  // namespace minlink_test
 }  // namespace taut::test

@@ -28,7 +28,7 @@
 #include "support/sanitized.h"
 
 namespace taut::test {
-namespace {
+namespace net_router_test {
 
 using geom::Point;
 using geom::Polygon;
@@ -1317,5 +1317,5 @@ TEST(NetRouter, ReasonsForNetsLeftUnrouted) {
   }
 }
 
-}  // namespace
+}  // namespace net_router_test
 }  // namespace taut::test

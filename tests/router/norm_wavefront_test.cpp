@@ -6,9 +6,9 @@
 //
 // N(v) = max_i lambda_i . v, scaled by geom::kNormScale = 4096 (a direction d_i costs
 // w_i = ceil(4096 |d_i|) per unit). A failing seed prints the instance, both answers and a
-// shrunk instance. To look at one seed: TAUT_NORM_SEED=1234 build/tests/test_router_norm_wavefront
-// --gtest_filter='*Order2*' (the variable names the seed for every order). Keep every seed that
-// once failed in kRegressionSeeds below.
+// shrunk instance. To look at one seed: TAUT_NORM_SEED=1234 build/tests/test_router
+// --gtest_filter='NormWavefront.*Order2*' (the variable names the seed for every order). Keep
+// every seed that once failed in kRegressionSeeds below.
 #include "router/wavefront.h"
 
 #include <gtest/gtest.h>
@@ -25,7 +25,7 @@
 #include "support/wavefront_cases.h"
 #include "support/wavefront_hand.h"
 
-namespace {
+namespace norm_wavefront_test {
 
 using taut::geom::Box;
 using taut::geom::kFarey2;
@@ -234,4 +234,4 @@ TEST(NormWavefront, RefusesUnsupportedOrdersAndOverflowingLayouts) {
   EXPECT_NO_THROW(NormWavefront(big, obstacles, 4));
 }
 
-}  // namespace
+}  // namespace norm_wavefront_test

@@ -34,7 +34,7 @@
 #include "support/wavefront_cases.h"
 
 namespace taut::test {
-namespace {
+namespace oct_cells_test {
 
 using geom::Point;
 using i64 = std::int64_t;
@@ -344,5 +344,5 @@ TEST(OctCells, PiecesMatchTheReference) {
   }
 }
 
-}  // namespace
+}  // namespace oct_cells_test
 }  // namespace taut::test

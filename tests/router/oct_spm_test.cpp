@@ -25,7 +25,7 @@
 #include "support/wavefront_cases.h"
 
 namespace taut::test {
-namespace {
+namespace oct_spm_test {
 
 using geom::Point;
 using geom::Root2;
@@ -182,5 +182,5 @@ TEST(OctMap, RefusesDomainsTooWideForTheFrames) {
   EXPECT_EQ(a->distance, (Root2{(1 << 29) - 4, 1 << 29}));
 }
 
-}  // namespace
+}  // namespace oct_spm_test
 }  // namespace taut::test

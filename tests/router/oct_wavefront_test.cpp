@@ -10,7 +10,7 @@
 // bends at obstacle vertices only; router/staircase.h makes the octilinear wire).
 //
 // A failing seed prints the instance, both answers and a shrunk instance. To look at one seed:
-//   TAUT_OCT_SEED=1234 build/tests/test_router_oct_wavefront --gtest_filter='*Random*'
+//   TAUT_OCT_SEED=1234 build/tests/test_router --gtest_filter='OctWavefront.Random*'
 // Keep every seed that once failed in kRegressionSeeds below.
 #include "router/wavefront.h"
 
@@ -29,7 +29,7 @@
 #include "support/wavefront_cases.h"
 #include "support/wavefront_hand.h"
 
-namespace {
+namespace oct_wavefront_test {
 
 using taut::geom::Box;
 using taut::geom::Point;
@@ -342,4 +342,4 @@ TEST(OctWavefront, DiagonalRayFromAQueryPointPastALongEdgeInItsWindow) {
             R(2, 23));
 }
 
-}  // namespace
+}  // namespace oct_wavefront_test

@@ -26,7 +26,7 @@
 #include "support/sanitized.h"
 #include "support/wavefront_cases.h"
 
-namespace {
+namespace pin_test {
 
 using taut::geom::Box;
 using taut::geom::Location;
@@ -302,4 +302,4 @@ TEST(Pins, HandCases) {
   EXPECT_TRUE(taut::router::pin_shape_supported(diamond));
 }
 
-}  // namespace
+}  // namespace pin_test

@@ -29,7 +29,7 @@
 #include "support/wavefront_cases.h"
 
 namespace taut::test {
-namespace {
+namespace segment_source_test {
 
 using geom::Point;
 using i64 = std::int64_t;
@@ -264,5 +264,5 @@ TEST(SegmentSources, WireBelowABar) {
   EXPECT_THROW(wf.run({}, sloped, q, router::WavefrontStop::AllTargets), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace segment_source_test
 }  // namespace taut::test

@@ -26,7 +26,7 @@
 #include "support/wavefront_cases.h"
 
 namespace taut::test {
-namespace {
+namespace shape_source_test {
 
 using geom::Point;
 using i64 = std::int64_t;
@@ -311,5 +311,5 @@ TEST(ShapeSources, PadBesideAWall) {
   EXPECT_EQ(map.locate({20, 12})->distance, 0);  // on its side
 }
 
-}  // namespace
+}  // namespace shape_source_test
 }  // namespace taut::test

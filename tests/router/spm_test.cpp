@@ -40,7 +40,7 @@
 #include "support/wavefront_cases.h"
 
 namespace taut::test {
-namespace {
+namespace spm_test {
 
 using geom::Point;
 using i64 = std::int64_t;
@@ -327,5 +327,5 @@ TEST(L1Map, TwoSourcesAroundAWall) {
   EXPECT_EQ(map.path({70, 0}), (std::vector<Point>{{90, 50}, {70, 0}}));
 }
 
-}  // namespace
+}  // namespace spm_test
 }  // namespace taut::test

@@ -38,7 +38,7 @@
 #include "oracle/l1_oracle.h"
 #include "support/sanitized.h"
 
-namespace {
+namespace staircase_test {
 
 using taut::geom::Box;
 using taut::geom::Point;
@@ -714,4 +714,4 @@ TEST(Staircase, RandomLargerLayoutsAreValid) {
   EXPECT_GT(c.paths, 100);
 }
 
-}  // namespace
+}  // namespace staircase_test

@@ -29,7 +29,7 @@
 #include "support/sanitized.h"
 
 namespace taut::test {
-namespace {
+namespace steiner_test {
 
 using geom::Point;
 
@@ -513,5 +513,5 @@ TEST(SteinerTree, NoBranchPointAtAPinch) {
   }
 }
 
-}  // namespace
+}  // namespace steiner_test
 }  // namespace taut::test

@@ -31,7 +31,7 @@
 #include "support/taut_check.h"
 
 namespace taut::test {
-namespace {
+namespace tighten_nets_test {
 
 using geom::Point;
 using geom::Polygon;
@@ -225,5 +225,5 @@ TEST(NetsTightener, KeepsClearanceClassesAndEndsTaut) {
   EXPECT_LT(t.kept * 10, t.pieces);  // gaps of exactly the clearance are rare (5.5 % of the pieces)
 }
 
-}  // namespace
+}  // namespace tighten_nets_test
 }  // namespace taut::test

@@ -41,7 +41,7 @@
 #include "support/wavefront_hand.h"
 
 namespace taut::test {
-namespace {
+namespace tighten_test {
 
 using geom::Point;
 
@@ -797,5 +797,5 @@ TEST(Tighten, RandomSketchesAgainstTheReferences) {
   EXPECT_GE(tot.global_class, sanitized_share(1500, 20));
 }
 
-}  // namespace
+}  // namespace tighten_test
 }  // namespace taut::test

@@ -44,7 +44,7 @@
 #include "support/sanitized.h"
 #include "support/wavefront_cases.h"
 
-namespace {
+namespace tree_test {
 
 using taut::geom::Box;
 using taut::geom::Point;
@@ -656,4 +656,4 @@ TEST(WithoutOverlaps, RandomPolylinesMatchUnitSteps) {
   EXPECT_GE(dropped, n / 100);
 }
 
-}  // namespace
+}  // namespace tree_test

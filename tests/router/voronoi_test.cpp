@@ -41,7 +41,7 @@
 #include "support/wavefront_cases.h"
 
 namespace taut::test {
-namespace {
+namespace voronoi_test {
 
 using geom::Point;
 using i64 = std::int64_t;
@@ -476,5 +476,5 @@ TEST(L1Voronoi, MovingAiMapsMatchTheReference) {
 TEST(L1Voronoi, MatchesTheReferenceOnRandomLayoutsFirstHalf) { run_half(1); }
 TEST(L1Voronoi, MatchesTheReferenceOnRandomLayoutsSecondHalf) { run_half(1 + kSeedsPerHalf); }
 
-}  // namespace
+}  // namespace voronoi_test
 }  // namespace taut::test

@@ -2,8 +2,8 @@
 // "long", make test-long): the same generator and checks (tests/support/wavefront_cases.h) on
 // 20,000 further seeds per metric, in four chunks so ctest -j runs them side by side, plus 1,000
 // instances three times as large. A failing seed reruns alone with TAUT_WAVEFRONT_SEED=N on
-// test_router_wavefront, or TAUT_OCT_SEED=N on test_router_oct_wavefront (any seed, large ones
-// included); keep it in that test's regression table.
+// test_router (Wavefront.Random*), or TAUT_OCT_SEED=N there (OctWavefront.Random*; any seed,
+// large ones included); keep it in that test's regression table.
 #include <gtest/gtest.h>
 
 #include <cstdio>

@@ -5,7 +5,7 @@
 // The 20,000-instance run is tests/router/wavefront_long_test.cpp (make test-long).
 //
 // A failing seed prints the instance, both answers and a shrunk instance. To look at one seed:
-//   TAUT_WAVEFRONT_SEED=1234 build/tests/test_router_wavefront --gtest_filter='*Random*'
+//   TAUT_WAVEFRONT_SEED=1234 build/tests/test_router --gtest_filter='Wavefront.Random*'
 // Keep every seed that once failed in kRegressionSeeds below.
 #include "router/wavefront.h"
 #include "router/l1_router.h"
@@ -24,7 +24,7 @@
 #include "support/wavefront_hand.h"
 #include "support/sanitized.h"
 
-namespace {
+namespace wavefront_test {
 
 using taut::geom::Box;
 using taut::geom::Point;
@@ -320,4 +320,4 @@ TEST(Wavefront, FramedObstaclesAnswerAsUnframed) {
   EXPECT_GT(wires, taut::test::sanitized_share(1000, 10));
 }
 
-}  // namespace
+}  // namespace wavefront_test
