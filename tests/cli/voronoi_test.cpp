@@ -18,6 +18,7 @@
 #include "support/exact_rings.h"
 #include "support/layout_reference.h"
 #include "support/run.h"
+#include "support/sanitized.h"
 
 namespace taut::test {
 namespace voronoi_test {
@@ -227,8 +228,10 @@ TEST(Voronoi, DemoPinsMatchTheReference) {
   EXPECT_EQ(j["sites"][0]["net"], "clk");
   EXPECT_EQ(j["sites"][0]["pin"], "drv");
   EXPECT_EQ(j["sites"][9]["pin"], "pad");
-  const int reached = check_cells(demo, dir + "/cells.xml", sites, 250, shapes);
-  EXPECT_GT(reached, 3000);
+  // Probes every 250 DBU (every 500 under the sanitizers: the reference's queries were 12 of
+  // that tree's 13 s here).
+  const int reached = check_cells(demo, dir + "/cells.xml", sites, kSanitized ? 500 : 250, shapes);
+  EXPECT_GT(reached, sanitized_share(3000, 4));
   // The summary agrees with the file.
   const Cells cells = read_cells(dir + "/cells.xml");
   ASSERT_EQ(cells.regions.size(), 11u);

@@ -132,8 +132,6 @@ TEST(MovingAi, LoadsSharedArena) {
   EXPECT_FALSE(r.layout->blockages.empty());
 }
 
-}  // namespace normalize_test
-using namespace normalize_test;
 
 // square_grown + normalize_obstacles against the definition of the Minkowski sum with the
 // square [-r, r]^2: a lattice point whose square (closed) meets some input polygon (the point
@@ -204,7 +202,6 @@ TEST(SquareGrown, CoversTheMinkowskiSum) {
   EXPECT_LT(rounded * 100, covered);
 }
 
-namespace normalize_test {
 // Winding number of ring r around q, all coordinates times 4 (q off the ring): Sunday's rule.
 int winding4(const Ring& r, Point q4) {
   int w = 0;
@@ -223,8 +220,6 @@ bool on_ring4(const Ring& r, Point q4) {
   }
   return false;
 }
-}  // namespace normalize_test
-using namespace normalize_test;
 
 // cut_beyond(): the components of random unions of rectangles, triangles (sloped edges) and
 // rings with holes, cut against random boxes (sides through vertices and edges, boxes inside,
@@ -313,3 +308,5 @@ TEST(CutBeyond, KeepsEverythingInTheBox) {
   EXPECT_GT(dropped, taut::test::sanitized_share(500, 5));
   EXPECT_GT(inside_points, taut::test::sanitized_share(100000, 5));
 }
+
+}  // namespace normalize_test

@@ -27,9 +27,9 @@ using taut::Diagnostic;
 using taut::Severity;
 using taut::geom::Point;
 using taut::geom::Ring;
-using namespace taut::io;
 
 namespace reader_test {
+using namespace taut::io;
 
 std::string data(const std::string& rel) { return std::string(TAUT_TEST_DATA) + "/" + rel; }
 
@@ -62,8 +62,6 @@ bool polygon_validation_available() {
   return !taut::geom::validate_ring({{0, 0}, {2, 2}, {2, 0}, {0, 3}}).empty();
 }
 
-}  // namespace reader_test
-using namespace reader_test;
 
 // ---------------------------------------------------------------------------------------------
 // The corpus.
@@ -287,7 +285,6 @@ TEST(ReaderGood, DefaultsWhenOptionalPartsAreAbsent) {
 // Numbers and points against an independent reference: a regex for the syntax and decimal
 // string comparison for the range (no from_chars).
 
-namespace reader_test {
 
 // -1: syntax error, 0: out of range, 1: accepted.
 using taut::test::reference_int;
@@ -303,8 +300,6 @@ std::string xml_escape(const std::string& s) {
   return o;
 }
 
-}  // namespace reader_test
-using namespace reader_test;
 
 TEST(ReaderNumbers, RandomStringsAgreeWithReference) {
   const unsigned base_seed = 20240611;
@@ -568,7 +563,6 @@ TEST(ReaderSpeed, ManyRects) {
   std::printf("[ speed    ] %d rects (%zu bytes): read %.3f s, validate %.3f s\n", n, doc.size(), read_s, val_s);
 }
 
-namespace reader_test {
 
 TEST(Orientations, CSetsThatNameRectilinearOrOctilinear) {
   using taut::io::canonical_orientations;
@@ -583,4 +577,3 @@ TEST(Orientations, CSetsThatNameRectilinearOrOctilinear) {
 }
 
 }  // namespace reader_test
-using namespace reader_test;

@@ -69,8 +69,6 @@ std::vector<std::string> xml_files(const std::string& dir) {
 
 using taut::test::reference_int;
 
-}  // namespace schema_test
-using namespace schema_test;
 
 TEST(Schema, GoodFilesAndDesignsValidate) {
   if (!have_xmllint()) GTEST_SKIP() << "xmllint not installed";
@@ -187,3 +185,5 @@ TEST(Schema, PointsAndOrientationsAgreeWithReader) {
     EXPECT_EQ(ok.at(files[i]), r.layout.has_value()) << (r.diagnostics.empty() ? "" : taut::format(r.diagnostics[0]));
   }
 }
+
+}  // namespace schema_test

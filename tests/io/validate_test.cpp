@@ -19,9 +19,9 @@ using taut::Diagnostic;
 using taut::Severity;
 using taut::geom::Point;
 using taut::geom::Ring;
-using namespace taut::io;
 
 namespace validate_test {
+using namespace taut::io;
 
 // A tiny builder so each test reads as a drawing.
 struct L {
@@ -128,8 +128,6 @@ std::vector<Diagnostic> with_code(const std::vector<Diagnostic>& ds, const std::
   return v;
 }
 
-}  // namespace validate_test
-using namespace validate_test;
 
 // ---------------------------------------------------------------------------------------------
 // Point pins against unions of rectangles: random, against unit cells.
@@ -531,3 +529,5 @@ TEST(ValidateSpeed, ManyBlockagesAndPins) {
   EXPECT_TRUE(ds.empty()) << dump(std::vector<Diagnostic>(ds.begin(), ds.begin() + std::min<std::size_t>(ds.size(), 5)));
   std::printf("[ speed    ] validate %d blockages, %d pins: %.3f s\n", nb, np, s);
 }
+
+}  // namespace validate_test
