@@ -417,11 +417,8 @@ void run_seeds(const std::vector<std::uint64_t>& seeds, Tally& tally) {
   }
 }
 
-#if defined(__SANITIZE_ADDRESS__)
-constexpr std::uint64_t kSeedsPerHalf = 50;  // the sanitizer tree: ~10x slower, a tenth of the seeds
-#else
-constexpr std::uint64_t kSeedsPerHalf = 500;
-#endif
+// the sanitizer tree: ~10x slower, a tenth of the seeds
+constexpr std::uint64_t kSeedsPerHalf = sanitized_share(500, 10);
 
 void run_half(std::uint64_t first) {
   Tally t;
@@ -465,7 +462,7 @@ TEST(L1Voronoi, MovingAiMapsMatchTheReference) {
     for (int x = box.lo.x; x <= box.hi.x; x += 5)
       for (int y = box.lo.y; y <= box.hi.y; y += 5) c.candidates.push_back({x, y});
     // 6 site sets per map, 2 under the sanitizers (there 10 times slower than in Release)
-    for (std::uint64_t seed = 1; seed <= (kSanitized ? 2u : 6u); ++seed, ++cases) {
+    for (std::int64_t seed = 1; seed <= sanitized_share(6, 3); ++seed, ++cases) {
       const std::string err = check_case(c, seed, t);
       EXPECT_TRUE(err.empty()) << name << ": " << err;
     }
