@@ -485,6 +485,32 @@ std::vector<ud::Loop> loops_of(const std::vector<Polygon>& in) {
   return loops;
 }
 
+// A valid star polygon of 3 to 11 points round a centre in [0, 120)^2 (drawn again until valid).
+Polygon random_star(std::mt19937& rng) {
+  for (;;) {
+    Polygon p;
+    const Point c{static_cast<Coord>(rng() % 120), static_cast<Coord>(rng() % 120)};
+    p.outer = star(rng, c, 3 + static_cast<int>(rng() % 9), 60);
+    if (valid_single(p)) return p;
+  }
+}
+
+// 1 to 14 such stars, or as many rectangles on a coarse grid in [0, 56]^2.
+std::vector<Polygon> stars_or_rects(bool stars, std::mt19937& rng) {
+  std::vector<Polygon> in;
+  const int n = 1 + static_cast<int>(rng() % 14);
+  while (static_cast<int>(in.size()) < n) {
+    if (stars) {
+      in.push_back(random_star(rng));
+    } else {
+      const Coord g = 1 + static_cast<Coord>(rng() % 4);
+      const Coord x0 = g * static_cast<Coord>(rng() % 10), y0 = g * static_cast<Coord>(rng() % 10);
+      in.push_back(rect(x0, y0, x0 + g * (1 + static_cast<Coord>(rng() % 5)), y0 + g * (1 + static_cast<Coord>(rng() % 5))));
+    }
+  }
+  return in;
+}
+
 void expect_same_union(const ud::UnionResult& a, const ud::UnionResult& b) {
   ASSERT_EQ(a.rings.size(), b.rings.size());
   for (std::size_t r = 0; r < a.rings.size(); ++r) {
@@ -504,21 +530,7 @@ TEST(UnionPairs, SweepAndRTreeGiveTheSameUnion) {
     const unsigned seed = 991000 + it;
     SCOPED_TRACE("seed " + std::to_string(seed));
     std::mt19937 rng(seed);
-    std::vector<Polygon> in;
-    const int n = 1 + static_cast<int>(rng() % 14);
-    const bool stars = it % 2 == 1;
-    while (static_cast<int>(in.size()) < n) {
-      if (stars) {
-        Polygon p;
-        const Point c{static_cast<Coord>(rng() % 120), static_cast<Coord>(rng() % 120)};
-        p.outer = star(rng, c, 3 + static_cast<int>(rng() % 9), 60);
-        if (valid_single(p)) in.push_back(p);
-      } else {
-        const Coord g = 1 + static_cast<Coord>(rng() % 4);
-        const Coord x0 = g * static_cast<Coord>(rng() % 10), y0 = g * static_cast<Coord>(rng() % 10);
-        in.push_back(rect(x0, y0, x0 + g * (1 + static_cast<Coord>(rng() % 5)), y0 + g * (1 + static_cast<Coord>(rng() % 5))));
-      }
-    }
+    const std::vector<Polygon> in = stars_or_rects(it % 2 == 1, rng);
     const Box dom = rng() % 3 == 0 ? Box{{20, 20}, {100, 110}} : Box{{-10, -10}, {200, 200}};
     const std::vector<ud::Loop> loops = loops_of(in);
     const ud::UnionResult swept = ud::union_loops(loops, dom), by_tree = ud::union_loops(loops, dom, 0);
@@ -529,6 +541,28 @@ TEST(UnionPairs, SweepAndRTreeGiveTheSameUnion) {
     if (HasFailure()) return;
   }
   EXPECT_GT(crossings, 300);  // the star layouts cross
+}
+
+// The vertices are ordered by a 64-bit key when the coordinates span less than 2^31 (ties of
+// rational points in one unit interval then sorted by lex_less), else by lex_less alone. Inputs
+// inside both a small domain and one spanning +-2^30 (the wavefront's frame) have the same union
+// either way, ring for ring: the order of the points they share is the same.
+TEST(UnionOrder, KeySortAndLexSortGiveTheSameUnion) {
+  int rational = 0;
+  for (unsigned it = 0; it < 1500; ++it) {
+    const unsigned seed = 993000 + it;
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    std::mt19937 rng(seed);
+    const std::vector<Polygon> in = stars_or_rects(it % 4 != 0, rng);
+    const std::vector<ud::Loop> loops = loops_of(in);
+    const Coord far = Coord{1} << 30;
+    const ud::UnionResult keyed = ud::union_loops(loops, Box{{-70, -70}, {200, 200}});
+    const ud::UnionResult lex = ud::union_loops(loops, Box{{-far, -far}, {far, far}});
+    expect_same_union(keyed, lex);
+    rational += keyed.rational_vertices > 0;
+    if (HasFailure()) return;
+  }
+  EXPECT_GT(rational, 400);  // the stars cross at rational points
 }
 
 TEST(UnionPairs, ManyLongEdgesOpenAtOnceTakeTheRTree) {
