@@ -70,12 +70,27 @@ bool segment_meets_box(const Segment& s, const Box& b) {
 }  // namespace
 
 struct ObstacleIndex::Trees {
-  Tree axis;                  // edge boxes in (x, y)
+  Tree axis;                  // edge boxes in (x, y); built by the first query that needs it (the
+  std::once_flag axis_built;  // net router's windows build an index and may never query it)
   Tree diag;                  // edge boxes in (u, v) = (x + y, y - x); built by the first
   std::once_flag diag_built;  // diagonal ray (many users never shoot one)
   B64 axis_bounds, diag_bounds;
   i64 first_window = 1;       // initial probe length along a ray
 };
+
+void ObstacleIndex::build_axis() const {
+  std::call_once(trees_->axis_built, [this] {
+    std::vector<Value> axis;
+    axis.reserve(edges_.size());
+    for (std::uint32_t i = 0; i < edges_.size(); ++i) {
+      const Segment& s = edges_[i];
+      axis.emplace_back(make_box(s.a.x, s.a.y, s.b.x, s.b.y), i);
+    }
+    // The range constructor uses the packing (bulk loading) algorithm.
+    trees_->axis = Tree(axis.begin(), axis.end());
+    if (!edges_.empty()) trees_->axis_bounds = trees_->axis.bounds();
+  });
+}
 
 ObstacleIndex::ObstacleIndex(std::span<const Polygon> obstacles) : trees_(std::make_unique<Trees>()) {
   auto add_ring = [&](const Ring& r, std::uint32_t poly, std::int32_t ring) {
@@ -91,20 +106,9 @@ ObstacleIndex::ObstacleIndex(std::span<const Polygon> obstacles) : trees_(std::m
     for (std::size_t h = 0; h < obstacles[k].holes.size(); ++h)
       add_ring(obstacles[k].holes[h], static_cast<std::uint32_t>(k), static_cast<std::int32_t>(h));
   }
-  std::vector<Value> axis;
-  axis.reserve(edges_.size());
   i64 total = 0;
-  for (std::uint32_t i = 0; i < edges_.size(); ++i) {
-    const Segment& s = edges_[i];
-    axis.emplace_back(make_box(s.a.x, s.a.y, s.b.x, s.b.y), i);
-    total += std::max(std::abs(i64{s.a.x} - s.b.x), std::abs(i64{s.a.y} - s.b.y));
-  }
-  // The range constructor uses the packing (bulk loading) algorithm.
-  trees_->axis = Tree(axis.begin(), axis.end());
-  if (!edges_.empty()) {
-    trees_->axis_bounds = trees_->axis.bounds();
-    trees_->first_window = std::max<i64>(1, total / static_cast<i64>(edges_.size()));
-  }
+  for (const Segment& s : edges_) total += std::max(std::abs(i64{s.a.x} - s.b.x), std::abs(i64{s.a.y} - s.b.y));
+  if (!edges_.empty()) trees_->first_window = std::max<i64>(1, total / static_cast<i64>(edges_.size()));
 }
 
 ObstacleIndex::~ObstacleIndex() = default;
@@ -116,6 +120,7 @@ RayHit ObstacleIndex::shoot(Point p, Direction dir, RayOptions options) const {
   if (edges_.empty()) return result;
   const Point d = step(dir);
   const bool diagonal = d.x != 0 && d.y != 0;
+  if (!diagonal) build_axis();
   if (diagonal)
     std::call_once(trees_->diag_built, [this] {
       std::vector<Value> diag;
@@ -188,6 +193,7 @@ std::vector<std::uint32_t> ObstacleIndex::edges_in_box(const Box& box) const {
 void ObstacleIndex::edges_in_box(const Box& box, std::vector<std::uint32_t>& out) const {
   out.clear();
   if (edges_.empty() || box.lo.x > box.hi.x || box.lo.y > box.hi.y) return;
+  build_axis();
   trees_->axis.query(bgi::intersects(make_box(box.lo.x, box.lo.y, box.hi.x, box.hi.y)),
                      boost::make_function_output_iterator([&](const Value& v) {
                        if (segment_meets_box(edges_[v.second], box)) out.push_back(v.second);

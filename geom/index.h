@@ -21,6 +21,8 @@
 // Cost: a ray probes the R-tree in windows of geometrically growing length along the ray
 // (diagonal rays use a second R-tree in the rotated frame u = x + y, v = y - x, where they are
 // axis-parallel), so only edges whose bounding boxes meet the ray near the answer are tested.
+// Each R-tree is built by the first query that needs it (once, thread-safe), so an index that
+// is never queried costs only its list of edges.
 #pragma once
 
 #include <cstddef>
@@ -100,6 +102,7 @@ class ObstacleIndex {
 
  private:
   struct Trees;
+  void build_axis() const;  // the (x, y) R-tree, once (thread-safe)
   std::vector<Segment> edges_;
   std::vector<EdgeRef> refs_;
   std::unique_ptr<Trees> trees_;
