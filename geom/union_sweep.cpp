@@ -59,8 +59,8 @@ struct Group {  // merged collinear pieces between vertices u < v
 
 bool covered(int w, int b) { return w >= 1 && b >= 1; }
 
-// What the sweep's order reads of a group, packed: its supporting segment and its first vertex
-// (the vertex as an integer point when it is one, else its id in verts).
+// What the sweep's order reads of a group, packed: its supporting segment, its first vertex's id
+// in verts, and that vertex as a point when it is an integer point (`integer`).
 struct SweepKey {
   Point sa, sb, start;
   int u = 0;
