@@ -107,6 +107,18 @@ bool ccw_before(Vec ref, Vec d1, Vec d2) {  // angle(ref -> d1) < angle(ref -> d
   return cross(d1, d2) > 0;
 }
 
+// Stable counting sort of v by key(x), which lies in [0, buckets); `scratch` (any contents)
+// is swapped with v, so sorts in a row reuse one buffer.
+template <class T, class Key>
+void counting_sort(std::vector<T>& v, std::size_t buckets, Key key, std::vector<T>& scratch) {
+  std::vector<std::size_t> first(buckets + 1, 0);
+  for (const T& x : v) ++first[static_cast<std::size_t>(key(x)) + 1];
+  for (std::size_t i = 0; i < buckets; ++i) first[i + 1] += first[i];
+  scratch.resize(v.size());
+  for (const T& x : v) scratch[first[static_cast<std::size_t>(key(x))]++] = x;
+  v.swap(scratch);
+}
+
 // Sorts by the 64-bit key key(x) (stable, least significant byte first, skipping the bytes in
 // which all keys agree; std::sort for a few elements): the order of std::sort on (key, index)
 // pairs whose indices come increasing. The keys here span a window's coordinates, so most of
@@ -119,15 +131,10 @@ void radix_sort(std::vector<T>& v, Key key) {
   }
   std::uint64_t any = 0, all = ~std::uint64_t{0};
   for (const T& x : v) any |= key(x), all &= key(x);
-  std::vector<T> tmp(v.size());
-  for (int shift = 0; shift < 64; shift += 8) {
-    if (((any ^ all) >> shift & 0xff) == 0) continue;
-    std::size_t first[257] = {};
-    for (const T& x : v) ++first[(key(x) >> shift & 0xff) + 1];
-    for (int i = 0; i < 256; ++i) first[i + 1] += first[i];
-    for (const T& x : v) tmp[first[key(x) >> shift & 0xff]++] = x;
-    v.swap(tmp);
-  }
+  std::vector<T> scratch;
+  for (int shift = 0; shift < 64; shift += 8)
+    if (((any ^ all) >> shift & 0xff) != 0)
+      counting_sort(v, 256, [&](const T& x) { return key(x) >> shift & 0xff; }, scratch);
 }
 
 struct UnionFind {
@@ -419,18 +426,12 @@ UnionResult union_loops(const std::vector<Loop>& loops, const Box& domain, std::
     if (seg_vertex[k].first == seg_vertex[k + 1].first)
       pieces.push_back({seg_vertex[k].second, seg_vertex[k + 1].second, seg_vertex[k].first});
   seg_vertex = {};
+  // Ordered by (u, v, seg): two stable counting sorts, by v and then by u, of pieces that come
+  // ordered by seg.
   {
-    // Ordered by (u, v, seg): two stable counting sorts, by v and then by u, of pieces that come
-    // ordered by seg.
-    std::vector<Piece> tmp(pieces.size());
-    std::vector<int> first(static_cast<std::size_t>(nv) + 1);
-    for (const auto by_u : {false, true}) {
-      std::fill(first.begin(), first.end(), 0);
-      for (const Piece& p : pieces) ++first[static_cast<std::size_t>(by_u ? p.u : p.v) + 1];
-      for (int i = 0; i < nv; ++i) first[i + 1] += first[i];
-      for (const Piece& p : pieces) tmp[static_cast<std::size_t>(first[by_u ? p.u : p.v]++)] = p;
-      pieces.swap(tmp);
-    }
+    std::vector<Piece> scratch;
+    counting_sort(pieces, static_cast<std::size_t>(nv), [](const Piece& p) { return p.v; }, scratch);
+    counting_sort(pieces, static_cast<std::size_t>(nv), [](const Piece& p) { return p.u; }, scratch);
   }
   std::vector<Group> groups;
   std::vector<int> piece_group(pieces.size());
