@@ -299,6 +299,10 @@ int main(int argc, char** argv) {
                     static_cast<long long>(t), par_s, par_s / together_s, static_cast<long long>(par.stats().redone),
                     static_cast<long long>(par.stats().speculated), par.stats().space_seconds, par.stats().route_seconds,
                     same ? "the same" : "DIFFERENT");
+        const auto& ph = par.stats().phase_seconds;
+        std::printf("%18s %lld threads, phases (wall clock): first pass %.3f s, rip-up rounds %.3f s, final round %.3f s, "
+                    "last pass %.3f s, explaining %.3f s\n", "",
+                    static_cast<long long>(t), ph.first_pass, ph.rounds, ph.final_round, ph.last_pass, ph.explain);
         if (!same) return 1;
       }
       std::fflush(stdout);

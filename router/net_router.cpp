@@ -1002,9 +1002,9 @@ bool changed_in(std::span<const std::pair<Box, std::size_t>> changed, std::size_
 }  // namespace
 
 void NetRouter::route_in_order(const NetRouteFn& route, std::span<const std::size_t> nets,
-                               const std::function<bool(std::size_t, const Box&)>& after) {
+                               const std::function<bool(std::size_t, const Box&)>& after, bool pipelined) {
   const int threads = std::max(options_.threads, 1);
-  if (threads == 1 || nets.size() < 2) {
+  if (threads == 1 || nets.size() < 2 || !pipelined) {
     for (const std::size_t i : nets) {
       Tried t = try_net(route, i, NetSpaceLevel::Full);
       add_counts(stats_, t.counts);
@@ -1283,14 +1283,18 @@ void NetRouter::run(const NetRouteFn& route) {
     for (const std::size_t j : order_)
       if (blockers.count(j)) again_nets.push_back(j);
     // Undone when more than 1 - gain of them stay unrouted: once that many have failed, the rest
-    // are not tried (the undo puts back the same state either way).
+    // are not tried (the undo puts back the same state either way). Routed on this thread alone,
+    // also with threads (see the header).
     std::size_t failed = 0;
     std::vector<Box> windows;
-    route_in_order(route, again_nets, [&](std::size_t j, const Box& w) {
-      failed += !out_[j].routed;
-      windows.push_back(w);
-      return failed + gain <= 1 || !options_.reuse;
-    });
+    route_in_order(
+        route, again_nets,
+        [&](std::size_t j, const Box& w) {
+          failed += !out_[j].routed;
+          windows.push_back(w);
+          return failed + gain <= 1 || !options_.reuse;
+        },
+        false);
     std::size_t now = 0;
     for (const std::size_t j : again_nets) now += out_[j].routed;
     if (now < blockers.size() + gain) {  // fewer routed than before (with gain: not more): put them back

@@ -132,7 +132,6 @@ TEST(MovingAi, LoadsSharedArena) {
   EXPECT_FALSE(r.layout->blockages.empty());
 }
 
-
 // square_grown + normalize_obstacles against the definition of the Minkowski sum with the
 // square [-r, r]^2: a lattice point whose square (closed) meets some input polygon (the point
 // itself inside, a polygon vertex inside the square, or a square side crossing a polygon edge)

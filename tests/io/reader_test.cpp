@@ -23,12 +23,12 @@
 #include "support/run.h"
 
 namespace fs = std::filesystem;
+
+namespace reader_test {
 using taut::Diagnostic;
 using taut::Severity;
 using taut::geom::Point;
 using taut::geom::Ring;
-
-namespace reader_test {
 using namespace taut::io;
 
 std::string data(const std::string& rel) { return std::string(TAUT_TEST_DATA) + "/" + rel; }
@@ -49,8 +49,6 @@ std::vector<Diagnostic> check_file(const std::string& path, const ReadOptions& o
   return r.diagnostics;
 }
 
-
-
 bool code_matches(const std::string& expected, const std::string& actual) {
   if (!expected.empty() && expected.back() == '*')
     return actual.rfind(expected.substr(0, expected.size() - 1), 0) == 0;
@@ -61,7 +59,6 @@ bool code_matches(const std::string& expected, const std::string& actual) {
 bool polygon_validation_available() {
   return !taut::geom::validate_ring({{0, 0}, {2, 2}, {2, 0}, {0, 3}}).empty();
 }
-
 
 // ---------------------------------------------------------------------------------------------
 // The corpus.
@@ -285,7 +282,6 @@ TEST(ReaderGood, DefaultsWhenOptionalPartsAreAbsent) {
 // Numbers and points against an independent reference: a regex for the syntax and decimal
 // string comparison for the range (no from_chars).
 
-
 // -1: syntax error, 0: out of range, 1: accepted.
 using taut::test::reference_int;
 
@@ -299,7 +295,6 @@ std::string xml_escape(const std::string& s) {
   }
   return o;
 }
-
 
 TEST(ReaderNumbers, RandomStringsAgreeWithReference) {
   const unsigned base_seed = 20240611;
@@ -562,7 +557,6 @@ TEST(ReaderSpeed, ManyRects) {
   EXPECT_TRUE(v.empty());
   std::printf("[ speed    ] %d rects (%zu bytes): read %.3f s, validate %.3f s\n", n, doc.size(), read_s, val_s);
 }
-
 
 TEST(Orientations, CSetsThatNameRectilinearOrOctilinear) {
   using taut::io::canonical_orientations;

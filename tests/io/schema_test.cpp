@@ -69,7 +69,6 @@ std::vector<std::string> xml_files(const std::string& dir) {
 
 using taut::test::reference_int;
 
-
 TEST(Schema, GoodFilesAndDesignsValidate) {
   if (!have_xmllint()) GTEST_SKIP() << "xmllint not installed";
   auto files = xml_files(std::string(TAUT_TEST_DATA) + "/good");

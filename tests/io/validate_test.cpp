@@ -15,12 +15,11 @@
 #include "geom/validate.h"
 #include "io/validate_layout.h"
 
+namespace validate_test {
 using taut::Diagnostic;
 using taut::Severity;
 using taut::geom::Point;
 using taut::geom::Ring;
-
-namespace validate_test {
 using namespace taut::io;
 
 // A tiny builder so each test reads as a drawing.
@@ -127,7 +126,6 @@ std::vector<Diagnostic> with_code(const std::vector<Diagnostic>& ds, const std::
     if (d.code == code) v.push_back(d);
   return v;
 }
-
 
 // ---------------------------------------------------------------------------------------------
 // Point pins against unions of rectangles: random, against unit cells.

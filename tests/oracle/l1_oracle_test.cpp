@@ -504,7 +504,6 @@ TEST(L1Oracle, DiamondTouchingTheDomainSide) {
 // pinch), paths that check, and scaling the scene by 2 and turning it by 90 degrees doubles
 // every distance.
 
-
 TEST(L1Oracle, MetamorphicOnRandomSlopedLayouts) {
   const unsigned base = 9100;
   int checked = 0, unreachable = 0;

@@ -369,7 +369,6 @@ TEST(LinkPolygonOracle, AgainstLattice) {
   EXPECT_GT(stretched, 0);
 }
 
-
 TEST(LinkPolygonOracle, ThinPolygonsAgainstLattice) {
   const unsigned seed = 55555;
   std::mt19937 rng(seed);

@@ -31,7 +31,6 @@ using geom::Point;
 using geom::Root2;
 using i64 = std::int64_t;
 
-
 struct Tally : SpmTally {
   i64 refused = 0;
 };

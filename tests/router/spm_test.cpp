@@ -45,7 +45,6 @@ namespace spm_test {
 using geom::Point;
 using i64 = std::int64_t;
 
-
 mpz_class Z(i64 v) { return mpz_class(static_cast<long>(v)); }
 
 // Twice the signed area of a ring (positive counter-clockwise), by the shoelace formula in GMP

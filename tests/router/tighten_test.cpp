@@ -123,7 +123,6 @@ struct Totals {
             c_links[2] = {0, 0}, c_sloped[2] = {0, 0};
 };
 
-
 router::StaircaseStyle style_of(int o) { return o == 0 ? router::StaircaseStyle::Rectilinear : router::StaircaseStyle::Octilinear; }
 
 // The exact length of a path in style o: (axis steps, diagonal steps); rectilinear has no diagonals.

@@ -259,8 +259,6 @@ TEST(Wavefront, StatsArePlausible) {
     for (const Point v : p.outer) EXPECT_TRUE(wf.vertex_distance(v).has_value());
 }
 
-
-
 // Obstacles that hold the domain's frame already merged (the union of the obstacles and
 // geom::domain_frame(), clipped to the frame's box: what NetSpace::obstacles(..., framed) gives the
 // net router's wavefronts) answer every question as the obstacles alone do: is_free, distances
