@@ -1002,9 +1002,9 @@ bool changed_in(std::span<const std::pair<Box, std::size_t>> changed, std::size_
 }  // namespace
 
 void NetRouter::route_in_order(const NetRouteFn& route, std::span<const std::size_t> nets,
-                               const std::function<bool(std::size_t, const Box&)>& after, bool pipelined) {
+                               const std::function<bool(std::size_t, const Box&)>& after, InOrder how) {
   const int threads = std::max(options_.threads, 1);
-  if (threads == 1 || nets.size() < 2 || !pipelined) {
+  if (threads == 1 || nets.size() < 2 || how == InOrder::Serial) {
     for (const std::size_t i : nets) {
       Tried t = try_net(route, i, NetSpaceLevel::Full);
       add_counts(stats_, t.counts);
@@ -1048,7 +1048,7 @@ void NetRouter::route_in_order(const NetRouteFn& route, std::span<const std::siz
     if (!options_.cautious) return true;
     for (std::size_t i = next; i < j; ++i) {
       if (slot[i].state != State::Done || !slot[i].tried) {
-        if (boxes_meet(reach[i], first[j])) return false;
+        if (how == InOrder::Cautious && boxes_meet(reach[i], first[j])) return false;
         continue;
       }
       for (const auto& wire : slot[i].tried->a.wires)
@@ -1294,7 +1294,7 @@ void NetRouter::run(const NetRouteFn& route) {
           windows.push_back(w);
           return failed + gain <= 1 || !options_.reuse;
         },
-        false);
+        InOrder::Serial);
     std::size_t now = 0;
     for (const std::size_t j : again_nets) now += out_[j].routed;
     if (now < blockers.size() + gain) {  // fewer routed than before (with gain: not more): put them back
@@ -1439,10 +1439,13 @@ void NetRouter::run(const NetRouteFn& route) {
     // the same way, and no other step depends on the limit): that attempt is placed in its turn.
     std::vector<std::size_t> batch;
     auto flush = [&] {
-      route_in_order(route, batch, [&](std::size_t i, const Box&) {
-        stats_.last_pass_routed += out_[i].routed;
-        return true;
-      });
+      route_in_order(
+          route, batch,
+          [&](std::size_t i, const Box&) {
+            stats_.last_pass_routed += out_[i].routed;
+            return true;
+          },
+          InOrder::Failing);
       batch.clear();
     };
     for (const std::size_t i : left) {

@@ -426,9 +426,13 @@ class NetRouter {
   std::set<std::size_t> way_blockers(std::size_t net, const std::vector<std::vector<geom::Point>>& wires) const;
   // Routes `nets` at the Full level one after another, placing each (as if with one thread).
   // `after` is told each net placed and the last window its attempt read; false stops there (the nets after it are left as they are).
-  // pipelined: with threads, workers try the nets ahead (false: this thread alone, as with one).
+  // How: with threads, workers try the nets ahead, a net only when the nets before it still to be
+  // placed are unlikely to change its first window (Cautious: see NetRouterOptions::cautious;
+  // Failing: the same, but a net not tried yet is taken to fail and change nothing, as in the
+  // last pass, whose nets all failed before); Serial: this thread alone, as with one.
+  enum class InOrder { Cautious, Failing, Serial };
   void route_in_order(const NetRouteFn& route, std::span<const std::size_t> nets,
-                      const std::function<bool(std::size_t, const geom::Box&)>& after, bool pipelined = true);
+                      const std::function<bool(std::size_t, const geom::Box&)>& after, InOrder how = InOrder::Cautious);
   void place(std::size_t net, NetAttempt a);
   struct Explained {
     std::string code, reason;
