@@ -80,12 +80,24 @@ bool is_rectangle(const Polygon& p) {
   return b.lo.x < b.hi.x && b.lo.y < b.hi.y;
 }
 
+// Are all the edges of p (outer ring and holes) horizontal or vertical?
+bool is_rectilinear_shape(const Polygon& p) {
+  bool all = true;
+  for_each_pin_edge(p, [&](Point a, Point b) { all = all && (a.x == b.x || a.y == b.y); });
+  return all;
+}
+
 // A shape pin cut out of its net's grown blockage edges (a pad, see NetSpace::obstacles): a
-// rectangle, or with `shapes` any shape whose edges are horizontal, vertical or at 45 degrees
-// (convex or not, holes too: pad_pieces; not for the bend-aware metrics, whose router takes
-// rectilinear obstacles only: a 45-degree cut would give them sloped edges).
+// shape whose edges are horizontal and vertical (a rectangle, an L, a U, holes too: as
+// rectangles, pad_pieces), or with `shapes` any shape whose edges are horizontal, vertical or at
+// 45 degrees (convex or not, holes too: pad_pieces). Not the 45-degree ones for the bend-aware
+// metrics, whose router takes rectilinear obstacles only: such a cut would give them sloped
+// edges; a rectilinear pad's pieces are rectangles, and a rectangle cut out of a grown
+// rectilinear edge leaves rectangles (geom::convex_minus_box).
 bool is_pad(const Polygon& p, bool shapes) {
-  return is_rectangle(p) || (shapes && !is_point_pin(p) && pin_shape_supported(p));
+  if (is_rectangle(p)) return true;
+  if (is_point_pin(p) || !pin_shape_supported(p)) return false;
+  return shapes || is_rectilinear_shape(p);
 }
 // A pad as convex pieces whose union is the pad, each a counter-clockwise octilinear_convex_ring
 // (what geom::convex_minus_pad takes): the pad itself when convex; else its vertical slabs
@@ -1511,6 +1523,17 @@ NetRouter::Explained NetRouter::explain(const NetRouteFn& route, std::size_t net
     e.code = clear.code;
     e.reason = clear.reason;
     return e;
+  }
+  if (!clear.routed && clear.code == "ROUTE-0005" && !space_.cuts_shape_pads()) {
+    // a shape pin the route function refused in the grown space: one that is not cut out of it
+    for (const Polygon& pin : space_.net(net).pins)
+      if (!is_point_pin(pin) && pin_shape_supported(pin) && !is_pad(pin, false)) {
+        e.code = "ROUTE-0010";
+        e.reason = "a shape pin with a 45-degree edge lies within " + a +
+                   " DBU (ceil(w/2) + s) of a blockage: the bend-aware metrics cut only pads with horizontal "
+                   "and vertical edges out of that clearance (their router takes rectilinear obstacles only)";
+        return e;
+      }
   }
   if (!clear.routed) {
     e.code = "ROUTE-0010";

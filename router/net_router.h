@@ -30,8 +30,10 @@
 //     convex pieces concave ones and ones with holes) are cut out of the grown blockage edges
 //     like the access squares (geom::convex_minus_box, geom::convex_minus_pad: so a pad on a
 //     blockage's edge is reached from outside the grown blockage, and the wire's stretch inside
-//     the pad is trimmed); with the bend-aware metrics a shape pin that is not a rectangle is
-//     not: such a pin within a of a blockage is not routed (ROUTE-0010); a pad that another net's grown wire enters cannot be
+//     the pad is trimmed); with the bend-aware metrics only the pads whose edges are all
+//     horizontal and vertical (rectangles, L-shapes, ..., as rectangles), since their router takes
+//     rectilinear obstacles only: a pin with a 45-degree edge within a of a blockage is not
+//     routed (ROUTE-0010); a pad that another net's grown wire enters cannot be
 //     taken, and that net counts as a blocker (ripped up like one);
 //   - cost: every window is a new union of its pieces and a new wavefront (no reuse between
 //     nets); a net whose pins are far apart pays for a window as big as its span.
@@ -182,9 +184,10 @@ class NetSpace {
 
   std::int64_t blockage_clearance() const { return a_; }  // a = ceil(w/2) + s
   std::int64_t net_clearance() const { return b_; }       // b = max(w + s, 1)
-  // Whether a net's shape pins that are convex with 0, 45 and 90-degree edges are cut out of the
-  // grown blockages like its rectangular ones (pads): not with NetRules::cover_pieces (the
-  // bend-aware metrics take rectilinear obstacles only).
+  // Whether a net's shape pins with 45-degree edges are cut out of the grown blockages like its
+  // rectilinear ones (pads): not with NetRules::cover_pieces (the bend-aware metrics take
+  // rectilinear obstacles only; shape pins with horizontal and vertical edges only are cut either
+  // way).
   bool cuts_shape_pads() const { return cut_shapes_; }
 
   // Net `net`'s wires as the other nets see them (replacing earlier ones; empty: none).

@@ -785,6 +785,46 @@ TEST(Route, ShapePins) {
   EXPECT_EQ(expect_wire(*ref.ref, w, w.front(), w.back()), 70);
 }
 
+// With the bend-aware metrics a pad whose edges are horizontal and vertical only (here an L whose
+// short side lies on a blockage's side, so all of it is within the clearance a = 3) is cut out of
+// the grown blockage like a rectangle (since 2026-12-04; ROUTE-0010 before), and the written
+// layout passes the checker; a pad with a 45-degree edge on the blockage is still refused with
+// ROUTE-0010 (their router takes rectilinear obstacles only).
+TEST(Route, BendMetricsReachRectilinearPadsOnBlockages) {
+  const std::string file = layout_file("route_l_pad", R"(  <boundary x0="0" y0="0" x1="100" y1="60"/>
+  <rules wire-width="2" spacing="2"/>
+  <blockage id="wall"><rect x0="40" y0="0" x1="44" y1="40"/></blockage>
+  <net name="ell">
+    <pin name="pad"><polygon points="30,10 40,10 40,14 34,14 34,20 30,20"/></pin>
+    <pin name="p" x="80" y="50"/>
+  </net>
+  <net name="notch">
+    <pin name="pad"><polygon points="44,24 54,24 54,34 49,29 44,34"/></pin>
+    <pin name="p" x="90" y="10"/>
+  </net>
+)");
+  const std::string dir = temp_dir("route_l_pad_out");
+  for (const char* metric : {"combined", "link"}) {
+    const std::string out = dir + "/" + metric + ".xml";
+    std::vector<std::string> args{"route", file, "--metric", metric, "-o", out};
+    if (std::string(metric) == "combined") args.insert(args.end(), {"--bend-cost", "5"});
+    const auto r = run_taut(args);
+    EXPECT_EQ(r.status, 1) << metric << ": " << r.err;
+    EXPECT_EQ(r.err.find("net \"ell\" not routed"), std::string::npos) << metric << ": " << r.err;
+    EXPECT_NE(r.err.find("[ROUTE-0010] net \"notch\" not routed: a shape pin with a 45-degree edge lies within 3 DBU"),
+              std::string::npos)
+        << metric << ": " << r.err;
+    io::ReadResult rr = io::read_layout(out);
+    ASSERT_TRUE(rr.layout && rr.layout->routes) << metric;
+    int routed = 0;
+    for (const io::Route& route : rr.layout->routes->routes) routed += route.net == "ell" && route.status == "routed";
+    EXPECT_EQ(routed, 1) << metric;
+    EXPECT_EQ(run_taut({"check", out, "-q"}).status, 0) << metric;
+  }
+  // the same L-shaped pad with L1 wires: reached too (cut since 2026-12-03)
+  EXPECT_EQ(run_taut({"route", file, "-o", dir + "/l1.xml"}).err.find("net \"ell\" not routed"), std::string::npos);
+}
+
 TEST(Route, InvalidInputWritesNothingAndKeepsTheOldOutput) {
   const std::string dir = temp_dir("route_bad");
   write_text(dir + "/bad.xml", "<layout name=\"b\" version=\"1\"><blockage id=\"x\"/></layout>\n");

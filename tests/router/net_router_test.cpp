@@ -628,11 +628,16 @@ TEST(NetRouter, ReviewCases) {
 // (geom::convex_minus_pad), so a pad touching or near a blockage is reached: a diamond whose tip
 // touches a blockage by hand, then random layouts where every pad touches or nearly touches a
 // blockage (sloped triangles too); every routed net passes the independent checker, and the cut
-// routes more nets than the same layouts without it (NetRules::cover_pieces > 0 turns it off, as
-// for the bend-aware metrics). The same layouts with octilinear wires (pads with 45-degree edges
-// are taken since 2026-12-03; Steiner trees on every other layout): every routed net passes the
-// checker, and at least 60 more route than the rectilinear run without the cut; of the concave
-// pads, at least 20 more route with the cut than without.
+// routes more nets than the same layouts without it (NetRules::cover_pieces > 0 turns it off for
+// pads with a 45-degree edge, as for the bend-aware metrics). The same layouts with octilinear
+// wires (pads with 45-degree edges are taken since 2026-12-03; Steiner trees on every other
+// layout): every routed net passes the checker, and at least 60 more route than the rectilinear
+// run without the cut; of the V-notched pads, at least 10 more route with the cut than without.
+// Since 2026-12-04 the rectilinear ones (the L-shapes) are cut with cover_pieces > 0 too, so the
+// bend-aware metrics reach them: the same layouts under length + 7 x bends or the link metric
+// (among the blockages' rectilinear covers) pass the checker, and route at least 9 in 10 of the
+// L-shaped pads the rectilinear run with the cut routes (before: 2 of the 54 L-shaped pads here,
+// against 53 with the cut).
 TEST(NetRouter, OctilinearPadsNearBlockagesAreReached) {
   {
     const geom::Box domain{{-200, -200}, {200, 200}};
@@ -650,7 +655,8 @@ TEST(NetRouter, OctilinearPadsNearBlockagesAreReached) {
     }
   }
   long long layouts = 0, pads = 0, with_cut = 0, without = 0, checked = 0, oct_routed = 0;
-  long long concave_pads = 0, concave_cut = 0, concave_without = 0;
+  long long notch_pads = 0, notch_cut = 0, notch_without = 0;
+  long long l_pads = 0, l_cut = 0, l_cover = 0, l_bend = 0, bend_routed = 0;
   const int n = static_cast<int>(sanitized_share(120, 4));
   for (int seed = 1; seed <= n; ++seed) {
     std::mt19937 rng(static_cast<unsigned>(seed) * 7919u);
@@ -672,7 +678,7 @@ TEST(NetRouter, OctilinearPadsNearBlockagesAreReached) {
     const router::L1Router plain(norm.domain, norm.obstacles);
     const int w = uni(1, 4), s = uni(1, 3);
     std::vector<router::NetPins> nets;
-    std::vector<char> concave;  // per net: its pad is concave
+    std::vector<int> kinds;  // per net: its pad's kind (3: an L, 4: a V notch)
     std::vector<geom::Box> taken;  // every pin's box grown by w + s: pins of different nets stay apart
     auto free_box = [&](const geom::Box& b) {
       for (const geom::Box& t : taken)
@@ -704,19 +710,21 @@ TEST(NetRouter, OctilinearPadsNearBlockagesAreReached) {
       taken.push_back(pb);
       taken.push_back({q, q});
       nets.push_back({"n" + std::to_string(i), {pad, Polygon{{q}, {}}}});
-      concave.push_back(kind >= 3);
+      kinds.push_back(kind);
     }
     if (nets.empty()) continue;
     ++layouts;
     pads += static_cast<long long>(nets.size());
-    concave_pads += std::count(concave.begin(), concave.end(), 1);
+    notch_pads += std::count(kinds.begin(), kinds.end(), 4);
+    l_pads += std::count(kinds.begin(), kinds.end(), 3);
     for (const int cover : {0, 16}) {
       router::NetRouter nr(norm.domain, norm.obstacles, nets, {w, s, cover});
       nr.run(router::NetRouter::l1_router(false));
       long long routed = 0;
       for (std::size_t i = 0; i < nets.size(); ++i) {
         routed += nr.outcomes()[i].routed;
-        if (concave[i]) (cover == 0 ? concave_cut : concave_without) += nr.outcomes()[i].routed;
+        if (kinds[i] == 4) (cover == 0 ? notch_cut : notch_without) += nr.outcomes()[i].routed;
+        if (kinds[i] == 3) (cover == 0 ? l_cut : l_cover) += nr.outcomes()[i].routed;
       }
       (cover == 0 ? with_cut : without) += routed;
       if (cover == 0) {
@@ -734,13 +742,36 @@ TEST(NetRouter, OctilinearPadsNearBlockagesAreReached) {
       const router::CheckResult cr = router::check_routes(norm, check_nets(nets, nr), {w, s});
       EXPECT_TRUE(cr.problems.empty()) << "seed " << seed << " octilinear: " << cr.problems[0].message;
     }
+    // the bend-aware metrics (among the blockages' rectilinear covers), checked against the real
+    // blockages
+    {
+      const geom::NormalizedObstacles covered =
+          geom::normalize_obstacles(router::rectilinear_cover(norm.obstacles), norm.domain);
+      const bool link = seed % 2 == 1;
+      router::NetRouterOptions opt;
+      opt.cost = link ? router::NetRouterOptions::Cost::Link : router::NetRouterOptions::Cost::Combined;
+      opt.bend_cost = 7;
+      router::NetRules rules{w, s, router::kDefaultCoverPieces};
+      router::NetRouter nr(covered.domain, covered.obstacles, nets, rules, opt);
+      nr.run(router::NetRouter::bend_router(link ? router::BendMetric::Link : router::BendMetric::Combined, 7));
+      for (std::size_t i = 0; i < nets.size(); ++i) {
+        bend_routed += nr.outcomes()[i].routed;
+        if (kinds[i] == 3) l_bend += nr.outcomes()[i].routed;
+      }
+      const router::CheckResult cr = router::check_routes(norm, check_nets(nets, nr), {w, s});
+      EXPECT_TRUE(cr.problems.empty()) << "seed " << seed << (link ? " link" : " combined") << ": " << cr.problems[0].message;
+    }
     ASSERT_FALSE(::testing::Test::HasFailure()) << "seed " << seed;
   }
   std::printf("%lld layouts, %lld pads near blockages: %lld nets routed with the pad cut (all passing the checker), %lld "
-              "without it; octilinear wires: %lld routed (all passing the checker); of those pads %lld concave: %lld routed "
-              "with the cut, %lld without it\n",
-              layouts, pads, with_cut, without, oct_routed, concave_pads, concave_cut, concave_without);
-  EXPECT_GE(concave_cut, concave_without + sanitized_share(20, 4));
+              "without it; octilinear wires: %lld routed (all passing the checker); of those pads %lld V-notched: %lld routed "
+              "with the cut, %lld without it; %lld L-shaped: %lld routed with the cut, %lld with cover_pieces > 0, %lld "
+              "by the bend-aware metrics (%lld nets in all, passing the checker)\n",
+              layouts, pads, with_cut, without, oct_routed, notch_pads, notch_cut, notch_without, l_pads, l_cut, l_cover,
+              l_bend, bend_routed);
+  EXPECT_GE(notch_cut, notch_without + sanitized_share(10, 4));
+  EXPECT_GE(10 * l_bend, 9 * l_cut);
+  EXPECT_GE(10 * l_cover, 9 * l_cut);
   EXPECT_GE(with_cut, without + sanitized_share(60, 4));
   EXPECT_GE(oct_routed, without + sanitized_share(60, 4));
   EXPECT_GE(checked, sanitized_share(100, 4));
