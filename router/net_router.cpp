@@ -595,6 +595,33 @@ std::vector<std::size_t> NetSpace::wire_nets_in(const Box& window) const {
   return out;
 }
 
+geom::NormalizedObstacles NetSpace::superset_obstacles() const {
+  const Index& ix = *index_;
+  std::vector<Index::Entry> acc;  // every net's pin access: the boxes its obstacles() may cut
+  for (const NetPins& n : nets_)
+    for (const Polygon& pin : n.pins)
+      acc.push_back({is_point_pin(pin) ? geom::grown_box(Box{pin.outer[0], pin.outer[0]}, a_) : box_of(pin.outer), acc.size()});
+  const bgi::rtree<Index::Entry, bgi::rstar<16>> acc_tree(acc.begin(), acc.end());
+  auto near_pin = [&](const Box& b) { return acc_tree.qbegin(bgi::intersects(b)) != acc_tree.qend(); };
+  std::vector<Polygon> rest;
+  for (std::size_t c = 0; c < ix.grown.polys.size(); ++c) {
+    if (!near_pin(box_of(ix.grown.polys[c].outer))) {
+      rest.push_back(ix.grown.polys[c]);
+      continue;
+    }
+    for (const std::size_t id : ix.grown.sources[c]) {  // without the grown edges near a pin
+      const Index::Piece& pc = ix.pieces[id];
+      if (pc.kind != Index::GrownEdge || !near_pin(box_of(pc.poly.outer))) rest.push_back(pc.poly);
+    }
+  }
+  for (const auto& pieces : ix.wire_union) rest.insert(rest.end(), pieces.begin(), pieces.end());
+  rest.push_back(geom::domain_frame(domain_));
+  geom::NormalizedObstacles out =
+      geom::normalize_obstacles(rest, Box{{domain_.lo.x - 1, domain_.lo.y - 1}, {domain_.hi.x + 1, domain_.hi.y + 1}});
+  out.domain = domain_;
+  return out;
+}
+
 std::vector<Box> NetSpace::wire_boxes(std::size_t net) const {
   std::vector<Box> out;
   for (const Polygon& p : index_->wire_union[net]) out.push_back(box_of(p.outer));
@@ -702,6 +729,67 @@ bool apart_in_window(const geom::NormalizedObstacles& obs, const NetPins& pins, 
 
 }  // namespace
 
+// The free components of a framed whole-domain space (NetSpace::superset_obstacles): a free
+// point's component is the innermost hole ring containing it (the frame's holes, and the holes of
+// the obstacles in them: obstacles are disjoint, so the rings containing a point are nested and
+// the innermost has the smallest box). A point on one ring only, not at a vertex the ring passes
+// twice, is in that hole when the ring is a hole's, and outside it when it is an obstacle's outer
+// ring (a way round the obstacle is a way in the hole round it); a point on two rings or at such
+// a vertex (a pinch, which no wire passes) is not located, so pins there prove nothing.
+struct FreeComponents {
+  geom::NormalizedObstacles obs;
+  struct R {
+    const Ring* ring;
+    bool hole;
+  };
+  std::vector<R> rings;
+  bgi::rtree<std::pair<Box, std::size_t>, bgi::rstar<16>> tree;
+
+  explicit FreeComponents(geom::NormalizedObstacles o) : obs(std::move(o)) {
+    std::vector<std::pair<Box, std::size_t>> e;
+    for (const Polygon& p : obs.obstacles) {
+      rings.push_back({&p.outer, false});
+      for (const Ring& h : p.holes) rings.push_back({&h, true});
+    }
+    for (std::size_t i = 0; i < rings.size(); ++i) e.push_back({box_of(*rings[i].ring), i});
+    tree = decltype(tree)(e.begin(), e.end());
+  }
+  // p's component (an index into rings), or nullopt: in an obstacle, or not located (above)
+  std::optional<std::size_t> component(Point p) const {
+    std::vector<std::pair<Box, std::size_t>> found;
+    tree.query(bgi::intersects(Box{p, p}), std::back_inserter(found));
+    std::optional<std::size_t> best, on;
+    std::int64_t best_area = 0;
+    for (const auto& [b, i] : found) {
+      const geom::Location loc = geom::locate(p, *rings[i].ring);
+      if (loc == geom::Location::Outside) continue;
+      if (loc == geom::Location::Boundary) {
+        if (on || std::count(rings[i].ring->begin(), rings[i].ring->end(), p) > 1) return std::nullopt;
+        on = i;
+        continue;
+      }
+      const std::int64_t area = (std::int64_t{b.hi.x} - b.lo.x) * (std::int64_t{b.hi.y} - b.lo.y);
+      if (!best || area < best_area) best = i, best_area = area;
+    }
+    if (on && rings[*on].hole) return on;
+    if (!best || !rings[*best].hole) return std::nullopt;
+    return best;
+  }
+  // Are the net's pins (point pins only) in different components?
+  bool apart(const NetPins& pins) const {
+    std::optional<std::size_t> first;
+    bool all_same = true;
+    for (const Polygon& pin : pins.pins) {
+      if (!is_point_pin(pin)) return false;
+      const auto c = component(pin.outer[0]);
+      if (!c) return false;
+      if (!first) first = c;
+      all_same = all_same && *c == *first;
+    }
+    return !all_same;
+  }
+};
+
 namespace {
 
 // Adds the counts of one attempt (or explanation) to the run's.
@@ -714,6 +802,7 @@ void add_counts(NetRouterStats& to, const NetRouterStats& c) {
   to.route_seconds += c.route_seconds;
   to.whole_seconds += c.whole_seconds;
   to.capped += c.capped;
+  to.superset_apart += c.superset_apart;
 }
 
 // Calls f(k) for k in [0, n) on up to `threads` threads (the caller's one of them); then rethrows
@@ -948,6 +1037,12 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
         m = std::max(4 * m, len + 3);
       }
     } else if (a.code == "ROUTE-0002") {  // unreachable: a larger window may hold a way round,
+      // Pins apart in the last pass's superset of the space are apart in it (before a second
+      // wavefront in this window, and before windows up to the whole domain)
+      if (superset_ && level == NetSpaceLevel::Full && only.empty() && superset_->apart(pins)) {
+        ++st.superset_apart;
+        return t;
+      }
       if (apart_in_window(obs, pins, w)) return t;  // unless a pin is shut in inside this one
       // While rounds remain, a net the other nets' wires shut out of its first windows is taken as
       // blocked (its blockers are ripped up) rather than followed round a detour up to the whole
@@ -1446,6 +1541,12 @@ void NetRouter::run(const NetRouteFn& route) {
     for (const std::size_t i : order_)
       if (!out_[i].routed) left.push_back(i);
     stats_.last_pass = left.size();
+    // the superset of every unrouted net's space, while no wire is removed (NetSpace::superset_obstacles);
+    // an inexact union (a sloped crossing rounded outward) might close a way, so it is then not used
+    if (!left.empty() && options_.superset) {
+      geom::NormalizedObstacles sup = space_.superset_obstacles();
+      if (sup.stats.rounded == 0) superset_ = std::make_shared<const FreeComponents>(std::move(sup));
+    }
     // A net whose last failed attempt of the rounds never met the window limit, with nothing
     // changed in its window since, would fail the same way without the limit (the windows grow
     // the same way, and no other step depends on the limit): that attempt is placed in its turn.
@@ -1475,6 +1576,7 @@ void NetRouter::run(const NetRouteFn& route) {
       place(i, f->a);
     }
     flush();
+    superset_.reset();
     best_score = score();
   }
   lap(stats_.phase_seconds.last_pass);

@@ -92,7 +92,12 @@
 // whatever their rips, and keeps only the rip-ups that route more nets. In the first pass and
 // the rounds a net finding no way in its first search_windows
 // windows (NetRouterOptions) is taken as blocked there, not widened to the whole domain; the
-// last pass then tries each net still unrouted without that limit, and places what it routes.
+// last pass then tries each net still unrouted without that limit, and places what it routes;
+// it first builds, once, a superset of every unrouted net's free space on the whole domain
+// (NetRouterOptions::superset), so a net whose pins lie in different free components of it stops
+// at its first window that finds no way (the same outcome: its pins are apart in its own space
+// too), instead of growing its windows to the whole domain (10^4 planted nets over 91,830
+// vertices: the last pass 11.3 s -> 0.65 s, 8 whole-domain windows -> 0, the same routing).
 // Work whose outcome is known is not done again (NetRouterOptions::reuse; the outcome is the
 // same, bit for bit): every wire piece placed or removed is logged (changed_), and an attempt
 // depends on nothing but the pieces meeting its windows, so a net's failed attempt in a round is
@@ -147,6 +152,8 @@
 #include "router/bend_router.h"
 
 namespace taut::router {
+
+struct FreeComponents;  // net_router.cpp
 
 struct NetRules {
   std::int64_t wire_width = 0, spacing = 0;  // <rules wire-width spacing>, each >= 0
@@ -220,6 +227,12 @@ class NetSpace {
   std::vector<std::size_t> wire_nets_in(const geom::Box& window) const;
   // The boxes of what the other nets see of net `net`'s wires (the union of its grown segments).
   std::vector<geom::Box> wire_boxes(std::size_t net) const;
+  // The whole domain, framed (geom::domain_frame), with less in it than any net without wires
+  // sees at the Full level: the blockages, every net's grown wires, and the grown blockage edges
+  // whose boxes meet no net's pin access (a point pin's access square, a shape pin's box); no
+  // pins. Each net's own access cuts and the other nets' pins only add obstacles to this, so
+  // pins apart here (in different free components) are apart there, for every such net.
+  geom::NormalizedObstacles superset_obstacles() const;
 
   const geom::Box& domain() const { return domain_; }
   std::size_t size() const { return nets_.size(); }
@@ -335,6 +348,13 @@ struct NetRouterOptions {
   // it read; and a rip-up's nets stop being routed once it is sure to be undone. false: every
   // attempt made afresh (for tests).
   bool reuse = true;
+  // The last pass first builds, once, a superset of every unrouted net's free space over the
+  // whole domain (NetSpace::superset_obstacles: no wire is removed in that pass, so it stays
+  // one); a net whose pins lie in different free components of it fails in its first window that
+  // finds no way, instead of in windows up to the whole domain. The outcome is the same (the
+  // failed attempt of a window is what an attempt gives when its pins are apart); false: not
+  // built (for tests and benchmarks).
+  bool superset = true;
   // The nets whose windows the route function takes with the domain's frame merged into their
   // obstacles (NetSpace::obstacles(..., framed)): one union per window instead of two (the
   // space's, then the wavefront's own merge of the frame). Only for a route function that reads
@@ -357,6 +377,9 @@ struct NetRouterStats {
   // Nets tried in the final round (NetRouterOptions::final_round), and the nets it gained.
   std::size_t final_round = 0, final_round_routed = 0;
   std::int64_t capped = 0;  // attempts that stopped at the window limit
+  // Last-pass attempts that stopped because the net's pins are apart in a superset of its space
+  // (NetRouterOptions::superset).
+  std::int64_t superset_apart = 0;
   // Rip-ups planned round the wires of nets that may not be ripped up again (see above).
   std::int64_t around_fixed = 0;
   std::int64_t undone = 0;  // rip-ups undone: fewer of the net and its blockers routed after
@@ -444,6 +467,9 @@ class NetRouter {
     NetRouterStats counts;
   };
   Explained explain(const NetRouteFn& route, std::size_t net) const;
+  // During the last pass (no wire is removed then, so it stays a superset of every unrouted
+  // net's free space): the free components of NetSpace::superset_obstacles, built once.
+  std::shared_ptr<const FreeComponents> superset_;
 
   NetSpace space_;
   NetRouterOptions options_;

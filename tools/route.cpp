@@ -801,6 +801,7 @@ void add_route(CLI::App& app, int& status) {
                          {"window_limit_stops", net_stats->capped},
                          {"last_pass_nets", net_stats->last_pass},
                          {"last_pass_routed", net_stats->last_pass_routed},
+                         {"last_pass_proven_apart", net_stats->superset_apart},
                          {"final_round_nets", net_stats->final_round},
                          {"final_round_routed", net_stats->final_round_routed},
                          {"relaxed_windows", net_stats->relaxed},
