@@ -851,6 +851,23 @@ std::vector<router::NetPins> local_nets(std::mt19937& rng, const router::L1Route
   return nets;
 }
 
+// Dense local nets among rectangles from one seed: box_layout, local_nets (lo..hi nets) and
+// random rules (w, s in 0..8), drawn in that order.
+struct LocalLayout {
+  geom::NormalizedObstacles norm;
+  std::vector<router::NetPins> nets;
+  router::NetRules rules;
+};
+LocalLayout local_layout(unsigned seed, int lo, int hi) {
+  std::mt19937 rng(seed);
+  LocalLayout L;
+  L.norm = box_layout(rng).norm;
+  const router::L1Router plain(L.norm.domain, L.norm.obstacles);
+  L.nets = local_nets(rng, plain, lo, hi);
+  L.rules = router::NetRules{static_cast<std::int64_t>(rng() % 9), static_cast<std::int64_t>(rng() % 9)};
+  return L;
+}
+
 // --threads: the outcomes, and the counts that do not depend on timing, are the same for every
 // thread count, bit for bit. Small crowded layouts (windows the whole domain: every speculative
 // attempt meets every change, rip-ups) and larger ones of local nets (windows apart: most
@@ -887,11 +904,7 @@ TEST(NetRouter, ThreadsGiveTheSameOutcomes) {
     same("seed " + std::to_string(710000 + seed) + ", " + std::to_string(opt.threads) + " threads", one, par);
   }
   for (int seed = 1; seed <= sanitized_share(30, 6); ++seed) {
-    std::mt19937 rng(static_cast<unsigned>(720000 + seed));
-    const geom::NormalizedObstacles norm = box_layout(rng).norm;
-    router::L1Router plain(norm.domain, norm.obstacles);
-    const std::vector<router::NetPins> nets = local_nets(rng, plain, 40, 120);
-    const router::NetRules rules{static_cast<std::int64_t>(rng() % 9), static_cast<std::int64_t>(rng() % 9)};
+    const auto [norm, nets, rules] = local_layout(static_cast<unsigned>(720000 + seed), 40, 120);
     router::NetRouter one(norm.domain, norm.obstacles, nets, rules);
     one.run(router::NetRouter::l1_router(seed % 2 == 0));
     router::NetRouterOptions opt;
@@ -974,12 +987,8 @@ TEST(NetRouter, LastPassSupersetGivesTheSameOutcomes) {
   int failed = 0;
   std::int64_t apart = 0, last_pass = 0, whole_with = 0, whole_without = 0, layouts = 0, last_routed = 0;
   auto same = [&](const std::string& at, const router::NetRouter& with, const router::NetRouter& without) {
-    bool ok = with.stats().last_pass == without.stats().last_pass && with.order() == without.order();
-    for (std::size_t i = 0; i < with.outcomes().size(); ++i) {
-      const auto &a = with.outcomes()[i], &b = without.outcomes()[i];
-      ok = ok && a.routed == b.routed && a.wires == b.wires && a.code == b.code && a.reason == b.reason &&
-           a.blockers == b.blockers && a.rips == b.rips;
-    }
+    const bool ok = same_outcomes(with, without) && with.stats().last_pass == without.stats().last_pass &&
+                    with.order() == without.order();
     if (!ok && failed++ < 5) ADD_FAILURE() << at << ": the outcomes differ with the superset";
     EXPECT_EQ(without.stats().superset_apart, 0) << at;
     apart += with.stats().superset_apart;
@@ -1029,11 +1038,7 @@ TEST(NetRouter, LastPassSupersetGivesTheSameOutcomes) {
   const std::int64_t wall_apart = apart, wall_whole_with = whole_with, wall_whole_without = whole_without;
   const std::int64_t wall_last_routed = last_routed;
   for (int seed = 1; seed <= sanitized_share(60, 6); ++seed) {
-    std::mt19937 rng(static_cast<unsigned>(730000 + seed));
-    const geom::NormalizedObstacles norm = box_layout(rng).norm;
-    router::L1Router plain(norm.domain, norm.obstacles);
-    const std::vector<router::NetPins> nets = local_nets(rng, plain, 40, 120);
-    const router::NetRules rules{static_cast<std::int64_t>(rng() % 9), static_cast<std::int64_t>(rng() % 9)};
+    const auto [norm, nets, rules] = local_layout(static_cast<unsigned>(730000 + seed), 40, 120);
     both("local seed " + std::to_string(730000 + seed), norm, nets, rules, {}, router::NetRouter::l1_router(seed % 2 == 0));
   }
   std::printf("%d wall layouts: %lld nets proven apart by the superset, %lld routed by the last pass, whole-domain "
@@ -1084,11 +1089,7 @@ TEST(NetRouter, ReusedWorkGivesTheSameOutcomes) {
   };
   on_random_layouts(730000, compare);
   for (int seed = 1; seed <= sanitized_share(5, 5); ++seed) {
-    std::mt19937 rng(static_cast<unsigned>(740000 + seed));
-    const geom::NormalizedObstacles norm = box_layout(rng).norm;
-    router::L1Router plain(norm.domain, norm.obstacles);
-    const std::vector<router::NetPins> nets = local_nets(rng, plain, 60, 150);
-    const router::NetRules rules{static_cast<std::int64_t>(rng() % 9), static_cast<std::int64_t>(rng() % 9)};
+    const auto [norm, nets, rules] = local_layout(static_cast<unsigned>(740000 + seed), 60, 150);
     router::NetRouterOptions opt;
     opt.threads = seed % 3 == 0 ? 2 : 1;
     compare("local seed " + std::to_string(740000 + seed), nets, norm, rules, opt, router::NetRouter::l1_router(seed % 2 == 0));
