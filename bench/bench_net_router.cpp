@@ -299,9 +299,11 @@ int main(int argc, char** argv) {
                  x.blockers == y.blockers && x.rips == y.rips;
         }
         std::printf("%18s %lld threads: %.3f s, %.2f x one thread's time; %lld of %lld speculative attempts redone; "
+                    "%lld of %lld rip-ups worked out ahead worked out again; "
                     "building spaces %.3f s, paths %.3f s (kept attempts, summed over threads); outcomes %s\n", "",
                     static_cast<long long>(t), par_s, par_s / together_s, static_cast<long long>(par.stats().redone),
-                    static_cast<long long>(par.stats().speculated), par.stats().space_seconds, par.stats().route_seconds,
+                    static_cast<long long>(par.stats().speculated), static_cast<long long>(par.stats().rip_ups_redone),
+                    static_cast<long long>(par.stats().rip_ups_ahead), par.stats().space_seconds, par.stats().route_seconds,
                     same ? "the same" : "DIFFERENT");
         const auto& ph = par.stats().phase_seconds;
         std::printf("%18s %lld threads, phases (wall clock): first pass %.3f s, rip-up rounds %.3f s, final round %.3f s, "

@@ -386,6 +386,13 @@ NetSpace::NetSpace(const geom::Box& domain, std::span<const geom::Polygon> obsta
   index_components(ix.plain);
 }
 
+std::vector<Polygon> NetSpace::wire_union(const Lines& wires) const {
+  std::vector<Polygon> grown;
+  for (const auto& w : wires) for_segments(w, [&](Point p, Point q) { grown.push_back(Polygon{grown_segment(p, q, b_), {}}); });
+  if (grown.empty()) return {};
+  return geom::normalize_obstacles(grown, domain_).obstacles;
+}
+
 void NetSpace::set_wires(std::size_t net, const Lines& wires) {
   Index& ix = *index_;
   for (std::size_t k = 0; k < ix.wire_pieces[net].size(); ++k)
@@ -394,22 +401,20 @@ void NetSpace::set_wires(std::size_t net, const Lines& wires) {
     ix.union_tree.remove(Index::WireEntry{box_of(ix.wire_union[net][k].outer), {net, k}});
   ix.wire_pieces[net].clear();
   ix.wire_union[net].clear();
-  std::vector<Polygon> grown;
   for (const auto& w : wires)
     for_segments(w, [&](Point p, Point q) {
       Ring g = grown_segment(p, q, b_);
       ix.wire_tree.insert(Index::WireEntry{box_of(g), {net, ix.wire_pieces[net].size()}});
-      grown.push_back(Polygon{g, {}});
       ix.wire_pieces[net].push_back(std::move(g));
     });
-  if (grown.empty()) return;
-  ix.wire_union[net] = geom::normalize_obstacles(grown, domain_).obstacles;
+  ix.wire_union[net] = wire_union(wires);
   for (std::size_t k = 0; k < ix.wire_union[net].size(); ++k)
     ix.union_tree.insert(Index::WireEntry{box_of(ix.wire_union[net][k].outer), {net, k}});
 }
 
 geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel level, std::optional<geom::Box> window,
-                                              std::span<const char> only, bool framed) const {
+                                              std::span<const char> only, bool framed,
+                                              const WireOverlay* overlay) const {
   const Index& ix = *index_;
   const Box dom = window ? clipped(*window, domain_) : domain_;
   const bool plain = level == NetSpaceLevel::Plain;
@@ -437,10 +442,17 @@ geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel lev
   if (level == NetSpaceLevel::Full) {
     std::vector<Index::WireEntry> wf;
     ix.union_tree.query(bgi::intersects(dom), std::back_inserter(wf));
+    if (overlay) {  // its nets' pieces instead, in the same order as if they were in the space
+      std::erase_if(wf, [&](const Index::WireEntry& e) { return overlay->find(e.second.first) != nullptr; });
+      for (std::size_t k = 0; k < overlay->nets.size(); ++k)
+        for (std::size_t j = 0; j < overlay->unions[k].size(); ++j)
+          if (const Box b = box_of(overlay->unions[k][j].outer); boxes_meet(b, dom)) wf.push_back({b, {overlay->nets[k], j}});
+    }
     std::sort(wf.begin(), wf.end(), [](const Index::WireEntry& x, const Index::WireEntry& y) { return x.second < y.second; });
     for (const auto& [box, id] : wf)
       if (id.first != net && (only.empty() || only[id.first])) {
-        dynamic.push_back(ix.wire_union[id.first][id.second]);
+        const std::vector<Polygon>* o = overlay ? overlay->find(id.first) : nullptr;
+        dynamic.push_back(o ? (*o)[id.second] : ix.wire_union[id.first][id.second]);
         dynamic_boxes.push_back(box);
       }
   }
@@ -880,7 +892,8 @@ Box NetRouter::first_window(std::size_t net) const {
   return clipped(geom::grown_box(hp, first_margin(space_.net(net), hp, space_.blockage_clearance(), space_.net_clearance())), dom);
 }
 
-NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, NetSpaceLevel level, std::span<const char> only) const {
+NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, NetSpaceLevel level, std::span<const char> only,
+                                     const WireOverlay* overlay) const {
   using Clock = std::chrono::steady_clock;
   Tried t;
   NetRouterStats& st = t.counts;
@@ -916,7 +929,7 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
       // the space may be read by several threads at once, and is changed only by place()
       std::shared_lock lock(space_mutex_);
       if (st.windows == 0) t.since = changed_.size();
-      obs = space_.obstacles(net, level, whole ? std::nullopt : std::optional<Box>(w), only, framed);
+      obs = space_.obstacles(net, level, whole ? std::nullopt : std::optional<Box>(w), only, framed, overlay);
     }
     const auto t1 = Clock::now();
     t.window = w;
@@ -966,7 +979,7 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
         geom::NormalizedObstacles open = obs;
         if (framed) {  // the window's pieces without its frame
           std::shared_lock lock(space_mutex_);
-          open = space_.obstacles(net, level, whole ? std::nullopt : std::optional<Box>(w), only);
+          open = space_.obstacles(net, level, whole ? std::nullopt : std::optional<Box>(w), only, false, overlay);
         }
         open.domain = clipped(geom::grown_box(w, 1), dom);
         const auto r0 = Clock::now();
@@ -1261,6 +1274,182 @@ void NetRouter::route_in_order(const NetRouteFn& route, std::span<const std::siz
   if (stopped) std::rethrow_exception(stopped);
 }
 
+NetRouter::RipPlan NetRouter::plan_rip_up(const NetRouteFn& route, std::size_t i, int limit, bool gain,
+                                           const std::optional<Tried>* ahead_alone) const {
+  RipPlan p;
+  p.net = i;
+  p.gain = gain;
+  p.limit = limit;
+  {
+    std::shared_lock lock(space_mutex_);
+    p.since = changed_.size();
+    p.rips_since = rips_log_.size();
+  }
+  const std::size_t n = space_.size();
+  // the net alone (fixed for the run, read nothing of the wires)
+  const NetAttempt* by_itself = nullptr;
+  if (alone_[i]) {
+    by_itself = &*alone_[i];
+  } else {
+    if (ahead_alone && *ahead_alone) p.alone = **ahead_alone;
+    else p.alone = try_net(route, i, NetSpaceLevel::Pins);
+    by_itself = &p.alone->a;
+  }
+  if (!by_itself->routed) return p;  // not the wires' doing: explained at the end
+  // way_blockers, with what it reads: the wire pieces meeting the wires' segments and the pads
+  auto blockers_of = [&](const Lines& wires) {
+    for (const auto& line : wires)
+      for_segments(line, [&](Point a, Point b) {
+        const Point pq[2] = {a, b};
+        p.reads.push_back(box_of(pq));
+      });
+    for (const Polygon& pin : space_.net(i).pins)
+      if (!is_point_pin(pin)) p.reads.push_back(box_of(pin.outer));
+    std::shared_lock lock(space_mutex_);
+    return way_blockers(i, wires);
+  };
+  std::set<std::size_t> blockers = blockers_of(by_itself->wires);
+  if (blockers.empty()) return p;
+  auto movable = [&] {
+    std::shared_lock lock(space_mutex_);
+    return std::all_of(blockers.begin(), blockers.end(), [&](std::size_t b) { return out_[b].rips < limit; });
+  };
+  if (!movable()) {
+    // Some of them may not be ripped up again: look for a way round those nets' wires alone
+    // (the other nets' pins kept), and rip up the nets that way crosses instead.
+    std::vector<char> fixed(n, 0);
+    bool any = false;
+    {
+      std::shared_lock lock(space_mutex_);
+      for (std::size_t j = 0; j < n; ++j)
+        if (j != i && out_[j].routed && out_[j].rips >= limit) fixed[j] = 1, any = true;
+    }
+    if (!any) {
+      p.any_fixed_read = true;
+      return p;
+    }
+    // (The last such way is taken again when no wire has changed in its windows since and the
+    // nets fixed among those with wires there are the same: it depends on nothing else.)
+    auto fixed_there = [&](const Box& w) {
+      p.reads.push_back(w);
+      std::shared_lock lock(space_mutex_);
+      std::vector<std::size_t> f;
+      for (const std::size_t j : space_.wire_nets_in(w))
+        if (fixed[j]) f.push_back(j);
+      return f;
+    };
+    Tried around;
+    const auto& c = around_[i];
+    bool same = false;
+    if (options_.reuse && c) {
+      p.reads.push_back(c->tried.window);
+      {
+        std::shared_lock lock(space_mutex_);
+        same = !changed_in(changed_, c->tried.since, c->tried.window, i);
+      }
+      same = same && c->fixed == fixed_there(c->tried.window);
+    }
+    if (same) {
+      around = c->tried;
+      ++p.counts.reused;
+    } else {
+      around = try_net(route, i, NetSpaceLevel::Full, fixed);
+      add_counts(p.counts, around.counts);
+      p.reads.push_back(around.window);
+      p.around = AroundWay{around, fixed_there(around.window)};
+    }
+    if (!around.a.routed) return p;
+    ++p.counts.around_fixed;
+    blockers = blockers_of(around.a.wires);
+    if (blockers.empty() || !movable()) return p;
+  }
+  p.blockers = blockers;
+  // The same rip-up undone before, and no wire placed or removed since in the windows its
+  // attempts read: it would go the same way, bit for bit (see undone_).
+  if (const auto& u = undone_[i]; options_.reuse && u && u->blockers == blockers && u->gain == gain) {
+    p.reads.insert(p.reads.end(), u->windows.begin(), u->windows.end());
+    std::shared_lock lock(space_mutex_);
+    if (!changed_in(changed_, u->mark, u->windows)) {
+      p.kind = RipPlan::Kind::Replay;
+      return p;
+    }
+  }
+  p.kind = RipPlan::Kind::Made;
+  // The blockers ripped up, then the net and they routed in their order, each seeing the wires
+  // of those routed before it (an overlay: the space is not changed).
+  WireOverlay ov;
+  for (const std::size_t b : blockers) ov.set(b, {});
+  std::vector<std::size_t> again_nets{i};
+  for (const std::size_t j : order_)
+    if (blockers.count(j)) again_nets.push_back(j);
+  // Undone when more than 1 - gain of them stay unrouted: once that many have failed, the rest
+  // are not tried (the undo puts back the same state either way).
+  std::size_t failed = 0, now = 0;
+  for (const std::size_t j : again_nets) {
+    Tried t = try_net(route, j, NetSpaceLevel::Full, {}, &ov);
+    add_counts(p.counts, t.counts);
+    p.reads.push_back(t.window);
+    p.windows.push_back(t.window);
+    ov.set(j, t.a.routed ? space_.wire_union(t.a.wires) : std::vector<Polygon>{});
+    failed += !t.a.routed;
+    now += t.a.routed;
+    p.again.push_back({j, std::move(t.a)});
+    if (failed + gain > 1 && options_.reuse) break;
+  }
+  p.undone = now < blockers.size() + gain;  // fewer routed than before (with gain: not more)
+  return p;
+}
+
+bool NetRouter::plan_valid(const RipPlan& p) const {
+  std::shared_lock lock(space_mutex_);
+  if (changed_in(changed_, p.since, p.reads) || changed_in(rips_log_, p.rips_since, p.reads)) return false;
+  if (p.any_fixed_read)
+    for (std::size_t j = 0; j < out_.size(); ++j)
+      if (j != p.net && out_[j].routed && out_[j].rips >= p.limit) return false;
+  return true;
+}
+
+bool NetRouter::commit(RipPlan p) {
+  const std::size_t i = p.net;
+  add_counts(stats_, p.counts);
+  stats_.reused += p.counts.reused;
+  stats_.around_fixed += p.counts.around_fixed;
+  if (p.alone && !alone_[i]) {
+    add_counts(stats_, p.alone->counts);
+    alone_[i] = std::move(p.alone->a);
+  }
+  if (p.around) around_[i] = std::move(p.around);
+  if (p.kind == RipPlan::Kind::Nothing) return false;
+  // the blockers' rips, logged with their wires' boxes (a rip-up worked out ahead that read them
+  // is then worked out again)
+  auto count_rips = [&] {
+    std::unique_lock lock(space_mutex_);
+    for (const std::size_t b : p.blockers) {
+      ++out_[b].rips;
+      for (const Box& x : space_.wire_boxes(b)) rips_log_.push_back({x, b});
+    }
+    stats_.rips += static_cast<std::int64_t>(p.blockers.size());
+  };
+  if (p.kind == RipPlan::Kind::Replay || p.undone) {
+    // undone: every wire as it was; the net (which had none) without its last attempt's reason
+    count_rips();
+    ++stats_.undone;
+    stats_.replayed += p.kind == RipPlan::Kind::Replay;
+    {
+      std::unique_lock lock(space_mutex_);
+      out_[i].code.clear();
+      out_[i].reason.clear();
+    }
+    if (p.kind == RipPlan::Kind::Made) undone_[i] = UndoneRipUp{std::move(p.blockers), p.gain, changed_.size(), std::move(p.windows)};
+    return true;
+  }
+  for (const std::size_t b : p.blockers) place(b, NetAttempt{});
+  count_rips();
+  for (auto& [j, a] : p.again) place(j, std::move(a));
+  undone_[i].reset();
+  return false;
+}
+
 void NetRouter::run(const NetRouteFn& route) {
   const std::size_t n = space_.size();
   const int threads = std::max(options_.threads, 1);
@@ -1269,6 +1458,7 @@ void NetRouter::run(const NetRouteFn& route) {
   alone_.assign(n, std::nullopt);
   final_undone_.clear();
   changed_.clear();  // the log of wire pieces placed and removed
+  rips_log_.clear();
   failed_.assign(n, std::nullopt);
   undone_.assign(n, std::nullopt);
   around_.assign(n, std::nullopt);
@@ -1321,104 +1511,8 @@ void NetRouter::run(const NetRouteFn& route) {
   int stale = 0;
   // Rips up the nets in net i's way (found without the other nets' wires) and routes i, then
   // them; undone (then true) when fewer of them are routed after, or with `gain` not more than
-  // before. A net ripped up `limit` times stays put.
-  auto rip_up = [&](std::size_t i, int limit, bool gain) -> bool {
-    const NetAttempt& by_itself = alone(route, i);
-    if (!by_itself.routed) return false;  // not the wires' doing: explained at the end
-    std::set<std::size_t> blockers = way_blockers(i, by_itself.wires);
-    if (blockers.empty()) return false;
-    auto movable = [&] {
-      return std::all_of(blockers.begin(), blockers.end(), [&](std::size_t b) { return out_[b].rips < limit; });
-    };
-    if (!movable()) {
-      // Some of them may not be ripped up again: look for a way round those nets' wires alone
-      // (the other nets' pins kept), and rip up the nets that way crosses instead.
-      std::vector<char> fixed(n, 0);
-      bool any = false;
-      for (std::size_t j = 0; j < n; ++j)
-        if (j != i && out_[j].routed && out_[j].rips >= limit) fixed[j] = 1, any = true;
-      if (!any) return false;
-      // (The last such way is taken again when no wire has changed in its windows since and the
-      // nets fixed among those with wires there are the same: it depends on nothing else.)
-      auto fixed_there = [&](const Box& w) {
-        std::vector<std::size_t> f;
-        for (const std::size_t j : space_.wire_nets_in(w))
-          if (fixed[j]) f.push_back(j);
-        return f;
-      };
-      Tried around;
-      if (const auto& c = around_[i];
-          options_.reuse && c && !changed_in(changed_, c->tried.since, c->tried.window, i) &&
-          c->fixed == fixed_there(c->tried.window)) {
-        around = c->tried;
-        ++stats_.reused;
-      } else {
-        around = try_net(route, i, NetSpaceLevel::Full, fixed);
-        add_counts(stats_, around.counts);
-        around_[i] = AroundWay{around, fixed_there(around.window)};
-      }
-      if (!around.a.routed) return false;
-      ++stats_.around_fixed;
-      blockers = way_blockers(i, around.a.wires);
-      if (blockers.empty() || !movable()) return false;
-    }
-    // The same rip-up undone before, and no wire placed or removed since in the windows its
-    // attempts read: it would go the same way, bit for bit (see undone_). Its rips are counted,
-    // and nothing else changes.
-    if (const auto& u = undone_[i];
-        options_.reuse && u && u->blockers == blockers && u->gain == gain && !changed_in(changed_, u->mark, u->windows)) {
-      for (const std::size_t b : blockers) ++out_[b].rips;
-      stats_.rips += static_cast<std::int64_t>(blockers.size());
-      ++stats_.undone;
-      ++stats_.replayed;
-      out_[i].code.clear();
-      out_[i].reason.clear();
-      return true;
-    }
-    std::vector<std::pair<std::size_t, NetAttempt>> before;  // the blockers' wires, to undo
-    const std::size_t mark = changed_.size();  // the log before the rip-up
-    for (const std::size_t b : blockers) {
-      NetAttempt was;
-      was.routed = true;
-      was.wires = out_[b].wires;
-      before.push_back({b, std::move(was)});
-      place(b, NetAttempt{});
-      ++out_[b].rips;
-      ++stats_.rips;
-    }
-    std::vector<std::size_t> again_nets{i};  // the net, then its blockers in their order
-    for (const std::size_t j : order_)
-      if (blockers.count(j)) again_nets.push_back(j);
-    // Undone when more than 1 - gain of them stay unrouted: once that many have failed, the rest
-    // are not tried (the undo puts back the same state either way). Routed on this thread alone,
-    // also with threads (see the header).
-    std::size_t failed = 0;
-    std::vector<Box> windows;
-    route_in_order(
-        route, again_nets,
-        [&](std::size_t j, const Box& w) {
-          failed += !out_[j].routed;
-          windows.push_back(w);
-          return failed + gain <= 1 || !options_.reuse;
-        },
-        InOrder::Serial);
-    std::size_t now = 0;
-    for (const std::size_t j : again_nets) now += out_[j].routed;
-    if (now < blockers.size() + gain) {  // fewer routed than before (with gain: not more): put them back
-      ++stats_.undone;
-      for (const std::size_t j : again_nets) place(j, NetAttempt{});
-      for (auto& [b, was] : before) place(b, std::move(was));
-      // Every wire is back as it was (the net itself had none): the space is what it was at
-      // `mark`, so the log's entries since then are dropped, and what was tried against the space
-      // before the rip-up (failed_, attempts made ahead) stays valid.
-      std::unique_lock lock(space_mutex_);
-      changed_.resize(mark);
-      undone_[i] = UndoneRipUp{std::move(blockers), gain, mark, std::move(windows)};
-      return true;
-    }
-    undone_[i].reset();
-    return false;
-  };
+  // before. A net ripped up `limit` times stays put (plan_rip_up).
+  auto rip_up = [&](std::size_t i, int limit, bool gain) -> bool { return commit(plan_rip_up(route, i, limit, gain)); };
   // Net i at the Full level in a round: the attempt made ahead when still valid; else its last
   // failed attempt when no other net's wire has changed in its windows since (an attempt depends
   // on nothing else: it would fail the same way, bit for bit); else a new one. A failed one is
@@ -1470,6 +1564,84 @@ void NetRouter::run(const NetRouteFn& route) {
       });
       for (const std::size_t i : todo) stats_.speculated += ahead[i].has_value() + ahead_alone[i].has_value();
     }
+    // With threads, the rip-ups are worked out ahead too (plan_rip_up), for the nets whose attempt
+    // ahead failed, in order: the workers take the next ones after this thread's turn, and this
+    // thread makes each in its turn when it is still valid (else works it out again), or works
+    // out itself the one in turn that no worker has taken. (Nets far apart seldom meet each
+    // other's rip-ups.)
+    enum class SpecState { Waiting, Running, Done };
+    struct Spec {
+      SpecState state = SpecState::Waiting;
+      std::optional<RipPlan> plan;
+    };
+    std::vector<std::size_t> cand;  // the nets to work out ahead, in order
+    std::vector<std::size_t> cand_at(n, std::numeric_limits<std::size_t>::max());
+    std::vector<Spec> spec;
+    std::mutex spec_m;
+    std::condition_variable spec_cv;
+    std::size_t turn = 0;  // workers take cand[k] with k >= turn only
+    bool quit = false;
+    std::vector<std::thread> workers;
+    // With spec_m held (by `lock`): works out the first rip-up not taken yet among the lookahead
+    // from cand[from] on, if any (true).
+    const std::size_t lookahead = 2 * static_cast<std::size_t>(threads);
+    auto plan_next = [&](std::unique_lock<std::mutex>& lock, std::size_t from) {
+      std::size_t k = cand.size();
+      for (std::size_t j = from; j < std::min(cand.size(), turn + lookahead) && k == cand.size(); ++j)
+        if (spec[j].state == SpecState::Waiting) k = j;
+      if (k == cand.size()) return false;
+      spec[k].state = SpecState::Running;
+      lock.unlock();
+      std::optional<RipPlan> plan;
+      try {
+        plan = plan_rip_up(route, cand[k], options_.max_rips, false, &ahead_alone[cand[k]]);
+      } catch (...) {  // worked out again in turn (a stop too: it stops there)
+      }
+      lock.lock();
+      spec[k].plan = std::move(plan);
+      spec[k].state = SpecState::Done;
+      spec_cv.notify_all();
+      return true;
+    };
+    struct Join {  // the workers stop and are joined however the round ends
+      std::mutex& m;
+      std::condition_variable& cv;
+      bool& quit;
+      std::vector<std::thread>& w;
+      ~Join() {
+        {
+          std::lock_guard lock(m);
+          quit = true;
+        }
+        cv.notify_all();
+        for (std::thread& t : w) t.join();
+      }
+    } join{spec_m, spec_cv, quit, workers};
+    if (threads > 1) {
+      for (const std::size_t i : order_)
+        if (!out_[i].routed && (!ahead[i] || !ahead[i]->a.routed)) cand_at[i] = cand.size(), cand.push_back(i);
+      spec.resize(cand.size());
+      auto work = [&] {
+        std::unique_lock lock(spec_m);
+        while (!quit && turn < cand.size())
+          if (!plan_next(lock, turn)) spec_cv.wait(lock);
+      };
+      for (int t = 1; t < threads && !cand.empty(); ++t) workers.emplace_back(work);
+    }
+    // net i's rip-up worked out ahead, when a worker has (while one works it out, this thread
+    // works out others after it); none is taken for it once this returns
+    auto planned = [&](std::size_t i) -> std::optional<RipPlan> {
+      if (cand_at[i] == std::numeric_limits<std::size_t>::max()) return std::nullopt;
+      const std::size_t k = cand_at[i];
+      std::unique_lock lock(spec_m);
+      turn = std::max(turn, k + 1);
+      spec_cv.notify_all();
+      // while a worker works it out, this thread works out one after it
+      while (spec[k].state == SpecState::Running)
+        if (!plan_next(lock, k + 1)) spec_cv.wait(lock);
+      spec[k].state = SpecState::Done;
+      return std::move(spec[k].plan);
+    };
     for (const std::size_t i : order_) {
       if (out_[i].routed) continue;
       routed_now = 0;
@@ -1477,14 +1649,23 @@ void NetRouter::run(const NetRouteFn& route) {
       tell();
       NetAttempt again = full(i, ahead[i]);  // others may have moved
       if (again.routed) {
+        (void)planned(i);
         place(i, std::move(again));
         continue;
       }
+      std::optional<RipPlan> plan = planned(i);
       if (!alone_[i] && ahead_alone[i]) {  // fixed for the run: kept whenever it was made
         add_counts(stats_, ahead_alone[i]->counts);
         alone_[i] = std::move(ahead_alone[i]->a);
       }
-      (void)rip_up(i, options_.max_rips, false);
+      if (plan) {
+        ++stats_.rip_ups_ahead;
+        if (!plan_valid(*plan)) {
+          ++stats_.rip_ups_redone;
+          plan.reset();
+        }
+      }
+      (void)commit(plan ? std::move(*plan) : plan_rip_up(route, i, options_.max_rips, false));
     }
     const auto s = score();
     if (s > best_score) {
