@@ -128,13 +128,14 @@
 // workers try, this thread places in order), the Full attempt of every unrouted net at the start
 // of a rip-up round, the Pins attempts (fixed for the run, made once), the rip-ups of the
 // rounds, and the explanations (which only read). A rip-up is worked out whole ahead of its turn
-// (RipPlan: the blockers found, the net and its blockers routed again in an overlay of their
-// new wires, the undo decided) without changing the space, and made in its turn when nothing
-// logged since meets what it read; the rip-ups of unrouted nets far apart then go on at once (on
-// the 10^4 planted row, 1,103 of 1,156 were kept: the rounds took 0.80 x one thread's time on two
-// cores). Not the nets within one rip-up: the net's new wire runs where its blockers' wires were,
-// so their attempts made ahead were almost never valid (the rounds took 1.07-1.19 x one thread's
-// time with them).
+// (RipPlan: the blockers found, the way round the nets at the rip limit, the net and its
+// blockers routed again in an overlay of their new wires, the undo decided) without changing
+// the space, and made in its turn when nothing logged since meets what it read; so the rip-ups
+// of unrouted nets far apart go on at once (on the 10^4 planted row about 1,100 of 1,150 were
+// made as worked out ahead; a worker that had the net's stale attempt of the round's start made
+// again first gained nothing). Not the nets within one rip-up: the net's
+// new wire runs where its blockers' wires were, so their attempts made ahead were almost never
+// valid (the rounds took 1.07-1.19 x one thread's time with them).
 #pragma once
 
 #include <cstddef>

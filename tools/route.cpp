@@ -808,6 +808,8 @@ void add_route(CLI::App& app, int& status) {
                          {"threads", net_threads},
                          {"speculative_attempts", net_stats->speculated},
                          {"speculative_redone", net_stats->redone},
+                         {"rip_ups_ahead", net_stats->rip_ups_ahead},
+                         {"rip_ups_ahead_redone", net_stats->rip_ups_redone},
                          {"reused_attempts", net_stats->reused},
                          {"replayed_rip_ups", net_stats->replayed},
                          {"space_seconds", net_stats->space_seconds},

@@ -279,6 +279,7 @@ TEST(Route, DemoTogetherKeepsTheRules) {
   ASSERT_TRUE(stats.contains("net_router"));
   EXPECT_GE(stats["net_router"]["attempts"].get<int>(), 5);
   EXPECT_EQ(stats["net_router"]["last_pass_proven_apart"].get<int>(), 0);  // no last pass here
+  EXPECT_EQ(stats["net_router"]["rip_ups_ahead"].get<int>(), 0);  // one thread
   EXPECT_EQ(stats["totals"]["completion"], 1.0);
   for (const char* phase : {"prepare", "route", "output"}) EXPECT_TRUE(stats["route_seconds"].contains(phase)) << phase;
   // the short table on stderr, and taut stats' table
