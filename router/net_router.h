@@ -498,16 +498,18 @@ class NetRouter {
   void route_in_order(const NetRouteFn& route, std::span<const std::size_t> nets,
                       const std::function<bool(std::size_t, const geom::Box&)>& after, InOrder how = InOrder::Cautious);
   void place(std::size_t net, NetAttempt a);
+  // A way round the wires of the nets that may not be ripped up again (around_), with those of
+  // them whose wires met its last window.
+  struct AroundWay {
+    Tried tried;
+    std::vector<std::size_t> fixed;
+  };
   // A rip-up for net `net` (run: the nets in the way of its route alone are ripped up, and it and
   // they are routed again), worked out against the space without changing it, then made (commit:
   // true when it is undone, as before it, or not made again because the same one was undone
   // before). Worked out by a worker ahead of its turn, it is made in its turn when no wire piece
   // placed or removed since (changed_), nor any wire of a net whose rips were counted since
   // (rips_log_), meets what it read (`reads`): it would have been worked out the same way then.
-  struct AroundWay {
-    Tried tried;
-    std::vector<std::size_t> fixed;
-  };
   struct RipPlan {
     enum class Kind { Nothing, Replay, Made } kind = Kind::Nothing;
     std::size_t net = 0;
