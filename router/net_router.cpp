@@ -1092,15 +1092,6 @@ std::set<std::size_t> NetRouter::way_blockers(std::size_t net, const std::vector
   return bl;
 }
 
-const NetAttempt& NetRouter::alone(const NetRouteFn& route, std::size_t net) {
-  if (!alone_[net]) {
-    Tried t = try_net(route, net, NetSpaceLevel::Pins);
-    add_counts(stats_, t.counts);
-    alone_[net] = std::move(t.a);
-  }
-  return *alone_[net];
-}
-
 namespace {
 
 // Does a wire piece placed or removed since entry `since` of the log `changed`, of a net other
@@ -1355,8 +1346,7 @@ NetRouter::RipPlan NetRouter::plan_rip_up(const NetRouteFn& route, std::size_t i
     } else {
       around = try_net(route, i, NetSpaceLevel::Full, fixed);
       add_counts(p.counts, around.counts);
-      p.reads.push_back(around.window);
-      p.around = AroundWay{around, fixed_there(around.window)};
+      p.around = AroundWay{around, fixed_there(around.window)};  // (which reads the window)
     }
     if (!around.a.routed) return p;
     ++p.counts.around_fixed;
@@ -1400,6 +1390,11 @@ NetRouter::RipPlan NetRouter::plan_rip_up(const NetRouteFn& route, std::size_t i
   return p;
 }
 
+// What this relies on (see the header's Threads): a net worked out ahead has no wires and gets
+// none before its turn (only its own rip-up places it), and its entries of alone_, around_ and
+// undone_ are written only in its turn; within a round no net at the rip limit leaves it (such
+// nets are never ripped up), so `any` can only turn true, which is checked again; and every wire
+// and pin lies in the domain, so a wire piece that a blocker search meets lies in a logged box.
 bool NetRouter::plan_valid(const RipPlan& p) const {
   std::shared_lock lock(space_mutex_);
   if (changed_in(changed_, p.since, p.reads) || changed_in(rips_log_, p.rips_since, p.reads)) return false;
@@ -1421,7 +1416,7 @@ bool NetRouter::commit(RipPlan p) {
   if (p.around) around_[i] = std::move(p.around);
   if (p.kind == RipPlan::Kind::Nothing) return false;
   // the blockers' rips, logged with their wires' boxes (a rip-up worked out ahead that read them
-  // is then worked out again)
+  // is then worked out again; a rip-up made has removed their wires first, which changed_ logs)
   auto count_rips = [&] {
     std::unique_lock lock(space_mutex_);
     for (const std::size_t b : p.blockers) {

@@ -483,9 +483,6 @@ class NetRouter {
                 const WireOverlay* overlay = nullptr) const;
   geom::Box first_window(std::size_t net) const;  // the first window try_net tries
   NetAttempt attempt(const NetRouteFn& route, std::size_t net, NetSpaceLevel level);  // counted
-  // The net at the Pins level (the blockages and other nets' pins only: fixed for the run, so
-  // tried once per net and kept).
-  const NetAttempt& alone(const NetRouteFn& route, std::size_t net);
   // The nets whose grown wires these wires of net `net` enter, and those that enter its pads.
   std::set<std::size_t> way_blockers(std::size_t net, const std::vector<std::vector<geom::Point>>& wires) const;
   // Routes `nets` at the Full level one after another, placing each (as if with one thread).
@@ -545,7 +542,9 @@ class NetRouter {
   std::vector<NetOutcome> out_;
   std::vector<std::size_t> order_;
   NetRouterStats stats_;
-  std::vector<std::optional<NetAttempt>> alone_;  // alone(), per net
+  // per net, its attempt at the Pins level (the blockages and other nets' pins only: fixed for
+  // the run, so tried once per net and kept)
+  std::vector<std::optional<NetAttempt>> alone_;
   std::vector<char> final_undone_;  // per net: its rip-up in the final round was undone
   bool capped_ = false;  // Full attempts stop after options_.search_windows unreachable windows
   // The boxes of every wire piece placed or removed since run() began, with their net (an attempt
