@@ -1288,14 +1288,15 @@ NetRouter::RipPlan NetRouter::plan_rip_up(const NetRouteFn& route, std::size_t i
   }
   if (!by_itself->routed) return p;  // not the wires' doing: explained at the end
   // way_blockers, with what it reads: the wire pieces meeting the wires' segments and the pads
+  // (pad_blockers reads the net's shape pins' boxes: read once for both calls)
+  for (const Polygon& pin : space_.net(i).pins)
+    if (!is_point_pin(pin)) p.reads.push_back(box_of(pin.outer));
   auto blockers_of = [&](const Lines& wires) {
     for (const auto& line : wires)
       for_segments(line, [&](Point a, Point b) {
         const Point pq[2] = {a, b};
         p.reads.push_back(box_of(pq));
       });
-    for (const Polygon& pin : space_.net(i).pins)
-      if (!is_point_pin(pin)) p.reads.push_back(box_of(pin.outer));
     std::shared_lock lock(space_mutex_);
     return way_blockers(i, wires);
   };
