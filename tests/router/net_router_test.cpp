@@ -928,9 +928,10 @@ TEST(NetRouter, ThreadsGiveTheSameOutcomes) {
   EXPECT_GT(rips, sanitized_share(50, 10));
   EXPECT_GT(unrouted, sanitized_share(50, 10));
   // rip-ups worked out ahead: made in their turn, and worked out again there (how many depends on
-  // timing: 465 and 19 on an idle machine, 100 and 10 with a build on the other core)
-  EXPECT_GT(ahead - ahead_redone, sanitized_share(20, 20));
+  // timing: 465 and 19 on an idle machine, 100 and 10 with a build on the other core; under the
+  // sanitizers, with a sixteenth of the layouts, a loaded machine gave 0, so not asserted there)
   if (!kSanitized) {
+    EXPECT_GT(ahead - ahead_redone, 20);
     EXPECT_GT(ahead_redone, 0);
   }
 }
