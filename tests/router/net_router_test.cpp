@@ -921,17 +921,18 @@ TEST(NetRouter, ThreadsGiveTheSameOutcomes) {
               static_cast<long long>(speculated), static_cast<long long>(redone), static_cast<long long>(ahead),
               static_cast<long long>(ahead_redone), static_cast<long long>(rips), static_cast<long long>(unrouted));
   EXPECT_EQ(failed, 0);
-  // both ways were taken: attempts kept and attempts tried again; and the rip-up and explaining
-  // phases ran
-  EXPECT_GT(redone, sanitized_share(100, 10));
-  EXPECT_GT(speculated - redone, sanitized_share(1000, 10));
+  // the rip-up and explaining phases ran (counts that do not depend on timing)
   EXPECT_GT(rips, sanitized_share(50, 10));
   EXPECT_GT(unrouted, sanitized_share(50, 10));
-  // rip-ups worked out ahead: made in their turn, and worked out again there (how many depends on
-  // timing: 465 and 19 on an idle machine, 100 and 10 with a build on the other core; under the
-  // sanitizers, with a sixteenth of the layouts, a loaded machine gave 0, so not asserted there)
+  // Both ways were taken: attempts and rip-ups made ahead were kept in their turn, and some were
+  // worked out again there. How many depends on timing (on an idle machine 3,311 attempts, 1,178
+  // redone; 465 rip-ups ahead, 19 again; with a build on the other core 100 and 10; under the
+  // sanitizers, with a sixteenth of the layouts, a loaded machine gave 0 rip-ups ahead), so only
+  // that each happened at all is asserted, and not under the sanitizers.
   if (!kSanitized) {
-    EXPECT_GT(ahead - ahead_redone, 20);
+    EXPECT_GT(redone, 0);
+    EXPECT_GT(speculated - redone, 0);
+    EXPECT_GT(ahead - ahead_redone, 0);
     EXPECT_GT(ahead_redone, 0);
   }
 }
