@@ -19,6 +19,7 @@
 #include "geom/predicates.h"
 #include "router/bend_router.h"
 #include "router/l1_router.h"
+#include "router/lookahead.h"
 #include "router/oct_router.h"
 #include "router/wavefront.h"
 
@@ -1140,29 +1141,18 @@ void NetRouter::route_in_order(const NetRouteFn& route, std::span<const std::siz
     first[k] = first_window(nets[k]);
     reach[k] = geom::grown_box(first[k], space_.net_clearance());
   }
-  enum class State { Waiting, Running, Done };
-  struct Slot {
-    State state = State::Waiting;
-    std::optional<Tried> tried;
-    std::exception_ptr error;
-  };
-  std::vector<Slot> slot(n);
-  std::mutex m;
-  std::condition_variable cv;
-  std::size_t next = 0;  // the next net to place
-  bool quit = false;
-  std::exception_ptr stopped;  // NetRouterStopped from a worker
-  auto valid = [&](std::size_t k) {  // with m held
-    return slot[k].tried && !changed_in(changed_, slot[k].tried->since, slot[k].tried->window, nets[k]);
-  };
-  auto clear = [&](std::size_t j) {  // with m held: may net j be tried now?
+  // is net k's attempt t still valid? (read on this thread only, which alone writes changed_, in
+  // place())
+  auto valid = [&](const Tried& t, std::size_t k) { return !changed_in(changed_, t.since, t.window, nets[k]); };
+  auto clear = [&](const Lookahead<Tried>& la, std::size_t j) {  // with its lock held: may net j be tried now?
     if (!options_.cautious) return true;
-    for (std::size_t i = next; i < j; ++i) {
-      if (slot[i].state != State::Done || !slot[i].tried) {
+    for (std::size_t i = la.start(); i < j; ++i) {
+      const Tried* t = la.ready(i);
+      if (!t) {
         if (how == InOrder::Cautious && boxes_meet(reach[i], first[j])) return false;
         continue;
       }
-      for (const auto& wire : slot[i].tried->a.wires)
+      for (const auto& wire : t->a.wires)
         for (std::size_t v = 0; v < wire.size(); ++v) {
           const Point pq[2] = {wire[v], v + 1 < wire.size() ? wire[v + 1] : wire[v]};
           if (boxes_meet(geom::grown_box(box_of(pq), space_.net_clearance()), first[j])) return false;
@@ -1170,99 +1160,26 @@ void NetRouter::route_in_order(const NetRouteFn& route, std::span<const std::siz
     }
     return true;
   };
-  auto work = [&] {
-    std::unique_lock lock(m);
-    while (true) {
-      std::size_t k = n;
-      for (std::size_t j = next; j < std::min(n, next + ahead) && k == n; ++j)
-        if (slot[j].state == State::Waiting && clear(j)) k = j;
-      if (quit) return;
-      if (k == n) {
-        cv.wait(lock);
-        continue;
-      }
-      slot[k].state = State::Running;
-      lock.unlock();
-      std::optional<Tried> t;
-      std::exception_ptr e;
-      try {
-        t = try_net(route, nets[k], NetSpaceLevel::Full);
-      } catch (const NetRouterStopped&) {
-        lock.lock();
-        stopped = std::current_exception();
-        quit = true;
-        cv.notify_all();
-        return;
-      } catch (...) {  // thrown only when it is tried again in its turn (as with one thread)
-        e = std::current_exception();
-      }
-      lock.lock();
-      slot[k].tried = std::move(t);
-      slot[k].error = e;
-      slot[k].state = State::Done;
-      ++stats_.speculated;
-      cv.notify_all();
+  Lookahead<Tried> pipeline(
+      n, ahead, threads,
+      [&](std::size_t k) -> std::optional<Tried> { return try_net(route, nets[k], NetSpaceLevel::Full); }, clear);
+  for (std::size_t next = 0; next < n; ++next) {
+    std::optional<Tried> t = pipeline.take(next);
+    if (!t || !valid(*t, next)) {
+      // tried here, against the space as it is now: valid by construction (or it throws, as it
+      // would with one thread); the workers go on meanwhile
+      stats_.redone += t.has_value();
+      t = try_net(route, nets[next], NetSpaceLevel::Full);
     }
-  };
-  std::vector<std::jthread> pool;
-  auto finish = [&] {
-    {
-      std::lock_guard lock(m);
-      quit = true;
-    }
-    cv.notify_all();
-    pool.clear();  // joins
-  };
-  try {
-    for (int t = 0; t < threads; ++t) pool.emplace_back(work);
-    std::unique_lock lock(m);
-    while (next < n) {
-      if (stopped) break;
-      Slot& s = slot[next];
-      if (s.state == State::Running) {  // a worker has it
-        cv.wait(lock);
-        continue;
-      }
-      if (s.state == State::Waiting || s.error || !valid(next)) {
-        // tried here, against the space as it is now: valid by construction (or it throws, as
-        // it would with one thread); the workers go on meanwhile
-        stats_.redone += s.tried.has_value();
-        s.state = State::Running;
-        lock.unlock();
-        Tried t = try_net(route, nets[next], NetSpaceLevel::Full);
-        lock.lock();
-        s.tried = std::move(t);
-        s.error = nullptr;
-        s.state = State::Done;
-      }
-      Tried t = std::move(*s.tried);
-      s.tried.reset();
-      const std::size_t placed = nets[next];
-      add_counts(stats_, t.counts);
-      const Box window = t.window;
-      lock.unlock();
-      place(placed, std::move(t.a));  // under the space's own lock: the workers go on
-      lock.lock();
-      ++next;
-      // attempts ahead that this placement invalidates are tried again at once
-      for (std::size_t j = next; j < std::min(n, next + ahead); ++j)
-        if (slot[j].state == State::Done && slot[j].tried && !valid(j)) {
-          ++stats_.redone;
-          slot[j].tried.reset();
-          slot[j].state = State::Waiting;
-        }
-      cv.notify_all();
-      lock.unlock();
-      const bool go_on = after(placed, window);
-      lock.lock();
-      if (!go_on) break;
-    }
-  } catch (...) {
-    finish();
-    throw;
+    add_counts(stats_, t->counts);
+    const Box window = t->window;
+    place(nets[next], std::move(t->a));  // under the space's own lock: the workers go on
+    // attempts ahead that this placement invalidates are tried again at once
+    stats_.redone += pipeline.advance(next + 1, [&](std::size_t j, const Tried& r) { return !valid(r, j); });
+    if (!after(nets[next], window)) break;
   }
-  finish();
-  if (stopped) std::rethrow_exception(stopped);
+  pipeline.finish();
+  stats_.speculated += pipeline.made();
 }
 
 NetRouter::RipPlan NetRouter::plan_rip_up(const NetRouteFn& route, std::size_t i, int limit, bool gain,
@@ -1507,8 +1424,43 @@ void NetRouter::run(const NetRouteFn& route) {
   int stale = 0;
   // Rips up the nets in net i's way (found without the other nets' wires) and routes i, then
   // them; undone (then true) when fewer of them are routed after, or with `gain` not more than
-  // before. A net ripped up `limit` times stays put (plan_rip_up).
-  auto rip_up = [&](std::size_t i, int limit, bool gain) -> bool { return commit(plan_rip_up(route, i, limit, gain)); };
+  // before. A net ripped up `limit` times stays put (plan_rip_up). `ahead`: the rip-up as a
+  // worker worked it out ahead of its turn (with the same limit and gain), made when it is still
+  // valid, else worked out again.
+  auto rip_up = [&](std::size_t i, int limit, bool gain, std::optional<RipPlan> ahead) -> bool {
+    if (ahead) {
+      ++stats_.rip_ups_ahead;
+      if (!plan_valid(*ahead)) {
+        ++stats_.rip_ups_redone;
+        ahead.reset();
+      }
+    }
+    return commit(ahead ? std::move(*ahead) : plan_rip_up(route, i, limit, gain));
+  };
+  // With threads, the rip-ups of the nets `cand` (in order) are worked out ahead: the workers
+  // take the next ones after this thread's turn, and this thread takes net cand[k]'s in its turn
+  // (planned), or, while a worker works it out, works out later ones itself. (Nets far apart
+  // seldom meet each other's rip-ups.)
+  struct RipsAhead {
+    std::vector<std::size_t> cand;
+    std::vector<std::size_t> at;  // per net: its place in cand, or none
+    std::optional<Lookahead<RipPlan>> plans;
+  };
+  constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+  auto rips_ahead = [&](RipsAhead& r, int limit, bool gain, const std::vector<std::optional<Tried>>* alone_ahead) {
+    r.at.assign(n, kNone);
+    for (std::size_t k = 0; k < r.cand.size(); ++k) r.at[r.cand[k]] = k;
+    r.plans.emplace(r.cand.size(), 2 * static_cast<std::size_t>(threads), threads - 1, [&r, &route, limit, gain, alone_ahead, this](std::size_t k) {
+      const std::size_t i = r.cand[k];
+      return std::optional<RipPlan>(plan_rip_up(route, i, limit, gain, alone_ahead ? &(*alone_ahead)[i] : nullptr));
+    });
+  };
+  // net i's rip-up worked out ahead, when a worker has; none is taken for it once this returns
+  auto planned = [&](RipsAhead& r, std::size_t i) -> std::optional<RipPlan> {
+    if (!r.plans || r.at[i] == kNone) return std::nullopt;
+    r.plans->advance(r.at[i] + 1);
+    return r.plans->take(r.at[i], /*help=*/true);
+  };
   // Net i at the Full level in a round: the attempt made ahead when still valid; else its last
   // failed attempt when no other net's wire has changed in its windows since (an attempt depends
   // on nothing else: it would fail the same way, bit for bit); else a new one. A failed one is
@@ -1561,83 +1513,13 @@ void NetRouter::run(const NetRouteFn& route) {
       for (const std::size_t i : todo) stats_.speculated += ahead[i].has_value() + ahead_alone[i].has_value();
     }
     // With threads, the rip-ups are worked out ahead too (plan_rip_up), for the nets whose attempt
-    // ahead failed, in order: the workers take the next ones after this thread's turn, and this
-    // thread makes each in its turn when it is still valid (else works it out again), or works
-    // out itself the one in turn that no worker has taken. (Nets far apart seldom meet each
-    // other's rip-ups.)
-    enum class SpecState { Waiting, Running, Done };
-    struct Spec {
-      SpecState state = SpecState::Waiting;
-      std::optional<RipPlan> plan;
-    };
-    std::vector<std::size_t> cand;  // the nets to work out ahead, in order
-    std::vector<std::size_t> cand_at(n, std::numeric_limits<std::size_t>::max());
-    std::vector<Spec> spec;
-    std::mutex spec_m;
-    std::condition_variable spec_cv;
-    std::size_t turn = 0;  // workers take cand[k] with k >= turn only
-    bool quit = false;
-    std::vector<std::thread> workers;
-    // With spec_m held (by `lock`): works out the first rip-up not taken yet among the lookahead
-    // from cand[from] on, if any (true).
-    const std::size_t lookahead = 2 * static_cast<std::size_t>(threads);
-    auto plan_next = [&](std::unique_lock<std::mutex>& lock, std::size_t from) {
-      std::size_t k = cand.size();
-      for (std::size_t j = from; j < std::min(cand.size(), turn + lookahead) && k == cand.size(); ++j)
-        if (spec[j].state == SpecState::Waiting) k = j;
-      if (k == cand.size()) return false;
-      spec[k].state = SpecState::Running;
-      lock.unlock();
-      std::optional<RipPlan> plan;
-      try {
-        plan = plan_rip_up(route, cand[k], options_.max_rips, false, &ahead_alone[cand[k]]);
-      } catch (...) {  // worked out again in turn (a stop too: it stops there)
-      }
-      lock.lock();
-      spec[k].plan = std::move(plan);
-      spec[k].state = SpecState::Done;
-      spec_cv.notify_all();
-      return true;
-    };
-    struct Join {  // the workers stop and are joined however the round ends
-      std::mutex& m;
-      std::condition_variable& cv;
-      bool& quit;
-      std::vector<std::thread>& w;
-      ~Join() {
-        {
-          std::lock_guard lock(m);
-          quit = true;
-        }
-        cv.notify_all();
-        for (std::thread& t : w) t.join();
-      }
-    } join{spec_m, spec_cv, quit, workers};
+    // ahead failed.
+    RipsAhead rips;
     if (threads > 1) {
       for (const std::size_t i : order_)
-        if (!out_[i].routed && (!ahead[i] || !ahead[i]->a.routed)) cand_at[i] = cand.size(), cand.push_back(i);
-      spec.resize(cand.size());
-      auto work = [&] {
-        std::unique_lock lock(spec_m);
-        while (!quit && turn < cand.size())
-          if (!plan_next(lock, turn)) spec_cv.wait(lock);
-      };
-      for (int t = 1; t < threads && !cand.empty(); ++t) workers.emplace_back(work);
+        if (!out_[i].routed && (!ahead[i] || !ahead[i]->a.routed)) rips.cand.push_back(i);
+      rips_ahead(rips, options_.max_rips, false, &ahead_alone);
     }
-    // net i's rip-up worked out ahead, when a worker has (while one works it out, this thread
-    // works out others after it); none is taken for it once this returns
-    auto planned = [&](std::size_t i) -> std::optional<RipPlan> {
-      if (cand_at[i] == std::numeric_limits<std::size_t>::max()) return std::nullopt;
-      const std::size_t k = cand_at[i];
-      std::unique_lock lock(spec_m);
-      turn = std::max(turn, k + 1);
-      spec_cv.notify_all();
-      // while a worker works it out, this thread works out one after it
-      while (spec[k].state == SpecState::Running)
-        if (!plan_next(lock, k + 1)) spec_cv.wait(lock);
-      spec[k].state = SpecState::Done;
-      return std::move(spec[k].plan);
-    };
     for (const std::size_t i : order_) {
       if (out_[i].routed) continue;
       routed_now = 0;
@@ -1645,23 +1527,16 @@ void NetRouter::run(const NetRouteFn& route) {
       tell();
       NetAttempt again = full(i, ahead[i]);  // others may have moved
       if (again.routed) {
-        (void)planned(i);
+        (void)planned(rips, i);
         place(i, std::move(again));
         continue;
       }
-      std::optional<RipPlan> plan = planned(i);
+      std::optional<RipPlan> plan = planned(rips, i);
       if (!alone_[i] && ahead_alone[i]) {  // fixed for the run: kept whenever it was made
         add_counts(stats_, ahead_alone[i]->counts);
         alone_[i] = std::move(ahead_alone[i]->a);
       }
-      if (plan) {
-        ++stats_.rip_ups_ahead;
-        if (!plan_valid(*plan)) {
-          ++stats_.rip_ups_redone;
-          plan.reset();
-        }
-      }
-      (void)commit(plan ? std::move(*plan) : plan_rip_up(route, i, options_.max_rips, false));
+      (void)rip_up(i, options_.max_rips, false, std::move(plan));
     }
     const auto s = score();
     if (s > best_score) {
@@ -1695,15 +1570,23 @@ void NetRouter::run(const NetRouteFn& route) {
     prog.tried = 0;
     const std::size_t had = best_score.first;
     final_undone_.assign(n, 0);
+    // with threads, the rip-ups worked out ahead (as in the rounds) for every net unrouted now
+    RipsAhead rips;
+    if (threads > 1) {
+      for (const std::size_t i : order_)
+        if (!out_[i].routed) rips.cand.push_back(i);
+      rips_ahead(rips, std::numeric_limits<int>::max(), true, nullptr);
+    }
     for (const std::size_t i : order_) {
       if (out_[i].routed) continue;
       ++stats_.final_round;
       tell();
       std::optional<Tried> none;
       NetAttempt again = full(i, none);
+      std::optional<RipPlan> plan = planned(rips, i);
       if (again.routed)
         place(i, std::move(again));
-      else if (rip_up(i, std::numeric_limits<int>::max(), true))
+      else if (rip_up(i, std::numeric_limits<int>::max(), true, std::move(plan)))
         final_undone_[i] = 1;
     }
     best_score = score();

@@ -127,7 +127,8 @@
 // the one-thread outcome, bit for bit. Where: the first pass and the last pass (route_in_order:
 // workers try, this thread places in order), the Full attempt of every unrouted net at the start
 // of a rip-up round, the Pins attempts (fixed for the run, made once), the rip-ups of the
-// rounds, and the explanations (which only read). A rip-up is worked out whole ahead of its turn
+// rounds and of the final round, and the explanations (which only read); the pipelines are
+// router::Lookahead (router/lookahead.h). A rip-up is worked out whole ahead of its turn
 // (RipPlan: the blockers found, the way round the nets at the rip limit, the net and its
 // blockers routed again in an overlay of their new wires, the undo decided) without changing
 // the space, and made in its turn when nothing logged since meets what it read; so the rip-ups

@@ -871,7 +871,9 @@ LocalLayout local_layout(unsigned seed, int lo, int hi) {
 // --threads: the outcomes, and the counts that do not depend on timing, are the same for every
 // thread count, bit for bit. Small crowded layouts (windows the whole domain: every speculative
 // attempt meets every change, rip-ups) and larger ones of local nets (windows apart: most
-// speculative attempts and rip-ups worked out ahead are kept), with 2 to 5 threads against one.
+// speculative attempts and rip-ups worked out ahead are kept), with 2 to 5 threads against one;
+// and crowded ones without rip-up rounds, where the final round makes every rip-up (without the
+// check that a final-round rip-up worked out ahead is still valid, seed 730081 differs).
 TEST(NetRouter, ThreadsGiveTheSameOutcomes) {
   int failed = 0;
   std::int64_t speculated = 0, redone = 0, rips = 0, unrouted = 0, ahead = 0, ahead_redone = 0;
@@ -916,14 +918,31 @@ TEST(NetRouter, ThreadsGiveTheSameOutcomes) {
     par.run(router::NetRouter::l1_router(seed % 2 == 0));
     same("local seed " + std::to_string(720000 + seed) + ", " + std::to_string(opt.threads) + " threads", one, par);
   }
+  // no rip-up rounds: the final round makes every rip-up (worked out ahead too, and kept more
+  // often than in the rounds, so later ones are worked out again)
+  std::int64_t final_routed = 0;
+  for (int seed = 1; seed <= sanitized_share(200, 10); ++seed) {
+    const RandomLayout L = random_layout(730000 + seed);
+    router::NetRouterOptions opt;
+    opt.max_rounds = 0;
+    router::NetRouter one(L.norm.domain, L.norm.obstacles, L.nets, L.rules, opt);
+    one.run(router::NetRouter::l1_router(seed % 3 == 0));
+    opt.threads = 2 + seed % 3;
+    router::NetRouter par(L.norm.domain, L.norm.obstacles, L.nets, L.rules, opt);
+    par.run(router::NetRouter::l1_router(seed % 3 == 0));
+    same("final-round seed " + std::to_string(730000 + seed) + ", " + std::to_string(opt.threads) + " threads", one, par);
+    final_routed += static_cast<std::int64_t>(one.stats().final_round_routed);
+  }
   std::printf("%lld speculative attempts, %lld of them redone; %lld rip-ups worked out ahead, %lld of them again; "
               "%lld rip-ups, %lld nets unrouted\n",
               static_cast<long long>(speculated), static_cast<long long>(redone), static_cast<long long>(ahead),
               static_cast<long long>(ahead_redone), static_cast<long long>(rips), static_cast<long long>(unrouted));
+  std::printf("%lld nets routed by the final round without rip-up rounds\n", static_cast<long long>(final_routed));
   EXPECT_EQ(failed, 0);
   // the rip-up and explaining phases ran (counts that do not depend on timing)
   EXPECT_GT(rips, sanitized_share(50, 10));
   EXPECT_GT(unrouted, sanitized_share(50, 10));
+  EXPECT_GT(final_routed, sanitized_share(10, 10));
   // Both ways were taken: attempts and rip-ups made ahead were kept in their turn, and some were
   // worked out again there. How many depends on timing (on an idle machine 3,311 attempts, 1,178
   // redone; 465 rip-ups ahead, 19 again; with a build on the other core 100 and 10; under the
