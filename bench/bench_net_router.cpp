@@ -25,12 +25,15 @@
 // router::BendRouter (the tree of optimal paths from the first pin); length and bends both
 // compared. (--tighten applies to l1 only.)
 //
+// --exact-gaps: NetRouterOptions::exact_gaps (what `taut route` does since 2026-12-04: gaps of
+// exactly the clearance open, the plane scaled by NetRouter::scale(), printed per row).
+//
 // --planted: instead of nets on spread free points, nets drawn with their wires first
 // (bench/planted_nets.h: legs kept only where they keep the clearance, the whole routing then
 // passed by the independent checker), so a legal routing of every net is known to exist: the
 // completion target's instance. Their planted length is printed beside the routed length.
 //
-//   bench_net_router [--sizes N,..] [--nets M,..] [--threads T,..] [--rounds R] [--max-rips K] [--search-windows W] [--no-final-round] [--no-superset] [--tighten] [--planted] [--metric l1|combined|link] [--bend-cost C]
+//   bench_net_router [--sizes N,..] [--nets M,..] [--threads T,..] [--rounds R] [--max-rips K] [--search-windows W] [--no-final-round] [--no-superset] [--tighten] [--planted] [--exact-gaps] [--metric l1|combined|link] [--bend-cost C]
 //   (--sizes: blockage vertices)
 #include <cmath>
 #include <cstdio>
@@ -65,7 +68,7 @@ int main(int argc, char** argv) {
       search_windows = taut::router::NetRouterOptions{}.search_windows;
   bool final_round = true;
   bool superset = true;
-  bool tighten = false, planted = false;
+  bool tighten = false, planted = false, exact_gaps = false;
   std::string metric = "l1";
   std::int64_t bend_cost = 1000;
   for (int i = 1; i < argc; ++i) {
@@ -79,6 +82,7 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--no-superset")) superset = false;
     else if (!std::strcmp(argv[i], "--tighten")) tighten = true;
     else if (!std::strcmp(argv[i], "--planted")) planted = true;
+    else if (!std::strcmp(argv[i], "--exact-gaps")) exact_gaps = true;
     else if (!std::strcmp(argv[i], "--metric") && i + 1 < argc) metric = argv[++i];
     else if (!std::strcmp(argv[i], "--bend-cost") && i + 1 < argc) bend_cost = std::atoll(argv[++i]);
     else {
@@ -106,6 +110,7 @@ int main(int argc, char** argv) {
     o.cost = !bends ? taut::router::NetRouterOptions::Cost::Length
              : metric == "link" ? taut::router::NetRouterOptions::Cost::Link : taut::router::NetRouterOptions::Cost::Combined;
     o.bend_cost = bend_cost;
+    o.exact_gaps = exact_gaps;
     return o;
   };
   const taut::router::NetRules rules{10, 10, bends ? taut::router::kDefaultCoverPieces : 0};
@@ -224,6 +229,7 @@ int main(int argc, char** argv) {
                   static_cast<long long>(lay.points.size()), nets.size(), routed, nr.stats().first_pass,
                   static_cast<long long>(nr.stats().rips), alone_s, together_s, together_s / alone_s, growth,
                   len_alone_same > 0 ? static_cast<double>(len) / static_cast<double>(len_alone_same) : 0.0, alone_ok);
+      if (exact_gaps) std::printf("%18s exact gaps: the plane scaled by %lld\n", "", static_cast<long long>(nr.scale()));
       if (planted) {
         std::int64_t all_len = 0;
         for (const auto& o : nr.outcomes())

@@ -315,9 +315,21 @@ NetSpace::NetSpace(const geom::Box& domain, std::span<const geom::Polygon> obsta
                    NetRules rules)
     : domain_(domain), nets_(std::move(nets)), index_(std::make_unique<Index>()) {
   if (rules.wire_width < 0 || rules.spacing < 0) throw std::invalid_argument("NetSpace: negative width or spacing");
+  if (rules.scale < 1) throw std::invalid_argument("NetSpace: a scale below 1");
   cut_shapes_ = rules.cover_pieces == 0;
-  a_ = (rules.wire_width + 1) / 2 + rules.spacing;
-  b_ = std::max<std::int64_t>(rules.wire_width + rules.spacing, 1);
+  rule_a_ = (rules.wire_width + 1) / 2 + rules.spacing;
+  rule_b_ = std::max<std::int64_t>(rules.wire_width + rules.spacing, 1);
+  if (rule_a_ > geom::kMaxCoord || rule_b_ > geom::kMaxCoord) throw std::domain_error("the clearance of <rules> passes the coordinate limit");
+  // scaled by K: K x - 1, so that only exact touches open (0 stays 0: nothing is grown)
+  auto grow = [&](std::int64_t x) { return rules.scale > 1 && x > 0 ? rules.scale * x - 1 : x; };
+  a_ = grow(rule_a_);
+  // a point pin's access square: K a + 1 when scaled, one more than the whole square
+  // router/check.h exempts, scaled: a wire in the band snaps onto the square's side, which is
+  // exempt, and where two access squares of a net meet at a blockage's corner (or a square's
+  // side meets a blockage) the grown remainder no longer touches the blockage and pinches the
+  // way shut (K a - 1 or K a would)
+  access_ = rules.scale > 1 && rule_a_ > 0 ? rules.scale * rule_a_ + 1 : a_;
+  b_ = grow(rule_b_);
   if (a_ > geom::kMaxCoord || b_ > geom::kMaxCoord) throw std::domain_error("the clearance of <rules> passes the coordinate limit");
   Index& ix = *index_;
   for (std::size_t k = 0; k < obstacles.size(); ++k) {
@@ -339,7 +351,7 @@ NetSpace::NetSpace(const geom::Box& domain, std::span<const geom::Polygon> obsta
       // a shape pin: the shape itself, and its edges grown by max(a, 1); with cover_pieces, its
       // sloped edges' boxes instead of those edges (each box holds its piece of the edge, so the
       // box grown holds the piece grown)
-      const std::int64_t g = std::max<std::int64_t>(a_, 1);
+      const std::int64_t g = grow(std::max<std::int64_t>(rule_a_, 1));
       ix.pieces.push_back({pin, Index::ShapePin, n});
       std::vector<const Ring*> rings{&pin.outer};
       for (const Ring& h : pin.holes) rings.push_back(&h);
@@ -474,7 +486,7 @@ geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel lev
   if (!plain) {
     for (const Polygon& pin : nets_[net].pins) {
       if (is_point_pin(pin)) {
-        access.push_back(geom::grown_box(Box{pin.outer[0], pin.outer[0]}, a_));
+        access.push_back(geom::grown_box(Box{pin.outer[0], pin.outer[0]}, access_));
         access_ring.emplace_back();
       } else if (is_rectangle(pin)) {
         access.push_back(box_of(pin.outer));
@@ -613,7 +625,7 @@ geom::NormalizedObstacles NetSpace::superset_obstacles() const {
   std::vector<Index::Entry> acc;  // every net's pin access: the boxes its obstacles() may cut
   for (const NetPins& n : nets_)
     for (const Polygon& pin : n.pins)
-      acc.push_back({is_point_pin(pin) ? geom::grown_box(Box{pin.outer[0], pin.outer[0]}, a_) : box_of(pin.outer), acc.size()});
+      acc.push_back({is_point_pin(pin) ? geom::grown_box(Box{pin.outer[0], pin.outer[0]}, access_) : box_of(pin.outer), acc.size()});
   const bgi::rtree<Index::Entry, bgi::rstar<16>> acc_tree(acc.begin(), acc.end());
   auto near_pin = [&](const Box& b) { return acc_tree.qbegin(bgi::intersects(b)) != acc_tree.qend(); };
   std::vector<Polygon> rest;
@@ -675,9 +687,86 @@ std::vector<std::size_t> NetSpace::pin_blockers(std::size_t net, std::span<const
   return {out.begin(), out.end()};
 }
 
+namespace {
+
+// The scale of NetRouterOptions::exact_gaps: the largest power of two K <= 2^13 with K x (the
+// domain's reach + a + b) <= 2^29, or 1 when that leaves none of at least 8.
+std::int64_t gap_scale(const Box& domain, const NetRules& rules) {
+  const std::int64_t a = (rules.wire_width + 1) / 2 + rules.spacing, b = std::max<std::int64_t>(rules.wire_width + rules.spacing, 1);
+  const std::int64_t reach = std::max({std::abs(std::int64_t{domain.lo.x}), std::abs(std::int64_t{domain.lo.y}),
+                                       std::abs(std::int64_t{domain.hi.x}), std::abs(std::int64_t{domain.hi.y})}) + a + b;
+  std::int64_t k = 1;
+  while (k < (std::int64_t{1} << 13) && 2 * k * reach <= (std::int64_t{1} << 29)) k *= 2;
+  return k >= 8 ? k : 1;
+}
+
+// Whether every edge of the blockages and of the shape pins is horizontal, vertical or at 45
+// degrees: exact_gaps's snapping is sound only then (a wire vertex beside a sloped edge can lie
+// anywhere between multiples of the scale, and snapping would move it into the clearance).
+bool octilinear_edges(std::span<const Polygon> obstacles, std::span<const NetPins> nets) {
+  auto ring_ok = [](const Ring& r) {
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      const Point u = r[i], v = r[(i + 1) % r.size()];
+      const std::int64_t dx = std::int64_t{v.x} - u.x, dy = std::int64_t{v.y} - u.y;
+      if (dx != 0 && dy != 0 && dx != dy && dx != -dy) return false;
+    }
+    return true;
+  };
+  auto poly_ok = [&](const Polygon& p) {
+    if (!ring_ok(p.outer)) return false;
+    for (const Ring& h : p.holes)
+      if (!ring_ok(h)) return false;
+    return true;
+  };
+  for (const Polygon& p : obstacles)
+    if (!poly_ok(p)) return false;
+  for (const NetPins& n : nets)
+    for (const Polygon& p : n.pins)
+      if (!poly_ok(p)) return false;
+  return true;
+}
+
+Point scaled(Point p, std::int64_t k) {
+  return Point{static_cast<geom::Coord>(p.x * k), static_cast<geom::Coord>(p.y * k)};
+}
+Polygon scaled(const Polygon& poly, std::int64_t k) {
+  Polygon out = poly;
+  for (Point& p : out.outer) p = scaled(p, k);
+  for (Ring& h : out.holes)
+    for (Point& p : h) p = scaled(p, k);
+  return out;
+}
+std::vector<Polygon> scaled(std::span<const Polygon> polys, std::int64_t k) {
+  std::vector<Polygon> out;
+  out.reserve(polys.size());
+  for (const Polygon& p : polys) out.push_back(scaled(p, k));
+  return out;
+}
+std::vector<NetPins> scaled(std::vector<NetPins> nets, std::int64_t k) {
+  for (NetPins& n : nets)
+    for (Polygon& p : n.pins) p = scaled(p, k);
+  return nets;
+}
+NetRules with_scale(NetRules r, std::int64_t k) {
+  r.scale = k;
+  return r;
+}
+
+// The nearest multiple of k (k even, so no value lies halfway between two that a wire reaches).
+geom::Coord snapped(geom::Coord v, std::int64_t k) {
+  const std::int64_t x = v, h = k / 2;
+  const std::int64_t q = x >= 0 ? (x + h) / k : -((-x + h) / k);
+  return static_cast<geom::Coord>(q * k);
+}
+
+}  // namespace
+
 NetRouter::NetRouter(const geom::Box& domain, std::span<const geom::Polygon> obstacles, std::vector<NetPins> nets,
                      NetRules rules, NetRouterOptions options)
-    : space_(domain, obstacles, std::move(nets), rules), options_(options) {
+    : scale_(options.exact_gaps && octilinear_edges(obstacles, nets) ? gap_scale(domain, rules) : 1),
+      space_(Box{scaled(domain.lo, scale_), scaled(domain.hi, scale_)}, scaled(obstacles, scale_),
+             scaled(std::move(nets), scale_), with_scale(rules, scale_)),
+      options_(options) {
   if (options_.cost == NetRouterOptions::Cost::Length) return;
   // the bend-aware router takes rectilinear obstacles only (see the header)
   if (rules.cover_pieces <= 0) throw std::invalid_argument("NetRouter: a bend-aware cost needs NetRules::cover_pieces > 0");
@@ -895,6 +984,23 @@ Box NetRouter::first_window(std::size_t net) const {
 
 NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, NetSpaceLevel level, std::span<const char> only,
                                      const WireOverlay* overlay) const {
+  Tried t = try_net_unsnapped(route, net, level, only, overlay);
+  if (scale_ > 1 && t.a.routed)
+    for (auto& w : t.a.wires) {
+      std::vector<Point> s;
+      s.reserve(w.size());
+      for (const Point p : w) {
+        const Point q{snapped(p.x, scale_), snapped(p.y, scale_)};
+        if (s.empty() || s.back() != q) s.push_back(q);
+      }
+      if (s.size() == 1 && w.size() > 1) s.push_back(s[0]);  // a wire between pins at one point stays two points
+      w = std::move(s);
+    }
+  return t;
+}
+
+NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size_t net, NetSpaceLevel level,
+                                               std::span<const char> only, const WireOverlay* overlay) const {
   using Clock = std::chrono::steady_clock;
   Tried t;
   NetRouterStats& st = t.counts;
@@ -1363,7 +1469,34 @@ bool NetRouter::commit(RipPlan p) {
   return false;
 }
 
+namespace {
+// NetRouter::bend_router's route function, by name: run() weighs its bends by the scale.
+struct BendRouteFn {
+  BendMetric metric;
+  std::int64_t bend_cost;
+  NetAttempt operator()(std::size_t, const NetPins& net, const geom::NormalizedObstacles& obs) const;
+};
+}  // namespace
+
 void NetRouter::run(const NetRouteFn& route) {
+  if (scale_ == 1) return run_scaled(route);
+  const std::int64_t c0 = options_.bend_cost;
+  options_.bend_cost = c0 * scale_;  // lengths are scale_ times
+  NetRouteFn r = route;
+  if (BendRouteFn* b = r.target<BendRouteFn>()) b->bend_cost *= scale_;
+  try {
+    run_scaled(r);
+  } catch (...) {
+    options_.bend_cost = c0;
+    throw;
+  }
+  options_.bend_cost = c0;
+  for (NetOutcome& o : out_)
+    for (auto& w : o.wires)
+      for (Point& p : w) p = Point{static_cast<geom::Coord>(p.x / scale_), static_cast<geom::Coord>(p.y / scale_)};
+}
+
+void NetRouter::run_scaled(const NetRouteFn& route) {
   const std::size_t n = space_.size();
   const int threads = std::max(options_.threads, 1);
   out_.assign(n, NetOutcome{});
@@ -1680,7 +1813,7 @@ NetRouter::Explained NetRouter::explain(const NetRouteFn& route, std::size_t net
     return e;
   }
   const NetAttempt clear = tried(NetSpaceLevel::Clearance);
-  const std::string a = std::to_string(space_.blockage_clearance()), b = std::to_string(space_.net_clearance());
+  const std::string a = std::to_string(space_.blockage_rule()), b = std::to_string(space_.net_rule());
   if (!clear.routed && clear.code == "ROUTE-0018") {  // the route function's own way misses the clearance
     e.code = clear.code;
     e.reason = clear.reason;
@@ -1701,7 +1834,7 @@ NetRouter::Explained NetRouter::explain(const NetRouteFn& route, std::size_t net
     e.code = "ROUTE-0010";
     e.reason = "the clearance of <rules> closes every way between its pins: wires keep " + a +
                " DBU (ceil(w/2) + s) from blockages, so a gap on the way is narrower than " +
-               std::to_string(2 * space_.blockage_clearance()) + " DBU or a pin is within " + a +
+               std::to_string(2 * space_.blockage_rule()) + " DBU or a pin is within " + a +
                " DBU of a blockage it does not sit on";
     return e;
   }
@@ -1822,11 +1955,11 @@ NetAttempt route_bends(const NetPins& net, const geom::NormalizedObstacles& obs,
 
 }  // namespace
 
-NetRouteFn NetRouter::bend_router(BendMetric metric, std::int64_t bend_cost) {
-  return [metric, bend_cost](std::size_t, const NetPins& net, const geom::NormalizedObstacles& obs) {
-    return route_bends(net, obs, metric, bend_cost);
-  };
+NetAttempt BendRouteFn::operator()(std::size_t, const NetPins& net, const geom::NormalizedObstacles& obs) const {
+  return route_bends(net, obs, metric, bend_cost);
 }
+
+NetRouteFn NetRouter::bend_router(BendMetric metric, std::int64_t bend_cost) { return BendRouteFn{metric, bend_cost}; }
 
 namespace {
 // The route functions of l1_router and oct_router, by name: their wavefronts take windows with

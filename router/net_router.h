@@ -20,11 +20,35 @@
 // A wire in that space keeps the clearance the checker (router/check.h) asks for, and a wire of
 // another net routed later keeps it from this one, because both grow by the same b.
 //
+// Gaps of exactly the clearance (NetRouterOptions::exact_gaps). Two grown obstacles that touch
+// merge (the wavefront takes touching obstacles as a pinch), so in that space a gap of exactly 2a
+// between blockages, or a track at exactly the pitch between two wires, takes no wire although
+// one is legal there. With exact_gaps the router works in the plane scaled by K (a power of two,
+// NetRouter::scale(), at least 8, with K x (the domain's reach + a + b) <= 2^29): the blockages,
+// the domain and the pins are multiplied by K and grown by K a - 1 and K b - 1 instead of a and b
+// (NetRules::scale), so regions whose interiors overlap still overlap and only exact touches open,
+// to corridors 2 wide; a point pin's access square is cut with half-side K a + 1, one more than
+// the scaled square the checker exempts (a wire in that band snaps onto the square's side; with
+// K a, where two of a net's access squares meet at a blockage's corner, the grown remainder
+// touched the blockage and pinched the way shut). Every wire the route function returns is snapped at once to the nearest
+// multiples of K (before any other net sees it), so every obstacle of the scaled space stays a
+// multiple of K grown by K x - 1, and a wire's vertices, which lie on lines through those
+// obstacles' vertices and the pins (and on 45-degree lines through them), sit a few units from a
+// multiple of K (far less than K/2): snapping keeps each segment's direction and every wire's connections, and moves
+// a wire hugging a grown region out to exactly the clearance. The outcomes are divided by K at
+// the end of run(). The space then holds K times every legal wire (it keeps K a > K a - 1 and
+// K b > K b - 1 from what it grows), so no wire is lost to the scale; a snapped wire is checked by
+// the caller (router::check_routes: taut route does, and routes again without exact_gaps when it
+// fails, which no test has seen). Lengths: the route function sees K times the lengths (a
+// Combined metric's bend cost is multiplied by K for bend_router; a route function of one's own
+// must do the same, NetRouter::scale()).
+//
 // Limitations (measured in net_router_test and bench_net_router):
-//   - exact minimum gaps are closed: two grown obstacles that touch merge (the wavefront takes
-//     touching obstacles as a pinch), so a gap of exactly 2a between blockages, or a track at
-//     exactly the pitch between two wires, does not take a wire although one would be legal
-//     there; gaps one unit wider do;
+//   - without exact_gaps, exact minimum gaps are closed (above); with it, a layout whose reach
+//     leaves no K >= 8 keeps them closed (NetRouter::scale() is then 1), and so does one with
+//     a blockage or shape pin edge that is not horizontal, vertical or at 45 degrees (a wire
+//     vertex beside such an edge may lie anywhere between multiples of K, and snapping it
+//     moved octilinear wires into the clearance in exact_gaps_test before this rule);
 //   - a net's own pads (shape pins that are rectangles, or, with NetRules::cover_pieces 0, any
 //     shape whose edges are horizontal, vertical or at 45 degrees: diamonds, octagons, and as
 //     convex pieces concave ones and ones with holes) are cut out of the grown blockage edges
@@ -170,6 +194,9 @@ struct NetRules {
   // clearance, and every piece a net is routed among then has horizontal and vertical edges only
   // (when the blockages have).
   int cover_pieces = 0;
+  // K > 1: the space is the plane scaled by K (its caller multiplies the domain, the blockages and
+  // the pins by K), and grows by K a - 1 and K b - 1 instead of a and b (NetRouterOptions::exact_gaps).
+  std::int64_t scale = 1;
 };
 
 // A net's pins: a point pin is an outer ring of one point, a shape pin a polygon.
@@ -217,8 +244,13 @@ class NetSpace {
   NetSpace(NetSpace&&) noexcept;
   NetSpace& operator=(NetSpace&&) noexcept;
 
-  std::int64_t blockage_clearance() const { return a_; }  // a = ceil(w/2) + s
-  std::int64_t net_clearance() const { return b_; }       // b = max(w + s, 1)
+  // What the space grows by: a = ceil(w/2) + s and b = max(w + s, 1), or with NetRules::scale K
+  // > 1, K a - 1 (0 when a is) and K b - 1.
+  std::int64_t blockage_clearance() const { return a_; }
+  std::int64_t net_clearance() const { return b_; }
+  // a and b themselves, in the layout's units (for messages).
+  std::int64_t blockage_rule() const { return rule_a_; }
+  std::int64_t net_rule() const { return rule_b_; }
   // Whether a net's shape pins with 45-degree edges are cut out of the grown blockages like its
   // rectilinear ones (pads): not with NetRules::cover_pieces (the bend-aware metrics take
   // rectilinear obstacles only; shape pins with horizontal and vertical edges only are cut either
@@ -276,7 +308,8 @@ class NetSpace {
  private:
   geom::Box domain_;
   std::vector<NetPins> nets_;
-  std::int64_t a_ = 0, b_ = 1;
+  std::int64_t a_ = 0, b_ = 1, rule_a_ = 0, rule_b_ = 1;
+  std::int64_t access_ = 0;  // a point pin's access square's half-side: a, or K a when scaled
   bool cut_shapes_ = true;
   std::unique_ptr<Index> index_;
 };
@@ -394,6 +427,12 @@ struct NetRouterOptions {
   // the obstacles through L1Router, OctRouter or their wavefronts alone. Empty: every net when
   // the route function is l1_router's or oct_router's (NetRouter::takes_frames), none otherwise.
   std::function<bool(std::size_t net)> framed;
+  // Gaps of exactly the clearance take wires (see the header): the router works in the plane
+  // scaled by NetRouter::scale(). The route function is then given scaled pins and obstacles
+  // and must read the pins it is given (not its own copy), and weigh bends by
+  // bend_cost x scale() under Combined; outcomes() are in the layout's units. false: gaps of
+  // exactly 2a, and tracks at exactly the pitch, are closed.
+  bool exact_gaps = false;
 };
 
 struct NetRouterStats {
@@ -468,7 +507,9 @@ class NetRouter {
   const std::vector<NetOutcome>& outcomes() const { return out_; }
   const std::vector<std::size_t>& order() const { return order_; }
   const NetRouterStats& stats() const { return stats_; }
-  const NetSpace& space() const { return space_; }
+  const NetSpace& space() const { return space_; }  // scaled by scale()
+  // The factor the router's plane is scaled by (NetRouterOptions::exact_gaps), else 1.
+  std::int64_t scale() const { return scale_; }
 
  private:
   // One net tried at one level, in growing windows: the attempt, the last (largest) window
@@ -480,8 +521,12 @@ class NetRouter {
     std::size_t since = 0;  // the length of changed_ when it first read the space
   };
   // `overlay`: some nets' wires as they would be (NetSpace::obstacles).
+  // With scale_ > 1 the wires are snapped to multiples of it (see the header).
   Tried try_net(const NetRouteFn& route, std::size_t net, NetSpaceLevel level, std::span<const char> only = {},
                 const WireOverlay* overlay = nullptr) const;
+  Tried try_net_unsnapped(const NetRouteFn& route, std::size_t net, NetSpaceLevel level, std::span<const char> only,
+                          const WireOverlay* overlay) const;
+  void run_scaled(const NetRouteFn& route);
   geom::Box first_window(std::size_t net) const;  // the first window try_net tries
   NetAttempt attempt(const NetRouteFn& route, std::size_t net, NetSpaceLevel level);  // counted
   // The nets whose grown wires these wires of net `net` enter, and those that enter its pads.
@@ -538,6 +583,7 @@ class NetRouter {
   // net's free space): the free components of NetSpace::superset_obstacles, built once.
   std::shared_ptr<const FreeComponents> superset_;
 
+  std::int64_t scale_ = 1;  // before space_, which is built scaled
   NetSpace space_;
   NetRouterOptions options_;
   std::vector<NetOutcome> out_;

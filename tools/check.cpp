@@ -14,6 +14,7 @@
 #include "router/check.h"
 #include "tools/cli.h"
 #include "tools/commands.h"
+#include "tools/route_common.h"
 
 namespace taut::cli {
 namespace {
@@ -45,17 +46,7 @@ RouteProblems check_independently(const io::Layout& layout, const std::string& f
   std::map<std::string, const io::Route*> by_net;
   for (const io::Route& r : layout.routes->routes) by_net.emplace(r.net, &r);
   for (const io::Net& n : layout.nets) {
-    router::CheckNet c;
-    c.name = n.name;
-    c.line = n.line;
-    for (const io::Pin& p : n.pins) {
-      router::CheckPin cp;
-      cp.name = p.name;
-      cp.line = p.line;
-      if (p.point) cp.point = *p.point;
-      else if (p.shape) cp.shape = io::shape_polygon(*p.shape);
-      c.pins.push_back(std::move(cp));
-    }
+    router::CheckNet c = check_net(n);
     const auto it = by_net.find(n.name);
     if (it != by_net.end() && it->second->status == "routed") {
       c.routed = true;

@@ -231,6 +231,52 @@ NetResult outcome_result(const io::Net& net, const router::NetOutcome& o) {
   return r;
 }
 
+// The net in the net router's plane scaled by k (router::NetRouter::scale(): exact gaps).
+io::Net scaled_net(const io::Net& net, std::int64_t k) {
+  if (k == 1) return net;
+  io::Net s = net;
+  auto sc = [k](geom::Point& p) { p = geom::Point{static_cast<geom::Coord>(p.x * k), static_cast<geom::Coord>(p.y * k)}; };
+  for (io::Pin& pin : s.pins) {
+    if (pin.point) sc(*pin.point);
+    if (pin.shape) {
+      sc(pin.shape->rect.lo);
+      sc(pin.shape->rect.hi);
+      for (geom::Point& q : pin.shape->polygon.outer) sc(q);
+      for (geom::Ring& h : pin.shape->polygon.holes)
+        for (geom::Point& q : h) sc(q);
+    }
+  }
+  return s;
+}
+
+// The reasons the net router gives from the route function among the plain blockages (the net
+// fails even alone there), whose texts may name points: with exact gaps those were scaled, so
+// such a net is tried again in the layout's own units for its message.
+bool plain_reason(const std::string& code) {
+  return code != "ROUTE-0010" && code != "ROUTE-0011" && code != "ROUTE-0012" && code != "ROUTE-0018";
+}
+
+// The problems router::check_routes finds in the routed nets (with the clearance of <rules>).
+std::vector<router::CheckProblem> route_problems(const io::Layout& layout, const geom::Box& domain,
+                                                 const std::vector<geom::Polygon>& obstacles,
+                                                 const std::vector<NetResult>& results) {
+  geom::NormalizedObstacles space;
+  space.domain = domain;
+  space.obstacles = obstacles;
+  std::vector<router::CheckNet> nets;
+  for (std::size_t i = 0; i < layout.nets.size(); ++i) {
+    router::CheckNet c = check_net(layout.nets[i]);
+    if (results[i].route.status == "routed") {
+      c.routed = true;
+      for (const io::Wire& w : results[i].route.wires) c.wires.push_back({w.points, 0});
+    }
+    nets.push_back(std::move(c));
+  }
+  router::CheckRules rules;
+  if (layout.rules) rules = {layout.rules->wire_width, layout.rules->spacing};
+  return router::check_routes(space, nets, rules).problems;
+}
+
 // --metric combined / link (router::BendRouter): nets of point and shape pins. Two pins: the
 // best wire; more: the tree of best paths from the first pin (router::BendTree).
 NetResult route_net_bends(const io::Layout& layout, const io::Net& net, const BendObstacles& obs,
@@ -422,6 +468,10 @@ void add_route(CLI::App& app, int& status) {
     std::optional<router::NetRouterStats> net_stats;
     std::optional<router::NetsTightenStats> tighten_stats;
     int net_threads = 1;
+    // the net router's scale for exact gaps (router::NetRouter::scale; 1: closed), and the
+    // problems router::check_routes found with it, when it then routed again without
+    std::int64_t gap_scale = 1;
+    std::size_t gap_problems = 0;
     auto t1 = Clock::now();
     if (bends) {
       const BendObstacles obs = bend_obstacles(*layout, {}, args->routing.metric, args->load.quiet,
@@ -458,27 +508,44 @@ void add_route(CLI::App& app, int& status) {
         }
         t1 = Clock::now();
         try {
-          router::NetRouterOptions nro;
-          nro.cost = link ? router::NetRouterOptions::Cost::Link : router::NetRouterOptions::Cost::Combined;
-          nro.bend_cost = c;
-          nro.stop = stop;
-          nro.progress = progress;
-          nro.threads = static_cast<int>(args->threads ? args->threads : std::max(1u, std::thread::hardware_concurrency()));
-          net_threads = nro.threads;
-          router::NetRouter nr(domain, norm.obstacles, net_pins(*layout), rules, nro);
-          nr.run([&](std::size_t i, const router::NetPins&, const geom::NormalizedObstacles& w) {
-            const router::BendRouter br(w.domain, w.obstacles);
-            NetResult r = route_net_bends(*layout, layout->nets[i], obs, br, metric, c);
-            router::NetAttempt a;
-            a.routed = r.route.status == "routed";
-            for (const io::Wire& wire : r.route.wires) a.wires.push_back(wire.points);
-            a.code = r.code;
-            a.reason = r.route.reason.value_or("");
-            a.sink_costs = std::move(r.sink_costs);
-            return a;
-          });
-          net_stats = nr.stats();
-          for (std::size_t i = 0; i < layout->nets.size(); ++i) results[i] = outcome_result(layout->nets[i], nr.outcomes()[i]);
+          // exact gaps (NetRouter::scale), checked; routed again without them if the check fails
+          for (const bool exact : {true, false}) {
+            router::NetRouterOptions nro;
+            nro.cost = link ? router::NetRouterOptions::Cost::Link : router::NetRouterOptions::Cost::Combined;
+            nro.bend_cost = c;
+            nro.stop = stop;
+            nro.progress = progress;
+            nro.threads = static_cast<int>(args->threads ? args->threads : std::max(1u, std::thread::hardware_concurrency()));
+            nro.exact_gaps = exact;
+            net_threads = nro.threads;
+            router::NetRouter nr(domain, norm.obstacles, net_pins(*layout), rules, nro);
+            const std::int64_t k = nr.scale();
+            nr.run([&](std::size_t i, const router::NetPins&, const geom::NormalizedObstacles& w) {
+              const router::BendRouter br(w.domain, w.obstacles);
+              NetResult r = route_net_bends(*layout, scaled_net(layout->nets[i], k), obs, br, metric, c * k);
+              router::NetAttempt a;
+              a.routed = r.route.status == "routed";
+              for (const io::Wire& wire : r.route.wires) a.wires.push_back(wire.points);
+              a.code = r.code;
+              a.reason = r.route.reason.value_or("");
+              a.sink_costs = std::move(r.sink_costs);
+              return a;
+            });
+            net_stats = nr.stats();
+            std::optional<router::BendRouter> plain;
+            for (std::size_t i = 0; i < layout->nets.size(); ++i) {
+              results[i] = outcome_result(layout->nets[i], nr.outcomes()[i]);
+              if (k > 1 && results[i].route.status != "routed" && plain_reason(results[i].code)) {
+                if (!plain) plain.emplace(norm.domain, norm.obstacles);
+                NetResult real = route_net_bends(*layout, layout->nets[i], obs, *plain, metric, c);
+                if (real.route.status != "routed") results[i] = std::move(real);
+              }
+            }
+            gap_scale = k;
+            if (k == 1) break;
+            gap_problems = route_problems(*layout, domain, norm.obstacles, results).size();
+            if (gap_problems == 0) break;
+          }
         } catch (const std::domain_error& e) {
           print_diagnostics({Diagnostic{Severity::Error, "ROUTE-0014", layout->file, layout->rules ? layout->rules->line : 0, 0,
                                         std::string("the clearance of <rules>: ") + e.what()}});
@@ -567,6 +634,9 @@ void add_route(CLI::App& app, int& status) {
           steiner_ok[i] = args->tree == "steiner" && !why;
         }
         try {
+          // exact gaps (NetRouter::scale; not with --tighten, whose tightening closes them),
+          // checked; routed again without them if the check fails
+          for (const bool exact : {!args->tighten, false}) {
           router::NetRouterOptions nro;
           nro.octilinear = octilinear;
           nro.stop = stop;
@@ -575,8 +645,10 @@ void add_route(CLI::App& app, int& status) {
           // tightening reads the obstacles itself)
           nro.framed = [&](std::size_t i) { return !follows_sketch(layout->nets[i]); };
           nro.threads = static_cast<int>(args->threads ? args->threads : std::max(1u, std::thread::hardware_concurrency()));
+          nro.exact_gaps = exact;
           net_threads = nro.threads;
-          router::NetRouter nr(space.domain, space.obstacles, std::move(pins), rules, nro);
+          router::NetRouter nr(space.domain, space.obstacles, pins, rules, nro);
+          const std::int64_t k = nr.scale();
           nr.run([&](std::size_t i, const router::NetPins&, const geom::NormalizedObstacles& obs) {
             const io::Net& net = layout->nets[i];
             if (follows_sketch(net)) {
@@ -589,12 +661,13 @@ void add_route(CLI::App& app, int& status) {
               return sketch_attempt(*layout, net, obs, orient_word, net_domain);
             }
             NetResult r;
+            const io::Net sn = scaled_net(net, k);
             if (octilinear) {
               router::OctRouter rt(obs.domain, obs.obstacles);
-              r = route_net(*layout, layout->nets[i], rt, steiner_ok[i]);
+              r = route_net(*layout, sn, rt, steiner_ok[i]);
             } else {
               router::L1Router rt(obs.domain, obs.obstacles);
-              r = route_net(*layout, layout->nets[i], rt, steiner_ok[i]);
+              r = route_net(*layout, sn, rt, steiner_ok[i]);
             }
             router::NetAttempt a;
             a.routed = r.route.status == "routed";
@@ -605,7 +678,20 @@ void add_route(CLI::App& app, int& status) {
             return a;
           });
           net_stats = nr.stats();
-          for (std::size_t i = 0; i < layout->nets.size(); ++i) together.push_back(outcome_result(layout->nets[i], nr.outcomes()[i]));
+          together.clear();
+          for (std::size_t i = 0; i < layout->nets.size(); ++i) {
+            together.push_back(outcome_result(layout->nets[i], nr.outcomes()[i]));
+            if (k > 1 && together[i].route.status != "routed" && plain_reason(together[i].code)) {
+              NetResult real = l1 ? route_net(*layout, layout->nets[i], *l1, steiner_ok[i])
+                                  : route_net(*layout, layout->nets[i], *oct, steiner_ok[i]);
+              if (real.route.status != "routed") together[i] = std::move(real);
+            }
+          }
+          gap_scale = k;
+          if (k == 1) break;
+          gap_problems = route_problems(*layout, space.domain, space.obstacles, together).size();
+          if (gap_problems == 0) break;
+          }
         } catch (const std::domain_error& e) {
           print_diagnostics({Diagnostic{Severity::Error, "ROUTE-0014", layout->file, layout->rules ? layout->rules->line : 0, 0,
                                         std::string("the clearance of <rules>: ") + e.what()}});
@@ -777,6 +863,13 @@ void add_route(CLI::App& app, int& status) {
       }
     }  // the l1 metric
     end_bar();
+    if (gap_problems)  // said, not hidden: the run stands, with those gaps closed
+      print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0019", layout->file, 0, 0,
+                                    "routed with gaps of exactly the clearance open, the wires failed the check in " +
+                                        std::to_string(gap_problems) +
+                                        " place(s) (an internal limit of the scaled plane); routed again with those "
+                                        "gaps closed, as written"}},
+                        args->load.quiet);
     if (stop()) throw router::NetRouterStopped();
     const auto t2 = Clock::now();
     io::Layout out = *layout;
@@ -819,7 +912,8 @@ void add_route(CLI::App& app, int& status) {
                            {"rip_up_rounds", net_stats->phase_seconds.rounds},
                            {"final_round", net_stats->phase_seconds.final_round},
                            {"last_pass", net_stats->phase_seconds.last_pass},
-                           {"explain", net_stats->phase_seconds.explain}}}};
+                           {"explain", net_stats->phase_seconds.explain}}},
+                         {"exact_gaps", {{"scale", gap_scale}, {"check_problems", gap_problems}}}};
     if (tighten_stats)
       j["tighten"] = together_stats_json(*tighten_stats);
     if (!args->stats.empty()) stats = j.dump(2) + "\n";

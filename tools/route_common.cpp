@@ -142,6 +142,21 @@ std::string WireTightener::failure_text(const io::Layout& layout, const std::str
   return text;
 }
 
+router::CheckNet check_net(const io::Net& net) {
+  router::CheckNet c;
+  c.name = net.name;
+  c.line = net.line;
+  for (const io::Pin& p : net.pins) {
+    router::CheckPin cp;
+    cp.name = p.name;
+    cp.line = p.line;
+    if (p.point) cp.point = *p.point;
+    else if (p.shape) cp.shape = io::shape_polygon(*p.shape);
+    c.pins.push_back(std::move(cp));
+  }
+  return c;
+}
+
 // Every net's pins as the net router takes them.
 std::vector<router::NetPins> net_pins(const io::Layout& layout) {
   std::vector<router::NetPins> pins;

@@ -15,6 +15,7 @@
 #include "io/layout.h"
 #include "geom/triangulation.h"
 #include "router/bend_router.h"
+#include "router/check.h"
 #include "router/l1_router.h"
 #include "router/tighten.h"
 #include "router/tighten_nets.h"
@@ -84,6 +85,9 @@ router::TightenOrientations tighten_orientations(const std::string& orientations
 
 // Every net's pins as the net router takes them.
 std::vector<router::NetPins> net_pins(const io::Layout& layout);
+
+// A net as the independent checker takes it (router/check.h): its name, line and pins, no wires.
+router::CheckNet check_net(const io::Net& net);
 
 // The reason written for a net with no lattice staircase in its class (TIGHTEN-0004).
 std::string no_staircase_reason(const std::string& orientations);

@@ -827,6 +827,84 @@ TEST(Route, BendMetricsReachRectilinearPadsOnBlockages) {
   EXPECT_EQ(run_taut({"route", file, "-o", dir + "/l1.xml"}).err.find("net \"ell\" not routed"), std::string::npos);
 }
 
+// Gaps of exactly the clearance (since 2026-12-04): a gap of exactly 2a = 2(ceil(w/2) + s)
+// between two blockages, and two tracks at exactly the pitch w + s in a corridor, take wires
+// under every metric (the net router's scaled plane, NetRouterOptions::exact_gaps), the file
+// passes taut check, and the stats say the scale; a gap one unit narrower is ROUTE-0010; with
+// --tighten the gaps stay closed (tightening grows by the rule itself).
+TEST(Route, GapsOfExactlyTheClearanceTakeWires) {
+  const std::string gap_body = R"(  <boundary x0="0" y0="0" x1="1000" y1="1000"/>
+  <rules wire-width="200" spacing="200"/>
+  <blockage id="left"><rect x0="0" y0="400" x1="200" y1="600"/></blockage>
+  <blockage id="right"><rect x0="800" y0="400" x1="1000" y1="600"/></blockage>
+  <net name="x"><pin name="a" x="500" y="50"/><pin name="b" x="500" y="950"/></net>
+)";
+  const std::string gap = layout_file("route_exact_gap", gap_body);
+  const std::string pitch = layout_file("route_exact_pitch", R"(  <boundary x0="0" y0="0" x1="3000" y1="3000"/>
+  <rules wire-width="200" spacing="200"/>
+  <blockage id="below"><rect x0="0" y0="0" x1="3000" y1="1000"/></blockage>
+  <blockage id="above"><rect x0="0" y0="2000" x1="3000" y1="3000"/></blockage>
+  <net name="low"><pin name="a" x="100" y="1300"/><pin name="b" x="2900" y="1300"/></net>
+  <net name="high"><pin name="a" x="100" y="1700"/><pin name="b" x="2900" y="1700"/></net>
+)");
+  // the same with the left blockage one unit wider: a gap of 599
+  std::string narrow_body = gap_body;
+  narrow_body.replace(narrow_body.find("x1=\"200\""), 8, "x1=\"201\"");
+  const std::string narrow = layout_file("route_exact_narrow", narrow_body);
+  const std::string dir = temp_dir("route_exact_out");
+  const std::vector<std::vector<std::string>> modes{
+      {}, {"--orientations", "octilinear"}, {"--metric", "combined", "--bend-cost", "1000"}, {"--metric", "link"}, {"--tree", "steiner"}};
+  for (std::size_t m = 0; m < modes.size(); ++m)
+    for (const auto& [file, wires] : std::vector<std::pair<std::string, std::map<std::string, std::string>>>{
+             {gap, {{"x", "500,50 500,950"}}}, {pitch, {{"low", "100,1300 2900,1300"}, {"high", "100,1700 2900,1700"}}}}) {
+      const std::string out = dir + "/" + std::to_string(m) + ".xml", stats = dir + "/" + std::to_string(m) + ".json";
+      std::vector<std::string> args{"route", file, "-q", "-o", out, "--stats", stats};
+      args.insert(args.end(), modes[m].begin(), modes[m].end());
+      SCOPED_TRACE(file + " " + std::to_string(m));
+      const auto r = run_taut(args);
+      ASSERT_EQ(r.status, 0) << r.err;
+      EXPECT_EQ(r.err.find("ROUTE-0019"), std::string::npos) << r.err;
+      io::ReadResult rr = io::read_layout(out);
+      ASSERT_TRUE(rr.layout && rr.layout->routes);
+      for (const io::Route& route : rr.layout->routes->routes) {
+        ASSERT_EQ(route.status, "routed") << route.net;
+        ASSERT_EQ(route.wires.size(), 1u) << route.net;
+        std::string got;
+        for (const Point p : route.wires[0].points) got += (got.empty() ? "" : " ") + std::to_string(p.x) + "," + std::to_string(p.y);
+        EXPECT_EQ(got, wires.at(route.net)) << route.net;
+      }
+      const auto j = nlohmann::json::parse(read_text(stats));
+      EXPECT_GE(j["net_router"]["exact_gaps"]["scale"].get<int>(), 8) << j.dump();
+      EXPECT_EQ(j["net_router"]["exact_gaps"]["check_problems"].get<int>(), 0) << j.dump();
+      const auto check = run_taut({"check", out, "-q"});
+      EXPECT_EQ(check.status, 0) << check.out << check.err;
+    }
+  {
+    // designs/pitch.xml (make run): four nets through a channel exactly four tracks wide all
+    // route and pass the check; with --tighten (the gaps closed) the fourth track is lost
+    const std::string design = kDesigns + "pitch.xml";
+    const auto r = run_taut({"route", design, "-q", "-o", dir + "/pitch.xml"});
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(run_taut({"check", dir + "/pitch.xml", "-q"}).status, 0);
+    const auto t = run_taut({"route", design, "--tighten", "-o", dir + "/pitch.tight.xml"});
+    EXPECT_EQ(t.status, 1) << t.err;
+    EXPECT_NE(t.err.find("ROUTE-0012"), std::string::npos) << t.err;
+  }
+  {
+    const auto r = run_taut({"route", narrow, "-o", dir + "/narrow.xml"});
+    EXPECT_EQ(r.status, 1) << r.err;
+    EXPECT_NE(r.err.find("ROUTE-0010"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("narrower than 600 DBU"), std::string::npos) << r.err;
+  }
+  {
+    const auto r = run_taut({"route", gap, "--tighten", "-o", dir + "/tight.xml", "--stats", dir + "/tight.json"});
+    EXPECT_EQ(r.status, 1) << r.err;
+    EXPECT_NE(r.err.find("ROUTE-0010"), std::string::npos) << r.err;
+    const auto j = nlohmann::json::parse(read_text(dir + "/tight.json"));
+    EXPECT_EQ(j["net_router"]["exact_gaps"]["scale"].get<int>(), 1) << j.dump();
+  }
+}
+
 TEST(Route, InvalidInputWritesNothingAndKeepsTheOldOutput) {
   const std::string dir = temp_dir("route_bad");
   write_text(dir + "/bad.xml", "<layout name=\"b\" version=\"1\"><blockage id=\"x\"/></layout>\n");

@@ -174,13 +174,6 @@ std::optional<Point> free_near(std::mt19937& rng, const router::L1Router& plain,
   return std::nullopt;
 }
 
-// The L1 length of an outcome's wires.
-std::int64_t l1_len(const router::NetOutcome& o) {
-  std::int64_t n = 0;
-  for (const auto& w : o.wires)
-    for (std::size_t i = 1; i < w.size(); ++i) n += std::abs(w[i].x - w[i - 1].x) + std::abs(w[i].y - w[i - 1].y);
-  return n;
-}
 
 TEST(NetRouter, EveryRoutedNetPassesTheChecker) {
   int failed = 0, layouts = 0;

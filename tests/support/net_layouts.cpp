@@ -1,6 +1,7 @@
 #include "support/net_layouts.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <map>
 #include <optional>
 #include <random>
@@ -136,6 +137,13 @@ std::optional<std::vector<Point>> way_between(const std::vector<std::vector<Poin
   }
   std::reverse(out.begin(), out.end());
   return out;
+}
+
+std::int64_t l1_len(const router::NetOutcome& o) {
+  std::int64_t n = 0;
+  for (const auto& w : o.wires)
+    for (std::size_t i = 1; i < w.size(); ++i) n += std::abs(w[i].x - w[i - 1].x) + std::abs(w[i].y - w[i - 1].y);
+  return n;
 }
 
 }  // namespace taut::test

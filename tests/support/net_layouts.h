@@ -30,6 +30,9 @@ std::vector<router::CheckNet> check_nets(std::span<const router::NetPins> ns,
 // ... with the router's outcomes.
 std::vector<router::CheckNet> check_nets(std::span<const router::NetPins> ns, const router::NetRouter& nr);
 
+// The L1 length of a net router outcome's wires.
+std::int64_t l1_len(const router::NetOutcome& o);
+
 // The way from a to b along a tree of pieces (polylines, each joining its two end points; a and b
 // must be ends of pieces, as router::cut_at_joints makes them), as one polyline; nullopt when
 // the pieces do not join a and b.
