@@ -752,18 +752,30 @@ NetRules with_scale(NetRules r, std::int64_t k) {
   return r;
 }
 
-// The nearest multiple of k (k even, so no value lies halfway between two that a wire reaches).
+// The nearest multiple of k (halves round away from zero; try_net counts a wire with a vertex
+// k/4 or more from its multiple, NetRouterStats::snap_far, so halves never pass unnoticed).
 geom::Coord snapped(geom::Coord v, std::int64_t k) {
   const std::int64_t x = v, h = k / 2;
   const std::int64_t q = x >= 0 ? (x + h) / k : -((-x + h) / k);
   return static_cast<geom::Coord>(q * k);
 }
 
+// NetRouter::scale(): gap_scale when exact_gaps applies, kept low enough that the bend cost
+// times it stays within BendRouter's 2^31 under Combined; 1 when that leaves none of at least 8.
+std::int64_t router_scale(const Box& domain, std::span<const Polygon> obstacles, std::span<const NetPins> nets,
+                          const NetRules& rules, const NetRouterOptions& options) {
+  if (!options.exact_gaps || !octilinear_edges(obstacles, nets)) return 1;
+  std::int64_t k = gap_scale(domain, rules);
+  if (options.cost == NetRouterOptions::Cost::Combined)
+    while (k > 1 && options.bend_cost > 0 && options.bend_cost > (std::int64_t{1} << 31) / k) k /= 2;
+  return k >= 8 ? k : 1;
+}
+
 }  // namespace
 
 NetRouter::NetRouter(const geom::Box& domain, std::span<const geom::Polygon> obstacles, std::vector<NetPins> nets,
                      NetRules rules, NetRouterOptions options)
-    : scale_(options.exact_gaps && octilinear_edges(obstacles, nets) ? gap_scale(domain, rules) : 1),
+    : scale_(router_scale(domain, obstacles, nets, rules, options)),
       space_(Box{scaled(domain.lo, scale_), scaled(domain.hi, scale_)}, scaled(obstacles, scale_),
              scaled(std::move(nets), scale_), with_scale(rules, scale_)),
       options_(options) {
@@ -905,6 +917,7 @@ void add_counts(NetRouterStats& to, const NetRouterStats& c) {
   to.whole_seconds += c.whole_seconds;
   to.capped += c.capped;
   to.superset_apart += c.superset_apart;
+  to.snap_far += c.snap_far;
 }
 
 // Calls f(k) for k in [0, n) on up to `threads` threads (the caller's one of them); then rethrows
@@ -985,17 +998,25 @@ Box NetRouter::first_window(std::size_t net) const {
 NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, NetSpaceLevel level, std::span<const char> only,
                                      const WireOverlay* overlay) const {
   Tried t = try_net_unsnapped(route, net, level, only, overlay);
-  if (scale_ > 1 && t.a.routed)
+  if (scale_ > 1 && t.a.routed) {
+    bool far = false;
     for (auto& w : t.a.wires) {
       std::vector<Point> s;
       s.reserve(w.size());
       for (const Point p : w) {
         const Point q{snapped(p.x, scale_), snapped(p.y, scale_)};
+        // within k/4 of q in both coordinates, every segment keeps its direction (a 45-degree
+        // one too: both ends' offsets differ by less than k/2) and every end on another segment
+        // stays on it; farther (a crossing of two diagonals half way, a staircase beside a 45-
+        // degree edge) it need not
+        far = far || std::abs(std::int64_t{p.x} - q.x) * 4 >= scale_ || std::abs(std::int64_t{p.y} - q.y) * 4 >= scale_;
         if (s.empty() || s.back() != q) s.push_back(q);
       }
       if (s.size() == 1 && w.size() > 1) s.push_back(s[0]);  // a wire between pins at one point stays two points
       w = std::move(s);
     }
+    t.counts.snap_far += far;
+  }
   return t;
 }
 
@@ -1481,16 +1502,15 @@ struct BendRouteFn {
 void NetRouter::run(const NetRouteFn& route) {
   if (scale_ == 1) return run_scaled(route);
   const std::int64_t c0 = options_.bend_cost;
-  options_.bend_cost = c0 * scale_;  // lengths are scale_ times
+  struct Restore {  // the bend cost as given, also when run_scaled throws
+    std::int64_t& cost;
+    std::int64_t was;
+    ~Restore() { cost = was; }
+  } restore{options_.bend_cost, c0};
+  options_.bend_cost = c0 * scale_;  // lengths are scale_ times (router_scale keeps it <= 2^31)
   NetRouteFn r = route;
   if (BendRouteFn* b = r.target<BendRouteFn>()) b->bend_cost *= scale_;
-  try {
-    run_scaled(r);
-  } catch (...) {
-    options_.bend_cost = c0;
-    throw;
-  }
-  options_.bend_cost = c0;
+  run_scaled(r);
   for (NetOutcome& o : out_)
     for (auto& w : o.wires)
       for (Point& p : w) p = Point{static_cast<geom::Coord>(p.x / scale_), static_cast<geom::Coord>(p.y / scale_)};

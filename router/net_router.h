@@ -24,7 +24,8 @@
 // merge (the wavefront takes touching obstacles as a pinch), so in that space a gap of exactly 2a
 // between blockages, or a track at exactly the pitch between two wires, takes no wire although
 // one is legal there. With exact_gaps the router works in the plane scaled by K (a power of two,
-// NetRouter::scale(), at least 8, with K x (the domain's reach + a + b) <= 2^29): the blockages,
+// NetRouter::scale(), at least 8, with K x (the domain's reach + a + b) <= 2^29, and under
+// Combined K x bend_cost <= 2^31): the blockages,
 // the domain and the pins are multiplied by K and grown by K a - 1 and K b - 1 instead of a and b
 // (NetRules::scale), so regions whose interiors overlap still overlap and only exact touches open,
 // to corridors 2 wide; a point pin's access square is cut with half-side K a + 1, one more than
@@ -34,8 +35,11 @@
 // multiples of K (before any other net sees it), so every obstacle of the scaled space stays a
 // multiple of K grown by K x - 1, and a wire's vertices, which lie on lines through those
 // obstacles' vertices and the pins (and on 45-degree lines through them), sit a few units from a
-// multiple of K (far less than K/2): snapping keeps each segment's direction and every wire's connections, and moves
-// a wire hugging a grown region out to exactly the clearance. The outcomes are divided by K at
+// multiple of K (far less than K/4): snapping then keeps each segment's direction and every wire's connections, and moves
+// a wire hugging a grown region out to exactly the clearance. Where that does not hold (two
+// diagonals of an octilinear Steiner tree crossing half way between multiples, an L1 staircase
+// beside a 45-degree edge) the attempt is counted in NetRouterStats::snap_far, and the caller
+// routes again without exact_gaps (taut route does). The outcomes are divided by K at
 // the end of run(). The space then holds K times every legal wire (it keeps K a > K a - 1 and
 // K b > K b - 1 from what it grows), so no wire is lost to the scale; a snapped wire is checked by
 // the caller (router::check_routes: taut route does, and routes again without exact_gaps when it
@@ -430,7 +434,9 @@ struct NetRouterOptions {
   // Gaps of exactly the clearance take wires (see the header): the router works in the plane
   // scaled by NetRouter::scale(). The route function is then given scaled pins and obstacles
   // and must read the pins it is given (not its own copy), and weigh bends by
-  // bend_cost x scale() under Combined; outcomes() are in the layout's units. false: gaps of
+  // bend_cost x scale() under Combined; outcomes()' wires are in the layout's units (a reason a
+  // route function gave for a net it could not route is its own text, of the scaled plane:
+  // taut route asks the route function again in real units for those). false: gaps of
   // exactly 2a, and tracks at exactly the pitch, are closed.
   bool exact_gaps = false;
 };
@@ -452,6 +458,11 @@ struct NetRouterStats {
   // Last-pass attempts that stopped because the net's pins are apart in a superset of its space
   // (NetRouterOptions::superset).
   std::int64_t superset_apart = 0;
+  // NetRouterOptions::exact_gaps: attempts whose wires had a vertex a quarter of the scale or
+  // more from the multiple it was snapped to (see the header); such a wire may have lost its
+  // direction, a connection or the clearance, and the outcomes must be routed again without
+  // exact_gaps (taut route does). 0 without exact_gaps.
+  std::int64_t snap_far = 0;
   // Rip-ups planned round the wires of nets that may not be ripped up again (see above).
   std::int64_t around_fixed = 0;
   std::int64_t undone = 0;  // rip-ups undone: fewer of the net and its blockers routed after

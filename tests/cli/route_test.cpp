@@ -853,7 +853,13 @@ TEST(Route, GapsOfExactlyTheClearanceTakeWires) {
   const std::string narrow = layout_file("route_exact_narrow", narrow_body);
   const std::string dir = temp_dir("route_exact_out");
   const std::vector<std::vector<std::string>> modes{
-      {}, {"--orientations", "octilinear"}, {"--metric", "combined", "--bend-cost", "1000"}, {"--metric", "link"}, {"--tree", "steiner"}};
+      {},
+      {"--orientations", "octilinear"},
+      {"--metric", "combined", "--bend-cost", "1000"},
+      {"--metric", "combined", "--bend-cost", "300000"},  // the scale stays 4096: C K <= 2^31
+      {"--metric", "link"},
+      {"--tree", "steiner"},
+      {"--orientations", "octilinear", "--tree", "steiner"}};
   for (std::size_t m = 0; m < modes.size(); ++m)
     for (const auto& [file, wires] : std::vector<std::pair<std::string, std::map<std::string, std::string>>>{
              {gap, {{"x", "500,50 500,950"}}}, {pitch, {{"low", "100,1300 2900,1300"}, {"high", "100,1700 2900,1700"}}}}) {
@@ -863,7 +869,6 @@ TEST(Route, GapsOfExactlyTheClearanceTakeWires) {
       SCOPED_TRACE(file + " " + std::to_string(m));
       const auto r = run_taut(args);
       ASSERT_EQ(r.status, 0) << r.err;
-      EXPECT_EQ(r.err.find("ROUTE-0019"), std::string::npos) << r.err;
       io::ReadResult rr = io::read_layout(out);
       ASSERT_TRUE(rr.layout && rr.layout->routes);
       for (const io::Route& route : rr.layout->routes->routes) {
@@ -876,6 +881,7 @@ TEST(Route, GapsOfExactlyTheClearanceTakeWires) {
       const auto j = nlohmann::json::parse(read_text(stats));
       EXPECT_GE(j["net_router"]["exact_gaps"]["scale"].get<int>(), 8) << j.dump();
       EXPECT_EQ(j["net_router"]["exact_gaps"]["check_problems"].get<int>(), 0) << j.dump();
+      EXPECT_EQ(j["net_router"]["exact_gaps"]["snap_far"].get<int>(), 0) << j.dump();
       const auto check = run_taut({"check", out, "-q"});
       EXPECT_EQ(check.status, 0) << check.out << check.err;
     }
@@ -889,6 +895,30 @@ TEST(Route, GapsOfExactlyTheClearanceTakeWires) {
     const auto t = run_taut({"route", design, "--tighten", "-o", dir + "/pitch.tight.xml"});
     EXPECT_EQ(t.status, 1) << t.err;
     EXPECT_NE(t.err.find("ROUTE-0012"), std::string::npos) << t.err;
+  }
+  {
+    // octilinear Steiner trees keep the gaps closed (their branches may meet half way between
+    // the scaled plane's multiples): a third pin makes x a tree, and the gap is ROUTE-0010
+    std::string tree_body = gap_body;
+    tree_body.replace(tree_body.find("</net>"), 6, "<pin name=\"c\" x=\"900\" y=\"100\"/></net>");
+    const std::string tree = layout_file("route_exact_tree", tree_body);
+    const auto r = run_taut({"route", tree, "--orientations", "octilinear", "--tree", "steiner", "-o", dir + "/tree.xml", "--stats",
+                             dir + "/tree.json"});
+    EXPECT_EQ(r.status, 1) << r.err;
+    EXPECT_NE(r.err.find("ROUTE-0010"), std::string::npos) << r.err;
+    EXPECT_EQ(nlohmann::json::parse(read_text(dir + "/tree.json"))["net_router"]["exact_gaps"]["scale"].get<int>(), 1);
+    // the same tree rectilinear takes the gap
+    const auto l1 = run_taut({"route", tree, "--tree", "steiner", "-q", "-o", dir + "/tree.l1.xml"});
+    EXPECT_EQ(l1.status, 0) << l1.err;
+    EXPECT_EQ(run_taut({"check", dir + "/tree.l1.xml", "-q"}).status, 0);
+  }
+  {
+    // a bend cost so large that no scale of 8 keeps C K within 2^31: the gap stays closed
+    const auto r = run_taut({"route", gap, "--metric", "combined", "--bend-cost", "1073741823", "-o", dir + "/huge.xml",
+                             "--stats", dir + "/huge.json"});
+    EXPECT_EQ(r.status, 1) << r.err;
+    EXPECT_NE(r.err.find("ROUTE-0010"), std::string::npos) << r.err;
+    EXPECT_EQ(nlohmann::json::parse(read_text(dir + "/huge.json"))["net_router"]["exact_gaps"]["scale"].get<int>(), 1);
   }
   {
     const auto r = run_taut({"route", narrow, "-o", dir + "/narrow.xml"});
