@@ -317,8 +317,8 @@ NetSpace::NetSpace(const geom::Box& domain, std::span<const geom::Polygon> obsta
   if (rules.wire_width < 0 || rules.spacing < 0) throw std::invalid_argument("NetSpace: negative width or spacing");
   if (rules.scale < 1) throw std::invalid_argument("NetSpace: a scale below 1");
   cut_shapes_ = rules.cover_pieces == 0;
-  rule_a_ = (rules.wire_width + 1) / 2 + rules.spacing;
-  rule_b_ = std::max<std::int64_t>(rules.wire_width + rules.spacing, 1);
+  rule_a_ = router::blockage_rule(rules);
+  rule_b_ = router::net_rule(rules);
   if (rule_a_ > geom::kMaxCoord || rule_b_ > geom::kMaxCoord) throw std::domain_error("the clearance of <rules> passes the coordinate limit");
   // scaled by K: K x - 1, so that only exact touches open (0 stays 0: nothing is grown)
   auto grow = [&](std::int64_t x) { return rules.scale > 1 && x > 0 ? rules.scale * x - 1 : x; };
@@ -692,37 +692,22 @@ namespace {
 // The scale of NetRouterOptions::exact_gaps: the largest power of two K <= 2^13 with K x (the
 // domain's reach + a + b) <= 2^29, or 1 when that leaves none of at least 8.
 std::int64_t gap_scale(const Box& domain, const NetRules& rules) {
-  const std::int64_t a = (rules.wire_width + 1) / 2 + rules.spacing, b = std::max<std::int64_t>(rules.wire_width + rules.spacing, 1);
   const std::int64_t reach = std::max({std::abs(std::int64_t{domain.lo.x}), std::abs(std::int64_t{domain.lo.y}),
-                                       std::abs(std::int64_t{domain.hi.x}), std::abs(std::int64_t{domain.hi.y})}) + a + b;
+                                       std::abs(std::int64_t{domain.hi.x}), std::abs(std::int64_t{domain.hi.y})}) +
+                              blockage_rule(rules) + net_rule(rules);
   std::int64_t k = 1;
   while (k < (std::int64_t{1} << 13) && 2 * k * reach <= (std::int64_t{1} << 29)) k *= 2;
   return k >= 8 ? k : 1;
 }
 
 // Whether every edge of the blockages and of the shape pins is horizontal, vertical or at 45
-// degrees: exact_gaps's snapping is sound only then (a wire vertex beside a sloped edge can lie
-// anywhere between multiples of the scale, and snapping would move it into the clearance).
+// degrees (pin_shape_supported's test, which normalized blockages pass as shapes): exact_gaps's
+// snapping is sound only then (a wire vertex beside a sloped edge can lie anywhere between
+// multiples of the scale, and snapping would move it into the clearance).
 bool octilinear_edges(std::span<const Polygon> obstacles, std::span<const NetPins> nets) {
-  auto ring_ok = [](const Ring& r) {
-    for (std::size_t i = 0; i < r.size(); ++i) {
-      const Point u = r[i], v = r[(i + 1) % r.size()];
-      const std::int64_t dx = std::int64_t{v.x} - u.x, dy = std::int64_t{v.y} - u.y;
-      if (dx != 0 && dy != 0 && dx != dy && dx != -dy) return false;
-    }
-    return true;
-  };
-  auto poly_ok = [&](const Polygon& p) {
-    if (!ring_ok(p.outer)) return false;
-    for (const Ring& h : p.holes)
-      if (!ring_ok(h)) return false;
-    return true;
-  };
-  for (const Polygon& p : obstacles)
-    if (!poly_ok(p)) return false;
+  if (!std::all_of(obstacles.begin(), obstacles.end(), [](const Polygon& p) { return pin_shape_supported(p); })) return false;
   for (const NetPins& n : nets)
-    for (const Polygon& p : n.pins)
-      if (!poly_ok(p)) return false;
+    if (!std::all_of(n.pins.begin(), n.pins.end(), [](const Polygon& p) { return pin_shape_supported(p); })) return false;
   return true;
 }
 
@@ -779,6 +764,7 @@ NetRouter::NetRouter(const geom::Box& domain, std::span<const geom::Polygon> obs
       space_(Box{scaled(domain.lo, scale_), scaled(domain.hi, scale_)}, scaled(obstacles, scale_),
              scaled(std::move(nets), scale_), with_scale(rules, scale_)),
       options_(options) {
+  options_.bend_cost *= scale_;  // lengths are scale_ times (router_scale keeps it <= 2^31)
   if (options_.cost == NetRouterOptions::Cost::Length) return;
   // the bend-aware router takes rectilinear obstacles only (see the header)
   if (rules.cover_pieces <= 0) throw std::invalid_argument("NetRouter: a bend-aware cost needs NetRules::cover_pieces > 0");
@@ -1501,14 +1487,7 @@ struct BendRouteFn {
 
 void NetRouter::run(const NetRouteFn& route) {
   if (scale_ == 1) return run_scaled(route);
-  const std::int64_t c0 = options_.bend_cost;
-  struct Restore {  // the bend cost as given, also when run_scaled throws
-    std::int64_t& cost;
-    std::int64_t was;
-    ~Restore() { cost = was; }
-  } restore{options_.bend_cost, c0};
-  options_.bend_cost = c0 * scale_;  // lengths are scale_ times (router_scale keeps it <= 2^31)
-  NetRouteFn r = route;
+  NetRouteFn r = route;  // options_.bend_cost is scaled already (the constructor)
   if (BendRouteFn* b = r.target<BendRouteFn>()) b->bend_cost *= scale_;
   run_scaled(r);
   for (NetOutcome& o : out_)

@@ -167,6 +167,7 @@
 // valid (the rounds took 1.07-1.19 x one thread's time with them).
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -202,6 +203,11 @@ struct NetRules {
   // the pins by K), and grows by K a - 1 and K b - 1 instead of a and b (NetRouterOptions::exact_gaps).
   std::int64_t scale = 1;
 };
+
+// The two clearances of the rules, in the layout's units: a = ceil(w/2) + s from blockages and
+// b = max(w + s, 1) between nets (what NetSpace grows by without a scale).
+inline std::int64_t blockage_rule(const NetRules& r) { return (r.wire_width + 1) / 2 + r.spacing; }
+inline std::int64_t net_rule(const NetRules& r) { return std::max<std::int64_t>(r.wire_width + r.spacing, 1); }
 
 // A net's pins: a point pin is an outer ring of one point, a shape pin a polygon.
 struct NetPins {

@@ -473,6 +473,17 @@ void add_route(CLI::App& app, int& status) {
     std::int64_t gap_scale = 1;
     std::size_t gap_problems = 0;
     std::int64_t gap_snap_far = 0;  // NetRouterStats::snap_far of the run with the scale
+    // After a run of the net router: whether its result stands (no scale, or nothing snapped
+    // from afar and nothing the checker finds with the real rules); else it is routed again
+    // without exact gaps.
+    auto gaps_stand = [&](const router::NetRouter& nr, const geom::Box& domain, const std::vector<geom::Polygon>& obstacles,
+                          const std::vector<NetResult>& results) {
+      gap_scale = nr.scale();
+      if (gap_scale == 1) return true;
+      gap_snap_far = nr.stats().snap_far;
+      gap_problems = route_problems(*layout, domain, obstacles, results).size();
+      return gap_problems == 0 && gap_snap_far == 0;
+    };
     auto t1 = Clock::now();
     if (bends) {
       const BendObstacles obs = bend_obstacles(*layout, {}, args->routing.metric, args->load.quiet,
@@ -504,7 +515,7 @@ void add_route(CLI::App& app, int& status) {
         rules.cover_pieces = obs.pieces;  // other nets' sloped shape pins by their covers, as the blockages
         geom::Box domain = norm.domain;
         if (!layout->boundary) {  // room to go round a grown blockage in the unbounded plane
-          const std::int64_t grow = (rules.wire_width + 1) / 2 + rules.spacing + std::max<std::int64_t>(rules.wire_width + rules.spacing, 1);
+          const std::int64_t grow = router::blockage_rule(rules) + router::net_rule(rules);
           domain = geom::grown_box(norm.domain, grow);
         }
         t1 = Clock::now();
@@ -542,11 +553,7 @@ void add_route(CLI::App& app, int& status) {
                 if (real.route.status != "routed") results[i] = std::move(real);
               }
             }
-            gap_scale = k;
-            if (k == 1) break;
-            gap_snap_far = nr.stats().snap_far;
-            gap_problems = route_problems(*layout, domain, norm.obstacles, results).size();
-            if (gap_problems == 0 && gap_snap_far == 0) break;
+            if (gaps_stand(nr, domain, norm.obstacles, results)) break;
           }
         } catch (const std::domain_error& e) {
           print_diagnostics({Diagnostic{Severity::Error, "ROUTE-0014", layout->file, layout->rules ? layout->rules->line : 0, 0,
@@ -624,7 +631,7 @@ void add_route(CLI::App& app, int& status) {
         if (layout->rules) rules = {layout->rules->wire_width, layout->rules->spacing};
         geom::NormalizedObstacles space = norm;
         if (!layout->boundary) {  // room to go round a grown blockage in the unbounded plane
-          const std::int64_t grow = (rules.wire_width + 1) / 2 + rules.spacing + std::max<std::int64_t>(rules.wire_width + rules.spacing, 1);
+          const std::int64_t grow = router::blockage_rule(rules) + router::net_rule(rules);
           space.domain = geom::grown_box(norm.domain, grow);
         }
         net_domain = space.domain;
@@ -694,11 +701,7 @@ void add_route(CLI::App& app, int& status) {
               if (real.route.status != "routed") together[i] = std::move(real);
             }
           }
-          gap_scale = k;
-          if (k == 1) break;
-          gap_snap_far = nr.stats().snap_far;
-          gap_problems = route_problems(*layout, space.domain, space.obstacles, together).size();
-          if (gap_problems == 0 && gap_snap_far == 0) break;
+          if (gaps_stand(nr, space.domain, space.obstacles, together)) break;
           }
         } catch (const std::domain_error& e) {
           print_diagnostics({Diagnostic{Severity::Error, "ROUTE-0014", layout->file, layout->rules ? layout->rules->line : 0, 0,

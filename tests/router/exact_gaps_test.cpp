@@ -334,21 +334,14 @@ TEST(ExactGaps, BendMetricsPassTheChecker) {
   std::int64_t nets = 0, routed = 0;
   for (int seed = 1; seed <= sanitized_share(300, 15); ++seed) {
     const RandomLayout L = random_layout(950000 + seed);
-    const geom::NormalizedObstacles covered = geom::normalize_obstacles(router::rectilinear_cover(L.norm.obstacles), L.norm.domain);
-    const bool link = seed % 5 == 0;
-    const std::int64_t c = std::vector<std::int64_t>{0, 1, 7, 1000}[static_cast<std::size_t>(seed) % 4];
-    router::NetRouterOptions opt;
-    opt.cost = link ? router::NetRouterOptions::Cost::Link : router::NetRouterOptions::Cost::Combined;
-    opt.bend_cost = c;
-    opt.exact_gaps = true;
-    router::NetRules rules = L.rules;
-    rules.cover_pieces = router::kDefaultCoverPieces;
-    router::NetRouter nr(covered.domain, covered.obstacles, L.nets, rules, opt);
-    nr.run(router::NetRouter::bend_router(link ? router::BendMetric::Link : router::BendMetric::Combined, c));
+    BendRun b = bend_run(L, seed);
+    b.options.exact_gaps = true;
+    router::NetRouter nr(b.covered.domain, b.covered.obstacles, L.nets, b.rules, b.options);
+    nr.run(b.route);
     if (nr.stats().snap_far > 0 && failed++ < 8) ADD_FAILURE() << "seed " << 950000 + seed << ": a wire snapped from afar";
     const router::CheckResult r = router::check_routes(L.norm, check_nets(L.nets, nr), {L.rules.wire_width, L.rules.spacing});
     for (const auto& p : r.problems)
-      if (failed++ < 8) ADD_FAILURE() << "seed " << 950000 + seed << (link ? " link" : " C " + std::to_string(c)) << ": " << p.message;
+      if (failed++ < 8) ADD_FAILURE() << "seed " << 950000 + seed << " " << b.label << ": " << p.message;
     nets += static_cast<std::int64_t>(L.nets.size());
     for (const auto& o : nr.outcomes()) routed += o.routed;
   }

@@ -417,20 +417,13 @@ TEST(NetRouter, BendMetricsPassTheChecker) {
   std::int64_t nets = 0, routed = 0, ripped = 0;
   for (int seed = 1; seed <= sanitized_share(600, 16); ++seed) {
     RandomLayout L = random_layout(760000 + seed);
-    const geom::NormalizedObstacles covered = geom::normalize_obstacles(router::rectilinear_cover(L.norm.obstacles), L.norm.domain);
-    const bool link = seed % 5 == 0;
-    const std::int64_t c = std::vector<std::int64_t>{0, 1, 7, 1000}[static_cast<std::size_t>(seed) % 4];
-    router::NetRouterOptions opt;
-    opt.cost = link ? router::NetRouterOptions::Cost::Link : router::NetRouterOptions::Cost::Combined;
-    opt.bend_cost = c;
-    router::NetRules rules = L.rules;
-    rules.cover_pieces = router::kDefaultCoverPieces;
-    router::NetRouter nr(covered.domain, covered.obstacles, L.nets, rules, opt);
-    nr.run(router::NetRouter::bend_router(link ? router::BendMetric::Link : router::BendMetric::Combined, c));
+    const BendRun b = bend_run(L, seed);
+    router::NetRouter nr(b.covered.domain, b.covered.obstacles, L.nets, b.rules, b.options);
+    nr.run(b.route);
     ++layouts;
     const router::CheckResult r = router::check_routes(L.norm, check_nets(L.nets, nr), {L.rules.wire_width, L.rules.spacing});
     for (const auto& p : r.problems)
-      if (failed++ < 8) ADD_FAILURE() << "seed " << 760000 + seed << (link ? " link" : " C " + std::to_string(c)) << ": " << p.message;
+      if (failed++ < 8) ADD_FAILURE() << "seed " << 760000 + seed << " " << b.label << ": " << p.message;
     nets += static_cast<std::int64_t>(L.nets.size());
     ripped += nr.stats().rips;
     for (const auto& o : nr.outcomes()) {

@@ -7,6 +7,7 @@
 #include <random>
 #include <string>
 
+#include "router/bend_router.h"
 #include "router/l1_router.h"
 #include "support/random_shapes.h"
 
@@ -144,6 +145,20 @@ std::int64_t l1_len(const router::NetOutcome& o) {
   for (const auto& w : o.wires)
     for (std::size_t i = 1; i < w.size(); ++i) n += std::abs(w[i].x - w[i - 1].x) + std::abs(w[i].y - w[i - 1].y);
   return n;
+}
+
+BendRun bend_run(const RandomLayout& layout, int seed) {
+  BendRun r;
+  r.covered = geom::normalize_obstacles(router::rectilinear_cover(layout.norm.obstacles), layout.norm.domain);
+  const bool link = seed % 5 == 0;
+  const std::int64_t c = std::vector<std::int64_t>{0, 1, 7, 1000}[static_cast<std::size_t>(seed) % 4];
+  r.options.cost = link ? router::NetRouterOptions::Cost::Link : router::NetRouterOptions::Cost::Combined;
+  r.options.bend_cost = c;
+  r.rules = layout.rules;
+  r.rules.cover_pieces = router::kDefaultCoverPieces;
+  r.route = router::NetRouter::bend_router(link ? router::BendMetric::Link : router::BendMetric::Combined, c);
+  r.label = link ? "link" : "C " + std::to_string(c);
+  return r;
 }
 
 }  // namespace taut::test

@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "geom/normalize.h"
@@ -22,6 +23,19 @@ struct RandomLayout {
 // of 2-4 point pins (rectangular pads for some seeds), some pins on blockage edges and corners;
 // wire width 0-3 and spacing 0-2.
 RandomLayout random_layout(int seed);
+
+// One of the bend-aware metrics' random runs: the layout's blockages by their rectilinear covers,
+// the link metric for every fifth seed, else Combined with C in {0, 1, 7, 1000} by seed % 4, the
+// layout's rules with kDefaultCoverPieces, and the matching route function; `label` names the
+// metric for messages.
+struct BendRun {
+  geom::NormalizedObstacles covered;
+  router::NetRouterOptions options;
+  router::NetRules rules;
+  router::NetRouteFn route;
+  std::string label;
+};
+BendRun bend_run(const RandomLayout& layout, int seed);
 
 // The nets with their wires as the checker takes them (a wire's line: its net's index); a net is
 // routed when it has a wire.
