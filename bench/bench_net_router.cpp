@@ -86,7 +86,7 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--metric") && i + 1 < argc) metric = argv[++i];
     else if (!std::strcmp(argv[i], "--bend-cost") && i + 1 < argc) bend_cost = std::atoll(argv[++i]);
     else {
-      std::fprintf(stderr, "usage: %s [--sizes N,..] [--nets M,..] [--threads T,..] [--rounds R] [--max-rips K] [--search-windows W] [--no-final-round] [--no-superset] [--tighten] [--planted] [--metric l1|combined|link] [--bend-cost C]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--sizes N,..] [--nets M,..] [--threads T,..] [--rounds R] [--max-rips K] [--search-windows W] [--no-final-round] [--no-superset] [--tighten] [--planted] [--exact-gaps] [--metric l1|combined|link] [--bend-cost C]\n", argv[0]);
       return 2;
     }
   }

@@ -386,12 +386,12 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t, std
       // octilinear: the projections along the four orientations (ProjectionLines, wavefront.h)
       std::optional<ProjectionLines> first_lines;
       if constexpr (kOctilinear) {
-        first_lines.emplace(true);
+        first_lines.emplace(true, lattice_);
         for (std::size_t n = 0; n < g.nodes.size(); ++n)
           if (side[n]) first_lines->add(g.nodes[n]);
         first_lines->done();
         if (!obstacle_lines_) {
-          obstacle_lines_.emplace(true);
+          obstacle_lines_.emplace(true, lattice_);
           for (const geom::Polygon& o : wavefront_.frame_obstacles()) {
             for (const Point v : o.outer) obstacle_lines_->add(v);
             for (const geom::Ring& h : o.holes)
@@ -439,7 +439,7 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t, std
       targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
       keep_free(targets, wavefront_);
       if (targets.empty()) continue;
-      wavefront_.run(points, segments, targets, WavefrontStop::FirstTarget);
+      run_from(points, segments, targets, WavefrontStop::FirstTarget);
       std::optional<std::size_t> best;
       for (std::size_t j = 0; j < targets.size(); ++j) {
         const auto d = wavefront_.target_distance(j);
@@ -551,7 +551,7 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t, std
         // Octilinear: also where a diagonal of a node meets another node's line, horizontal,
         // vertical or the other diagonal (at integer points only), within the box: the lines
         // of the octilinear Hanan grid of the nodes (the obstacle vertices add axis lines only).
-        const std::size_t diagonal_points = (gsum.size() + gdiff.size()) * (gx.size() + gy.size()) + gsum.size() * gdiff.size();
+        const std::size_t diagonal_points = (gsum.size() + gdiff.size()) * (gx.size() + gy.size()) + gsum.size() * gdiff.size() * (lattice_ > 1 ? 4 : 1);
         if (grid.size() + diagonal_points <= kMoveGridPoints) {
           auto add = [&](std::int64_t x, std::int64_t y) {
             if (x0 <= x && x <= x1 && y0 <= y && y <= y1) grid.push_back({static_cast<geom::Coord>(x), static_cast<geom::Coord>(y)});
@@ -560,7 +560,15 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t, std
             for (const geom::Coord x : gx) add(x, c - x);
             for (const geom::Coord y : gy) add(c - y, y);
             for (const std::int64_t d : gdiff)
-              if ((c + d) % 2 == 0) add((c + d) / 2, (c - d) / 2);
+              if (lattice_ > 1) {  // the multiples of lattice_ in x next to the crossing, on both diagonals
+                for (const i64 x : {static_cast<i64>(geom::floor_div(c + d, 2 * lattice_)) * lattice_,
+                                    static_cast<i64>(geom::ceil_div(c + d, 2 * lattice_)) * lattice_}) {
+                  add(x, c - x);
+                  add(x, x - d);
+                }
+              } else if ((c + d) % 2 == 0) {
+                add((c + d) / 2, (c - d) / 2);
+              }
           }
           for (const std::int64_t d : gdiff) {
             for (const geom::Coord x : gx) add(x, x - d);
@@ -633,7 +641,7 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t, std
       for (std::size_t k = 0; k < parts && !alive.empty(); ++k) {
         std::vector<Point> targets;
         for (const std::size_t j : alive) targets.push_back(grid[j]);
-        wavefront_.run(part_points[k], part_segments[k], targets, WavefrontStop::AllTargets);
+        run_from(part_points[k], part_segments[k], targets, WavefrontStop::AllTargets);
         std::vector<std::size_t> still;
         for (std::size_t i = 0; i < alive.size(); ++i) {
           const auto d = wavefront_.target_distance(i);
@@ -651,7 +659,7 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t, std
       std::vector<std::vector<Point>> joins;
       bool ok = true;
       for (std::size_t k = 0; k < part_points.size() && ok; ++k) {
-        wavefront_.run(part_points[k], part_segments[k], std::vector<Point>{grid[*best]}, WavefrontStop::FirstTarget);
+        run_from(part_points[k], part_segments[k], std::vector<Point>{grid[*best]}, WavefrontStop::FirstTarget);
         Wire w = finish(std::size_t{0});
         ok = w.status == WireStatus::Ok;
         if (ok && w.points.size() >= 2) joins.push_back(std::move(w.points));
@@ -786,7 +794,7 @@ typename BasicRouter<W>::Steiner BasicRouter<W>::steiner_from_first(std::span<co
           owner.push_back(k);
         }
       }
-      wavefront_.run(points, segments, targets, WavefrontStop::FirstTarget);
+      run_from(points, segments, targets, WavefrontStop::FirstTarget);
       std::optional<std::size_t> best;
       for (std::size_t j = 0; j < targets.size(); ++j) {
         const auto d = wavefront_.target_distance(j);
@@ -963,6 +971,21 @@ typename BasicRouter<W>::Tree BasicRouter<W>::tree(const geom::Polygon& source,
   }
   t.status = WireStatus::Ok;
   return t;
+}
+
+template <class W>
+void BasicRouter<W>::set_lattice(std::int64_t k) {
+  if (k < 1) throw std::invalid_argument("the lattice must be at least 1");
+  if (k != lattice_) obstacle_lines_.reset();
+  lattice_ = k;
+  pins_.set_lattice(k);
+}
+
+template <class W>
+void BasicRouter<W>::run_from(std::span<const Point> points, std::span<const geom::Segment> segments,
+                              std::span<const Point> targets, WavefrontStop stop) {
+  if constexpr (kOctilinear) wavefront_.run(points, segments, targets, stop, lattice_);
+  else wavefront_.run(points, segments, targets, stop);
 }
 
 template class BasicRouter<L1Wavefront>;

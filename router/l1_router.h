@@ -182,6 +182,16 @@ class BasicRouter {
   // (PinShapes::meets_obstacle).
   std::optional<std::size_t> pin_meets_obstacle(const geom::Polygon& pin) const;
 
+  // Octilinear wires for a plane whose wires are then snapped to multiples of k (NetRouter's
+  // scaled plane, NetRouterOptions::exact_gaps): no branch of a Steiner tree leaves a diagonal
+  // wire, no Steiner point is moved, and no wire leaves a shape pin's 45-degree edge, halfway
+  // between two multiples of k, where snapping would turn a diagonal off its direction
+  // (OctWavefront::run, LATTICE; PinShapes::set_lattice; the moves' candidates where two
+  // diagonals cross are rounded the same way). 1 (the default): integer points. Rectilinear wires
+  // need none (they leave on horizontal and vertical lines through vertices of the tree, the
+  // pins and the obstacles), and L1Router ignores it.
+  void set_lattice(std::int64_t k);
+
   bool is_free(geom::Point p) const { return wavefront_.is_free(p); }
   const Wavefront& wavefront() const { return wavefront_; }
   const StaircaseStats& staircase_stats() const { return staircase_stats_; }
@@ -212,6 +222,9 @@ class BasicRouter {
   std::size_t improve(std::span<const geom::Point> pins, Steiner& t, std::span<const geom::Polygon> pads = {});
   // The wire to target `target` of the last run (Unreachable when none).
   Wire finish(std::optional<std::size_t> target);
+  // wavefront_.run with segment sources on lattice_ (octilinear).
+  void run_from(std::span<const geom::Point> points, std::span<const geom::Segment> segments,
+                std::span<const geom::Point> targets, WavefrontStop stop);
 
   Wavefront wavefront_;
   StaircaseBuilder staircase_;
@@ -220,6 +233,7 @@ class BasicRouter {
   // Octilinear improve(): the obstacle vertices (the frame's too) projected onto the other part's
   // segments, built at the first use.
   std::optional<ProjectionLines> obstacle_lines_;
+  std::int64_t lattice_ = 1;  // set_lattice()
 };
 
 using L1Router = BasicRouter<L1Wavefront>;

@@ -1483,12 +1483,25 @@ struct BendRouteFn {
   std::int64_t bend_cost;
   NetAttempt operator()(std::size_t, const NetPins& net, const geom::NormalizedObstacles& obs) const;
 };
+// The route functions of l1_router and oct_router, by name: their wavefronts take windows with
+// the frame merged (NetSpace::obstacles(..., framed)), which try_net() recognises by these types;
+// run() gives the octilinear router the scale as its lattice (BasicRouter::set_lattice).
+struct L1RouteFn {
+  bool steiner;
+  NetAttempt operator()(std::size_t, const NetPins& net, const geom::NormalizedObstacles& obs) const;
+};
+struct OctRouteFn {
+  bool steiner;
+  std::int64_t lattice = 1;
+  NetAttempt operator()(std::size_t, const NetPins& net, const geom::NormalizedObstacles& obs) const;
+};
 }  // namespace
 
 void NetRouter::run(const NetRouteFn& route) {
   if (scale_ == 1) return run_scaled(route);
   NetRouteFn r = route;  // options_.bend_cost is scaled already (the constructor)
   if (BendRouteFn* b = r.target<BendRouteFn>()) b->bend_cost *= scale_;
+  if (OctRouteFn* o = r.target<OctRouteFn>()) o->lattice = scale_;  // no vertex halfway between multiples
   run_scaled(r);
   for (NetOutcome& o : out_)
     for (auto& w : o.wires)
@@ -1881,9 +1894,10 @@ NetRouter::Explained NetRouter::explain(const NetRouteFn& route, std::size_t net
 
 namespace {
 
-// The route function of l1_router / oct_router: Router is L1Router or OctRouter.
+// The route function of l1_router / oct_router: Router is L1Router or OctRouter; `lattice`:
+// BasicRouter::set_lattice.
 template <class Router>
-NetAttempt route_with(const NetPins& net, const geom::NormalizedObstacles& obs, bool steiner) {
+NetAttempt route_with(const NetPins& net, const geom::NormalizedObstacles& obs, bool steiner, std::int64_t lattice) {
   NetAttempt a;
   if (net.pins.size() < 2) {
     a.code = "ROUTE-0006";
@@ -1891,6 +1905,7 @@ NetAttempt route_with(const NetPins& net, const geom::NormalizedObstacles& obs, 
     return a;
   }
   Router r(obs.domain, obs.obstacles);
+  r.set_lattice(lattice);
   auto fail = [&](WireStatus st) {
     a.code = st == WireStatus::SourceNotFree || st == WireStatus::TargetNotFree ? "ROUTE-0001"
              : st == WireStatus::Unreachable                                   ? "ROUTE-0002"
@@ -1954,28 +1969,20 @@ NetAttempt route_bends(const NetPins& net, const geom::NormalizedObstacles& obs,
 
 }  // namespace
 
+NetAttempt L1RouteFn::operator()(std::size_t, const NetPins& net, const geom::NormalizedObstacles& obs) const {
+  return route_with<L1Router>(net, obs, steiner, 1);
+}
+
+NetAttempt OctRouteFn::operator()(std::size_t, const NetPins& net, const geom::NormalizedObstacles& obs) const {
+  return route_with<OctRouter>(net, obs, steiner, lattice);
+}
+
 NetAttempt BendRouteFn::operator()(std::size_t, const NetPins& net, const geom::NormalizedObstacles& obs) const {
   return route_bends(net, obs, metric, bend_cost);
 }
 
 NetRouteFn NetRouter::bend_router(BendMetric metric, std::int64_t bend_cost) { return BendRouteFn{metric, bend_cost}; }
 
-namespace {
-// The route functions of l1_router and oct_router, by name: their wavefronts take windows with
-// the frame merged (NetSpace::obstacles(..., framed)), which try_net() recognises by these types.
-struct L1RouteFn {
-  bool steiner;
-  NetAttempt operator()(std::size_t, const NetPins& net, const geom::NormalizedObstacles& obs) const {
-    return route_with<L1Router>(net, obs, steiner);
-  }
-};
-struct OctRouteFn {
-  bool steiner;
-  NetAttempt operator()(std::size_t, const NetPins& net, const geom::NormalizedObstacles& obs) const {
-    return route_with<OctRouter>(net, obs, steiner);
-  }
-};
-}  // namespace
 
 bool NetRouter::takes_frames(const NetRouteFn& route) {
   return route.target<L1RouteFn>() != nullptr || route.target<OctRouteFn>() != nullptr;

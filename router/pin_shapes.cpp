@@ -1,5 +1,6 @@
 #include "router/pin_shapes.h"
 
+#include <stdexcept>
 #include <algorithm>
 
 #include "geom/predicates.h"
@@ -207,6 +208,11 @@ std::optional<std::size_t> PinShapes::meets_obstacle(const geom::Polygon& pin) c
   return std::nullopt;
 }
 
+void PinShapes::set_lattice(std::int64_t k) {
+  if (k < 1) throw std::invalid_argument("the lattice must be at least 1");
+  lattice_ = k;
+}
+
 std::vector<Point> PinShapes::candidates(const geom::Polygon& pin, const geom::Polygon& other) const {
   std::vector<Point> out(pin.outer.begin(), pin.outer.end());
   for (const geom::Ring& h : pin.holes) out.insert(out.end(), h.begin(), h.end());
@@ -255,7 +261,7 @@ std::vector<Point> PinShapes::candidates(const geom::Polygon& pin, const geom::P
       const i64 line = rising ? i64{a.x} - a.y : i64{a.x} + a.y;
       auto project = [&](i64 other_line) {  // x + y (rising edge) or x - y (falling edge)
         const i64 twice = other_line + line;
-        for (const i64 x : {floor_div(twice, 2), ceil_div(twice, 2)})
+        for (const i64 x : {floor_div(twice, 2 * lattice_) * lattice_, ceil_div(twice, 2 * lattice_) * lattice_})
           if (x >= xlo && x <= xhi) out.push_back(at_x(x));
       };
       // the other lines whose projection lies in [xlo, xhi]: 2 xlo - line <= other <= 2 xhi - line

@@ -104,6 +104,13 @@ class PinShapes {
   // against a search from every integer point of the shapes.
   std::vector<geom::Point> candidates(const geom::Polygon& pin, const geom::Polygon& other) const;
 
+  // Octilinear, for a plane whose wires are then snapped to multiples of k (NetRouter's scaled
+  // plane; BasicRouter::set_lattice): the projections along the other diagonal onto a 45-degree
+  // edge are rounded down and up to multiples of k in x instead of to integers, so none lies
+  // halfway between two of them (the same convexity argument, over the coarser lattice; exact
+  // for edges whose line is a multiple of k, as a scaled pin's are). 1 (the default): integers.
+  void set_lattice(std::int64_t k);
+
   // The first obstacle (index into the constructor's obstacles) whose interior meets the
   // interior of a shape pin, exactly; nullopt for a point pin or a shape that at most touches
   // obstacles. The routers need shapes that do not: a shape partly under a blockage may be left
@@ -118,6 +125,7 @@ class PinShapes {
  private:
   std::vector<geom::Coord> xs_, ys_;  // the distinct x and y of obstacle vertices, ascending
   bool octilinear_ = false;
+  std::int64_t lattice_ = 1;  // set_lattice()
   std::vector<std::int64_t> sums_, diffs_;  // octilinear: their distinct x + y and x - y, ascending
   std::optional<geom::Box> domain_;
   std::vector<geom::Polygon> obstacles_;

@@ -2146,7 +2146,8 @@ void ProjectionLines::inside(Point a, Point b, std::vector<Point>& cand) const {
   const i64 lo = sl == 1 ? i64{a.x} + a.y : i64{b.y} - b.x, hi = sl == 1 ? i64{b.x} + b.y : i64{a.y} - a.x;
   for (const i64 v : strictly_between(other, lo, hi)) {
     const i64 twice = sl == 1 ? v - c0 : c0 - v;  // 2x
-    const i64 x0 = static_cast<i64>(floor_div(twice, 2)), x1 = static_cast<i64>(geom::ceil_div(twice, 2));
+    const i64 x0 = static_cast<i64>(floor_div(twice, 2 * lattice_)) * lattice_,
+              x1 = static_cast<i64>(geom::ceil_div(twice, 2 * lattice_)) * lattice_;
     for (const i64 x : {x0, x1})
       if (a.x < x && x < b.x) cand.push_back(on(x));
   }
@@ -2160,9 +2161,10 @@ namespace {
 // and targets), each mapped to the source index the caller sees (Impl: WaveCore and SourceOrigin).
 template <class Impl>
 void run_with_segment_sources(Impl& c, std::span<const Point> sources, std::span<const geom::Segment> segment_sources,
-                              std::span<const Point> targets, WavefrontStop stop, bool octilinear) {
+                              std::span<const Point> targets, WavefrontStop stop, bool octilinear,
+                              i64 lattice = 1) {
   // The ring vertices (frame included) and the targets: where projections onto a segment fall.
-  ProjectionLines lines(octilinear);
+  ProjectionLines lines(octilinear, lattice);
   for (uint32_t v = 0; v < c.nvert; ++v) lines.add(c.pts[v]);
   for (const Point t : targets) lines.add(t);
   lines.done();
@@ -2243,8 +2245,9 @@ void OctWavefront::run(std::span<const Point> sources, std::span<const Point> ta
 }
 
 void OctWavefront::run(std::span<const Point> sources, std::span<const geom::Segment> segment_sources,
-                       std::span<const Point> targets, Stop stop) {
-  run_with_segment_sources(*impl_, sources, segment_sources, targets, stop, true);
+                       std::span<const Point> targets, Stop stop, std::int64_t lattice) {
+  if (lattice < 1) throw std::invalid_argument("the segment sources' lattice must be at least 1");
+  run_with_segment_sources(*impl_, sources, segment_sources, targets, stop, true, lattice);
 }
 
 std::optional<geom::Root2> OctWavefront::target_distance(std::size_t i) const {

@@ -230,8 +230,14 @@ class OctWavefront {
   // which may fall halfway between two lattice points: both are sources). The least over all
   // points of S may be less (at a half-integer point), not reachable by a wire with integer
   // vertices.
+  // LATTICE k > 1 (NetRouter's scaled plane, NetRouterOptions::exact_gaps: its wires are snapped
+  // to multiples of k): the other diagonal's projections onto a diagonal S are rounded down and
+  // up to multiples of k in x instead of to integers (S's own line being near such a multiple,
+  // the points are then near multiples of k in y too), so no source lies halfway between two
+  // multiples of k, where snapping would move a wire off its direction. The same argument (the
+  // least over those points of S is next to a break) holds for the coarser lattice.
   void run(std::span<const geom::Point> sources, std::span<const geom::Segment> segment_sources,
-           std::span<const geom::Point> targets, Stop stop);
+           std::span<const geom::Point> targets, Stop stop, std::int64_t lattice = 1);
   std::optional<geom::Root2> target_distance(std::size_t i) const;
   std::optional<std::size_t> target_source(std::size_t i) const;
   std::vector<geom::Point> target_path(std::size_t i) const;
@@ -298,7 +304,7 @@ class NormWavefront {
 // then done() sorts; the diagonal keys only when `octilinear`.
 class ProjectionLines {
  public:
-  explicit ProjectionLines(bool octilinear) : octilinear_(octilinear) {}
+  explicit ProjectionLines(bool octilinear, std::int64_t lattice = 1) : octilinear_(octilinear), lattice_(lattice) {}
   void add(geom::Point p);
   void done();
   // Appends to `out` the lattice points of segment ab (horizontal, vertical or at 45 degrees;
@@ -306,11 +312,14 @@ class ProjectionLines {
   // points meets it (for a horizontal segment the vertical lines only, and the other way round),
   // and for octilinear along a diagonal segment where the other diagonal through one of them
   // meets it, rounded down and up to the segment's lattice when that is halfway between two
-  // lattice points (OctWavefront::run says why these suffice).
+  // lattice points (OctWavefront::run says why these suffice). With `lattice` k > 1, the
+  // other diagonal's points are instead rounded down and up to multiples of k in x
+  // (OctWavefront::run, LATTICE).
   void inside(geom::Point a, geom::Point b, std::vector<geom::Point>& out) const;
 
  private:
   bool octilinear_;
+  std::int64_t lattice_ = 1;
   std::vector<std::int64_t> xs_, ys_, ds_, ss_;  // distinct x, y, y - x, x + y, ascending
 };
 

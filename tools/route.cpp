@@ -643,14 +643,9 @@ void add_route(CLI::App& app, int& status) {
           steiner_ok[i] = args->tree == "steiner" && !why;
         }
         try {
-          // exact gaps (NetRouter::scale; not with --tighten, whose tightening closes them, nor
-          // for octilinear Steiner trees, whose branches may meet half way between the scaled
-          // plane's multiples: NetRouterStats::snap_far, in 16 of 404 trees in exact_gaps_test),
+          // exact gaps (NetRouter::scale; not with --tighten, whose tightening closes them),
           // checked; routed again without them if the check fails
-          bool oct_steiner = false;
-          for (std::size_t i = 0; i < layout->nets.size(); ++i)
-            oct_steiner = oct_steiner || (octilinear && steiner_ok[i] && layout->nets[i].pins.size() >= 3);
-          for (const bool exact : {!args->tighten && !oct_steiner, false}) {
+          for (const bool exact : {!args->tighten, false}) {
           router::NetRouterOptions nro;
           nro.octilinear = octilinear;
           nro.stop = stop;
