@@ -17,6 +17,7 @@
 
 #include "geom/bg.h"
 #include "geom/predicates.h"
+#include "geom/validate.h"
 #include "router/bend_router.h"
 #include "router/l1_router.h"
 #include "router/lookahead.h"
@@ -307,6 +308,49 @@ Lines trim_at_pads(const Lines& wires, std::span<const Ring> pads) {
 
 }  // namespace
 
+std::optional<Polygon> pad_staircase(const Polygon& pin, std::int64_t step) {
+  if (step < 1) throw std::invalid_argument("pad_staircase: a step below 1");
+  if (is_point_pin(pin) || !pin_shape_supported(pin) || is_rectilinear_shape(pin)) return std::nullopt;
+  // the non-vertical edges, left to right, and the vertices' x range
+  std::vector<std::pair<Point, Point>> edges;
+  std::int64_t x0 = std::numeric_limits<std::int64_t>::max(), x1 = std::numeric_limits<std::int64_t>::min();
+  bool on_lattice = true;
+  for_each_pin_edge(pin, [&](Point a, Point b) {
+    on_lattice = on_lattice && a.x % step == 0 && a.y % step == 0;
+    x0 = std::min<std::int64_t>(x0, a.x);
+    x1 = std::max<std::int64_t>(x1, a.x);
+    if (a.x != b.x) edges.push_back(a.x < b.x ? std::pair{a, b} : std::pair{b, a});
+  });
+  if (!on_lattice || (x1 - x0) / step > NetSpace::kMaxStaircaseColumns) return std::nullopt;
+  // per column [x, x + step]: the trapezoids between consecutive edges spanning it (even-odd, so
+  // holes stay out; the edges' slopes are 0 and +-1, so their y's at the sides are exact), each
+  // giving the rectangle of the y's it holds at both sides
+  std::vector<Polygon> rects;
+  std::vector<std::pair<std::int64_t, std::int64_t>> ys;
+  for (std::int64_t x = x0; x < x1; x += step) {
+    ys.clear();
+    for (const auto& [a, b] : edges)
+      if (a.x <= x && x + step <= b.x) {
+        const std::int64_t sl = (std::int64_t{b.y} - a.y) / (std::int64_t{b.x} - a.x);  // -1, 0 or 1
+        ys.emplace_back(a.y + sl * (x - a.x), a.y + sl * (x + step - a.x));
+      }
+    // edges do not cross inside the column: ordered by their sum of ends
+    std::sort(ys.begin(), ys.end(), [](const auto& u, const auto& v) { return u.first + u.second < v.first + v.second; });
+    for (std::size_t i = 0; i + 1 < ys.size(); i += 2) {
+      const std::int64_t lo = std::max(ys[i].first, ys[i].second), hi = std::min(ys[i + 1].first, ys[i + 1].second);
+      if (lo >= hi) continue;  // a peak's column, or a part one step thin
+      const auto c = [](std::int64_t v) { return static_cast<geom::Coord>(v); };
+      rects.push_back(Polygon{{{c(x), c(lo)}, {c(x + step), c(lo)}, {c(x + step), c(hi)}, {c(x), c(hi)}}, {}});
+    }
+  }
+  if (rects.empty()) return std::nullopt;
+  // their union (exact: horizontal and vertical edges only) must be one polygon; a part too thin
+  // for a column splits it, or joins it at a corner only (then not one valid polygon either)
+  geom::NormalizedObstacles u = geom::normalize_obstacles(rects, box_of(pin.outer));
+  if (u.obstacles.size() != 1 || !geom::validate_polygon(u.obstacles[0]).empty()) return std::nullopt;
+  return std::move(u.obstacles[0]);
+}
+
 NetSpace::~NetSpace() = default;
 NetSpace::NetSpace(NetSpace&&) noexcept = default;
 NetSpace& NetSpace::operator=(NetSpace&&) noexcept = default;
@@ -397,6 +441,24 @@ NetSpace::NetSpace(const geom::Box& domain, std::span<const geom::Polygon> obsta
   index_components(ix.grown);
   ix.plain.polys.assign(obstacles.begin(), obstacles.end());
   index_components(ix.plain);
+  // reach(): without the cut of pins with 45-degree edges, such a pin that meets the grown
+  // blockages is reached as its staircase
+  if (!cut_shapes_ && a_ > 0)
+    for (std::size_t n = 0; n < nets_.size(); ++n)
+      for (std::size_t k = 0; k < nets_[n].pins.size(); ++k) {
+        const Polygon& pin = nets_[n].pins[k];
+        if (is_point_pin(pin) || !pin_shape_supported(pin) || is_pad(pin, false)) continue;
+        std::vector<Index::Entry> found;
+        ix.grown.tree.query(bgi::intersects(box_of(pin.outer)), std::back_inserter(found));
+        if (found.empty()) continue;
+        std::vector<Polygon> near;
+        for (const auto& [box, c] : found) near.push_back(ix.grown.polys[c]);
+        if (!PinShapes(near).meets_obstacle(pin)) continue;
+        std::optional<Polygon> st = pad_staircase(pin, rules.scale);
+        if (!st) continue;
+        if (reach_.empty()) reach_ = nets_;
+        reach_[n].pins[k] = std::move(*st);
+      }
 }
 
 std::vector<Polygon> NetSpace::wire_union(const Lines& wires) const {
@@ -484,7 +546,7 @@ geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel lev
   std::vector<Box> access;
   std::vector<Ring> access_ring;  // per access box: empty, or the pad's ring when not a rectangle
   if (!plain) {
-    for (const Polygon& pin : nets_[net].pins) {
+    for (const Polygon& pin : reach(net).pins) {
       if (is_point_pin(pin)) {
         access.push_back(geom::grown_box(Box{pin.outer[0], pin.outer[0]}, access_));
         access_ring.emplace_back();
@@ -1012,7 +1074,7 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
   Tried t;
   NetRouterStats& st = t.counts;
   ++st.attempts;
-  const NetPins& pins = space_.net(net);
+  const NetPins& pins = space_.reach(net);  // (a staircase where a 45-degree pad meets the grown blockages)
   std::vector<Point> pts;
   for (const Polygon& pin : pins.pins) pts.insert(pts.end(), pin.outer.begin(), pin.outer.end());
   const Box& dom = space_.domain();
@@ -1833,12 +1895,15 @@ NetRouter::Explained NetRouter::explain(const NetRouteFn& route, std::size_t net
   }
   if (!clear.routed && clear.code == "ROUTE-0005" && !space_.cuts_shape_pads()) {
     // a shape pin the route function refused in the grown space: one that is not cut out of it
-    for (const Polygon& pin : space_.net(net).pins)
+    // (no staircase, NetSpace::reach)
+    for (const Polygon& pin : space_.reach(net).pins)
       if (!is_point_pin(pin) && pin_shape_supported(pin) && !is_pad(pin, false)) {
         e.code = "ROUTE-0010";
         e.reason = "a shape pin with a 45-degree edge lies within " + a +
-                   " DBU (ceil(w/2) + s) of a blockage: the bend-aware metrics cut only pads with horizontal "
-                   "and vertical edges out of that clearance (their router takes rectilinear obstacles only)";
+                   " DBU (ceil(w/2) + s) of a blockage, and it is too thin for a staircase of unit steps "
+                   "somewhere, or more than " + std::to_string(NetSpace::kMaxStaircaseColumns) +
+                   " DBU wide: the bend-aware metrics reach such a pin only as its staircase (their router takes "
+                   "rectilinear obstacles only)";
         return e;
       }
   }

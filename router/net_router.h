@@ -245,6 +245,13 @@ struct WireOverlay {
   }
 };
 
+// The staircase NetSpace::reach takes for a shape pin with a 45-degree edge (holes and concave
+// pins too), on the lattice of `step` (the scale; see there): nullopt where reach keeps the pin
+// as it is (a point, a pin with no 45-degree edge or another slope, a vertex off the lattice,
+// cells that do not make one valid polygon, or more than NetSpace::kMaxStaircaseColumns
+// columns).
+std::optional<geom::Polygon> pad_staircase(const geom::Polygon& pin, std::int64_t step);
+
 class NetSpace {
  public:
   // obstacles: geom::normalize_obstacles() of the blockages in `domain`.
@@ -266,6 +273,28 @@ class NetSpace {
   // rectilinear obstacles only; shape pins with horizontal and vertical edges only are cut either
   // way).
   bool cuts_shape_pads() const { return cut_shapes_; }
+  // Net i's pins as its own wires are routed to them: its pins, except that without the cut of
+  // shape pins with 45-degree edges (cuts_shape_pads() false) such a pin whose interior meets the
+  // grown blockages is taken as its staircase: the union of the rectangles over each column
+  // [x, x + K] between its leftmost and rightmost vertex (K the scale, 1 without one), one per
+  // trapezoid of the pin over the column (between two consecutive edges that span it), of the
+  // y's the trapezoid holds at both of the column's sides: so the union of the lattice's K x K
+  // cells that lie in the pin. The staircase has horizontal and vertical edges only (so it is cut
+  // out of the grown blockages like a pad with such edges, and the bend-aware router takes it)
+  // and holds every lattice point of the pin that is a corner of such a cell: for a convex pin
+  // every one but its peaks (vertices whose inner angle holds no quadrant of the axes: one of 45
+  // degrees, or of 90 between two 45-degree edges, as a diamond's four corners), for another
+  // also not those in a neck less than a step wide (between a hole or a notch and an edge). So a
+  // rectilinear wire with vertices on that lattice ends on the staircase wherever it could end
+  // on the pin, save those points (a wire that would end at one ends elsewhere on the staircase,
+  // when that is free: never illegal, at most a little longer).
+  // Not when its vertices are not on that lattice, when the rectangles' union is not one valid
+  // polygon (a part of the pin too thin to hold a cell splits it, or joins it at a corner) or when
+  // it has more than kMaxStaircaseColumns columns: the pin then stays as it is (and the net,
+  // when its pin meets the grown blockages, is not routed: ROUTE-0010 says why). Everything else
+  // (the other nets, the checker) sees the pin itself.
+  const NetPins& reach(std::size_t i) const { return reach_.empty() ? nets_[i] : reach_[i]; }
+  static constexpr std::int64_t kMaxStaircaseColumns = 4096;
 
   // Net `net`'s wires as the other nets see them (replacing earlier ones; empty: none).
   void set_wires(std::size_t net, const std::vector<std::vector<geom::Point>>& wires);
@@ -318,6 +347,7 @@ class NetSpace {
  private:
   geom::Box domain_;
   std::vector<NetPins> nets_;
+  std::vector<NetPins> reach_;  // reach(): empty when every net's pins are its own
   std::int64_t a_ = 0, b_ = 1, rule_a_ = 0, rule_b_ = 1;
   std::int64_t access_ = 0;  // a point pin's access square's half-side: a, or K a when scaled
   bool cut_shapes_ = true;

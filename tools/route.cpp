@@ -249,6 +249,19 @@ io::Net scaled_net(const io::Net& net, std::int64_t k) {
   return s;
 }
 
+// The net with the pins the net router routes it to (router::NetSpace::reach: a convex pad with a
+// 45-degree edge in the clearance of a blockage as its staircase under the bend-aware metrics),
+// in the same order as net.pins.
+io::Net with_pins(io::Net net, const router::NetPins& pins) {
+  for (std::size_t j = 0; j < net.pins.size() && j < pins.pins.size(); ++j) {
+    io::Pin& pin = net.pins[j];
+    if (!pin.shape || io::pin_polygon(pin) == pins.pins[j]) continue;
+    pin.shape->kind = io::Shape::Kind::Polygon;
+    pin.shape->polygon = pins.pins[j];
+  }
+  return net;
+}
+
 // The reasons the net router gives from the route function among the plain blockages (the net
 // fails even alone there), whose texts may name points: with exact gaps those were scaled, so
 // such a net is tried again in the layout's own units for its message.
@@ -532,9 +545,9 @@ void add_route(CLI::App& app, int& status) {
             net_threads = nro.threads;
             router::NetRouter nr(domain, norm.obstacles, net_pins(*layout), rules, nro);
             const std::int64_t k = nr.scale();
-            nr.run([&](std::size_t i, const router::NetPins&, const geom::NormalizedObstacles& w) {
+            nr.run([&](std::size_t i, const router::NetPins& pins, const geom::NormalizedObstacles& w) {
               const router::BendRouter br(w.domain, w.obstacles);
-              NetResult r = route_net_bends(*layout, scaled_net(layout->nets[i], k), obs, br, metric, c * k);
+              NetResult r = route_net_bends(*layout, with_pins(scaled_net(layout->nets[i], k), pins), obs, br, metric, c * k);
               router::NetAttempt a;
               a.routed = r.route.status == "routed";
               for (const io::Wire& wire : r.route.wires) a.wires.push_back(wire.points);

@@ -789,9 +789,12 @@ TEST(Route, ShapePins) {
 
 // With the bend-aware metrics a pad whose edges are horizontal and vertical only (here an L whose
 // short side lies on a blockage's side, so all of it is within the clearance a = 3) is cut out of
-// the grown blockage like a rectangle (since 2026-12-04; ROUTE-0010 before), and the written
-// layout passes the checker; a pad with a 45-degree edge on the blockage is still refused with
-// ROUTE-0010 (their router takes rectilinear obstacles only).
+// the grown blockage like a rectangle (since 2026-12-04; ROUTE-0010 before), pads with 45-degree
+// edges (a diamond whose corner touches the wall, a square with a V notch on it) are reached as
+// their staircases (since 2026-12-04, NetSpace::reach; ROUTE-0010 before), and the written
+// layout passes the checker; a diamond too small for a staircase (one unit from centre to
+// corner) on the wall is still refused with ROUTE-0010 (their router takes rectilinear
+// obstacles only).
 TEST(Route, BendMetricsReachRectilinearPadsOnBlockages) {
   const std::string file = layout_file("route_l_pad", R"(  <boundary x0="0" y0="0" x1="100" y1="60"/>
   <rules wire-width="2" spacing="2"/>
@@ -804,6 +807,14 @@ TEST(Route, BendMetricsReachRectilinearPadsOnBlockages) {
     <pin name="pad"><polygon points="44,24 54,24 54,34 49,29 44,34"/></pin>
     <pin name="p" x="90" y="10"/>
   </net>
+  <net name="diamond">
+    <pin name="pad"><polygon points="44,6 50,0 56,6 50,12"/></pin>
+    <pin name="p" x="90" y="50"/>
+  </net>
+  <net name="tiny">
+    <pin name="pad"><polygon points="44,18 45,17 46,18 45,19"/></pin>
+    <pin name="p" x="90" y="30"/>
+  </net>
 )");
   const std::string dir = temp_dir("route_l_pad_out");
   for (const char* metric : {"combined", "link"}) {
@@ -813,14 +824,16 @@ TEST(Route, BendMetricsReachRectilinearPadsOnBlockages) {
     const auto r = run_taut(args);
     EXPECT_EQ(r.status, 1) << metric << ": " << r.err;
     EXPECT_EQ(r.err.find("net \"ell\" not routed"), std::string::npos) << metric << ": " << r.err;
-    EXPECT_NE(r.err.find("[ROUTE-0010] net \"notch\" not routed: a shape pin with a 45-degree edge lies within 3 DBU"),
+    EXPECT_NE(r.err.find("[ROUTE-0010] net \"tiny\" not routed: a shape pin with a 45-degree edge lies within 3 DBU (ceil(w/2) "
+                         "+ s) of a blockage, and it is too thin for a staircase"),
               std::string::npos)
         << metric << ": " << r.err;
     io::ReadResult rr = io::read_layout(out);
     ASSERT_TRUE(rr.layout && rr.layout->routes) << metric;
     int routed = 0;
-    for (const io::Route& route : rr.layout->routes->routes) routed += route.net == "ell" && route.status == "routed";
-    EXPECT_EQ(routed, 1) << metric;
+    for (const io::Route& route : rr.layout->routes->routes)
+      routed += (route.net == "ell" || route.net == "diamond" || route.net == "notch") && route.status == "routed";
+    EXPECT_EQ(routed, 3) << metric << ": " << r.err;
     EXPECT_EQ(run_taut({"check", out, "-q"}).status, 0) << metric;
   }
   // the same L-shaped pad with L1 wires: reached too (cut since 2026-12-03)

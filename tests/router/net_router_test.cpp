@@ -16,6 +16,7 @@
 #include "io/layout_geometry.h"
 #include "io/movingai.h"
 #include "geom/predicates.h"
+#include "geom/validate.h"
 #include "oracle/l1_oracle.h"
 #include "router/bend_router.h"
 #include "router/check.h"
@@ -608,6 +609,155 @@ TEST(NetRouter, ReviewCases) {
   }
 }
 
+// router::pad_staircase (NetSpace::reach, the bend-aware metrics' way onto a pad with a 45-degree
+// edge) against brute force on 3,000 random octilinear pins (boxes with their four corners cut
+// by 0 up to the shorter side: diamonds, octagons, right triangles, cut corners, pentagons; a
+// third with a V notch in the top side, some with a diamond hole), on the integer lattice and on
+// the lattice of 8 (a scaled plane): the staircase is a valid polygon (geom::validate_polygon)
+// with horizontal and vertical edges, it is the union of the lattice's cells that lie in the
+// pin (the same cells lie in each), so it holds exactly the pin's lattice points that are a
+// corner of such a cell; for a convex pin those are all but the peaks (vertices whose inner
+// angle holds no quadrant of the axes: 45 degrees, or 90 between two 45-degree edges). Pins it
+// refuses: with a vertex off the lattice, too thin (a diagonal strip one step wide), rectilinear
+// ones.
+TEST(NetRouter, PadStaircasesAreTheCellsInThePin) {
+  std::mt19937 rng(7101);
+  auto uni = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+  int made = 0, refused = 0, peaks = 0, points = 0, holes = 0, notches = 0, thin = 0;
+  for (int n = 0; n < sanitized_share(3000, 200); ++n) {
+    const std::int64_t step = n % 2 ? 8 : 1;
+    const int w = uni(1, 12), h = uni(1, 12), x0 = uni(-20, 20), y0 = uni(-20, 20), m = std::min(w, h);
+    int c[4];  // the cuts at the bottom-left, bottom-right, top-right and top-left corners
+    do {
+      for (int& k : c) k = uni(0, 3) == 0 ? m : uni(0, m);
+    } while (c[0] + c[1] > w || c[1] + c[2] > h || c[2] + c[3] > w || c[3] + c[0] > h);
+    const int x1 = x0 + w, y1 = y0 + h;
+    std::vector<Point> v{{x0 + c[0], y0}, {x1 - c[1], y0}, {x1, y0 + c[1]}, {x1, y1 - c[2]}, {x1 - c[2], y1}};
+    // a third get a V notch of depth d in the top side (concave pins)
+    const int top = (x1 - c[2]) - (x0 + c[3]);
+    bool notched = false;
+    if (n % 3 == 1 && top >= 2 && h >= 2) {
+      const int d = uni(1, std::min(top / 2, h - 1)), mx = uni(x0 + c[3] + d, x1 - c[2] - d);
+      if (d < h - std::max(c[0], c[1])) {  // the notch's bottom stays clear of the bottom cuts
+        v.insert(v.end(), {Point{mx + d, y1}, Point{mx, y1 - d}, Point{mx - d, y1}});
+        notched = true;
+      }
+    }
+    v.insert(v.end(), {Point{x0 + c[3], y1}, Point{x0, y1 - c[3]}, Point{x0, y0 + c[0]}});
+    geom::Ring r;
+    for (const Point p : v)
+      if (r.empty() || r.back() != p) r.push_back(p);
+    while (r.size() > 1 && r.front() == r.back()) r.pop_back();
+    for (Point& p : r) p = {static_cast<geom::Coord>(p.x * step), static_cast<geom::Coord>(p.y * step)};
+    // drop the middle of collinear vertices (two cuts that meet on a side)
+    for (bool again = true; again && r.size() > 3;) {
+      again = false;
+      for (std::size_t i = 0; i < r.size(); ++i)
+        if (geom::orient(r[(i + r.size() - 1) % r.size()], r[i], r[(i + 1) % r.size()]) == 0) {
+          r.erase(r.begin() + static_cast<std::ptrdiff_t>(i));
+          again = true;
+          break;
+        }
+    }
+    Polygon pin{r, {}};
+    // and a sixth of the others a diamond hole (clockwise) at the box's centre, when it lies inside
+    if (n % 6 == 2 && w >= 6 && h >= 6) {
+      const geom::Coord cx = static_cast<geom::Coord>((x0 + w / 2) * step), cy = static_cast<geom::Coord>((y0 + h / 2) * step),
+                        hr = static_cast<geom::Coord>(uni(1, 2) * step);
+      const geom::Ring hole{{cx - hr, cy}, {cx, cy + hr}, {cx + hr, cy}, {cx, cy - hr}};
+      bool inside = true;
+      for (const Point q : hole) inside = inside && geom::locate(q, Polygon{r, {}}) == geom::Location::Inside;
+      if (inside) pin.holes.push_back(hole);
+    }
+    if (!geom::validate_polygon(pin).empty()) continue;  // a notch that met a cut
+    const std::string at = "case " + std::to_string(n);
+    const std::optional<Polygon> st = router::pad_staircase(pin, step);
+    bool sloped = false;
+    router::for_each_pin_edge(pin, [&](Point a, Point b) { sloped = sloped || (a.x != b.x && a.y != b.y); });
+    if (!sloped) {
+      EXPECT_FALSE(st.has_value()) << at << ": a rectilinear pin needs no staircase";
+      continue;
+    }
+    if (!st) {  // pins too thin for one (two columns that do not overlap)
+      ++refused;
+      continue;
+    }
+    ++made;
+    ASSERT_TRUE(geom::validate_polygon(*st).empty()) << at << ": " << geom::validate_polygon(*st)[0].message;
+    router::for_each_pin_edge(*st, [&](Point a, Point b) {
+      EXPECT_TRUE(a.x == b.x || a.y == b.y) << at;
+      EXPECT_TRUE(router::in_pin(a, pin)) << at;
+    });
+    ASSERT_FALSE(::testing::Test::HasFailure()) << at;
+    holes += !pin.holes.empty();
+    notches += notched;
+    // the peaks: the inner angle at b (counter-clockwise from the edge out to the edge in) as a
+    // multiple of 45 degrees, by the directions' indices (0 east, 1 north-east, ... 7)
+    auto dir = [](Point from, Point to) {
+      const int sx = (to.x > from.x) - (to.x < from.x), sy = (to.y > from.y) - (to.y < from.y);
+      static const int index[3][3] = {{5, 4, 3}, {6, -1, 2}, {7, 0, 1}};  // [sx + 1][sy + 1]
+      return index[sx + 1][sy + 1];
+    };
+    // (the outer ring counter-clockwise, holes clockwise: the pin lies to the left of each)
+    std::vector<Point> peak;
+    std::vector<const geom::Ring*> rings{&pin.outer};
+    for (const geom::Ring& hr : pin.holes) rings.push_back(&hr);
+    for (const geom::Ring* rg : rings)
+      for (std::size_t i = 0; i < rg->size(); ++i) {
+        const Point a = (*rg)[(i + rg->size() - 1) % rg->size()], b = (*rg)[i], c2 = (*rg)[(i + 1) % rg->size()];
+        const int out = dir(b, c2), in = dir(b, a), angle = ((in - out) % 8 + 8) % 8;  // in 45 degrees
+        if (angle == 1 || (angle == 2 && out % 2 == 1)) peak.push_back(b);
+      }
+    peaks += static_cast<int>(peak.size());
+    // the cells of the lattice that lie in the pin: all four corners and the centre in it (both
+    // doubled, so the centre is an integer point; the pin's edges run through lattice points at
+    // 0, 45 and 90 degrees, so one that cut the cell would leave a corner or the centre out)
+    auto doubled = [](Polygon q) {
+      for (Point& v2 : q.outer) v2 = {static_cast<geom::Coord>(2 * v2.x), static_cast<geom::Coord>(2 * v2.y)};
+      for (geom::Ring& rg : q.holes)
+        for (Point& v2 : rg) v2 = {static_cast<geom::Coord>(2 * v2.x), static_cast<geom::Coord>(2 * v2.y)};
+      return q;
+    };
+    const Polygon twice = doubled(*st), twice_pin = doubled(pin);
+    auto at_lattice = [&](int x, int y) { return Point{static_cast<geom::Coord>(x * step), static_cast<geom::Coord>(y * step)}; };
+    auto cell_in = [&](const Polygon& q, const Polygon& q2, int x, int y) {  // the cell with lower-left corner (x, y) in q
+      const Point centre{static_cast<geom::Coord>((2 * x + 1) * step), static_cast<geom::Coord>((2 * y + 1) * step)};
+      return router::in_pin(centre, q2) && router::in_pin(at_lattice(x, y), q) && router::in_pin(at_lattice(x + 1, y), q) &&
+             router::in_pin(at_lattice(x, y + 1), q) && router::in_pin(at_lattice(x + 1, y + 1), q);
+    };
+    const bool convex = pin.holes.empty() && !notched;
+    for (int x = x0 - 1; x <= x1 + 1; ++x)
+      for (int y = y0 - 1; y <= y1 + 1; ++y) {
+        // the staircase is the union of the pin's cells: the same cells, and a lattice point is
+        // held exactly when it is a corner of one of them
+        ASSERT_EQ(cell_in(*st, twice, x, y), cell_in(pin, twice_pin, x, y)) << at << ": the cell at " << x << "," << y;
+        const Point p = at_lattice(x, y);
+        const bool in = router::in_pin(p, pin), held = router::in_pin(p, *st);
+        const bool corner = cell_in(pin, twice_pin, x, y) || cell_in(pin, twice_pin, x - 1, y) ||
+                            cell_in(pin, twice_pin, x, y - 1) || cell_in(pin, twice_pin, x - 1, y - 1);
+        ASSERT_EQ(held, corner) << at << ": " << p.x << "," << p.y;
+        const bool is_peak = std::find(peak.begin(), peak.end(), p) != peak.end();
+        points += held;
+        thin += in && !held && !is_peak;
+        // a convex pin: every lattice point but the peaks
+        if (convex) ASSERT_EQ(held, in && !is_peak) << at << ": " << p.x << "," << p.y;
+      }
+  }
+  // a diagonal strip one step wide, and a diamond one step from centre to corner (its centre
+  // has no room): no staircase; a diamond with vertices off the lattice of 8: none; two steps: one
+  EXPECT_FALSE(router::pad_staircase(Polygon{{{0, 0}, {1, 0}, {11, 10}, {10, 10}}, {}}, 1).has_value());
+  EXPECT_FALSE(router::pad_staircase(Polygon{{{0, 8}, {8, 0}, {16, 8}, {8, 16}}, {}}, 8).has_value());
+  EXPECT_FALSE(router::pad_staircase(Polygon{{{4, 16}, {16, 4}, {28, 16}, {16, 28}}, {}}, 8).has_value());
+  EXPECT_TRUE(router::pad_staircase(Polygon{{{4, 16}, {16, 4}, {28, 16}, {16, 28}}, {}}, 4).has_value());
+  EXPECT_TRUE(router::pad_staircase(Polygon{{{0, 16}, {16, 0}, {32, 16}, {16, 32}}, {}}, 8).has_value());
+  std::printf("%d staircases (%d with a V notch, %d with a hole; %d peaks left out, %d lattice points held, %d more left "
+              "out in necks thinner than a step), %d pins too thin for one\n",
+              made, notches, holes, peaks, points, thin, refused);
+  EXPECT_GT(made, sanitized_share(3000, 200) / 2);
+  EXPECT_GT(notches, 0);
+  EXPECT_GT(holes, 0);
+}
+
 // Pads that are not rectangles (diamonds, octagons, boxes with a cut corner: convex, edges at 0,
 // 45 and 90 degrees; since 2026-12-03 concave ones too, L-shapes and squares with a V notch, as
 // convex pieces) are cut out of their net's grown blockages like rectangular ones
@@ -631,18 +781,43 @@ TEST(NetRouter, OctilinearPadsNearBlockagesAreReached) {
         geom::normalize_obstacles(box_polygons(std::vector<geom::Box>{{{20, -40}, {60, 40}}}), domain);
     const Polygon diamond{{{0, 0}, {10, -10}, {20, 0}, {10, 10}}, {}};  // its right tip on the blockage
     const std::vector<router::NetPins> nets{{"n", {diamond, Polygon{{{-100, -100}}, {}}}}};
+    // (cover 16: not cut, reached as its staircase since 2026-12-04, NetSpace::reach)
     for (const int cover : {0, 16}) {
       router::NetRouter nr(norm.domain, norm.obstacles, nets, {2, 2, cover});
       nr.run(router::NetRouter::l1_router(false));
-      EXPECT_EQ(nr.outcomes()[0].routed, cover == 0) << cover << ": " << nr.outcomes()[0].code << " " << nr.outcomes()[0].reason;
-      if (nr.outcomes()[0].routed) {
-        EXPECT_TRUE(router::check_routes(norm, check_nets(nets, nr), {2, 2}).problems.empty());
+      EXPECT_TRUE(nr.outcomes()[0].routed) << cover << ": " << nr.outcomes()[0].code << " " << nr.outcomes()[0].reason;
+      EXPECT_TRUE(router::check_routes(norm, check_nets(nets, nr), {2, 2}).problems.empty());
+    }
+    {
+      // the staircase: in the pin, horizontal and vertical edges, every lattice point of the
+      // diamond but its four peaks (vertices between two 45-degree edges)
+      const router::NetSpace space(norm.domain, norm.obstacles, nets, {2, 2, 16});
+      const Polygon& st = space.reach(0).pins[0];
+      ASSERT_NE(st.outer.size(), 4u);
+      for (std::size_t i = 0; i < st.outer.size(); ++i) {
+        const Point a = st.outer[i], b = st.outer[(i + 1) % st.outer.size()];
+        EXPECT_TRUE(a.x == b.x || a.y == b.y);
+        EXPECT_TRUE(router::in_pin(a, diamond));
       }
+      int held = 0, lattice = 0;
+      for (int x = 0; x <= 20; ++x)
+        for (int y = -10; y <= 10; ++y)
+          if (router::in_pin({x, y}, diamond)) {
+            ++lattice;
+            const bool tip = ((x == 0 || x == 20) && y == 0) || (x == 10 && (y == -10 || y == 10));
+            EXPECT_EQ(router::in_pin({x, y}, st), !tip) << x << "," << y;
+            held += router::in_pin({x, y}, st);
+          }
+      EXPECT_EQ(held, lattice - 4);
+      // a pin far from the blockages stays as it is
+      const std::vector<router::NetPins> far{{"f", {Polygon{{{-100, 0}, {-90, -10}, {-80, 0}, {-90, 10}}, {}}, Polygon{{{-100, -100}}, {}}}}};
+      EXPECT_EQ(router::NetSpace(norm.domain, norm.obstacles, far, {2, 2, 16}).reach(0).pins[0].outer.size(), 4u);
     }
   }
   long long layouts = 0, pads = 0, with_cut = 0, without = 0, checked = 0, oct_routed = 0;
   long long notch_pads = 0, notch_cut = 0, notch_without = 0;
   long long l_pads = 0, l_cut = 0, l_cover = 0, l_bend = 0, bend_routed = 0;
+  long long convex45_pads = 0, convex45_cut = 0, convex45_bend = 0, notch_bend = 0;  // diamonds, octagons, cut corners
   const int n = static_cast<int>(sanitized_share(120, 4));
   for (int seed = 1; seed <= n; ++seed) {
     std::mt19937 rng(static_cast<unsigned>(seed) * 7919u);
@@ -703,6 +878,7 @@ TEST(NetRouter, OctilinearPadsNearBlockagesAreReached) {
     pads += static_cast<long long>(nets.size());
     notch_pads += std::count(kinds.begin(), kinds.end(), 4);
     l_pads += std::count(kinds.begin(), kinds.end(), 3);
+    convex45_pads += std::count_if(kinds.begin(), kinds.end(), [](int k) { return k <= 2; });
     for (const int cover : {0, 16}) {
       router::NetRouter nr(norm.domain, norm.obstacles, nets, {w, s, cover});
       nr.run(router::NetRouter::l1_router(false));
@@ -711,6 +887,7 @@ TEST(NetRouter, OctilinearPadsNearBlockagesAreReached) {
         routed += nr.outcomes()[i].routed;
         if (kinds[i] == 4) (cover == 0 ? notch_cut : notch_without) += nr.outcomes()[i].routed;
         if (kinds[i] == 3) (cover == 0 ? l_cut : l_cover) += nr.outcomes()[i].routed;
+        if (kinds[i] <= 2 && cover == 0) convex45_cut += nr.outcomes()[i].routed;
       }
       (cover == 0 ? with_cut : without) += routed;
       if (cover == 0) {
@@ -743,6 +920,8 @@ TEST(NetRouter, OctilinearPadsNearBlockagesAreReached) {
       for (std::size_t i = 0; i < nets.size(); ++i) {
         bend_routed += nr.outcomes()[i].routed;
         if (kinds[i] == 3) l_bend += nr.outcomes()[i].routed;
+        if (kinds[i] <= 2) convex45_bend += nr.outcomes()[i].routed;
+        if (kinds[i] == 4) notch_bend += nr.outcomes()[i].routed;
       }
       const router::CheckResult cr = router::check_routes(norm, check_nets(nets, nr), {w, s});
       EXPECT_TRUE(cr.problems.empty()) << "seed " << seed << (link ? " link" : " combined") << ": " << cr.problems[0].message;
@@ -755,11 +934,22 @@ TEST(NetRouter, OctilinearPadsNearBlockagesAreReached) {
               "by the bend-aware metrics (%lld nets in all, passing the checker)\n",
               layouts, pads, with_cut, without, oct_routed, notch_pads, notch_cut, notch_without, l_pads, l_cut, l_cover,
               l_bend, bend_routed);
-  EXPECT_GE(notch_cut, notch_without + sanitized_share(10, 4));
+  std::printf("%lld convex pads with a 45-degree edge: %lld routed with the cut (L1), %lld by the bend-aware metrics (as "
+              "their staircases); the V-notched ones: %lld by those metrics\n",
+              convex45_pads, convex45_cut, convex45_bend, notch_bend);
+  // (before the staircases the V-notched pads routed 0 times without the cut, and this read
+  // notch_cut >= notch_without + 10; the staircases now route about as many as the cut)
+  EXPECT_GE(10 * notch_without, 9 * notch_cut);
+  EXPECT_GE(10 * notch_bend, 9 * notch_cut);
   EXPECT_GE(10 * l_bend, 9 * l_cut);
+  EXPECT_GE(10 * convex45_bend, 9 * convex45_cut);
+  EXPECT_GT(convex45_cut, 0);
   EXPECT_GE(10 * l_cover, 9 * l_cut);
-  EXPECT_GE(with_cut, without + sanitized_share(60, 4));
-  EXPECT_GE(oct_routed, without + sanitized_share(60, 4));
+  // (before the staircases, 2026-12-04, the run with cover_pieces > 0 left every pad with a
+  // 45-degree edge near a blockage unreached, and these two read "at least 60 more"; now the
+  // staircases reach about as many as the cut)
+  EXPECT_GE(10 * without, 9 * with_cut);
+  EXPECT_GE(10 * oct_routed, 9 * with_cut);
   EXPECT_GE(checked, sanitized_share(100, 4));
 }
 
