@@ -1074,12 +1074,15 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
   Tried t;
   NetRouterStats& st = t.counts;
   ++st.attempts;
-  const NetPins& pins = space_.reach(net);  // (a staircase where a 45-degree pad meets the grown blockages)
+  // the pins routed to (a staircase where a 45-degree pad meets the grown blockages, under the
+  // bend-aware metrics); the windows round the pins themselves, as first_window() (a staircase
+  // lies in its pin, so the proofs below only get more cautious)
+  const NetPins& pins = space_.reach(net);
   std::vector<Point> pts;
-  for (const Polygon& pin : pins.pins) pts.insert(pts.end(), pin.outer.begin(), pin.outer.end());
+  for (const Polygon& pin : space_.net(net).pins) pts.insert(pts.end(), pin.outer.begin(), pin.outer.end());
   const Box& dom = space_.domain();
   const Box hp = pts.empty() ? dom : box_of(pts);
-  std::int64_t m = first_margin(pins, hp, space_.blockage_clearance(), space_.net_clearance());  // as first_window()
+  std::int64_t m = first_margin(space_.net(net), hp, space_.blockage_clearance(), space_.net_clearance());  // as first_window()
   bool fitted = false;  // grown once to the margin its answer needs (see below)
   // the wavefronts' frame merged in the space's union
   const bool framed = options_.framed ? options_.framed(net) : takes_frames(route);

@@ -249,7 +249,7 @@ io::Net scaled_net(const io::Net& net, std::int64_t k) {
   return s;
 }
 
-// The net with the pins the net router routes it to (router::NetSpace::reach: a convex pad with a
+// The net with the pins the net router routes it to (router::NetSpace::reach: a pad with a
 // 45-degree edge in the clearance of a blockage as its staircase under the bend-aware metrics),
 // in the same order as net.pins.
 io::Net with_pins(io::Net net, const router::NetPins& pins) {
@@ -686,6 +686,7 @@ void add_route(CLI::App& app, int& status) {
             const io::Net sn = scaled_net(net, k);
             if (octilinear) {
               router::OctRouter rt(obs.domain, obs.obstacles);
+              rt.set_lattice(k);  // no vertex half way between the scaled plane's multiples (NetRouter::oct_router does the same)
               r = route_net(*layout, sn, rt, steiner_ok[i]);
             } else {
               router::L1Router rt(obs.domain, obs.obstacles);

@@ -671,6 +671,22 @@ TEST(NetRouter, PadStaircasesAreTheCellsInThePin) {
     }
     if (!geom::validate_polygon(pin).empty()) continue;  // a notch that met a cut
     const std::string at = "case " + std::to_string(n);
+    // the cells of the lattice that lie in the pin: all four corners and the centre in it (both
+    // doubled, so the centre is an integer point; the pin's edges run through lattice points at
+    // 0, 45 and 90 degrees, so one that cut the cell would leave a corner or the centre out)
+    auto doubled = [](Polygon q) {
+      for (Point& v2 : q.outer) v2 = {static_cast<geom::Coord>(2 * v2.x), static_cast<geom::Coord>(2 * v2.y)};
+      for (geom::Ring& rg : q.holes)
+        for (Point& v2 : rg) v2 = {static_cast<geom::Coord>(2 * v2.x), static_cast<geom::Coord>(2 * v2.y)};
+      return q;
+    };
+    const Polygon twice_pin = doubled(pin);
+    auto at_lattice = [&](int x, int y) { return Point{static_cast<geom::Coord>(x * step), static_cast<geom::Coord>(y * step)}; };
+    auto cell_in = [&](const Polygon& q, const Polygon& q2, int x, int y) {  // the cell with lower-left corner (x, y) in q
+      const Point centre{static_cast<geom::Coord>((2 * x + 1) * step), static_cast<geom::Coord>((2 * y + 1) * step)};
+      return router::in_pin(centre, q2) && router::in_pin(at_lattice(x, y), q) && router::in_pin(at_lattice(x + 1, y), q) &&
+             router::in_pin(at_lattice(x, y + 1), q) && router::in_pin(at_lattice(x + 1, y + 1), q);
+    };
     const std::optional<Polygon> st = router::pad_staircase(pin, step);
     bool sloped = false;
     router::for_each_pin_edge(pin, [&](Point a, Point b) { sloped = sloped || (a.x != b.x && a.y != b.y); });
@@ -678,8 +694,19 @@ TEST(NetRouter, PadStaircasesAreTheCellsInThePin) {
       EXPECT_FALSE(st.has_value()) << at << ": a rectilinear pin needs no staircase";
       continue;
     }
-    if (!st) {  // pins too thin for one (two columns that do not overlap)
+    if (!st) {  // pins too thin for one: the lattice's cells in the pin do not make one valid polygon
       ++refused;
+      std::vector<Polygon> cells;
+      for (int x = x0; x < x1; ++x)
+        for (int y = y0; y < y1; ++y)
+          if (cell_in(pin, twice_pin, x, y)) {
+            const auto c = [&](int v) { return static_cast<geom::Coord>(v * step); };
+            cells.push_back(Polygon{{{c(x), c(y)}, {c(x + 1), c(y)}, {c(x + 1), c(y + 1)}, {c(x), c(y + 1)}}, {}});
+          }
+      if (!cells.empty()) {
+        const geom::NormalizedObstacles u = geom::normalize_obstacles(cells, std::nullopt);
+        EXPECT_TRUE(u.obstacles.size() != 1 || !geom::validate_polygon(u.obstacles[0]).empty()) << at << ": refused";
+      }
       continue;
     }
     ++made;
@@ -709,22 +736,7 @@ TEST(NetRouter, PadStaircasesAreTheCellsInThePin) {
         if (angle == 1 || (angle == 2 && out % 2 == 1)) peak.push_back(b);
       }
     peaks += static_cast<int>(peak.size());
-    // the cells of the lattice that lie in the pin: all four corners and the centre in it (both
-    // doubled, so the centre is an integer point; the pin's edges run through lattice points at
-    // 0, 45 and 90 degrees, so one that cut the cell would leave a corner or the centre out)
-    auto doubled = [](Polygon q) {
-      for (Point& v2 : q.outer) v2 = {static_cast<geom::Coord>(2 * v2.x), static_cast<geom::Coord>(2 * v2.y)};
-      for (geom::Ring& rg : q.holes)
-        for (Point& v2 : rg) v2 = {static_cast<geom::Coord>(2 * v2.x), static_cast<geom::Coord>(2 * v2.y)};
-      return q;
-    };
-    const Polygon twice = doubled(*st), twice_pin = doubled(pin);
-    auto at_lattice = [&](int x, int y) { return Point{static_cast<geom::Coord>(x * step), static_cast<geom::Coord>(y * step)}; };
-    auto cell_in = [&](const Polygon& q, const Polygon& q2, int x, int y) {  // the cell with lower-left corner (x, y) in q
-      const Point centre{static_cast<geom::Coord>((2 * x + 1) * step), static_cast<geom::Coord>((2 * y + 1) * step)};
-      return router::in_pin(centre, q2) && router::in_pin(at_lattice(x, y), q) && router::in_pin(at_lattice(x + 1, y), q) &&
-             router::in_pin(at_lattice(x, y + 1), q) && router::in_pin(at_lattice(x + 1, y + 1), q);
-    };
+    const Polygon twice = doubled(*st);
     const bool convex = pin.holes.empty() && !notched;
     for (int x = x0 - 1; x <= x1 + 1; ++x)
       for (int y = y0 - 1; y <= y1 + 1; ++y) {
