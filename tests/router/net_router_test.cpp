@@ -624,7 +624,7 @@ TEST(NetRouter, PadStaircasesAreTheCellsInThePin) {
   std::mt19937 rng(7101);
   auto uni = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
   int made = 0, refused = 0, peaks = 0, points = 0, holes = 0, notches = 0, thin = 0;
-  for (int n = 0; n < sanitized_share(3000, 200); ++n) {
+  for (int n = 0; n < sanitized_share(3000, 5); ++n) {
     const std::int64_t step = n % 2 ? 8 : 1;
     const int w = uni(1, 12), h = uni(1, 12), x0 = uni(-20, 20), y0 = uni(-20, 20), m = std::min(w, h);
     int c[4];  // the cuts at the bottom-left, bottom-right, top-right and top-left corners
@@ -765,7 +765,7 @@ TEST(NetRouter, PadStaircasesAreTheCellsInThePin) {
   std::printf("%d staircases (%d with a V notch, %d with a hole; %d peaks left out, %d lattice points held, %d more left "
               "out in necks thinner than a step), %d pins too thin for one\n",
               made, notches, holes, peaks, points, thin, refused);
-  EXPECT_GT(made, sanitized_share(3000, 200) / 2);
+  EXPECT_GT(made, sanitized_share(3000, 5) / 2);
   EXPECT_GT(notches, 0);
   EXPECT_GT(holes, 0);
 }
