@@ -7,6 +7,7 @@
 // __int128: |d1*d2*d3| < 2^93.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 
@@ -29,6 +30,13 @@ inline constexpr int orientation(Point a, Point b, Point c) { return sign(orient
 // Integer division rounded down / up (d > 0), exact for every numerator; C++'s / rounds towards 0.
 inline constexpr i128 floor_div(i128 n, i128 d) { return n / d - (n % d != 0 && n < 0); }
 inline constexpr i128 ceil_div(i128 n, i128 d) { return -floor_div(-n, d); }
+
+// The multiples of k (k >= 1) next to twice / 2, below and above: the x where two lines meet is
+// often a half-integer (twice = 2x), and a router with a lattice takes both neighbours on it
+// (equal when twice / 2 is a multiple of k).
+inline constexpr std::array<i64, 2> lattice_neighbours(i64 twice, i64 k) {
+  return {static_cast<i64>(floor_div(twice, 2 * i128{k})) * k, static_cast<i64>(ceil_div(twice, 2 * i128{k})) * k};
+}
 
 // Dot product of (b - a) and (d - c).
 inline constexpr i64 dot(Point a, Point b, Point c, Point d) {

@@ -561,8 +561,7 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t, std
             for (const geom::Coord y : gy) add(c - y, y);
             for (const std::int64_t d : gdiff)
               if (lattice_ > 1) {  // the multiples of lattice_ in x next to the crossing, on both diagonals
-                for (const i64 x : {static_cast<i64>(geom::floor_div(c + d, 2 * lattice_)) * lattice_,
-                                    static_cast<i64>(geom::ceil_div(c + d, 2 * lattice_)) * lattice_}) {
+                for (const i64 x : geom::lattice_neighbours(c + d, lattice_)) {
                   add(x, c - x);
                   add(x, x - d);
                 }

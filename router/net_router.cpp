@@ -450,14 +450,13 @@ NetSpace::NetSpace(const geom::Box& domain, std::span<const geom::Polygon> obsta
         if (is_point_pin(pin) || !pin_shape_supported(pin) || is_pad(pin, false)) continue;
         std::vector<Index::Entry> found;
         ix.grown.tree.query(bgi::intersects(box_of(pin.outer)), std::back_inserter(found));
-        if (found.empty()) continue;
-        std::vector<Polygon> near;
-        for (const auto& [box, c] : found) near.push_back(ix.grown.polys[c]);
-        if (!PinShapes(near).meets_obstacle(pin)) continue;
+        if (std::none_of(found.begin(), found.end(),
+                         [&](const Index::Entry& e) { return shape_meets_obstacle(pin, ix.grown.polys[e.second]); }))
+          continue;
         std::optional<Polygon> st = pad_staircase(pin, rules.scale);
         if (!st) continue;
-        if (reach_.empty()) reach_ = nets_;
-        reach_[n].pins[k] = std::move(*st);
+        NetPins& reached = reach_.try_emplace(n, nets_[n]).first->second;
+        reached.pins[k] = std::move(*st);
       }
 }
 
@@ -790,8 +789,10 @@ std::vector<Polygon> scaled(std::span<const Polygon> polys, std::int64_t k) {
   return out;
 }
 std::vector<NetPins> scaled(std::vector<NetPins> nets, std::int64_t k) {
-  for (NetPins& n : nets)
+  for (NetPins& n : nets) {
     for (Polygon& p : n.pins) p = scaled(p, k);
+    n.scale = k;
+  }
   return nets;
 }
 NetRules with_scale(NetRules r, std::int64_t k) {
@@ -1542,32 +1543,28 @@ bool NetRouter::commit(RipPlan p) {
 }
 
 namespace {
-// NetRouter::bend_router's route function, by name: run() weighs its bends by the scale.
+// NetRouter::bend_router's route function (its bends weigh bend_cost times NetPins::scale).
 struct BendRouteFn {
   BendMetric metric;
   std::int64_t bend_cost;
   NetAttempt operator()(std::size_t, const NetPins& net, const geom::NormalizedObstacles& obs) const;
 };
 // The route functions of l1_router and oct_router, by name: their wavefronts take windows with
-// the frame merged (NetSpace::obstacles(..., framed)), which try_net() recognises by these types;
-// run() gives the octilinear router the scale as its lattice (BasicRouter::set_lattice).
+// the frame merged (NetSpace::obstacles(..., framed)), which try_net() recognises by these types.
+// The octilinear one routes on the lattice of NetPins::scale (BasicRouter::set_lattice).
 struct L1RouteFn {
   bool steiner;
   NetAttempt operator()(std::size_t, const NetPins& net, const geom::NormalizedObstacles& obs) const;
 };
 struct OctRouteFn {
   bool steiner;
-  std::int64_t lattice = 1;
   NetAttempt operator()(std::size_t, const NetPins& net, const geom::NormalizedObstacles& obs) const;
 };
 }  // namespace
 
 void NetRouter::run(const NetRouteFn& route) {
-  if (scale_ == 1) return run_scaled(route);
-  NetRouteFn r = route;  // options_.bend_cost is scaled already (the constructor)
-  if (BendRouteFn* b = r.target<BendRouteFn>()) b->bend_cost *= scale_;
-  if (OctRouteFn* o = r.target<OctRouteFn>()) o->lattice = scale_;  // no vertex halfway between multiples
-  run_scaled(r);
+  run_scaled(route);  // the route function takes the scale from NetPins::scale
+  if (scale_ == 1) return;
   for (NetOutcome& o : out_)
     for (auto& w : o.wires)
       for (Point& p : w) p = Point{static_cast<geom::Coord>(p.x / scale_), static_cast<geom::Coord>(p.y / scale_)};
@@ -2042,11 +2039,11 @@ NetAttempt L1RouteFn::operator()(std::size_t, const NetPins& net, const geom::No
 }
 
 NetAttempt OctRouteFn::operator()(std::size_t, const NetPins& net, const geom::NormalizedObstacles& obs) const {
-  return route_with<OctRouter>(net, obs, steiner, lattice);
+  return route_with<OctRouter>(net, obs, steiner, net.scale);
 }
 
 NetAttempt BendRouteFn::operator()(std::size_t, const NetPins& net, const geom::NormalizedObstacles& obs) const {
-  return route_bends(net, obs, metric, bend_cost);
+  return route_bends(net, obs, metric, bend_cost * net.scale);  // router_scale keeps it <= 2^31
 }
 
 NetRouteFn NetRouter::bend_router(BendMetric metric, std::int64_t bend_cost) { return BendRouteFn{metric, bend_cost}; }

@@ -171,6 +171,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
@@ -213,6 +214,11 @@ inline std::int64_t net_rule(const NetRules& r) { return std::max<std::int64_t>(
 struct NetPins {
   std::string name;  // for reasons
   std::vector<geom::Polygon> pins;
+  // The plane's scale (NetRouter::scale): pins, obstacles and wires are this many times the
+  // layout's. A route function routes on its lattice (BasicRouter::set_lattice) and weighs a bend
+  // by this many units of length; NetRouter sets it on the pins it passes, so no route function
+  // has to be told.
+  std::int64_t scale = 1;
 };
 
 // What a net may be routed among (NetSpace::obstacles).
@@ -293,7 +299,10 @@ class NetSpace {
   // it has more than kMaxStaircaseColumns columns: the pin then stays as it is (and the net,
   // when its pin meets the grown blockages, is not routed: ROUTE-0010 says why). Everything else
   // (the other nets, the checker) sees the pin itself.
-  const NetPins& reach(std::size_t i) const { return reach_.empty() ? nets_[i] : reach_[i]; }
+  const NetPins& reach(std::size_t i) const {
+    const auto it = reach_.find(i);
+    return it == reach_.end() ? nets_[i] : it->second;
+  }
   static constexpr std::int64_t kMaxStaircaseColumns = 4096;
 
   // Net `net`'s wires as the other nets see them (replacing earlier ones; empty: none).
@@ -347,7 +356,7 @@ class NetSpace {
  private:
   geom::Box domain_;
   std::vector<NetPins> nets_;
-  std::vector<NetPins> reach_;  // reach(): empty when every net's pins are its own
+  std::map<std::size_t, NetPins> reach_;  // reach(): the nets with a pin reached as its staircase
   std::int64_t a_ = 0, b_ = 1, rule_a_ = 0, rule_b_ = 1;
   std::int64_t access_ = 0;  // a point pin's access square's half-side: a, or K a when scaled
   bool cut_shapes_ = true;
@@ -469,8 +478,8 @@ struct NetRouterOptions {
   std::function<bool(std::size_t net)> framed;
   // Gaps of exactly the clearance take wires (see the header): the router works in the plane
   // scaled by NetRouter::scale(). The route function is then given scaled pins and obstacles
-  // and must read the pins it is given (not its own copy), and weigh bends by
-  // bend_cost x scale() under Combined; outcomes()' wires are in the layout's units (a reason a
+  // and must read the pins it is given (not its own copy); their NetPins::scale tells it the
+  // lattice to route on and to weigh bends by bend_cost x scale under Combined; outcomes()' wires are in the layout's units (a reason a
   // route function gave for a net it could not route is its own text, of the scaled plane:
   // taut route asks the route function again in real units for those). false: gaps of
   // exactly 2a, and tracks at exactly the pitch, are closed.

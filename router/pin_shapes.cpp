@@ -193,12 +193,23 @@ PinShapes::PinShapes(std::span<const geom::Polygon> obstacles, std::optional<geo
   distinct(diffs_);
 }
 
-std::optional<std::size_t> PinShapes::meets_obstacle(const geom::Polygon& pin) const {
-  if (is_point_pin(pin)) return std::nullopt;
-  geom::Polygon p = pin;  // interior on the left of every edge
+namespace {
+geom::Polygon counter_clockwise(const geom::Polygon& pin) {  // interior on the left of every edge
+  geom::Polygon p = pin;
   if (geom::twice_area(p.outer) < 0) std::reverse(p.outer.begin(), p.outer.end());
   for (geom::Ring& h : p.holes)
     if (geom::twice_area(h) > 0) std::reverse(h.begin(), h.end());
+  return p;
+}
+}  // namespace
+
+bool shape_meets_obstacle(const geom::Polygon& pin, const geom::Polygon& obstacle) {
+  return !is_point_pin(pin) && interiors_meet(counter_clockwise(pin), obstacle);
+}
+
+std::optional<std::size_t> PinShapes::meets_obstacle(const geom::Polygon& pin) const {
+  if (is_point_pin(pin)) return std::nullopt;
+  const geom::Polygon p = counter_clockwise(pin);
   const geom::Box b = ring_box(p.outer);
   for (std::size_t i = 0; i < obstacles_.size(); ++i) {
     const geom::Box& o = boxes_[i];
@@ -261,7 +272,7 @@ std::vector<Point> PinShapes::candidates(const geom::Polygon& pin, const geom::P
       const i64 line = rising ? i64{a.x} - a.y : i64{a.x} + a.y;
       auto project = [&](i64 other_line) {  // x + y (rising edge) or x - y (falling edge)
         const i64 twice = other_line + line;
-        for (const i64 x : {floor_div(twice, 2 * lattice_) * lattice_, ceil_div(twice, 2 * lattice_) * lattice_})
+        for (const i64 x : geom::lattice_neighbours(twice, lattice_))
           if (x >= xlo && x <= xhi) out.push_back(at_x(x));
       };
       // the other lines whose projection lies in [xlo, xhi]: 2 xlo - line <= other <= 2 xhi - line

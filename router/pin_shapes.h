@@ -52,6 +52,11 @@ std::optional<geom::Point> shared_point(std::span<const geom::Point> a_cands, co
                                         const std::function<bool(geom::Point)>& usable);
 
 // Shape pins among one set of obstacles.
+// Does the interior of a shape pin meet the interior of an obstacle (as geom::normalize_obstacles
+// returns them: outer ring counter-clockwise, holes clockwise)? Exact; false for a point pin.
+// PinShapes::meets_obstacle asks it of each obstacle whose box meets the pin's.
+bool shape_meets_obstacle(const geom::Polygon& pin, const geom::Polygon& obstacle);
+
 class PinShapes {
  public:
   // Obstacles as geom::normalize_obstacles() returns them; the domain (the closed routing box),

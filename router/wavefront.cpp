@@ -2146,9 +2146,7 @@ void ProjectionLines::inside(Point a, Point b, std::vector<Point>& cand) const {
   const i64 lo = sl == 1 ? i64{a.x} + a.y : i64{b.y} - b.x, hi = sl == 1 ? i64{b.x} + b.y : i64{a.y} - a.x;
   for (const i64 v : strictly_between(other, lo, hi)) {
     const i64 twice = sl == 1 ? v - c0 : c0 - v;  // 2x
-    const i64 x0 = static_cast<i64>(floor_div(twice, 2 * lattice_)) * lattice_,
-              x1 = static_cast<i64>(geom::ceil_div(twice, 2 * lattice_)) * lattice_;
-    for (const i64 x : {x0, x1})
+    for (const i64 x : geom::lattice_neighbours(twice, lattice_))
       if (a.x < x && x < b.x) cand.push_back(on(x));
   }
 }

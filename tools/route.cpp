@@ -547,7 +547,8 @@ void add_route(CLI::App& app, int& status) {
             const std::int64_t k = nr.scale();
             nr.run([&](std::size_t i, const router::NetPins& pins, const geom::NormalizedObstacles& w) {
               const router::BendRouter br(w.domain, w.obstacles);
-              NetResult r = route_net_bends(*layout, with_pins(scaled_net(layout->nets[i], k), pins), obs, br, metric, c * k);
+              NetResult r = route_net_bends(*layout, with_pins(scaled_net(layout->nets[i], pins.scale), pins), obs, br, metric,
+                                            c * pins.scale);
               router::NetAttempt a;
               a.routed = r.route.status == "routed";
               for (const io::Wire& wire : r.route.wires) a.wires.push_back(wire.points);
@@ -671,7 +672,7 @@ void add_route(CLI::App& app, int& status) {
           net_threads = nro.threads;
           router::NetRouter nr(space.domain, space.obstacles, pins, rules, nro);
           const std::int64_t k = nr.scale();
-          nr.run([&](std::size_t i, const router::NetPins&, const geom::NormalizedObstacles& obs) {
+          nr.run([&](std::size_t i, const router::NetPins& pins, const geom::NormalizedObstacles& obs) {
             const io::Net& net = layout->nets[i];
             if (follows_sketch(net)) {
               if (contractible_loop.count(net.name)) {
@@ -683,10 +684,10 @@ void add_route(CLI::App& app, int& status) {
               return sketch_attempt(*layout, net, obs, orient_word, net_domain);
             }
             NetResult r;
-            const io::Net sn = scaled_net(net, k);
+            const io::Net sn = scaled_net(net, pins.scale);
             if (octilinear) {
               router::OctRouter rt(obs.domain, obs.obstacles);
-              rt.set_lattice(k);  // no vertex half way between the scaled plane's multiples (NetRouter::oct_router does the same)
+              rt.set_lattice(pins.scale);  // no vertex half way between the plane's multiples
               r = route_net(*layout, sn, rt, steiner_ok[i]);
             } else {
               router::L1Router rt(obs.domain, obs.obstacles);

@@ -451,3 +451,25 @@ TEST(Predicates, TwiceAreaMatchesGmp) {
 
 }  // namespace predicates_test
 }  // namespace taut::geom
+
+// lattice_neighbours against a walk over the multiples of k (half-integers, negatives, the limit).
+TEST(Predicates, LatticeNeighboursAreTheNearestMultiples) {
+  for (const taut::geom::i64 k : {1, 2, 3, 8, 64}) {
+    std::vector<taut::geom::i64> twices;
+    for (taut::geom::i64 t = -300; t <= 300; ++t) twices.push_back(t);
+    for (const taut::geom::i64 big : {taut::geom::i64{1} << 31, (taut::geom::i64{1} << 31) - 1}) {
+      twices.push_back(big);
+      twices.push_back(-big);
+    }
+    for (const taut::geom::i64 twice : twices) {
+      const auto [lo, hi] = taut::geom::lattice_neighbours(twice, k);
+      SCOPED_TRACE("twice " + std::to_string(twice) + " k " + std::to_string(k));
+      EXPECT_EQ(lo % k, 0);
+      EXPECT_EQ(hi % k, 0);
+      EXPECT_LE(2 * lo, twice);
+      EXPECT_GT(2 * (lo + k), twice);  // the greatest below
+      EXPECT_GE(2 * hi, twice);
+      EXPECT_LT(2 * (hi - k), twice);  // the least above
+    }
+  }
+}

@@ -752,7 +752,9 @@ TEST(NetRouter, PadStaircasesAreTheCellsInThePin) {
         points += held;
         thin += in && !held && !is_peak;
         // a convex pin: every lattice point but the peaks
-        if (convex) ASSERT_EQ(held, in && !is_peak) << at << ": " << p.x << "," << p.y;
+        if (convex) {
+          ASSERT_EQ(held, in && !is_peak) << at << ": " << p.x << "," << p.y;
+        }
       }
   }
   // a diagonal strip one step wide, and a diamond one step from centre to corner (its centre
