@@ -45,7 +45,7 @@
 // the caller (router::check_routes: taut route does, and routes again without exact_gaps when it
 // fails, which no test has seen). Lengths: the route function sees K times the lengths (a
 // Combined metric's bend cost is multiplied by K for bend_router; a route function of one's own
-// must do the same, NetRouter::scale()).
+// must do the same: NetPins::scale is K on the pins it is given).
 //
 // Limitations (measured in net_router_test and bench_net_router):
 //   - without exact_gaps, exact minimum gaps are closed (above); with it, a layout whose reach
@@ -215,9 +215,9 @@ struct NetPins {
   std::string name;  // for reasons
   std::vector<geom::Polygon> pins;
   // The plane's scale (NetRouter::scale): pins, obstacles and wires are this many times the
-  // layout's. A route function routes on its lattice (BasicRouter::set_lattice) and weighs a bend
-  // by this many units of length; NetRouter sets it on the pins it passes, so no route function
-  // has to be told.
+  // layout's. An octilinear route function routes on its lattice (BasicRouter::set_lattice; the
+  // L1 one needs none), and a bend-aware one weighs a bend by this many times its cost; NetRouter
+  // sets it on the pins it passes, so no route function has to be told.
   std::int64_t scale = 1;
 };
 
@@ -479,9 +479,10 @@ struct NetRouterOptions {
   // Gaps of exactly the clearance take wires (see the header): the router works in the plane
   // scaled by NetRouter::scale(). The route function is then given scaled pins and obstacles
   // and must read the pins it is given (not its own copy); their NetPins::scale tells it the
-  // lattice to route on and to weigh bends by bend_cost x scale under Combined; outcomes()' wires are in the layout's units (a reason a
-  // route function gave for a net it could not route is its own text, of the scaled plane:
-  // taut route asks the route function again in real units for those). false: gaps of
+  // lattice to route on, and to weigh bends by bend_cost x scale under Combined. outcomes()'
+  // wires are in the layout's units (a reason a route function gave for a net it could not route
+  // is its own text, of the scaled plane: taut route asks the route function again in real
+  // units for those). false: gaps of
   // exactly 2a, and tracks at exactly the pitch, are closed.
   bool exact_gaps = false;
 };

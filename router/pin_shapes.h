@@ -51,12 +51,12 @@ std::optional<geom::Point> shared_point(std::span<const geom::Point> a_cands, co
                                         std::span<const geom::Point> b_cands, const geom::Polygon& b,
                                         const std::function<bool(geom::Point)>& usable);
 
-// Shape pins among one set of obstacles.
 // Does the interior of a shape pin meet the interior of an obstacle (as geom::normalize_obstacles
 // returns them: outer ring counter-clockwise, holes clockwise)? Exact; false for a point pin.
-// PinShapes::meets_obstacle asks it of each obstacle whose box meets the pin's.
+// (PinShapes::meets_obstacle makes the same test of each obstacle whose box meets the pin's.)
 bool shape_meets_obstacle(const geom::Polygon& pin, const geom::Polygon& obstacle);
 
+// Shape pins among one set of obstacles.
 class PinShapes {
  public:
   // Obstacles as geom::normalize_obstacles() returns them; the domain (the closed routing box),
