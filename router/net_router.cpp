@@ -101,6 +101,30 @@ bool is_pad(const Polygon& p, bool shapes) {
   if (is_point_pin(p) || !pin_shape_supported(p)) return false;
   return shapes || is_rectilinear_shape(p);
 }
+// A pin's edges that are not vertical, each left to right (edges at 0, 45 or 135 degrees).
+std::vector<std::pair<Point, Point>> sloped_edges(const Polygon& p) {
+  std::vector<std::pair<Point, Point>> edges;
+  for_each_pin_edge(p, [&](Point a, Point b) {
+    if (a.x != b.x) edges.push_back(a.x < b.x ? std::pair{a, b} : std::pair{b, a});
+  });
+  return edges;
+}
+// The pin's trapezoids over the column [x0, x1], which no vertex lies strictly inside: the
+// (y at x0, y at x1) of each edge of `edges` (sloped_edges) that spans it, in order from the
+// bottom, so that entries 2i and 2i + 1 bound one trapezoid (even-odd: holes and notches stay
+// out). Exact: the slopes are 0 and +-1. `ys` is the output (cleared first).
+void column_edges(const std::vector<std::pair<Point, Point>>& edges, std::int64_t x0, std::int64_t x1,
+                  std::vector<std::pair<std::int64_t, std::int64_t>>& ys) {
+  ys.clear();
+  for (const auto& [a, b] : edges)
+    if (a.x <= x0 && x1 <= b.x) {
+      const std::int64_t sl = (std::int64_t{b.y} - a.y) / (std::int64_t{b.x} - a.x);  // -1, 0 or 1
+      ys.emplace_back(a.y + sl * (x0 - a.x), a.y + sl * (x1 - a.x));
+    }
+  // edges do not cross inside the column: ordered by their sum of ends
+  std::sort(ys.begin(), ys.end(), [](const auto& u, const auto& v) { return u.first + u.second < v.first + v.second; });
+}
+
 // A pad as convex pieces whose union is the pad, each a counter-clockwise octilinear_convex_ring
 // (what geom::convex_minus_pad takes): the pad itself when convex; else its vertical slabs
 // between consecutive vertex x's, each cut into the trapezoids between consecutive edges that
@@ -111,26 +135,16 @@ bool is_pad(const Polygon& p, bool shapes) {
 std::vector<Ring> pad_pieces(const Polygon& p) {
   if (p.holes.empty())
     if (auto r = geom::octilinear_convex_ring(p.outer)) return {*r};
-  std::vector<std::pair<Point, Point>> edges;  // non-vertical, left to right
+  const std::vector<std::pair<Point, Point>> edges = sloped_edges(p);
   std::vector<geom::Coord> xs;
-  for_each_pin_edge(p, [&](Point a, Point b) {
-    xs.push_back(a.x);
-    if (a.x != b.x) edges.push_back(a.x < b.x ? std::pair{a, b} : std::pair{b, a});
-  });
+  for_each_pin_edge(p, [&](Point a, Point) { xs.push_back(a.x); });
   std::sort(xs.begin(), xs.end());
   xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
   std::vector<Ring> out;
+  std::vector<std::pair<std::int64_t, std::int64_t>> ys;
   for (std::size_t k = 0; k + 1 < xs.size(); ++k) {
     const geom::Coord x0 = xs[k], x1 = xs[k + 1];
-    // (y at x0, y at x1) of each edge spanning the slab: exact, |dy| = |dx| or 0
-    std::vector<std::pair<std::int64_t, std::int64_t>> ys;
-    for (const auto& [a, b] : edges)
-      if (a.x <= x0 && x1 <= b.x) {
-        const std::int64_t s = (std::int64_t{b.y} - a.y) / (std::int64_t{b.x} - a.x);  // -1, 0 or 1
-        ys.emplace_back(a.y + s * (x0 - a.x), a.y + s * (x1 - a.x));
-      }
-    // edges do not cross inside the slab: ordered by their sum of ends
-    std::sort(ys.begin(), ys.end(), [](const auto& u, const auto& v) { return u.first + u.second < v.first + v.second; });
+    column_edges(edges, x0, x1, ys);
     for (std::size_t i = 0; i + 1 < ys.size(); i += 2) {
       const auto [b0, b1] = ys[i];
       const auto [t0, t1] = ys[i + 1];
@@ -311,31 +325,22 @@ Lines trim_at_pads(const Lines& wires, std::span<const Ring> pads) {
 std::optional<Polygon> pad_staircase(const Polygon& pin, std::int64_t step) {
   if (step < 1) throw std::invalid_argument("pad_staircase: a step below 1");
   if (is_point_pin(pin) || !pin_shape_supported(pin) || is_rectilinear_shape(pin)) return std::nullopt;
-  // the non-vertical edges, left to right, and the vertices' x range
-  std::vector<std::pair<Point, Point>> edges;
+  // the vertices' x range (on the lattice, so no vertex lies strictly inside a column)
   std::int64_t x0 = std::numeric_limits<std::int64_t>::max(), x1 = std::numeric_limits<std::int64_t>::min();
   bool on_lattice = true;
-  for_each_pin_edge(pin, [&](Point a, Point b) {
+  for_each_pin_edge(pin, [&](Point a, Point) {
     on_lattice = on_lattice && a.x % step == 0 && a.y % step == 0;
     x0 = std::min<std::int64_t>(x0, a.x);
     x1 = std::max<std::int64_t>(x1, a.x);
-    if (a.x != b.x) edges.push_back(a.x < b.x ? std::pair{a, b} : std::pair{b, a});
   });
   if (!on_lattice || (x1 - x0) / step > NetSpace::kMaxStaircaseColumns) return std::nullopt;
-  // per column [x, x + step]: the trapezoids between consecutive edges spanning it (even-odd, so
-  // holes stay out; the edges' slopes are 0 and +-1, so their y's at the sides are exact), each
-  // giving the rectangle of the y's it holds at both sides
+  // per column [x, x + step]: each trapezoid of the pin over it gives the rectangle of the y's it
+  // holds at both sides
+  const std::vector<std::pair<Point, Point>> edges = sloped_edges(pin);
   std::vector<Polygon> rects;
   std::vector<std::pair<std::int64_t, std::int64_t>> ys;
   for (std::int64_t x = x0; x < x1; x += step) {
-    ys.clear();
-    for (const auto& [a, b] : edges)
-      if (a.x <= x && x + step <= b.x) {
-        const std::int64_t sl = (std::int64_t{b.y} - a.y) / (std::int64_t{b.x} - a.x);  // -1, 0 or 1
-        ys.emplace_back(a.y + sl * (x - a.x), a.y + sl * (x + step - a.x));
-      }
-    // edges do not cross inside the column: ordered by their sum of ends
-    std::sort(ys.begin(), ys.end(), [](const auto& u, const auto& v) { return u.first + u.second < v.first + v.second; });
+    column_edges(edges, x, x + step, ys);
     for (std::size_t i = 0; i + 1 < ys.size(); i += 2) {
       const std::int64_t lo = std::max(ys[i].first, ys[i].second), hi = std::min(ys[i + 1].first, ys[i + 1].second);
       if (lo >= hi) continue;  // a peak's column, or a part one step thin
