@@ -171,8 +171,9 @@ TEST(L1Map, MatchesTheReferenceOnRandomLayouts) {
 TEST(L1Map, MovingAiMapsMatchTheWavefront) {
   TAUT_REQUIRE_SHARED_DATA();
   int maps = 0;
-  // three of the maps under the sanitizers (arena, with the reference, among them)
-  const std::vector<const char*> names = kSanitized ? std::vector<const char*>{"arena", "maze-100-1", "random512-10-0"}
+  // the two small maps under the sanitizers (arena, with the reference, and maze-100-1; the
+  // 512 x 512 one took half of the test's 25 s there until 2026-12-04)
+  const std::vector<const char*> names = kSanitized ? std::vector<const char*>{"arena", "maze-100-1"}
                                                     : std::vector<const char*>{"8room_000", "arena", "brc202d", "den520d",
                                                                                "lak303d", "maze-100-1", "random512-10-0"};
   for (const char* name : names) {

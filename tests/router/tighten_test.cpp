@@ -475,7 +475,7 @@ TEST(Tighten, COrientedLatticeSetsAgainstExhaustiveSearch) {
     long long wires = 0, compared = 0, bent = 0, missing = 0, missing_proven = 0;
   };
   std::vector<Count> count(sets.size());
-  const int N = 9, n = static_cast<int>(sanitized_share(24, 3));
+  const int N = 9, n = static_cast<int>(sanitized_share(24, 6));  // / 3 under the sanitizers until 2026-12-04
   long long scenes = 0;
   for (int seed = 1; seed <= n; ++seed) {
     for (int kind = 0; kind < 6; ++kind) {
@@ -550,9 +550,9 @@ TEST(Tighten, COrientedLatticeSetsAgainstExhaustiveSearch) {
                 "(%lld confirmed by the search)\n",
                 sets[k].name().c_str(), c.wires, c.compared, c.bent, c.missing, c.missing_proven);
     compared += c.compared;
-    EXPECT_GE(c.compared, sanitized_share(40, 2)) << sets[k].name();
+    EXPECT_GE(c.compared, sanitized_share(40, 4)) << sets[k].name();
   }
-  EXPECT_GE(compared, sanitized_share(1000, 20));
+  EXPECT_GE(compared, sanitized_share(1000, 40));
 }
 
 // The loop's vertices as a cyclic sequence starting at its least point (for comparing with a ring).
