@@ -333,19 +333,34 @@ std::optional<Polygon> pad_staircase(const Polygon& pin, std::int64_t step) {
     x0 = std::min<std::int64_t>(x0, a.x);
     x1 = std::max<std::int64_t>(x1, a.x);
   });
-  if (!on_lattice || (x1 - x0) / step > NetSpace::kMaxStaircaseColumns) return std::nullopt;
-  // per column [x, x + step]: each trapezoid of the pin over it gives the rectangle of the y's it
-  // holds at both sides
+  if (!on_lattice) return std::nullopt;
+  // The columns: [x, x + step] from x0 to x1; for a pin more than kMaxStaircaseColumns steps
+  // wide, [x, x + m step] with the fewest steps m that make at most that many, each also split
+  // at the pin's vertices (column_edges needs none strictly inside a column). Every bound is on
+  // the lattice either way.
+  const std::int64_t most = NetSpace::kMaxStaircaseColumns;
+  const std::int64_t width = step * std::max<std::int64_t>(1, ((x1 - x0) / step + most - 1) / most);
+  std::vector<std::int64_t> xs;
+  for (std::int64_t x = x0; x < x1; x += width) xs.push_back(x);
+  xs.push_back(x1);
+  if (width > step) {
+    for_each_pin_edge(pin, [&](Point a, Point) { xs.push_back(a.x); });
+    std::sort(xs.begin(), xs.end());
+    xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+  }
+  // per column: each trapezoid of the pin over it gives the rectangle of the y's it holds at both
+  // sides
   const std::vector<std::pair<Point, Point>> edges = sloped_edges(pin);
   std::vector<Polygon> rects;
   std::vector<std::pair<std::int64_t, std::int64_t>> ys;
-  for (std::int64_t x = x0; x < x1; x += step) {
-    column_edges(edges, x, x + step, ys);
+  for (std::size_t k = 0; k + 1 < xs.size(); ++k) {
+    const std::int64_t x = xs[k], cw = xs[k + 1] - x;
+    column_edges(edges, x, x + cw, ys);
     for (std::size_t i = 0; i + 1 < ys.size(); i += 2) {
       const std::int64_t lo = std::max(ys[i].first, ys[i].second), hi = std::min(ys[i + 1].first, ys[i + 1].second);
       if (lo >= hi) continue;  // a peak's column, or a part one step thin
       const auto c = [](std::int64_t v) { return static_cast<geom::Coord>(v); };
-      rects.push_back(Polygon{{{c(x), c(lo)}, {c(x + step), c(lo)}, {c(x + step), c(hi)}, {c(x), c(hi)}}, {}});
+      rects.push_back(Polygon{{{c(x), c(lo)}, {c(x + cw), c(lo)}, {c(x + cw), c(hi)}, {c(x), c(hi)}}, {}});
     }
   }
   if (rects.empty()) return std::nullopt;
@@ -1905,9 +1920,9 @@ NetRouter::Explained NetRouter::explain(const NetRouteFn& route, std::size_t net
       if (!is_point_pin(pin) && pin_shape_supported(pin) && !is_pad(pin, false)) {
         e.code = "ROUTE-0010";
         e.reason = "a shape pin with a 45-degree edge lies within " + a +
-                   " DBU (ceil(w/2) + s) of a blockage, and it is too thin for a staircase of unit steps "
-                   "somewhere, or more than " + std::to_string(NetSpace::kMaxStaircaseColumns) +
-                   " DBU wide: the bend-aware metrics reach such a pin only as its staircase (their router takes "
+                   " DBU (ceil(w/2) + s) of a blockage, and it is too thin for a staircase of rectangles inside "
+                   "it somewhere (unit steps; coarser ones for a pin more than " + std::to_string(NetSpace::kMaxStaircaseColumns) +
+                   " DBU wide): the bend-aware metrics reach such a pin only as its staircase (their router takes "
                    "rectilinear obstacles only)";
         return e;
       }

@@ -254,8 +254,8 @@ struct WireOverlay {
 // The staircase NetSpace::reach takes for a shape pin with a 45-degree edge (holes and concave
 // pins too), on the lattice of `step` (the scale; see there): nullopt where reach keeps the pin
 // as it is (a point, a pin with no 45-degree edge or another slope, a vertex off the lattice,
-// cells that do not make one valid polygon, or more than NetSpace::kMaxStaircaseColumns
-// columns).
+// cells that do not make one valid polygon). A pin more than NetSpace::kMaxStaircaseColumns
+// steps wide takes columns of several steps (see NetSpace::reach).
 std::optional<geom::Polygon> pad_staircase(const geom::Polygon& pin, std::int64_t step);
 
 class NetSpace {
@@ -294,16 +294,23 @@ class NetSpace {
   // rectilinear wire with vertices on that lattice ends on the staircase wherever it could end
   // on the pin, save those points (a wire that would end at one ends elsewhere on the staircase,
   // when that is free: never illegal, at most a little longer).
-  // Not when its vertices are not on that lattice, when the rectangles' union is not one valid
-  // polygon (a part of the pin too thin to hold a cell splits it, or joins it at a corner) or when
-  // it has more than kMaxStaircaseColumns columns: the pin then stays as it is (and the net,
-  // when its pin meets the grown blockages, is not routed: ROUTE-0010 says why). Everything else
-  // (the other nets, the checker) sees the pin itself.
+  // A pin more than kMaxStaircaseColumns steps wide takes columns of m steps instead, the fewest
+  // that make at most that many, each also split at the pin's vertices: a coarser staircase (the
+  // rectangles of the y's each trapezoid holds at both sides of its column, still in the pin),
+  // which holds fewer of the pin's lattice points, so a wire ending on it may be a little longer.
+  // (The bend router's work grows with the square of its obstacles' vertices: one net with a
+  // diamond pad 20,002 wide took 0.37 s with 256 columns, 1.3 s with 512, 5.3 s with 1,024 and
+  // 92 s with 4,096, 2026-12-04.)
+  // Not when its vertices are not on that lattice, or when the rectangles' union is not one valid
+  // polygon (a part of the pin too thin to hold a column's rectangle splits it, or joins it at a
+  // corner): the pin then stays as it is (and the net, when its pin meets the grown blockages, is
+  // not routed: ROUTE-0010 says why). Everything else (the other nets, the checker) sees the pin
+  // itself.
   const NetPins& reach(std::size_t i) const {
     const auto it = reach_.find(i);
     return it == reach_.end() ? nets_[i] : it->second;
   }
-  static constexpr std::int64_t kMaxStaircaseColumns = 4096;
+  static constexpr std::int64_t kMaxStaircaseColumns = 256;  // 4,096 (and then refused) until 2026-12-04
 
   // Net `net`'s wires as the other nets see them (replacing earlier ones; empty: none).
   void set_wires(std::size_t net, const std::vector<std::vector<geom::Point>>& wires);

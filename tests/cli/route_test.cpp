@@ -493,7 +493,7 @@ TEST(Route, ThreadsGiveTheSameBytes) {
     std::string xml1, svg1;
     nlohmann::json routes1;
     // (under the sanitizers 1 and 2 only: 3 and 0 take the same paths, and each route is ~6x slower there)
-    for (const std::string t : kSanitized ? std::vector<std::string>{"1", "2"} : std::vector<std::string>{"1", "2", "3", "0"}) {
+    for (const std::string& t : kSanitized ? std::vector<std::string>{"1", "2"} : std::vector<std::string>{"1", "2", "3", "0"}) {
       SCOPED_TRACE(orient + ", --threads " + t);
       const std::string out = dir + "/r" + t + ".xml", svg = dir + "/r" + t + ".svg", st = dir + "/s" + t + ".json";
       const auto r = run_taut({"route", in, "--orientations", orient, "--threads", t, "-q", "-o", out, "--svg", svg, "--stats", st});

@@ -772,6 +772,107 @@ TEST(NetRouter, PadStaircasesAreTheCellsInThePin) {
   EXPECT_GT(holes, 0);
 }
 
+// Pins more than NetSpace::kMaxStaircaseColumns (256) steps wide (refused over 4,096 until
+// 2026-12-04: such a net was ROUTE-0010 under the bend-aware metrics when its pin met a
+// blockage's clearance, as the last part here was) get columns of m steps, the fewest that make
+// at most that many, split at the pin's vertices.
+// Diamonds 20,002 wide on the integer lattice (m = 79) and 80,032 wide on the lattice of 8 (m = 40),
+// each with its centre's x off the multiples of m steps, so a column is split there. Each
+// staircase is a valid polygon with horizontal and vertical edges and its vertices in the pin;
+// the columns are worked out here (the multiples of m steps from the left end, and the
+// diamond's three vertex x's), and over each column [xa, xb] the staircase holds exactly the y's
+// that both of the column's sides hold in the diamond (the half-height R - |x - cx|, the smaller
+// of the two, from the diamond's formula), probed at the column's middle half a step inside and
+// outside each bound. An octagon 30,000 wide: valid, inside, at most 256 columns plus its
+// vertices. Then a net with the first diamond as a pad whose right corner lies 2 DBU from a
+// blockage (inside its clearance of 3) routes under length + 7 x bends and under the link metric,
+// and passes the checker.
+TEST(NetRouter, WidePadStaircasesTakeCoarserColumns) {
+  struct Diamond {
+    std::int64_t cx, cy, r, step;
+  };
+  auto ring_of = [](const Diamond& d) {
+    auto c = [](std::int64_t v) { return static_cast<geom::Coord>(v); };
+    return Polygon{{{c(d.cx - d.r), c(d.cy)}, {c(d.cx), c(d.cy - d.r)}, {c(d.cx + d.r), c(d.cy)}, {c(d.cx), c(d.cy + d.r)}}, {}};
+  };
+  auto doubled = [](Polygon q) {
+    for (Point& v : q.outer) v = {static_cast<geom::Coord>(2 * v.x), static_cast<geom::Coord>(2 * v.y)};
+    return q;
+  };
+  auto check_shape = [](const Polygon& pin, const Polygon& st, std::int64_t step) {
+    ASSERT_TRUE(geom::validate_polygon(st).empty()) << geom::validate_polygon(st)[0].message;
+    std::set<geom::Coord> xs;
+    router::for_each_pin_edge(st, [&](Point a, Point b) {
+      EXPECT_TRUE(a.x == b.x || a.y == b.y);
+      EXPECT_TRUE(router::in_pin(a, pin)) << a.x << "," << a.y;
+      EXPECT_EQ(a.x % step, 0);
+      EXPECT_EQ(a.y % step, 0);
+      xs.insert(a.x);
+    });
+    std::size_t pin_vertices = 0;
+    router::for_each_pin_edge(pin, [&](Point, Point) { ++pin_vertices; });
+    EXPECT_LE(xs.size(), static_cast<std::size_t>(router::NetSpace::kMaxStaircaseColumns) + 1 + pin_vertices);
+  };
+  const std::int64_t most = router::NetSpace::kMaxStaircaseColumns;
+  for (const Diamond d : {Diamond{0, 0, 10001, 1}, Diamond{800, -1600, 8 * 5002, 8}}) {
+    SCOPED_TRACE("diamond of radius " + std::to_string(d.r) + " on the lattice of " + std::to_string(d.step));
+    const Polygon pin = ring_of(d);
+    const std::optional<Polygon> st = router::pad_staircase(pin, d.step);
+    ASSERT_TRUE(st.has_value());
+    check_shape(pin, *st, d.step);
+    const std::int64_t x0 = d.cx - d.r, x1 = d.cx + d.r;
+    const std::int64_t m = ((x1 - x0) / d.step + most - 1) / most, w = m * d.step;  // the fewest steps per column
+    ASSERT_GT(m, 1);
+    EXPECT_NE((d.cx - x0) % w, 0);  // the centre splits a column
+    std::vector<std::int64_t> xs{x1, d.cx};
+    for (std::int64_t x = x0; x < x1; x += w) xs.push_back(x);
+    std::sort(xs.begin(), xs.end());
+    xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+    const Polygon twice = doubled(*st);
+    int columns = 0, failed = 0;
+    for (std::size_t k = 0; k + 1 < xs.size(); ++k) {
+      const std::int64_t xa = xs[k], xb = xs[k + 1];
+      const std::int64_t h = std::min(d.r - std::abs(xa - d.cx), d.r - std::abs(xb - d.cx));
+      const geom::Coord mid = static_cast<geom::Coord>(xa + xb);  // doubled
+      auto in = [&](std::int64_t y2) { return router::in_pin(Point{mid, static_cast<geom::Coord>(y2)}, twice); };
+      ++columns;
+      if (h <= 0) {
+        failed += in(2 * d.cy);
+        continue;
+      }
+      const std::int64_t lo = 2 * (d.cy - h), hi = 2 * (d.cy + h);
+      const bool ok = in(lo + d.step) && !in(lo - d.step) && in(hi - d.step) && !in(hi + d.step);
+      if (!ok && failed++ < 5) ADD_FAILURE() << "the column [" << xa << ", " << xb << "]: not the y's [" << lo / 2 << ", " << hi / 2 << "]";
+    }
+    EXPECT_EQ(failed, 0);
+    EXPECT_LE(columns, most + 1);
+  }
+  {
+    const Polygon octagon{{{3000, 0}, {27000, 0}, {30000, 3000}, {30000, 6000}, {27000, 9000}, {3000, 9000}, {0, 6000}, {0, 3000}}, {}};
+    const std::optional<Polygon> st = router::pad_staircase(octagon, 1);
+    ASSERT_TRUE(st.has_value());
+    check_shape(octagon, *st, 1);
+  }
+  // routed: the diamond's right corner (10001, 0) lies 2 DBU from the blockage, inside its
+  // clearance ceil(2 / 2) + 2 = 3
+  const geom::Box domain{{-30000, -30000}, {30000, 30000}};
+  const geom::NormalizedObstacles norm =
+      geom::normalize_obstacles(box_polygons(std::vector<geom::Box>{{{10003, -500}, {12000, 500}}}), domain);
+  const geom::NormalizedObstacles covered = geom::normalize_obstacles(router::rectilinear_cover(norm.obstacles), norm.domain);
+  const std::vector<router::NetPins> nets{{"wide", {ring_of({0, 0, 10001, 1}), Polygon{{{15000, 3000}}, {}}}}};
+  for (const bool link : {false, true}) {
+    SCOPED_TRACE(link ? "link" : "combined");
+    router::NetRouterOptions opt;
+    opt.cost = link ? router::NetRouterOptions::Cost::Link : router::NetRouterOptions::Cost::Combined;
+    opt.bend_cost = 7;
+    router::NetRouter nr(covered.domain, covered.obstacles, nets, router::NetRules{2, 2, router::kDefaultCoverPieces}, opt);
+    nr.run(router::NetRouter::bend_router(link ? router::BendMetric::Link : router::BendMetric::Combined, 7));
+    EXPECT_TRUE(nr.outcomes()[0].routed) << nr.outcomes()[0].code << " " << nr.outcomes()[0].reason;
+    const router::CheckResult cr = router::check_routes(norm, check_nets(nets, nr), {2, 2});
+    EXPECT_TRUE(cr.problems.empty()) << cr.problems[0].message;
+  }
+}
+
 // Pads that are not rectangles (diamonds, octagons, boxes with a cut corner: convex, edges at 0,
 // 45 and 90 degrees; since 2026-12-03 concave ones too, L-shapes and squares with a V notch, as
 // convex pieces) are cut out of their net's grown blockages like rectangular ones
