@@ -77,12 +77,13 @@ test-release: build-tests
 # ASan's quarantine (freed memory held back so a use after free is caught) is 256 MB by default,
 # and every test is a process of its own that pages it in: 16 MB made the sanitizer tests 20 %
 # faster here (50 router tests 57.6 -> 46.0 s, 2026-12-04). A use after free is still caught
-# until 16 MB more has been freed. Set ASAN_OPTIONS yourself to override.
-ASAN_OPTIONS ?= quarantine_size_mb=16
+# until 16 MB more has been freed. Options of your own in ASAN_OPTIONS come after it (the later
+# one wins), so they keep their effect and may set the quarantine too.
+SANITIZER_TEST_OPTIONS := quarantine_size_mb=16$(if $(ASAN_OPTIONS),:$(ASAN_OPTIONS))
 
 test-asan: build-asan-tests
 	@mkdir -p $(ASAN_BUILD)/Testing/Temporary && (test -f $(ASAN_BUILD)/$(COSTS) || cp tests/cost/asan.txt $(ASAN_BUILD)/$(COSTS))
-	cd $(ASAN_BUILD) && ASAN_OPTIONS='$(ASAN_OPTIONS)' ctest --output-on-failure -j $(JOBS) -LE long
+	cd $(ASAN_BUILD) && ASAN_OPTIONS='$(SANITIZER_TEST_OPTIONS)' ctest --output-on-failure -j $(JOBS) -LE long
 
 test-long: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -L long

@@ -334,41 +334,47 @@ std::optional<Polygon> pad_staircase(const Polygon& pin, std::int64_t step) {
     x1 = std::max<std::int64_t>(x1, a.x);
   });
   if (!on_lattice) return std::nullopt;
-  // The columns: [x, x + step] from x0 to x1; for a pin more than kMaxStaircaseColumns steps
-  // wide, [x, x + m step] with the fewest steps m that make at most that many, each also split
-  // at the pin's vertices (column_edges needs none strictly inside a column). Every bound is on
-  // the lattice either way.
-  const std::int64_t most = NetSpace::kMaxStaircaseColumns;
-  const std::int64_t width = step * std::max<std::int64_t>(1, ((x1 - x0) / step + most - 1) / most);
-  std::vector<std::int64_t> xs;
-  for (std::int64_t x = x0; x < x1; x += width) xs.push_back(x);
-  xs.push_back(x1);
-  if (width > step) {
-    for_each_pin_edge(pin, [&](Point a, Point) { xs.push_back(a.x); });
-    std::sort(xs.begin(), xs.end());
-    xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
-  }
-  // per column: each trapezoid of the pin over it gives the rectangle of the y's it holds at both
-  // sides
   const std::vector<std::pair<Point, Point>> edges = sloped_edges(pin);
-  std::vector<Polygon> rects;
-  std::vector<std::pair<std::int64_t, std::int64_t>> ys;
-  for (std::size_t k = 0; k + 1 < xs.size(); ++k) {
-    const std::int64_t x = xs[k], cw = xs[k + 1] - x;
-    column_edges(edges, x, x + cw, ys);
-    for (std::size_t i = 0; i + 1 < ys.size(); i += 2) {
-      const std::int64_t lo = std::max(ys[i].first, ys[i].second), hi = std::min(ys[i + 1].first, ys[i + 1].second);
-      if (lo >= hi) continue;  // a peak's column, or a part one step thin
-      const auto c = [](std::int64_t v) { return static_cast<geom::Coord>(v); };
-      rects.push_back(Polygon{{{c(x), c(lo)}, {c(x + cw), c(lo)}, {c(x + cw), c(hi)}, {c(x), c(hi)}}, {}});
+  // The staircase of columns `width` wide (a multiple of step): [x, x + width] from x0 to x1,
+  // each also split at the pin's vertices (column_edges needs none strictly inside a column), so
+  // every bound is on the lattice. Per column, each trapezoid of the pin over it gives the
+  // rectangle of the y's it holds at both sides; their union (exact: horizontal and vertical
+  // edges only) must be one valid polygon: a part too thin for a column splits it, or joins it at
+  // a corner only.
+  auto staircase = [&](std::int64_t width) -> std::optional<Polygon> {
+    std::vector<std::int64_t> xs;
+    for (std::int64_t x = x0; x < x1; x += width) xs.push_back(x);
+    xs.push_back(x1);
+    if (width > step) {
+      for_each_pin_edge(pin, [&](Point a, Point) { xs.push_back(a.x); });
+      std::sort(xs.begin(), xs.end());
+      xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
     }
+    std::vector<Polygon> rects;
+    std::vector<std::pair<std::int64_t, std::int64_t>> ys;
+    for (std::size_t k = 0; k + 1 < xs.size(); ++k) {
+      const std::int64_t x = xs[k], cw = xs[k + 1] - x;
+      column_edges(edges, x, x + cw, ys);
+      for (std::size_t i = 0; i + 1 < ys.size(); i += 2) {
+        const std::int64_t lo = std::max(ys[i].first, ys[i].second), hi = std::min(ys[i + 1].first, ys[i + 1].second);
+        if (lo >= hi) continue;  // a peak's column, or a part one column thin
+        const auto c = [](std::int64_t v) { return static_cast<geom::Coord>(v); };
+        rects.push_back(Polygon{{{c(x), c(lo)}, {c(x + cw), c(lo)}, {c(x + cw), c(hi)}, {c(x), c(hi)}}, {}});
+      }
+    }
+    if (rects.empty()) return std::nullopt;
+    geom::NormalizedObstacles u = geom::normalize_obstacles(rects, box_of(pin.outer));
+    if (u.obstacles.size() != 1 || !geom::validate_polygon(u.obstacles[0]).empty()) return std::nullopt;
+    return std::move(u.obstacles[0]);
+  };
+  // Columns of one step; for a pin more than kMaxStaircaseColumns steps wide, of m steps, the
+  // fewest that make at most that many, and when that staircase is not one valid polygon (a thin
+  // diagonal bar) of m/2, m/4, ... steps while they make at most kMaxUnitStaircaseColumns.
+  const std::int64_t cols = (x1 - x0) / step;
+  for (std::int64_t m = std::max<std::int64_t>(1, (cols + NetSpace::kMaxStaircaseColumns - 1) / NetSpace::kMaxStaircaseColumns);; m /= 2) {
+    if (std::optional<Polygon> st = staircase(m * step)) return st;
+    if (m == 1 || cols / (m / 2) > NetSpace::kMaxUnitStaircaseColumns) return std::nullopt;
   }
-  if (rects.empty()) return std::nullopt;
-  // their union (exact: horizontal and vertical edges only) must be one polygon; a part too thin
-  // for a column splits it, or joins it at a corner only (then not one valid polygon either)
-  geom::NormalizedObstacles u = geom::normalize_obstacles(rects, box_of(pin.outer));
-  if (u.obstacles.size() != 1 || !geom::validate_polygon(u.obstacles[0]).empty()) return std::nullopt;
-  return std::move(u.obstacles[0]);
 }
 
 NetSpace::~NetSpace() = default;

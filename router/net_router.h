@@ -298,6 +298,9 @@ class NetSpace {
   // that make at most that many, each also split at the pin's vertices: a coarser staircase (the
   // rectangles of the y's each trapezoid holds at both sides of its column, still in the pin),
   // which holds fewer of the pin's lattice points, so a wire ending on it may be a little longer.
+  // When that staircase is not one valid polygon (a diagonal bar thinner than two columns), columns
+  // of m/2, m/4, ... steps are tried while they make at most kMaxUnitStaircaseColumns (the bound
+  // before 2026-12-04): such a pin is reached as before, at the bend router's cost.
   // (The bend router's work grows with the square of its obstacles' vertices: one net with a
   // diamond pad 20,002 wide took 0.37 s with 256 columns, 1.3 s with 512, 5.3 s with 1,024 and
   // 92 s with 4,096, 2026-12-04.)
@@ -311,6 +314,7 @@ class NetSpace {
     return it == reach_.end() ? nets_[i] : it->second;
   }
   static constexpr std::int64_t kMaxStaircaseColumns = 256;  // 4,096 (and then refused) until 2026-12-04
+  static constexpr std::int64_t kMaxUnitStaircaseColumns = 4096;
 
   // Net `net`'s wires as the other nets see them (replacing earlier ones; empty: none).
   void set_wires(std::size_t net, const std::vector<std::vector<geom::Point>>& wires);

@@ -774,7 +774,8 @@ TEST(NetRouter, PadStaircasesAreTheCellsInThePin) {
 
 // Pins more than NetSpace::kMaxStaircaseColumns (256) steps wide (refused over 4,096 until
 // 2026-12-04: such a net was ROUTE-0010 under the bend-aware metrics when its pin met a
-// blockage's clearance, as the last part here was) get columns of m steps, the fewest that make
+// blockage's clearance; on the old code the staircases here are refused, and the last part's net
+// is ROUTE-0010) get columns of m steps, the fewest that make
 // at most that many, split at the pin's vertices.
 // Diamonds 20,002 wide on the integer lattice (m = 79) and 80,032 wide on the lattice of 8 (m = 40),
 // each with its centre's x off the multiples of m steps, so a column is split there. Each
@@ -784,7 +785,9 @@ TEST(NetRouter, PadStaircasesAreTheCellsInThePin) {
 // that both of the column's sides hold in the diamond (the half-height R - |x - cx|, the smaller
 // of the two, from the diamond's formula), probed at the column's middle half a step inside and
 // outside each bound. An octagon 30,000 wide: valid, inside, at most 256 columns plus its
-// vertices. Then a net with the first diamond as a pad whose right corner lies 2 DBU from a
+// vertices. A diagonal bar 4 high and 400 wide, whose columns of 2 steps would meet only at
+// corners, takes columns of one step; one 10,000 wide is refused (over 4,096 columns of one step).
+// Then a net with the first diamond as a pad whose right corner lies 2 DBU from a
 // blockage (inside its clearance of 3) routes under length + 7 x bends and under the link metric,
 // and passes the checker.
 TEST(NetRouter, WidePadStaircasesTakeCoarserColumns) {
@@ -799,7 +802,7 @@ TEST(NetRouter, WidePadStaircasesTakeCoarserColumns) {
     for (Point& v : q.outer) v = {static_cast<geom::Coord>(2 * v.x), static_cast<geom::Coord>(2 * v.y)};
     return q;
   };
-  auto check_shape = [](const Polygon& pin, const Polygon& st, std::int64_t step) {
+  auto check_shape = [](const Polygon& pin, const Polygon& st, std::int64_t step, std::int64_t most_columns) {
     ASSERT_TRUE(geom::validate_polygon(st).empty()) << geom::validate_polygon(st)[0].message;
     std::set<geom::Coord> xs;
     router::for_each_pin_edge(st, [&](Point a, Point b) {
@@ -811,7 +814,7 @@ TEST(NetRouter, WidePadStaircasesTakeCoarserColumns) {
     });
     std::size_t pin_vertices = 0;
     router::for_each_pin_edge(pin, [&](Point, Point) { ++pin_vertices; });
-    EXPECT_LE(xs.size(), static_cast<std::size_t>(router::NetSpace::kMaxStaircaseColumns) + 1 + pin_vertices);
+    EXPECT_LE(xs.size(), static_cast<std::size_t>(most_columns) + 1 + pin_vertices);
   };
   const std::int64_t most = router::NetSpace::kMaxStaircaseColumns;
   for (const Diamond d : {Diamond{0, 0, 10001, 1}, Diamond{800, -1600, 8 * 5002, 8}}) {
@@ -819,7 +822,7 @@ TEST(NetRouter, WidePadStaircasesTakeCoarserColumns) {
     const Polygon pin = ring_of(d);
     const std::optional<Polygon> st = router::pad_staircase(pin, d.step);
     ASSERT_TRUE(st.has_value());
-    check_shape(pin, *st, d.step);
+    check_shape(pin, *st, d.step, most);
     const std::int64_t x0 = d.cx - d.r, x1 = d.cx + d.r;
     const std::int64_t m = ((x1 - x0) / d.step + most - 1) / most, w = m * d.step;  // the fewest steps per column
     ASSERT_GT(m, 1);
@@ -845,13 +848,26 @@ TEST(NetRouter, WidePadStaircasesTakeCoarserColumns) {
       if (!ok && failed++ < 5) ADD_FAILURE() << "the column [" << xa << ", " << xb << "]: not the y's [" << lo / 2 << ", " << hi / 2 << "]";
     }
     EXPECT_EQ(failed, 0);
-    EXPECT_LE(columns, most + 1);
+    EXPECT_GT(columns, 200);
   }
   {
     const Polygon octagon{{{3000, 0}, {27000, 0}, {30000, 3000}, {30000, 6000}, {27000, 9000}, {3000, 9000}, {0, 6000}, {0, 3000}}, {}};
     const std::optional<Polygon> st = router::pad_staircase(octagon, 1);
     ASSERT_TRUE(st.has_value());
-    check_shape(octagon, *st, 1);
+    check_shape(octagon, *st, 1, router::NetSpace::kMaxStaircaseColumns);
+  }
+  // diagonal bars 4 high: 400 wide, whose columns of 2 steps meet only at corners, takes columns
+  // of one step (as every pin up to 4,096 wide did before); 10,000 wide would need more than
+  // 4,096 columns of one step: refused
+  {
+    const Polygon bar{{{0, 0}, {400, 400}, {400, 404}, {0, 4}}, {}};
+    const std::optional<Polygon> st = router::pad_staircase(bar, 1);
+    ASSERT_TRUE(st.has_value());
+    check_shape(bar, *st, 1, router::NetSpace::kMaxUnitStaircaseColumns);
+    std::set<geom::Coord> xs;
+    router::for_each_pin_edge(*st, [&](Point a, Point) { xs.insert(a.x); });
+    EXPECT_EQ(xs.size(), 401u);  // every x from 0 to 400: columns of one step
+    EXPECT_FALSE(router::pad_staircase(Polygon{{{0, 0}, {10000, 10000}, {10000, 10004}, {0, 4}}, {}}, 1).has_value());
   }
   // routed: the diamond's right corner (10001, 0) lies 2 DBU from the blockage, inside its
   // clearance ceil(2 / 2) + 2 = 3
