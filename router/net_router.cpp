@@ -109,6 +109,13 @@ std::vector<std::pair<Point, Point>> sloped_edges(const Polygon& p) {
   });
   return edges;
 }
+// xs with the x of every vertex of p added, sorted, without repeats.
+template <class X>
+void add_vertex_xs(const Polygon& p, std::vector<X>& xs) {
+  for_each_pin_edge(p, [&](Point a, Point) { xs.push_back(a.x); });
+  std::sort(xs.begin(), xs.end());
+  xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+}
 // The pin's trapezoids over the column [x0, x1], which no vertex lies strictly inside: the
 // (y at x0, y at x1) of each edge of `edges` (sloped_edges) that spans it, in order from the
 // bottom, so that entries 2i and 2i + 1 bound one trapezoid (even-odd: holes and notches stay
@@ -137,9 +144,7 @@ std::vector<Ring> pad_pieces(const Polygon& p) {
     if (auto r = geom::octilinear_convex_ring(p.outer)) return {*r};
   const std::vector<std::pair<Point, Point>> edges = sloped_edges(p);
   std::vector<geom::Coord> xs;
-  for_each_pin_edge(p, [&](Point a, Point) { xs.push_back(a.x); });
-  std::sort(xs.begin(), xs.end());
-  xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+  add_vertex_xs(p, xs);
   std::vector<Ring> out;
   std::vector<std::pair<std::int64_t, std::int64_t>> ys;
   for (std::size_t k = 0; k + 1 < xs.size(); ++k) {
@@ -345,11 +350,7 @@ std::optional<Polygon> pad_staircase(const Polygon& pin, std::int64_t step) {
     std::vector<std::int64_t> xs;
     for (std::int64_t x = x0; x < x1; x += width) xs.push_back(x);
     xs.push_back(x1);
-    if (width > step) {
-      for_each_pin_edge(pin, [&](Point a, Point) { xs.push_back(a.x); });
-      std::sort(xs.begin(), xs.end());
-      xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
-    }
+    if (width > step) add_vertex_xs(pin, xs);
     std::vector<Polygon> rects;
     std::vector<std::pair<std::int64_t, std::int64_t>> ys;
     for (std::size_t k = 0; k + 1 < xs.size(); ++k) {
