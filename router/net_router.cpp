@@ -1092,6 +1092,22 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
       w = std::move(s);
     }
     t.counts.snap_far += far;
+    // the certificate (NetOutcome::shortest): the snapped length against the scaled plane's
+    // exact distance
+    const NetPins& own = space_.net(net);
+    if (t.a.distance && options_.cost == NetRouterOptions::Cost::Length && own.pins.size() == 2 &&
+        is_point_pin(own.pins[0]) && is_point_pin(own.pins[1])) {
+      const geom::Root2 s = *t.a.distance;
+      std::int64_t ax = 0, dg = 0, l1 = 0;
+      for (const auto& wire : t.a.wires)
+        for (std::size_t i = 1; i < wire.size(); ++i) {
+          const std::int64_t dx = std::int64_t{wire[i].x} - wire[i - 1].x, dy = std::int64_t{wire[i].y} - wire[i - 1].y;
+          const geom::Root2 o = geom::octilinear_length(dx, dy);
+          ax += o.a, dg += o.b, l1 += std::abs(dx) + std::abs(dy);
+        }
+      t.a.shortest = options_.octilinear ? geom::Root2{ax, dg} == s : s.b == 0 && l1 < s.a + scale_;
+      t.a.window = t.window;
+    }
   }
   return t;
 }
@@ -1282,8 +1298,11 @@ void NetRouter::place(std::size_t i, NetAttempt a) {
   // the log (changed_) tells attempts made ahead (threads) and failed attempts kept (failed_)
   // whether the space in their windows is still what they saw
   std::unique_lock lock(space_mutex_);
-  for (const Box& b : space_.wire_boxes(i)) changed_.push_back({b, i});
+  for (const Box& b : space_.wire_boxes(i)) changed_.push_back({b, i}), removed_.push_back({b, i});
   out_[i].routed = a.routed;
+  out_[i].shortest = a.routed && a.shortest;
+  out_[i].shortest_window = a.window;
+  out_[i].shortest_since = removed_.size();
   out_[i].wires = a.routed ? std::move(a.wires) : Lines{};
   out_[i].code = a.routed ? std::string() : std::move(a.code);
   out_[i].reason = a.routed ? std::string() : std::move(a.reason);
@@ -1591,6 +1610,23 @@ struct OctRouteFn {
 
 void NetRouter::run(const NetRouteFn& route) {
   run_scaled(route);  // the route function takes the scale from NetPins::scale
+  // NetOutcome::shortest: withdrawn where another net's wire piece was removed from the window
+  // since the claim
+  {
+    bgi::rtree<std::pair<Box, std::size_t>, bgi::rstar<16>> gone;
+    for (std::size_t k = 0; k < removed_.size(); ++k) gone.insert({removed_[k].first, k});
+    std::vector<std::pair<Box, std::size_t>> hits;
+    for (std::size_t i = 0; i < out_.size(); ++i) {
+      NetOutcome& o = out_[i];
+      if (!o.shortest) continue;
+      hits.clear();
+      gone.query(bgi::intersects(o.shortest_window), std::back_inserter(hits));
+      for (const auto& [box, k] : hits)
+        if (k >= o.shortest_since && removed_[k].second != i) o.shortest = false;
+      if (o.shortest) ++stats_.shortest;
+      else ++stats_.shortest_withdrawn;
+    }
+  }
   if (scale_ == 1) return;
   for (NetOutcome& o : out_)
     for (auto& w : o.wires)
@@ -1605,6 +1641,7 @@ void NetRouter::run_scaled(const NetRouteFn& route) {
   alone_.assign(n, std::nullopt);
   final_undone_.clear();
   changed_.clear();  // the log of wire pieces placed and removed
+  removed_.clear();
   rips_log_.clear();
   failed_.assign(n, std::nullopt);
   undone_.assign(n, std::nullopt);
@@ -2015,6 +2052,10 @@ NetAttempt route_with(const NetPins& net, const geom::NormalizedObstacles& obs, 
     const typename Router::Wire w = r.shortest(net.pins[0], net.pins[1]);
     if (w.status != WireStatus::Ok) return fail(w.status);
     a.wires = {w.points};
+    if (w.length) {
+      if constexpr (std::is_same_v<std::decay_t<decltype(*w.length)>, geom::Root2>) a.distance = *w.length;
+      else a.distance = geom::Root2{*w.length, 0};
+    }
   } else if (steiner) {
     const typename Router::Steiner t = r.steiner(std::span<const Polygon>(net.pins));
     if (t.status != WireStatus::Ok) return fail(t.status);

@@ -387,6 +387,14 @@ struct NetAttempt {
   // With NetRouterOptions::cost Combined or Link: per sink (every pin but the first), the L1
   // length and the bends of its optimal path from the first pin (what the windows' proof bounds).
   std::vector<std::pair<std::int64_t, std::int64_t>> sink_costs;
+  // Two pins routed by a shortest path: the exact distance between them in the obstacles routed
+  // among (L1, or octilinear a + b sqrt2), which the wire's length equals; NetRouter certifies
+  // shortest wires with it (NetOutcome::shortest). nullopt: no such claim (a route function of
+  // one's own may leave it).
+  std::optional<geom::Root2> distance;
+  // Set by NetRouter (route functions leave them): see NetOutcome::shortest.
+  bool shortest = false;
+  geom::Box window{};
   // ROUTE-0002 must mean "the pins are in different parts of free space": the one failure a
   // larger window can undo (NetRouter widens the window for it, and for no other code).
 };
@@ -413,6 +421,22 @@ struct NetOutcome {
   std::string code, reason;            // not routed
   std::vector<std::size_t> blockers;   // not routed: the nets whose wires or pins block it
   int rips = 0;                        // times it was ripped up
+  // Routed, and proven as short as any wire the rules allow between its two point pins among the
+  // blockages and the other nets' wires and pins as they are at the end (NetRouter's
+  // certificate, with gaps of exactly the clearance open: scale() > 1, NetRouterOptions::cost
+  // Length, a route function that sets NetAttempt::distance). Any such wire, scaled by K, lies in
+  // the scaled plane's free space (it keeps K a and K b, more than the K a - 1 and K b - 1 grown
+  // there), so none is shorter than S / K for that plane's exact distance S; the snapped wire
+  // passes the rules (`taut route` checks it), so it is shortest when its length R has K R < S + K
+  // in L1 (then R = ceil(S / K), and lengths are integers) or K R = S octilinear. Not claimed with
+  // the gaps closed (two grown obstacles that touch merge there, so a legal wire through a gap of
+  // exactly the clearance would be missed), nor for trees. The claim is made when the net is
+  // placed, among the wires then; wires placed later only take ways away, and it is withdrawn at
+  // the end of run() when a wire piece of another net was removed since then from the window its
+  // route was proven in (outside it every way is longer than the wire, whatever lies there).
+  bool shortest = false;
+  geom::Box shortest_window{};     // (NetRouter's own: that window,
+  std::size_t shortest_since = 0;  // and the length of its log of removed pieces then)
 };
 
 // What NetRouterOptions::progress is told: after each net tried, the nets routed now, the nets
@@ -538,6 +562,9 @@ struct NetRouterStats {
   // Rip-ups not made again because the same one was undone before and nothing has changed in the
   // windows its attempts read (it would be undone again: its rips are counted, in rips and undone).
   std::int64_t replayed = 0;
+  // NetOutcome::shortest: claims kept at the end of run(), and claims withdrawn there (a wire
+  // piece of another net removed from the window since)
+  std::int64_t shortest = 0, shortest_withdrawn = 0;
   double space_seconds = 0, route_seconds = 0;  // building obstacles; routing in them
   double whole_seconds = 0;  // of those two, in windows on the whole domain
   // Wall-clock time of each phase of run(): the first pass, the rip-up rounds, the final round,
@@ -666,6 +693,9 @@ class NetRouter {
   // made ahead, or a failed one kept, is valid while none of another net meets its last window).
   // A rip-up that is undone drops its entries (the space is then as it was before it).
   std::vector<std::pair<geom::Box, std::size_t>> changed_;
+  // The boxes of every wire piece removed since run() began, with their net (never dropped: see
+  // NetOutcome::shortest).
+  std::vector<std::pair<geom::Box, std::size_t>> removed_;
   // The boxes of the wires of every net whose rips were counted without its wires changing (a
   // rip-up undone), since run() began.
   std::vector<std::pair<geom::Box, std::size_t>> rips_log_;

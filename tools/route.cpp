@@ -18,6 +18,7 @@
 #include <set>
 #include <cstdio>
 #include <iostream>
+#include <map>
 #include <span>
 #include <thread>
 #include <vector>
@@ -54,6 +55,8 @@ struct NetResult {
   io::Route route;
   std::string code;  // ROUTE-xxxx when failed
   std::optional<geom::Root2> radius;  // a shortest-path tree's: router::NetAttempt::radius
+  std::optional<geom::Root2> distance;  // two pins by a shortest path: router::NetAttempt::distance
+  bool shortest = false;  // router::NetOutcome::shortest
   std::vector<std::pair<std::int64_t, std::int64_t>> sink_costs;  // bend metrics: router::NetAttempt::sink_costs
 };
 
@@ -212,7 +215,12 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router
                                     " wire with integer vertices has that length (sloped "
                                     "blockages pinch every lattice staircase)");
   }
-  return finish({io::Wire{w.points}});
+  NetResult done = finish({io::Wire{w.points}});
+  if (done.route.status == "routed" && w.length) {
+    if constexpr (oct) done.distance = *w.length;
+    else done.distance = geom::Root2{*w.length, 0};
+  }
+  return done;
 }
 
 // A net as the net router left it: its wires with their length and bends, or failed with its reason.
@@ -228,6 +236,7 @@ NetResult outcome_result(const io::Net& net, const router::NetOutcome& o) {
   r.route.status = "routed";
   r.route.length = io::format_total_length(o.wires);
   r.route.bends = bends;
+  r.shortest = o.shortest;
   return r;
 }
 
@@ -479,6 +488,8 @@ void add_route(CLI::App& app, int& status) {
     routes.tool = "taut " + std::string(router::version());
     std::size_t routed = 0;
     std::optional<router::NetRouterStats> net_stats;
+    // per net routed by the net router: router::NetOutcome::shortest (--stats routes.<net>.shortest)
+    std::map<std::string, bool> shortest_of;
     std::optional<router::NetsTightenStats> tighten_stats;
     int net_threads = 1;
     // the net router's scale for exact gaps (router::NetRouter::scale; 1: closed), and the
@@ -699,6 +710,7 @@ void add_route(CLI::App& app, int& status) {
             a.code = r.code;
             a.reason = r.route.reason.value_or("");
             a.radius = r.radius;
+            a.distance = r.distance;
             return a;
           });
           net_stats = nr.stats();
@@ -737,6 +749,7 @@ void add_route(CLI::App& app, int& status) {
           r = l1 ? route_net(*layout, net, *l1, steiner) : route_net(*layout, net, *oct, steiner);
         } else {
           r = std::move(together[ni]);
+          if (r.route.status == "routed") shortest_of[net.name] = r.shortest;
         }
         if (r.route.status == "routed") {
           ++routed;
@@ -906,8 +919,14 @@ void add_route(CLI::App& app, int& status) {
     const double prepare_s = std::chrono::duration<double>(t1 - t0).count(), route_s = std::chrono::duration<double>(t2 - t1).count(),
                  output_s = std::chrono::duration<double>(t3 - t2).count();
     j["route_seconds"] = {{"prepare", prepare_s}, {"route", route_s}, {"output", output_s}};
+    std::int64_t proven_shortest = 0;
+    for (const auto& [name, s] : shortest_of) {
+      proven_shortest += s;
+      if (j["routes"].contains(name)) j["routes"][name]["shortest"] = s;
+    }
     if (net_stats)
       j["net_router"] = {{"first_pass_routed", net_stats->first_pass},
+                         {"proven_shortest", proven_shortest},
                          {"rip_up_rounds", net_stats->rounds},
                          {"rip_ups", net_stats->rips},
                          {"attempts", net_stats->attempts},

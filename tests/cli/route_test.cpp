@@ -903,11 +903,17 @@ TEST(Route, GapsOfExactlyTheClearanceTakeWires) {
     // designs/pitch.xml (make run): four nets through a channel exactly four tracks wide all
     // route and pass the check; with --tighten (the gaps closed) the fourth track is lost
     const std::string design = kDesigns + "pitch.xml";
-    const auto r = run_taut({"route", design, "-q", "-o", dir + "/pitch.xml"});
+    const auto r = run_taut({"route", design, "-q", "-o", dir + "/pitch.xml", "--stats", dir + "/pitch.json"});
     EXPECT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(run_taut({"check", dir + "/pitch.xml", "-q"}).status, 0);
-    const auto t = run_taut({"route", design, "--tighten", "-o", dir + "/pitch.tight.xml"});
+    // each of the four two-pin nets proven shortest (router::NetOutcome::shortest)
+    const auto j = nlohmann::json::parse(read_text(dir + "/pitch.json"));
+    EXPECT_EQ(j["net_router"]["proven_shortest"], 4) << j.dump();
+    for (const auto& [name, e] : j["routes"].items()) EXPECT_EQ(e["shortest"], true) << name;
+    const auto t = run_taut({"route", design, "--tighten", "-o", dir + "/pitch.tight.xml", "--stats", dir + "/pitch.tight.json"});
     EXPECT_EQ(t.status, 1) << t.err;
+    // the gaps closed: nothing proven
+    EXPECT_EQ(nlohmann::json::parse(read_text(dir + "/pitch.tight.json"))["net_router"]["proven_shortest"], 0);
     EXPECT_NE(t.err.find("ROUTE-0012"), std::string::npos) << t.err;
   }
   {

@@ -1191,7 +1191,7 @@ TEST(NetRouter, ThreadsGiveTheSameOutcomes) {
     for (std::size_t i = 0; i < one.outcomes().size(); ++i) {
       const auto &a = one.outcomes()[i], &b = par.outcomes()[i];
       ok = ok && a.routed == b.routed && a.wires == b.wires && a.code == b.code && a.reason == b.reason &&
-           a.blockers == b.blockers && a.rips == b.rips;
+           a.blockers == b.blockers && a.rips == b.rips && a.shortest == b.shortest;
     }
     if (!ok && failed++ < 5) ADD_FAILURE() << at << ": the outcomes differ from one thread's";
     speculated += y.speculated;
