@@ -46,6 +46,12 @@ struct BasicWire {
   std::optional<Len> length;           // exact distance (Ok, NoIntegerStaircase)
   std::vector<geom::Point> polygonal;  // the wavefront's shortest path (Ok, NoIntegerStaircase)
   std::vector<geom::Point> points;     // the rectilinear (octilinear) wire: bends only, integer (Ok)
+  // length as a + b sqrt2 (an L1 length has b = 0), for code that takes either metric
+  std::optional<geom::Root2> root2_length() const {
+    if (!length) return std::nullopt;
+    if constexpr (std::is_same_v<Len, geom::Root2>) return *length;
+    else return geom::Root2{*length, 0};
+  }
 };
 using L1Wire = BasicWire<std::int64_t>;
 

@@ -51,6 +51,16 @@ std::int64_t l1_length(const Lines& wires) {
       n += std::abs(std::int64_t{w[i + 1].x} - w[i].x) + std::abs(std::int64_t{w[i + 1].y} - w[i].y);
   return n;
 }
+bool two_point_pins(const NetPins& n) { return n.pins.size() == 2 && is_point_pin(n.pins[0]) && is_point_pin(n.pins[1]); }
+// The octilinear length a + b sqrt2 of wires whose segments are axis-parallel or diagonal (of
+// any segment, its octilinear distance).
+geom::Root2 oct_length(const Lines& wires) {
+  geom::Root2 n{0, 0};
+  for (const auto& w : wires)
+    for (std::size_t i = 0; i + 1 < w.size(); ++i)
+      n = n + geom::octilinear_length(std::int64_t{w[i + 1].x} - w[i].x, std::int64_t{w[i + 1].y} - w[i].y);
+  return n;
+}
 
 std::string net_list(std::span<const std::size_t> nets, const std::function<std::string(std::size_t)>& name) {
   std::string s;
@@ -1044,7 +1054,7 @@ namespace {
 // then needs the whole length inside the margin).
 std::int64_t first_margin(const NetPins& pins, const Box& hp, std::int64_t a, std::int64_t b) {
   const std::int64_t hpwl = (std::int64_t{hp.hi.x} - hp.lo.x) + (std::int64_t{hp.hi.y} - hp.lo.y);
-  const bool two_points = pins.pins.size() == 2 && is_point_pin(pins.pins[0]) && is_point_pin(pins.pins[1]);
+  const bool two_points = two_point_pins(pins);
   if (two_points) return hpwl / 2 + 4 * (a + b) + 32;
   if (pins.pins.size() >= 3) {
     const Box s = box_of(pins.pins[0].outer);
@@ -1095,17 +1105,9 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
     // the certificate (NetOutcome::shortest): the snapped length against the scaled plane's
     // exact distance
     const NetPins& own = space_.net(net);
-    if (t.a.distance && options_.cost == NetRouterOptions::Cost::Length && own.pins.size() == 2 &&
-        is_point_pin(own.pins[0]) && is_point_pin(own.pins[1])) {
+    if (t.a.distance && certifies() && two_point_pins(own)) {
       const geom::Root2 s = *t.a.distance;
-      std::int64_t ax = 0, dg = 0, l1 = 0;
-      for (const auto& wire : t.a.wires)
-        for (std::size_t i = 1; i < wire.size(); ++i) {
-          const std::int64_t dx = std::int64_t{wire[i].x} - wire[i - 1].x, dy = std::int64_t{wire[i].y} - wire[i - 1].y;
-          const geom::Root2 o = geom::octilinear_length(dx, dy);
-          ax += o.a, dg += o.b, l1 += std::abs(dx) + std::abs(dy);
-        }
-      t.a.shortest = options_.octilinear ? geom::Root2{ax, dg} == s : s.b == 0 && l1 < s.a + scale_;
+      t.a.shortest = options_.octilinear ? oct_length(t.a.wires) == s : s.b == 0 && l1_length(t.a.wires) < s.a + scale_;
       t.a.window = t.window;
     }
   }
@@ -1223,7 +1225,7 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
       const std::int64_t len = l1_length(a.wires);
       bool proven;
       std::optional<std::int64_t> fit;  // a margin in which this answer would pass its proof
-      if (pins.pins.size() == 2 && is_point_pin(pins.pins[0]) && is_point_pin(pins.pins[1])) {
+      if (two_point_pins(pins)) {
         // A way out through a top or bottom side at distance d from the pins' box climbs at
         // least |dy| + 2d, through a left or right one |dx| + 2d: a lower bound in L1 and in
         // the octilinear metric alike (each unit along an axis costs at least 1).
@@ -1239,13 +1241,7 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
           proven = len <= dx + dy + 2 * (inner(hp) - 2);  // L1: the way out also covers the other axis
           fit = (len - dx - dy + 1) / 2 + 3;  // then len <= dx + dy + 2 (m - 2)
         } else {  // the octilinear length a + b sqrt2 (axis a, diagonal b) <= bound, exactly
-          std::int64_t ax = 0, dg = 0;
-          for (const auto& wire : a.wires)
-            for (std::size_t i = 1; i < wire.size(); ++i) {
-              const std::int64_t ux = std::abs(std::int64_t{wire[i].x} - wire[i - 1].x), uy = std::abs(std::int64_t{wire[i].y} - wire[i - 1].y);
-              ax += std::max(ux, uy) - std::min(ux, uy);
-              dg += std::min(ux, uy);
-            }
+          const auto [ax, dg] = oct_length(a.wires);
           const __int128 room = static_cast<__int128>(bound) - ax;
           proven = room >= 0 && 2 * static_cast<__int128>(dg) * dg <= room * room;
           fit = (len + 1) / 2 + 3;  // every side's bound is then >= len (L1) >= the octilinear length
@@ -1298,7 +1294,10 @@ void NetRouter::place(std::size_t i, NetAttempt a) {
   // the log (changed_) tells attempts made ahead (threads) and failed attempts kept (failed_)
   // whether the space in their windows is still what they saw
   std::unique_lock lock(space_mutex_);
-  for (const Box& b : space_.wire_boxes(i)) changed_.push_back({b, i}), removed_.push_back({b, i});
+  for (const Box& b : space_.wire_boxes(i)) {
+    changed_.push_back({b, i});
+    if (certifies()) removed_.push_back({b, i});
+  }
   out_[i].routed = a.routed;
   out_[i].shortest = a.routed && a.shortest;
   out_[i].shortest_window = a.window;
@@ -1612,9 +1611,11 @@ void NetRouter::run(const NetRouteFn& route) {
   run_scaled(route);  // the route function takes the scale from NetPins::scale
   // NetOutcome::shortest: withdrawn where another net's wire piece was removed from the window
   // since the claim
-  {
-    bgi::rtree<std::pair<Box, std::size_t>, bgi::rstar<16>> gone;
-    for (std::size_t k = 0; k < removed_.size(); ++k) gone.insert({removed_[k].first, k});
+  if (certifies()) {
+    std::vector<std::pair<Box, std::size_t>> entries;
+    entries.reserve(removed_.size());
+    for (std::size_t k = 0; k < removed_.size(); ++k) entries.push_back({removed_[k].first, k});
+    const bgi::rtree<std::pair<Box, std::size_t>, bgi::rstar<16>> gone(entries.begin(), entries.end());
     std::vector<std::pair<Box, std::size_t>> hits;
     for (std::size_t i = 0; i < out_.size(); ++i) {
       NetOutcome& o = out_[i];
@@ -2052,10 +2053,7 @@ NetAttempt route_with(const NetPins& net, const geom::NormalizedObstacles& obs, 
     const typename Router::Wire w = r.shortest(net.pins[0], net.pins[1]);
     if (w.status != WireStatus::Ok) return fail(w.status);
     a.wires = {w.points};
-    if (w.length) {
-      if constexpr (std::is_same_v<std::decay_t<decltype(*w.length)>, geom::Root2>) a.distance = *w.length;
-      else a.distance = geom::Root2{*w.length, 0};
-    }
+    a.distance = w.root2_length();
   } else if (steiner) {
     const typename Router::Steiner t = r.steiner(std::span<const Polygon>(net.pins));
     if (t.status != WireStatus::Ok) return fail(t.status);

@@ -696,6 +696,8 @@ class NetRouter {
   // The boxes of every wire piece removed since run() began, with their net (never dropped: see
   // NetOutcome::shortest).
   std::vector<std::pair<geom::Box, std::size_t>> removed_;
+  // Whether NetOutcome::shortest may be claimed in this run (else removed_ stays empty)
+  bool certifies() const { return scale_ > 1 && options_.cost == NetRouterOptions::Cost::Length; }
   // The boxes of the wires of every net whose rips were counted without its wires changing (a
   // rip-up undone), since run() began.
   std::vector<std::pair<geom::Box, std::size_t>> rips_log_;

@@ -18,7 +18,6 @@
 #include <set>
 #include <cstdio>
 #include <iostream>
-#include <map>
 #include <span>
 #include <thread>
 #include <vector>
@@ -216,10 +215,7 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router
                                     "blockages pinch every lattice staircase)");
   }
   NetResult done = finish({io::Wire{w.points}});
-  if (done.route.status == "routed" && w.length) {
-    if constexpr (oct) done.distance = *w.length;
-    else done.distance = geom::Root2{*w.length, 0};
-  }
+  if (done.route.status == "routed") done.distance = w.root2_length();
   return done;
 }
 
@@ -489,7 +485,7 @@ void add_route(CLI::App& app, int& status) {
     std::size_t routed = 0;
     std::optional<router::NetRouterStats> net_stats;
     // per net routed by the net router: router::NetOutcome::shortest (--stats routes.<net>.shortest)
-    std::map<std::string, bool> shortest_of;
+    std::vector<std::optional<bool>> shortest_of(layout->nets.size());
     std::optional<router::NetsTightenStats> tighten_stats;
     int net_threads = 1;
     // the net router's scale for exact gaps (router::NetRouter::scale; 1: closed), and the
@@ -749,7 +745,7 @@ void add_route(CLI::App& app, int& status) {
           r = l1 ? route_net(*layout, net, *l1, steiner) : route_net(*layout, net, *oct, steiner);
         } else {
           r = std::move(together[ni]);
-          if (r.route.status == "routed") shortest_of[net.name] = r.shortest;
+          if (r.route.status == "routed") shortest_of[ni] = r.shortest;
         }
         if (r.route.status == "routed") {
           ++routed;
@@ -919,14 +915,11 @@ void add_route(CLI::App& app, int& status) {
     const double prepare_s = std::chrono::duration<double>(t1 - t0).count(), route_s = std::chrono::duration<double>(t2 - t1).count(),
                  output_s = std::chrono::duration<double>(t3 - t2).count();
     j["route_seconds"] = {{"prepare", prepare_s}, {"route", route_s}, {"output", output_s}};
-    std::int64_t proven_shortest = 0;
-    for (const auto& [name, s] : shortest_of) {
-      proven_shortest += s;
-      if (j["routes"].contains(name)) j["routes"][name]["shortest"] = s;
-    }
+    for (std::size_t i = 0; i < shortest_of.size(); ++i)
+      if (shortest_of[i] && j["routes"].contains(layout->nets[i].name)) j["routes"][layout->nets[i].name]["shortest"] = *shortest_of[i];
     if (net_stats)
       j["net_router"] = {{"first_pass_routed", net_stats->first_pass},
-                         {"proven_shortest", proven_shortest},
+                         {"proven_shortest", net_stats->shortest},
                          {"rip_up_rounds", net_stats->rounds},
                          {"rip_ups", net_stats->rips},
                          {"attempts", net_stats->attempts},
