@@ -1622,8 +1622,9 @@ void NetRouter::run(const NetRouteFn& route) {
       if (!o.shortest) continue;
       hits.clear();
       gone.query(bgi::intersects(o.shortest_window), std::back_inserter(hits));
+      const std::int64_t kr = l1_length(o.wires);  // (still in the scaled plane)
       for (const auto& [box, k] : hits)
-        if (k >= o.shortest_since && removed_[k].second != i) o.shortest = false;
+        if (k >= o.shortest_since && removed_[k].second != i && may_open(i, kr, box)) o.shortest = false;
       if (o.shortest) ++stats_.shortest;
       else ++stats_.shortest_withdrawn;
     }
@@ -1632,6 +1633,45 @@ void NetRouter::run(const NetRouteFn& route) {
   for (NetOutcome& o : out_)
     for (auto& w : o.wires)
       for (Point& p : w) p = Point{static_cast<geom::Coord>(p.x / scale_), static_cast<geom::Coord>(p.y / scale_)};
+}
+
+// Whether a wire of net i shorter than its claimed one (of length kr in the scaled plane) may
+// pass through box b, where another net's wire piece was removed after the claim. Not when b lies
+// outside the claim's window (every way out of it is longer), nor, in L1, when b misses the
+// region {x : |x - p| + |x - q| <= kr - K} round the net's pins p and q: a legal wire of length
+// at most R - 1 lies there scaled, so if it missed every removed piece it was free when the
+// claim was made, and then the distance S there had K R >= S + K, which the claim excludes.
+bool NetRouter::may_open(std::size_t i, std::int64_t kr, const Box& b) const {
+  if (!boxes_meet(b, out_[i].shortest_window)) return false;
+  if (options_.octilinear) return true;
+  const Point p = space_.net(i).pins[0].outer[0], q = space_.net(i).pins[1].outer[0];
+  // the least of |x - a| + |x - c| over x in [lo, hi] (taken at a clamped into it)
+  auto least = [](std::int64_t lo, std::int64_t hi, std::int64_t a, std::int64_t c) {
+    const std::int64_t x = std::clamp(a, lo, hi);
+    return std::abs(x - a) + std::abs(x - c);
+  };
+  return least(b.lo.x, b.hi.x, p.x, q.x) + least(b.lo.y, b.hi.y, p.y, q.y) <= kr - scale_;
+}
+
+std::size_t NetRouter::withdraw_claims(std::size_t j, const std::vector<std::vector<Point>>& before) {
+  if (!certifies() || before.empty()) return 0;
+  Lines scaled_before = before;
+  for (auto& w : scaled_before)
+    for (Point& p : w) p = scaled(p, scale_);
+  std::vector<Box> gone;
+  for (const Polygon& piece : space_.wire_union(scaled_before)) gone.push_back(box_of(piece.outer));
+  std::size_t withdrawn = 0;
+  for (std::size_t i = 0; i < out_.size(); ++i) {
+    NetOutcome& o = out_[i];
+    if (i == j || !o.shortest) continue;
+    const std::int64_t kr = scale_ * l1_length(o.wires);
+    if (std::none_of(gone.begin(), gone.end(), [&](const Box& b) { return may_open(i, kr, b); })) continue;
+    o.shortest = false;
+    --stats_.shortest;
+    ++stats_.shortest_withdrawn;
+    ++withdrawn;
+  }
+  return withdrawn;
 }
 
 void NetRouter::run_scaled(const NetRouteFn& route) {

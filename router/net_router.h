@@ -433,7 +433,10 @@ struct NetOutcome {
   // exactly the clearance would be missed), nor for trees. The claim is made when the net is
   // placed, among the wires then; wires placed later only take ways away, and it is withdrawn at
   // the end of run() when a wire piece of another net was removed since then from the window its
-  // route was proven in (outside it every way is longer than the wire, whatever lies there).
+  // route was proven in (outside it every way is longer than the wire, whatever lies there) and,
+  // in L1, from the region a shorter wire would lie in, |x - p| + |x - q| <= K R - K round its
+  // scaled pins p and q (since 2026-12-05; a shorter wire that met no removed piece was free when
+  // the claim was made). withdraw_claims does the same for wires changed after run().
   bool shortest = false;
   geom::Box shortest_window{};     // (NetRouter's own: that window,
   std::size_t shortest_since = 0;  // and the length of its log of removed pieces then)
@@ -583,6 +586,15 @@ class NetRouter {
   // Routes every net (see above).
   void run(const NetRouteFn& route);
 
+  // After run(), when a net's wires are changed (taut route --tighten pulls every wire taut):
+  // `before` (net j's wires as outcomes() gave them, in the layout's units) are gone. As run()
+  // does for the wire pieces removed while it routes, the claim (NetOutcome::shortest) of every
+  // other net whose proof window, and in L1 the region a shorter wire of it would lie in, meet a
+  // grown piece of them is withdrawn: a way may have opened there. (A claim this leaves stands for the net's new wire too when that is no longer in the
+  // output's metric, as tightening's are: outside the window every way is longer, and inside it
+  // only wires were added.) Returns how many claims it withdrew; stats() counts them.
+  std::size_t withdraw_claims(std::size_t j, const std::vector<std::vector<geom::Point>>& before);
+
   // A route function for L1 rectilinear wires (router/l1_router.h): two pins by shortest(), more
   // by tree() from the first pin, or by steiner() when `steiner` (point and shape pins).
   static NetRouteFn l1_router(bool steiner);
@@ -698,6 +710,7 @@ class NetRouter {
   std::vector<std::pair<geom::Box, std::size_t>> removed_;
   // Whether NetOutcome::shortest may be claimed in this run (else removed_ stays empty)
   bool certifies() const { return scale_ > 1 && options_.cost == NetRouterOptions::Cost::Length; }
+  bool may_open(std::size_t i, std::int64_t kr, const geom::Box& b) const;
   // The boxes of the wires of every net whose rips were counted without its wires changing (a
   // rip-up undone), since run() began.
   std::vector<std::pair<geom::Box, std::size_t>> rips_log_;

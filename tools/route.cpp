@@ -12,12 +12,14 @@
 // on stderr; the exit status is then 1. --tighten then pulls every routed wire taut in its
 // class and writes it with the fewest links; a net with a <sketch> gets its sketch tightened
 // (tools/route_common.h: WireTightener, as `taut tighten` does).
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
 #include <set>
 #include <cstdio>
 #include <iostream>
+#include <memory>
 #include <span>
 #include <thread>
 #include <vector>
@@ -486,6 +488,7 @@ void add_route(CLI::App& app, int& status) {
     std::optional<router::NetRouterStats> net_stats;
     // per net routed by the net router: router::NetOutcome::shortest (--stats routes.<net>.shortest)
     std::vector<std::optional<bool>> shortest_of(layout->nets.size());
+    std::unique_ptr<router::NetRouter> net_router;  // the last run of the nets together
     std::optional<router::NetsTightenStats> tighten_stats;
     int net_threads = 1;
     // the net router's scale for exact gaps (router::NetRouter::scale; 1: closed), and the
@@ -664,9 +667,12 @@ void add_route(CLI::App& app, int& status) {
           steiner_ok[i] = args->tree == "steiner" && !why;
         }
         try {
-          // exact gaps (NetRouter::scale; not with --tighten, whose tightening closes them),
-          // checked; routed again without them if the check fails
-          for (const bool exact : {!args->tighten, false}) {
+          // exact gaps (NetRouter::scale), checked; routed again without them if the check
+          // fails. With --tighten too (a wire in such a gap is kept as routed: the tightening's
+          // triangulated space closes it), unless a net follows its sketch: a sketch is
+          // tightened in the router's space, which is then in the layout's units.
+          const bool sketches = std::any_of(layout->nets.begin(), layout->nets.end(), [&](const io::Net& n) { return follows_sketch(n); });
+          for (const bool exact : {!args->tighten || !sketches, false}) {
           router::NetRouterOptions nro;
           nro.octilinear = octilinear;
           nro.stop = stop;
@@ -677,7 +683,8 @@ void add_route(CLI::App& app, int& status) {
           nro.threads = static_cast<int>(args->threads ? args->threads : std::max(1u, std::thread::hardware_concurrency()));
           nro.exact_gaps = exact;
           net_threads = nro.threads;
-          router::NetRouter nr(space.domain, space.obstacles, pins, rules, nro);
+          net_router = std::make_unique<router::NetRouter>(space.domain, space.obstacles, pins, rules, nro);
+          router::NetRouter& nr = *net_router;
           const std::int64_t k = nr.scale();
           nr.run([&](std::size_t i, const router::NetPins& pins, const geom::NormalizedObstacles& obs) {
             const io::Net& net = layout->nets[i];
@@ -790,6 +797,19 @@ void add_route(CLI::App& app, int& status) {
         router::NetsTightener nt(ts, o);
         const std::vector<router::NetTightenOutcome> outs = nt.run(wires, kind);
         tighten_stats = nt.stats();
+        // A claim of shortest length stands only while no other net's wire left its proof window
+        // (router::NetRouter::withdraw_claims): tightening moves wires.
+        if (net_router) {
+          for (std::size_t i = 0; i < layout->nets.size(); ++i) {
+            if (routes.routes[i].status != "routed" || wires[i].empty()) continue;
+            router::NetLines before;
+            for (const io::Wire& w : routes.routes[i].wires) before.push_back(w.points);
+            if (before != wires[i]) net_router->withdraw_claims(i, before);
+          }
+          for (std::size_t i = 0; i < layout->nets.size(); ++i)
+            if (shortest_of[i]) shortest_of[i] = net_router->outcomes()[i].shortest;
+          net_stats = net_router->stats();
+        }
         for (std::size_t i = 0; i < layout->nets.size(); ++i) {
           const io::Net& net = layout->nets[i];
           io::Route& route = routes.routes[i];
