@@ -356,9 +356,15 @@ NetResult route_net_bends(const io::Layout& layout, const io::Net& net, const Be
 // make room for it, ripped up when they are in its way). A sketch that leaves the window asks for a larger one (ROUTE-0002, the
 // one code the net router widens the window for; the whole domain holds every sketch).
 router::NetAttempt sketch_attempt(const io::Layout& layout, const io::Net& net, const geom::NormalizedObstacles& obs,
-                                  const std::string& orientations, const geom::Box& whole) {
+                                  const std::string& orientations, const geom::Box& whole, std::int64_t k = 1) {
   router::NetAttempt a;
-  const std::vector<geom::Point>& sk = net.sketch->points;
+  // (in the net router's plane, scaled by k: exact gaps; the reason's point is given back in the
+  // layout's units, rounded to the nearest)
+  std::vector<geom::Point> sk = net.sketch->points;
+  for (geom::Point& p : sk) p = {static_cast<geom::Coord>(p.x * k), static_cast<geom::Coord>(p.y * k)};
+  auto unscaled = [k](std::int64_t v) {  // the nearest integer to v / k (halves away from zero)
+    return static_cast<geom::Coord>(v >= 0 ? (v + k / 2) / k : -((-v + k / 2) / k));
+  };
   const geom::Box b = geom::bounding_box(sk), d = obs.domain;
   // a loop sketch is taken on the whole domain only (the net router's window proofs are for wires
   // between pins)
@@ -374,7 +380,8 @@ router::NetAttempt sketch_attempt(const io::Layout& layout, const io::Net& net, 
     a.code = "ROUTE-0018";
     a.reason = "its <sketch> (" + layout.file + ":" + std::to_string(net.sketch->line) +
                ") comes within the clearance of a blockage or of another net's wire or pin: its segment " +
-               std::to_string(r.taut.segment + 1) + " at or after " + point_text(r.taut.where);
+               std::to_string(r.taut.segment + 1) + " at or after " +
+               point_text(geom::Point{unscaled(r.taut.where.x), unscaled(r.taut.where.y)});
     return a;
   }
   if (r.no_staircase) {
@@ -669,10 +676,9 @@ void add_route(CLI::App& app, int& status) {
         try {
           // exact gaps (NetRouter::scale), checked; routed again without them if the check
           // fails. With --tighten too (a wire in such a gap is kept as routed: the tightening's
-          // triangulated space closes it), unless a net follows its sketch: a sketch is
-          // tightened in the router's space, which is then in the layout's units.
-          const bool sketches = std::any_of(layout->nets.begin(), layout->nets.end(), [&](const io::Net& n) { return follows_sketch(n); });
-          for (const bool exact : {!args->tighten || !sketches, false}) {
+          // triangulated space closes it; a net that follows its sketch has it tightened in the
+          // router's scaled plane, and snapped back as every wire is).
+          for (const bool exact : {true, false}) {
           router::NetRouterOptions nro;
           nro.octilinear = octilinear;
           nro.stop = stop;
@@ -695,7 +701,9 @@ void add_route(CLI::App& app, int& status) {
                 a.reason = "the loop sketch winds around no blockage: it can be pulled to a point";
                 return a;
               }
-              return sketch_attempt(*layout, net, obs, orient_word, net_domain);
+              const geom::Box whole{{static_cast<geom::Coord>(net_domain.lo.x * pins.scale), static_cast<geom::Coord>(net_domain.lo.y * pins.scale)},
+                                    {static_cast<geom::Coord>(net_domain.hi.x * pins.scale), static_cast<geom::Coord>(net_domain.hi.y * pins.scale)}};
+              return sketch_attempt(*layout, net, obs, orient_word, whole, pins.scale);
             }
             NetResult r;
             const io::Net sn = scaled_net(net, pins.scale);
