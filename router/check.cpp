@@ -661,7 +661,7 @@ CheckResult check_routes(const geom::NormalizedObstacles& obstacles, std::span<c
   }
   for (std::size_t n = 0; n < nets.size(); ++n) {
     const CheckNet& net = nets[n];
-    if (!net.routed) continue;
+    if (!net.routed || net.loop) continue;
     const std::size_t wires = net.wires.size(), items = wires + net.pins.size();
     UnionFind uf(items);
     for (std::size_t i = first[n]; i < first[n + 1]; ++i) {

@@ -83,6 +83,10 @@ struct CheckNet {
   std::vector<CheckWire> wires;  // empty for a net not routed (not checked)
   bool routed = false;
   int line = 0;  // the <route>'s line
+  // A net with a loop sketch (a guard ring, README's "Loops"): its loop belongs to no pin, and its
+  // pins are not joined to it, so its connectivity is not checked (free space, shorts and the
+  // clearance are).
+  bool loop = false;
 };
 
 struct CheckProblem {

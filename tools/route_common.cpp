@@ -146,6 +146,7 @@ router::CheckNet check_net(const io::Net& net) {
   router::CheckNet c;
   c.name = net.name;
   c.line = net.line;
+  c.loop = net.sketch && WireTightener::is_loop(net.sketch->points);
   for (const io::Pin& p : net.pins) {
     router::CheckPin cp;
     cp.name = p.name;

@@ -835,6 +835,42 @@ TEST(Tighten, ContractibleLoopIsAFailedNet) {
   EXPECT_EQ(nets[1]["min_links"], 3) << nets[1];
 }
 
+// A guard ring with a pin (README's "Loops": the loop belongs to no pin, and the pins are not
+// joined to it) beside a net with two pins, with rules: route --tighten writes the ring round both
+// blockages, and taut check accepts it (since 2026-12-05: it reported CHECK-0005, a wire touching
+// none of the net's pins, so route's check of the exact gaps failed too, and the run went again
+// with the gaps closed, ROUTE-0019). The ring's loop keeps the gaps open (exact_gaps.scale > 1).
+TEST(Tighten, GuardRingWithAPinPassesTheCheck) {
+  const std::string dir = temp_dir("tighten_ring_pin");
+  const std::string file = layout_file("tighten_ring_pin_in",
+                                       "  <boundary x0=\"0\" y0=\"0\" x1=\"2000\" y1=\"2000\"/>\n"
+                                       "  <rules wire-width=\"20\" spacing=\"20\"/>\n"
+                                       "  <blockage id=\"core\"><rect x0=\"800\" y0=\"800\" x1=\"1200\" y1=\"1200\"/></blockage>\n"
+                                       "  <blockage id=\"side\"><rect x0=\"1240\" y0=\"900\" x1=\"1400\" y1=\"1100\"/></blockage>\n"
+                                       "  <net name=\"ring\"><pin name=\"a\" x=\"500\" y=\"500\"/>"
+                                       "<sketch points=\"500,500 1500,500 1500,1500 500,1500 500,500\"/></net>\n"
+                                       "  <net name=\"x\"><pin name=\"a\" x=\"100\" y=\"100\"/><pin name=\"b\" x=\"1900\" y=\"1900\"/></net>\n");
+  const auto routed = run_taut({"route", file, "--tighten", "-o", dir + "/r.xml", "--stats", dir + "/r.json"});
+  EXPECT_EQ(routed.status, 0) << routed.err;
+  EXPECT_EQ(routed.err.find("ROUTE-0019"), std::string::npos) << routed.err;
+  EXPECT_GT(nlohmann::json::parse(read_text(dir + "/r.json"))["net_router"]["exact_gaps"]["scale"].get<int>(), 1);
+  // round both blockages, at the clearance 10 + 20 = 30 from them (the gap between them, 40, is
+  // too narrow for the ring to pass)
+  const std::vector<Path> ring = wires_of(dir + "/r.xml", "ring");
+  ASSERT_EQ(ring.size(), 1u);
+  const Path& w = ring[0];
+  ASSERT_GE(w.size(), 5u);
+  EXPECT_EQ(w.front(), w.back());
+  const auto [lx, hx] = std::minmax_element(w.begin(), w.end(), [](Point a, Point b) { return a.x < b.x; });
+  const auto [ly, hy] = std::minmax_element(w.begin(), w.end(), [](Point a, Point b) { return a.y < b.y; });
+  EXPECT_EQ(lx->x, 770);
+  EXPECT_EQ(hx->x, 1430);
+  EXPECT_EQ(ly->y, 770);
+  EXPECT_EQ(hy->y, 1230);
+  const auto check = run_taut({"check", dir + "/r.xml", "-q"});
+  EXPECT_EQ(check.status, 0) << check.out << check.err;
+}
+
 TEST(Tighten, CSetInTheRulesIsWrittenAtAnyAngle) {
   const std::string dir = temp_dir("tighten_cset");
   const std::string file = layout_file("tighten_cset_in",
