@@ -510,7 +510,8 @@ TEST(ExactGaps, ClaimsStandAfterTightening) {
               static_cast<long long>(claims), static_cast<long long>(withdrawn), static_cast<long long>(moved),
               static_cast<long long>(kept));
   EXPECT_EQ(failed, 0);
-  EXPECT_GT(claims, 100);
+  EXPECT_GT(claims, static_cast<std::int64_t>(seeds.size()));  // (711 over 604 layouts, 40 over 24 sanitized)
+  EXPECT_GT(withdrawn + no_withdrawal, 0);
   EXPECT_GT(moved, 0);
   EXPECT_GT(kept, 0);
 }
