@@ -661,7 +661,9 @@ CheckResult check_routes(const geom::NormalizedObstacles& obstacles, std::span<c
   }
   for (std::size_t n = 0; n < nets.size(); ++n) {
     const CheckNet& net = nets[n];
-    if (!net.routed || net.loop) continue;
+    if (!net.routed) continue;
+    auto closed = [](const CheckWire& w) { return w.points.size() >= 2 && w.points.front() == w.points.back(); };
+    if (net.loop && std::all_of(net.wires.begin(), net.wires.end(), closed)) continue;
     const std::size_t wires = net.wires.size(), items = wires + net.pins.size();
     UnionFind uf(items);
     for (std::size_t i = first[n]; i < first[n + 1]; ++i) {
@@ -701,7 +703,7 @@ CheckResult check_routes(const geom::NormalizedObstacles& obstacles, std::span<c
         result.problems.push_back(std::move(pr));
       }
     for (std::size_t w = 0; w < wires; ++w)
-      if (uf.find(w) != root && !net.wires[w].points.empty()) {
+      if (uf.find(w) != root && !net.wires[w].points.empty() && !(net.loop && closed(net.wires[w]))) {
         // Stray only when its group holds no pin at all (a group with pins was named above).
         bool has_pin = false;
         for (std::size_t p = 0; p < net.pins.size(); ++p) has_pin = has_pin || uf.find(wires + p) == uf.find(w);

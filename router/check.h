@@ -84,8 +84,9 @@ struct CheckNet {
   bool routed = false;
   int line = 0;  // the <route>'s line
   // A net with a loop sketch (a guard ring, README's "Loops"): its loop belongs to no pin, and its
-  // pins are not joined to it, so its connectivity is not checked (free space, shorts and the
-  // clearance are).
+  // pins are not joined to it, so a closed wire of it (first point = last) need touch no pin, and
+  // when all its wires are closed its pins need not be connected (free space, shorts and the
+  // clearance are checked as for every net; its other wires as for every net).
   bool loop = false;
 };
 

@@ -449,6 +449,8 @@ TEST(Route, TightenTogetherKeepsTheRules) {
   const auto near = run_taut({"route", layout_file("route_tighten_sketch_close", close), "--tighten", "-o", dir + "/near.xml"});
   EXPECT_EQ(near.status, 1) << near.err;
   EXPECT_NE(near.err.find("[ROUTE-0018] net \"a\" not routed: its <sketch> ("), std::string::npos) << near.err;
+  // (the point in the layout's units, though the sketch is tightened in the plane scaled for exact gaps)
+  EXPECT_NE(near.err.find("its segment 2 at or after 10,28"), std::string::npos) << near.err;
   // with --independent the wires are tightened among the blockages alone, which is said
   const auto ind = run_taut({"route", in, "--tighten", "--independent", "-o", dir + "/ind.xml"});
   EXPECT_NE(ind.err.find("ROUTE-0013"), std::string::npos) << ind.err;
@@ -1036,7 +1038,7 @@ TEST(Route, SketchesAreTightenedInTheScaledPlane) {
     for (const auto& [name, e] : j["routes"].items()) followed += with_sketch.count(name) && e["status"] == "routed";
   }
   std::printf("%d nets given a sketch, %d of them routed by it\n", sketched, followed);
-  EXPECT_GT(followed, sketched / 2);
+  EXPECT_GE(followed * 10, sketched * 8);  // (59 of 66; 16 of 17 sanitized)
 }
 
 TEST(Route, InvalidInputWritesNothingAndKeepsTheOldOutput) {
