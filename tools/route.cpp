@@ -948,6 +948,7 @@ void add_route(CLI::App& app, int& status) {
     if (net_stats)
       j["net_router"] = {{"first_pass_routed", net_stats->first_pass},
                          {"proven_shortest", net_stats->shortest},
+                         {"shortest_withdrawn", net_stats->shortest_withdrawn},
                          {"rip_up_rounds", net_stats->rounds},
                          {"rip_ups", net_stats->rips},
                          {"attempts", net_stats->attempts},

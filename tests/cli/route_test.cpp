@@ -1006,7 +1006,7 @@ TEST(Route, GapsOfExactlyTheClearanceTakeWires) {
 // net more, none fewer.)
 TEST(Route, SketchesAreTightenedInTheScaledPlane) {
   const std::string dir = temp_dir("route_sketch_scaled");
-  int sketched = 0, followed = 0;
+  int sketched = 0, followed = 0, claimed = 0, withdrawn = 0;
   for (int seed = 1; seed <= (kSanitized ? 2 : 8); ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
     const std::string gen = dir + "/g" + std::to_string(seed) + ".xml", routed = dir + "/r" + std::to_string(seed) + ".xml";
@@ -1035,9 +1035,19 @@ TEST(Route, SketchesAreTightenedInTheScaledPlane) {
     ASSERT_LE(r.status, 1) << r.err;
     const auto j = nlohmann::json::parse(read_text(stats));
     expect_gaps_opened(j, out);
+    // the claims of shortest length: the count is the flags', after the withdrawals of routing
+    // and of tightening (the wires that tightening moved)
+    int flagged = 0;
+    for (const auto& [name, e] : j["routes"].items()) flagged += e.contains("shortest") && e["shortest"] == true;
+    EXPECT_EQ(j["net_router"]["proven_shortest"].get<int>(), flagged) << j.dump();
+    withdrawn += j["net_router"]["shortest_withdrawn"].get<int>();
+    claimed += flagged;
     for (const auto& [name, e] : j["routes"].items()) followed += with_sketch.count(name) && e["status"] == "routed";
   }
-  std::printf("%d nets given a sketch, %d of them routed by it\n", sketched, followed);
+  std::printf("%d nets given a sketch, %d of them routed by it; %d nets proven shortest, %d claims withdrawn\n", sketched,
+              followed, claimed, withdrawn);
+  EXPECT_GT(claimed, 0);
+  EXPECT_GT(withdrawn, 0);
   EXPECT_GE(followed * 10, sketched * 8);  // (59 of 66; 16 of 17 sanitized)
 }
 
