@@ -238,7 +238,7 @@ NetResult outcome_result(const io::Net& net, const router::NetOutcome& o) {
   return r;
 }
 
-// The net in the net router's plane scaled by k (router::NetRouter::scale(): exact gaps).
+// The net (its pins and sketch) in the net router's plane scaled by k (router::NetRouter::scale(): exact gaps).
 io::Net scaled_net(const io::Net& net, std::int64_t k) {
   if (k == 1) return net;
   io::Net s = net;
@@ -253,6 +253,8 @@ io::Net scaled_net(const io::Net& net, std::int64_t k) {
         for (geom::Point& q : h) sc(q);
     }
   }
+  if (s.sketch)
+    for (geom::Point& q : s.sketch->points) sc(q);
   return s;
 }
 
@@ -358,10 +360,9 @@ NetResult route_net_bends(const io::Layout& layout, const io::Net& net, const Be
 router::NetAttempt sketch_attempt(const io::Layout& layout, const io::Net& net, const geom::NormalizedObstacles& obs,
                                   const std::string& orientations, const geom::Box& whole, std::int64_t k = 1) {
   router::NetAttempt a;
-  // (in the net router's plane, scaled by k: exact gaps; the reason's point is given back in the
-  // layout's units, rounded to the nearest)
-  std::vector<geom::Point> sk = net.sketch->points;
-  for (geom::Point& p : sk) p = {static_cast<geom::Coord>(p.x * k), static_cast<geom::Coord>(p.y * k)};
+  // (net, obs and whole in the net router's plane, scaled by k: exact gaps, scaled_net; the
+  // reason's point is given back in the layout's units, rounded to the nearest)
+  const std::vector<geom::Point>& sk = net.sketch->points;
   auto unscaled = [k](std::int64_t v) {  // the nearest integer to v / k (halves away from zero)
     return static_cast<geom::Coord>(v >= 0 ? (v + k / 2) / k : -((-v + k / 2) / k));
   };
@@ -701,9 +702,7 @@ void add_route(CLI::App& app, int& status) {
                 a.reason = "the loop sketch winds around no blockage: it can be pulled to a point";
                 return a;
               }
-              const geom::Box whole{{static_cast<geom::Coord>(net_domain.lo.x * pins.scale), static_cast<geom::Coord>(net_domain.lo.y * pins.scale)},
-                                    {static_cast<geom::Coord>(net_domain.hi.x * pins.scale), static_cast<geom::Coord>(net_domain.hi.y * pins.scale)}};
-              return sketch_attempt(*layout, net, obs, orient_word, whole, pins.scale);
+              return sketch_attempt(*layout, scaled_net(net, pins.scale), obs, orient_word, nr.space().domain(), pins.scale);
             }
             NetResult r;
             const io::Net sn = scaled_net(net, pins.scale);
