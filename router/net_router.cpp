@@ -1105,7 +1105,7 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
     // the certificate (NetOutcome::shortest): the snapped length against the scaled plane's
     // exact distance
     const NetPins& own = space_.net(net);
-    if (t.a.distance && certifies() && two_point_pins(own)) {
+    if (t.a.distance && certifies() && own.pins.size() == 2) {
       const geom::Root2 s = *t.a.distance;
       t.a.shortest = options_.octilinear ? oct_length(t.a.wires) == s : s.b == 0 && l1_length(t.a.wires) < s.a + scale_;
       t.a.window = t.window;
@@ -1300,8 +1300,7 @@ void NetRouter::place(std::size_t i, NetAttempt a) {
   }
   out_[i].routed = a.routed;
   out_[i].shortest = a.routed && a.shortest;
-  out_[i].shortest_window = a.window;
-  out_[i].shortest_since = removed_.size();
+  claims_[i] = Claim{a.window, removed_.size()};
   out_[i].wires = a.routed ? std::move(a.wires) : Lines{};
   out_[i].code = a.routed ? std::string() : std::move(a.code);
   out_[i].reason = a.routed ? std::string() : std::move(a.reason);
@@ -1621,10 +1620,10 @@ void NetRouter::run(const NetRouteFn& route) {
       NetOutcome& o = out_[i];
       if (!o.shortest) continue;
       hits.clear();
-      gone.query(bgi::intersects(o.shortest_window), std::back_inserter(hits));
+      gone.query(bgi::intersects(claims_[i].window), std::back_inserter(hits));
       const std::int64_t kr = l1_length(o.wires);  // (still in the scaled plane)
       for (const auto& [box, k] : hits)
-        if (k >= o.shortest_since && removed_[k].second != i && may_open(i, kr, box)) o.shortest = false;
+        if (k >= claims_[i].since && removed_[k].second != i && may_open(i, kr, box)) o.shortest = false;
       if (o.shortest) ++stats_.shortest;
       else ++stats_.shortest_withdrawn;
     }
@@ -1638,19 +1637,30 @@ void NetRouter::run(const NetRouteFn& route) {
 // Whether a wire of net i shorter than its claimed one (of length kr in the scaled plane) may
 // pass through box b, where another net's wire piece was removed after the claim. Not when b lies
 // outside the claim's window (every way out of it is longer), nor, in L1, when b misses the
-// region {x : |x - p| + |x - q| <= kr - K} round the net's pins p and q: a legal wire of length
-// at most R - 1 lies there scaled, so if it missed every removed piece it was free when the
-// claim was made, and then the distance S there had K R >= S + K, which the claim excludes.
+// region {x : d(x, P) + d(x, Q) <= kr - K} round the boxes P and Q of the net's two pins (points
+// or shapes; d the L1 distance): a legal wire of length at most R - 1 from one pin to the other
+// lies there scaled (each of its points x has d(x, A) + d(x, B) <= K (R - 1) for the pins A and
+// B themselves, and a box is no farther than its shape), so if it missed every removed piece it
+// was free when the claim was made, and then the distance S there had K R >= S + K, which the
+// claim excludes.
 bool NetRouter::may_open(std::size_t i, std::int64_t kr, const Box& b) const {
-  if (!boxes_meet(b, out_[i].shortest_window)) return false;
+  if (!boxes_meet(b, claims_[i].window)) return false;
   if (options_.octilinear) return true;
-  const Point p = space_.net(i).pins[0].outer[0], q = space_.net(i).pins[1].outer[0];
-  // the least of |x - a| + |x - c| over x in [lo, hi] (taken at a clamped into it)
-  auto least = [](std::int64_t lo, std::int64_t hi, std::int64_t a, std::int64_t c) {
-    const std::int64_t x = std::clamp(a, lo, hi);
-    return std::abs(x - a) + std::abs(x - c);
+  const Box p = box_of(space_.net(i).pins[0].outer), q = box_of(space_.net(i).pins[1].outer);
+  // the L1 distance from x to the interval [lo, hi]
+  auto gap = [](std::int64_t x, std::int64_t lo, std::int64_t hi) { return std::max<std::int64_t>({0, lo - x, x - hi}); };
+  // the least of gap(x, a0, a1) + gap(x, c0, c1) over x in [lo, hi]: a convex piecewise-linear
+  // function, least at an end of [lo, hi] or at a breakpoint inside it
+  auto least = [&](std::int64_t lo, std::int64_t hi, std::int64_t a0, std::int64_t a1, std::int64_t c0, std::int64_t c1) {
+    std::int64_t m = std::numeric_limits<std::int64_t>::max();
+    for (const std::int64_t x : {lo, hi, a0, a1, c0, c1}) {
+      const std::int64_t y = std::clamp(x, lo, hi);
+      m = std::min(m, gap(y, a0, a1) + gap(y, c0, c1));
+    }
+    return m;
   };
-  return least(b.lo.x, b.hi.x, p.x, q.x) + least(b.lo.y, b.hi.y, p.y, q.y) <= kr - scale_;
+  return least(b.lo.x, b.hi.x, p.lo.x, p.hi.x, q.lo.x, q.hi.x) + least(b.lo.y, b.hi.y, p.lo.y, p.hi.y, q.lo.y, q.hi.y) <=
+         kr - scale_;
 }
 
 std::size_t NetRouter::withdraw_claims(std::size_t j, const std::vector<std::vector<Point>>& before) {
@@ -1678,6 +1688,7 @@ void NetRouter::run_scaled(const NetRouteFn& route) {
   const std::size_t n = space_.size();
   const int threads = std::max(options_.threads, 1);
   out_.assign(n, NetOutcome{});
+  claims_.assign(n, Claim{});
   stats_ = {};
   alone_.assign(n, std::nullopt);
   final_undone_.clear();
@@ -1732,6 +1743,7 @@ void NetRouter::run_scaled(const NetRouteFn& route) {
   };
   stats_.first_pass = score().first;
   std::vector<NetOutcome> best = out_;
+  std::vector<Claim> best_claims = claims_;  // (NetOutcome::shortest's, with them)
   auto best_score = score();
   int stale = 0;
   // Rips up the nets in net i's way (found without the other nets' wires) and routes i, then
@@ -1854,6 +1866,7 @@ void NetRouter::run_scaled(const NetRouteFn& route) {
     if (s > best_score) {
       best_score = s;
       best = out_;
+      best_claims = claims_;
       stale = 0;
     } else {
       ++stale;
@@ -1871,6 +1884,7 @@ void NetRouter::run_scaled(const NetRouteFn& route) {
       place(i, std::move(was));
     }
     out_ = std::move(best);
+    claims_ = std::move(best_claims);
   }
   lap(stats_.phase_seconds.rounds);
   // The final round: each net still unrouted in the best state is tried again, and else its

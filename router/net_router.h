@@ -421,10 +421,12 @@ struct NetOutcome {
   std::string code, reason;            // not routed
   std::vector<std::size_t> blockers;   // not routed: the nets whose wires or pins block it
   int rips = 0;                        // times it was ripped up
-  // Routed, and proven as short as any wire the rules allow between its two point pins among the
-  // blockages and the other nets' wires and pins as they are at the end (NetRouter's
-  // certificate, with gaps of exactly the clearance open: scale() > 1, NetRouterOptions::cost
-  // Length, a route function that sets NetAttempt::distance). Any such wire, scaled by K, lies in
+  // Routed, and proven as short as any wire that keeps the clearance as the router measures it
+  // (in squares: FORMAT.md's square-corner inflation) between its two pins (points or shapes;
+  // shapes since 2026-12-05) among the blockages and the other nets' wires and pins as they are at
+  // the end (NetRouter's certificate, with gaps of exactly the clearance open: scale() > 1,
+  // NetRouterOptions::cost Length, a route function that sets NetAttempt::distance). Any such
+  // wire (from its last point on one pin to its first on the other), scaled by K, lies in
   // the scaled plane's free space (it keeps K a and K b, more than the K a - 1 and K b - 1 grown
   // there), so none is shorter than S / K for that plane's exact distance S; the snapped wire
   // passes the rules (`taut route` checks it), so it is shortest when its length R has K R < S + K
@@ -434,12 +436,10 @@ struct NetOutcome {
   // placed, among the wires then; wires placed later only take ways away, and it is withdrawn at
   // the end of run() when a wire piece of another net was removed since then from the window its
   // route was proven in (outside it every way is longer than the wire, whatever lies there) and,
-  // in L1, from the region a shorter wire would lie in, |x - p| + |x - q| <= K R - K round its
-  // scaled pins p and q (since 2026-12-05; a shorter wire that met no removed piece was free when
-  // the claim was made). withdraw_claims does the same for wires changed after run().
+  // in L1, from the region a shorter wire would lie in, d(x, P) + d(x, Q) <= K R - K round the
+  // boxes P and Q of its scaled pins (since 2026-12-05; a shorter wire that met no removed piece
+  // was free when the claim was made). withdraw_claims does the same for wires changed after run().
   bool shortest = false;
-  geom::Box shortest_window{};     // (NetRouter's own: that window,
-  std::size_t shortest_since = 0;  // and the length of its log of removed pieces then)
 };
 
 // What NetRouterOptions::progress is told: after each net tried, the nets routed now, the nets
@@ -708,6 +708,12 @@ class NetRouter {
   // The boxes of every wire piece removed since run() began, with their net (never dropped: see
   // NetOutcome::shortest).
   std::vector<std::pair<geom::Box, std::size_t>> removed_;
+  // Per net, its claim's (NetOutcome::shortest) window and the length of removed_ when it was made.
+  struct Claim {
+    geom::Box window{};
+    std::size_t since = 0;
+  };
+  std::vector<Claim> claims_;
   // Whether NetOutcome::shortest may be claimed in this run (else removed_ stays empty)
   bool certifies() const { return scale_ > 1 && options_.cost == NetRouterOptions::Cost::Length; }
   bool may_open(std::size_t i, std::int64_t kr, const geom::Box& b) const;

@@ -929,6 +929,20 @@ TEST(Route, GapsOfExactlyTheClearanceTakeWires) {
     const auto tj = nlohmann::json::parse(read_text(dir + "/pitch.tight.json"));
     EXPECT_EQ(tj["tighten"]["kept"], 4) << tj.dump();
     EXPECT_EQ(tj["net_router"]["proven_shortest"], 4) << tj.dump();
+    // with net a0's pins as pads (since 2026-12-05 a two-pin net with shape pins is claimed too)
+    std::string text = read_text(design);
+    const std::string l = R"(<pin name="l" x="1600" y="800"/>)", r0 = R"(<pin name="r" x="10400" y="800"/>)";
+    ASSERT_NE(text.find(l), std::string::npos);
+    ASSERT_NE(text.find(r0), std::string::npos);
+    text.replace(text.find(l), l.size(), R"(<pin name="l"><rect x0="1400" y0="500" x1="1600" y1="800"/></pin>)");
+    text.replace(text.find(r0), r0.size(), R"(<pin name="r"><rect x0="10400" y0="600" x1="10700" y1="800"/></pin>)");
+    write_text(dir + "/pitch.pads.in.xml", text);
+    const auto p = run_taut({"route", dir + "/pitch.pads.in.xml", "-q", "-o", dir + "/pitch.pads.xml", "--stats", dir + "/pitch.pads.json"});
+    EXPECT_EQ(p.status, 0) << p.err;
+    EXPECT_EQ(run_taut({"check", dir + "/pitch.pads.xml", "-q"}).status, 0);
+    const auto pj = nlohmann::json::parse(read_text(dir + "/pitch.pads.json"));
+    EXPECT_EQ(pj["net_router"]["proven_shortest"], 4) << pj.dump();
+    EXPECT_EQ(pj["routes"]["a0"]["shortest"], true) << pj.dump();
   }
   {
     // a third pin makes x a tree: an octilinear Steiner tree takes the gap too (since

@@ -30,6 +30,7 @@
 #include "router/tighten_nets.h"
 #include "oracle/oct_steiner_oracle.h"
 #include "support/net_layouts.h"
+#include "support/random_shapes.h"
 #include "support/sanitized.h"
 
 namespace taut::test {
@@ -42,20 +43,27 @@ struct Rect {
   std::int64_t x0, y0, x1, y1;
 };
 
-// The L1 distance from p to q for a net with point pins p and q, by the checker's rules
-// (router/check.h): a wire stays in the closed domain minus the interior of the union of the
-// blockages (so not along an edge two blockages share), passes a point only within one free
-// wedge there (not through a point where two blockages touch corner to corner), and keeps L-inf
-// distance >= a from every blockage, that is, stays out of the open rectangles `grown` (each
-// blockage grown by a square of half-side a), except inside the closed squares of half-side a
-// round p and q (their pin access). Dijkstra over (grid node, direction of arrival) on the Hanan
-// grid of every rectangle's sides, the domain's and the two points: every L1 shortest path among
-// axis-parallel rectangles can be moved onto that grid, all sides are grid lines, so an edge's
-// midpoint decides its clearance, and the material round a node is read in its four quadrants.
+// The L1 distance between the pins p and q of a net, by the checker's rules (router/check.h): a
+// wire stays in the closed domain minus the interior of the union of the blockages (so not along
+// an edge two blockages share), passes a point only within one free wedge there (not through a
+// point where two blockages touch corner to corner), and keeps L-inf distance >= a from every
+// blockage, that is, stays out of the open rectangles `grown` (each blockage grown by a square of
+// half-side a), except inside the closed squares of half-side a round a point pin (its pin
+// access). A pin is a point (a rectangle of no extent) or a pad (a rectangle with area): a wire
+// touches a pad anywhere, and keeps the clearance up to its end there (pads get no access zone).
+// Dijkstra over (grid node, direction of arrival) on the Hanan grid of every rectangle's sides,
+// the domain's and the pins': every L1 shortest path among axis-parallel rectangles can be moved
+// onto that grid (its last point on the first pad and first point on the second lie on a pad's
+// side, so at grid nodes), all sides are grid lines, so an edge's midpoint decides its clearance,
+// and the material round a node is read in its four quadrants. Every grid node on the first pin
+// is a source.
 std::optional<std::int64_t> hanan_distance(const Rect& domain, const std::vector<Rect>& blockages, const std::vector<Rect>& grown,
-                                           std::int64_t a, Point p, Point q) {
-  std::vector<std::int64_t> xs{domain.x0, domain.x1, p.x, q.x}, ys{domain.y0, domain.y1, p.y, q.y};
-  const std::vector<Rect> squares{{p.x - a, p.y - a, p.x + a, p.y + a}, {q.x - a, q.y - a, q.x + a, q.y + a}};
+                                           std::int64_t a, const Rect& p, const Rect& q) {
+  auto is_point = [](const Rect& r) { return r.x0 == r.x1 && r.y0 == r.y1; };
+  std::vector<std::int64_t> xs{domain.x0, domain.x1, p.x0, p.x1, q.x0, q.x1}, ys{domain.y0, domain.y1, p.y0, p.y1, q.y0, q.y1};
+  std::vector<Rect> squares;
+  for (const Rect& r : {p, q})
+    if (is_point(r)) squares.push_back({r.x0 - a, r.y0 - a, r.x0 + a, r.y0 + a});
   std::vector<Rect> all = grown;
   all.insert(all.end(), blockages.begin(), blockages.end());
   all.insert(all.end(), squares.begin(), squares.end());
@@ -86,7 +94,8 @@ std::optional<std::int64_t> hanan_distance(const Rect& domain, const std::vector
   };
   // closer than a to a blockage, outside the pin access
   auto too_close = [&](std::int64_t x4, std::int64_t y4) {
-    if (in_closed(squares[0], x4, y4) || in_closed(squares[1], x4, y4)) return false;
+    for (const Rect& sq : squares)
+      if (in_closed(sq, x4, y4)) return false;
     for (const Rect& r : grown)
       if (in_open(r, x4, y4)) return true;
     return false;
@@ -109,25 +118,36 @@ std::optional<std::int64_t> hanan_distance(const Rect& domain, const std::vector
   const auto ix = [&](std::int64_t v, const std::vector<std::int64_t>& arr) {
     return static_cast<std::size_t>(std::lower_bound(arr.begin(), arr.end(), v) - arr.begin());
   };
-  for (const Point e : {p, q}) {
-    const std::array<bool, 4> m = quadrants(4 * e.x, 4 * e.y);
-    if ((m[0] && m[1] && m[2] && m[3]) || too_close(4 * e.x, 4 * e.y)) return std::nullopt;
-  }
-  // state: node * 5 + the direction it was entered by (4: the start)
+  // a pin's grid nodes where a wire may end: not walled in by material, and keeping the clearance
+  auto ends = [&](const Rect& r) {
+    std::vector<std::pair<std::size_t, std::size_t>> e;
+    for (std::size_t i = ix(r.x0, xs); i < nx && xs[i] <= r.x1; ++i)
+      for (std::size_t j = ix(r.y0, ys); j < ny && ys[j] <= r.y1; ++j) {
+        const std::array<bool, 4> m = quadrants(4 * xs[i], 4 * ys[j]);
+        if (!(m[0] && m[1] && m[2] && m[3]) && !too_close(4 * xs[i], 4 * ys[j])) e.push_back({i, j});
+      }
+    return e;
+  };
+  const auto from = ends(p), to = ends(q);
+  if (from.empty() || to.empty()) return std::nullopt;
+  std::vector<char> target(nx * ny, 0);
+  for (const auto& [i, j] : to) target[i * ny + j] = 1;
+  // state: node * 5 + the direction it was entered by (4: a start)
   auto state = [&](std::size_t i, std::size_t j, int k) { return (i * ny + j) * 5 + static_cast<std::size_t>(k); };
   std::vector<std::int64_t> dist(nx * ny * 5, std::numeric_limits<std::int64_t>::max());
   using Item = std::pair<std::int64_t, std::size_t>;
   std::priority_queue<Item, std::vector<Item>, std::greater<>> pq;
-  const std::size_t si = ix(p.x, xs), sj = ix(p.y, ys), ti = ix(q.x, xs), tj = ix(q.y, ys);
-  dist[state(si, sj, 4)] = 0;
-  pq.push({0, state(si, sj, 4)});
+  for (const auto& [i, j] : from) {
+    dist[state(i, j, 4)] = 0;
+    pq.push({0, state(i, j, 4)});
+  }
   while (!pq.empty()) {
     const auto [d, u] = pq.top();
     pq.pop();
     if (d != dist[u]) continue;
     const int in_dir = static_cast<int>(u % 5);
     const std::size_t node = u / 5, i = node / ny, j = node % ny;
-    if (i == ti && j == tj) return d;
+    if (target[i * ny + j]) return d;
     const std::int64_t x4 = 4 * xs[i], y4 = 4 * ys[j];
     const std::array<bool, 4> m = quadrants(x4, y4);
     for (int k = 0; k < 4; ++k) {
@@ -163,16 +183,18 @@ Polygon rect_polygon(const Rect& r) {
 }
 
 // One instance: rectangles with corners on the lattice of a (now and then one unit off it),
-// rules with that a, two point pins (most on the lattice too) in the closed free space of the
-// grown blockages, or for a quarter of the instances anywhere off the closed blockages.
+// rules with that a, two pins in the closed free space of the grown blockages, or for a quarter
+// of the instances anywhere off the open blockages: point pins (most on the lattice too), or with
+// `pads` for two thirds of the pins pads, rectangles 1 to 2a wide and high (most with corners on
+// the lattice), so pads touch blockages, lie at exactly a from them or within a.
 struct Instance {
   Rect domain;
   std::vector<Rect> blockages;
   router::NetRules rules;
-  Point p, q;
+  Rect p, q;  // a point pin: x0 == x1, y0 == y1
 };
 
-std::optional<Instance> random_instance(std::uint32_t seed) {
+std::optional<Instance> random_instance(std::uint32_t seed, bool pads = false) {
   std::mt19937 rng(seed);
   auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
   Instance in;
@@ -199,9 +221,9 @@ std::optional<Instance> random_instance(std::uint32_t seed) {
   std::vector<Rect> grown;
   for (const Rect& r : in.blockages) grown.push_back({r.x0 - a, r.y0 - a, r.x1 + a, r.y1 + a});
   // most pins in the closed free space of the grown blockages, the rest anywhere off the closed
-  // blockages (within a of one: the pin access)
+  // blockages (point pins within a of one: the pin access) or off the open ones (pads)
   const bool near = pick(0, 3) == 0;
-  auto free_point = [&]() -> std::optional<Point> {
+  auto free_point = [&]() -> std::optional<Rect> {
     for (int tries = 0; tries < 50; ++tries) {
       const bool lattice = pick(0, 3) != 0;
       const std::int64_t x = lattice ? pick(0, cells) * a : pick(0, static_cast<int>(cells * a));
@@ -209,102 +231,153 @@ std::optional<Instance> random_instance(std::uint32_t seed) {
       bool inside = false;
       for (const Rect& g : near ? in.blockages : grown)
         inside |= near ? g.x0 <= x && x <= g.x1 && g.y0 <= y && y <= g.y1 : g.x0 < x && x < g.x1 && g.y0 < y && y < g.y1;
-      if (!inside) return Point{static_cast<geom::Coord>(x), static_cast<geom::Coord>(y)};
+      if (!inside) return Rect{x, y, x, y};
     }
     return std::nullopt;
   };
-  const auto p = free_point(), q = free_point();
-  if (!p || !q || *p == *q) return std::nullopt;
+  auto free_pad = [&]() -> std::optional<Rect> {
+    for (int tries = 0; tries < 50; ++tries) {
+      const bool lattice = pick(0, 3) != 0;
+      const std::int64_t w = lattice ? pick(1, 2) * a : pick(1, static_cast<int>(2 * a));
+      const std::int64_t h = lattice ? pick(1, 2) * a : pick(1, static_cast<int>(2 * a));
+      const std::int64_t x = lattice ? pick(0, cells) * a : pick(0, static_cast<int>(cells * a));
+      const std::int64_t y = lattice ? pick(0, cells) * a : pick(0, static_cast<int>(cells * a));
+      const Rect r{x, y, x + w, y + h};
+      if (r.x1 > in.domain.x1 || r.y1 > in.domain.y1) continue;
+      bool meets = false;  // the open rectangles meet
+      for (const Rect& g : near ? in.blockages : grown) meets |= g.x0 < r.x1 && r.x0 < g.x1 && g.y0 < r.y1 && r.y0 < g.y1;
+      if (!meets) return r;
+    }
+    return std::nullopt;
+  };
+  const auto p = pads && pick(0, 2) != 0 ? free_pad() : free_point();
+  const auto q = pads && pick(0, 2) != 0 ? free_pad() : free_point();
+  if (!p || !q) return std::nullopt;
+  // pins that share a point are joined without a wire (the router writes a wire of one point
+  // there, which is not what this test is about)
+  if (p->x0 <= q->x1 && q->x0 <= p->x1 && p->y0 <= q->y1 && q->y0 <= p->y1) return std::nullopt;
   in.p = *p;
   in.q = *q;
   return in;
 }
 
+Polygon pin_polygon(const Rect& r) {
+  if (r.x0 == r.x1 && r.y0 == r.y1) return Polygon{{Point{static_cast<geom::Coord>(r.x0), static_cast<geom::Coord>(r.y0)}}, {}};
+  return rect_polygon(r);
+}
+
+struct AloneTotals {
+  int failed = 0, compared = 0, with_pad = 0, routed = 0, closed_longer = 0, closed_unrouted = 0, proven = 0, spiked = 0;
+};
+
 // A net alone: with exact_gaps the router's length is the reference's, and it is routed exactly
-// when the reference finds a way; the wire passes the checker.
-TEST(ExactGaps, ANetAloneIsShortestInTheClosedGrownSpace) {
-  int failed = 0, compared = 0, routed = 0, closed_longer = 0, closed_unrouted = 0, proven = 0, spiked = 0;
-  for (std::uint32_t seed = 1; seed <= static_cast<std::uint32_t>(sanitized_share(3000, 30)); ++seed) {
-    const std::optional<Instance> in = random_instance(910000 + seed);
-    if (!in) continue;
-    const std::int64_t a = (in->rules.wire_width + 1) / 2 + in->rules.spacing;
-    std::vector<Rect> grown;
-    std::vector<Polygon> polys;
-    for (const Rect& r : in->blockages) {
-      grown.push_back({r.x0 - a, r.y0 - a, r.x1 + a, r.y1 + a});
-      polys.push_back(rect_polygon(r));
-    }
-    const geom::Box domain{{static_cast<geom::Coord>(in->domain.x0), static_cast<geom::Coord>(in->domain.y0)},
-                           {static_cast<geom::Coord>(in->domain.x1), static_cast<geom::Coord>(in->domain.y1)}};
-    const geom::NormalizedObstacles norm = geom::normalize_obstacles(polys, domain);
-    const std::vector<router::NetPins> nets{{"n", {Polygon{{in->p}, {}}, Polygon{{in->q}, {}}}}};
-    const std::optional<std::int64_t> ref = hanan_distance(in->domain, in->blockages, grown, a, in->p, in->q);
-    const std::string at = "seed " + std::to_string(910000 + seed) + " (w " + std::to_string(in->rules.wire_width) + ", s " +
-                           std::to_string(in->rules.spacing) + ")";
-    router::NetRouterOptions opt;
-    opt.exact_gaps = true;
-    router::NetRouter nr(norm.domain, norm.obstacles, nets, in->rules, opt);
-    if (nr.scale() < 8 && failed++ < 8) ADD_FAILURE() << at << ": scale " << nr.scale();
-    nr.run(router::NetRouter::l1_router(false));
-    const router::NetOutcome& o = nr.outcomes()[0];
-    ++compared;
-    if (nr.stats().snap_far > 0 && failed++ < 8) ADD_FAILURE() << at << ": a wire snapped from afar";
-    if (o.routed != ref.has_value()) {
-      if (failed++ < 8)
-        ADD_FAILURE() << at << ": routed " << o.routed << " (" << o.code << " " << o.reason << "), reference "
-                      << (ref ? std::to_string(*ref) : "none");
-      continue;
-    }
-    if (!o.routed) continue;
-    ++routed;
-    if (l1_len(o) != *ref && failed++ < 8) ADD_FAILURE() << at << ": length " << l1_len(o) << ", reference " << *ref;
-    proven += o.shortest;  // (a claim on a length other than the reference's fails just above)
-    // the certificate is withheld from a wire a little longer than the distance its route
-    // function reports (a spike of one layout unit, K in the scaled plane, at its far end) and
-    // from a route function that reports none
-    if (seed % 5 == 0) {
-      const router::NetRouteFn plain = router::NetRouter::l1_router(false);
-      const std::int64_t k = nr.scale();
-      for (const bool spike : {true, false}) {
-        router::NetRouter m(norm.domain, norm.obstacles, nets, in->rules, opt);
-        m.run([&](std::size_t i, const router::NetPins& pins, const geom::NormalizedObstacles& obs) {
-          router::NetAttempt a = plain(i, pins, obs);
-          if (!a.routed) return a;
-          if (!spike) {
-            a.distance.reset();
-          } else {
-            const Point q = a.wires[0].back(), up{q.x, static_cast<geom::Coord>(q.y + k)};
-            a.wires[0].insert(a.wires[0].end(), {up, q});
-          }
-          return a;
-        });
-        if (m.outcomes()[0].routed) {
-          spiked += spike;
-          if (m.outcomes()[0].shortest && failed++ < 8) ADD_FAILURE() << at << ": claimed " << (spike ? "with a spike" : "without a distance");
+// when the reference finds a way; the wire passes the checker; the claim of shortest length
+// (NetOutcome::shortest) is made on most routed nets, never on a wire with a spike or without a
+// distance, and never with the gaps closed; with the gaps closed the net is never shorter.
+void judge_alone(std::uint32_t seed, bool pads, AloneTotals& t) {
+  const std::optional<Instance> in = random_instance(seed, pads);
+  if (!in) return;
+  int& failed = t.failed;
+  const std::int64_t a = (in->rules.wire_width + 1) / 2 + in->rules.spacing;
+  std::vector<Rect> grown;
+  std::vector<Polygon> polys;
+  for (const Rect& r : in->blockages) {
+    grown.push_back({r.x0 - a, r.y0 - a, r.x1 + a, r.y1 + a});
+    polys.push_back(rect_polygon(r));
+  }
+  const geom::Box domain{{static_cast<geom::Coord>(in->domain.x0), static_cast<geom::Coord>(in->domain.y0)},
+                         {static_cast<geom::Coord>(in->domain.x1), static_cast<geom::Coord>(in->domain.y1)}};
+  const geom::NormalizedObstacles norm = geom::normalize_obstacles(polys, domain);
+  const std::vector<router::NetPins> nets{{"n", {pin_polygon(in->p), pin_polygon(in->q)}}};
+  const std::optional<std::int64_t> ref = hanan_distance(in->domain, in->blockages, grown, a, in->p, in->q);
+  auto rect_str = [](const Rect& r) {
+    return "(" + std::to_string(r.x0) + "," + std::to_string(r.y0) + ")-(" + std::to_string(r.x1) + "," + std::to_string(r.y1) + ")";
+  };
+  const std::string at = "seed " + std::to_string(seed) + (pads ? " with pads" : "") + " (w " + std::to_string(in->rules.wire_width) +
+                         ", s " + std::to_string(in->rules.spacing) + ", pins " + rect_str(in->p) + " " + rect_str(in->q) + ")";
+  router::NetRouterOptions opt;
+  opt.exact_gaps = true;
+  router::NetRouter nr(norm.domain, norm.obstacles, nets, in->rules, opt);
+  if (nr.scale() < 8 && failed++ < 8) ADD_FAILURE() << at << ": scale " << nr.scale();
+  nr.run(router::NetRouter::l1_router(false));
+  const router::NetOutcome& o = nr.outcomes()[0];
+  ++t.compared;
+  t.with_pad += in->p.x0 != in->p.x1 || in->q.x0 != in->q.x1;
+  if (nr.stats().snap_far > 0 && failed++ < 8) ADD_FAILURE() << at << ": a wire snapped from afar";
+  if (o.routed != ref.has_value()) {
+    if (failed++ < 8)
+      ADD_FAILURE() << at << ": routed " << o.routed << " (" << o.code << " " << o.reason << "), reference "
+                    << (ref ? std::to_string(*ref) : "none");
+    return;
+  }
+  if (!o.routed) return;
+  ++t.routed;
+  if (l1_len(o) != *ref && failed++ < 8) ADD_FAILURE() << at << ": length " << l1_len(o) << ", reference " << *ref;
+  t.proven += o.shortest;  // (a claim on a length other than the reference's fails just above)
+  // the certificate is withheld from a wire a little longer than the distance its route
+  // function reports (a spike of one layout unit, K in the scaled plane, at its far end) and
+  // from a route function that reports none
+  if (seed % 5 == 0) {
+    const router::NetRouteFn plain = router::NetRouter::l1_router(false);
+    const std::int64_t k = nr.scale();
+    for (const bool spike : {true, false}) {
+      router::NetRouter m(norm.domain, norm.obstacles, nets, in->rules, opt);
+      m.run([&](std::size_t i, const router::NetPins& pins, const geom::NormalizedObstacles& obs) {
+        router::NetAttempt a = plain(i, pins, obs);
+        if (!a.routed) return a;
+        if (!spike) {
+          a.distance.reset();
+        } else {
+          const Point q = a.wires[0].back(), up{q.x, static_cast<geom::Coord>(q.y + k)};
+          a.wires[0].insert(a.wires[0].end(), {up, q});
         }
+        return a;
+      });
+      // (a spike on a pad is trimmed with the wire's stretch there: the wire is then no longer)
+      const router::NetOutcome& mo = m.outcomes()[0];
+      if (mo.routed && (!spike || l1_len(mo) > *ref)) {
+        t.spiked += spike;
+        if (mo.shortest && failed++ < 8) ADD_FAILURE() << at << ": claimed " << (spike ? "with a spike" : "without a distance");
       }
     }
-    const router::CheckResult r = router::check_routes(norm, check_nets(nets, nr), {in->rules.wire_width, in->rules.spacing});
-    for (const auto& pr : r.problems)
-      if (failed++ < 8) ADD_FAILURE() << at << ": " << pr.message;
-    // the same net with the gaps closed: never shorter, and on a share of the instances longer
-    // or not routed (which is what exact_gaps is for)
-    router::NetRouter closed(norm.domain, norm.obstacles, nets, in->rules);
-    closed.run(router::NetRouter::l1_router(false));
-    const router::NetOutcome& c = closed.outcomes()[0];
-    if (c.shortest && failed++ < 8) ADD_FAILURE() << at << ": claimed with the gaps closed";
-    if (!c.routed) ++closed_unrouted;
-    else if (l1_len(c) > *ref) ++closed_longer;
-    else if (l1_len(c) < *ref && failed++ < 8) ADD_FAILURE() << at << ": closed gaps gave " << l1_len(c) << " < " << *ref;
   }
-  std::printf("%d instances, %d routed with exact gaps at the reference's length, %d of them proven shortest "
+  const router::CheckResult r = router::check_routes(norm, check_nets(nets, nr), {in->rules.wire_width, in->rules.spacing});
+  for (const auto& pr : r.problems)
+    if (failed++ < 8) ADD_FAILURE() << at << ": " << pr.message;
+  // the same net with the gaps closed: never shorter, and on a share of the instances longer
+  // or not routed (which is what exact_gaps is for)
+  router::NetRouter closed(norm.domain, norm.obstacles, nets, in->rules);
+  closed.run(router::NetRouter::l1_router(false));
+  const router::NetOutcome& c = closed.outcomes()[0];
+  if (c.shortest && failed++ < 8) ADD_FAILURE() << at << ": claimed with the gaps closed";
+  if (!c.routed) ++t.closed_unrouted;
+  else if (l1_len(c) > *ref) ++t.closed_longer;
+  else if (l1_len(c) < *ref && failed++ < 8) ADD_FAILURE() << at << ": closed gaps gave " << l1_len(c) << " < " << *ref;
+}
+
+void expect_alone(const AloneTotals& t, const char* what) {
+  std::printf("%d instances (%s; %d with a pad), %d routed with exact gaps at the reference's length, %d of them proven shortest "
               "(NetOutcome::shortest; withheld from %d spiked wires); with the gaps closed %d longer, %d not routed\n",
-              compared, routed, proven, spiked, closed_longer, closed_unrouted);
-  EXPECT_EQ(failed, 0);
-  EXPECT_GE(10 * proven, 9 * routed);
-  EXPECT_GT(spiked, 0);
-  EXPECT_GT(routed, compared / 3);
-  EXPECT_GT(closed_longer + closed_unrouted, 0);
+              t.compared, what, t.with_pad, t.routed, t.proven, t.spiked, t.closed_longer, t.closed_unrouted);
+  EXPECT_EQ(t.failed, 0);
+  EXPECT_GE(10 * t.proven, 9 * t.routed);
+  EXPECT_GT(t.spiked, 0);
+  EXPECT_GT(t.routed, t.compared / 3);
+  EXPECT_GT(t.closed_longer + t.closed_unrouted, 0);
+}
+
+TEST(ExactGaps, ANetAloneIsShortestInTheClosedGrownSpace) {
+  AloneTotals t;
+  for (std::uint32_t seed = 1; seed <= static_cast<std::uint32_t>(sanitized_share(3000, 30)); ++seed) judge_alone(910000 + seed, false, t);
+  expect_alone(t, "point pins");
+}
+
+// The same with pads (since 2026-12-05: the claim of shortest length covers two-pin nets whose
+// pins are shapes; a pad gets no access zone, so its wire keeps the clearance up to its end).
+TEST(ExactGaps, ANetWithPadsAloneIsShortestInTheClosedGrownSpace) {
+  AloneTotals t;
+  for (std::uint32_t seed = 1; seed <= static_cast<std::uint32_t>(sanitized_share(2000, 30)); ++seed) judge_alone(920000 + seed, true, t);
+  expect_alone(t, "pads and point pins");
 }
 
 // The octilinear length of a routed net's wires.
@@ -327,7 +400,8 @@ geom::Root2 oct_length(const router::NetOutcome& o) {
 // exact distance D between its pins there.
 bool claim_holds(const router::NetSpace& space, std::size_t i, std::int64_t k, bool octilinear, const router::NetOutcome& o) {
   const geom::NormalizedObstacles fin = space.obstacles(i, router::NetSpaceLevel::Full, std::nullopt, {}, false, nullptr);
-  const Point p = space.net(i).pins[0].outer[0], q = space.net(i).pins[1].outer[0];
+  const Polygon& p = space.net(i).pins[0];
+  const Polygon& q = space.net(i).pins[1];
   if (octilinear) {
     router::OctRouter rt(fin.domain, fin.obstacles);
     rt.set_lattice(k);
@@ -441,79 +515,169 @@ TEST(ExactGaps, ClaimsAreWithdrawnWhenAWayOpens) {
 // test with TAUT_TEST_NO_WITHDRAWAL set) it fails: among the 600 layouts, seeds 42, 50, 98, 160,
 // 164, 184, 210, 236 and more (a wire tightened away from where it ran opened a shorter way),
 // which a sanitizer run, with fewer layouts, takes too.
-TEST(ExactGaps, ClaimsStandAfterTightening) {
+struct TightenedClaims {
   int failed = 0;
   std::int64_t claims = 0, withdrawn = 0, moved = 0, kept = 0;
+};
+
+// One layout routed with exact gaps, its claims checked at the end of the run (broken_claims),
+// then tightened together as taut route --tighten does (router::NetsTightener in the layout's
+// units), NetRouter::withdraw_claims called for every net that moved (unless no_withdrawal), and
+// each claim left checked against the final space built here.
+void judge_tightened_claims(const RandomLayout& L, bool octilinear, const std::string& at, bool no_withdrawal, TightenedClaims& t) {
+  router::NetRouterOptions opt;
+  opt.octilinear = octilinear;
+  opt.exact_gaps = true;
+  router::NetRouter nr(L.norm.domain, L.norm.obstacles, L.nets, L.rules, opt);
+  nr.run(opt.octilinear ? router::NetRouter::oct_router() : router::NetRouter::l1_router(false));
+  const std::int64_t k = nr.scale();
+  if (k == 1 || nr.stats().snap_far > 0) return;
+  std::int64_t routed_claims = 0;
+  if (!no_withdrawal) t.failed += broken_claims(nr, opt.octilinear, at + " (after routing)", routed_claims);
+  // tightened together as taut route --tighten does
+  router::NetSpace ts(L.norm.domain, L.norm.obstacles, L.nets, L.rules);
+  std::vector<router::NetLines> wires(L.nets.size());
+  for (std::size_t i = 0; i < L.nets.size(); ++i)
+    if (nr.outcomes()[i].routed) wires[i] = nr.outcomes()[i].wires;
+  router::NetsTightenOptions o;
+  o.orientations = opt.octilinear ? router::TightenOrientations::Octilinear : router::TightenOrientations::Rectilinear;
+  router::NetsTightener nt(ts, o);
+  (void)nt.run(wires);
+  t.kept += nt.stats().kept;
+  for (std::size_t i = 0; i < L.nets.size(); ++i)
+    if (nr.outcomes()[i].routed && wires[i] != nr.outcomes()[i].wires) {
+      ++t.moved;
+      if (!no_withdrawal) t.withdrawn += static_cast<std::int64_t>(nr.withdraw_claims(i, nr.outcomes()[i].wires));
+    }
+  // the final space, scaled
+  auto up = [k](Point p) { return Point{static_cast<geom::Coord>(p.x * k), static_cast<geom::Coord>(p.y * k)}; };
+  std::vector<Polygon> obstacles = L.norm.obstacles;
+  for (Polygon& poly : obstacles) {
+    for (Point& v : poly.outer) v = up(v);
+    for (geom::Ring& h : poly.holes)
+      for (Point& v : h) v = up(v);
+  }
+  std::vector<router::NetPins> nets = L.nets;
+  for (router::NetPins& np : nets) {
+    for (Polygon& pin : np.pins)
+      for (Point& v : pin.outer) v = up(v);
+    np.scale = k;
+  }
+  router::NetRules rules = L.rules;
+  rules.scale = k;
+  router::NetSpace fin(geom::Box{up(L.norm.domain.lo), up(L.norm.domain.hi)}, obstacles, nets, rules);
+  std::vector<router::NetLines> up_wires = wires;
+  for (std::size_t i = 0; i < nets.size(); ++i) {
+    for (auto& w : up_wires[i])
+      for (Point& v : w) v = up(v);
+    fin.set_wires(i, up_wires[i]);
+  }
+  for (std::size_t i = 0; i < nets.size(); ++i) {
+    if (!nr.outcomes()[i].shortest) continue;
+    ++t.claims;
+    router::NetOutcome now;
+    now.wires = wires[i];
+    if (!claim_holds(fin, i, k, opt.octilinear, now) && t.failed++ < 8)
+      ADD_FAILURE() << at << ": net " << i << " claimed shortest, but a shorter way is free after tightening";
+  }
+}
+
+// taut route --tighten with exact gaps (since 2026-12-05): judge_tightened_claims on random_layout's
+// layouts (pads for a third of them). Without the withdrawal (run the test with
+// TAUT_TEST_NO_WITHDRAWAL set) it fails: among the 600 layouts, seeds 42, 50, 98, 160, 164, 184,
+// 210, 236 and more (a wire tightened away from where it ran opened a shorter way), which a
+// sanitizer run, with fewer layouts, takes too.
+TEST(ExactGaps, ClaimsStandAfterTightening) {
+  TightenedClaims t;
   std::vector<int> seeds;
   for (int seed = 1; seed <= sanitized_share(600, 20); ++seed) seeds.push_back(seed);
   for (const int b : {42, 50, 98, 160})
     if (b > sanitized_share(600, 20)) seeds.push_back(b);
   const bool no_withdrawal = std::getenv("TAUT_TEST_NO_WITHDRAWAL") != nullptr;
   for (const int seed : seeds) {
-    const RandomLayout L = random_layout(940000 + seed);
-    router::NetRouterOptions opt;
-    opt.octilinear = seed % 4 == 3;
-    opt.exact_gaps = true;
-    router::NetRouter nr(L.norm.domain, L.norm.obstacles, L.nets, L.rules, opt);
-    nr.run(opt.octilinear ? router::NetRouter::oct_router() : router::NetRouter::l1_router(false));
-    const std::int64_t k = nr.scale();
-    if (k == 1 || nr.stats().snap_far > 0) continue;
-    const std::string at = "seed " + std::to_string(940000 + seed) + (opt.octilinear ? " octilinear" : "");
-    // tightened together as taut route --tighten does
-    router::NetSpace ts(L.norm.domain, L.norm.obstacles, L.nets, L.rules);
-    std::vector<router::NetLines> wires(L.nets.size());
-    for (std::size_t i = 0; i < L.nets.size(); ++i)
-      if (nr.outcomes()[i].routed) wires[i] = nr.outcomes()[i].wires;
-    router::NetsTightenOptions o;
-    o.orientations = opt.octilinear ? router::TightenOrientations::Octilinear : router::TightenOrientations::Rectilinear;
-    router::NetsTightener nt(ts, o);
-    (void)nt.run(wires);
-    kept += nt.stats().kept;
-    for (std::size_t i = 0; i < L.nets.size(); ++i)
-      if (nr.outcomes()[i].routed && wires[i] != nr.outcomes()[i].wires) {
-        ++moved;
-        if (!no_withdrawal) withdrawn += static_cast<std::int64_t>(nr.withdraw_claims(i, nr.outcomes()[i].wires));
-      }
-    // the final space, scaled
-    auto up = [k](Point p) { return Point{static_cast<geom::Coord>(p.x * k), static_cast<geom::Coord>(p.y * k)}; };
-    std::vector<Polygon> obstacles = L.norm.obstacles;
-    for (Polygon& poly : obstacles) {
-      for (Point& v : poly.outer) v = up(v);
-      for (geom::Ring& h : poly.holes)
-        for (Point& v : h) v = up(v);
-    }
-    std::vector<router::NetPins> nets = L.nets;
-    for (router::NetPins& np : nets) {
-      for (Polygon& pin : np.pins)
-        for (Point& v : pin.outer) v = up(v);
-      np.scale = k;
-    }
-    router::NetRules rules = L.rules;
-    rules.scale = k;
-    router::NetSpace fin(geom::Box{up(L.norm.domain.lo), up(L.norm.domain.hi)}, obstacles, nets, rules);
-    std::vector<router::NetLines> up_wires = wires;
-    for (std::size_t i = 0; i < nets.size(); ++i) {
-      for (auto& w : up_wires[i])
-        for (Point& v : w) v = up(v);
-      fin.set_wires(i, up_wires[i]);
-    }
-    for (std::size_t i = 0; i < nets.size(); ++i) {
-      if (!nr.outcomes()[i].shortest) continue;
-      ++claims;
-      router::NetOutcome now;
-      now.wires = wires[i];
-      if (!claim_holds(fin, i, k, opt.octilinear, now) && failed++ < 8) ADD_FAILURE() << at << ": net " << i << " claimed shortest, but a shorter way is free after tightening";
-    }
+    const bool octilinear = seed % 4 == 3;
+    judge_tightened_claims(random_layout(940000 + seed), octilinear,
+                           "seed " + std::to_string(940000 + seed) + (octilinear ? " octilinear" : ""), no_withdrawal, t);
   }
   std::printf("%lld claims stand after tightening (%lld withdrawn where %lld moved wires had run; %lld wires kept as "
               "routed in gaps of exactly the clearance)\n",
-              static_cast<long long>(claims), static_cast<long long>(withdrawn), static_cast<long long>(moved),
-              static_cast<long long>(kept));
-  EXPECT_EQ(failed, 0);
-  EXPECT_GT(claims, static_cast<std::int64_t>(seeds.size()));  // (711 over 604 layouts, 40 over 24 sanitized)
-  EXPECT_GT(withdrawn + no_withdrawal, 0);
-  EXPECT_GT(moved, 0);
-  EXPECT_GT(kept, 0);
+              static_cast<long long>(t.claims), static_cast<long long>(t.withdrawn), static_cast<long long>(t.moved),
+              static_cast<long long>(t.kept));
+  EXPECT_EQ(t.failed, 0);
+  EXPECT_GT(t.claims, static_cast<std::int64_t>(seeds.size()));  // (838 over 604 layouts, 40 over 24 sanitized)
+  EXPECT_GT(t.withdrawn + no_withdrawal, 0);
+  EXPECT_GT(t.moved, 0);
+  EXPECT_GT(t.kept, 0);
+}
+
+// Layouts of two-pin nets whose pins are mostly large pads (3 to 24 units a side) among boxes 1
+// apart, for the claims on pads (since 2026-12-05): the region test of the claims' withdrawal
+// (NetRouter::may_open) must measure from the pads' boxes. With it measuring from each pad's
+// first vertex instead (a mutation tried on 2026-12-05), seeds 46, 102, 138, 178, 222 of the 300
+// fail (a claim broken at the end of the run or after tightening), and 2000 seeds then passed
+// with the boxes; without the withdrawal (TAUT_TEST_NO_WITHDRAWAL) seeds 24, 43, 46, 51, 86, ...
+// fail. A sanitizer run, with fewer layouts, takes four of them too.
+RandomLayout pad_layout(int seed) {
+  std::mt19937 rng(static_cast<unsigned>(seed));
+  RandomLayout L;
+  const geom::Box domain{{0, 0}, {120, 120}};
+  const std::vector<geom::Box> boxes = random_boxes_apart(rng, static_cast<int>(rng() % 7), 4, 100, 22);
+  L.norm = geom::normalize_obstacles(box_polygons(boxes), domain);
+  L.rules.wire_width = static_cast<std::int64_t>(rng() % 4);
+  L.rules.spacing = static_cast<std::int64_t>(rng() % 3);
+  router::L1Router plain(L.norm.domain, L.norm.obstacles);
+  std::vector<geom::Box> used;
+  auto apart = [&](const geom::Box& b) {
+    return std::none_of(used.begin(), used.end(), [&](const geom::Box& u) {
+      return b.lo.x <= u.hi.x + 1 && u.lo.x <= b.hi.x + 1 && b.lo.y <= u.hi.y + 1 && u.lo.y <= b.hi.y + 1;
+    });
+  };
+  auto pin = [&]() -> std::optional<Polygon> {
+    for (int tries = 0; tries < 200; ++tries) {
+      const Point p{static_cast<geom::Coord>(rng() % 121), static_cast<geom::Coord>(rng() % 121)};
+      if (rng() % 4 == 0) {
+        const geom::Box b{p, p};
+        if (plain.is_free(p) && apart(b)) {
+          used.push_back(b);
+          return Polygon{{p}, {}};
+        }
+        continue;
+      }
+      const geom::Coord w = static_cast<geom::Coord>(3 + rng() % 22), h = static_cast<geom::Coord>(3 + rng() % 22);
+      const geom::Box b{p, {static_cast<geom::Coord>(p.x + w), static_cast<geom::Coord>(p.y + h)}};
+      if (b.hi.x > 120 || b.hi.y > 120 || !apart(b)) continue;
+      const Polygon g = box_polygons(std::vector<geom::Box>{b})[0];
+      if (plain.pin_meets_obstacle(g)) continue;
+      used.push_back(b);
+      return g;
+    }
+    return std::nullopt;
+  };
+  const int n = 3 + static_cast<int>(rng() % 6);
+  for (int i = 0; i < n; ++i) {
+    router::NetPins net;
+    net.name = "n" + std::to_string(i);
+    for (int j = 0; j < 2; ++j)
+      if (const auto g = pin()) net.pins.push_back(*g);
+    if (net.pins.size() == 2) L.nets.push_back(std::move(net));
+  }
+  return L;
+}
+
+TEST(ExactGaps, ClaimsOnPadsStand) {
+  TightenedClaims t;
+  const bool no_withdrawal = std::getenv("TAUT_TEST_NO_WITHDRAWAL") != nullptr;
+  const int n = std::getenv("TAUT_PAD_SEEDS") ? std::atoi(std::getenv("TAUT_PAD_SEEDS")) : sanitized_share(300, 20);
+  std::vector<int> seeds;
+  for (int seed = 1; seed <= n; ++seed) seeds.push_back(seed);
+  for (const int b : {46, 102, 138, 222})
+    if (b > n) seeds.push_back(b);
+  for (const int seed : seeds)
+    judge_tightened_claims(pad_layout(950000 + seed), false, "pad layout seed " + std::to_string(950000 + seed), no_withdrawal, t);
+  std::printf("%lld claims stand (%lld withdrawn after tightening where %lld moved wires had run)\n",
+              static_cast<long long>(t.claims), static_cast<long long>(t.withdrawn), static_cast<long long>(t.moved));
+  EXPECT_EQ(t.failed, 0);
+  EXPECT_GT(t.claims, 0);
 }
 
 // The bend-aware metrics (bend_router: its bend cost is weighed by the scale) with exact_gaps:
