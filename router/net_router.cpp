@@ -832,6 +832,11 @@ std::vector<NetPins> scaled(std::vector<NetPins> nets, std::int64_t k) {
   }
   return nets;
 }
+Lines scaled_wires(Lines wires, std::int64_t k) {
+  for (auto& w : wires)
+    for (Point& p : w) p = scaled(p, k);
+  return wires;
+}
 NetRules with_scale(NetRules r, std::int64_t k) {
   r.scale = k;
   return r;
@@ -866,6 +871,8 @@ NetRouter::NetRouter(const geom::Box& domain, std::span<const geom::Polygon> obs
       options_(options) {
   options_.bend_cost *= scale_;  // lengths are scale_ times (router_scale keeps it <= 2^31)
   if (options_.cost == NetRouterOptions::Cost::Length) return;
+  for (std::size_t i = 0; i < space_.size() && rectilinear_pins_; ++i)
+    for (const Polygon& pin : space_.net(i).pins) rectilinear_pins_ = rectilinear_pins_ && is_rectilinear_shape(pin);
   // the bend-aware router takes rectilinear obstacles only (see the header)
   if (rules.cover_pieces <= 0) throw std::invalid_argument("NetRouter: a bend-aware cost needs NetRules::cover_pieces > 0");
   for (const Polygon& p : obstacles) {
@@ -1105,9 +1112,19 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
     // the certificate (NetOutcome::shortest): the snapped length against the scaled plane's
     // exact distance
     const NetPins& own = space_.net(net);
-    if (t.a.distance && certifies() && own.pins.size() == 2) {
+    if (certifies() && own.pins.size() == 2 && options_.cost == NetRouterOptions::Cost::Length && t.a.distance) {
       const geom::Root2 s = *t.a.distance;
       t.a.shortest = options_.octilinear ? oct_length(t.a.wires) == s : s.b == 0 && l1_length(t.a.wires) < s.a + scale_;
+      t.a.window = t.window;
+    } else if (certifies() && own.pins.size() == 2 && t.a.sink_costs.size() == 1 && t.a.wires.size() == 1) {
+      // the bend-aware costs (since 2026-12-05): the optimal path's scaled length L and bends b
+      // against the snapped wire's scaled length K R (the wires are still in the scaled plane,
+      // on multiples of K) and bends b' (the scaled bend cost K C is options_.bend_cost):
+      // Combined K R + K C b' < L + K C b + K; Link b' = b and K R < L + K
+      const auto [l, b] = t.a.sink_costs[0];
+      const __int128 k = scale_, kr = l1_length(t.a.wires), bb = geom::count_bends(t.a.wires[0]), c = options_.bend_cost;
+      t.a.shortest = options_.cost == NetRouterOptions::Cost::Combined ? kr + c * bb < __int128{l} + c * b + k
+                                                                        : bb == b && kr < __int128{l} + k;
       t.a.window = t.window;
     }
   }
@@ -1621,7 +1638,7 @@ void NetRouter::run(const NetRouteFn& route) {
       if (!o.shortest) continue;
       hits.clear();
       gone.query(bgi::intersects(claims_[i].window), std::back_inserter(hits));
-      const std::int64_t kr = l1_length(o.wires);  // (still in the scaled plane)
+      const std::int64_t kr = claimed_cost(i, o.wires);  // (still in the scaled plane)
       for (const auto& [box, k] : hits)
         if (k >= claims_[i].since && removed_[k].second != i && may_open(i, kr, box)) o.shortest = false;
       if (o.shortest) ++stats_.shortest;
@@ -1634,18 +1651,28 @@ void NetRouter::run(const NetRouteFn& route) {
       for (Point& p : w) p = Point{static_cast<geom::Coord>(p.x / scale_), static_cast<geom::Coord>(p.y / scale_)};
 }
 
-// Whether a wire of net i shorter than its claimed one (of length kr in the scaled plane) may
+// Whether a wire of net i shorter than its claimed one (of length kr in the scaled plane; under
+// Combined cheaper than its claimed cost kr, claimed_cost, so again no longer than kr - K) may
 // pass through box b, where another net's wire piece was removed after the claim. Not when b lies
-// outside the claim's window (every way out of it is longer), nor, in L1, when b misses the
+// outside the claim's window (every way out of it is longer, or costs more), nor, in L1 (not
+// under Link, where a wire of fewer bends is better however long), when b misses the
 // region {x : d(x, P) + d(x, Q) <= kr - K} round the boxes P and Q of the net's two pins (points
 // or shapes; d the L1 distance): a legal wire of length at most R - 1 from one pin to the other
 // lies there scaled (each of its points x has d(x, A) + d(x, B) <= K (R - 1) for the pins A and
 // B themselves, and a box is no farther than its shape), so if it missed every removed piece it
 // was free when the claim was made, and then the distance S there had K R >= S + K, which the
 // claim excludes.
+std::int64_t NetRouter::claimed_cost(std::size_t, const Lines& scaled_wires) const {
+  std::int64_t cost = l1_length(scaled_wires);
+  if (options_.cost == NetRouterOptions::Cost::Combined)
+    for (const auto& w : scaled_wires) cost += options_.bend_cost * geom::count_bends(w);
+  return cost;
+}
+
 bool NetRouter::may_open(std::size_t i, std::int64_t kr, const Box& b) const {
   if (!boxes_meet(b, claims_[i].window)) return false;
-  if (options_.octilinear) return true;
+  // octilinear; Link, where a wire of fewer bends is better however long
+  if (options_.octilinear || options_.cost == NetRouterOptions::Cost::Link) return true;
   const Box p = box_of(space_.net(i).pins[0].outer), q = box_of(space_.net(i).pins[1].outer);
   // the L1 distance from x to the interval [lo, hi]
   auto gap = [](std::int64_t x, std::int64_t lo, std::int64_t hi) { return std::max<std::int64_t>({0, lo - x, x - hi}); };
@@ -1665,16 +1692,14 @@ bool NetRouter::may_open(std::size_t i, std::int64_t kr, const Box& b) const {
 
 std::size_t NetRouter::withdraw_claims(std::size_t j, const std::vector<std::vector<Point>>& before) {
   if (!certifies() || before.empty()) return 0;
-  Lines scaled_before = before;
-  for (auto& w : scaled_before)
-    for (Point& p : w) p = scaled(p, scale_);
+  const Lines scaled_before = scaled_wires(before, scale_);
   std::vector<Box> gone;
   for (const Polygon& piece : space_.wire_union(scaled_before)) gone.push_back(box_of(piece.outer));
   std::size_t withdrawn = 0;
   for (std::size_t i = 0; i < out_.size(); ++i) {
     NetOutcome& o = out_[i];
     if (i == j || !o.shortest) continue;
-    const std::int64_t kr = scale_ * l1_length(o.wires);
+    const std::int64_t kr = claimed_cost(i, scaled_wires(o.wires, scale_));
     if (std::none_of(gone.begin(), gone.end(), [&](const Box& b) { return may_open(i, kr, b); })) continue;
     o.shortest = false;
     --stats_.shortest;

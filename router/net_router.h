@@ -424,13 +424,18 @@ struct NetOutcome {
   // Routed, and proven as short as any wire that keeps the clearance as the router measures it
   // (in squares: FORMAT.md's square-corner inflation) between its two pins (points or shapes;
   // shapes since 2026-12-05) among the blockages and the other nets' wires and pins as they are at
-  // the end (NetRouter's certificate, with gaps of exactly the clearance open: scale() > 1,
-  // NetRouterOptions::cost Length, a route function that sets NetAttempt::distance). Any such
+  // the end (NetRouter's certificate, with gaps of exactly the clearance open: scale() > 1, and
+  // with NetRouterOptions::cost Length a route function that sets NetAttempt::distance). Any such
   // wire (from its last point on one pin to its first on the other), scaled by K, lies in
   // the scaled plane's free space (it keeps K a and K b, more than the K a - 1 and K b - 1 grown
   // there), so none is shorter than S / K for that plane's exact distance S; the snapped wire
   // passes the rules (`taut route` checks it), so it is shortest when its length R has K R < S + K
-  // in L1 (then R = ceil(S / K), and lengths are integers) or K R = S octilinear. Not claimed with
+  // in L1 (then R = ceil(S / K), and lengths are integers) or K R = S octilinear. Under the
+  // bend-aware costs (since 2026-12-05) the same with the cost: the route function's sink_costs
+  // give the optimal path's scaled length L and bends b, and the snapped wire (one polyline) of
+  // length R and b' bends is claimed when K R + K C b' < L + K C b + K (Combined) or b' = b and
+  // K R < L + K (Link: fewest bends, then shortest); not when NetRouterOptions::blockages_covered
+  // or a pin has a sloped edge (the space is then smaller than the layout's). Not claimed with
   // the gaps closed (two grown obstacles that touch merge there, so a legal wire through a gap of
   // exactly the clearance would be missed), nor for trees. The claim is made when the net is
   // placed, among the wires then; wires placed later only take ways away, and it is withdrawn at
@@ -438,7 +443,9 @@ struct NetOutcome {
   // route was proven in (outside it every way is longer than the wire, whatever lies there) and,
   // in L1, from the region a shorter wire would lie in, d(x, P) + d(x, Q) <= K R - K round the
   // boxes P and Q of its scaled pins (since 2026-12-05; a shorter wire that met no removed piece
-  // was free when the claim was made). withdraw_claims does the same for wires changed after run().
+  // was free when the claim was made; under Combined R is the cost R + C b', and a cheaper wire
+  // is no longer than that less 1; under Link the window alone, as a wire of fewer bends is
+  // better however long). withdraw_claims does the same for wires changed after run().
   bool shortest = false;
 };
 
@@ -523,6 +530,10 @@ struct NetRouterOptions {
   // units for those). false: gaps of
   // exactly 2a, and tracks at exactly the pitch, are closed.
   bool exact_gaps = false;
+  // The obstacles given stand for sloped blockages by their rectilinear covers (taut route does
+  // that under the bend-aware costs): the router's space is then smaller than the layout's, and
+  // no NetOutcome::shortest is claimed under those costs.
+  bool blockages_covered = false;
 };
 
 struct NetRouterStats {
@@ -714,8 +725,16 @@ class NetRouter {
     std::size_t since = 0;
   };
   std::vector<Claim> claims_;
-  // Whether NetOutcome::shortest may be claimed in this run (else removed_ stays empty)
-  bool certifies() const { return scale_ > 1 && options_.cost == NetRouterOptions::Cost::Length; }
+  // Whether NetOutcome::shortest may be claimed in this run (else removed_ stays empty): with
+  // the scale, and under the bend-aware costs only when the space is the layout's own (no
+  // blockage covered, every pin rectilinear: no pin stands for a staircase or a cover)
+  bool certifies() const {
+    return scale_ > 1 && (options_.cost == NetRouterOptions::Cost::Length || (!options_.blockages_covered && rectilinear_pins_));
+  }
+  bool rectilinear_pins_ = true;
+  // Net i's claimed cost (scaled): the L1 length of its wires, or with Combined the length +
+  // bend_cost x bends; a cheaper wire lies within the cost less K of its pins (may_open).
+  std::int64_t claimed_cost(std::size_t i, const std::vector<std::vector<geom::Point>>& scaled_wires) const;
   bool may_open(std::size_t i, std::int64_t kr, const geom::Box& b) const;
   // The boxes of the wires of every net whose rips were counted without its wires changing (a
   // rip-up undone), since run() began.

@@ -560,6 +560,7 @@ void add_route(CLI::App& app, int& status) {
             nro.progress = progress;
             nro.threads = static_cast<int>(args->threads ? args->threads : std::max(1u, std::thread::hardware_concurrency()));
             nro.exact_gaps = exact;
+            nro.blockages_covered = !obs.covered.empty();  // (no claim of shortest cost then)
             net_threads = nro.threads;
             router::NetRouter nr(domain, norm.obstacles, net_pins(*layout), rules, nro);
             const std::int64_t k = nr.scale();
@@ -599,6 +600,7 @@ void add_route(CLI::App& app, int& status) {
         NetResult& r = results[i];
         if (r.route.status == "routed") {
           ++routed;
+          if (!args->independent) shortest_of[i] = r.shortest;  // (the net router's claim, since 2026-12-05)
           if (net.sketch)
             print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0007", layout->file, net.sketch->line, 0,
                                           "net \"" + net.name + "\": the wire is the best of any homotopy class "

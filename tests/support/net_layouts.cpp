@@ -157,6 +157,7 @@ BendRun bend_run(const RandomLayout& layout, int seed) {
   r.rules = layout.rules;
   r.rules.cover_pieces = router::kDefaultCoverPieces;
   r.route = router::NetRouter::bend_router(link ? router::BendMetric::Link : router::BendMetric::Combined, c);
+  r.options.blockages_covered = r.covered.obstacles != layout.norm.obstacles;  // (as taut route says)
   r.label = link ? "link" : "C " + std::to_string(c);
   return r;
 }
