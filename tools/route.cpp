@@ -279,24 +279,32 @@ bool plain_reason(const std::string& code) {
 }
 
 // The problems router::check_routes finds in the routed nets (with the clearance of <rules>).
-std::vector<router::CheckProblem> route_problems(const io::Layout& layout, const geom::Box& domain,
-                                                 const std::vector<geom::Polygon>& obstacles,
-                                                 const std::vector<NetResult>& results) {
+// ... of wires per net (a net with none is not routed).
+std::vector<router::CheckProblem> wire_problems(const io::Layout& layout, const geom::Box& domain,
+                                                const std::vector<geom::Polygon>& obstacles,
+                                                const std::vector<router::NetLines>& wires) {
   geom::NormalizedObstacles space;
   space.domain = domain;
   space.obstacles = obstacles;
   std::vector<router::CheckNet> nets;
   for (std::size_t i = 0; i < layout.nets.size(); ++i) {
     router::CheckNet c = check_net(layout.nets[i]);
-    if (results[i].route.status == "routed") {
-      c.routed = true;
-      for (const io::Wire& w : results[i].route.wires) c.wires.push_back({w.points, 0});
-    }
+    c.routed = !wires[i].empty();
+    for (const auto& w : wires[i]) c.wires.push_back({w, 0});
     nets.push_back(std::move(c));
   }
   router::CheckRules rules;
   if (layout.rules) rules = {layout.rules->wire_width, layout.rules->spacing};
   return router::check_routes(space, nets, rules).problems;
+}
+std::vector<router::CheckProblem> route_problems(const io::Layout& layout, const geom::Box& domain,
+                                                 const std::vector<geom::Polygon>& obstacles,
+                                                 const std::vector<NetResult>& results) {
+  std::vector<router::NetLines> wires(layout.nets.size());
+  for (std::size_t i = 0; i < layout.nets.size(); ++i)
+    if (results[i].route.status == "routed")
+      for (const io::Wire& w : results[i].route.wires) wires[i].push_back(w.points);
+  return wire_problems(layout, domain, obstacles, wires);
 }
 
 // --metric combined / link (router::BendRouter): nets of point and shape pins. Two pins: the
@@ -498,6 +506,7 @@ void add_route(CLI::App& app, int& status) {
     std::vector<std::optional<bool>> shortest_of(layout->nets.size());
     std::unique_ptr<router::NetRouter> net_router;  // the last run of the nets together
     std::optional<router::NetsTightenStats> tighten_stats;
+    std::int64_t tighten_scale = 1;  // --tighten: the plane's scale it ran in (the net router's, or 1)
     int net_threads = 1;
     // the net router's scale for exact gaps (router::NetRouter::scale; 1: closed), and the
     // problems router::check_routes found with it, when it then routed again without
@@ -803,9 +812,93 @@ void add_route(CLI::App& app, int& status) {
         router::NetsTightenOptions o;
         o.orientations = tighten_orientations(orient_word);
         o.stop = stop;
-        router::NetsTightener nt(ts, o);
-        const std::vector<router::NetTightenOutcome> outs = nt.run(wires, kind);
-        tighten_stats = nt.stats();
+        // In the net router's scaled plane first (since 2026-12-05), where gaps of exactly the
+        // clearance are open (net_router.h), so a wire there is pulled taut too; then snapped back
+        // to the layout's integers and kept only when no vertex was a quarter of the scale or more
+        // from its multiple, every net passes the check with the rules, and no net's wires got
+        // longer (what tightening promises); else tightened in the layout's units, where a wire in
+        // such a gap is kept as routed.
+        const std::int64_t k = net_router ? net_router->scale() : 1;
+        if (k > 1) {
+          auto up = [k](geom::Point p) {
+            return geom::Point{static_cast<geom::Coord>(p.x * k), static_cast<geom::Coord>(p.y * k)};
+          };
+          std::vector<geom::Polygon> obstacles = norm.obstacles;
+          for (geom::Polygon& poly : obstacles) {
+            for (geom::Point& v : poly.outer) v = up(v);
+            for (geom::Ring& h : poly.holes)
+              for (geom::Point& v : h) v = up(v);
+          }
+          std::vector<router::NetPins> pins = net_pins(*layout);
+          for (router::NetPins& np : pins) {
+            for (geom::Polygon& pin : np.pins) {
+              for (geom::Point& v : pin.outer) v = up(v);
+              for (geom::Ring& h : pin.holes)
+                for (geom::Point& v : h) v = up(v);
+            }
+            np.scale = k;
+          }
+          router::NetRules scaled_rules = rules;
+          scaled_rules.scale = k;
+          router::NetSpace ks(geom::Box{up(net_domain.lo), up(net_domain.hi)}, obstacles, pins, scaled_rules);
+          std::vector<router::NetLines> kw = wires;
+          for (auto& net_wires : kw)
+            for (auto& w : net_wires)
+              for (geom::Point& v : w) v = up(v);
+          router::NetsTightener knt(ks, o);
+          (void)knt.run(kw, kind);
+          bool far = false;
+          auto down = [&](std::int64_t v) {
+            const std::int64_t q = (v >= 0 ? v + k / 2 : v - k / 2) / k;  // the nearest multiple, halves away from 0
+            far = far || std::abs(v - q * k) * 4 >= k;
+            return static_cast<geom::Coord>(q);
+          };
+          std::vector<router::NetLines> back(kw.size());
+          for (std::size_t i = 0; i < kw.size(); ++i)
+            for (const auto& w : kw[i]) {
+              std::vector<geom::Point> s;
+              for (const geom::Point v : w) {
+                const geom::Point q{down(v.x), down(v.y)};
+                if (s.empty() || s.back() != q) s.push_back(q);
+              }
+              if (s.size() == 1 && w.size() > 1) s.push_back(s[0]);
+              back[i].push_back(std::move(s));
+            }
+          auto length = [](const router::NetLines& ws) {
+            geom::Root2 n{0, 0};
+            std::int64_t bends = 0;
+            for (const auto& w : ws) {
+              for (std::size_t j = 0; j + 1 < w.size(); ++j)
+                n = n + geom::octilinear_length(std::int64_t{w[j + 1].x} - w[j].x, std::int64_t{w[j + 1].y} - w[j].y);
+              bends += geom::count_bends(w);
+            }
+            return std::pair<geom::Root2, std::int64_t>{n, bends};
+          };
+          bool kept = !far;
+          // (a net whose wires got neither shorter nor fewer bends keeps its routed ones, when
+          // the layout then still passes the check: its claim of shortest length then stands, and
+          // a wire that now runs on through the corner where it ends on another gains no bend)
+          std::vector<router::NetLines> mixed = back;
+          for (std::size_t i = 0; kept && i < wires.size(); ++i) {
+            if (wires[i].empty()) continue;
+            const auto [l0, b0] = length(wires[i]);
+            const auto [l1, b1] = length(back[i]);
+            kept = !(l0 < l1);
+            if (!(l1 < l0) && b1 >= b0) mixed[i] = wires[i];
+          }
+          kept = kept && wire_problems(*layout, net_domain, norm.obstacles, back).empty();
+          if (kept) {
+            if (mixed != back && wire_problems(*layout, net_domain, norm.obstacles, mixed).empty()) back = std::move(mixed);
+            wires = std::move(back);
+            tighten_stats = knt.stats();
+            tighten_scale = k;
+          }
+        }
+        if (tighten_scale == 1) {
+          router::NetsTightener nt(ts, o);
+          (void)nt.run(wires, kind);
+          tighten_stats = nt.stats();
+        }
         // A claim of shortest length stands only while no other net's wire left its proof window
         // (router::NetRouter::withdraw_claims): tightening moves wires.
         if (net_router) {
@@ -978,8 +1071,10 @@ void add_route(CLI::App& app, int& status) {
                            {"last_pass", net_stats->phase_seconds.last_pass},
                            {"explain", net_stats->phase_seconds.explain}}},
                          {"exact_gaps", {{"scale", gap_scale}, {"snap_far", gap_snap_far}, {"check_problems", gap_problems}}}};
-    if (tighten_stats)
+    if (tighten_stats) {
       j["tighten"] = together_stats_json(*tighten_stats);
+      j["tighten"]["scale"] = tighten_scale;  // (since 2026-12-05)
+    }
     if (!args->stats.empty()) stats = j.dump(2) + "\n";
     if (!write_output(args->out, xml) || (!args->svg.empty() && !write_output(args->svg, svg)) ||
         (!args->stats.empty() && !write_output(args->stats, stats))) {

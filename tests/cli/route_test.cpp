@@ -355,7 +355,7 @@ TEST(Route, GeneratedMultiPinLayoutsPassTheCheck) {
 // <sketch> is routed by its tightened sketch (the others make room for it).
 TEST(Route, TightenTogetherKeepsTheRules) {
   const std::string dir = temp_dir("route_tighten_together");
-  int nets = 0, fewer_bends = 0, pin_ways = 0;
+  int nets = 0, fewer_bends = 0, pin_ways = 0, scaled_runs = 0, gap_runs = 0;
   std::int64_t bends_before = 0, bends_after = 0;
   for (const std::string kind : {"rects", "maze", "degenerate", "polygons"})
     for (const std::string orient : {"rectilinear", "octilinear"}) {
@@ -376,6 +376,9 @@ TEST(Route, TightenTogetherKeepsTheRules) {
       const auto j = nlohmann::json::parse(read_text(st));
       EXPECT_GE(j["tighten"]["rounds"].get<int>(), 1);
       EXPECT_FALSE(j["tighten"]["capped"].get<bool>());
+      // (since 2026-12-05 in the router's scaled plane when its gaps were open and the result checks)
+      scaled_runs += j["tighten"]["scale"].get<int>() > 1;
+      gap_runs += j["net_router"]["exact_gaps"]["scale"].get<int>() > 1;
       io::ReadResult a = io::read_layout(plain), b = io::read_layout(tight);
       ASSERT_TRUE(a.layout && a.layout->routes && b.layout && b.layout->routes);
       const geom::NormalizedObstacles norm = normalized_for(in);
@@ -416,8 +419,10 @@ TEST(Route, TightenTogetherKeepsTheRules) {
         }
       }
     }
-  std::printf("%d routed nets tightened together, %d with fewer bends; bends %lld -> %lld\n", nets, fewer_bends,
-              static_cast<long long>(bends_before), static_cast<long long>(bends_after));
+  std::printf("%d routed nets tightened together, %d with fewer bends; bends %lld -> %lld; %d of %d runs routed with the "
+              "gaps open were tightened in the scaled plane\n",
+              nets, fewer_bends, static_cast<long long>(bends_before), static_cast<long long>(bends_after), scaled_runs, gap_runs);
+  EXPECT_GT(scaled_runs, 0);
   EXPECT_LT(bends_after * 10, bends_before * 9);
   EXPECT_GT(nets, sanitized_share(60, 5));
   EXPECT_GT(fewer_bends, sanitized_share(30, 6));
@@ -913,7 +918,7 @@ TEST(Route, GapsOfExactlyTheClearanceTakeWires) {
   {
     // designs/pitch.xml (make run): four nets through a channel exactly four tracks wide all
     // route and pass the check; with --tighten too (until 2026-12-05 the gaps were closed there,
-    // and the fourth track was lost: ROUTE-0012), where each wire is kept as routed
+    // and the fourth track was lost: ROUTE-0012)
     const std::string design = kDesigns + "pitch.xml";
     const auto r = run_taut({"route", design, "-q", "-o", dir + "/pitch.xml", "--stats", dir + "/pitch.json"});
     EXPECT_EQ(r.status, 0) << r.err;
@@ -925,10 +930,18 @@ TEST(Route, GapsOfExactlyTheClearanceTakeWires) {
     const auto t = run_taut({"route", design, "-q", "--tighten", "-o", dir + "/pitch.tight.xml", "--stats", dir + "/pitch.tight.json"});
     EXPECT_EQ(t.status, 0) << t.err;
     EXPECT_EQ(run_taut({"check", dir + "/pitch.tight.xml", "-q"}).status, 0);
-    // no wire moved (each runs at exactly the clearance): every claim stands
+    // tightened in the router's scaled plane (since 2026-12-05; before, each wire at exactly the
+    // clearance was kept as routed): a0's wire, routed with a jog of 100 DBU beside its pin (3
+    // bends), loses it (2 bends, the same length); the others gain nothing and stay as routed.
+    // a0's old wire left ground near the others, so their claims are withdrawn, and a0's stands
     const auto tj = nlohmann::json::parse(read_text(dir + "/pitch.tight.json"));
-    EXPECT_EQ(tj["tighten"]["kept"], 4) << tj.dump();
-    EXPECT_EQ(tj["net_router"]["proven_shortest"], 4) << tj.dump();
+    EXPECT_EQ(tj["tighten"]["scale"], 8192) << tj.dump();
+    EXPECT_EQ(j["routes"]["a0"]["bends"], 3) << j.dump();
+    EXPECT_EQ(tj["routes"]["a0"]["bends"], 2) << tj.dump();
+    EXPECT_EQ(tj["totals"]["length"], j["totals"]["length"]) << tj.dump();
+    EXPECT_EQ(tj["totals"]["bends"], j["totals"]["bends"].get<int>() - 1) << tj.dump();
+    EXPECT_EQ(tj["routes"]["a0"]["shortest"], true) << tj.dump();
+    EXPECT_EQ(tj["net_router"]["proven_shortest"].get<int>() + tj["net_router"]["shortest_withdrawn"].get<int>(), 4) << tj.dump();
     // with net a0's pins as pads (since 2026-12-05 a two-pin net with shape pins is claimed too)
     std::string text = read_text(design);
     const std::string l = R"(<pin name="l" x="1600" y="800"/>)", r0 = R"(<pin name="r" x="10400" y="800"/>)";
