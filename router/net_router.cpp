@@ -870,9 +870,10 @@ NetRouter::NetRouter(const geom::Box& domain, std::span<const geom::Polygon> obs
              scaled(std::move(nets), scale_), with_scale(rules, scale_)),
       options_(options) {
   options_.bend_cost *= scale_;  // lengths are scale_ times (router_scale keeps it <= 2^31)
-  if (options_.cost == NetRouterOptions::Cost::Length) return;
+  covers_pins_ = rules.cover_pieces > 0;
   for (std::size_t i = 0; i < space_.size() && rectilinear_pins_; ++i)
     for (const Polygon& pin : space_.net(i).pins) rectilinear_pins_ = rectilinear_pins_ && is_rectilinear_shape(pin);
+  if (options_.cost == NetRouterOptions::Cost::Length) return;
   // the bend-aware router takes rectilinear obstacles only (see the header)
   if (rules.cover_pieces <= 0) throw std::invalid_argument("NetRouter: a bend-aware cost needs NetRules::cover_pieces > 0");
   for (const Polygon& p : obstacles) {
@@ -1116,7 +1117,8 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
       const geom::Root2 s = *t.a.distance;
       t.a.shortest = options_.octilinear ? oct_length(t.a.wires) == s : s.b == 0 && l1_length(t.a.wires) < s.a + scale_;
       t.a.window = t.window;
-    } else if (certifies() && own.pins.size() == 2 && t.a.sink_costs.size() == 1 && t.a.wires.size() == 1) {
+    } else if (certifies() && own.pins.size() == 2 && options_.cost != NetRouterOptions::Cost::Length &&
+               t.a.sink_costs.size() == 1 && t.a.wires.size() == 1) {
       // the bend-aware costs (since 2026-12-05): the optimal path's scaled length L and bends b
       // against the snapped wire's scaled length K R (the wires are still in the scaled plane,
       // on multiples of K) and bends b' (the scaled bend cost K C is options_.bend_cost):
@@ -1624,6 +1626,13 @@ struct OctRouteFn {
 }  // namespace
 
 void NetRouter::run(const NetRouteFn& route) {
+  // the claims (NetOutcome::shortest) and the windows' proof take the options' cost for the route
+  // function's: bend_router's must be the same (a route function of one's own is its caller's word)
+  if (const auto* f = route.target<BendRouteFn>()) {
+    const bool same = options_.cost == (f->metric == BendMetric::Link ? NetRouterOptions::Cost::Link : NetRouterOptions::Cost::Combined) &&
+                      (f->metric == BendMetric::Link || f->bend_cost * scale_ == options_.bend_cost);
+    if (!same) throw std::invalid_argument("NetRouter::run: bend_router's metric or bend cost differs from NetRouterOptions' cost");
+  }
   run_scaled(route);  // the route function takes the scale from NetPins::scale
   // NetOutcome::shortest: withdrawn where another net's wire piece was removed from the window
   // since the claim

@@ -532,7 +532,7 @@ struct NetRouterOptions {
   bool exact_gaps = false;
   // The obstacles given stand for sloped blockages by their rectilinear covers (taut route does
   // that under the bend-aware costs): the router's space is then smaller than the layout's, and
-  // no NetOutcome::shortest is claimed under those costs.
+  // no NetOutcome::shortest is claimed.
   bool blockages_covered = false;
 };
 
@@ -726,12 +726,14 @@ class NetRouter {
   };
   std::vector<Claim> claims_;
   // Whether NetOutcome::shortest may be claimed in this run (else removed_ stays empty): with
-  // the scale, and under the bend-aware costs only when the space is the layout's own (no
-  // blockage covered, every pin rectilinear: no pin stands for a staircase or a cover)
+  // the scale, and only when the space is the layout's own: no blockage covered, and with
+  // NetRules::cover_pieces > 0 (always under the bend-aware costs) every pin of every net
+  // rectilinear (none stands for a staircase or a cover)
   bool certifies() const {
-    return scale_ > 1 && (options_.cost == NetRouterOptions::Cost::Length || (!options_.blockages_covered && rectilinear_pins_));
+    return scale_ > 1 && !options_.blockages_covered && (rectilinear_pins_ || !covers_pins_);
   }
-  bool rectilinear_pins_ = true;
+  bool rectilinear_pins_ = true;  // every pin of every net: a point, or edges horizontal and vertical
+  bool covers_pins_ = false;      // NetRules::cover_pieces > 0
   // Net i's claimed cost (scaled): the L1 length of its wires, or with Combined the length +
   // bend_cost x bends; a cheaper wire lies within the cost less K of its pins (may_open).
   std::int64_t claimed_cost(std::size_t i, const std::vector<std::vector<geom::Point>>& scaled_wires) const;

@@ -191,4 +191,20 @@ NetLines cut_at_joints(const NetLines& wires, std::span<const geom::Polygon> pin
 // Deterministic (in input order).
 NetLines join_at_twos(const NetLines& wires, std::span<const geom::Polygon> pins = {});
 
+// The nets' routed wires (layout units) tightened together (NetsTightener) in the net router's
+// plane scaled by k > 1 (NetRouter::scale: the domain, blockages and pins times k, the rules'
+// scale k, so gaps of exactly the clearance are open, net_router.h), then every vertex snapped
+// back to the nearest multiple of k (halves away from zero) and divided by it. nullopt when a
+// vertex lay k/4 or more from its multiple, or a routed net's wires came back empty or longer
+// (octilinear length, exactly). The caller checks the result with its rules (taut route:
+// router::check_routes) before it takes it; `stats`: the tightening's.
+std::optional<std::vector<NetLines>> tighten_scaled(const geom::Box& domain, std::span<const geom::Polygon> obstacles,
+                                                    std::vector<NetPins> nets, NetRules rules, std::int64_t k,
+                                                    const std::vector<NetLines>& wires, std::span<const NetsTightener::Input> kind,
+                                                    const NetsTightenOptions& options, NetsTightenStats* stats = nullptr);
+
+// The octilinear length a + b sqrt2 and the bends of a net's wires (segments at 0, 45 or 90
+// degrees measured exactly, others by their octilinear distance).
+std::pair<geom::Root2, std::int64_t> length_and_bends(const NetLines& wires);
+
 }  // namespace taut::router

@@ -820,77 +820,24 @@ void add_route(CLI::App& app, int& status) {
         // such a gap is kept as routed.
         const std::int64_t k = net_router ? net_router->scale() : 1;
         if (k > 1) {
-          auto up = [k](geom::Point p) {
-            return geom::Point{static_cast<geom::Coord>(p.x * k), static_cast<geom::Coord>(p.y * k)};
-          };
-          std::vector<geom::Polygon> obstacles = norm.obstacles;
-          for (geom::Polygon& poly : obstacles) {
-            for (geom::Point& v : poly.outer) v = up(v);
-            for (geom::Ring& h : poly.holes)
-              for (geom::Point& v : h) v = up(v);
-          }
-          std::vector<router::NetPins> pins = net_pins(*layout);
-          for (router::NetPins& np : pins) {
-            for (geom::Polygon& pin : np.pins) {
-              for (geom::Point& v : pin.outer) v = up(v);
-              for (geom::Ring& h : pin.holes)
-                for (geom::Point& v : h) v = up(v);
+          router::NetsTightenStats kst;
+          std::optional<std::vector<router::NetLines>> back =
+              router::tighten_scaled(net_domain, norm.obstacles, net_pins(*layout), rules, k, wires, kind, o, &kst);
+          if (back && wire_problems(*layout, net_domain, norm.obstacles, *back).empty()) {
+            // (a net whose wires got neither shorter nor fewer bends keeps its routed ones, when
+            // the layout then still passes the check: it then takes no claim of shortest length
+            // from the other nets (NetRouter::withdraw_claims, below), and a wire that would run
+            // on through the corner where it ends on another gains no bend)
+            std::vector<router::NetLines> mixed = *back;
+            for (std::size_t i = 0; i < wires.size(); ++i) {
+              if (wires[i].empty()) continue;
+              const auto [l0, b0] = router::length_and_bends(wires[i]);
+              const auto [l1, b1] = router::length_and_bends((*back)[i]);
+              if (!(l1 < l0) && b1 >= b0) mixed[i] = wires[i];
             }
-            np.scale = k;
-          }
-          router::NetRules scaled_rules = rules;
-          scaled_rules.scale = k;
-          router::NetSpace ks(geom::Box{up(net_domain.lo), up(net_domain.hi)}, obstacles, pins, scaled_rules);
-          std::vector<router::NetLines> kw = wires;
-          for (auto& net_wires : kw)
-            for (auto& w : net_wires)
-              for (geom::Point& v : w) v = up(v);
-          router::NetsTightener knt(ks, o);
-          (void)knt.run(kw, kind);
-          bool far = false;
-          auto down = [&](std::int64_t v) {
-            const std::int64_t q = (v >= 0 ? v + k / 2 : v - k / 2) / k;  // the nearest multiple, halves away from 0
-            far = far || std::abs(v - q * k) * 4 >= k;
-            return static_cast<geom::Coord>(q);
-          };
-          std::vector<router::NetLines> back(kw.size());
-          for (std::size_t i = 0; i < kw.size(); ++i)
-            for (const auto& w : kw[i]) {
-              std::vector<geom::Point> s;
-              for (const geom::Point v : w) {
-                const geom::Point q{down(v.x), down(v.y)};
-                if (s.empty() || s.back() != q) s.push_back(q);
-              }
-              if (s.size() == 1 && w.size() > 1) s.push_back(s[0]);
-              back[i].push_back(std::move(s));
-            }
-          auto length = [](const router::NetLines& ws) {
-            geom::Root2 n{0, 0};
-            std::int64_t bends = 0;
-            for (const auto& w : ws) {
-              for (std::size_t j = 0; j + 1 < w.size(); ++j)
-                n = n + geom::octilinear_length(std::int64_t{w[j + 1].x} - w[j].x, std::int64_t{w[j + 1].y} - w[j].y);
-              bends += geom::count_bends(w);
-            }
-            return std::pair<geom::Root2, std::int64_t>{n, bends};
-          };
-          bool kept = !far;
-          // (a net whose wires got neither shorter nor fewer bends keeps its routed ones, when
-          // the layout then still passes the check: its claim of shortest length then stands, and
-          // a wire that now runs on through the corner where it ends on another gains no bend)
-          std::vector<router::NetLines> mixed = back;
-          for (std::size_t i = 0; kept && i < wires.size(); ++i) {
-            if (wires[i].empty()) continue;
-            const auto [l0, b0] = length(wires[i]);
-            const auto [l1, b1] = length(back[i]);
-            kept = !(l0 < l1);
-            if (!(l1 < l0) && b1 >= b0) mixed[i] = wires[i];
-          }
-          kept = kept && wire_problems(*layout, net_domain, norm.obstacles, back).empty();
-          if (kept) {
-            if (mixed != back && wire_problems(*layout, net_domain, norm.obstacles, mixed).empty()) back = std::move(mixed);
-            wires = std::move(back);
-            tighten_stats = knt.stats();
+            if (mixed != *back && wire_problems(*layout, net_domain, norm.obstacles, mixed).empty()) back = std::move(mixed);
+            wires = std::move(*back);
+            tighten_stats = kst;
             tighten_scale = k;
           }
         }

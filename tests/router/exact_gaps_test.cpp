@@ -417,7 +417,7 @@ TEST(ExactGaps, ANetAloneHasTheLeastCostInTheClosedGrownSpace) {
   AloneTotals combined, link;
   for (std::uint32_t seed = 1; seed <= static_cast<std::uint32_t>(sanitized_share(1500, 30)); ++seed) {
     const bool is_link = seed % 5 == 2;
-    const RefCost cost{is_link ? Cost::Link : Cost::Combined, std::vector<std::int64_t>{0, 1, 7, 1000}[seed % 4]};
+    const RefCost cost{is_link ? Cost::Link : Cost::Combined, std::vector<std::int64_t>{0, 1, 7, 1000}[(seed / 2) % 4]};
     judge_alone(960000 + seed, seed % 2 == 0, is_link ? link : combined, cost);
   }
   expect_alone(combined, "length + C x bends, C in 0, 1, 7, 1000");
@@ -561,14 +561,17 @@ TEST(ExactGaps, ClaimsAreWithdrawnWhenAWayOpens) {
 // which a sanitizer run, with fewer layouts, takes too.
 struct TightenedClaims {
   int failed = 0;
-  std::int64_t claims = 0, withdrawn = 0, moved = 0, kept = 0;
+  std::int64_t claims = 0, withdrawn = 0, moved = 0, kept = 0, scaled = 0;
 };
 
 // One layout routed with exact gaps, its claims checked at the end of the run (broken_claims),
-// then tightened together as taut route --tighten does (router::NetsTightener in the layout's
-// units), NetRouter::withdraw_claims called for every net that moved (unless no_withdrawal), and
-// each claim left checked against the final space built here.
-void judge_tightened_claims(const RandomLayout& L, bool octilinear, const std::string& at, bool no_withdrawal, TightenedClaims& t) {
+// then tightened together as taut route --tighten does: with `scaled` in the router's scaled
+// plane (router::tighten_scaled, taken when the checker passes it), else, or when that fails, in
+// the layout's units (router::NetsTightener); NetRouter::withdraw_claims called for every net
+// that moved (unless no_withdrawal), and each claim left checked against the final space built
+// here.
+void judge_tightened_claims(const RandomLayout& L, bool octilinear, const std::string& at, bool no_withdrawal, TightenedClaims& t,
+                            bool scaled = false) {
   router::NetRouterOptions opt;
   opt.octilinear = octilinear;
   opt.exact_gaps = true;
@@ -585,9 +588,18 @@ void judge_tightened_claims(const RandomLayout& L, bool octilinear, const std::s
     if (nr.outcomes()[i].routed) wires[i] = nr.outcomes()[i].wires;
   router::NetsTightenOptions o;
   o.orientations = opt.octilinear ? router::TightenOrientations::Octilinear : router::TightenOrientations::Rectilinear;
-  router::NetsTightener nt(ts, o);
-  (void)nt.run(wires);
-  t.kept += nt.stats().kept;
+  std::optional<std::vector<router::NetLines>> back;
+  router::NetsTightenStats kst;
+  if (scaled) back = router::tighten_scaled(L.norm.domain, L.norm.obstacles, L.nets, L.rules, k, wires, {}, o, &kst);
+  if (back && router::check_routes(L.norm, check_nets(L.nets, *back), {L.rules.wire_width, L.rules.spacing}).problems.empty()) {
+    wires = std::move(*back);
+    t.kept += kst.kept;
+    ++t.scaled;
+  } else {
+    router::NetsTightener nt(ts, o);
+    (void)nt.run(wires);
+    t.kept += nt.stats().kept;
+  }
   for (std::size_t i = 0; i < L.nets.size(); ++i)
     if (nr.outcomes()[i].routed && wires[i] != nr.outcomes()[i].wires) {
       ++t.moved;
@@ -641,12 +653,14 @@ TEST(ExactGaps, ClaimsStandAfterTightening) {
   for (const int seed : seeds) {
     const bool octilinear = seed % 4 == 3;
     judge_tightened_claims(random_layout(940000 + seed), octilinear,
-                           "seed " + std::to_string(940000 + seed) + (octilinear ? " octilinear" : ""), no_withdrawal, t);
+                           "seed " + std::to_string(940000 + seed) + (octilinear ? " octilinear" : "") + (seed % 2 ? "" : " scaled"),
+                           no_withdrawal, t, seed % 2 == 0);
   }
   std::printf("%lld claims stand after tightening (%lld withdrawn where %lld moved wires had run; %lld wires kept as "
-              "routed in gaps of exactly the clearance)\n",
+              "routed; %lld layouts tightened in the scaled plane)\n",
               static_cast<long long>(t.claims), static_cast<long long>(t.withdrawn), static_cast<long long>(t.moved),
-              static_cast<long long>(t.kept));
+              static_cast<long long>(t.kept), static_cast<long long>(t.scaled));
+  EXPECT_GT(t.scaled, 0);
   EXPECT_EQ(t.failed, 0);
   EXPECT_GT(t.claims, static_cast<std::int64_t>(seeds.size()));  // (838 over 604 layouts, 40 over 24 sanitized)
   EXPECT_GT(t.withdrawn + no_withdrawal, 0);
@@ -717,7 +731,8 @@ TEST(ExactGaps, ClaimsOnPadsStand) {
   for (const int b : {46, 102, 138, 222})
     if (b > n) seeds.push_back(b);
   for (const int seed : seeds)
-    judge_tightened_claims(pad_layout(950000 + seed), false, "pad layout seed " + std::to_string(950000 + seed), no_withdrawal, t);
+    judge_tightened_claims(pad_layout(950000 + seed), false, "pad layout seed " + std::to_string(950000 + seed), no_withdrawal, t,
+                           seed % 2 == 0);
   std::printf("%lld claims stand (%lld withdrawn after tightening where %lld moved wires had run)\n",
               static_cast<long long>(t.claims), static_cast<long long>(t.withdrawn), static_cast<long long>(t.moved));
   EXPECT_EQ(t.failed, 0);
@@ -798,6 +813,24 @@ TEST(ExactGaps, BendMetricsPassTheChecker) {
 TEST(ExactGaps, BendClaimsOnPadsStand) {
   const int n = std::getenv("TAUT_BEND_SEEDS") ? std::atoi(std::getenv("TAUT_BEND_SEEDS")) : sanitized_share(300, 15);
   judge_bend_claims(pad_layout, n, 970000, {66, 554, 1015, 2391});
+}
+
+// The claims and the windows' proof read the options' cost, so run() refuses bend_router with
+// another metric or bend cost (since 2026-12-05), with the scale and without.
+TEST(ExactGaps, BendRouterMustMatchTheOptionsCost) {
+  const RandomLayout L = random_layout(950001);
+  BendRun b = bend_run(L, 1);  // Combined, C 1
+  for (const bool exact : {true, false}) {
+    b.options.exact_gaps = exact;
+    {
+      router::NetRouter nr(b.covered.domain, b.covered.obstacles, L.nets, b.rules, b.options);
+      EXPECT_NO_THROW(nr.run(b.route));
+    }
+    router::NetRouter other_cost(b.covered.domain, b.covered.obstacles, L.nets, b.rules, b.options);
+    EXPECT_THROW(other_cost.run(router::NetRouter::bend_router(router::BendMetric::Combined, 7)), std::invalid_argument);
+    router::NetRouter other_metric(b.covered.domain, b.covered.obstacles, L.nets, b.rules, b.options);
+    EXPECT_THROW(other_metric.run(router::NetRouter::bend_router(router::BendMetric::Link, 1)), std::invalid_argument);
+  }
 }
 
 // Under Combined, the bend cost is weighed like the scaled lengths: a net alone with rules that
