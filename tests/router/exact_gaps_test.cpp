@@ -662,7 +662,7 @@ TEST(ExactGaps, ClaimsStandAfterTightening) {
               static_cast<long long>(t.kept), static_cast<long long>(t.scaled));
   EXPECT_GT(t.scaled, 0);
   EXPECT_EQ(t.failed, 0);
-  EXPECT_GT(t.claims, static_cast<std::int64_t>(seeds.size()));  // (838 over 604 layouts, 40 over 24 sanitized)
+  EXPECT_GT(t.claims, static_cast<std::int64_t>(seeds.size()));  // (825 over 604 layouts)
   EXPECT_GT(t.withdrawn + no_withdrawal, 0);
   EXPECT_GT(t.moved, 0);
   EXPECT_GT(t.kept, 0);
