@@ -52,15 +52,6 @@ std::int64_t l1_length(const Lines& wires) {
   return n;
 }
 bool two_point_pins(const NetPins& n) { return n.pins.size() == 2 && is_point_pin(n.pins[0]) && is_point_pin(n.pins[1]); }
-// The octilinear length a + b sqrt2 of wires whose segments are axis-parallel or diagonal (of
-// any segment, its octilinear distance).
-geom::Root2 oct_length(const Lines& wires) {
-  geom::Root2 n{0, 0};
-  for (const auto& w : wires)
-    for (std::size_t i = 0; i + 1 < w.size(); ++i)
-      n = n + geom::octilinear_length(std::int64_t{w[i + 1].x} - w[i].x, std::int64_t{w[i + 1].y} - w[i].y);
-  return n;
-}
 
 std::string net_list(std::span<const std::size_t> nets, const std::function<std::string(std::size_t)>& name) {
   std::string s;
@@ -809,6 +800,19 @@ bool octilinear_edges(std::span<const Polygon> obstacles, std::span<const NetPin
   return true;
 }
 
+// NetRouter::scale(): gap_scale when exact_gaps applies, kept low enough that the bend cost
+// times it stays within BendRouter's 2^31 under Combined; 1 when that leaves none of at least 8.
+std::int64_t router_scale(const Box& domain, std::span<const Polygon> obstacles, std::span<const NetPins> nets,
+                          const NetRules& rules, const NetRouterOptions& options) {
+  if (!options.exact_gaps || !octilinear_edges(obstacles, nets)) return 1;
+  std::int64_t k = gap_scale(domain, rules);
+  if (options.cost == NetRouterOptions::Cost::Combined)
+    while (k > 1 && options.bend_cost > 0 && options.bend_cost > (std::int64_t{1} << 31) / k) k /= 2;
+  return k >= 8 ? k : 1;
+}
+
+}  // namespace
+
 Point scaled(Point p, std::int64_t k) {
   return Point{static_cast<geom::Coord>(p.x * k), static_cast<geom::Coord>(p.y * k)};
 }
@@ -842,26 +846,21 @@ NetRules with_scale(NetRules r, std::int64_t k) {
   return r;
 }
 
-// The nearest multiple of k (halves round away from zero; try_net counts a wire with a vertex
-// k/4 or more from its multiple, NetRouterStats::snap_far, so halves never pass unnoticed).
+// (try_net counts a wire with a vertex k/4 or more from its multiple, NetRouterStats::snap_far,
+// so halves never pass unnoticed.)
 geom::Coord snapped(geom::Coord v, std::int64_t k) {
   const std::int64_t x = v, h = k / 2;
   const std::int64_t q = x >= 0 ? (x + h) / k : -((-x + h) / k);
   return static_cast<geom::Coord>(q * k);
 }
 
-// NetRouter::scale(): gap_scale when exact_gaps applies, kept low enough that the bend cost
-// times it stays within BendRouter's 2^31 under Combined; 1 when that leaves none of at least 8.
-std::int64_t router_scale(const Box& domain, std::span<const Polygon> obstacles, std::span<const NetPins> nets,
-                          const NetRules& rules, const NetRouterOptions& options) {
-  if (!options.exact_gaps || !octilinear_edges(obstacles, nets)) return 1;
-  std::int64_t k = gap_scale(domain, rules);
-  if (options.cost == NetRouterOptions::Cost::Combined)
-    while (k > 1 && options.bend_cost > 0 && options.bend_cost > (std::int64_t{1} << 31) / k) k /= 2;
-  return k >= 8 ? k : 1;
+geom::Root2 oct_length(const Lines& wires) {
+  geom::Root2 n{0, 0};
+  for (const auto& w : wires)
+    for (std::size_t i = 0; i + 1 < w.size(); ++i)
+      n = n + geom::octilinear_length(std::int64_t{w[i + 1].x} - w[i].x, std::int64_t{w[i + 1].y} - w[i].y);
+  return n;
 }
-
-}  // namespace
 
 NetRouter::NetRouter(const geom::Box& domain, std::span<const geom::Polygon> obstacles, std::vector<NetPins> nets,
                      NetRules rules, NetRouterOptions options)
@@ -1647,7 +1646,7 @@ void NetRouter::run(const NetRouteFn& route) {
       if (!o.shortest) continue;
       hits.clear();
       gone.query(bgi::intersects(claims_[i].window), std::back_inserter(hits));
-      const std::int64_t kr = claimed_cost(i, o.wires);  // (still in the scaled plane)
+      const std::int64_t kr = claimed_cost(o.wires);  // (still in the scaled plane)
       for (const auto& [box, k] : hits)
         if (k >= claims_[i].since && removed_[k].second != i && may_open(i, kr, box)) o.shortest = false;
       if (o.shortest) ++stats_.shortest;
@@ -1671,10 +1670,10 @@ void NetRouter::run(const NetRouteFn& route) {
 // B themselves, and a box is no farther than its shape), so if it missed every removed piece it
 // was free when the claim was made, and then the distance S there had K R >= S + K, which the
 // claim excludes.
-std::int64_t NetRouter::claimed_cost(std::size_t, const Lines& scaled_wires) const {
-  std::int64_t cost = l1_length(scaled_wires);
+std::int64_t NetRouter::claimed_cost(const Lines& wires) const {
+  std::int64_t cost = l1_length(wires);
   if (options_.cost == NetRouterOptions::Cost::Combined)
-    for (const auto& w : scaled_wires) cost += options_.bend_cost * geom::count_bends(w);
+    for (const auto& w : wires) cost += options_.bend_cost * geom::count_bends(w);
   return cost;
 }
 
@@ -1708,7 +1707,7 @@ std::size_t NetRouter::withdraw_claims(std::size_t j, const std::vector<std::vec
   for (std::size_t i = 0; i < out_.size(); ++i) {
     NetOutcome& o = out_[i];
     if (i == j || !o.shortest) continue;
-    const std::int64_t kr = claimed_cost(i, scaled_wires(o.wires, scale_));
+    const std::int64_t kr = claimed_cost(scaled_wires(o.wires, scale_));
     if (std::none_of(gone.begin(), gone.end(), [&](const Box& b) { return may_open(i, kr, b); })) continue;
     o.shortest = false;
     --stats_.shortest;

@@ -221,6 +221,21 @@ struct NetPins {
   std::int64_t scale = 1;
 };
 
+// The scaled plane of NetRouterOptions::exact_gaps (NetRouter::scale() K) and back: every
+// coordinate times K (NetPins::scale and NetRules::scale set to K); snapped(v, K) is the multiple
+// of K nearest v (halves away from zero).
+geom::Point scaled(geom::Point p, std::int64_t k);
+geom::Polygon scaled(const geom::Polygon& poly, std::int64_t k);
+std::vector<geom::Polygon> scaled(std::span<const geom::Polygon> polys, std::int64_t k);
+std::vector<NetPins> scaled(std::vector<NetPins> nets, std::int64_t k);
+std::vector<std::vector<geom::Point>> scaled_wires(std::vector<std::vector<geom::Point>> wires, std::int64_t k);
+NetRules with_scale(NetRules r, std::int64_t k);
+geom::Coord snapped(geom::Coord v, std::int64_t k);
+
+// The octilinear length a + b sqrt2 of wires whose segments are axis-parallel or diagonal (of
+// any segment, its octilinear distance).
+geom::Root2 oct_length(const std::vector<std::vector<geom::Point>>& wires);
+
 // What a net may be routed among (NetSpace::obstacles).
 enum class NetSpaceLevel {
   Plain,      // the blockages only, no clearance (why a net fails when it fails even there)
@@ -736,7 +751,7 @@ class NetRouter {
   bool covers_pins_ = false;      // NetRules::cover_pieces > 0
   // Net i's claimed cost (scaled): the L1 length of its wires, or with Combined the length +
   // bend_cost x bends; a cheaper wire lies within the cost less K of its pins (may_open).
-  std::int64_t claimed_cost(std::size_t i, const std::vector<std::vector<geom::Point>>& scaled_wires) const;
+  std::int64_t claimed_cost(const std::vector<std::vector<geom::Point>>& wires) const;
   bool may_open(std::size_t i, std::int64_t kr, const geom::Box& b) const;
   // The boxes of the wires of every net whose rips were counted without its wires changing (a
   // rip-up undone), since run() began.

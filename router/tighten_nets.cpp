@@ -545,14 +545,9 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
 }
 
 std::pair<geom::Root2, std::int64_t> length_and_bends(const NetLines& wires) {
-  geom::Root2 n{0, 0};
   std::int64_t bends = 0;
-  for (const auto& w : wires) {
-    for (std::size_t j = 0; j + 1 < w.size(); ++j)
-      n = n + geom::octilinear_length(std::int64_t{w[j + 1].x} - w[j].x, std::int64_t{w[j + 1].y} - w[j].y);
-    bends += geom::count_bends(w);
-  }
-  return {n, bends};
+  for (const auto& w : wires) bends += geom::count_bends(w);
+  return {oct_length(wires), bends};
 }
 
 std::optional<std::vector<NetLines>> tighten_scaled(const geom::Box& domain, std::span<const Polygon> obstacles,
@@ -560,32 +555,19 @@ std::optional<std::vector<NetLines>> tighten_scaled(const geom::Box& domain, std
                                                     const std::vector<NetLines>& wires, std::span<const NetsTightener::Input> kind,
                                                     const NetsTightenOptions& options, NetsTightenStats* stats) {
   if (k <= 1) throw std::invalid_argument("tighten_scaled: the scale must be above 1");
-  auto up = [k](Point p) { return Point{static_cast<geom::Coord>(p.x * k), static_cast<geom::Coord>(p.y * k)}; };
-  auto up_polygon = [&](Polygon& poly) {
-    for (Point& v : poly.outer) v = up(v);
-    for (geom::Ring& h : poly.holes)
-      for (Point& v : h) v = up(v);
-  };
-  std::vector<Polygon> obs(obstacles.begin(), obstacles.end());
-  for (Polygon& poly : obs) up_polygon(poly);
-  for (NetPins& np : nets) {
-    for (Polygon& pin : np.pins) up_polygon(pin);
-    np.scale = k;
-  }
-  rules.scale = k;
-  NetSpace space(Box{up(domain.lo), up(domain.hi)}, obs, std::move(nets), rules);
-  std::vector<NetLines> kw = wires;
-  for (auto& net_wires : kw)
-    for (auto& w : net_wires)
-      for (Point& v : w) v = up(v);
+  NetSpace space(Box{scaled(domain.lo, k), scaled(domain.hi, k)}, scaled(obstacles, k), scaled(std::move(nets), k),
+                 with_scale(rules, k));
+  std::vector<NetLines> kw;
+  kw.reserve(wires.size());
+  for (const NetLines& w : wires) kw.push_back(scaled_wires(w, k));
   NetsTightener nt(space, options);
   (void)nt.run(kw, kind);
   if (stats) *stats = nt.stats();
   bool far = false;
-  auto down = [&](std::int64_t v) {
-    const std::int64_t q = (v >= 0 ? v + k / 2 : v - k / 2) / k;  // the nearest multiple, halves away from 0
-    far = far || std::abs(v - q * k) * 4 >= k;
-    return static_cast<geom::Coord>(q);
+  auto down = [&](geom::Coord v) {
+    const geom::Coord q = snapped(v, k);
+    far = far || std::abs(std::int64_t{v} - q) * 4 >= k;
+    return static_cast<geom::Coord>(q / k);
   };
   std::vector<NetLines> back(kw.size());
   for (std::size_t i = 0; i < kw.size(); ++i)
@@ -600,8 +582,7 @@ std::optional<std::vector<NetLines>> tighten_scaled(const geom::Box& domain, std
     }
   if (far) return std::nullopt;
   for (std::size_t i = 0; i < wires.size(); ++i)
-    if (!wires[i].empty() && (back[i].empty() || length_and_bends(wires[i]).first < length_and_bends(back[i]).first))
-      return std::nullopt;
+    if (!wires[i].empty() && (back[i].empty() || oct_length(wires[i]) < oct_length(back[i]))) return std::nullopt;
   return back;
 }
 

@@ -794,7 +794,6 @@ void add_route(CLI::App& app, int& status) {
         // and pins, round after round until no wire shortens; loop sketches join in.
         router::NetRules rules;
         if (layout->rules) rules = {layout->rules->wire_width, layout->rules->spacing};
-        router::NetSpace ts(net_domain, norm.obstacles, net_pins(*layout), rules);
         std::vector<router::NetLines> wires(layout->nets.size());
         using Input = router::NetsTightener::Input;
         std::vector<Input> kind(layout->nets.size(), Input::Wires);
@@ -842,6 +841,7 @@ void add_route(CLI::App& app, int& status) {
           }
         }
         if (tighten_scale == 1) {
+          router::NetSpace ts(net_domain, norm.obstacles, net_pins(*layout), rules);
           router::NetsTightener nt(ts, o);
           (void)nt.run(wires, kind);
           tighten_stats = nt.stats();

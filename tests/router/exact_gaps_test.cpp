@@ -582,7 +582,6 @@ void judge_tightened_claims(const RandomLayout& L, bool octilinear, const std::s
   std::int64_t routed_claims = 0;
   if (!no_withdrawal) t.failed += broken_claims(nr, opt.octilinear, at + " (after routing)", routed_claims);
   // tightened together as taut route --tighten does
-  router::NetSpace ts(L.norm.domain, L.norm.obstacles, L.nets, L.rules);
   std::vector<router::NetLines> wires(L.nets.size());
   for (std::size_t i = 0; i < L.nets.size(); ++i)
     if (nr.outcomes()[i].routed) wires[i] = nr.outcomes()[i].wires;
@@ -596,6 +595,7 @@ void judge_tightened_claims(const RandomLayout& L, bool octilinear, const std::s
     t.kept += kst.kept;
     ++t.scaled;
   } else {
+    router::NetSpace ts(L.norm.domain, L.norm.obstacles, L.nets, L.rules);
     router::NetsTightener nt(ts, o);
     (void)nt.run(wires);
     t.kept += nt.stats().kept;
@@ -606,29 +606,10 @@ void judge_tightened_claims(const RandomLayout& L, bool octilinear, const std::s
       if (!no_withdrawal) t.withdrawn += static_cast<std::int64_t>(nr.withdraw_claims(i, nr.outcomes()[i].wires));
     }
   // the final space, scaled
-  auto up = [k](Point p) { return Point{static_cast<geom::Coord>(p.x * k), static_cast<geom::Coord>(p.y * k)}; };
-  std::vector<Polygon> obstacles = L.norm.obstacles;
-  for (Polygon& poly : obstacles) {
-    for (Point& v : poly.outer) v = up(v);
-    for (geom::Ring& h : poly.holes)
-      for (Point& v : h) v = up(v);
-  }
-  std::vector<router::NetPins> nets = L.nets;
-  for (router::NetPins& np : nets) {
-    for (Polygon& pin : np.pins)
-      for (Point& v : pin.outer) v = up(v);
-    np.scale = k;
-  }
-  router::NetRules rules = L.rules;
-  rules.scale = k;
-  router::NetSpace fin(geom::Box{up(L.norm.domain.lo), up(L.norm.domain.hi)}, obstacles, nets, rules);
-  std::vector<router::NetLines> up_wires = wires;
-  for (std::size_t i = 0; i < nets.size(); ++i) {
-    for (auto& w : up_wires[i])
-      for (Point& v : w) v = up(v);
-    fin.set_wires(i, up_wires[i]);
-  }
-  for (std::size_t i = 0; i < nets.size(); ++i) {
+  router::NetSpace fin(geom::Box{router::scaled(L.norm.domain.lo, k), router::scaled(L.norm.domain.hi, k)},
+                       router::scaled(L.norm.obstacles, k), router::scaled(L.nets, k), router::with_scale(L.rules, k));
+  for (std::size_t i = 0; i < L.nets.size(); ++i) fin.set_wires(i, router::scaled_wires(wires[i], k));
+  for (std::size_t i = 0; i < L.nets.size(); ++i) {
     if (!nr.outcomes()[i].shortest) continue;
     ++t.claims;
     router::NetOutcome now;
