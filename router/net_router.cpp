@@ -862,6 +862,11 @@ geom::Root2 oct_length(const Lines& wires) {
   return n;
 }
 
+std::int64_t exact_gaps_scale(const Box& domain, std::span<const Polygon> obstacles, std::span<const NetPins> nets,
+                              const NetRules& rules) {
+  return octilinear_edges(obstacles, nets) ? gap_scale(domain, rules) : 1;
+}
+
 NetRouter::NetRouter(const geom::Box& domain, std::span<const geom::Polygon> obstacles, std::vector<NetPins> nets,
                      NetRules rules, NetRouterOptions options)
     : scale_(router_scale(domain, obstacles, nets, rules, options)),

@@ -231,6 +231,11 @@ std::vector<NetPins> scaled(std::vector<NetPins> nets, std::int64_t k);
 std::vector<std::vector<geom::Point>> scaled_wires(std::vector<std::vector<geom::Point>> wires, std::int64_t k);
 NetRules with_scale(NetRules r, std::int64_t k);
 geom::Coord snapped(geom::Coord v, std::int64_t k);
+// The scale NetRouterOptions::exact_gaps takes for a layout (before any bend-cost cap): the
+// largest power of two K <= 2^13 that keeps K (the domain's reach + both clearances) <= 2^29, when
+// every edge of the blockages and shape pins is at a multiple of 45 degrees and K >= 8; else 1.
+std::int64_t exact_gaps_scale(const geom::Box& domain, std::span<const geom::Polygon> obstacles,
+                              std::span<const NetPins> nets, const NetRules& rules);
 
 // The octilinear length a + b sqrt2 of wires whose segments are axis-parallel or diagonal (of
 // any segment, its octilinear distance).

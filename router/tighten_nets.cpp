@@ -289,8 +289,9 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
   if (wires.size() != n) throw std::invalid_argument("NetsTightener::run: one entry of wires per net");
   // Sketch nets' lines are not metal: a sketch may run along itself (a spiral winding twice round
   // a core, and its taut wire too), so they are never cut, joined or cleared of overlaps.
-  auto is_sketch = [&](std::size_t i) { return i < kind.size() && kind[i] != Input::Wires; };
+  auto is_sketch = [&](std::size_t i) { return i < kind.size() && (kind[i] == Input::Sketch || kind[i] == Input::TautSketch); };
   auto as_drawn = [&](std::size_t i) { return i < kind.size() && kind[i] == Input::Sketch; };
+  auto checked = [&](std::size_t i) { return as_drawn(i) || (i < kind.size() && kind[i] == Input::CheckedWires); };
   stats_ = {};
   std::vector<NetTightenOutcome> out(n);
   std::vector<std::vector<char>> frozen(n);
@@ -374,11 +375,12 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
   };
   std::vector<std::vector<char>> fresh(n);  // sketch pieces no result has replaced yet
   for (std::size_t i = 0; i < n; ++i) {
-    if (!as_drawn(i) || wires[i].empty()) continue;
-    fresh[i].assign(wires[i].size(), 1);
+    if (!checked(i) || wires[i].empty()) continue;
+    if (as_drawn(i)) fresh[i].assign(wires[i].size(), 1);
     NetTightenOutcome& o = out[i];
     for (std::size_t k = 0; k < wires[i].size() && o.status == NetTightenOutcome::Status::Ok; ++k) {
       const std::vector<Point>& line = wires[i][k];
+      if (line.size() < 2 && !as_drawn(i)) continue;  // a wire of one point (pins that meet): nothing to lift
       std::size_t seg = 0;
       Point where{};
       const TightenStatus st = lift_now(i, line, &seg, &where);
@@ -553,7 +555,8 @@ std::pair<geom::Root2, std::int64_t> length_and_bends(const NetLines& wires) {
 std::optional<std::vector<NetLines>> tighten_scaled(const geom::Box& domain, std::span<const Polygon> obstacles,
                                                     std::vector<NetPins> nets, NetRules rules, std::int64_t k,
                                                     const std::vector<NetLines>& wires, std::span<const NetsTightener::Input> kind,
-                                                    const NetsTightenOptions& options, NetsTightenStats* stats) {
+                                                    const NetsTightenOptions& options, NetsTightenStats* stats,
+                                                    std::vector<NetTightenOutcome>* outcomes) {
   if (k <= 1) throw std::invalid_argument("tighten_scaled: the scale must be above 1");
   NetSpace space(Box{scaled(domain.lo, k), scaled(domain.hi, k)}, scaled(obstacles, k), scaled(std::move(nets), k),
                  with_scale(rules, k));
@@ -561,8 +564,9 @@ std::optional<std::vector<NetLines>> tighten_scaled(const geom::Box& domain, std
   kw.reserve(wires.size());
   for (const NetLines& w : wires) kw.push_back(scaled_wires(w, k));
   NetsTightener nt(space, options);
-  (void)nt.run(kw, kind);
+  std::vector<NetTightenOutcome> out = nt.run(kw, kind);
   if (stats) *stats = nt.stats();
+
   bool far = false;
   auto down = [&](geom::Coord v) {
     const geom::Coord q = snapped(v, k);
@@ -580,9 +584,22 @@ std::optional<std::vector<NetLines>> tighten_scaled(const geom::Box& domain, std
       if (s.size() == 1 && w.size() > 1) s.push_back(s[0]);
       back[i].push_back(std::move(s));
     }
+  if (outcomes) {  // the lengths and bends of the wires given and of the snapped ones (the taut length scaled down)
+    for (std::size_t i = 0; i < out.size(); ++i) {
+      NetTightenOutcome& o = out[i];
+      o.length_taut /= static_cast<double>(k);
+      o.length_before = o.length_after = 0;
+      o.bends_after = 0;
+      for (const auto& w : wires[i]) o.length_before += euclidean_length(w);
+      for (const auto& w : back[i]) o.length_after += euclidean_length(w), o.bends_after += geom::count_bends(w);
+    }
+    *outcomes = std::move(out);
+  }
   if (far) return std::nullopt;
   for (std::size_t i = 0; i < wires.size(); ++i)
-    if (!wires[i].empty() && (back[i].empty() || oct_length(wires[i]) < oct_length(back[i]))) return std::nullopt;
+    if (!wires[i].empty() && !(i < kind.size() && kind[i] == NetsTightener::Input::Sketch) &&
+        (back[i].empty() || oct_length(wires[i]) < oct_length(back[i])))
+      return std::nullopt;
   return back;
 }
 

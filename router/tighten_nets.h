@@ -164,12 +164,14 @@ class NetsTightener {
   // each piece's first result is taken whatever it is, later ones when shorter (or as long with
   // fewer bends); their lines, and TautSketch ones, are never cut, joined or cleared of overlaps
   // (a sketch may run along itself, winding twice round a blockage), and their later results are
-  // taken the same way.
+  // taken the same way. The nets of kind CheckedWires are wires as Wires are, checked in round 0
+  // as sketches are (wires read from a file, which may not keep the clearance).
   // kind[i] (default Wires for every net): what net i's lines are.
   enum class Input : char {
-    Wires,       // a router's wires (cut at joints, joined; moves no longer and with no more bends)
-    Sketch,      // sketches as drawn (checked in round 0, first results taken whatever they are)
-    TautSketch,  // sketches already tightened (e.g. by the net router): never cut or joined
+    Wires,         // a router's wires (cut at joints, joined; moves no longer and with no more bends)
+    Sketch,        // sketches as drawn (checked in round 0, first results taken whatever they are)
+    TautSketch,    // sketches already tightened (e.g. by the net router): never cut or joined
+    CheckedWires,  // wires (as Wires) whose pieces are checked in round 0 (as Sketch: taut tighten's routed wires)
   };
   std::vector<NetTightenOutcome> run(std::vector<NetLines>& wires, std::span<const Input> kind = {});
   const NetsTightenStats& stats() const { return stats_; }
@@ -191,17 +193,21 @@ NetLines cut_at_joints(const NetLines& wires, std::span<const geom::Polygon> pin
 // Deterministic (in input order).
 NetLines join_at_twos(const NetLines& wires, std::span<const geom::Polygon> pins = {});
 
-// The nets' routed wires (layout units) tightened together (NetsTightener) in the net router's
-// plane scaled by k > 1 (NetRouter::scale: the domain, blockages and pins times k, the rules'
-// scale k, so gaps of exactly the clearance are open, net_router.h), then every vertex snapped
-// back to the nearest multiple of k (halves away from zero) and divided by it. nullopt when a
-// vertex lay k/4 or more from its multiple, or a routed net's wires came back empty or longer
-// (octilinear length, exactly). The caller checks the result with its rules (taut route:
-// router::check_routes) before it takes it; `stats`: the tightening's.
+// The nets' wires (layout units) tightened together (NetsTightener) in the net router's plane
+// scaled by k > 1 (NetRouter::scale, exact_gaps_scale: the domain, blockages and pins times k, the
+// rules' scale k, so gaps of exactly the clearance are open, net_router.h), then every vertex
+// snapped back to the nearest multiple of k (halves away from zero) and divided by it. nullopt
+// when a vertex lay k/4 or more from its multiple, or a net's wires (other than a sketch's as
+// drawn, Input::Sketch, which may come back longer in a set's metric) came back empty or longer
+// (octilinear length, exactly). The caller checks the result with its rules (router::check_routes)
+// before it takes it. `stats`: the tightening's; `outcomes`: its per-net outcomes, with the
+// lengths in layout units (divided by k) and every point (pieces, lift.where) still in the
+// scaled plane.
 std::optional<std::vector<NetLines>> tighten_scaled(const geom::Box& domain, std::span<const geom::Polygon> obstacles,
                                                     std::vector<NetPins> nets, NetRules rules, std::int64_t k,
                                                     const std::vector<NetLines>& wires, std::span<const NetsTightener::Input> kind,
-                                                    const NetsTightenOptions& options, NetsTightenStats* stats = nullptr);
+                                                    const NetsTightenOptions& options, NetsTightenStats* stats = nullptr,
+                                                    std::vector<NetTightenOutcome>* outcomes = nullptr);
 
 // The octilinear length a + b sqrt2 and the bends of a net's wires (segments at 0, 45 or 90
 // degrees measured exactly, others by their octilinear distance).

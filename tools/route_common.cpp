@@ -184,4 +184,22 @@ std::string no_staircase_reason(const std::string& orientations) {
          "); --orientations any writes it";
 }
 
+std::vector<router::CheckProblem> wire_problems(const io::Layout& layout, const geom::Box& domain,
+                                                const std::vector<geom::Polygon>& obstacles,
+                                                const std::vector<router::NetLines>& wires) {
+  geom::NormalizedObstacles space;
+  space.domain = domain;
+  space.obstacles = obstacles;
+  std::vector<router::CheckNet> nets;
+  for (std::size_t i = 0; i < layout.nets.size(); ++i) {
+    router::CheckNet c = check_net(layout.nets[i]);
+    c.routed = !wires[i].empty();
+    for (const auto& w : wires[i]) c.wires.push_back({w, 0});
+    nets.push_back(std::move(c));
+  }
+  router::CheckRules rules;
+  if (layout.rules) rules = {layout.rules->wire_width, layout.rules->spacing};
+  return router::check_routes(space, nets, rules).problems;
+}
+
 }  // namespace taut::cli

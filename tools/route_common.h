@@ -89,6 +89,13 @@ std::vector<router::NetPins> net_pins(const io::Layout& layout);
 // A net as the independent checker takes it (router/check.h): its name, line and pins, no wires.
 router::CheckNet check_net(const io::Net& net);
 
+// The problems router::check_routes finds in the nets' wires (one entry per net of the layout, in
+// its order; a net with none is not routed), with the clearance of <rules>, among `obstacles` (the
+// layout's blockages as routed among) in `domain`.
+std::vector<router::CheckProblem> wire_problems(const io::Layout& layout, const geom::Box& domain,
+                                                const std::vector<geom::Polygon>& obstacles,
+                                                const std::vector<router::NetLines>& wires);
+
 // The reason written for a net with no lattice staircase in its class (TIGHTEN-0004).
 std::string no_staircase_reason(const std::string& orientations);
 

@@ -16,6 +16,7 @@
 // and in a lattice direction set also its minimum-link path in those directions (router/c_minlink.h,
 // section 6.3, open wires only); they are not written as wires (FORMAT.md coordinates are
 // integers, and these bends are rationals).
+#include <algorithm>
 #include <chrono>
 #include <optional>
 #include <cstdio>
@@ -104,6 +105,29 @@ std::string fixed3(double v) {
   return buf;
 }
 
+// Where a piece of a net's input lines (routed wires are cut at their joints before they are
+// tightened) fails, said of the lines as written: the input line that holds the piece's failing
+// segment, and the lift with that line's segment; a piece that fails at its start, where the line
+// does not start (a joint), is said to leave free space on the line's segment there, at or after
+// that point.
+std::pair<std::size_t, router::Tightened> said_of(const std::vector<std::vector<geom::Point>>& given,
+                                                  std::span<const geom::Point> piece, const router::Tightened& r) {
+  const std::size_t seg = r.status == router::TightenStatus::StartNotFree ? 0 : r.segment;
+  const geom::Point a = piece[std::min(seg, piece.size() - 1)], b = piece[std::min(seg + 1, piece.size() - 1)];
+  for (std::size_t c = 0; c < given.size(); ++c)
+    for (std::size_t g = 0; g + 1 < given[c].size(); ++g)
+      if (geom::on_segment(a, given[c][g], given[c][g + 1]) && geom::on_segment(b, given[c][g], given[c][g + 1])) {
+        router::Tightened said = r;
+        said.segment = g;
+        if (r.status == router::TightenStatus::StartNotFree && piece.front() != given[c].front()) {
+          said.status = router::TightenStatus::LeavesFreeSpace;
+          said.where = piece.front();
+        }
+        return {c, said};
+      }
+  return {0, r};  // (not reached: every piece lies on its line)
+}
+
 }  // namespace
 
 void add_tighten(CLI::App& app, int& status) {
@@ -186,6 +210,7 @@ void add_tighten(CLI::App& app, int& status) {
       std::string source;
     };
     std::vector<Input> inputs(layout->nets.size());
+    const std::vector<router::NetPins> all_pins = net_pins(*layout);
     std::vector<geom::Point> extra;
     for (std::size_t i = 0; i < layout->nets.size(); ++i) {
       const io::Net& net = layout->nets[i];
@@ -247,6 +272,10 @@ void add_tighten(CLI::App& app, int& status) {
     std::vector<router::NetLines> together(layout->nets.size());
     std::vector<router::NetTightenOutcome> together_out;
     std::optional<router::NetsTightenStats> together_stats;
+    std::int64_t together_scale = 1;  // the plane's scale --clearance tightened in (1: the layout's units)
+    // per net: its input is not in its space as given in the scaled plane (all, when that did not
+    // run): only those are refused (TIGHTEN-0001) when the layout's units refuse more
+    std::vector<char> scaled_refused(layout->nets.size(), 1);
     std::unique_ptr<router::NetSpace> net_space;
     if (args->clearance) {
       router::NetRules rules{width, spacing};
@@ -266,10 +295,49 @@ void add_tighten(CLI::App& app, int& status) {
       for (std::size_t i = 0; i < layout->nets.size(); ++i) together[i] = inputs[i].lines;
       router::NetsTightenOptions o;
       o.orientations = tighten_orientations(orientations);
-      router::NetsTightener nt(*net_space, o);
-      together_out = nt.run(together, std::vector<router::NetsTightener::Input>(layout->nets.size(),
-                                                                              router::NetsTightener::Input::Sketch));
-      together_stats = nt.stats();
+      // (routed wires read from the file are wires: cut at their joints, so a tree stays joined,
+      // and checked as given, as sketches are; since 2026-12-05, before which they were taken as
+      // sketches, whose lines are tightened one by one, and a branch could be left behind)
+      std::vector<router::NetsTightener::Input> kind(layout->nets.size(), router::NetsTightener::Input::Sketch);
+      for (std::size_t i = 0; i < layout->nets.size(); ++i)
+        if (inputs[i].source == "wires") kind[i] = router::NetsTightener::Input::CheckedWires;
+      // First in the plane scaled as the net router's exact gaps scale it (since 2026-12-05), where
+      // a gap of exactly the clearance is open (net_router.h): a sketch or wire through one is
+      // free there, and pulled taut. Snapped back (router::tighten_scaled), the result is taken
+      // when no vertex lay a quarter of the scale or more from its multiple, no net's input failed
+      // or was left untightened there, and router::check_routes finds no wire leaving free space
+      // or coming within the clearance; else everything is tightened in the layout's units, where
+      // such a gap is closed.
+      const std::int64_t k = router::exact_gaps_scale(domain, plain.obstacles, all_pins, rules);
+      if (k > 1) {
+        router::NetsTightenStats kst;
+        std::vector<router::NetTightenOutcome> kout;
+        std::optional<std::vector<router::NetLines>> back =
+            router::tighten_scaled(domain, plain.obstacles, all_pins, rules, k, together, kind, o, &kst, &kout);
+        for (std::size_t i = 0; i < kout.size(); ++i)
+          scaled_refused[i] = kout[i].status == router::NetTightenOutcome::Status::NotFree && kout[i].round == 0;
+        const bool clean = std::none_of(kout.begin(), kout.end(), [](const router::NetTightenOutcome& oc) {
+          return (oc.status == router::NetTightenOutcome::Status::NotFree && oc.round == 0) || oc.untightened;
+        });
+        auto geometric = [](const router::CheckProblem& p) {
+          using K = router::CheckProblem::Kind;
+          return p.kind == K::NotFree || p.kind == K::Short || p.kind == K::BlockageClearance || p.kind == K::NetClearance;
+        };
+        if (back && clean) {
+          const std::vector<router::CheckProblem> problems = wire_problems(*layout, domain, plain.obstacles, *back);
+          if (std::none_of(problems.begin(), problems.end(), geometric)) {
+            together = std::move(*back);
+            together_out = std::move(kout);
+            together_stats = kst;
+            together_scale = k;
+          }
+        }
+      }
+      if (together_scale == 1) {
+        router::NetsTightener nt(*net_space, o);
+        together_out = nt.run(together, kind);
+        together_stats = nt.stats();
+      }
     }
     const auto t1 = Clock::now();
 
@@ -279,6 +347,10 @@ void add_tighten(CLI::App& app, int& status) {
     routes.orientations = orientations;
     std::vector<Diagnostic> errors;
     std::vector<NetTightening> stats(layout->nets.size());
+    bool refused_somewhere = false;  // --clearance: a net's input is refused (TIGHTEN-0001) in both planes
+    for (std::size_t i = 0; i < together_out.size(); ++i)
+      refused_somewhere = refused_somewhere || (scaled_refused[i] && together_out[i].status == router::NetTightenOutcome::Status::NotFree &&
+                                                together_out[i].round == 0);
     std::size_t done = 0;
     for (std::size_t i = 0; i < layout->nets.size(); ++i) {
       const io::Net& net = layout->nets[i];
@@ -301,20 +373,29 @@ void add_tighten(CLI::App& app, int& status) {
       if (args->clearance) {
         using St = router::NetTightenOutcome::Status;
         const router::NetTightenOutcome& oc = together_out[i];
+        if (oc.status == St::NotFree && oc.round == 0 && !scaled_refused[i]) {
+          // legal as given (free in the scaled plane), but not in the layout's units, which close a
+          // gap of exactly the clearance; the scaled plane's result was not taken: another net was
+          // refused there (its error is said, and nothing is written), or it did not pass the check
+          if (refused_somewhere) continue;
+          route.status = "failed";
+          route.reason = "its " + std::string(in.source == "sketch" ? "sketch" : "wires") +
+                         " could not be tightened: it keeps exactly the clearance somewhere (a gap that only the scaled "
+                         "plane opens), and the scaled plane's result was not taken";
+          print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0011", layout->file, in.line_numbers[0], 0,
+                                        "net \"" + net.name + "\": " + *route.reason}},
+                            args->load.quiet);
+          routes.routes.push_back(std::move(route));
+          continue;
+        }
         if (oc.status == St::NotFree && oc.round == 0) {
           // the input is not in its net's space: the piece that failed, and the input line it is on
           const std::vector<geom::Point>& piece = together[i][oc.wire];
-          std::size_t k = 0;
-          for (std::size_t c = 0; c < in.lines.size(); ++c)
-            for (std::size_t v = 0; v + 1 < in.lines[c].size(); ++v)
-              if (piece.size() >= 2 && geom::on_segment(piece[0], in.lines[c][v], in.lines[c][v + 1]) &&
-                  geom::on_segment(piece[1], in.lines[c][v], in.lines[c][v + 1])) {
-                k = c;
-                goto found;
-              }
-        found:
+          // (a sketch is one line, tightened whole; routed wires were cut at their joints)
+          const auto [k, lift] = in.source == "wires" ? said_of(in.lines, piece, oc.lift) : std::pair{std::size_t{0}, oc.lift};
+          const std::vector<geom::Point>& line = in.lines[k];
           const std::string what = in.source == "sketch" ? "sketch" : "wire";
-          std::string text = WireTightener::failure_text(*layout, net.name, what, piece, oc.lift, grow);
+          std::string text = WireTightener::failure_text(*layout, net.name, what, line, lift, grow);
           if (!oc.wire_blockers.empty() || !oc.pin_blockers.empty()) {  // the other nets it comes near
             std::string others;
             for (const std::size_t j : oc.wire_blockers)
@@ -324,11 +405,11 @@ void add_tighten(CLI::App& app, int& status) {
             const std::string within = "within the clearance of " + others + " (w + s = " +
                                        std::to_string(net_space->net_clearance()) + " DBU)";
             text = "net \"" + net.name + "\": the " + what +
-                   (oc.lift.status == router::TightenStatus::StartNotFree
-                        ? " starts at " + point_text(piece.front()) + ", which lies " + within
-                        : "'s segment " + std::to_string(oc.lift.segment + 1) + " (" + point_text(piece[oc.lift.segment]) +
-                              " to " + point_text(piece[oc.lift.segment + 1]) + ") comes " + within + " at or after " +
-                              point_text(oc.lift.where)) +
+                   (lift.status == router::TightenStatus::StartNotFree
+                        ? " starts at " + point_text(line.front()) + ", which lies " + within
+                        : "'s segment " + std::to_string(lift.segment + 1) + " (" + point_text(line[lift.segment]) +
+                              " to " + point_text(line[lift.segment + 1]) + ") comes " + within + " at or after " +
+                              point_text(lift.where)) +
                    ": sketches of different nets must keep that apart, as they say which way each passes the other";
           }
           errors.push_back(Diagnostic{Severity::Error, "TIGHTEN-0001", layout->file, in.line_numbers[k], 0, text});
@@ -390,14 +471,51 @@ void add_tighten(CLI::App& app, int& status) {
           }
         }
       }
-      for (std::size_t k = 0; k < in.lines.size() && !args->clearance; ++k) {
-        const auto& line = in.lines[k];
+      // Without --clearance, routed wires are cut at their joints (their ends on one another, the
+      // pins: router::cut_at_joints), each piece is tightened alone between its fixed ends, and
+      // they are joined again where exactly two meet (router::join_at_twos), so a tree stays
+      // joined; a piece that touches a shape pin mid-segment only is kept as it is. (Before
+      // 2026-12-05 each line was tightened whole, and a branch that ended on another line's
+      // segment could be left behind.) A sketch is one line, tightened whole.
+      std::vector<std::vector<geom::Point>> lines = in.lines;
+      std::vector<int> numbers = in.line_numbers;
+      std::vector<std::size_t> origin(lines.size());  // the input line a piece is of
+      for (std::size_t k = 0; k < origin.size(); ++k) origin[k] = k;
+      std::vector<char> as_is(lines.size(), 0);
+      const bool wires_in = in.source == "wires" && !args->clearance;
+      if (wires_in) {
+        std::vector<geom::Polygon> joints = all_pins[i].pins;
+        for (const auto& l : in.lines)
+          if (!l.empty()) joints.push_back(geom::Polygon{{l.front()}, {}}), joints.push_back(geom::Polygon{{l.back()}, {}});
+        lines.clear(), numbers.clear(), origin.clear(), as_is.clear();
+        for (std::size_t k = 0; k < in.lines.size(); ++k) {
+          std::vector<char> frozen;
+          router::NetLines cut = router::cut_at_joints({in.lines[k]}, joints, &frozen);
+          for (std::size_t j = 0; j < cut.size(); ++j) {
+            lines.push_back(std::move(cut[j]));
+            numbers.push_back(in.line_numbers[k]);
+            origin.push_back(k);
+            as_is.push_back(frozen[j]);
+          }
+        }
+      }
+      for (std::size_t k = 0; k < lines.size() && !args->clearance; ++k) {
+        const auto& line = lines[k];
+        if (as_is[k] || std::all_of(line.begin(), line.end(), [&](geom::Point p) { return p == line.front(); })) {
+          st.before += router::euclidean_length(line);
+          st.after += router::euclidean_length(line);
+          st.taut += router::euclidean_length(line);
+          out_lines.push_back(line);
+          continue;
+        }
         WireTightener::Result res = wt.run(line);
         const router::Tightened& r = res.taut;
         if (r.status != router::TightenStatus::Ok) {
-          errors.push_back(Diagnostic{Severity::Error, "TIGHTEN-0001", layout->file, in.line_numbers[k], 0,
-                                      WireTightener::failure_text(*layout, net.name,
-                                                                  in.source == "sketch" ? "sketch" : "wire", line, r, grow)});
+          const auto [c, said] = wires_in ? said_of({in.lines[origin[k]]}, line, r) : std::pair{std::size_t{0}, r};
+          (void)c;
+          errors.push_back(Diagnostic{Severity::Error, "TIGHTEN-0001", layout->file, numbers[k], 0,
+                                      WireTightener::failure_text(*layout, net.name, in.source == "sketch" ? "sketch" : "wire",
+                                                                  wires_in ? in.lines[origin[k]] : line, said, grow)});
           ok = false;
           continue;
         }
@@ -413,7 +531,7 @@ void add_tighten(CLI::App& app, int& status) {
             st.add_min_link(*min_linker, r.points, res.loop, wt.triangulation(), min_link_set);
           } catch (const std::exception& e) {
             st.min_link_failed = true;
-            print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0008", layout->file, in.line_numbers[k], 0,
+            print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0008", layout->file, numbers[k], 0,
                                           "net \"" + net.name + "\": no minimum-link path was found (" + e.what() +
                                               "); its min_links is null"}},
                               args->load.quiet);
@@ -431,6 +549,12 @@ void add_tighten(CLI::App& app, int& status) {
         st.sleeve += r.sleeve;
         st.crossings += r.crossings;
         out_lines.push_back(std::move(pts));
+      }
+      if (wires_in && ok && !contractible && !no_staircase) {  // joined again; bends counted on the lines as given and written
+        out_lines = router::join_at_twos(out_lines, all_pins[i].pins);
+        st.bends_before = st.bends_after = 0;
+        for (const auto& l : in.lines) st.bends_before += io::count_bends(l);
+        for (const auto& l : out_lines) st.bends_after += io::count_bends(l);
       }
       if (!ok) continue;
       if (contractible) {
@@ -573,8 +697,10 @@ void add_tighten(CLI::App& app, int& status) {
                       {"triangles", wt.triangulation().triangles().size()},
                       {"seconds", {{"prepare", std::chrono::duration<double>(t1 - t0).count()},
                                    {"tighten", std::chrono::duration<double>(t2 - t1).count()}}}};
-      if (together_stats)
+      if (together_stats) {
         j["tighten"]["together"] = together_stats_json(*together_stats);
+        j["tighten"]["together"]["scale"] = together_scale;  // (since 2026-12-05)
+      }
       stats_text = j.dump(2) + "\n";
     }
     if (!write_output(args->out, xml) || (!args->svg.empty() && !write_output(args->svg, svg)) ||

@@ -669,6 +669,85 @@ TEST(Tighten, ClearanceFromBlockages) {
   EXPECT_EQ(read_text(dir + "/c.xml"), "old");
 }
 
+// --clearance in gaps of exactly the clearance (since 2026-12-05): a gap between two blockages of
+// exactly twice w/2 + s, and two nets' sketches exactly w + s apart, are legal (taut check passes
+// them), so they are tightened (in the net router's scaled plane, --stats tighten.together.scale
+// above 1), not refused; one DBU narrower they are refused (TIGHTEN-0001, nothing written).
+TEST(Tighten, ClearanceTakesGapsOfExactlyTheClearance) {
+  const std::string dir = temp_dir("tighten_exact_gaps");
+  // w 100, s 100: 150 from blockages, 200 between nets
+  auto body = [](int gap_right, int b_x) {
+    return "  <boundary x0=\"0\" y0=\"0\" x1=\"4000\" y1=\"4000\"/>\n"
+           "  <rules wire-width=\"100\" spacing=\"100\" orientations=\"rectilinear\"/>\n"
+           "  <blockage id=\"l\"><rect x0=\"0\" y0=\"1000\" x1=\"1000\" y1=\"3000\"/></blockage>\n"
+           "  <blockage id=\"r\"><rect x0=\"" + std::to_string(gap_right) + "\" y0=\"1000\" x1=\"2500\" y1=\"3000\"/></blockage>\n"
+           "  <net name=\"a\"><pin name=\"s\" x=\"1150\" y=\"400\"/><pin name=\"t\" x=\"1400\" y=\"3800\"/>\n"
+           "    <sketch points=\"1150,400 1150,3500 1400,3800\"/></net>\n"
+           "  <net name=\"b\"><pin name=\"s\" x=\"" + std::to_string(b_x) + "\" y=\"300\"/><pin name=\"t\" x=\"3900\" y=\"300\"/>\n"
+           "    <sketch points=\"" + std::to_string(b_x) + ",300 " + std::to_string(b_x) + ",700 3900,700 3900,300\"/></net>\n";
+  };
+  // b's sketch runs up x = 1350, exactly 200 right of a's (and its pin exactly 200 from a's pin);
+  // pulled taut, a runs up x = 1150 through the gap, b along y = 300
+  const std::string exact = layout_file("tighten_exact_gaps_in", body(1300, 1350));
+  const auto run = run_taut({"tighten", exact, "--clearance", "-o", dir + "/t.xml", "--stats", dir + "/t.json"});
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_GT(nlohmann::json::parse(read_text(dir + "/t.json"))["tighten"]["together"]["scale"].get<int>(), 1);
+  EXPECT_EQ(wires_of(dir + "/t.xml", "a"), (std::vector<Path>{{{1150, 400}, {1150, 3800}, {1400, 3800}}}));
+  EXPECT_EQ(wires_of(dir + "/t.xml", "b"), (std::vector<Path>{{{1350, 300}, {3900, 300}}}));
+  const auto chk = run_taut({"check", dir + "/t.xml"});
+  EXPECT_EQ(chk.status, 0) << chk.err;
+  // b's sketch truly too near blockage r (100 below it): b is refused, and only b (a, in the
+  // exact gap, is legal: the layout's units, where the whole is then tightened, would refuse it too)
+  std::string near = body(1300, 1350);
+  near.replace(near.find(",700 3900,700"), 13, ",900 3900,900");
+  write_text(dir + "/c.xml", "old");
+  const auto one = run_taut({"tighten", layout_file("tighten_exact_gaps_near", near), "--clearance", "-o", dir + "/c.xml"});
+  EXPECT_EQ(one.status, 2) << one.err;
+  EXPECT_NE(one.err.find("[TIGHTEN-0001] net \"b\""), std::string::npos) << one.err;
+  EXPECT_EQ(one.err.find("net \"a\""), std::string::npos) << one.err;
+  EXPECT_EQ(read_text(dir + "/c.xml"), "old");
+  // one DBU narrower: the gap, then the nets
+  for (const auto& [name, b] : {std::pair{std::string("gap"), body(1299, 1350)}, std::pair{std::string("nets"), body(1300, 1349)}}) {
+    SCOPED_TRACE(name);
+    write_text(dir + "/c.xml", "old");
+    const auto refused = run_taut({"tighten", layout_file("tighten_exact_gaps_" + name, b), "--clearance", "-o", dir + "/c.xml"});
+    EXPECT_EQ(refused.status, 2) << refused.err;
+    EXPECT_NE(refused.err.find("[TIGHTEN-0001]"), std::string::npos) << refused.err;
+    EXPECT_EQ(read_text(dir + "/c.xml"), "old");
+  }
+}
+
+// Routed trees stay joined (since 2026-12-05): `taut tighten`, with and without --clearance, on
+// the routed wires of generated layouts with nets of up to six pins cuts the wires at their
+// joints before it tightens them, so every net still joins its pins (`taut check`'s
+// connectivity), and with --clearance the whole check passes. Taken as sketches (each line
+// tightened whole), a branch that ended on another wire's segment was left behind: seeds 26, 32
+// and 35 failed the check so, with and without the flag.
+TEST(Tighten, RoutedTreesStayJoined) {
+  const std::string dir = temp_dir("tighten_trees");
+  for (const int seed : {26, 32, 35, 11, 16}) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const std::string in = dir + "/l" + std::to_string(seed) + ".xml", routed = dir + "/r" + std::to_string(seed) + ".xml";
+    ASSERT_EQ(run_taut({"gen", seed % 2 ? "rects" : "maze", "-o", in, "--size", "600", "--nets", "12", "--pins", "2-6",
+                        "--width", "10", "--spacing", "10", "--seed", std::to_string(seed)})
+                  .status,
+              0);
+    ASSERT_EQ(run_taut({"route", in, "-q", "-o", routed}).status, 0);
+    for (const bool clearance : {false, true}) {
+      SCOPED_TRACE(clearance ? "--clearance" : "plain");
+      std::vector<std::string> args{"tighten", routed, "-q", "-o", dir + "/t.xml"};
+      if (clearance) args.push_back("--clearance");
+      const auto t = run_taut(args);
+      ASSERT_EQ(t.status, 0) << t.err;
+      const auto chk = run_taut({"check", dir + "/t.xml", "--json"});
+      const nlohmann::json cj = nlohmann::json::parse(chk.out)["routes_check"];
+      EXPECT_EQ(cj["connectivity"], "ok") << chk.err;
+      EXPECT_EQ(cj["free_space"], "ok") << chk.err;
+      if (clearance) EXPECT_EQ(chk.status, 0) << chk.err;
+    }
+  }
+}
+
 // Together with the clearance (a review's cases): wind.xml's spiral, whose sketch and taut wire run
 // along themselves (twice round the core), stays one wire from pin to pin in its class, and every
 // net passes taut check, in all three orientations and through route --tighten (the guard ring is
