@@ -329,7 +329,9 @@ TEST(NetsTightener, ScaledPlaneTakesLegalSketchesInExactGaps) {
   EXPECT_EQ(t.failed, 0);
   EXPECT_GT(t.taken * 10, t.scaled * 9);  // the scaled plane's result is taken for nearly every layout
   EXPECT_GT(t.words, t.nets / 2);
-  if (n >= 100) EXPECT_GT(t.units_refused, 0);  // the layout's units refuse some legal wires, the scaled plane none
+  if (n >= 100) {
+    EXPECT_GT(t.units_refused, 0);  // the layout's units refuse some legal wires, the scaled plane none
+  }
 }
 
 }  // namespace tighten_nets_test
