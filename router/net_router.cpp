@@ -863,8 +863,8 @@ geom::Root2 oct_length(const Lines& wires) {
 }
 
 std::int64_t exact_gaps_scale(const Box& domain, std::span<const Polygon> obstacles, std::span<const NetPins> nets,
-                              const NetRules& rules) {
-  return octilinear_edges(obstacles, nets) ? gap_scale(domain, rules) : 1;
+                              const NetRules& rules, bool any_angle) {
+  return any_angle || octilinear_edges(obstacles, nets) ? gap_scale(domain, rules) : 1;
 }
 
 NetRouter::NetRouter(const geom::Box& domain, std::span<const geom::Polygon> obstacles, std::vector<NetPins> nets,

@@ -234,8 +234,11 @@ geom::Coord snapped(geom::Coord v, std::int64_t k);
 // The scale NetRouterOptions::exact_gaps takes for a layout (before any bend-cost cap): the
 // largest power of two K <= 2^13 that keeps K (the domain's reach + both clearances) <= 2^29, when
 // every edge of the blockages and shape pins is at a multiple of 45 degrees and K >= 8; else 1.
+// any_angle: whatever the edges' angles. (The scaled plane then opens the gaps of exactly the
+// clearance too, but is not exact: an L-infinity distance to a sloped edge may fall between its
+// units, so a wire it takes must still be checked in the layout's units.)
 std::int64_t exact_gaps_scale(const geom::Box& domain, std::span<const geom::Polygon> obstacles,
-                              std::span<const NetPins> nets, const NetRules& rules);
+                              std::span<const NetPins> nets, const NetRules& rules, bool any_angle = false);
 
 // The octilinear length a + b sqrt2 of wires whose segments are axis-parallel or diagonal (of
 // any segment, its octilinear distance).

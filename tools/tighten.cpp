@@ -308,14 +308,18 @@ void add_tighten(CLI::App& app, int& status) {
       // or was left untightened there, and router::check_routes finds no wire leaving free space
       // or coming within the clearance; else everything is tightened in the layout's units, where
       // such a gap is closed.
-      const std::int64_t k = router::exact_gaps_scale(domain, plain.obstacles, all_pins, rules);
+      // (On a layout with an edge at another angle than a multiple of 45 degrees the scaled plane
+      // is not exact, net_router.h: its result is still taken when the check passes it, but a net
+      // it takes as given and the layout's units refuse is then refused, TIGHTEN-0001.)
+      const std::int64_t k = router::exact_gaps_scale(domain, plain.obstacles, all_pins, rules, true);
+      const bool exact_plane = router::exact_gaps_scale(domain, plain.obstacles, all_pins, rules) > 1;
       if (k > 1) {
         router::NetsTightenStats kst;
         std::vector<router::NetTightenOutcome> kout;
         std::optional<std::vector<router::NetLines>> back =
             router::tighten_scaled(domain, plain.obstacles, all_pins, rules, k, together, kind, o, &kst, &kout);
         for (std::size_t i = 0; i < kout.size(); ++i)
-          scaled_refused[i] = kout[i].status == router::NetTightenOutcome::Status::NotFree && kout[i].round == 0;
+          scaled_refused[i] = !exact_plane || (kout[i].status == router::NetTightenOutcome::Status::NotFree && kout[i].round == 0);
         const bool clean = std::none_of(kout.begin(), kout.end(), [](const router::NetTightenOutcome& oc) {
           return (oc.status == router::NetTightenOutcome::Status::NotFree && oc.round == 0) || oc.untightened;
         });
@@ -326,6 +330,8 @@ void add_tighten(CLI::App& app, int& status) {
         if (back && clean) {
           const std::vector<router::CheckProblem> problems = wire_problems(*layout, domain, plain.obstacles, *back);
           if (std::none_of(problems.begin(), problems.end(), geometric)) {
+            // (the layout's units' space gets the wires too: --min-link works among them)
+            for (std::size_t i = 0; i < back->size(); ++i) net_space->set_wires(i, (*back)[i]);
             together = std::move(*back);
             together_out = std::move(kout);
             together_stats = kst;

@@ -722,7 +722,8 @@ TEST(Tighten, ClearanceTakesGapsOfExactlyTheClearance) {
 // joints before it tightens them, so every net still joins its pins (`taut check`'s
 // connectivity), and with --clearance the whole check passes. Taken as sketches (each line
 // tightened whole), a branch that ended on another wire's segment was left behind: seeds 26, 32
-// and 35 failed the check so, with and without the flag.
+// and 35 failed the check so, with and without the flag. Then octilinear layouts with sloped
+// blockages, tightened with --clearance in the scaled plane.
 TEST(Tighten, RoutedTreesStayJoined) {
   const std::string dir = temp_dir("tighten_trees");
   for (const int seed : {26, 32, 35, 11, 16}) {
@@ -746,6 +747,32 @@ TEST(Tighten, RoutedTreesStayJoined) {
       if (clearance) EXPECT_EQ(chk.status, 0) << chk.err;
     }
   }
+  // sloped blockages (octilinear): the scaled plane is used there too (not exact, so only a
+  // result the check passes is taken); seed 21's file failed the check before (a tree's branch)
+  int scaled = 0;
+  for (const int seed : {21, 9, 15}) {
+    SCOPED_TRACE("polygons seed " + std::to_string(seed));
+    const std::string in = dir + "/p" + std::to_string(seed) + ".xml", routed = dir + "/pr" + std::to_string(seed) + ".xml";
+    ASSERT_EQ(run_taut({"gen", "polygons", "-o", in, "--size", "800", "--nets", "20", "--pins", "2-4", "--width", "10",
+                        "--spacing", "10", "--seed", std::to_string(seed)})
+                  .status,
+              0);
+    ASSERT_EQ(run_taut({"route", in, "-q", "--orientations", "octilinear", "-o", routed}).status, 0);
+    const auto t = run_taut({"tighten", routed, "-q", "--clearance", "--orientations", "octilinear", "-o", dir + "/t.xml",
+                             "--stats", dir + "/t.json"});
+    if (seed == 15) {
+      // a routed wire at exactly the clearance of a sloped blockage where the union rounds a
+      // crossing: the layout's units refuse it, and the scaled plane, not exact here, may not
+      // excuse it (TIGHTEN-0001, exit 2, nothing written)
+      EXPECT_EQ(t.status, 2) << t.err;
+      continue;
+    }
+    ASSERT_EQ(t.status, 0) << t.err;
+    scaled += nlohmann::json::parse(read_text(dir + "/t.json"))["tighten"]["together"]["scale"].get<int>() > 1;
+    const auto chk = run_taut({"check", dir + "/t.xml"});
+    EXPECT_EQ(chk.status, 0) << chk.err;
+  }
+  EXPECT_EQ(scaled, 2);
 }
 
 // Together with the clearance (a review's cases): wind.xml's spiral, whose sketch and taut wire run
