@@ -256,12 +256,21 @@ NetLines once(const NetLines& wires) {
   return out;
 }
 
+// The wires without overlaps (without_overlaps), or, when that leaves nothing of wires that were
+// there (each of zero length: pins that share a point, joined by a wire of one point), the first
+// of them as it is (a net's metal must not vanish).
+NetLines metal(const NetLines& wires) {
+  NetLines m = without_overlaps(wires);
+  if (m.empty() && !wires.empty()) m.push_back(wires.front());
+  return m;
+}
+
 // A net's wires as they are tightened: without overlaps (where two were pulled along one path),
 // cut at the joints, once, joined where two end off the pins
 // (the frozen ones, reaching a shape pin mid-segment, stay as they are); frozen flags per wire.
 NetLines prepare(const NetLines& wires, std::span<const Polygon> pins, std::vector<char>& frozen) {
   std::vector<char> fz;
-  const NetLines cut = cut_at_joints(without_overlaps(wires), pins, &fz);
+  const NetLines cut = cut_at_joints(metal(wires), pins, &fz);
   NetLines loose, out;
   std::vector<Polygon> fixed(pins.begin(), pins.end());  // never joined at: pins, frozen wires' ends
   for (std::size_t k = 0; k < cut.size(); ++k)
@@ -380,7 +389,8 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
     NetTightenOutcome& o = out[i];
     for (std::size_t k = 0; k < wires[i].size() && o.status == NetTightenOutcome::Status::Ok; ++k) {
       const std::vector<Point>& line = wires[i][k];
-      if (line.size() < 2 && !as_drawn(i)) continue;  // a wire of one point (pins that meet): nothing to lift
+      if (!as_drawn(i) && std::all_of(line.begin(), line.end(), [&](Point p) { return p == line.front(); }))
+        continue;  // a wire of one point (pins that meet): nothing to lift
       std::size_t seg = 0;
       Point where{};
       const TightenStatus st = lift_now(i, line, &seg, &where);
@@ -537,11 +547,10 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
       stats_.kept_shape_pin += frozen[i][k];
       stats_.kept += o.kept[k] != 0 && !frozen[i][k];
       stats_.kept_not_free += o.kept[k] == 1 && !frozen[i][k];
-      o.length_after += euclidean_length(wires[i][k]);
       o.length_taut += taut_len[i][k];
     }
-    if (!is_sketch(i)) wires[i] = join_at_twos(once(without_overlaps(wires[i])));
-    for (const auto& w : wires[i]) o.bends_after += geom::count_bends(w);
+    if (!is_sketch(i)) wires[i] = join_at_twos(once(metal(wires[i])));
+    for (const auto& w : wires[i]) o.length_after += euclidean_length(w), o.bends_after += geom::count_bends(w);
   }
   return out;
 }

@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <chrono>
 #include <optional>
+#include <set>
 #include <cstdio>
 #include <iostream>
 
@@ -109,9 +110,11 @@ std::string fixed3(double v) {
 // tightened) fails, said of the lines as written: the input line that holds the piece's failing
 // segment, and the lift with that line's segment; a piece that fails at its start, where the line
 // does not start (a joint), is said to leave free space on the line's segment there, at or after
-// that point.
-std::pair<std::size_t, router::Tightened> said_of(const std::vector<std::vector<geom::Point>>& given,
-                                                  std::span<const geom::Point> piece, const router::Tightened& r) {
+// that point. nullopt when no input line holds it (not seen: every piece lies on its line; the
+// piece is then named as it is).
+std::optional<std::pair<std::size_t, router::Tightened>> said_of(const std::vector<std::vector<geom::Point>>& given,
+                                                                 std::span<const geom::Point> piece, const router::Tightened& r) {
+  if (piece.empty()) return std::nullopt;
   const std::size_t seg = r.status == router::TightenStatus::StartNotFree ? 0 : r.segment;
   const geom::Point a = piece[std::min(seg, piece.size() - 1)], b = piece[std::min(seg + 1, piece.size() - 1)];
   for (std::size_t c = 0; c < given.size(); ++c)
@@ -123,9 +126,9 @@ std::pair<std::size_t, router::Tightened> said_of(const std::vector<std::vector<
           said.status = router::TightenStatus::LeavesFreeSpace;
           said.where = piece.front();
         }
-        return {c, said};
+        return std::pair{c, said};
       }
-  return {0, r};  // (not reached: every piece lies on its line)
+  return std::nullopt;
 }
 
 }  // namespace
@@ -316,20 +319,32 @@ void add_tighten(CLI::App& app, int& status) {
       if (k > 1) {
         router::NetsTightenStats kst;
         std::vector<router::NetTightenOutcome> kout;
-        std::optional<std::vector<router::NetLines>> back =
-            router::tighten_scaled(domain, plain.obstacles, all_pins, rules, k, together, kind, o, &kst, &kout);
+        std::optional<std::vector<router::NetLines>> back;
+        try {
+          back = router::tighten_scaled(domain, plain.obstacles, all_pins, rules, k, together, kind, o, &kst, &kout);
+        } catch (const std::exception&) {  // (not seen: the scale keeps every coordinate within 2^29) the layout's units decide
+          back.reset();
+          kout.clear();
+        }
         for (std::size_t i = 0; i < kout.size(); ++i)
           scaled_refused[i] = !exact_plane || (kout[i].status == router::NetTightenOutcome::Status::NotFree && kout[i].round == 0);
-        const bool clean = std::none_of(kout.begin(), kout.end(), [](const router::NetTightenOutcome& oc) {
+        const bool clean = !kout.empty() && std::none_of(kout.begin(), kout.end(), [](const router::NetTightenOutcome& oc) {
           return (oc.status == router::NetTightenOutcome::Status::NotFree && oc.round == 0) || oc.untightened;
         });
-        auto geometric = [](const router::CheckProblem& p) {
-          using K = router::CheckProblem::Kind;
-          return p.kind == K::NotFree || p.kind == K::Short || p.kind == K::BlockageClearance || p.kind == K::NetClearance;
-        };
+        using K = router::CheckProblem::Kind;
+        auto joins = [](const router::CheckProblem& p) { return p.kind == K::Disconnected || p.kind == K::StrayWire; };
         if (back && clean) {
+          // no wire leaving free space or within the clearance, and no net joined worse than as given
+          // (sketches need not join their pins: their nets may be disconnected as given already)
           const std::vector<router::CheckProblem> problems = wire_problems(*layout, domain, plain.obstacles, *back);
-          if (std::none_of(problems.begin(), problems.end(), geometric)) {
+          bool ok = std::all_of(problems.begin(), problems.end(), joins);
+          if (ok && !problems.empty()) {
+            std::set<std::size_t> before;
+            for (const router::CheckProblem& p : wire_problems(*layout, domain, plain.obstacles, together))
+              if (joins(p)) before.insert(p.net);
+            ok = std::all_of(problems.begin(), problems.end(), [&](const router::CheckProblem& p) { return before.count(p.net) > 0; });
+          }
+          if (ok) {
             // (the layout's units' space gets the wires too: --min-link works among them)
             for (std::size_t i = 0; i < back->size(); ++i) net_space->set_wires(i, (*back)[i]);
             together = std::move(*back);
@@ -380,26 +395,48 @@ void add_tighten(CLI::App& app, int& status) {
         using St = router::NetTightenOutcome::Status;
         const router::NetTightenOutcome& oc = together_out[i];
         if (oc.status == St::NotFree && oc.round == 0 && !scaled_refused[i]) {
-          // legal as given (free in the scaled plane), but not in the layout's units, which close a
-          // gap of exactly the clearance; the scaled plane's result was not taken: another net was
-          // refused there (its error is said, and nothing is written), or it did not pass the check
+          // legal as given (free in the exact scaled plane), but not in the layout's units, which
+          // close a gap of exactly the clearance; the scaled plane's result was not taken: another
+          // net was refused there (its error is said, and nothing is written), or it did not pass
+          // the check. Routed wires are written as they are (the others were tightened round them
+          // as given); a sketch is no wire: failed.
           if (refused_somewhere) continue;
-          route.status = "failed";
-          route.reason = "its " + std::string(in.source == "sketch" ? "sketch" : "wires") +
-                         " could not be tightened: it keeps exactly the clearance somewhere (a gap that only the scaled "
-                         "plane opens), and the scaled plane's result was not taken";
+          const bool wires = in.source == "wires";
+          route.reason = wires ? "its wires keep exactly the clearance somewhere (a gap that only the scaled plane opens), "
+                                 "and the scaled plane's result was not taken: written as they are, not tightened"
+                               : "its sketch could not be tightened: it keeps exactly the clearance somewhere (a gap that "
+                                 "only the scaled plane opens), and the scaled plane's result was not taken";
           print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0011", layout->file, in.line_numbers[0], 0,
                                         "net \"" + net.name + "\": " + *route.reason}},
                             args->load.quiet);
+          if (!wires) {
+            route.status = "failed";
+            routes.routes.push_back(std::move(route));
+            continue;
+          }
+          route.reason.reset();
+          for (const auto& l : in.lines) {
+            st.before += router::euclidean_length(l);
+            st.bends_before += io::count_bends(l);
+          }
+          st.after = st.taut = st.before;
+          st.bends_after = st.bends_before;
+          route.status = "routed";
+          route.length = io::format_total_length(in.lines);
+          route.bends = st.bends_after;
+          for (const auto& l : in.lines) route.wires.push_back(io::Wire{l});
           routes.routes.push_back(std::move(route));
+          ++done;
           continue;
         }
         if (oc.status == St::NotFree && oc.round == 0) {
           // the input is not in its net's space: the piece that failed, and the input line it is on
           const std::vector<geom::Point>& piece = together[i][oc.wire];
           // (a sketch is one line, tightened whole; routed wires were cut at their joints)
-          const auto [k, lift] = in.source == "wires" ? said_of(in.lines, piece, oc.lift) : std::pair{std::size_t{0}, oc.lift};
-          const std::vector<geom::Point>& line = in.lines[k];
+          const auto said = in.source == "wires" ? said_of(in.lines, piece, oc.lift) : std::nullopt;
+          const std::size_t k = said ? said->first : 0;
+          const router::Tightened lift = said ? said->second : oc.lift;
+          const std::vector<geom::Point>& line = said || in.source != "wires" ? in.lines[k] : piece;
           const std::string what = in.source == "sketch" ? "sketch" : "wire";
           std::string text = WireTightener::failure_text(*layout, net.name, what, line, lift, grow);
           if (!oc.wire_blockers.empty() || !oc.pin_blockers.empty()) {  // the other nets it comes near
@@ -501,10 +538,11 @@ void add_tighten(CLI::App& app, int& status) {
             lines.push_back(std::move(cut[j]));
             numbers.push_back(in.line_numbers[k]);
             origin.push_back(k);
-            as_is.push_back(frozen[j]);
+            as_is.push_back(frozen[j] || WireTightener::is_loop(lines.back()));  // a closed wire stays (as route --tighten keeps it)
           }
         }
       }
+      std::vector<int> said_line(in.lines.size(), 0);
       for (std::size_t k = 0; k < lines.size() && !args->clearance; ++k) {
         const auto& line = lines[k];
         if (as_is[k] || std::all_of(line.begin(), line.end(), [&](geom::Point p) { return p == line.front(); })) {
@@ -517,12 +555,12 @@ void add_tighten(CLI::App& app, int& status) {
         WireTightener::Result res = wt.run(line);
         const router::Tightened& r = res.taut;
         if (r.status != router::TightenStatus::Ok) {
-          const auto [c, said] = wires_in ? said_of({in.lines[origin[k]]}, line, r) : std::pair{std::size_t{0}, r};
-          (void)c;
+          ok = false;
+          if (wires_in && said_line[origin[k]]++) continue;  // one error per <wire> (its next piece starts where this failed)
+          const auto said = wires_in ? said_of({in.lines[origin[k]]}, line, r) : std::nullopt;
           errors.push_back(Diagnostic{Severity::Error, "TIGHTEN-0001", layout->file, numbers[k], 0,
                                       WireTightener::failure_text(*layout, net.name, in.source == "sketch" ? "sketch" : "wire",
-                                                                  wires_in ? in.lines[origin[k]] : line, said, grow)});
-          ok = false;
+                                                                  said ? in.lines[origin[k]] : line, said ? said->second : r, grow)});
           continue;
         }
         if (res.contractible) {  // the other lines are still lifted: their errors are said
@@ -530,7 +568,7 @@ void add_tighten(CLI::App& app, int& status) {
           continue;
         }
         st.taut += router::euclidean_length(r.points);
-        if (args->min_link && !st.min_link_failed) {
+        if (args->min_link && !st.min_link_failed && !wires_in) {  // (routed wires: below, per wire written)
           // an optional statistic: a failure here must not cost the tightened layout
           try {
             if (!min_linker) min_linker = std::make_unique<router::MinLinker>(wt.triangulation());
@@ -561,6 +599,25 @@ void add_tighten(CLI::App& app, int& status) {
         st.bends_before = st.bends_after = 0;
         for (const auto& l : in.lines) st.bends_before += io::count_bends(l);
         for (const auto& l : out_lines) st.bends_after += io::count_bends(l);
+        // --min-link per wire written: each pulled taut again in its class (the pieces' ends were fixed)
+        for (std::size_t k = 0; k < out_lines.size() && args->min_link && !st.min_link_failed; ++k) {
+          const auto& w = out_lines[k];
+          if (std::all_of(w.begin(), w.end(), [&](geom::Point p) { return p == w.front(); })) continue;
+          try {
+            const WireTightener::Result again = wt.run(w);
+            if (again.taut.status != router::TightenStatus::Ok)
+              throw std::runtime_error(std::string(router::tighten_status_text(again.taut.status)) + " at or after " +
+                                       point_text(again.taut.where));
+            if (!min_linker) min_linker = std::make_unique<router::MinLinker>(wt.triangulation());
+            st.add_min_link(*min_linker, again.taut.points, again.loop, wt.triangulation(), min_link_set);
+          } catch (const std::exception& e) {
+            st.min_link_failed = true;
+            print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0008", layout->file, in.line_numbers[0], 0,
+                                          "net \"" + net.name + "\": no minimum-link path was found (" + e.what() +
+                                              "); its min_links is null"}},
+                              args->load.quiet);
+          }
+        }
       }
       if (!ok) continue;
       if (contractible) {

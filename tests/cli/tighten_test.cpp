@@ -11,6 +11,7 @@
 #include "geom/predicates.h"
 #include "io/layout_geometry.h"
 #include "io/layout_reader.h"
+#include "io/stats_json.h"
 #include "oracle/homotopy.h"
 #include "oracle/l1_oracle.h"
 #include "oracle/link_oracle.h"
@@ -706,6 +707,29 @@ TEST(Tighten, ClearanceTakesGapsOfExactlyTheClearance) {
   EXPECT_NE(one.err.find("[TIGHTEN-0001] net \"b\""), std::string::npos) << one.err;
   EXPECT_EQ(one.err.find("net \"a\""), std::string::npos) << one.err;
   EXPECT_EQ(read_text(dir + "/c.xml"), "old");
+  // a net whose pins share a point (a pad and a point pin on it) is routed by a wire of one
+  // point: it keeps it, and the gap's wire is still tightened in the scaled plane (the empty
+  // piece list it left once refused the scaled result, and wrote the net with no wire), by
+  // tighten --clearance and by route --tighten
+  const std::string touching = layout_file(
+      "tighten_exact_gaps_touching",
+      "  <boundary x0=\"0\" y0=\"0\" x1=\"4000\" y1=\"4000\"/>\n"
+      "  <rules wire-width=\"100\" spacing=\"100\"/>\n"
+      "  <blockage id=\"l\"><rect x0=\"0\" y0=\"1000\" x1=\"1000\" y1=\"3000\"/></blockage>\n"
+      "  <blockage id=\"r\"><rect x0=\"1300\" y0=\"1000\" x1=\"2500\" y1=\"3000\"/></blockage>\n"
+      "  <net name=\"a\"><pin name=\"s\" x=\"1150\" y=\"400\"/><pin name=\"t\" x=\"1400\" y=\"3800\"/></net>\n"
+      "  <net name=\"c\"><pin name=\"p\"><rect x0=\"3000\" y0=\"3000\" x1=\"3400\" y1=\"3400\"/></pin>"
+      "<pin name=\"q\" x=\"3200\" y=\"3200\"/></net>\n");
+  ASSERT_EQ(run_taut({"route", touching, "-q", "-o", dir + "/tr.xml"}).status, 0);
+  EXPECT_EQ(wires_of(dir + "/tr.xml", "c"), (std::vector<Path>{{{3200, 3200}, {3200, 3200}}}));
+  const auto tt = run_taut({"tighten", dir + "/tr.xml", "-q", "--clearance", "-o", dir + "/tt.xml", "--stats", dir + "/tt.json"});
+  ASSERT_EQ(tt.status, 0) << tt.err;
+  EXPECT_GT(nlohmann::json::parse(read_text(dir + "/tt.json"))["tighten"]["together"]["scale"].get<int>(), 1);
+  EXPECT_EQ(wires_of(dir + "/tt.xml", "c"), (std::vector<Path>{{{3200, 3200}, {3200, 3200}}}));
+  EXPECT_EQ(run_taut({"check", dir + "/tt.xml", "-q"}).status, 0);
+  ASSERT_EQ(run_taut({"route", touching, "-q", "--tighten", "-o", dir + "/rt.xml", "--stats", dir + "/rt.json"}).status, 0);
+  EXPECT_GT(nlohmann::json::parse(read_text(dir + "/rt.json"))["tighten"]["scale"].get<int>(), 1);
+  EXPECT_EQ(wires_of(dir + "/rt.xml", "c"), (std::vector<Path>{{{3200, 3200}, {3200, 3200}}}));
   // one DBU narrower: the gap, then the nets
   for (const auto& [name, b] : {std::pair{std::string("gap"), body(1299, 1350)}, std::pair{std::string("nets"), body(1300, 1349)}}) {
     SCOPED_TRACE(name);
@@ -736,8 +760,9 @@ TEST(Tighten, RoutedTreesStayJoined) {
     ASSERT_EQ(run_taut({"route", in, "-q", "-o", routed}).status, 0);
     for (const bool clearance : {false, true}) {
       SCOPED_TRACE(clearance ? "--clearance" : "plain");
-      std::vector<std::string> args{"tighten", routed, "-q", "-o", dir + "/t.xml"};
+      std::vector<std::string> args{"tighten", routed, "-q", "-o", dir + "/t.xml", "--stats", dir + "/t.json"};
       if (clearance) args.push_back("--clearance");
+      if (seed == 26) args.push_back("--min-link");
       const auto t = run_taut(args);
       ASSERT_EQ(t.status, 0) << t.err;
       const auto chk = run_taut({"check", dir + "/t.xml", "--json"});
@@ -745,6 +770,18 @@ TEST(Tighten, RoutedTreesStayJoined) {
       EXPECT_EQ(cj["connectivity"], "ok") << chk.err;
       EXPECT_EQ(cj["free_space"], "ok") << chk.err;
       if (clearance) EXPECT_EQ(chk.status, 0) << chk.err;
+      // the statistics are of the wires written: their length, and one minimum-link path per wire
+      io::ReadResult out = io::read_layout(dir + "/t.xml");
+      ASSERT_TRUE(out.layout && out.layout->routes);
+      const auto j = nlohmann::json::parse(read_text(dir + "/t.json"))["tighten"]["nets"];
+      ASSERT_EQ(j.size(), out.layout->routes->routes.size());
+      for (std::size_t i = 0; i < j.size(); ++i) {
+        const io::Route& r = out.layout->routes->routes[i];
+        std::vector<Path> wires;
+        for (const io::Wire& w : r.wires) wires.push_back(w.points);
+        EXPECT_EQ(j[i]["length_after"].get<double>(), std::stod(io::format_total_length(wires))) << r.net;
+        if (seed == 26) EXPECT_EQ(j[i]["min_link_wires"].size(), wires.size()) << r.net;
+      }
     }
   }
   // sloped blockages (octilinear): the scaled plane is used there too (not exact, so only a

@@ -172,6 +172,11 @@ void check_layout(int seed, router::TightenOrientations orient, Totals& t) {
   for (std::size_t i = 0; i < L.nets.size(); ++i) {
     if (before[i].empty()) continue;
     ++t.nets;
+    // the outcome's length is the written wires' (after they are joined: two pieces pulled onto one
+    // track are one metal)
+    double written = 0;
+    for (const auto& w : after[i]) written += router::euclidean_length(w);
+    if (outcomes[i].length_after != written) fail("net " + std::to_string(i) + "'s length_after is not its wires' length");
     // never longer in the output's metric
     if (octilinear ? oct_of(after[i]) > oct_of(before[i]) : l1_of(after[i]) > l1_of(before[i]))
       fail("net " + std::to_string(i) + " got longer");
