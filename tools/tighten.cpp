@@ -388,6 +388,13 @@ void add_tighten(CLI::App& app, int& status) {
         continue;
       }
       NetTightening& st = stats[i];
+      auto no_min_link = [&](int line, const std::exception& e) {  // TIGHTEN-0008: an optional statistic left null
+        st.min_link_failed = true;
+        print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0008", layout->file, line, 0,
+                                      "net \"" + net.name + "\": no minimum-link path was found (" + e.what() +
+                                          "); its min_links is null"}},
+                          args->load.quiet);
+      };
       st.source = in.source;
       std::vector<std::vector<geom::Point>> out_lines;
       bool ok = true, no_staircase = false, contractible = false;
@@ -506,11 +513,7 @@ void add_tighten(CLI::App& app, int& status) {
               st.add_min_link(ml, taut, is_loop, sp.triangulation(), min_link_set);
             }
           } catch (const std::exception& e) {
-            st.min_link_failed = true;
-            print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0008", layout->file, in.line_numbers[0], 0,
-                                          "net \"" + net.name + "\": no minimum-link path was found (" + e.what() +
-                                              "); its min_links is null"}},
-                              args->load.quiet);
+            no_min_link(in.line_numbers[0], e);
           }
         }
       }
@@ -574,11 +577,7 @@ void add_tighten(CLI::App& app, int& status) {
             if (!min_linker) min_linker = std::make_unique<router::MinLinker>(wt.triangulation());
             st.add_min_link(*min_linker, r.points, res.loop, wt.triangulation(), min_link_set);
           } catch (const std::exception& e) {
-            st.min_link_failed = true;
-            print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0008", layout->file, numbers[k], 0,
-                                          "net \"" + net.name + "\": no minimum-link path was found (" + e.what() +
-                                              "); its min_links is null"}},
-                              args->load.quiet);
+            no_min_link(numbers[k], e);
           }
         }
         if (res.no_staircase) {
@@ -611,11 +610,7 @@ void add_tighten(CLI::App& app, int& status) {
             if (!min_linker) min_linker = std::make_unique<router::MinLinker>(wt.triangulation());
             st.add_min_link(*min_linker, again.taut.points, again.loop, wt.triangulation(), min_link_set);
           } catch (const std::exception& e) {
-            st.min_link_failed = true;
-            print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0008", layout->file, in.line_numbers[0], 0,
-                                          "net \"" + net.name + "\": no minimum-link path was found (" + e.what() +
-                                              "); its min_links is null"}},
-                              args->load.quiet);
+            no_min_link(in.line_numbers[0], e);
           }
         }
       }
