@@ -769,7 +769,9 @@ TEST(Tighten, RoutedTreesStayJoined) {
       const nlohmann::json cj = nlohmann::json::parse(chk.out)["routes_check"];
       EXPECT_EQ(cj["connectivity"], "ok") << chk.err;
       EXPECT_EQ(cj["free_space"], "ok") << chk.err;
-      if (clearance) EXPECT_EQ(chk.status, 0) << chk.err;
+      if (clearance) {
+        EXPECT_EQ(chk.status, 0) << chk.err;
+      }
       // the statistics are of the wires written: their length, and one minimum-link path per wire
       io::ReadResult out = io::read_layout(dir + "/t.xml");
       ASSERT_TRUE(out.layout && out.layout->routes);
@@ -780,7 +782,9 @@ TEST(Tighten, RoutedTreesStayJoined) {
         std::vector<Path> wires;
         for (const io::Wire& w : r.wires) wires.push_back(w.points);
         EXPECT_EQ(j[i]["length_after"].get<double>(), std::stod(io::format_total_length(wires))) << r.net;
-        if (seed == 26) EXPECT_EQ(j[i]["min_link_wires"].size(), wires.size()) << r.net;
+        if (seed == 26) {
+          EXPECT_EQ(j[i]["min_link_wires"].size(), wires.size()) << r.net;
+        }
       }
     }
   }
