@@ -804,8 +804,8 @@ bool octilinear_edges(std::span<const Polygon> obstacles, std::span<const NetPin
 // times it stays within BendRouter's 2^31 under Combined; 1 when that leaves none of at least 8.
 std::int64_t router_scale(const Box& domain, std::span<const Polygon> obstacles, std::span<const NetPins> nets,
                           const NetRules& rules, const NetRouterOptions& options) {
-  if (!options.exact_gaps || !octilinear_edges(obstacles, nets)) return 1;
-  std::int64_t k = gap_scale(domain, rules);
+  if (!options.exact_gaps) return 1;
+  std::int64_t k = exact_gaps_scale(domain, obstacles, nets, rules);
   if (options.cost == NetRouterOptions::Cost::Combined)
     while (k > 1 && options.bend_cost > 0 && options.bend_cost > (std::int64_t{1} << 31) / k) k /= 2;
   return k >= 8 ? k : 1;

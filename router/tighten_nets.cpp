@@ -166,6 +166,10 @@ NetLines cut_at_joints(const NetLines& wires, std::span<const Polygon> pins, std
   return out;
 }
 
+bool one_point(std::span<const Point> line) {
+  return std::all_of(line.begin(), line.end(), [&](Point p) { return p == line.front(); });
+}
+
 NetLines join_at_twos(const NetLines& wires, std::span<const Polygon> pins) {
   std::map<Point, int> ends;
   for (const auto& w : wires)
@@ -389,8 +393,7 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
     NetTightenOutcome& o = out[i];
     for (std::size_t k = 0; k < wires[i].size() && o.status == NetTightenOutcome::Status::Ok; ++k) {
       const std::vector<Point>& line = wires[i][k];
-      if (!as_drawn(i) && std::all_of(line.begin(), line.end(), [&](Point p) { return p == line.front(); }))
-        continue;  // a wire of one point (pins that meet): nothing to lift
+      if (!as_drawn(i) && one_point(line)) continue;  // a wire of one point (pins that meet): nothing to lift
       std::size_t seg = 0;
       Point where{};
       const TightenStatus st = lift_now(i, line, &seg, &where);

@@ -187,6 +187,10 @@ class NetsTightener {
 // must stay as they are).
 NetLines cut_at_joints(const NetLines& wires, std::span<const geom::Polygon> pins, std::vector<char>* frozen = nullptr);
 
+// Whether a polyline is one point (empty, or every vertex the same): a wire of one point, which
+// a router writes where two pins share a point; nothing to tighten.
+bool one_point(std::span<const geom::Point> line);
+
 // The wires joined where exactly two of them end at one point, except on the pins given: the same
 // metal in fewer polylines (a bend there is counted again, and a point that joins nothing else is
 // free to move). Where one, three or more wires end, they stay apart; so do closed wires (loops).

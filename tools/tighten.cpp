@@ -548,7 +548,7 @@ void add_tighten(CLI::App& app, int& status) {
       std::vector<int> said_line(in.lines.size(), 0);
       for (std::size_t k = 0; k < lines.size() && !args->clearance; ++k) {
         const auto& line = lines[k];
-        if (as_is[k] || std::all_of(line.begin(), line.end(), [&](geom::Point p) { return p == line.front(); })) {
+        if (as_is[k] || router::one_point(line)) {
           st.before += router::euclidean_length(line);
           st.after += router::euclidean_length(line);
           st.taut += router::euclidean_length(line);
@@ -601,7 +601,7 @@ void add_tighten(CLI::App& app, int& status) {
         // --min-link per wire written: each pulled taut again in its class (the pieces' ends were fixed)
         for (std::size_t k = 0; k < out_lines.size() && args->min_link && !st.min_link_failed; ++k) {
           const auto& w = out_lines[k];
-          if (std::all_of(w.begin(), w.end(), [&](geom::Point p) { return p == w.front(); })) continue;
+          if (router::one_point(w)) continue;
           try {
             const WireTightener::Result again = wt.run(w);
             if (again.taut.status != router::TightenStatus::Ok)
