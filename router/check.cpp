@@ -469,6 +469,9 @@ void check_blockage_clearance(const FreeSpaceChecker& free, std::span<const Chec
       std::vector<Point> p;
       for (const Point q : wire.points)
         if (p.empty() || p.back() != q) p.push_back(q);
+      // A wire of one point (pins that meet, or a point written alone) is measured as the
+      // segment from that point to itself.
+      if (p.size() == 1) p.push_back(p.front());
       std::set<std::size_t> reported;  // obstacles named for this wire
       for (std::size_t i = 0; i + 1 < p.size(); ++i) {
         const Point a = p[i], b = p[i + 1];

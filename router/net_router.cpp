@@ -32,6 +32,7 @@ using geom::Point;
 using geom::Polygon;
 using geom::Ring;
 using Lines = std::vector<std::vector<Point>>;
+using geom::i128;
 namespace bgi = boost::geometry::index;
 
 Box box_of(std::span<const Point> pts) { return geom::bounding_box(pts); }
@@ -742,6 +743,80 @@ std::vector<Box> NetSpace::wire_boxes(std::size_t net) const {
   return out;
 }
 
+std::vector<Box> NetSpace::removed_boxes(const Lines& before, const Lines& after) const {
+  std::vector<Box> out;
+  for (const auto& [p, q] : uncovered_segments(before, after)) out.push_back(box_of(grown_segment(p, q, b_)));
+  // A piece clamped at the coordinate limits (grown_segment) is a box, not the neighbourhood: its
+  // part beyond the neighbourhood may be covered by nothing of `after`, so every piece of
+  // `before` that was clamped counts as removed.
+  for (const auto& w : before)
+    for_segments(w, [&](Point p, Point q) {
+      const std::int64_t r = b_;
+      if (!geom::in_range(std::min(p.x, q.x) - r) || !geom::in_range(std::max(p.x, q.x) + r) ||
+          !geom::in_range(std::min(p.y, q.y) - r) || !geom::in_range(std::max(p.y, q.y) + r))
+        out.push_back(box_of(grown_segment(p, q, b_)));
+    });
+  return out;
+}
+
+std::vector<std::pair<Point, Point>> uncovered_segments(const Lines& before, const Lines& after) {
+  std::vector<std::pair<Point, Point>> segs;
+  std::vector<std::pair<Box, std::size_t>> entries;
+  for (const auto& w : after)
+    for_segments(w, [&](Point p, Point q) {
+      const Point pq[2] = {p, q};
+      entries.push_back({box_of(pq), segs.size()});
+      segs.push_back({p, q});
+    });
+  const bgi::rtree<std::pair<Box, std::size_t>, bgi::rstar<16>> tree(entries.begin(), entries.end());
+  std::vector<std::pair<Box, std::size_t>> hits;
+  std::vector<std::pair<i128, i128>> cover;
+  std::vector<std::pair<Point, Point>> out;
+  for (const auto& w : before)
+    for_segments(w, [&](Point p, Point q) {
+      const Point pq[2] = {p, q};
+      hits.clear();
+      tree.query(bgi::intersects(box_of(pq)), std::back_inserter(hits));
+      const i128 dx = i128{q.x} - p.x, dy = i128{q.y} - p.y, len = dx * dx + dy * dy;
+      cover.clear();
+      for (const auto& [box, k] : hits) {
+        const auto& [a, b] = segs[k];
+        // a and b on the line of pq (for p = q: the segment ab through p)
+        if (len == 0) {
+          const i128 ux = i128{b.x} - a.x, uy = i128{b.y} - a.y;
+          if (ux * (i128{p.y} - a.y) - uy * (i128{p.x} - a.x) == 0) {  // p on ab's line, and in its box (the query)
+            cover.push_back({0, 0});
+            break;
+          }
+          continue;
+        }
+        if (dx * (i128{a.y} - p.y) - dy * (i128{a.x} - p.x) != 0 || dx * (i128{b.y} - p.y) - dy * (i128{b.x} - p.x) != 0)
+          continue;
+        const i128 ta = dx * (i128{a.x} - p.x) + dy * (i128{a.y} - p.y), tb = dx * (i128{b.x} - p.x) + dy * (i128{b.y} - p.y);
+        cover.push_back({std::min(ta, tb), std::max(ta, tb)});
+      }
+      bool covered;
+      if (len == 0) {
+        covered = !cover.empty();
+      } else {
+        std::sort(cover.begin(), cover.end());
+        i128 at = 0;  // [0, at] covered
+        bool gap = false;
+        for (const auto& [lo, hi] : cover) {
+          if (lo > at) {
+            gap = true;
+            break;
+          }
+          at = std::max(at, hi);
+          if (at >= len) break;
+        }
+        covered = !gap && at >= len;
+      }
+      if (!covered) out.push_back({p, q});
+    });
+  return out;
+}
+
 std::vector<std::size_t> NetSpace::pad_blockers(std::size_t net) const {
   const Index& ix = *index_;
   std::set<std::size_t> out;
@@ -1317,10 +1392,10 @@ void NetRouter::place(std::size_t i, NetAttempt a) {
   // the log (changed_) tells attempts made ahead (threads) and failed attempts kept (failed_)
   // whether the space in their windows is still what they saw
   std::unique_lock lock(space_mutex_);
-  for (const Box& b : space_.wire_boxes(i)) {
-    changed_.push_back({b, i});
-    if (certifies()) removed_.push_back({b, i});
-  }
+  for (const Box& b : space_.wire_boxes(i)) changed_.push_back({b, i});
+  // what the old wires held that the new ones do not (nothing when only their representation changed)
+  if (certifies())
+    for (const Box& b : space_.removed_boxes(out_[i].wires, a.routed ? a.wires : Lines{})) removed_.push_back({b, i});
   out_[i].routed = a.routed;
   out_[i].shortest = a.routed && a.shortest;
   claims_[i] = Claim{a.window, removed_.size()};
@@ -1703,11 +1778,11 @@ bool NetRouter::may_open(std::size_t i, std::int64_t kr, const Box& b) const {
          kr - scale_;
 }
 
-std::size_t NetRouter::withdraw_claims(std::size_t j, const std::vector<std::vector<Point>>& before) {
+std::size_t NetRouter::withdraw_claims(std::size_t j, const std::vector<std::vector<Point>>& before,
+                                       const std::vector<std::vector<Point>>& after) {
   if (!certifies() || before.empty()) return 0;
-  const Lines scaled_before = scaled_wires(before, scale_);
-  std::vector<Box> gone;
-  for (const Polygon& piece : space_.wire_union(scaled_before)) gone.push_back(box_of(piece.outer));
+  const std::vector<Box> gone = space_.removed_boxes(scaled_wires(before, scale_), scaled_wires(after, scale_));
+  if (gone.empty()) return 0;
   std::size_t withdrawn = 0;
   for (std::size_t i = 0; i < out_.size(); ++i) {
     NetOutcome& o = out_[i];

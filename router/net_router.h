@@ -244,6 +244,14 @@ std::int64_t exact_gaps_scale(const geom::Box& domain, std::span<const geom::Pol
 // any segment, its octilinear distance).
 geom::Root2 oct_length(const std::vector<std::vector<geom::Point>>& wires);
 
+// The segments of `before` (one of length zero for a wire of one point) that the segments of
+// `after` do not cover: a point set contained in the union of after's segments (collinear ones
+// covering it end to end, or one through the point), exactly. A net's wires changed from
+// `before` to `after` free only what the L-infinity neighbourhoods of these left, since the
+// neighbourhood of a union is the union of the neighbourhoods (NetSpace::removed_boxes).
+std::vector<std::pair<geom::Point, geom::Point>> uncovered_segments(const std::vector<std::vector<geom::Point>>& before,
+                                                                     const std::vector<std::vector<geom::Point>>& after);
+
 // What a net may be routed among (NetSpace::obstacles).
 enum class NetSpaceLevel {
   Plain,      // the blockages only, no clearance (why a net fails when it fails even there)
@@ -374,6 +382,12 @@ class NetSpace {
   std::vector<std::size_t> wire_nets_in(const geom::Box& window) const;
   // The boxes of what the other nets see of net `net`'s wires (the union of its grown segments).
   std::vector<geom::Box> wire_boxes(std::size_t net) const;
+  // When a net's wires change from `before` to `after`: boxes whose union holds every point the
+  // other nets saw covered by the grown `before` and no longer by the grown `after` (the grown
+  // pieces of uncovered_segments; none when only the representation changed, e.g. a wire cut at
+  // a joint or written in the other direction).
+  std::vector<geom::Box> removed_boxes(const std::vector<std::vector<geom::Point>>& before,
+                                       const std::vector<std::vector<geom::Point>>& after) const;
   // The whole domain, framed (geom::domain_frame), with less in it than any net without wires
   // sees at the Full level: the blockages, every net's grown wires, and the grown blockage edges
   // whose boxes meet no net's pin access (a point pin's access square, a shape pin's box); no
@@ -627,7 +641,10 @@ class NetRouter {
   // grown piece of them is withdrawn: a way may have opened there. (A claim this leaves stands for the net's new wire too when that is no longer in the
   // output's metric, as tightening's are: outside the window every way is longer, and inside it
   // only wires were added.) Returns how many claims it withdrew; stats() counts them.
-  std::size_t withdraw_claims(std::size_t j, const std::vector<std::vector<geom::Point>>& before);
+  // `after`: its wires now (the same units): what they still cover was not freed
+  // (NetSpace::removed_boxes).
+  std::size_t withdraw_claims(std::size_t j, const std::vector<std::vector<geom::Point>>& before,
+                              const std::vector<std::vector<geom::Point>>& after);
 
   // A route function for L1 rectilinear wires (router/l1_router.h): two pins by shortest(), more
   // by tree() from the first pin, or by steiner() when `steiner` (point and shape pins).

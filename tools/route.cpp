@@ -834,7 +834,7 @@ void add_route(CLI::App& app, int& status) {
             if (routes.routes[i].status != "routed" || wires[i].empty()) continue;
             router::NetLines before;
             for (const io::Wire& w : routes.routes[i].wires) before.push_back(w.points);
-            if (before != wires[i]) net_router->withdraw_claims(i, before);
+            if (before != wires[i]) net_router->withdraw_claims(i, before, wires[i]);
           }
           for (std::size_t i = 0; i < layout->nets.size(); ++i)
             if (shortest_of[i]) shortest_of[i] = net_router->outcomes()[i].shortest;

@@ -293,10 +293,13 @@ namespace check_test {
 // Random wires (some through the rectangles), rectangle blockages apart from each other, point
 // and rectangle pins, w and s from 0 to 4: the same (wire, blockage), (wire, wire) and
 // (wire, pin) pairs are reported. Between nets, a pair of segments that touch is a short, not
-// a clearance problem; the clearance is judged on the pairs that do not touch.
+// a clearance problem; the clearance is judged on the pairs that do not touch. Wires of one
+// point (on a pin, or anywhere) are measured as that point, a step of no length (since
+// 2026-12-05: the checker measured them between nets but not from blockages, and without the
+// one-point case in check_blockage_clearance seeds fail here).
 TEST(CheckRoutes, ClearanceMatchesAGapBruteForce) {
   int failed = 0;
-  long long blockage = 0, net = 0, clean_layouts = 0;
+  long long blockage = 0, net = 0, clean_layouts = 0, on_lone = 0;
   for (int seed = 1; seed <= (kSanitized ? 300 : 3000); ++seed) {
     std::mt19937 rng(static_cast<unsigned>(7000 + seed));
     auto coord = [&] { return static_cast<geom::Coord>(rng() % 31); };
@@ -344,6 +347,25 @@ TEST(CheckRoutes, ClearanceMatchesAGapBruteForce) {
         if (wire.points.size() >= 2) nets[n].wires.push_back(wire);
       }
     }
+    // Wires of one point (pins that meet write one; a user may write one anywhere), from a
+    // second stream so that the layouts above stay as they were: on a pin, or anywhere.
+    std::mt19937 lone(static_cast<unsigned>(90000 + seed));
+    std::set<int> lone_lines;
+    for (std::size_t n = 0; n < nets.size(); ++n)
+      if (lone() % 3 == 0) {
+        const auto& pin = nets[n].pins[lone() % nets[n].pins.size()];
+        const Point at = lone() % 2 == 0 ? (pin.point ? *pin.point : pin.shape->outer[0])
+                                         : Point{static_cast<geom::Coord>(lone() % 31), static_cast<geom::Coord>(lone() % 31)};
+        lone_lines.insert(line);
+        nets[n].wires.push_back({{at}, line++});
+      }
+    // A wire's segments; a wire of one point is the segment from it to itself.
+    auto segments_of = [](const router::CheckWire& w) {
+      std::vector<std::pair<Point, Point>> out;
+      for (std::size_t i = 0; i + 1 < w.points.size(); ++i) out.push_back({w.points[i], w.points[i + 1]});
+      if (w.points.size() == 1) out.push_back({w.points[0], w.points[0]});
+      return out;
+    };
     struct Span {
       std::int64_t x0, x1, y0, y1;
     };
@@ -375,16 +397,15 @@ TEST(CheckRoutes, ClearanceMatchesAGapBruteForce) {
       for (const auto& w : nt.wires) {
         // A wire through a rectangle's inside is reported as not free, and not measured.
         bool inside = false;
-        for (std::size_t i = 0; i + 1 < w.points.size(); ++i) {
-          const Span g = seg(w.points[i], w.points[i + 1]);
+        for (const auto& [a, b] : segments_of(w)) {
+          const Span g = seg(a, b);
           for (const auto& r : rects) inside = inside || (g.x1 > r.lo.x && g.x0 < r.hi.x && g.y1 > r.lo.y && g.y0 < r.hi.y);
         }
         if (inside) continue;
-        for (std::size_t i = 0; i + 1 < w.points.size(); ++i) {
-          Point a = w.points[i], b = w.points[i + 1];
+        for (const auto& [a, b] : segments_of(w)) {
           const std::int64_t len2 = 2 * (std::abs(std::int64_t{b.x} - a.x) + std::abs(std::int64_t{b.y} - a.y));
           const int ux = (b.x > a.x) - (b.x < a.x), uy = (b.y > a.y) - (b.y < a.y);
-          for (std::int64_t k = 0; k < len2; ++k) {
+          for (std::int64_t k = 0; k < std::max<std::int64_t>(len2, 1); ++k) {  // a point: one step of no length
             const std::int64_t x0 = 2 * a.x + ux * k, y0 = 2 * a.y + uy * k, x1 = x0 + ux, y1 = y0 + uy;
             bool exempt = false;
             for (const Point c : centres) exempt = exempt || (in_zone(x0, y0, c) && in_zone(x1, y1, c));
@@ -405,9 +426,9 @@ TEST(CheckRoutes, ClearanceMatchesAGapBruteForce) {
             for (const auto& o : nets[m].wires) {
               // touching is a short; the clearance is judged per pair of segments that do not touch
               bool close = false;
-              for (std::size_t i = 0; i + 1 < w.points.size(); ++i)
-                for (std::size_t j = 0; j + 1 < o.points.size(); ++j) {
-                  const std::int64_t g = gap2(seg(w.points[i], w.points[i + 1]), seg(o.points[j], o.points[j + 1]));
+              for (const auto& [a, b] : segments_of(w))
+                for (const auto& [c, d] : segments_of(o)) {
+                  const std::int64_t g = gap2(seg(a, b), seg(c, d));
                   close = close || (g > 0 && 4 * g < tn * tn);
                 }
               if (close) want.insert("net " + std::to_string(w.line) + " " + std::to_string(o.line));
@@ -415,8 +436,8 @@ TEST(CheckRoutes, ClearanceMatchesAGapBruteForce) {
           for (const auto& p : nets[m].pins) {
             const std::int64_t need = p.point ? tn : tb;
             bool close = false;
-            for (std::size_t i = 0; i + 1 < w.points.size(); ++i) {
-              const std::int64_t g = gap2(seg(w.points[i], w.points[i + 1]), pin_span(p));
+            for (const auto& [a, b] : segments_of(w)) {
+              const std::int64_t g = gap2(seg(a, b), pin_span(p));
               close = close || (g > 0 && 4 * g < need * need);
             }
             if (close) want.insert("pin " + std::to_string(w.line) + " " + std::to_string(p.line));
@@ -425,6 +446,8 @@ TEST(CheckRoutes, ClearanceMatchesAGapBruteForce) {
       }
     const router::CheckResult r = router::check_routes(norm, nets, rules);
     for (const auto& p : r.problems) {
+      if (p.kind == router::CheckProblem::Kind::BlockageClearance || p.kind == router::CheckProblem::Kind::NetClearance)
+        on_lone += lone_lines.count(p.line) > 0;
       if (p.kind == router::CheckProblem::Kind::BlockageClearance) {
         got.insert("blockage " + std::to_string(p.line) + " " + std::to_string(rect_of[*p.obstacle]));
         ++blockage;
@@ -445,11 +468,13 @@ TEST(CheckRoutes, ClearanceMatchesAGapBruteForce) {
                     << w << "checker\n" << g;
     }
   }
-  std::printf("%lld blockage and %lld net clearance problems; %lld layouts clean\n", blockage, net, clean_layouts);
+  std::printf("%lld blockage and %lld net clearance problems (%lld on wires of one point); %lld layouts clean\n", blockage,
+              net, on_lone, clean_layouts);
   EXPECT_EQ(failed, 0);
   EXPECT_GE(blockage, kSanitized ? 30 : 300);
   EXPECT_GE(net, kSanitized ? 30 : 300);
   EXPECT_GE(clean_layouts, kSanitized ? 10 : 100);
+  EXPECT_GE(on_lone, kSanitized ? 5 : 50);
 }
 
 }  // namespace check_test

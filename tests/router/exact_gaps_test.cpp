@@ -603,7 +603,7 @@ void judge_tightened_claims(const RandomLayout& L, bool octilinear, const std::s
   for (std::size_t i = 0; i < L.nets.size(); ++i)
     if (nr.outcomes()[i].routed && wires[i] != nr.outcomes()[i].wires) {
       ++t.moved;
-      if (!no_withdrawal) t.withdrawn += static_cast<std::int64_t>(nr.withdraw_claims(i, nr.outcomes()[i].wires));
+      if (!no_withdrawal) t.withdrawn += static_cast<std::int64_t>(nr.withdraw_claims(i, nr.outcomes()[i].wires, wires[i]));
     }
   // the final space, scaled
   router::NetSpace fin(geom::Box{router::scaled(L.norm.domain.lo, k), router::scaled(L.norm.domain.hi, k)},

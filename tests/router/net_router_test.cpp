@@ -176,6 +176,121 @@ std::optional<Point> free_near(std::mt19937& rng, const router::L1Router& plain,
 }
 
 
+// router::uncovered_segments (what a net's changed wires freed; the claims' withdrawal) against a
+// brute force on the lattice: a segment pq of length > 0 runs through the lattice points
+// p + k (q - p) / g (g the gcd of its coordinate differences), and since every segment of `after`
+// ends on lattice points, a collinear one that covers part of a piece between two consecutive
+// ones covers the whole piece; so pq is covered exactly when each piece has one segment of
+// `after` through both its ends (a point on a segment: the cross product zero, inside its box).
+// `after` is `before` rewritten (wires cut at vertices or inside segments at lattice points,
+// reversed, joined, segments split) with some changes (a vertex moved, a segment dropped, a
+// segment or point added), in any direction.
+TEST(UncoveredSegments, MatchALatticeBruteForce) {
+  using Lines = std::vector<std::vector<Point>>;
+  auto on = [](Point x, Point a, Point b) {
+    const std::int64_t cr = (std::int64_t{b.x} - a.x) * (std::int64_t{x.y} - a.y) - (std::int64_t{b.y} - a.y) * (std::int64_t{x.x} - a.x);
+    return cr == 0 && std::min(a.x, b.x) <= x.x && x.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= x.y && x.y <= std::max(a.y, b.y);
+  };
+  auto segments = [](const Lines& ls) {
+    std::vector<std::pair<Point, Point>> out;
+    for (const auto& l : ls) {
+      if (l.size() == 1) out.push_back({l[0], l[0]});
+      for (std::size_t i = 0; i + 1 < l.size(); ++i) out.push_back({l[i], l[i + 1]});
+    }
+    return out;
+  };
+  int failed = 0;
+  long long covered = 0, uncovered = 0, whole_same = 0;
+  for (int seed = 1; seed <= sanitized_share(4000, 10); ++seed) {
+    std::mt19937 rng(static_cast<unsigned>(960000 + seed));
+    auto c = [&] { return static_cast<geom::Coord>(rng() % 9); };
+    Lines before;
+    for (int w = 0, k = 1 + static_cast<int>(rng() % 3); w < k; ++w) {
+      std::vector<Point> l{{c(), c()}};
+      for (int v = 0, n = static_cast<int>(rng() % 4); v < n; ++v) {
+        const int kind = static_cast<int>(rng() % 3);  // axis-parallel, diagonal, any
+        Point p = l.back();
+        if (kind == 0) (rng() % 2 ? p.x : p.y) = c();
+        else if (kind == 1) {
+          const int d = static_cast<int>(rng() % 5) - 2;
+          p = {static_cast<geom::Coord>(p.x + d), static_cast<geom::Coord>(p.y + (rng() % 2 ? d : -d))};
+        } else p = {c(), c()};
+        if (p != l.back()) l.push_back(p);
+      }
+      before.push_back(l);
+    }
+    // after: before's segments rewritten, then changed
+    std::vector<std::pair<Point, Point>> pieces;
+    for (const auto& [a, b] : segments(before)) {
+      // split at a lattice point inside, sometimes
+      const int g = std::gcd(std::abs(b.x - a.x), std::abs(b.y - a.y));
+      if (g > 1 && rng() % 2) {
+        const int k = 1 + static_cast<int>(rng() % (g - 1));
+        const Point m{static_cast<geom::Coord>(a.x + (b.x - a.x) / g * k), static_cast<geom::Coord>(a.y + (b.y - a.y) / g * k)};
+        pieces.push_back({a, m});
+        pieces.push_back({m, b});
+      } else {
+        pieces.push_back({a, b});
+      }
+    }
+    const int change = static_cast<int>(rng() % 4);  // 0: none; 1: drop one; 2: move an end; 3: add one
+    if (change == 1 && !pieces.empty()) pieces.erase(pieces.begin() + static_cast<long>(rng() % pieces.size()));
+    if (change == 2 && !pieces.empty()) {
+      auto& [a, b] = pieces[rng() % pieces.size()];
+      (rng() % 2 ? a : b) = {c(), c()};
+    }
+    if (change == 3) pieces.push_back({{c(), c()}, {c(), c()}});
+    std::shuffle(pieces.begin(), pieces.end(), rng);
+    Lines after;
+    for (auto [a, b] : pieces) {
+      if (rng() % 2) std::swap(a, b);
+      if (!after.empty() && after.back().back() == a && rng() % 2) after.back().push_back(b);  // joined
+      else if (a == b) after.push_back({a});
+      else after.push_back({a, b});
+    }
+    // the brute force
+    const auto after_segs = segments(after);
+    auto held = [&](Point u, Point v) {
+      return std::any_of(after_segs.begin(), after_segs.end(), [&](const auto& s) { return on(u, s.first, s.second) && on(v, s.first, s.second); });
+    };
+    std::vector<std::pair<Point, Point>> want;
+    for (const auto& [p, q] : segments(before)) {
+      const int g = std::gcd(std::abs(q.x - p.x), std::abs(q.y - p.y));
+      bool ok = true;
+      if (g == 0) ok = held(p, p);
+      for (int k = 0; k < g && ok; ++k) {
+        const Point u{static_cast<geom::Coord>(p.x + (q.x - p.x) / g * k), static_cast<geom::Coord>(p.y + (q.y - p.y) / g * k)};
+        const Point v{static_cast<geom::Coord>(p.x + (q.x - p.x) / g * (k + 1)), static_cast<geom::Coord>(p.y + (q.y - p.y) / g * (k + 1))};
+        ok = held(u, v);
+      }
+      if (!ok) want.push_back({p, q});
+      (ok ? covered : uncovered) += 1;
+    }
+    const auto got = router::uncovered_segments(before, after);
+    whole_same += change == 0 && got.empty();
+    if (got != want && failed++ < 8) {
+      std::string text;
+      for (const auto& l : before) {
+        text += "  before:";
+        for (const Point p : l) text += " " + std::to_string(p.x) + "," + std::to_string(p.y);
+        text += "\n";
+      }
+      for (const auto& l : after) {
+        text += "  after:";
+        for (const Point p : l) text += " " + std::to_string(p.x) + "," + std::to_string(p.y);
+        text += "\n";
+      }
+      ADD_FAILURE() << "seed " << 960000 + seed << ": " << got.size() << " uncovered, the brute force " << want.size() << "\n" << text;
+    }
+  }
+  std::printf("%lld segments covered, %lld not; %lld rewritten wires freed nothing\n", covered, uncovered, whole_same);
+  EXPECT_EQ(failed, 0);
+  EXPECT_GT(uncovered, sanitized_share(1000, 10));
+  EXPECT_GT(covered, sanitized_share(4000, 10));
+  EXPECT_GT(whole_same, sanitized_share(800, 10));
+}
+
+
 TEST(NetRouter, EveryRoutedNetPassesTheChecker) {
   int failed = 0, layouts = 0;
   std::int64_t nets = 0, routed = 0, ripped = 0, first = 0, pads = 0, octilinear = 0, undone = 0, around = 0, last = 0,
