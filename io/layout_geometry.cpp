@@ -4,6 +4,7 @@
 #include <cstdint>
 
 #include "geom/normalize.h"
+#include "geom/predicates.h"
 
 namespace taut::io {
 
@@ -78,6 +79,27 @@ std::size_t blockage_vertex_count(const Layout& layout) {
       for (const auto& h : s.polygon.holes) n += h.size();
     }
   return n;
+}
+
+bool point_on_pin(geom::Point p, const Pin& pin) {
+  if (pin.point) return *pin.point == p;
+  if (!pin.shape) return false;
+  if (pin.shape->kind == Shape::Kind::Rect) {
+    const geom::Box& b = pin.shape->rect;
+    return b.lo.x <= p.x && p.x <= b.hi.x && b.lo.y <= p.y && p.y <= b.hi.y;
+  }
+  return geom::locate(p, pin.shape->polygon) != geom::Location::Outside;
+}
+
+std::string sketch_off_pins(const Net& net) {
+  if (!net.sketch || net.sketch->points.empty() || net.pins.size() != 2) return {};
+  const auto& pts = net.sketch->points;
+  auto text = [](geom::Point p) { return "(" + std::to_string(p.x) + "," + std::to_string(p.y) + ")"; };
+  if (!point_on_pin(pts.front(), net.pins[0]))
+    return "starts at " + text(pts.front()) + ", not on the first pin \"" + net.pins[0].name + "\"";
+  if (!point_on_pin(pts.back(), net.pins[1]))
+    return "ends at " + text(pts.back()) + ", not on the second pin \"" + net.pins[1].name + "\"";
+  return {};
 }
 
 }  // namespace taut::io

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "geom/types.h"
@@ -33,5 +34,13 @@ geom::Box routing_domain(const Layout& layout, std::span<const geom::Point> extr
 
 // Number of vertices written in blockage shapes (a rect counts 4).
 std::size_t blockage_vertex_count(const Layout& layout);
+
+// Whether p lies on the pin: the point pin itself, or in the closed pin shape.
+bool point_on_pin(geom::Point p, const Pin& pin);
+
+// Why a two-pin net's open <sketch> does not join its pins ("starts at (x,y), not on the first
+// pin \"a\"", or the end and the second pin), or "" when it does (LAYOUT-0008 warns of it; the
+// tightening commands then cannot take the sketch as the net's wire).
+std::string sketch_off_pins(const Net& net);
 
 }  // namespace taut::io

@@ -38,6 +38,7 @@
 #include <boost/geometry/index/rtree.hpp>
 
 #include "geom/predicates.h"
+#include "io/layout_geometry.h"
 #include "geom/validate.h"
 
 namespace taut::io {
@@ -466,13 +467,6 @@ class Validator {
     }
   }
 
-  // Is p on (or in) the pin?
-  static bool touches_pin(Point p, const Pin& pin) {
-    if (pin.point) return *pin.point == p;
-    if (!pin.shape) return false;
-    if (pin.shape->kind == Shape::Kind::Rect) return in_box(p, pin.shape->rect);
-    return geom::locate(p, pin.shape->polygon) != Location::Outside;
-  }
 
   void check_nets() {
     std::unordered_map<std::string, int> seen;
@@ -536,11 +530,11 @@ class Validator {
       return;
     }
     if (s.points.empty()) return;
-    if (!touches_pin(s.points.front(), net.pins[0]))
+    if (!point_on_pin(s.points.front(), net.pins[0]))
       warning("LAYOUT-0008", s.line,
               ctx + " sketch: starts at " + pt(s.points.front()) + ", not on the first pin " +
                   q(net.pins[0].name));
-    if (!touches_pin(s.points.back(), net.pins[1]))
+    if (!point_on_pin(s.points.back(), net.pins[1]))
       warning("LAYOUT-0008", s.line,
               ctx + " sketch: ends at " + pt(s.points.back()) + ", not on the second pin " +
                   q(net.pins[1].name));

@@ -621,8 +621,11 @@ void add_route(CLI::App& app, int& status) {
       routes.metric = "l1";
       routes.orientations = octilinear ? "octilinear" : "rectilinear";
       // With --tighten a two-pin net's sketch, or a loop sketch on any net, is what gets tightened.
+      // (A two-pin net's open sketch that misses a pin is not followed: the net is routed without
+      // it, ROUTE-0020, since its tightened sketch would join nothing.)
       auto follows_sketch = [&](const io::Net& net) {
-        return args->tighten && net.sketch && (net.pins.size() == 2 || WireTightener::is_loop(net.sketch->points));
+        return args->tighten && net.sketch &&
+               (WireTightener::is_loop(net.sketch->points) || (net.pins.size() == 2 && io::sketch_off_pins(net).empty()));
       };
       // Together (the default): every net among the others' wires and pins, with the clearance of
       // <rules> (router::NetRouter); --independent: each net alone among the blockages.
@@ -753,9 +756,16 @@ void add_route(CLI::App& app, int& status) {
           r = std::move(together[ni]);
           if (r.route.status == "routed") shortest_of[ni] = r.shortest;
         }
+        const bool off_pins = args->tighten && net.sketch && !WireTightener::is_loop(net.sketch->points) &&
+                              !io::sketch_off_pins(net).empty();
+        if (off_pins)  // said, not dropped silently
+          print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0020", layout->file, net.sketch->line, 0,
+                                        "net \"" + net.name + "\": its <sketch> " + io::sketch_off_pins(net) +
+                                            ", so it is not followed: the net is routed without it"}},
+                            args->load.quiet);
         if (r.route.status == "routed") {
           ++routed;
-          if (net.sketch && !follows_sketch(net))  // said, not dropped silently
+          if (net.sketch && !follows_sketch(net) && !off_pins)  // said, not dropped silently
             print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0007", layout->file, net.sketch->line, 0,
                                           "net \"" + net.name + "\": the wire is the shortest of any "
                                           "homotopy class and does not follow the <sketch> (--tighten or "

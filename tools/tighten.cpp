@@ -27,6 +27,7 @@
 
 #include "geom/directions.h"
 #include "geom/triangulation.h"
+#include "io/layout_geometry.h"
 #include "io/layout_writer.h"
 #include "io/stats_json.h"
 #include "io/svg.h"
@@ -211,6 +212,8 @@ void add_tighten(CLI::App& app, int& status) {
       std::vector<std::vector<geom::Point>> lines;
       std::vector<int> line_numbers;
       std::string source;
+      std::string off_pins;  // a two-pin net's open sketch that does not join its pins: why (TIGHTEN-0012)
+      bool ignored_sketch = false;  // a sketch on a net without two pins, not a loop (LAYOUT-0009: ignored)
     };
     std::vector<Input> inputs(layout->nets.size());
     const std::vector<router::NetPins> all_pins = net_pins(*layout);
@@ -218,7 +221,15 @@ void add_tighten(CLI::App& app, int& status) {
     for (std::size_t i = 0; i < layout->nets.size(); ++i) {
       const io::Net& net = layout->nets[i];
       Input& in = inputs[i];
-      if (net.sketch) {
+      // A sketch is taken when it is a loop, or joins a two-pin net's pins; one that misses a pin
+      // would be written as a wire that joins nothing (TIGHTEN-0012: failed), and one on a net
+      // without two pins is ignored, as LAYOUT-0009 says (its routed wires, if any, are taken).
+      const bool loop = net.sketch && WireTightener::is_loop(net.sketch->points);
+      in.ignored_sketch = net.sketch && !loop && net.pins.size() != 2;
+      if (net.sketch && !loop && !in.ignored_sketch) in.off_pins = io::sketch_off_pins(net);
+      if (!in.off_pins.empty()) {
+        in.source = "sketch";
+      } else if (net.sketch && !in.ignored_sketch) {
         in.source = "sketch";
         in.lines.push_back(net.sketch->points);
         in.line_numbers.push_back(net.sketch->line);
@@ -378,9 +389,20 @@ void add_tighten(CLI::App& app, int& status) {
       const Input& in = inputs[i];
       io::Route route;
       route.net = net.name;
+      if (!in.off_pins.empty()) {
+        route.status = "failed";
+        route.reason = "its <sketch> " + in.off_pins + ": tightened, it would join nothing";
+        print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0012", layout->file, net.sketch->line, 0,
+                                      "net \"" + net.name + "\": " + *route.reason}},
+                          args->load.quiet);
+        routes.routes.push_back(std::move(route));
+        continue;
+      }
       if (in.lines.empty()) {
         route.status = "failed";
-        route.reason = "nothing to tighten: the net has no <sketch> and no routed wire";
+        route.reason = in.ignored_sketch ? "nothing to tighten: the net has no routed wire, and its <sketch> is ignored (a "
+                                           "sketch is for a net of two pins, or a loop)"
+                                         : "nothing to tighten: the net has no <sketch> and no routed wire";
         print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0002", layout->file, net.line, 0,
                                       "net \"" + net.name + "\": " + *route.reason}},
                           args->load.quiet);

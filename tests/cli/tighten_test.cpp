@@ -984,6 +984,57 @@ TEST(Tighten, ContractibleLoopIsAFailedNet) {
   EXPECT_EQ(nets[1]["min_links"], 3) << nets[1];
 }
 
+// A two-pin net's sketch that misses a pin (found by a seeded mutation of designs/wind.xml:
+// net "diag"'s pin "bottom" moved from 38000,9000 to 2000,9000, the sketch still ending at the
+// old place). Before 2026-12-05 `tighten` wrote the tightened sketch as the net's routed wire and
+// `route --tighten` followed it: both files failed taut check (CHECK-0004, the pins not joined).
+// Now `tighten` writes the net as failed (TIGHTEN-0012, exit 1) and `route --tighten` routes it
+// without the sketch (ROUTE-0020, not ROUTE-0007); both files pass the check. A sketch on a net
+// of three pins is ignored, as LAYOUT-0009 says (it was tightened and written as routed too).
+TEST(Tighten, SketchOffItsPinsIsNotTaken) {
+  const std::string dir = temp_dir("tighten_off_pins");
+  std::string text = read_text(kDesigns + "wind.xml");
+  const std::string pin = "<pin name=\"bottom\" x=\"38000\" y=\"9000\"/>";
+  const std::size_t at = text.find(pin);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, pin.size(), "<pin name=\"bottom\" x=\"2000\" y=\"9000\"/>");
+  const std::string file = dir + "/in.xml";
+  write_text(file, text);
+  const auto t = run_taut({"tighten", file, "--clearance", "-o", dir + "/t.xml"});
+  EXPECT_EQ(t.status, 1) << t.err;
+  EXPECT_NE(t.err.find(file + ":52: warning: [TIGHTEN-0012] net \"diag\": its <sketch> ends at (38000,9000), not on the "
+                       "second pin \"bottom\""),
+            std::string::npos)
+      << t.err;
+  io::ReadResult rt = io::read_layout(dir + "/t.xml");
+  ASSERT_TRUE(rt.layout && rt.layout->routes);
+  int failed = 0, routed = 0;
+  for (const io::Route& r : rt.layout->routes->routes) {
+    failed += r.status == "failed" && r.net == "diag" && r.wires.empty();
+    routed += r.status == "routed";
+  }
+  EXPECT_EQ(failed, 1);
+  EXPECT_EQ(routed, 5);
+  const auto ct = run_taut({"check", dir + "/t.xml", "-q"});
+  EXPECT_EQ(ct.status, 0) << ct.err;
+  const auto r = run_taut({"route", file, "--tighten", "--orientations", "rectilinear", "-o", dir + "/r.xml"});
+  EXPECT_LE(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find(file + ":52: warning: [ROUTE-0020] net \"diag\""), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("ROUTE-0007"), std::string::npos) << r.err;
+  const auto cr = run_taut({"check", dir + "/r.xml", "-q"});
+  EXPECT_EQ(cr.status, 0) << cr.err;
+  // three pins and a sketch, no routed wire: nothing to tighten
+  const std::string three = layout_file("tighten_off_pins_three",
+                                        "  <blockage id=\"a\"><rect x0=\"40\" y0=\"40\" x1=\"60\" y1=\"60\"/></blockage>\n"
+                                        "  <net name=\"t\"><pin name=\"p\" x=\"10\" y=\"10\"/><pin name=\"q\" x=\"90\" y=\"90\"/>"
+                                        "<pin name=\"r\" x=\"90\" y=\"10\"/><sketch points=\"10,10 10,90 90,90\"/></net>\n");
+  const auto t3 = run_taut({"tighten", three, "-o", dir + "/t3.xml"});
+  EXPECT_EQ(t3.status, 1) << t3.err;
+  EXPECT_NE(t3.err.find("warning: [TIGHTEN-0002] net \"t\": nothing to tighten: the net has no routed wire, and its <sketch> is ignored"),
+            std::string::npos)
+      << t3.err;
+}
+
 // A guard ring with a pin (README's "Loops": the loop belongs to no pin, and the pins are not
 // joined to it) beside a net with two pins, with rules: route --tighten writes the ring round both
 // blockages, and taut check accepts it (since 2026-12-05: it reported CHECK-0005, a wire touching
