@@ -386,9 +386,32 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
     Sleeve sleeve;
     return t.lift(line, sleeve, seg, where);
   };
-  std::vector<std::vector<char>> fresh(n);  // sketch pieces no result has replaced yet
+  // Pieces that must be replaced (sketch pieces, and wire pieces with a segment outside the
+  // output's directions, as `taut tighten --orientations rectilinear` on octilinear wires gives)
+  // and that no result has replaced yet: their first result is taken whatever it is, and one
+  // left at the end is untightened (a wire kept as it was would be written in directions the
+  // output does not have).
+  std::vector<std::vector<char>> fresh(n);
+  auto off_set = [&](const std::vector<Point>& line) {
+    if (!options_.orientations.set) return false;
+    for (std::size_t j = 0; j + 1 < line.size(); ++j) {
+      const std::int64_t dx = std::int64_t{line[j + 1].x} - line[j].x, dy = std::int64_t{line[j + 1].y} - line[j].y;
+      if ((dx != 0 || dy != 0) && !options_.orientations.set->along(dx, dy)) return true;
+    }
+    return false;
+  };
+  auto mark_off_set = [&](std::size_t i) {  // a net of wires: its pieces outside the set, if any
+    fresh[i].clear();
+    for (std::size_t k = 0; k < wires[i].size(); ++k)
+      if (off_set(wires[i][k])) {
+        fresh[i].resize(wires[i].size(), 0);
+        fresh[i][k] = 1;
+      }
+  };
   for (std::size_t i = 0; i < n; ++i) {
-    if (!checked(i) || wires[i].empty()) continue;
+    if (wires[i].empty()) continue;
+    if (!as_drawn(i) && !is_sketch(i)) mark_off_set(i);
+    if (!checked(i)) continue;
     if (as_drawn(i)) fresh[i].assign(wires[i].size(), 1);
     NetTightenOutcome& o = out[i];
     for (std::size_t k = 0; k < wires[i].size() && o.status == NetTightenOutcome::Status::Ok; ++k) {
@@ -513,8 +536,9 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
       if (!is_sketch(i)) {  // a piece pulled through a joint of its net (another wire's end, a pin) is cut there
         std::vector<char> fz;
         NetLines recut = prepare(wires[i], space.net(i).pins, fz);
-        if (recut != wires[i]) {  // (fresh[i] is empty here: only sketches as drawn have it)
+        if (recut != wires[i]) {  // (fresh[i]: pieces outside the set, if any, marked again)
           wires[i] = std::move(recut);
+          mark_off_set(i);
           frozen[i] = std::move(fz);
           for (std::size_t k = 0; k < wires[i].size(); ++k) frozen[i][k] = frozen[i][k] || SpaceTightener::is_loop(wires[i][k]);
           o.kept.assign(frozen[i].begin(), frozen[i].end());

@@ -290,6 +290,9 @@ void add_tighten(CLI::App& app, int& status) {
     // per net: its input is not in its space as given in the scaled plane (all, when that did not
     // run): only those are refused (TIGHTEN-0001) when the layout's units refuse more
     std::vector<char> scaled_refused(layout->nets.size(), 1);
+    // --clearance: routed wires the tightener refuses that pass taut check's test, 1 in the
+    // output's directions, 2 not (TIGHTEN-0013, below)
+    std::vector<char> legal_as_given(layout->nets.size(), 0);
     std::unique_ptr<router::NetSpace> net_space;
     if (args->clearance) {
       router::NetRules rules{width, spacing};
@@ -325,7 +328,25 @@ void add_tighten(CLI::App& app, int& status) {
       // (On a layout with an edge at another angle than a multiple of 45 degrees the scaled plane
       // is not exact, net_router.h: its result is still taken when the check passes it, but a net
       // it takes as given and the layout's units refuse is then refused, TIGHTEN-0001.)
-      const std::int64_t k = router::exact_gaps_scale(domain, plain.obstacles, all_pins, rules, true);
+      // (Not when a routed wire runs in directions the output does not have, as octilinear wires
+      // tightened into rectilinear: such a piece is replaced whatever its result, and along a 45
+      // degree corridor at exactly the clearance its staircase steps at the lattice's unit, K
+      // times as many steps in the scaled plane: degenerate seed 11 of Tighten.OctilinearRoutesTightened
+      // grew past 1.5 GB there.)
+      const std::optional<geom::LatticeDirections> out_set = tighten_orientations(orientations).set;
+      // every segment of the lines along a direction of the output's set (any: every one)
+      auto in_directions = [&](const std::vector<std::vector<geom::Point>>& lines) {
+        for (const auto& l : lines)
+          for (std::size_t j = 0; j + 1 < l.size() && out_set; ++j) {
+            const std::int64_t dx = std::int64_t{l[j + 1].x} - l[j].x, dy = std::int64_t{l[j + 1].y} - l[j].y;
+            if ((dx != 0 || dy != 0) && !out_set->along(dx, dy)) return false;
+          }
+        return true;
+      };
+      bool off_set = false;
+      for (std::size_t i = 0; i < layout->nets.size(); ++i)
+        off_set = off_set || (inputs[i].source == "wires" && !in_directions(inputs[i].lines));
+      const std::int64_t k = off_set ? 1 : router::exact_gaps_scale(domain, plain.obstacles, all_pins, rules, true);
       const bool exact_plane = router::exact_gaps_scale(domain, plain.obstacles, all_pins, rules) > 1;
       if (k > 1) {
         router::NetsTightenStats kst;
@@ -370,6 +391,31 @@ void add_tighten(CLI::App& app, int& status) {
         together_out = nt.run(together, kind);
         together_stats = nt.stats();
       }
+      // Routed wires refused as given in both planes, which keep the clearance as taut check
+      // measures it (the Euclidean distance of FORMAT.md; the tightener's space grows every
+      // blockage by a square, which keeps more, so a wire the octilinear router ran diagonally
+      // past a sloped edge can be legal and still not lie in it): written as they are
+      // (TIGHTEN-0013), not refused, when in the output's directions. The others were tightened
+      // round them as they are. Those in other directions are written as failed.
+      bool any_refused = false;
+      for (std::size_t i = 0; i < together_out.size(); ++i)
+        any_refused = any_refused || (inputs[i].source == "wires" && scaled_refused[i] &&
+                                      together_out[i].status == router::NetTightenOutcome::Status::NotFree &&
+                                      together_out[i].round == 0);
+      if (any_refused) {
+        std::vector<router::NetLines> given(layout->nets.size());
+        for (std::size_t i = 0; i < given.size(); ++i)
+          if (inputs[i].source == "wires") given[i] = inputs[i].lines;
+        std::vector<char> bad(given.size(), 0);
+        using K = router::CheckProblem::Kind;
+        for (const router::CheckProblem& p : wire_problems(*layout, domain, plain.obstacles, given))
+          if (p.kind == K::NotFree || p.kind == K::BlockageClearance || p.kind == K::NetClearance || p.kind == K::Short) {
+            bad[p.net] = 1;
+            if (p.other_net) bad[*p.other_net] = 1;
+          }
+        for (std::size_t i = 0; i < given.size(); ++i)
+          legal_as_given[i] = inputs[i].source == "wires" && !bad[i] ? (in_directions(given[i]) ? 1 : 2) : 0;
+      }
     }
     const auto t1 = Clock::now();
 
@@ -381,7 +427,8 @@ void add_tighten(CLI::App& app, int& status) {
     std::vector<NetTightening> stats(layout->nets.size());
     bool refused_somewhere = false;  // --clearance: a net's input is refused (TIGHTEN-0001) in both planes
     for (std::size_t i = 0; i < together_out.size(); ++i)
-      refused_somewhere = refused_somewhere || (scaled_refused[i] && together_out[i].status == router::NetTightenOutcome::Status::NotFree &&
+      refused_somewhere = refused_somewhere || (scaled_refused[i] && !legal_as_given[i] &&
+                                                together_out[i].status == router::NetTightenOutcome::Status::NotFree &&
                                                 together_out[i].round == 0);
     std::size_t done = 0;
     for (std::size_t i = 0; i < layout->nets.size(); ++i) {
@@ -418,6 +465,21 @@ void add_tighten(CLI::App& app, int& status) {
                           args->load.quiet);
       };
       st.source = in.source;
+      // the net's routed wires written as they are, not tightened (TIGHTEN-0011, TIGHTEN-0013)
+      auto written_as_given = [&] {
+        for (const auto& l : in.lines) {
+          st.before += router::euclidean_length(l);
+          st.bends_before += io::count_bends(l);
+        }
+        st.after = st.taut = st.before;
+        st.bends_after = st.bends_before;
+        route.status = "routed";
+        route.length = io::format_total_length(in.lines);
+        route.bends = st.bends_after;
+        for (const auto& l : in.lines) route.wires.push_back(io::Wire{l});
+        routes.routes.push_back(std::move(route));
+        ++done;
+      };
       std::vector<std::vector<geom::Point>> out_lines;
       bool ok = true, no_staircase = false, contractible = false;
       if (args->clearance) {
@@ -444,18 +506,26 @@ void add_tighten(CLI::App& app, int& status) {
             continue;
           }
           route.reason.reset();
-          for (const auto& l : in.lines) {
-            st.before += router::euclidean_length(l);
-            st.bends_before += io::count_bends(l);
+          written_as_given();
+          continue;
+        }
+        if (oc.status == St::NotFree && oc.round == 0 && legal_as_given[i]) {
+          if (refused_somewhere) continue;  // (nothing is written)
+          const bool in_set = legal_as_given[i] == 1;
+          route.reason = std::string("its wires keep the clearance as taut check measures it (Euclidean), but not as the "
+                                     "tightener grows the blockages and the other nets' wires (by squares): ") +
+                         (in_set ? "written as they are, not tightened"
+                                 : "not tightened, and they run in directions the output does not have: failed");
+          print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0013", layout->file, in.line_numbers[0], 0,
+                                        "net \"" + net.name + "\": " + *route.reason}},
+                            args->load.quiet);
+          if (!in_set) {
+            route.status = "failed";
+            routes.routes.push_back(std::move(route));
+            continue;
           }
-          st.after = st.taut = st.before;
-          st.bends_after = st.bends_before;
-          route.status = "routed";
-          route.length = io::format_total_length(in.lines);
-          route.bends = st.bends_after;
-          for (const auto& l : in.lines) route.wires.push_back(io::Wire{l});
-          routes.routes.push_back(std::move(route));
-          ++done;
+          route.reason.reset();
+          written_as_given();
           continue;
         }
         if (oc.status == St::NotFree && oc.round == 0) {
@@ -491,8 +561,12 @@ void add_tighten(CLI::App& app, int& status) {
         no_staircase = oc.untightened && oc.wire < oc.kept.size() && oc.kept[oc.wire] == 2;
         if (oc.untightened && !no_staircase) {
           route.status = "failed";
-          route.reason = "its sketch could not be pulled taut: the other nets' wires came to exactly the clearance "
-                         "on both sides of it (at or after " + point_text(oc.lift.where) + "), leaving it no room";
+          route.reason = in.source == "wires"
+                             ? "its wires run in directions the output does not have, and could not be pulled taut into "
+                               "them: the other nets' wires came to exactly the clearance on both sides (at or after " +
+                                   point_text(oc.lift.where) + "), leaving no room"
+                             : "its sketch could not be pulled taut: the other nets' wires came to exactly the clearance "
+                               "on both sides of it (at or after " + point_text(oc.lift.where) + "), leaving it no room";
           print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0010", layout->file, in.line_numbers[0], 0,
                                         "net \"" + net.name + "\": " + *route.reason}},
                             args->load.quiet);
