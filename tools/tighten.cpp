@@ -480,6 +480,20 @@ void add_tighten(CLI::App& app, int& status) {
         routes.routes.push_back(std::move(route));
         ++done;
       };
+      // route.reason said as the warning `code`; then the routed wires written as they are
+      // (`write`), or the net written as failed
+      auto not_tightened = [&](const char* code, bool write) {
+        print_diagnostics({Diagnostic{Severity::Warning, code, layout->file, in.line_numbers[0], 0,
+                                      "net \"" + net.name + "\": " + *route.reason}},
+                          args->load.quiet);
+        if (!write) {
+          route.status = "failed";
+          routes.routes.push_back(std::move(route));
+          return;
+        }
+        route.reason.reset();
+        written_as_given();
+      };
       std::vector<std::vector<geom::Point>> out_lines;
       bool ok = true, no_staircase = false, contractible = false;
       if (args->clearance) {
@@ -497,16 +511,7 @@ void add_tighten(CLI::App& app, int& status) {
                                  "and the scaled plane's result was not taken: written as they are, not tightened"
                                : "its sketch could not be tightened: it keeps exactly the clearance somewhere (a gap that "
                                  "only the scaled plane opens), and the scaled plane's result was not taken";
-          print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0011", layout->file, in.line_numbers[0], 0,
-                                        "net \"" + net.name + "\": " + *route.reason}},
-                            args->load.quiet);
-          if (!wires) {
-            route.status = "failed";
-            routes.routes.push_back(std::move(route));
-            continue;
-          }
-          route.reason.reset();
-          written_as_given();
+          not_tightened("TIGHTEN-0011", wires);
           continue;
         }
         if (oc.status == St::NotFree && oc.round == 0 && legal_as_given[i]) {
@@ -516,16 +521,7 @@ void add_tighten(CLI::App& app, int& status) {
                                      "tightener grows the blockages and the other nets' wires (by squares): ") +
                          (in_set ? "written as they are, not tightened"
                                  : "not tightened, and they run in directions the output does not have: failed");
-          print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0013", layout->file, in.line_numbers[0], 0,
-                                        "net \"" + net.name + "\": " + *route.reason}},
-                            args->load.quiet);
-          if (!in_set) {
-            route.status = "failed";
-            routes.routes.push_back(std::move(route));
-            continue;
-          }
-          route.reason.reset();
-          written_as_given();
+          not_tightened("TIGHTEN-0013", in_set);
           continue;
         }
         if (oc.status == St::NotFree && oc.round == 0) {
