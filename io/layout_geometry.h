@@ -39,8 +39,9 @@ std::size_t blockage_vertex_count(const Layout& layout);
 bool point_on_pin(geom::Point p, const Pin& pin);
 
 // Why a two-pin net's open <sketch> does not join its pins ("starts at (x,y), not on the first
-// pin \"a\"", or the end and the second pin), or "" when it does (LAYOUT-0008 warns of it; the
-// tightening commands then cannot take the sketch as the net's wire).
+// pin \"a\"", or the end and the second pin), or "" when it does, from either pin to the other
+// (LAYOUT-0008 warns of any other order; the tightening commands cannot take a sketch that misses
+// a pin as the net's wire).
 std::string sketch_off_pins(const Net& net);
 
 }  // namespace taut::io

@@ -743,8 +743,20 @@ std::vector<Box> NetSpace::wire_boxes(std::size_t net) const {
   return out;
 }
 
-std::vector<Box> NetSpace::removed_boxes(const Lines& before, const Lines& after) const {
+std::vector<Box> NetSpace::removed_boxes(const Lines& before, const Lines& after, std::optional<std::size_t> net) const {
   std::vector<Box> out;
+  // What the others see is the union of the grown segments, which rounds sloped crossings outward
+  // (geom/normalize.h): with a sloped segment in `before`, that growth may be freed too, so the
+  // boxes of the whole union count, as before 2026-12-05 (axis-parallel pieces cross at lattice
+  // points: nothing rounded).
+  bool sloped = false;
+  for (const auto& w : before)
+    for (std::size_t j = 0; j + 1 < w.size(); ++j) sloped = sloped || (w[j].x != w[j + 1].x && w[j].y != w[j + 1].y);
+  if (sloped) {
+    const std::vector<Polygon> u = net ? index_->wire_union[*net] : wire_union(before);
+    for (const Polygon& p : u) out.push_back(box_of(p.outer));
+    return out;
+  }
   for (const auto& [p, q] : uncovered_segments(before, after)) out.push_back(box_of(grown_segment(p, q, b_)));
   // A piece clamped at the coordinate limits (grown_segment) is a box, not the neighbourhood: its
   // part beyond the neighbourhood may be covered by nothing of `after`, so every piece of
@@ -1395,7 +1407,7 @@ void NetRouter::place(std::size_t i, NetAttempt a) {
   for (const Box& b : space_.wire_boxes(i)) changed_.push_back({b, i});
   // what the old wires held that the new ones do not (nothing when only their representation changed)
   if (certifies())
-    for (const Box& b : space_.removed_boxes(out_[i].wires, a.routed ? a.wires : Lines{})) removed_.push_back({b, i});
+    for (const Box& b : space_.removed_boxes(out_[i].wires, a.routed ? a.wires : Lines{}, i)) removed_.push_back({b, i});
   out_[i].routed = a.routed;
   out_[i].shortest = a.routed && a.shortest;
   claims_[i] = Claim{a.window, removed_.size()};

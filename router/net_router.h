@@ -385,9 +385,12 @@ class NetSpace {
   // When a net's wires change from `before` to `after`: boxes whose union holds every point the
   // other nets saw covered by the grown `before` and no longer by the grown `after` (the grown
   // pieces of uncovered_segments; none when only the representation changed, e.g. a wire cut at
-  // a joint or written in the other direction).
+  // a joint or written in the other direction). With a sloped segment in `before`, the boxes of
+  // its whole union (which rounds sloped crossings outward). `net`: `before` are that net's wires
+  // as set_wires holds them (its union is not made again).
   std::vector<geom::Box> removed_boxes(const std::vector<std::vector<geom::Point>>& before,
-                                       const std::vector<std::vector<geom::Point>>& after) const;
+                                       const std::vector<std::vector<geom::Point>>& after,
+                                       std::optional<std::size_t> net = std::nullopt) const;
   // The whole domain, framed (geom::domain_frame), with less in it than any net without wires
   // sees at the Full level: the blockages, every net's grown wires, and the grown blockage edges
   // whose boxes meet no net's pin access (a point pin's access square, a shape pin's box); no

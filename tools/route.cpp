@@ -761,7 +761,7 @@ void add_route(CLI::App& app, int& status) {
         if (off_pins)  // said, not dropped silently
           print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0020", layout->file, net.sketch->line, 0,
                                         "net \"" + net.name + "\": its <sketch> " + io::sketch_off_pins(net) +
-                                            ", so it is not followed: the net is routed without it"}},
+                                            ", so it is not followed: the net is routed as if it had none"}},
                             args->load.quiet);
         if (r.route.status == "routed") {
           ++routed;

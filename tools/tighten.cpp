@@ -409,7 +409,8 @@ void add_tighten(CLI::App& app, int& status) {
         std::vector<char> bad(given.size(), 0);
         using K = router::CheckProblem::Kind;
         for (const router::CheckProblem& p : wire_problems(*layout, domain, plain.obstacles, given))
-          if (p.kind == K::NotFree || p.kind == K::BlockageClearance || p.kind == K::NetClearance || p.kind == K::Short) {
+          if (p.kind == K::NotFree || p.kind == K::BlockageClearance || p.kind == K::NetClearance || p.kind == K::Short ||
+              p.kind == K::Disconnected || p.kind == K::StrayWire) {
             bad[p.net] = 1;
             if (p.other_net) bad[*p.other_net] = 1;
           }
@@ -558,9 +559,10 @@ void add_tighten(CLI::App& app, int& status) {
         if (oc.untightened && !no_staircase) {
           route.status = "failed";
           route.reason = in.source == "wires"
-                             ? "its wires run in directions the output does not have, and could not be pulled taut into "
-                               "them: the other nets' wires came to exactly the clearance on both sides (at or after " +
-                                   point_text(oc.lift.where) + "), leaving no room"
+                             ? "its wires run in directions the output does not have, and a piece of them could not be "
+                               "pulled taut into them (the other nets' wires came to exactly the clearance on both sides "
+                               "of it, or it is kept as it is: a closed piece, or one that touches a shape pin only "
+                               "mid-segment)"
                              : "its sketch could not be pulled taut: the other nets' wires came to exactly the clearance "
                                "on both sides of it (at or after " + point_text(oc.lift.where) + "), leaving it no room";
           print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0010", layout->file, in.line_numbers[0], 0,

@@ -5,6 +5,8 @@
 // answers to bad input (exit status 2 and nothing written, file:line and the net's name).
 #include <gtest/gtest.h>
 
+#include <sstream>
+
 #include <cmath>
 
 #include "geom/directions.h"
@@ -998,9 +1000,13 @@ TEST(Tighten, SketchOffItsPinsIsNotTaken) {
   text.replace(at, pin.size(), "<pin name=\"bottom\" x=\"2000\" y=\"9000\"/>");
   const std::string file = dir + "/in.xml";
   write_text(file, text);
+  // the line of diag's <sketch>
+  const std::size_t sk = text.find("<sketch", text.find("<net name=\"diag\""));
+  ASSERT_NE(sk, std::string::npos);
+  const std::string line = std::to_string(1 + std::count(text.begin(), text.begin() + static_cast<long>(sk), '\n'));
   const auto t = run_taut({"tighten", file, "--clearance", "-o", dir + "/t.xml"});
   EXPECT_EQ(t.status, 1) << t.err;
-  EXPECT_NE(t.err.find(file + ":52: warning: [TIGHTEN-0012] net \"diag\": its <sketch> ends at (38000,9000), not on the "
+  EXPECT_NE(t.err.find(file + ":" + line + ": warning: [TIGHTEN-0012] net \"diag\": its <sketch> ends at (38000,9000), not on the "
                        "second pin \"bottom\""),
             std::string::npos)
       << t.err;
@@ -1017,10 +1023,27 @@ TEST(Tighten, SketchOffItsPinsIsNotTaken) {
   EXPECT_EQ(ct.status, 0) << ct.err;
   const auto r = run_taut({"route", file, "--tighten", "--orientations", "rectilinear", "-o", dir + "/r.xml"});
   EXPECT_LE(r.status, 1) << r.err;
-  EXPECT_NE(r.err.find(file + ":52: warning: [ROUTE-0020] net \"diag\""), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(file + ":" + line + ": warning: [ROUTE-0020] net \"diag\""), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("ROUTE-0007"), std::string::npos) << r.err;
   const auto cr = run_taut({"check", dir + "/r.xml", "-q"});
   EXPECT_EQ(cr.status, 0) << cr.err;
+  // the sketch drawn from the second pin to the first joins them too: taken (LAYOUT-0008 warns of the order)
+  {
+    std::string rev = read_text(kDesigns + "wind.xml");
+    const std::size_t s0 = rev.find("points=\"", rev.find("<sketch", rev.find("<net name=\"diag\""))) + 8;
+    const std::size_t s1 = rev.find('"', s0);
+    std::vector<std::string> pts;
+    std::stringstream ss(rev.substr(s0, s1 - s0));
+    for (std::string p; ss >> p;) pts.insert(pts.begin(), p);
+    std::string joined_pts;
+    for (const auto& p : pts) joined_pts += (joined_pts.empty() ? "" : " ") + p;
+    rev.replace(s0, s1 - s0, joined_pts);
+    write_text(dir + "/rev.xml", rev);
+    const auto tr = run_taut({"tighten", dir + "/rev.xml", "--clearance", "-o", dir + "/rev.t.xml"});
+    EXPECT_EQ(tr.status, 0) << tr.err;
+    EXPECT_EQ(tr.err.find("TIGHTEN-0012"), std::string::npos) << tr.err;
+    EXPECT_EQ(run_taut({"check", dir + "/rev.t.xml", "-q"}).status, 0);
+  }
   // three pins and a sketch, no routed wire: nothing to tighten
   const std::string three = layout_file("tighten_off_pins_three",
                                         "  <blockage id=\"a\"><rect x0=\"40\" y0=\"40\" x1=\"60\" y1=\"60\"/></blockage>\n"
@@ -1070,11 +1093,32 @@ TEST(Tighten, OctilinearRoutesTightened) {
     ASSERT_EQ(run_taut(gen).status, 0);
     const auto r = run_taut({"route", in, "-q", "--orientations", "octilinear", "-o", routed});
     ASSERT_LE(r.status, 1) << r.err;
+    // the routed input has diagonal segments, and how many nets it routes
+    auto routed_nets = [](const std::string& file, bool* diagonal) {
+      io::ReadResult rr = io::read_layout(file);
+      int n = 0;
+      if (!rr.layout || !rr.layout->routes) return -1;
+      for (const io::Route& x : rr.layout->routes->routes) {
+        n += x.status == "routed";
+        for (const io::Wire& w : x.wires)
+          for (std::size_t j = 0; j + 1 < w.points.size() && diagonal; ++j)
+            *diagonal = *diagonal || (w.points[j].x != w.points[j + 1].x && w.points[j].y != w.points[j + 1].y);
+      }
+      return n;
+    };
+    bool diagonal = false;
+    const int routed_in = routed_nets(routed, &diagonal);
+    ASSERT_TRUE(diagonal);
     std::vector<std::string> args{"tighten", routed, "--clearance", "-o", out};
     if (!c.to.empty()) args.insert(args.end(), {"--orientations", c.to});
     const auto t = run_taut(args);
     ASSERT_LE(t.status, 1) << t.err;
     EXPECT_EQ(t.err.find("TIGHTEN-0013") != std::string::npos, c.as_given) << t.err;
+    EXPECT_EQ(t.err.find("TIGHTEN-0010"), std::string::npos) << t.err;  // every other net tightened into rectilinear
+    int failed_as_given = 0;
+    for (std::size_t at = t.err.find("TIGHTEN-0013"); at != std::string::npos; at = t.err.find("TIGHTEN-0013", at + 1))
+      ++failed_as_given;
+    EXPECT_EQ(routed_nets(out, nullptr), routed_in - failed_as_given) << t.err;
     const auto chk = run_taut({"check", out, "-q"});
     EXPECT_EQ(chk.status, 0) << chk.err;
   }
