@@ -81,6 +81,14 @@ bool LatticeDirections::along(i64 dx, i64 dy) const {
   return false;
 }
 
+bool LatticeDirections::runs_along(std::span<const Point> line) const {
+  for (std::size_t j = 0; j + 1 < line.size(); ++j) {
+    const i64 dx = i64{line[j + 1].x} - line[j].x, dy = i64{line[j + 1].y} - line[j].y;
+    if ((dx != 0 || dy != 0) && !along(dx, dy)) return false;
+  }
+  return true;
+}
+
 int LatticeDirections::cone(i64 dx, i64 dy) const {
   const std::size_t n = steps_.size();
   for (std::size_t i = 0; i < n; ++i) {

@@ -58,6 +58,8 @@ class LatticeDirections {
   const std::vector<Point>& steps() const { return steps_; }
   // v (not zero) lies along one of the steps.
   bool along(std::int64_t dx, std::int64_t dy) const;
+  // Every segment of the polyline of non-zero length lies along one of the steps.
+  bool runs_along(std::span<const Point> line) const;
   // The open cone holding v's direction (v not zero), or -1 when v lies along a step.
   int cone(std::int64_t dx, std::int64_t dy) const;
   // The cone's two steps (counter-clockwise order).

@@ -393,12 +393,7 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
   // output does not have).
   std::vector<std::vector<char>> fresh(n);
   auto off_set = [&](const std::vector<Point>& line) {
-    if (!options_.orientations.set) return false;
-    for (std::size_t j = 0; j + 1 < line.size(); ++j) {
-      const std::int64_t dx = std::int64_t{line[j + 1].x} - line[j].x, dy = std::int64_t{line[j + 1].y} - line[j].y;
-      if ((dx != 0 || dy != 0) && !options_.orientations.set->along(dx, dy)) return true;
-    }
-    return false;
+    return options_.orientations.set && !options_.orientations.set->runs_along(line);
   };
   auto mark_off_set = [&](std::size_t i) {  // a net of wires: its pieces outside the set, if any
     fresh[i].clear();

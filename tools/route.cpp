@@ -623,9 +623,15 @@ void add_route(CLI::App& app, int& status) {
       // With --tighten a two-pin net's sketch, or a loop sketch on any net, is what gets tightened.
       // (A two-pin net's open sketch that misses a pin is not followed: the net is routed without
       // it, ROUTE-0020, since its tightened sketch would join nothing.)
-      auto follows_sketch = [&](const io::Net& net) {
+      // per net: why its open sketch misses a pin ("": it joins them, or there is none), found once
+      std::vector<std::string> off_pins(layout->nets.size());
+      for (std::size_t i = 0; i < layout->nets.size() && args->tighten; ++i)
+        if (layout->nets[i].sketch && !WireTightener::is_loop(layout->nets[i].sketch->points))
+          off_pins[i] = io::sketch_off_pins(layout->nets[i]);
+      auto follows_sketch = [&](const io::Net& net) {  // (net: an element of layout->nets)
         return args->tighten && net.sketch &&
-               (WireTightener::is_loop(net.sketch->points) || (net.pins.size() == 2 && io::sketch_off_pins(net).empty()));
+               (WireTightener::is_loop(net.sketch->points) ||
+                (net.pins.size() == 2 && off_pins[static_cast<std::size_t>(&net - layout->nets.data())].empty()));
       };
       // Together (the default): every net among the others' wires and pins, with the clearance of
       // <rules> (router::NetRouter); --independent: each net alone among the blockages.
@@ -756,16 +762,14 @@ void add_route(CLI::App& app, int& status) {
           r = std::move(together[ni]);
           if (r.route.status == "routed") shortest_of[ni] = r.shortest;
         }
-        const bool off_pins = args->tighten && net.sketch && !WireTightener::is_loop(net.sketch->points) &&
-                              !io::sketch_off_pins(net).empty();
-        if (off_pins)  // said, not dropped silently
+        if (!off_pins[ni].empty())  // said, not dropped silently
           print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0020", layout->file, net.sketch->line, 0,
-                                        "net \"" + net.name + "\": its <sketch> " + io::sketch_off_pins(net) +
+                                        "net \"" + net.name + "\": its <sketch> " + off_pins[ni] +
                                             ", so it is not followed: the net is routed as if it had none"}},
                             args->load.quiet);
         if (r.route.status == "routed") {
           ++routed;
-          if (net.sketch && !follows_sketch(net) && !off_pins)  // said, not dropped silently
+          if (net.sketch && !follows_sketch(net) && off_pins[ni].empty())  // said, not dropped silently
             print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0007", layout->file, net.sketch->line, 0,
                                           "net \"" + net.name + "\": the wire is the shortest of any "
                                           "homotopy class and does not follow the <sketch> (--tighten or "

@@ -336,12 +336,7 @@ void add_tighten(CLI::App& app, int& status) {
       const std::optional<geom::LatticeDirections> out_set = tighten_orientations(orientations).set;
       // every segment of the lines along a direction of the output's set (any: every one)
       auto in_directions = [&](const std::vector<std::vector<geom::Point>>& lines) {
-        for (const auto& l : lines)
-          for (std::size_t j = 0; j + 1 < l.size() && out_set; ++j) {
-            const std::int64_t dx = std::int64_t{l[j + 1].x} - l[j].x, dy = std::int64_t{l[j + 1].y} - l[j].y;
-            if ((dx != 0 || dy != 0) && !out_set->along(dx, dy)) return false;
-          }
-        return true;
+        return !out_set || std::all_of(lines.begin(), lines.end(), [&](const auto& l) { return out_set->runs_along(l); });
       };
       bool off_set = false;
       for (std::size_t i = 0; i < layout->nets.size(); ++i)

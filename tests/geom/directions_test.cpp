@@ -56,6 +56,13 @@ TEST(LatticeDirections, StepsAndCones) {
   EXPECT_TRUE(d.along(-4, 0));
   EXPECT_FALSE(d.along(0, 4));
   EXPECT_FALSE(d.along(-4, 4));
+  // a polyline: every segment of non-zero length along a step (a repeated point, one point, none)
+  EXPECT_TRUE(d.runs_along(std::vector<Point>{{0, 0}, {3, 0}, {3, 0}, {5, 2}, {1, 2}}));
+  EXPECT_TRUE(d.runs_along(std::vector<Point>{{4, 4}}));
+  EXPECT_TRUE(d.runs_along(std::vector<Point>{}));
+  EXPECT_FALSE(d.runs_along(std::vector<Point>{{0, 0}, {3, 0}, {3, 2}}));  // north is not in c:0,45
+  EXPECT_TRUE(LatticeDirections::rectilinear().runs_along(std::vector<Point>{{0, 0}, {3, 0}, {3, 2}}));
+  EXPECT_FALSE(LatticeDirections::rectilinear().runs_along(std::vector<Point>{{0, 0}, {3, 0}, {5, 2}}));
 }
 
 // Dijkstra from (0, 0) over [-R, R]^2 with the set's unit steps; twice the lengths.
