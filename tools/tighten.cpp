@@ -222,14 +222,13 @@ void add_tighten(CLI::App& app, int& status) {
       const io::Net& net = layout->nets[i];
       Input& in = inputs[i];
       // A sketch is taken when it is a loop, or joins a two-pin net's pins; one that misses a pin
-      // would be written as a wire that joins nothing (TIGHTEN-0012: failed), and one on a net
-      // without two pins is ignored, as LAYOUT-0009 says (its routed wires, if any, are taken).
+      // would be written as a wire that joins nothing (TIGHTEN-0012: the net's routed wires are
+      // taken instead, else it is failed), and one on a net without two pins is ignored, as
+      // LAYOUT-0009 says (its routed wires, if any, are taken).
       const bool loop = net.sketch && WireTightener::is_loop(net.sketch->points);
       in.ignored_sketch = net.sketch && !loop && net.pins.size() != 2;
       if (net.sketch && !loop && !in.ignored_sketch) in.off_pins = io::sketch_off_pins(net);
-      if (!in.off_pins.empty()) {
-        in.source = "sketch";
-      } else if (net.sketch && !in.ignored_sketch) {
+      if (net.sketch && !in.ignored_sketch && in.off_pins.empty()) {
         in.source = "sketch";
         in.lines.push_back(net.sketch->points);
         in.line_numbers.push_back(net.sketch->line);
@@ -244,6 +243,7 @@ void add_tighten(CLI::App& app, int& status) {
             break;
           }
       }
+      if (!in.off_pins.empty() && in.lines.empty()) in.source = "sketch";  // failed (TIGHTEN-0012)
       for (const auto& l : in.lines) extra.insert(extra.end(), l.begin(), l.end());
     }
 
@@ -433,13 +433,18 @@ void add_tighten(CLI::App& app, int& status) {
       io::Route route;
       route.net = net.name;
       if (!in.off_pins.empty()) {
-        route.status = "failed";
-        route.reason = "its <sketch> " + in.off_pins + ": tightened, it would join nothing";
+        const bool wires = in.source == "wires";
+        const std::string why = "its <sketch> " + in.off_pins + ": tightened, it would join nothing";
         print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0012", layout->file, net.sketch->line, 0,
-                                      "net \"" + net.name + "\": " + *route.reason}},
+                                      "net \"" + net.name + "\": " + why +
+                                          (wires ? "; its routed wires are tightened instead" : "")}},
                           args->load.quiet);
-        routes.routes.push_back(std::move(route));
-        continue;
+        if (!wires) {
+          route.status = "failed";
+          route.reason = why;
+          routes.routes.push_back(std::move(route));
+          continue;
+        }
       }
       if (in.lines.empty()) {
         route.status = "failed";

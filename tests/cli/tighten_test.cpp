@@ -989,7 +989,8 @@ TEST(Tighten, ContractibleLoopIsAFailedNet) {
 // old place). Before 2026-12-05 `tighten` wrote the tightened sketch as the net's routed wire and
 // `route --tighten` followed it: both files failed taut check (CHECK-0004, the pins not joined).
 // Now `tighten` writes the net as failed (TIGHTEN-0012, exit 1) and `route --tighten` routes it
-// without the sketch (ROUTE-0020, not ROUTE-0007); both files pass the check. A sketch on a net
+// without the sketch (ROUTE-0020, not ROUTE-0007); both files pass the check. A net with such a
+// sketch and routed wires gets its routed wires tightened instead. A sketch on a net
 // of three pins is ignored, as LAYOUT-0009 says (it was tightened and written as routed too).
 TEST(Tighten, SketchOffItsPinsIsNotTaken) {
   const std::string dir = temp_dir("tighten_off_pins");
@@ -1027,6 +1028,29 @@ TEST(Tighten, SketchOffItsPinsIsNotTaken) {
   EXPECT_EQ(r.err.find("ROUTE-0007"), std::string::npos) << r.err;
   const auto cr = run_taut({"check", dir + "/r.xml", "-q"});
   EXPECT_EQ(cr.status, 0) << cr.err;
+  // a routed net whose sketch misses its pin: its routed wires are tightened instead (before
+  // 2026-12-05 the net was failed and its wires dropped)
+  {
+    const std::string routed = layout_file(
+        "tighten_off_pins_routed",
+        "  <blockage id=\"a\"><rect x0=\"40\" y0=\"40\" x1=\"60\" y1=\"60\"/></blockage>\n"
+        "  <net name=\"t\"><pin name=\"p\" x=\"10\" y=\"10\"/><pin name=\"q\" x=\"90\" y=\"90\"/>"
+        "<sketch points=\"10,10 10,80 80,80\"/></net>\n"
+        "  <routes><route net=\"t\" status=\"routed\" length=\"240\" bends=\"3\">"
+        "<wire points=\"10,10 10,70 30,70 30,90 90,90\"/></route></routes>\n");
+    const auto rt = run_taut({"tighten", routed, "-o", dir + "/rt.xml"});
+    EXPECT_EQ(rt.status, 0) << rt.err;
+    EXPECT_NE(rt.err.find("warning: [TIGHTEN-0012] net \"t\": its <sketch> ends at (80,80), not on the second pin \"q\": "
+                          "tightened, it would join nothing; its routed wires are tightened instead"),
+              std::string::npos)
+        << rt.err;
+    io::ReadResult rr = io::read_layout(dir + "/rt.xml");
+    ASSERT_TRUE(rr.layout && rr.layout->routes && rr.layout->routes->routes.size() == 1u) << rt.err;
+    const io::Route& x = rr.layout->routes->routes[0];
+    EXPECT_EQ(x.status, "routed");
+    EXPECT_EQ(x.length, std::optional<std::string>("160"));  // from 240: pulled taut
+    EXPECT_EQ(run_taut({"check", dir + "/rt.xml", "-q"}).status, 0);
+  }
   // the sketch drawn from the second pin to the first joins them too: taken (LAYOUT-0008 warns of the order)
   {
     std::string rev = read_text(kDesigns + "wind.xml");
