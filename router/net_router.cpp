@@ -348,7 +348,10 @@ std::optional<Polygon> pad_staircase(const Polygon& pin, std::int64_t step) {
   // rectangle of the y's it holds at both sides; their union (exact: horizontal and vertical
   // edges only) must be one valid polygon: a part too thin for a column splits it, or joins it at
   // a corner only.
+  // (`parts`: the rectangles of the last staircase tried, by column, for the fallback below)
+  std::vector<std::vector<Polygon>> parts;
   auto staircase = [&](std::int64_t width) -> std::optional<Polygon> {
+    parts.clear();
     std::vector<std::int64_t> xs;
     for (std::int64_t x = x0; x < x1; x += width) xs.push_back(x);
     xs.push_back(x1);
@@ -358,11 +361,13 @@ std::optional<Polygon> pad_staircase(const Polygon& pin, std::int64_t step) {
     for (std::size_t k = 0; k + 1 < xs.size(); ++k) {
       const std::int64_t x = xs[k], cw = xs[k + 1] - x;
       column_edges(edges, x, x + cw, ys);
+      parts.emplace_back();
       for (std::size_t i = 0; i + 1 < ys.size(); i += 2) {
         const std::int64_t lo = std::max(ys[i].first, ys[i].second), hi = std::min(ys[i + 1].first, ys[i + 1].second);
         if (lo >= hi) continue;  // a peak's column, or a part one column thin
         const auto c = [](std::int64_t v) { return static_cast<geom::Coord>(v); };
         rects.push_back(Polygon{{{c(x), c(lo)}, {c(x + cw), c(lo)}, {c(x + cw), c(hi)}, {c(x), c(hi)}}, {}});
+        parts.back().push_back(rects.back());
       }
     }
     if (rects.empty()) return std::nullopt;
@@ -376,8 +381,54 @@ std::optional<Polygon> pad_staircase(const Polygon& pin, std::int64_t step) {
   const std::int64_t cols = (x1 - x0) / step;
   for (std::int64_t m = std::max<std::int64_t>(1, (cols + NetSpace::kMaxStaircaseColumns - 1) / NetSpace::kMaxStaircaseColumns);; m /= 2) {
     if (std::optional<Polygon> st = staircase(m * step)) return st;
-    if (m == 1 || cols / (m / 2) > NetSpace::kMaxUnitStaircaseColumns) return std::nullopt;
+    if (m == 1 || cols / (m / 2) > NetSpace::kMaxUnitStaircaseColumns) break;
   }
+  // None is one valid polygon (a part of the pin too thin for a column: a diagonal bar, a neck):
+  // the largest part of the last one tried that is (since 2026-12-05; before, none was taken, and
+  // under the bend-aware metrics such a net was ROUTE-0010 when its pin met the grown blockages).
+  // Its parts: the rectangles joined along edges of positive length (rectangles of one column
+  // are apart; those of consecutive columns share such an edge when their y ranges overlap by
+  // more than a point), each part's union taken when it is one valid polygon, the largest by
+  // area (ties: the first, its columns from the left).
+  std::vector<std::pair<std::size_t, std::size_t>> ids;  // (column, index) of each rectangle
+  for (std::size_t c = 0; c < parts.size(); ++c)
+    for (std::size_t k = 0; k < parts[c].size(); ++k) ids.push_back({c, k});
+  std::vector<std::size_t> parent(ids.size());
+  std::iota(parent.begin(), parent.end(), std::size_t{0});
+  auto find = [&](std::size_t v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (std::size_t u = 0; u < ids.size(); ++u)
+    for (std::size_t v = u + 1; v < ids.size() && ids[v].first <= ids[u].first + 1; ++v) {
+      if (ids[v].first != ids[u].first + 1) continue;
+      const Box a = box_of(parts[ids[u].first][ids[u].second].outer), b = box_of(parts[ids[v].first][ids[v].second].outer);
+      if (a.hi.x == b.lo.x && std::max(a.lo.y, b.lo.y) < std::min(a.hi.y, b.hi.y)) parent[find(v)] = find(u);
+    }
+  struct Part {
+    std::vector<Polygon> rects;
+    __int128 area = 0;
+    std::size_t first = 0;  // its first rectangle's index (from the left)
+  };
+  std::map<std::size_t, Part> groups;  // by root
+  for (std::size_t u = 0; u < ids.size(); ++u) {
+    const Polygon& r = parts[ids[u].first][ids[u].second];
+    const Box b = box_of(r.outer);
+    const auto [it, fresh] = groups.try_emplace(find(u));
+    if (fresh) it->second.first = u;
+    it->second.rects.push_back(r);
+    it->second.area += __int128{std::int64_t{b.hi.x} - b.lo.x} * (std::int64_t{b.hi.y} - b.lo.y);
+  }
+  std::vector<const Part*> order;
+  for (const auto& [root, g] : groups) order.push_back(&g);
+  std::sort(order.begin(), order.end(), [](const Part* a, const Part* b) {
+    return a->area != b->area ? a->area > b->area : a->first < b->first;
+  });
+  for (const Part* g : order) {
+    geom::NormalizedObstacles u = geom::normalize_obstacles(g->rects, box_of(pin.outer));
+    if (u.obstacles.size() == 1 && geom::validate_polygon(u.obstacles[0]).empty()) return std::move(u.obstacles[0]);
+  }
+  return std::nullopt;
 }
 
 NetSpace::~NetSpace() = default;
@@ -2144,9 +2195,9 @@ NetRouter::Explained NetRouter::explain(const NetRouteFn& route, std::size_t net
       if (!is_point_pin(pin) && pin_shape_supported(pin) && !is_pad(pin, false)) {
         e.code = "ROUTE-0010";
         e.reason = "a shape pin with a 45-degree edge lies within " + a +
-                   " DBU (ceil(w/2) + s) of a blockage, and it is too thin for a staircase of rectangles inside "
-                   "it somewhere (unit steps; coarser ones for a pin more than " + std::to_string(NetSpace::kMaxStaircaseColumns) +
-                   " DBU wide): the bend-aware metrics reach such a pin only as its staircase (their router takes "
+                   " DBU (ceil(w/2) + s) of a blockage, and it is too thin for a staircase of rectangles: no cell "
+                   "of the lattice lies inside it (unit steps; coarser ones for a pin more than " + std::to_string(NetSpace::kMaxStaircaseColumns) +
+                   " steps wide): the bend-aware metrics reach such a pin only as its staircase (their router takes "
                    "rectilinear obstacles only)";
         return e;
       }

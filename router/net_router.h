@@ -335,11 +335,15 @@ class NetSpace {
   // (The bend router's work grows with the square of its obstacles' vertices: one net with a
   // diamond pad 20,002 wide took 0.37 s with 256 columns, 1.3 s with 512, 5.3 s with 1,024 and
   // 92 s with 4,096, 2026-12-04.)
-  // Not when its vertices are not on that lattice, or when the rectangles' union is not one valid
-  // polygon (a part of the pin too thin to hold a column's rectangle splits it, or joins it at a
-  // corner): the pin then stays as it is (and the net, when its pin meets the grown blockages, is
-  // not routed: ROUTE-0010 says why). Everything else (the other nets, the checker) sees the pin
-  // itself.
+  // When the rectangles' union is not one valid polygon (a part of the pin too thin to hold a
+  // column's rectangle splits it, or joins it at a corner: a thin diagonal bar, a neck), the
+  // largest part that is: the rectangles joined along edges of positive length, each such part's
+  // union when it is one valid polygon, the one of largest area (since 2026-12-05: before, the pin
+  // stayed as it is, and the net was ROUTE-0010 when its pin met the grown blockages). A wire then
+  // ends on that part only: legal, perhaps longer. Not when its vertices are not on that lattice,
+  // or when no part is one valid polygon (no cell of the lattice lies in the pin): the pin then
+  // stays as it is (and the net, when its pin meets the grown blockages, is not routed: ROUTE-0010
+  // says why). Everything else (the other nets, the checker) sees the pin itself.
   const NetPins& reach(std::size_t i) const {
     const auto it = reach_.find(i);
     return it == reach_.end() ? nets_[i] : it->second;
