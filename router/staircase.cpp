@@ -1,6 +1,7 @@
 #include "router/staircase.h"
 
 #include <algorithm>
+#include <string>
 #include <array>
 #include <limits>
 #include <unordered_map>
@@ -816,7 +817,8 @@ class PieceSolver {
   }
 
   // The greedy staircase leaving a along d[first]: its points (frame), or empty when it gets stuck.
-  std::vector<std::array<i64, 2>> greedy(int first) {
+  // More than `cap` points: StaircaseTooFine (StaircaseOptions::snap_scale).
+  std::vector<std::array<i64, 2>> greedy(int first, std::size_t cap) {
     std::vector<std::array<i64, 2>> pts{{0, 0}};
     std::array<i64, 2> pos{0, 0};
     for (int k = first;; k = 1 - k) {
@@ -825,6 +827,8 @@ class PieceSolver {
       pos[k] = r;
       pts.push_back(pos);
       if (pos[0] == lim_[0] && pos[1] == lim_[1]) return pts;
+      if (pts.size() > cap)
+        throw StaircaseTooFine("a staircase of more than " + std::to_string(cap) + " points, too fine to snap back");
     }
   }
 
@@ -1035,9 +1039,16 @@ LinkSolution solve_piece(Workspace& ws, std::span<const Point> alpha, const geom
   const Frame fr = link_frame(ws, a, b, s.d, s);
   if (fr.lim[0] % fr.q != 0 || fr.lim[1] % fr.q != 0) return s;  // b is off a's lattice: no staircase
   PieceSolver solver(ws, fr, alpha);
+  std::size_t cap = std::numeric_limits<std::size_t>::max();
+  if (const i64 k = ws.im().options.snap_scale; k > 1) {  // StaircaseTooFine
+    i128 l1 = 0;
+    for (std::size_t i = 1; i < alpha.size(); ++i)
+      l1 += std::abs(i64{alpha[i].x} - alpha[i - 1].x) + std::abs(i64{alpha[i].y} - alpha[i - 1].y);
+    cap = static_cast<std::size_t>(16 + 4 * static_cast<i128>(alpha.size()) + 4 * l1 / k);
+  }
   for (int f = 0; f < 2; ++f) {
     if (s.start_wedge[f] < 0) continue;
-    const std::vector<std::array<i64, 2>> g = solver.greedy(f);
+    const std::vector<std::array<i64, 2>> g = solver.greedy(f, cap);
     if (g.empty()) continue;
     const int links = static_cast<int>(g.size()) - 1;
     const int l = (links % 2 == 1) ? f : 1 - f;

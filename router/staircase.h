@@ -67,6 +67,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <vector>
 
 #include "geom/directions.h"
@@ -88,6 +89,22 @@ struct StaircaseOptions {
   // staircase_in_class: the width of the first slab a run gathers its walls from (doubled per
   // slab). Only speed depends on it; the tests set 1 so that small layouts use many slabs.
   std::int64_t first_slab = 32;
+  // > 1: the plane is scaled by it, and its staircases are snapped back to multiples of it
+  // (router::tighten_scaled): staircase_in_class throws StaircaseTooFine for a piece whose
+  // staircase has more than 16 + 4 m + 4 L / snap_scale points (m the piece's vertices, L its L1
+  // length), stopping there (see StaircaseTooFine).
+  std::int64_t snap_scale = 1;
+};
+
+// A piece's staircase in a plane scaled by K (StaircaseOptions::snap_scale) with more points than
+// 16 + 4 m + 4 L / K: its links average under K / 4 in L1 length beyond those the bends need, so
+// snapped back to multiples of K they collapse or turn out of the set's directions. A staircase
+// is that fine only along a stretch of free space about as narrow as the plane's unit, which a
+// corridor of exactly the clearance is there, running in a direction the set lacks (a vertical
+// one under c:45,135); its links grow with K times the stretch's length (before 2026-12-05,
+// `tighten --clearance` to such a set took minutes and tens of GB there, K being up to 8192).
+struct StaircaseTooFine : std::runtime_error {
+  using std::runtime_error::runtime_error;
 };
 
 struct StaircaseStats {

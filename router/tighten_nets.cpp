@@ -18,15 +18,20 @@ using geom::Box;
 using geom::Point;
 using geom::Polygon;
 
-SpaceTightener::SpaceTightener(const geom::NormalizedObstacles& norm, TightenOrientations orientations)
-    : orientations_(orientations), tri_(geom::triangulate_free_space(norm.domain, norm.obstacles)) {
+SpaceTightener::SpaceTightener(const geom::NormalizedObstacles& norm, TightenOrientations orientations,
+                               std::int64_t snap_scale)
+    : orientations_(orientations), snap_scale_(snap_scale), tri_(geom::triangulate_free_space(norm.domain, norm.obstacles)) {
   if (!tri_.ok()) {
     std::string why;
     for (const Diagnostic& d : tri_.diagnostics()) why += " [" + d.code + "] " + d.message;
     throw std::logic_error("the free space of normalized obstacles could not be triangulated:" + why);
   }
   tight_ = std::make_unique<Tightener>(tri_);
-  if (orientations_.set) sb_ = std::make_unique<StaircaseBuilder>(norm.domain, norm.obstacles);
+  if (orientations_.set) {
+    StaircaseOptions so;
+    so.snap_scale = snap_scale_;
+    sb_ = std::make_unique<StaircaseBuilder>(norm.domain, norm.obstacles, so);
+  }
 }
 
 bool SpaceTightener::is_loop(std::span<const Point> line) {
@@ -57,7 +62,12 @@ SpaceTightener::Result SpaceTightener::run(std::span<const Point> line) const {
   }
   r.points = r.taut.points;
   if (sb_) {
-    COriented c = c_oriented(*tight_, *sb_, r.taut.points, *orientations_.set);
+    COriented c;
+    try {
+      c = c_oriented(*tight_, *sb_, r.taut.points, *orientations_.set);
+    } catch (const StaircaseTooFine&) {  // (snap_scale_ > 1 only)
+      r.too_fine = true;
+    }
     if (c.points.empty()) {
       r.no_staircase = true;
       r.points.clear();
@@ -347,7 +357,7 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
       ++stats_.windows;
       stats_.whole += whole;
       const SpaceTightener st(space.obstacles(i, NetSpaceLevel::Full, whole ? std::nullopt : std::optional<Box>(w)),
-                              options_.orientations);
+                              options_.orientations, options_.snap_scale);
       SpaceTightener::Result r = st.run(line);
       if (whole || r.taut.status != TightenStatus::Ok || r.contractible || !on_inner_side(r.taut.points, w, dom))
         return std::make_pair(std::move(r), w);
@@ -594,7 +604,9 @@ std::optional<std::vector<NetLines>> tighten_scaled(const geom::Box& domain, std
   std::vector<NetLines> kw;
   kw.reserve(wires.size());
   for (const NetLines& w : wires) kw.push_back(scaled_wires(w, k));
-  NetsTightener nt(space, options);
+  NetsTightenOptions scaled_options = options;
+  scaled_options.snap_scale = k;
+  NetsTightener nt(space, scaled_options);
   std::vector<NetTightenOutcome> out = nt.run(kw, kind);
   if (stats) *stats = nt.stats();
 
@@ -627,6 +639,11 @@ std::optional<std::vector<NetLines>> tighten_scaled(const geom::Box& domain, std
     *outcomes = std::move(out);
   }
   if (far) return std::nullopt;
+  // (a wire in the set's directions scaled must be so snapped: links shorter than k collapse or turn)
+  if (const auto& set = options.orientations.set)
+    for (std::size_t i = 0; i < kw.size(); ++i)
+      for (std::size_t j = 0; j < kw[i].size(); ++j)
+        if (set->runs_along(kw[i][j]) && !set->runs_along(back[i][j])) return std::nullopt;
   for (std::size_t i = 0; i < wires.size(); ++i)
     if (!wires[i].empty() && !(i < kind.size() && kind[i] == NetsTightener::Input::Sketch) &&
         (back[i].empty() || oct_length(wires[i]) < oct_length(back[i])))

@@ -45,6 +45,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <span>
 #include <string>
 #include <vector>
@@ -73,11 +74,15 @@ inline const TightenOrientations TightenOrientations::Octilinear{geom::LatticeDi
 // and for output in a lattice direction set the staircase builder.
 class SpaceTightener {
  public:
-  SpaceTightener(const geom::NormalizedObstacles& norm, TightenOrientations orientations);
+  // snap_scale K > 1 (a plane scaled by K, whose results are snapped back to multiples of K):
+  // a staircase too fine to survive that (StaircaseTooFine, staircase.h) is not built, and the
+  // piece is taken as having none (no_staircase, too_fine).
+  SpaceTightener(const geom::NormalizedObstacles& norm, TightenOrientations orientations, std::int64_t snap_scale = 1);
   struct Result {
     Tightened taut;                   // the lift and the Euclidean shortest path of the class
     std::vector<geom::Point> points;  // in the orientations (a repeated point for a one-point wire)
-    bool no_staircase = false;        // c-oriented: no lattice staircase in the class
+    bool no_staircase = false;        // c-oriented: no lattice staircase in the class (or too_fine)
+    bool too_fine = false;            // c-oriented, snap_scale > 1: the staircase was too fine to snap back
     bool loop = false;                // the line was closed: `points` is the shortest closed loop
     bool contractible = false;        // a loop that winds around nothing
   };
@@ -90,6 +95,7 @@ class SpaceTightener {
 
  private:
   TightenOrientations orientations_;
+  std::int64_t snap_scale_ = 1;
   geom::FreeSpaceTriangulation tri_;
   std::unique_ptr<Tightener> tight_;
   std::unique_ptr<StaircaseBuilder> sb_;
@@ -102,6 +108,7 @@ struct NetsTightenOptions {
   int max_rounds = 100;  // a guard: the rounds end by themselves (see above)
   bool windows = true;          // false: every wire on the whole domain (tests)
   std::function<bool()> stop;   // asked before every window: true throws NetRouterStopped
+  std::int64_t snap_scale = 1;  // > 1: the plane is scaled by it (tighten_scaled sets it; SpaceTightener)
 };
 
 struct NetsTightenStats {
@@ -206,7 +213,10 @@ NetLines join_at_twos(const NetLines& wires, std::span<const geom::Polygon> pins
 // (octilinear length, exactly). The caller checks the result with its rules (router::check_routes)
 // before it takes it. `stats`: the tightening's; `outcomes`: its per-net outcomes, with the
 // lengths in layout units (divided by k) and every point (pieces, lift.where) still in the
-// scaled plane.
+// scaled plane. Also nullopt when a wire that ran in the set's directions in the scaled plane
+// does not after the snap (links shorter than k collapse, or turn). A staircase too fine to snap
+// back is not built there (StaircaseTooFine): its piece stays untightened (NetTightenOutcome::
+// untightened), so the caller works in the layout's units.
 std::optional<std::vector<NetLines>> tighten_scaled(const geom::Box& domain, std::span<const geom::Polygon> obstacles,
                                                     std::vector<NetPins> nets, NetRules rules, std::int64_t k,
                                                     const std::vector<NetLines>& wires, std::span<const NetsTightener::Input> kind,

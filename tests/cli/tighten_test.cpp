@@ -1080,6 +1080,40 @@ TEST(Tighten, SketchOffItsPinsIsNotTaken) {
       << t3.err;
 }
 
+// Staircases too fine to snap back (found by a seeded search, 2026-12-05): `tighten --clearance`
+// tightens first in the net router's scaled plane (K up to 8192), where a gap of exactly the
+// clearance is 2 units wide. A sketch up such a vertical gap, to c:45,135 (no vertical), was
+// staircased there in zigzags of 2 units: about K x 1,000 links, then unioned into the space;
+// the run took minutes and over 20 GB. Such a staircase is now not built (router::
+// StaircaseTooFine): the piece is left untightened there, so the layout's units decide, where
+// the gap is closed: net "a" is TIGHTEN-0011 (its sketch keeps exactly the clearance), "n" (ends
+// of different parity of x + y) TIGHTEN-0004, both written as failed, exit 1. With rectilinear
+// output "a" is tightened up the gap.
+TEST(Tighten, StaircasesTooFineForTheScaledPlaneAreNotBuilt) {
+  const std::string dir = temp_dir("tighten_too_fine");
+  const std::string file = layout_file(
+      "tighten_too_fine_in",
+      "  <boundary x0=\"0\" y0=\"0\" x1=\"4000\" y1=\"4000\"/>\n"
+      "  <rules wire-width=\"100\" spacing=\"100\" orientations=\"rectilinear\"/>\n"
+      "  <blockage id=\"l\"><rect x0=\"0\" y0=\"1000\" x1=\"1000\" y1=\"3000\"/></blockage>\n"
+      "  <blockage id=\"r\"><rect x0=\"1300\" y0=\"1000\" x1=\"2500\" y1=\"3000\"/></blockage>\n"
+      "  <net name=\"a\"><pin name=\"s\" x=\"1150\" y=\"400\"/><pin name=\"t\" x=\"1400\" y=\"3800\"/>\n"
+      "    <sketch points=\"1150,400 1150,3500 1400,3800\"/></net>\n"
+      "  <net name=\"n\"><pin name=\"p\" x=\"3000\" y=\"3500\"/><pin name=\"q\" x=\"3001\" y=\"3500\"/>\n"
+      "    <sketch points=\"3000,3500 3001,3500\"/></net>\n");
+  const auto t = run_taut({"tighten", file, "--clearance", "--orientations", "c:45,135", "-o", dir + "/t.xml"});
+  EXPECT_EQ(t.status, 1) << t.err;
+  EXPECT_NE(t.err.find("warning: [TIGHTEN-0011] net \"a\": its sketch could not be tightened"), std::string::npos) << t.err;
+  EXPECT_NE(t.err.find("warning: [TIGHTEN-0004] net \"n\""), std::string::npos) << t.err;
+  io::ReadResult rr = io::read_layout(dir + "/t.xml");
+  ASSERT_TRUE(rr.layout && rr.layout->routes) << t.err;
+  for (const io::Route& r : rr.layout->routes->routes) EXPECT_EQ(r.status, "failed") << r.net;
+  EXPECT_EQ(run_taut({"check", dir + "/t.xml", "-q"}).status, 0);
+  const auto rect = run_taut({"tighten", file, "--clearance", "--orientations", "rectilinear", "-o", dir + "/r.xml"});
+  EXPECT_EQ(rect.status, 0) << rect.err;
+  EXPECT_EQ(wires_of(dir + "/r.xml", "a"), (std::vector<Path>{{{1150, 400}, {1150, 3800}, {1400, 3800}}}));
+}
+
 // Octilinear routes tightened by `taut tighten --clearance` (found by a seeded search over
 // `taut gen` layouts routed and tightened, 2026-12-05):
 // - into rectilinear (the default without <rules orientations>, or --orientations rectilinear):
