@@ -349,10 +349,15 @@ FreeSpaceChecker::Verdict FreeSpaceChecker::polyline(std::span<const Point> poin
     v = impl_->segment(p[i], p[i + 1]);
     if (!v.free) return v;
   }
-  for (std::size_t i = 1; i + 1 < p.size(); ++i) {
+  // (a closed polyline, last point = first, also passes through its first point: that is checked
+  // as a bend between its last segment and its first; since 2026-12-05, before which a closed
+  // wire through a point where blockages touch passed when that point was its first)
+  const bool closed = p.size() >= 3 && p.front() == p.back();
+  for (std::size_t i = closed ? 0 : 1; i + 1 < p.size(); ++i) {
     const Impl::Around r = impl_->around(p[i]);
     if (!r.on_ring) continue;
-    if (!r.in_one(dir(p[i], p[i - 1]), dir(p[i], p[i + 1]))) {
+    const Point before = i == 0 ? p[p.size() - 2] : p[i - 1];
+    if (!r.in_one(dir(p[i], before), dir(p[i], p[i + 1]))) {
       v.free = false;
       v.at = p[i];
       v.obstacle = r.hit;

@@ -298,6 +298,13 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t, std
     bool changed = false;
     std::optional<MetalGraph> graph = metal_graph(t.wires, pins, kOctilinear);
     if (!graph) return changes;  // not rectilinear (octilinear): left as it is
+    // A node where blockages touch (a wire passes through the point, each time in one of its free
+    // wedges: a way round a pinch that comes back to it): the graph joins its edges there, whatever
+    // their wedges, so a path through it could cross from one wedge to another (dropping the way
+    // round, seed 3070 of a search over `taut gen` layouts, 2026-12-05, where `route --tree steiner`
+    // then failed taut check with CHECK-0003). Such a tree is left as it is.
+    for (const Point n : graph->nodes)
+      if (wavefront_.vertex_wedges(n).size() > 1) return changes;
     // Pads (shape pins) are metal: the nodes lying on one are key (a path ends where it meets
     // a pad) and joined through it.
     std::vector<std::vector<std::size_t>> members(pads.size()), pad_of(graph->nodes.size());

@@ -4,7 +4,9 @@
 // tests/oracle/l1_oracle.h), on the degenerate layouts of the wavefront tests (rectangles
 // touching at corners and along edges, flush with the domain side, diamonds, rings closed by
 // pinches, holes touching their shells, coordinates near 2^30), with random polylines through
-// obstacle vertices, pinch points, points on edges and points anywhere. Then connectivity and
+// obstacle vertices, pinch points, points on edges and points anywhere (a fifth of them closed:
+// since 2026-12-05 a closed polyline is also checked at its first point, where it bends from its
+// last segment to its first). Then connectivity and
 // shorts on hand-made nets, each problem found once and named.
 #include "router/check.h"
 
@@ -35,7 +37,7 @@ std::string str(std::span<const Point> ps) {
 
 TEST(FreeSpaceChecker, AgreesWithTheReferenceOnRandomPolylines) {
   int failed = 0;
-  long long polylines = 0, legal = 0, through_pinch = 0;
+  long long polylines = 0, legal = 0, through_pinch = 0, loops = 0, at_start = 0;
   const int seeds = kSanitized ? 150 : 1500;
   for (int seed = 1; seed <= seeds; ++seed) {
     const WavefrontCase c = make_wavefront_case(static_cast<std::uint64_t>(seed));
@@ -72,8 +74,21 @@ TEST(FreeSpaceChecker, AgreesWithTheReferenceOnRandomPolylines) {
         line.push_back(p);
       }
       if (line.size() < 2) continue;
+      // every fifth: closed (its last point its first), which passes through its first point too:
+      // free when it is free as drawn and as drawn from its second point round to it (so that
+      // the first point is a bend; the reference takes open paths)
+      const bool close = q % 5 == 4 && line.size() >= 3;
+      if (close) line.push_back(line.front());
       ++polylines;
-      const bool want = ref.check_path(line).has_value();
+      bool want = ref.check_path(line).has_value();
+      if (close) {
+        std::vector<Point> turned(line.begin() + 1, line.end());
+        turned.push_back(line[1]);
+        const bool as_drawn = want;
+        want = want && ref.check_path(turned).has_value();
+        ++loops;
+        at_start += as_drawn && !want;
+      }
       const router::FreeSpaceChecker::Verdict got = checker.polyline(line);
       legal += want;
       for (std::size_t i = 1; i + 1 < line.size(); ++i) through_pinch += want && ref.wedges_at(line[i]).size() >= 2;
@@ -85,11 +100,41 @@ TEST(FreeSpaceChecker, AgreesWithTheReferenceOnRandomPolylines) {
       if (checker.point_free(p) != ref.is_free(p) && failed++ < 10)
         ADD_FAILURE() << "seed " << seed << ": point " << p.x << "," << p.y << ": reference " << ref.is_free(p);
   }
-  std::printf("%lld polylines on %d layouts, %lld free (%lld passing a pinch in one wedge)\n", polylines, seeds, legal,
-              through_pinch);
+  std::printf("%lld polylines on %d layouts, %lld free (%lld passing a pinch in one wedge); %lld closed, %lld of them not "
+              "free only at their first point\n",
+              polylines, seeds, legal, through_pinch, loops, at_start);
   EXPECT_EQ(failed, 0);
   EXPECT_GE(legal, polylines / 10);
   EXPECT_GE(polylines - legal, polylines / 10);
+}
+
+// A closed wire through the point where two squares touch at their corners (found by a seeded
+// search with `taut tighten`, 2026-12-05): not free wherever it starts; before 2026-12-05 the
+// checker passed it when that point was its first. The same square loop round a corner of one
+// square only is free, from each of its points.
+TEST(FreeSpaceChecker, ClosedWiresAreCheckedAtTheirFirstPoint) {
+  geom::NormalizedObstacles norm = geom::normalize_obstacles(
+      std::vector<geom::Polygon>{geom::Polygon{{{800, 800}, {1200, 800}, {1200, 1200}, {800, 1200}}, {}},
+                                 geom::Polygon{{{1200, 1200}, {1600, 1200}, {1600, 1600}, {1200, 1600}}, {}}},
+      geom::Box{{0, 0}, {3000, 3000}});
+  const router::FreeSpaceChecker checker(norm);
+  const std::vector<Point> loop{{1200, 1200}, {1200, 1700}, {1700, 1700}, {1700, 1200}, {1200, 1200}};
+  for (std::size_t k = 0; k + 1 < loop.size(); ++k) {
+    std::vector<Point> turned(loop.begin() + static_cast<std::ptrdiff_t>(k), loop.end() - 1);
+    turned.insert(turned.end(), loop.begin(), loop.begin() + static_cast<std::ptrdiff_t>(k) + 1);
+    const router::FreeSpaceChecker::Verdict v = checker.polyline(turned);
+    EXPECT_FALSE(v.free) << "from " << str(std::span<const Point>(turned).first(1));
+    if (!v.free) {
+      EXPECT_EQ(v.at, (Point{1200, 1200}));
+    }
+  }
+  // round the first square's top-left corner only (free), from each point
+  const std::vector<Point> free_loop{{700, 1200}, {700, 1300}, {900, 1300}, {900, 1200}, {700, 1200}};
+  for (std::size_t k = 0; k + 1 < free_loop.size(); ++k) {
+    std::vector<Point> turned(free_loop.begin() + static_cast<std::ptrdiff_t>(k), free_loop.end() - 1);
+    turned.insert(turned.end(), free_loop.begin(), free_loop.begin() + static_cast<std::ptrdiff_t>(k) + 1);
+    EXPECT_TRUE(checker.polyline(turned).free) << "from " << str(std::span<const Point>(turned).first(1));
+  }
 }
 
 }  // namespace check_test

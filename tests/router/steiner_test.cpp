@@ -10,6 +10,7 @@
 // lengthens a tree (against the same search without it).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <optional>
 #include <random>
@@ -27,6 +28,7 @@
 #include "router/pin_shapes.h"
 #include "support/random_shapes.h"
 #include "support/sanitized.h"
+#include "support/wavefront_cases.h"
 
 namespace taut::test {
 namespace steiner_test {
@@ -511,6 +513,72 @@ TEST(SteinerTree, NoBranchPointAtAPinch) {
     const auto problems = router::check_routes(norm, std::vector<router::CheckNet>{net}).problems;
     EXPECT_TRUE(problems.empty()) << problems.front().message;
   }
+}
+
+// A way round a pinch that comes back to it: blockage a (x <= 100, 0 <= y <= 100) touches b
+// (100..200 x 100..300) at its corner (100, 100), a pin lies on a's top edge left of the
+// pinch and the others below a. The path to the top pin goes up a's right side to the pinch and
+// round b back to it, then left (legal: each pass through the pinch stays in one free wedge).
+// The improvement pass took the tree as a graph of its metal, joined at the pinch, and dropped
+// the way round b as a redundant cycle, leaving a wire that crossed the pinch (seed 3070 of a
+// search over `taut gen` layouts, 2026-12-05: `route --tree steiner` failed taut check,
+// CHECK-0003). A tree with a node at a pinch is now left as the wavefront grew it.
+TEST(SteinerTree, NoCycleDroppedAtAPinch) {
+  const std::vector<geom::Box> boxes{{{-1000, 0}, {100, 100}}, {{100, 100}, {200, 300}}};
+  const geom::NormalizedObstacles norm =
+      geom::normalize_obstacles(box_polygons(boxes), geom::Box{{-2000, -2000}, {2000, 2000}});
+  router::L1Router router(norm.domain, norm.obstacles);
+  const std::vector<Point> pins{{50, -400}, {-300, -300}, {50, 100}};
+  const auto t = router.steiner(pins);
+  ASSERT_EQ(t.status, router::WireStatus::Ok);
+  router::CheckNet net;
+  net.name = "n";
+  net.routed = true;
+  for (std::size_t i = 0; i < pins.size(); ++i) net.pins.push_back({"p" + std::to_string(i), pins[i], std::nullopt, static_cast<int>(i)});
+  for (const auto& w : t.wires) net.wires.push_back({w, 100});
+  const auto problems = router::check_routes(norm, std::vector<router::CheckNet>{net}).problems;
+  EXPECT_TRUE(problems.empty()) << problems.front().message;
+}
+
+// Steiner trees on the wavefront tests' degenerate layouts (rectangles touching at corners and
+// along edges, rings closed by pinches, holes touching their shells, diamonds, coordinates near
+// 2^30; support/wavefront_cases.h), 3 to 6 pins among each case's free candidates: every tree
+// the router returns passes the independent checker's free-space and connectivity tests (the
+// random tests above draw blockages apart, so no tree there meets a pinch). With the improvement
+// pass that dropped ways round a pinch (before 2026-12-05, NoCycleDroppedAtAPinch) seeds 66 and
+// 544 fail here: a wire through a point where blockages touch.
+TEST(SteinerTree, LegalOnDegenerateLayouts) {
+  int failed = 0, trees = 0, seeds = 0;
+  for (int seed = 1; seed <= (kSanitized ? 60 : 600); ++seed) {
+    const WavefrontCase c = make_wavefront_case(static_cast<std::uint64_t>(seed));
+    if (c.huge) continue;  // (the Steiner moves' grid is the obstacles' coordinates: fine, but slow there)
+    ++seeds;
+    geom::NormalizedObstacles norm;
+    norm.domain = c.domain;
+    norm.obstacles = c.obstacles;
+    const router::FreeSpaceChecker free(norm);
+    std::vector<Point> cand;
+    for (const Point p : c.candidates)
+      if (free.point_free(p) && std::find(cand.begin(), cand.end(), p) == cand.end()) cand.push_back(p);
+    if (cand.size() < 3) continue;
+    std::mt19937 rng(static_cast<unsigned>(97000 + seed));
+    std::shuffle(cand.begin(), cand.end(), rng);
+    cand.resize(std::min<std::size_t>(cand.size(), 3 + rng() % 4));
+    router::L1Router router(norm.domain, norm.obstacles);
+    const auto t = router.steiner(cand);
+    if (t.status != router::WireStatus::Ok) continue;  // walled in: WalledInAndBlockedPins
+    ++trees;
+    router::CheckNet net;
+    net.name = "n";
+    net.routed = true;
+    for (std::size_t i = 0; i < cand.size(); ++i) net.pins.push_back({"p" + std::to_string(i), cand[i], std::nullopt, static_cast<int>(i)});
+    for (const auto& w : t.wires) net.wires.push_back({w, 100});
+    for (const auto& pr : router::check_routes(norm, std::vector<router::CheckNet>{net}).problems)
+      if (failed++ < 8) ADD_FAILURE() << "seed " << seed << " (" << c.family << "): " << pr.message;
+  }
+  std::printf("%d Steiner trees on %d degenerate layouts passed the checker\n", trees, seeds);
+  EXPECT_EQ(failed, 0);
+  EXPECT_GT(trees, seeds / 3);
 }
 
 }  // namespace steiner_test
