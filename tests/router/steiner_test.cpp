@@ -492,6 +492,17 @@ TEST(SteinerTree, OctilinearPointMovesReachTheMinimumOfTwoHardNets) {
   });
 }
 
+// The independent checker's problems with one net of point pins routed by `wires` (no rules).
+std::vector<router::CheckProblem> tree_problems(const geom::NormalizedObstacles& norm, std::span<const Point> pins,
+                                                const std::vector<std::vector<Point>>& wires) {
+  router::CheckNet net;
+  net.name = "n";
+  net.routed = true;
+  for (std::size_t i = 0; i < pins.size(); ++i) net.pins.push_back({"p" + std::to_string(i), pins[i], std::nullopt, static_cast<int>(i)});
+  for (const auto& w : wires) net.wires.push_back({w, 100});
+  return router::check_routes(norm, std::vector<router::CheckNet>{net}).problems;
+}
+
 // Two blockages touching at a corner (a pinch, which no wire may pass): pins on both sides of it
 // near the touching point. A Steiner point move must not put the branch point on the pinch (the
 // moves' candidate grid holds it: it is an obstacle vertex); the tree goes round a blockage, and
@@ -505,12 +516,7 @@ TEST(SteinerTree, NoBranchPointAtAPinch) {
                                          std::vector<Point>{{16, 24}, {24, 16}, {19, 21}}}) {
     const auto t = router.steiner(pins);
     ASSERT_EQ(t.status, router::WireStatus::Ok);
-    router::CheckNet net;
-    net.name = "n";
-    net.routed = true;
-    for (std::size_t i = 0; i < pins.size(); ++i) net.pins.push_back({"p" + std::to_string(i), pins[i], std::nullopt, static_cast<int>(i)});
-    for (const auto& w : t.wires) net.wires.push_back({w, 100});
-    const auto problems = router::check_routes(norm, std::vector<router::CheckNet>{net}).problems;
+    const auto problems = tree_problems(norm, pins, t.wires);
     EXPECT_TRUE(problems.empty()) << problems.front().message;
   }
 }
@@ -531,12 +537,7 @@ TEST(SteinerTree, NoCycleDroppedAtAPinch) {
   const std::vector<Point> pins{{50, -400}, {-300, -300}, {50, 100}};
   const auto t = router.steiner(pins);
   ASSERT_EQ(t.status, router::WireStatus::Ok);
-  router::CheckNet net;
-  net.name = "n";
-  net.routed = true;
-  for (std::size_t i = 0; i < pins.size(); ++i) net.pins.push_back({"p" + std::to_string(i), pins[i], std::nullopt, static_cast<int>(i)});
-  for (const auto& w : t.wires) net.wires.push_back({w, 100});
-  const auto problems = router::check_routes(norm, std::vector<router::CheckNet>{net}).problems;
+  const auto problems = tree_problems(norm, pins, t.wires);
   EXPECT_TRUE(problems.empty()) << problems.front().message;
 }
 
@@ -568,12 +569,7 @@ TEST(SteinerTree, LegalOnDegenerateLayouts) {
     const auto t = router.steiner(cand);
     if (t.status != router::WireStatus::Ok) continue;  // walled in: WalledInAndBlockedPins
     ++trees;
-    router::CheckNet net;
-    net.name = "n";
-    net.routed = true;
-    for (std::size_t i = 0; i < cand.size(); ++i) net.pins.push_back({"p" + std::to_string(i), cand[i], std::nullopt, static_cast<int>(i)});
-    for (const auto& w : t.wires) net.wires.push_back({w, 100});
-    for (const auto& pr : router::check_routes(norm, std::vector<router::CheckNet>{net}).problems)
+    for (const auto& pr : tree_problems(norm, cand, t.wires))
       if (failed++ < 8) ADD_FAILURE() << "seed " << seed << " (" << c.family << "): " << pr.message;
   }
   std::printf("%d Steiner trees on %d degenerate layouts passed the checker\n", trees, seeds);
