@@ -1,9 +1,9 @@
 #include "router/staircase.h"
 
 #include <algorithm>
-#include <string>
 #include <array>
 #include <limits>
+#include <string>
 #include <unordered_map>
 #include <utility>
 

@@ -65,8 +65,7 @@ SpaceTightener::Result SpaceTightener::run(std::span<const Point> line) const {
     COriented c;
     try {
       c = c_oriented(*tight_, *sb_, r.taut.points, *orientations_.set);
-    } catch (const StaircaseTooFine&) {  // (snap_scale_ > 1 only)
-      r.too_fine = true;
+    } catch (const StaircaseTooFine&) {  // (snap_scale_ > 1 only): taken as none
     }
     if (c.points.empty()) {
       r.no_staircase = true;

@@ -76,13 +76,13 @@ class SpaceTightener {
  public:
   // snap_scale K > 1 (a plane scaled by K, whose results are snapped back to multiples of K):
   // a staircase too fine to survive that (StaircaseTooFine, staircase.h) is not built, and the
-  // piece is taken as having none (no_staircase, too_fine).
+  // piece is taken as having none (no_staircase).
   SpaceTightener(const geom::NormalizedObstacles& norm, TightenOrientations orientations, std::int64_t snap_scale = 1);
   struct Result {
     Tightened taut;                   // the lift and the Euclidean shortest path of the class
     std::vector<geom::Point> points;  // in the orientations (a repeated point for a one-point wire)
-    bool no_staircase = false;        // c-oriented: no lattice staircase in the class (or too_fine)
-    bool too_fine = false;            // c-oriented, snap_scale > 1: the staircase was too fine to snap back
+    bool no_staircase = false;        // c-oriented: no lattice staircase in the class, or (snap_scale
+                                      // > 1) one too fine to snap back
     bool loop = false;                // the line was closed: `points` is the shortest closed loop
     bool contractible = false;        // a loop that winds around nothing
   };
