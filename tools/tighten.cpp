@@ -247,6 +247,29 @@ void add_tighten(CLI::App& app, int& status) {
       for (const auto& l : in.lines) extra.insert(extra.end(), l.begin(), l.end());
     }
 
+    // Routed wires in directions the output lacks, by default (no --orientations): said, since
+    // the default (<rules orientations>, else rectilinear) may not be the directions the file was
+    // routed in (route --orientations octilinear over rectilinear rules), and their staircases
+    // are longer (TIGHTEN-0014, since 2026-12-05).
+    if (o.empty() && layout->routes && orientations != "any") {
+      const auto set = geom::LatticeDirections::parse(orientations);
+      std::size_t off = 0, first = 0;
+      for (std::size_t i = 0; i < inputs.size(); ++i)
+        if (inputs[i].source == "wires" && set &&
+            !std::all_of(inputs[i].lines.begin(), inputs[i].lines.end(), [&](const auto& l) { return set->runs_along(l); }))
+          if (off++ == 0) first = i;
+      if (off > 0)
+        print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0014", layout->file, layout->routes->line, 0,
+                                      std::to_string(off) + " net" + (off == 1 ? "'s" : "s'") + " routed wires (net \"" +
+                                          layout->nets[first].name + "\"" + (off > 1 ? " and others" : "") +
+                                          ") run in directions outside " + orientations + ", the output's (" +
+                                          (layout->rules ? "from <rules orientations>" : "the default") +
+                                          "): they are written as " + orientations + " staircases, which may be longer; "
+                                          "--orientations " + (layout->routes->orientations.empty() ? "SET" : layout->routes->orientations) +
+                                          " keeps their directions"}},
+                          args->load.quiet);
+    }
+
     // Clearance: half the wire width (rounded up) plus the spacing, kept by growing every
     // blockage by a square of that half-side (so at least that far in Euclidean distance).
     const std::int64_t width = layout->rules ? layout->rules->wire_width : 0;

@@ -1080,6 +1080,29 @@ TEST(Tighten, SketchOffItsPinsIsNotTaken) {
       << t3.err;
 }
 
+// Routed wires in directions the output lacks, by default: `tighten` without --orientations on
+// a file routed octilinear over rules that say rectilinear (FORMAT.md's default) writes
+// rectilinear staircases, and since 2026-12-05 says so (TIGHTEN-0014, naming the nets and the
+// option that keeps their directions); with --orientations octilinear it is silent.
+TEST(Tighten, DefaultOrientationsOffTheRoutedWiresAreSaid) {
+  const std::string dir = temp_dir("tighten_default_orient");
+  ASSERT_EQ(run_taut({"gen", "channel", "-o", dir + "/g.xml", "--size", "100", "--nets", "6", "--seed", "6", "--width", "4",
+                      "--spacing", "4"})
+                .status,
+            0);
+  ASSERT_LE(run_taut({"route", dir + "/g.xml", "--orientations", "octilinear", "-q", "-o", dir + "/r.xml"}).status, 1);
+  const auto t = run_taut({"tighten", dir + "/r.xml", "-o", dir + "/t.xml"});
+  EXPECT_LE(t.status, 1) << t.err;
+  EXPECT_NE(t.err.find("warning: [TIGHTEN-0014] 4 nets' routed wires (net \"n0\" and others) run in directions outside "
+                       "rectilinear, the output's (from <rules orientations>): they are written as rectilinear staircases, "
+                       "which may be longer; --orientations octilinear keeps their directions"),
+            std::string::npos)
+      << t.err;
+  const auto o = run_taut({"tighten", dir + "/r.xml", "--orientations", "octilinear", "-o", dir + "/o.xml"});
+  EXPECT_LE(o.status, 1) << o.err;
+  EXPECT_EQ(o.err.find("TIGHTEN-0014"), std::string::npos) << o.err;
+}
+
 // Staircases too fine to snap back (found by a seeded search, 2026-12-05): `tighten --clearance`
 // tightens first in the net router's scaled plane (K up to 8192), where a gap of exactly the
 // clearance is 2 units wide. A sketch up such a vertical gap, to c:45,135 (no vertical), was
