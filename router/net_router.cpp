@@ -329,7 +329,7 @@ Lines trim_at_pads(const Lines& wires, std::span<const Ring> pads) {
 
 }  // namespace
 
-std::optional<Polygon> pad_staircase(const Polygon& pin, std::int64_t step) {
+std::optional<Polygon> pad_staircase(const Polygon& pin, std::int64_t step, const std::function<bool(const Polygon&)>& clear) {
   if (step < 1) throw std::invalid_argument("pad_staircase: a step below 1");
   if (is_point_pin(pin) || !pin_shape_supported(pin) || is_rectilinear_shape(pin)) return std::nullopt;
   // the vertices' x range (on the lattice, so no vertex lies strictly inside a column)
@@ -424,11 +424,15 @@ std::optional<Polygon> pad_staircase(const Polygon& pin, std::int64_t step) {
   std::sort(order.begin(), order.end(), [](const Part* a, const Part* b) {
     return a->area != b->area ? a->area > b->area : a->first < b->first;
   });
+  // (the largest valid part `clear` accepts, else the largest valid part)
+  std::optional<Polygon> largest;
   for (const Part* g : order) {
     geom::NormalizedObstacles u = geom::normalize_obstacles(g->rects, box_of(pin.outer));
-    if (u.obstacles.size() == 1 && geom::validate_polygon(u.obstacles[0]).empty()) return std::move(u.obstacles[0]);
+    if (u.obstacles.size() != 1 || !geom::validate_polygon(u.obstacles[0]).empty()) continue;
+    if (!clear || clear(u.obstacles[0])) return std::move(u.obstacles[0]);
+    if (!largest) largest = std::move(u.obstacles[0]);
   }
-  return std::nullopt;
+  return largest;
 }
 
 NetSpace::~NetSpace() = default;
@@ -533,7 +537,13 @@ NetSpace::NetSpace(const geom::Box& domain, std::span<const geom::Polygon> obsta
         if (std::none_of(found.begin(), found.end(),
                          [&](const Index::Entry& e) { return shape_meets_obstacle(pin, ix.grown.polys[e.second]); }))
           continue;
-        std::optional<Polygon> st = pad_staircase(pin, rules.scale);
+        // (a part of a pin too thin for one staircase: one clear of the grown blockages, when one is)
+        std::optional<Polygon> st = pad_staircase(pin, rules.scale, [&](const Polygon& part) {
+          std::vector<Index::Entry> near;
+          ix.grown.tree.query(bgi::intersects(box_of(part.outer)), std::back_inserter(near));
+          return std::none_of(near.begin(), near.end(),
+                              [&](const Index::Entry& e) { return shape_meets_obstacle(part, ix.grown.polys[e.second]); });
+        });
         if (!st) continue;
         NetPins& reached = reach_.try_emplace(n, nets_[n]).first->second;
         reached.pins[k] = std::move(*st);

@@ -285,9 +285,13 @@ struct WireOverlay {
 // The staircase NetSpace::reach takes for a shape pin with a 45-degree edge (holes and concave
 // pins too), on the lattice of `step` (the scale; see there): nullopt where reach keeps the pin
 // as it is (a point, a pin with no 45-degree edge or another slope, a vertex off the lattice,
-// cells that do not make one valid polygon). A pin more than NetSpace::kMaxStaircaseColumns
-// steps wide takes columns of several steps (see NetSpace::reach).
-std::optional<geom::Polygon> pad_staircase(const geom::Polygon& pin, std::int64_t step);
+// no cell of the lattice in it). A pin more than NetSpace::kMaxStaircaseColumns steps wide takes
+// columns of several steps (see NetSpace::reach). When the cells do not make one valid polygon,
+// the largest part that is (see NetSpace::reach), among the parts `clear` accepts when it accepts
+// any (NetSpace: those whose interior meets no grown blockage, so a wire reaches them from
+// outside the clearance; the part touching the blockage may lie wholly inside it).
+std::optional<geom::Polygon> pad_staircase(const geom::Polygon& pin, std::int64_t step,
+                                           const std::function<bool(const geom::Polygon&)>& clear = {});
 
 class NetSpace {
  public:
@@ -338,7 +342,9 @@ class NetSpace {
   // When the rectangles' union is not one valid polygon (a part of the pin too thin to hold a
   // column's rectangle splits it, or joins it at a corner: a thin diagonal bar, a neck), the
   // largest part that is: the rectangles joined along edges of positive length, each such part's
-  // union when it is one valid polygon, the one of largest area (since 2026-12-05: before, the pin
+  // union when it is one valid polygon, the one of largest area among those whose interior meets
+  // no grown blockage when there is one (a wire reaches such a part from outside the clearance;
+  // the part touching the blockage may lie wholly in it), else among all (since 2026-12-05: before, the pin
   // stayed as it is, and the net was ROUTE-0010 when its pin met the grown blockages). A wire then
   // ends on that part only: legal, perhaps longer. Not when its vertices are not on that lattice,
   // or when no part is one valid polygon (no cell of the lattice lies in the pin): the pin then

@@ -1047,7 +1047,8 @@ TEST(NetRouter, WidePadStaircasesTakeCoarserColumns) {
 // polygon. Before 2026-12-05 the pin was left as it is and the net was ROUTE-0010 under the
 // bend-aware metrics (cover_pieces > 0); now it is reached as its largest part (one cell here:
 // the first from the left, [0, 1] x [1, 2]), and the net routes and passes the checker under
-// length + 7 x bends and under the link metric, its wire ending on that cell.
+// length + 7 x bends and under the link metric, its wire ending on that cell; with the blockage
+// at the bar's lower end instead, on a cell clear of the blockage's clearance.
 TEST(NetRouter, ThinDiagonalPadsAreReachedByTheirLargestPart) {
   const Polygon bar{{{0, 0}, {40, 40}, {40, 42}, {0, 2}}, {}};
   {
@@ -1058,26 +1059,34 @@ TEST(NetRouter, ThinDiagonalPadsAreReachedByTheirLargestPart) {
     }
   }
   const geom::Box domain{{-200, -200}, {200, 200}};
-  const geom::NormalizedObstacles norm =
-      geom::normalize_obstacles(box_polygons(std::vector<geom::Box>{{{42, 20}, {80, 60}}}), domain);
-  const std::vector<router::NetPins> nets{{"bar", {bar, Polygon{{{-100, -100}}, {}}}}};
-  const geom::NormalizedObstacles covered = geom::normalize_obstacles(router::rectilinear_cover(norm.obstacles), norm.domain);
-  for (const bool link : {false, true}) {
-    SCOPED_TRACE(link ? "link" : "combined");
-    router::NetRouterOptions opt;
-    opt.cost = link ? router::NetRouterOptions::Cost::Link : router::NetRouterOptions::Cost::Combined;
-    opt.bend_cost = 7;
-    router::NetRouter nr(covered.domain, covered.obstacles, nets, router::NetRules{2, 2, router::kDefaultCoverPieces}, opt);
-    nr.run(router::NetRouter::bend_router(link ? router::BendMetric::Link : router::BendMetric::Combined, 7));
-    const router::NetOutcome& o = nr.outcomes()[0];
-    ASSERT_TRUE(o.routed) << o.code << " " << o.reason;
-    EXPECT_TRUE(router::check_routes(norm, check_nets(nets, nr), {2, 2}).problems.empty());
-    // the wire ends on the cell (in the pin, x and y in [0, 2])
-    bool on_cell = false;
-    for (const auto& w : o.wires)
-      for (const Point e : {w.front(), w.back()})
-        on_cell = on_cell || (e.x >= 0 && e.x <= 1 && e.y >= 1 && e.y <= 2);
-    EXPECT_TRUE(on_cell);
+  // a blockage 2 right of the bar's upper end, then one 1 left of its lower end, where the
+  // first cell from the left lies inside the clearance, no side of it on the clearance's edge
+  // (the part taken is then another cell, clear of it: found by a seeded search, 2026-12-05,
+  // where such a net was ROUTE-0010)
+  for (const geom::Box blockage : {geom::Box{{42, 20}, {80, 60}}, geom::Box{{-40, -20}, {-1, 20}}}) {
+    const bool left = blockage.hi.x < 0;
+    SCOPED_TRACE(left ? "blockage at the lower end" : "blockage at the upper end");
+    const geom::NormalizedObstacles norm = geom::normalize_obstacles(box_polygons(std::vector<geom::Box>{blockage}), domain);
+    const std::vector<router::NetPins> nets{{"bar", {bar, Polygon{{{-100, -100}}, {}}}}};
+    const geom::NormalizedObstacles covered = geom::normalize_obstacles(router::rectilinear_cover(norm.obstacles), norm.domain);
+    for (const bool link : {false, true}) {
+      SCOPED_TRACE(link ? "link" : "combined");
+      router::NetRouterOptions opt;
+      opt.cost = link ? router::NetRouterOptions::Cost::Link : router::NetRouterOptions::Cost::Combined;
+      opt.bend_cost = 7;
+      router::NetRouter nr(covered.domain, covered.obstacles, nets, router::NetRules{2, 2, router::kDefaultCoverPieces}, opt);
+      nr.run(router::NetRouter::bend_router(link ? router::BendMetric::Link : router::BendMetric::Combined, 7));
+      const router::NetOutcome& o = nr.outcomes()[0];
+      ASSERT_TRUE(o.routed) << o.code << " " << o.reason;
+      EXPECT_TRUE(router::check_routes(norm, check_nets(nets, nr), {2, 2}).problems.empty());
+      // the wire ends on a cell of the bar: the first, [0, 1] x [1, 2], when it is clear of the
+      // blockage's clearance (3); else one clear of it
+      bool on_cell = false;
+      for (const auto& w : o.wires)
+        for (const Point e : {w.front(), w.back()})
+          on_cell = on_cell || (left ? router::in_pin(e, bar) && e.x >= 2 : e.x >= 0 && e.x <= 1 && e.y >= 1 && e.y <= 2);
+      EXPECT_TRUE(on_cell);
+    }
   }
 }
 
