@@ -29,7 +29,17 @@ std::vector<geom::Polygon> blockage_polygons(const Layout& layout,
 
 geom::Polygon pin_polygon(const Pin& pin) {
   if (pin.point) return geom::Polygon{{*pin.point}, {}};
-  return shape_polygon(*pin.shape);
+  geom::Polygon g = shape_polygon(*pin.shape);
+  // a vertex written twice in a row (valid: FORMAT.md asks for 3 distinct vertices) once, so no
+  // edge of length zero reaches the routers (which refused it as an edge at no supported angle,
+  // ROUTE-0005, before 2026-12-05)
+  auto once = [](geom::Ring& r) {
+    r.erase(std::unique(r.begin(), r.end()), r.end());
+    while (r.size() > 1 && r.front() == r.back()) r.pop_back();
+  };
+  once(g.outer);
+  for (geom::Ring& h : g.holes) once(h);
+  return g;
 }
 
 geom::Box routing_domain(const Layout& layout, std::span<const geom::Point> extra) {

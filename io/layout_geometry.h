@@ -16,7 +16,7 @@ namespace taut::io {
 geom::Polygon shape_polygon(const Shape& shape);
 
 // A pin as the routers take it: a point pin as an outer ring of that one point, a shape pin as
-// shape_polygon() of its shape.
+// shape_polygon() of its shape with each vertex written twice in a row taken once.
 geom::Polygon pin_polygon(const Pin& pin);
 
 // Every blockage shape as a polygon, in file order; owner[i] is the index of the blockage that

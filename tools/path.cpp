@@ -80,7 +80,7 @@ std::optional<Target> pin_target(const io::Layout& layout, const std::string& ne
       }
       Target t;
       if (p.point) t.pin.outer = {*p.point}, t.point = *p.point;
-      else t.pin = io::shape_polygon(*p.shape);
+      else t.pin = io::pin_polygon(p);  // (a vertex written twice in a row taken once)
       t.name = "pin \"" + pin + "\" of net \"" + net + "\"";
       t.label = t.name + " (" + layout.file + ":" + std::to_string(p.line) + ")";
       return t;

@@ -796,6 +796,32 @@ TEST(Route, ShapePins) {
   EXPECT_EQ(expect_wire(*ref.ref, w, w.front(), w.back()), 70);
 }
 
+// A shape pin with a vertex written twice in a row (valid: FORMAT.md asks for three distinct
+// vertices, and taut check passes it) routes under every metric, as without the repeat; before
+// 2026-12-05 its edge of length zero was ROUTE-0005, "not horizontal, vertical or at 45 degrees"
+// (found by a seeded search); `taut path --to-pin` takes it too.
+TEST(Route, ShapePinWithARepeatedVertexRoutes) {
+  const std::string file = layout_file("route_dup_vertex", R"(  <boundary x0="0" y0="0" x1="100" y1="60"/>
+  <blockage id="b"><rect x0="40" y0="0" x1="44" y1="40"/></blockage>
+  <net name="n">
+    <pin name="a"><polygon points="10,10 20,10 20,20 20,20 10,20"/></pin>
+    <pin name="p" x="80" y="10"/>
+  </net>
+)");
+  ASSERT_EQ(run_taut({"check", file, "-q"}).status, 0);
+  const std::string dir = temp_dir("route_dup_vertex_out");
+  for (const std::vector<std::string>& opts : {std::vector<std::string>{}, {"--orientations", "octilinear"},
+                                               {"--metric", "combined", "--bend-cost", "5"}, {"--metric", "link"}}) {
+    std::vector<std::string> args{"route", file, "-o", dir + "/o.xml"};
+    args.insert(args.end(), opts.begin(), opts.end());
+    const auto r = run_taut(args);
+    EXPECT_EQ(r.status, 0) << (opts.empty() ? "l1" : opts[1]) << ": " << r.err;
+    EXPECT_EQ(run_taut({"check", dir + "/o.xml", "-q"}).status, 0);
+  }
+  const auto p = run_taut({"path", file, "--from", "80,50", "--to-pin", "n", "a"});
+  EXPECT_EQ(p.status, 0) << p.err;
+}
+
 // With the bend-aware metrics a pad whose edges are horizontal and vertical only (here an L whose
 // short side lies on a blockage's side, so all of it is within the clearance a = 3) is cut out of
 // the grown blockage like a rectangle (since 2026-12-04; ROUTE-0010 before), pads with 45-degree
