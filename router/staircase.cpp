@@ -826,9 +826,9 @@ class PieceSolver {
       if (r <= pos[k]) return {};  // stuck (or a first run of length 0)
       pos[k] = r;
       pts.push_back(pos);
-      if (pos[0] == lim_[0] && pos[1] == lim_[1]) return pts;
       if (pts.size() > cap)
         throw StaircaseTooFine("a staircase of more than " + std::to_string(cap) + " points, too fine to snap back");
+      if (pos[0] == lim_[0] && pos[1] == lim_[1]) return pts;
     }
   }
 

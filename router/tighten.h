@@ -189,6 +189,7 @@ struct COriented {
 COriented c_oriented(const Tightener& tight, const StaircaseBuilder& sb, std::span<const geom::Point> taut,
                      StaircaseStyle style);
 // The same for any lattice direction set (geom/directions.h): c:0,45, c:45,135, c:0,45,90, ...
+// Either throws StaircaseTooFine when sb was built with StaircaseOptions::snap_scale > 1 (staircase.h).
 COriented c_oriented(const Tightener& tight, const StaircaseBuilder& sb, std::span<const geom::Point> taut,
                      const geom::LatticeDirections& set);
 

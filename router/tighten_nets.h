@@ -45,7 +45,6 @@
 #include <functional>
 #include <memory>
 #include <optional>
-#include <stdexcept>
 #include <span>
 #include <string>
 #include <vector>
@@ -215,8 +214,10 @@ NetLines join_at_twos(const NetLines& wires, std::span<const geom::Polygon> pins
 // lengths in layout units (divided by k) and every point (pieces, lift.where) still in the
 // scaled plane. Also nullopt when a wire that ran in the set's directions in the scaled plane
 // does not after the snap (links shorter than k collapse, or turn). A staircase too fine to snap
-// back is not built there (StaircaseTooFine): its piece stays untightened (NetTightenOutcome::
-// untightened), so the caller works in the layout's units.
+// back is not built there (StaircaseTooFine): its piece is taken as having none (NoStaircase) and
+// kept as it was; a sketch's piece, or a wire's outside the set's directions, is then
+// NetTightenOutcome::untightened, which `taut tighten` takes as a reason to work in the layout's
+// units.
 std::optional<std::vector<NetLines>> tighten_scaled(const geom::Box& domain, std::span<const geom::Polygon> obstacles,
                                                     std::vector<NetPins> nets, NetRules rules, std::int64_t k,
                                                     const std::vector<NetLines>& wires, std::span<const NetsTightener::Input> kind,

@@ -263,7 +263,7 @@ void add_tighten(CLI::App& app, int& status) {
                                       std::to_string(off) + " net" + (off == 1 ? "'s" : "s'") + " routed wires (net \"" +
                                           layout->nets[first].name + "\"" + (off > 1 ? " and others" : "") +
                                           ") run in directions outside " + orientations + ", the output's (" +
-                                          (layout->rules ? "from <rules orientations>" : "the default") +
+                                          (layout->rules ? "from <rules orientations>, rectilinear by default" : "the default") +
                                           "): they are written as " + orientations + " staircases, which may be longer; "
                                           "--orientations " + (layout->routes->orientations.empty() ? "SET" : layout->routes->orientations) +
                                           " keeps their directions"}},

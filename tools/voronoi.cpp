@@ -184,7 +184,7 @@ void add_voronoi(CLI::App& app, int& status) {
           if (p.point) {
             sites.push_back({*p.point, n.name, p.name, p.line, std::nullopt});
           } else {
-            geom::Polygon poly = io::shape_polygon(*p.shape);
+            geom::Polygon poly = io::pin_polygon(p);  // (a vertex written twice in a row taken once)
             const geom::Point first = poly.outer.front();
             sites.push_back({first, n.name, p.name, p.line, std::move(poly)});
           }

@@ -1036,7 +1036,7 @@ TEST(Tighten, SketchOffItsPinsIsNotTaken) {
         "  <blockage id=\"a\"><rect x0=\"40\" y0=\"40\" x1=\"60\" y1=\"60\"/></blockage>\n"
         "  <net name=\"t\"><pin name=\"p\" x=\"10\" y=\"10\"/><pin name=\"q\" x=\"90\" y=\"90\"/>"
         "<sketch points=\"10,10 10,80 80,80\"/></net>\n"
-        "  <routes><route net=\"t\" status=\"routed\" length=\"240\" bends=\"3\">"
+        "  <routes><route net=\"t\" status=\"routed\" length=\"160\" bends=\"3\">"
         "<wire points=\"10,10 10,70 30,70 30,90 90,90\"/></route></routes>\n");
     const auto rt = run_taut({"tighten", routed, "-o", dir + "/rt.xml"});
     EXPECT_EQ(rt.status, 0) << rt.err;
@@ -1048,7 +1048,8 @@ TEST(Tighten, SketchOffItsPinsIsNotTaken) {
     ASSERT_TRUE(rr.layout && rr.layout->routes && rr.layout->routes->routes.size() == 1u) << rt.err;
     const io::Route& x = rr.layout->routes->routes[0];
     EXPECT_EQ(x.status, "routed");
-    EXPECT_EQ(x.length, std::optional<std::string>("160"));  // from 240: pulled taut
+    EXPECT_EQ(x.bends, std::optional<std::int64_t>(1));  // from 3: pulled taut (as long: an L1 staircase)
+    EXPECT_EQ(wires_of(dir + "/rt.xml", "t"), (std::vector<Path>{{{10, 10}, {10, 90}, {90, 90}}}));
     EXPECT_EQ(run_taut({"check", dir + "/rt.xml", "-q"}).status, 0);
   }
   // the sketch drawn from the second pin to the first joins them too: taken (LAYOUT-0008 warns of the order)
@@ -1094,7 +1095,8 @@ TEST(Tighten, DefaultOrientationsOffTheRoutedWiresAreSaid) {
   const auto t = run_taut({"tighten", dir + "/r.xml", "-o", dir + "/t.xml"});
   EXPECT_LE(t.status, 1) << t.err;
   EXPECT_NE(t.err.find("warning: [TIGHTEN-0014] 4 nets' routed wires (net \"n0\" and others) run in directions outside "
-                       "rectilinear, the output's (from <rules orientations>): they are written as rectilinear staircases, "
+                       "rectilinear, the output's (from <rules orientations>, rectilinear by default): they are written as "
+                       "rectilinear staircases, "
                        "which may be longer; --orientations octilinear keeps their directions"),
             std::string::npos)
       << t.err;

@@ -76,7 +76,9 @@ TEST(FreeSpaceChecker, AgreesWithTheReferenceOnRandomPolylines) {
       if (line.size() < 2) continue;
       // every fifth: closed (its last point its first), which passes through its first point too:
       // free when it is free as drawn and as drawn from its second point round to it (so that
-      // the first point is a bend; the reference takes open paths)
+      // the first point is a bend; the reference takes open paths). Few are wrong at their first
+      // point only (3 of 1,500 layouts' loops, none under the sanitizers' 150):
+      // ClosedWiresAreCheckedAtTheirFirstPoint is the case that must fail without the check.
       const bool close = q % 5 == 4 && line.size() >= 3;
       if (close) line.push_back(line.front());
       ++polylines;
