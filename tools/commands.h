@@ -25,5 +25,6 @@ void add_stats(CLI::App& app, int& status);
 void add_gen(CLI::App& app, int& status);
 void add_tighten(CLI::App& app, int& status);
 void add_diameter(CLI::App& app, int& status);
+void add_import(CLI::App& app, int& status);
 
 }  // namespace taut::cli

@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
   add_render(app, status);
   add_stats(app, status);
   add_gen(app, status);
+  add_import(app, status);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

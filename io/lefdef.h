@@ -1,0 +1,87 @@
+// Reads one routing layer of a placed design in DEF, with its cells from LEF, into a Layout:
+// `taut import`. The subset a planar (one-layer) routing problem needs, such as a flip-chip
+// redistribution layer (bumps joined to pad cells):
+//
+//   DEF  UNITS DISTANCE MICRONS, DESIGN, DIEAREA (a rectangle: the boundary), COMPONENTS (macro,
+//        placement point, orientation N S E W FN FS FE FW), PINS (ports: LAYER rectangles and
+//        POLYGONs, each port with its own placement), NETS and SPECIALNETS (connections
+//        `( comp pin )`, `( PIN name )`, `( * pin )`, `+ USE`; SPECIALNETS wiring on the layer:
+//        `+ ROUTED|FIXED|COVER|SHIELD layer width [+ SHAPE ..] ( x y ) ( x|* y|* ) [via] NEW ..`),
+//        BLOCKAGES (`- LAYER l .. RECT|POLYGON`). Every other section and statement is skipped
+//        whole (it says nothing about the layer's metal or connectivity).
+//   LEF  MACRO: ORIGIN, SIZE, PIN .. PORT (LAYER, RECT [MASK n], POLYGON [MASK n]), OBS. Every
+//        other statement and block is skipped whole. Lengths are in microns and must be whole
+//        DBU at the DEF's units (checked exactly, no floating point).
+//
+// What the layout holds, all on the chosen layer:
+//   - <boundary>: the die area; <rules>: the wire width and spacing given (DBU).
+//   - one <net> per selected net (glob patterns, default every net) with two or more pin
+//     shapes; its pins are the shapes of its terminals: a component pin's port shapes placed
+//     and oriented, a DEF pin's port shapes. A power or ground net (`+ USE POWER|GROUND`) also
+//     takes every component pin of its own name with a shape on the layer, as `( * name )`
+//     does (the global connection that a flow's `add_global_connection` makes). Identical shapes
+//     of one net (a DEF pin drawn on its bump) are one pin. A terminal with several shapes gives
+//     one pin per shape (the router joins them all: longer, never wrong).
+//   - one <blockage> per other metal: cell obstructions (OBS) of every instance, component pins
+//     and DEF pins on the layer that belong to no selected net, DEF BLOCKAGES on the layer, and
+//     the SPECIALNETS wiring on the layer of nets not selected (each segment as the rectangle
+//     its width and half-width extensions cover).
+//
+// Diagnostics (file:line, never a crash; errors leave no layout):
+//   IO-0100 a file cannot be read
+//   IO-0101 a syntax error (an unexpected token or end of file) in LEF or DEF
+//   IO-0102 a construct outside the subset above that would change the layer's metal (LEF
+//           ITERATE or PATH, a VIA in a port, a non-rectangular DIEAREA, regular NETS wiring on
+//           the layer, a wiring segment that is not axis-parallel)
+//   IO-0103 a number that is malformed, not whole DBU, or beyond the coordinate range
+//   IO-0104 a reference to an undefined macro, component, macro pin or DEF pin
+//   IO-0105 a --nets pattern that matches no net, or a layer no shape is on
+//   IO-0106 warning: a selected net with fewer than two pin shapes on the layer (not written as
+//           a net; its shape, if any, is a blockage), or an explicit terminal with no shape on
+//           the layer
+//   IO-0107 warning: the wiring a selected net already has in the DEF is not kept (taut routes
+//           the net)
+//   IO-0108 warning: --bump-to-pad joined no bump to some of a net's pad pins (more pads than
+//           bumps); they are written as blockages
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geom/diagnostic.h"
+#include "io/layout.h"
+
+namespace taut::io {
+
+struct DefImportOptions {
+  std::string layer;                  // the routing layer, e.g. "metal10"
+  std::vector<std::string> nets;      // glob patterns (* ? [..]); empty: every net
+  std::string wire_width = "0";       // microns, as written (exact decimal)
+  std::string spacing = "0";          // microns, as written
+  // A net with bumps (pins of CLASS COVER cells) and other pins becomes one net per bump, joined
+  // to one of the other pins: the assignment of least total L1 distance between the shapes' box
+  // centres (each pad offered ceil(bumps / pads) times). As a flip-chip redistribution layer is
+  // routed: a power net's pads are already joined by the pad ring, so each bump needs one.
+  bool bump_to_pad = false;
+};
+
+struct DefImportStats {
+  std::size_t nets = 0, pins = 0, blockages = 0, components = 0;
+};
+
+struct DefImportResult {
+  std::optional<Layout> layout;  // set only when there is no error
+  std::vector<Diagnostic> diagnostics;
+  DefImportStats stats;
+};
+
+DefImportResult import_def(const std::string& def_path, const std::vector<std::string>& lef_paths,
+                           const DefImportOptions& options);
+
+// The same from text in memory: each pair is (name used in diagnostics, text).
+DefImportResult import_def_text(const std::pair<std::string, std::string>& def,
+                                const std::vector<std::pair<std::string, std::string>>& lefs,
+                                const DefImportOptions& options);
+
+}  // namespace taut::io

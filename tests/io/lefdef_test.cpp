@@ -1,0 +1,381 @@
+// Tests of import_def (io/lefdef.h): the eight DEF orientations against positions worked out by
+// hand from the DEF reference's definitions, LEF ORIGIN, what becomes a net and what a blockage,
+// the bump-to-pad assignment against an exhaustive search over every assignment, each
+// diagnostic with its file and line, and seeded mutations of a small design that must be
+// answered (a layout or an error), never thrown or crashed on.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <numeric>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "io/lefdef.h"
+
+namespace lefdef_test {
+using taut::Diagnostic;
+using taut::Severity;
+using namespace taut::io;
+
+// A cell 30 x 10 um with pin P at (1, 2)-(3, 4), an obstruction, and a bump 45 x 45 um.
+const char* kLef = R"(VERSION 5.8 ;
+UNITS
+  DATABASE MICRONS 1000 ;
+END UNITS
+LAYER m2
+  TYPE ROUTING ;
+END m2
+VIA V12 DEFAULT
+  LAYER m1 ; RECT -1 -1 1 1 ;
+  LAYER m2 ; RECT -2 -1 2 1 ;
+END V12
+MACRO CELL
+  CLASS PAD ;
+  ORIGIN 0 0 ;
+  SIZE 30 BY 10 ;
+  PIN P
+    DIRECTION INOUT ;
+    PORT
+      LAYER m2 ;
+        RECT 1 2 3 4 ;
+      LAYER m1 ;
+        RECT 0 0 30 10 ;
+    END
+  END P
+  PIN VDD
+    USE POWER ;
+    PORT
+      LAYER m2 ;
+        RECT 20 2 22 4 ;
+    END
+  END VDD
+  OBS
+    LAYER m2 ;
+      RECT 10 5 12.5 6 ;
+  END
+END CELL
+MACRO BUMP
+  CLASS COVER BUMP ;
+  ORIGIN 22.5 22.5 ;
+  SIZE 45 BY 45 ;
+  PIN PAD
+    PORT
+      LAYER m2 ;
+        POLYGON 22.5 0 0 22.5 -22.5 0 0 -22.5 ;
+    END
+  END PAD
+END BUMP
+END LIBRARY
+)";
+
+std::string def_with(const std::string& body) {
+  return "VERSION 5.8 ;\nDIVIDERCHAR \"/\" ;\nDESIGN top ;\nUNITS DISTANCE MICRONS 1000 ;\n"
+         "DIEAREA ( 0 0 ) ( 1000000 1000000 ) ;\n" +
+         body + "END DESIGN\n";
+}
+
+DefImportResult run(const std::string& def, DefImportOptions o = {}) {
+  if (o.layer.empty()) o.layer = "m2";
+  return import_def_text({"t.def", def}, {{"t.lef", kLef}}, o);
+}
+
+const Blockage* blockage(const Layout& l, const std::string& id) {
+  for (const Blockage& b : l.blockages)
+    if (b.id == id) return &b;
+  return nullptr;
+}
+
+const Net* net(const Layout& l, const std::string& name) {
+  for (const Net& n : l.nets)
+    if (n.name == name) return &n;
+  return nullptr;
+}
+
+std::string errors(const DefImportResult& r) {
+  std::string s;
+  for (const Diagnostic& d : r.diagnostics) s += format(d) + "\n";
+  return s;
+}
+
+TEST(ImportDef, EightOrientationsPlacePinsAsTheDefReferenceDefinesThem) {
+  // expected box of pin P (DBU) for a cell placed at (1000, 2000), worked out by hand:
+  // N (x, y); S (W-x, H-y); W (H-y, x); E (y, W-x); FN (W-x, y); FS (x, H-y); FW (y, x);
+  // FE (H-y, W-x); with W = 30000, H = 10000, P = [1000, 3000] x [2000, 4000]
+  const std::vector<std::pair<std::string, Box>> cases = {
+      {"N", {{2000, 4000}, {4000, 6000}}},     {"S", {{28000, 8000}, {30000, 10000}}},
+      {"W", {{7000, 3000}, {9000, 5000}}},     {"E", {{3000, 29000}, {5000, 31000}}},
+      {"FN", {{28000, 4000}, {30000, 6000}}},  {"FS", {{2000, 8000}, {4000, 10000}}},
+      {"FW", {{3000, 3000}, {5000, 5000}}},    {"FE", {{7000, 29000}, {9000, 31000}}}};
+  for (const auto& [orient, want] : cases) {
+    const DefImportResult r = run(def_with("COMPONENTS 1 ;\n - c1 CELL + FIXED ( 1000 2000 ) " + orient + " ;\nEND COMPONENTS\n"));
+    ASSERT_TRUE(r.layout) << orient << "\n" << errors(r);
+    const Blockage* b = blockage(*r.layout, "c1/P");
+    ASSERT_NE(b, nullptr) << orient;
+    ASSERT_EQ(b->shapes.size(), 1u);
+    EXPECT_EQ(b->shapes[0].kind, Shape::Kind::Rect);
+    EXPECT_EQ(b->shapes[0].rect, want) << orient;
+  }
+}
+
+TEST(ImportDef, OriginShiftsShapesAndPolygonsStayPolygons) {
+  const DefImportResult r = run(def_with("COMPONENTS 1 ;\n - b1 BUMP + FIXED ( 100000 200000 ) N ;\nEND COMPONENTS\n"));
+  ASSERT_TRUE(r.layout) << errors(r);
+  const Blockage* b = blockage(*r.layout, "b1/PAD");
+  ASSERT_NE(b, nullptr);
+  ASSERT_EQ(b->shapes[0].kind, Shape::Kind::Polygon);
+  // the diamond about the origin (22.5, 22.5) um: its centre at the placement + 22500
+  const std::vector<Point> want = {{145000, 222500}, {122500, 245000}, {100000, 222500}, {122500, 200000}};
+  EXPECT_EQ(b->shapes[0].polygon.outer, want);
+}
+
+TEST(ImportDef, NetsTakeTheirTerminalsAndEverythingElseOnTheLayerBlocks) {
+  const std::string def = def_with(
+      "COMPONENTS 3 ;\n - a CELL + FIXED ( 0 0 ) N ;\n - b CELL + PLACED ( 100000 0 ) N ;\n - u CELL + UNPLACED ;\nEND COMPONENTS\n"
+      "PINS 1 ;\n - io + NET s + DIRECTION INPUT + USE SIGNAL\n  + PORT + LAYER m2 ( -500 -500 ) ( 500 500 ) + FIXED ( 50000 90000 ) N ;\nEND PINS\n"
+      "BLOCKAGES 2 ;\n - LAYER m2 RECT ( 500000 500000 ) ( 510000 520000 ) ;\n - PLACEMENT RECT ( 0 0 ) ( 10 10 ) ;\nEND BLOCKAGES\n"
+      "SPECIALNETS 1 ;\n - OTHER ( * VDD ) + ROUTED m2 2000 + SHAPE STRIPE ( 600000 100000 ) ( 700000 * ) + USE POWER ;\nEND SPECIALNETS\n"
+      "NETS 2 ;\n - s ( a P ) ( b P ) ( PIN io ) + USE SIGNAL ;\n - VDD ( a VDD ) + USE POWER ;\nEND NETS\n");
+  DefImportOptions o;
+  o.nets = {"s", "VDD"};
+  o.wire_width = "0.2";
+  o.spacing = "0.15";
+  const DefImportResult r = run(def, o);
+  // (u is unplaced with shapes on the layer: refused)
+  ASSERT_FALSE(r.layout);
+  ASSERT_EQ(r.diagnostics.size(), 1u) << errors(r);
+  EXPECT_EQ(r.diagnostics[0].code, "IO-0102");
+  EXPECT_EQ(r.diagnostics[0].line, 9);
+
+  std::string placed = def;
+  placed.replace(placed.find(" - u CELL + UNPLACED ;\n"), std::string(" - u CELL + UNPLACED ;\n").size(), "");
+  const DefImportResult ok = run(placed, o);
+  ASSERT_TRUE(ok.layout) << errors(ok);
+  const Layout& l = *ok.layout;
+  EXPECT_EQ(l.rules->wire_width, 200);
+  EXPECT_EQ(l.rules->spacing, 150);
+  EXPECT_EQ(l.boundary->box, (Box{{0, 0}, {1000000, 1000000}}));
+  const Net* s = net(l, "s");
+  ASSERT_NE(s, nullptr);
+  ASSERT_EQ(s->pins.size(), 3u);
+  EXPECT_EQ(s->pins[0].name, "a/P");
+  EXPECT_EQ(s->pins[1].name, "b/P");
+  EXPECT_EQ(s->pins[2].name, "PIN/io");
+  EXPECT_EQ(s->pins[2].shape->rect, (Box{{49500, 89500}, {50500, 90500}}));
+  // VDD: a/VDD explicitly, b/VDD by the global connection of a power net
+  const Net* vdd = net(l, "VDD");
+  ASSERT_NE(vdd, nullptr);
+  ASSERT_EQ(vdd->pins.size(), 2u);
+  EXPECT_EQ(vdd->pins[1].name, "b/VDD");
+  // the rest on the layer: obstructions, the layer blockage, the other net's wiring (half the
+  // width beyond each end); the placement blockage and m1 shapes are not on the layer
+  ASSERT_NE(blockage(l, "a/OBS"), nullptr);
+  EXPECT_EQ(blockage(l, "a/OBS")->shapes[0].rect, (Box{{10000, 5000}, {12500, 6000}}));
+  ASSERT_NE(blockage(l, "b/OBS"), nullptr);
+  ASSERT_NE(blockage(l, "BLOCKAGE/1"), nullptr);
+  EXPECT_EQ(blockage(l, "BLOCKAGE/2"), nullptr);
+  ASSERT_NE(blockage(l, "OTHER/wiring"), nullptr);
+  EXPECT_EQ(blockage(l, "OTHER/wiring")->shapes[0].rect, (Box{{599000, 99000}, {701000, 101000}}));
+  EXPECT_EQ(l.blockages.size(), 4u);
+  EXPECT_EQ(ok.stats.nets, 2u);
+  EXPECT_EQ(ok.stats.pins, 5u);
+}
+
+// Bumps on a row, pads on another: the written nets join each bump to one pad, and the total L1
+// distance between centres is the least over every assignment (exhaustive reference).
+TEST(ImportDef, BumpToPadTakesTheAssignmentOfLeastTotalDistance) {
+  for (unsigned seed = 1; seed <= 300; ++seed) {
+    std::mt19937 rng(seed);
+    const int nb = 1 + static_cast<int>(rng() % 5), np = 1 + static_cast<int>(rng() % 5);
+    std::string comps, terms;
+    std::vector<Point> bump_c, pad_c;  // doubled centres, as the assignment measures
+    for (int i = 0; i < nb; ++i) {
+      const int x = 100000 * i + static_cast<int>(rng() % 50) * 1000, y = 500000 + static_cast<int>(rng() % 200) * 1000;
+      comps += " - b" + std::to_string(i) + " BUMP + FIXED ( " + std::to_string(x) + " " + std::to_string(y) + " ) N ;\n";
+      terms += " ( b" + std::to_string(i) + " PAD )";
+      bump_c.push_back({2 * x + 45000, 2 * y + 45000});
+    }
+    for (int j = 0; j < np; ++j) {
+      const int x = 60000 * j + static_cast<int>(rng() % 40) * 1000, y = static_cast<int>(rng() % 100) * 1000;
+      comps += " - c" + std::to_string(j) + " CELL + FIXED ( " + std::to_string(x) + " " + std::to_string(y) + " ) N ;\n";
+      terms += " ( c" + std::to_string(j) + " P )";
+      pad_c.push_back({2 * x + 4000, 2 * y + 6000});
+    }
+    DefImportOptions o;
+    o.bump_to_pad = true;
+    o.nets = {"n"};
+    const DefImportResult r = run(def_with("COMPONENTS " + std::to_string(nb + np) + " ;\n" + comps + "END COMPONENTS\nNETS 1 ;\n - n" +
+                                           terms + " ;\nEND NETS\n"),
+                                  o);
+    ASSERT_TRUE(r.layout) << "seed " << seed << "\n" << errors(r);
+    auto dist = [](Point a, Point b) { return std::abs(std::int64_t{a.x} - b.x) + std::abs(std::int64_t{a.y} - b.y); };
+    if (nb + np == 2) {  // two pins: the net as it is
+      ASSERT_EQ(r.layout->nets.size(), 1u) << "seed " << seed;
+      continue;
+    }
+    ASSERT_EQ(r.layout->nets.size(), static_cast<std::size_t>(nb)) << "seed " << seed;
+    std::int64_t got = 0;
+    std::vector<int> uses(np, 0);
+    for (const Net& n : r.layout->nets) {
+      ASSERT_EQ(n.pins.size(), 2u);
+      const int b = std::stoi(n.pins[0].name.substr(1, n.pins[0].name.find('/') - 1));
+      const int c = std::stoi(n.pins[1].name.substr(1, n.pins[1].name.find('/') - 1));
+      EXPECT_EQ(n.pins[0].name[0], 'b');
+      EXPECT_EQ(n.pins[1].name[0], 'c');
+      got += dist(bump_c[b], pad_c[c]);
+      ++uses[c];
+    }
+    const int cap = (nb + np - 1) / np;
+    for (int u : uses) EXPECT_LE(u, cap) << "seed " << seed;
+    // exhaustive: every map of bumps to pads using each pad at most cap times
+    std::int64_t best = std::numeric_limits<std::int64_t>::max();
+    std::vector<int> pick(nb, 0);
+    for (;;) {
+      std::vector<int> cnt(np, 0);
+      bool okc = true;
+      std::int64_t c = 0;
+      for (int i = 0; i < nb; ++i) {
+        okc = okc && ++cnt[pick[i]] <= cap;
+        c += dist(bump_c[i], pad_c[pick[i]]);
+      }
+      if (okc) best = std::min(best, c);
+      int k = 0;
+      while (k < nb && ++pick[k] == np) pick[k++] = 0;
+      if (k == nb) break;
+    }
+    EXPECT_EQ(got, best) << "seed " << seed;
+    // pads joined to no bump are blockages, and said so
+    const int unused = static_cast<int>(std::count(uses.begin(), uses.end(), 0));
+    int blocked = 0;
+    for (const Blockage& b : r.layout->blockages) blocked += b.id.rfind("n/c", 0) == 0;
+    EXPECT_EQ(blocked, unused) << "seed " << seed;
+    bool warned = false;
+    for (const Diagnostic& d : r.diagnostics) warned = warned || d.code == "IO-0108";
+    EXPECT_EQ(warned, unused > 0) << "seed " << seed;
+  }
+}
+
+struct BadCase {
+  std::string what, def, code;
+  int line;
+  std::vector<std::string> nets = {};
+  std::string file = "t.def";
+};
+
+TEST(ImportDef, BadInputIsAnsweredWithCodeFileAndLine) {
+  const std::string comps = "COMPONENTS 1 ;\n - a CELL + FIXED ( 0 0 ) N ;\nEND COMPONENTS\n";  // lines 6-8
+  const std::vector<BadCase> cases = {
+      {"end of file inside a section", "UNITS DISTANCE MICRONS 1000 ;\nCOMPONENTS 1 ;\n - a CELL", "IO-0101", 3},
+      {"no units", "DESIGN x ;\n", "IO-0101", 1},
+      {"a bad orientation", def_with("COMPONENTS 1 ;\n - a CELL + FIXED ( 0 0 ) NE ;\nEND COMPONENTS\n"), "IO-0101", 7},
+      {"a DIEAREA that is not a rectangle",
+       "UNITS DISTANCE MICRONS 1000 ;\nDIEAREA ( 0 0 ) ( 10 0 ) ( 10 10 ) ( 5 20 ) ( 0 10 ) ;\nEND DESIGN\n", "IO-0102", 2},
+      {"a coordinate that is not an integer", def_with("COMPONENTS 1 ;\n - a CELL + FIXED ( 0.5 0 ) N ;\nEND COMPONENTS\n"), "IO-0103", 7},
+      {"a coordinate out of range", def_with("COMPONENTS 1 ;\n - a CELL + FIXED ( 2000000000 0 ) N ;\nEND COMPONENTS\n"), "IO-0103", 7},
+      {"an undefined macro", def_with("COMPONENTS 1 ;\n - a NOPE + FIXED ( 0 0 ) N ;\nEND COMPONENTS\n"), "IO-0104", 7},
+      {"an undefined component in a net", def_with(comps + "NETS 1 ;\n - n ( a P ) ( z P ) ;\nEND NETS\n"), "IO-0104", 10},
+      {"an undefined macro pin in a net", def_with(comps + "NETS 1 ;\n - n ( a P ) ( a Q ) ;\nEND NETS\n"), "IO-0104", 10},
+      {"an undefined DEF pin in a net", def_with(comps + "NETS 1 ;\n - n ( a P ) ( PIN q ) ;\nEND NETS\n"), "IO-0104", 10},
+      {"a --nets pattern matching nothing", def_with(comps + "NETS 1 ;\n - n ( a P ) ;\nEND NETS\n"), "IO-0105", 0, {"x*"}},
+      {"a terminal in two nets", def_with(comps + "NETS 2 ;\n - n ( a P ) ;\n - m ( a P ) ;\nEND NETS\n"), "IO-0104", 11},
+      {"regular wiring of an unselected net on the layer",
+       def_with(comps + "NETS 2 ;\n - n ( a P ) ;\n - m ( a VDD ) + ROUTED m2 ( 0 0 ) ( 100 0 ) ;\nEND NETS\n"), "IO-0102", 11, {"n"}},
+      {"a sloped special wire", def_with("SPECIALNETS 1 ;\n - w + ROUTED m2 100 ( 0 0 ) ( 100 100 ) ;\nEND SPECIALNETS\n"), "IO-0102",
+       7},
+  };
+  for (const BadCase& c : cases) {
+    DefImportOptions o;
+    o.nets = c.nets;
+    const DefImportResult r = run(c.def, o);
+    EXPECT_FALSE(r.layout) << c.what;
+    ASSERT_FALSE(r.diagnostics.empty()) << c.what;
+    const Diagnostic& d = r.diagnostics.back();
+    EXPECT_EQ(d.severity, Severity::Error) << c.what;
+    EXPECT_EQ(d.code, c.code) << c.what << ": " << format(d);
+    EXPECT_EQ(d.line, c.line) << c.what << ": " << format(d);
+    EXPECT_EQ(d.file, c.file) << c.what;
+  }
+  // the LEF's own errors name the LEF
+  const DefImportResult lef = import_def_text({"t.def", def_with("")}, {{"x.lef", "MACRO M\n SIZE 1.0005 BY 1 ;\nEND M\n"}}, {"m2"});
+  ASSERT_FALSE(lef.layout);
+  EXPECT_EQ(lef.diagnostics.back().code, "IO-0103");
+  EXPECT_EQ(lef.diagnostics.back().file, "x.lef");
+  EXPECT_EQ(lef.diagnostics.back().line, 2);
+  // files that cannot be read
+  const DefImportResult missing = import_def("/nonexistent/x.def", {}, {"m2"});
+  ASSERT_FALSE(missing.layout);
+  EXPECT_EQ(missing.diagnostics.back().code, "IO-0100");
+  // --wire-width not whole DBU
+  DefImportOptions o;
+  o.wire_width = "0.0005";
+  const DefImportResult w = run(def_with(comps), o);
+  ASSERT_FALSE(w.layout);
+  EXPECT_EQ(w.diagnostics.back().code, "IO-0103");
+}
+
+TEST(ImportDef, WarningsSayWhatIsNotWritten) {
+  const std::string def = def_with(
+      "COMPONENTS 2 ;\n - a CELL + FIXED ( 0 0 ) N ;\n - b CELL + FIXED ( 0 50000 ) N ;\nEND COMPONENTS\n"
+      "SPECIALNETS 1 ;\n - n ( a P ) + ROUTED m2 2000 ( 0 0 ) ( 0 1000 ) ;\nEND SPECIALNETS\n"
+      "NETS 2 ;\n - n ( a P ) ( b P ) ;\n - lone ( a VDD ) ;\nEND NETS\n");
+  const DefImportResult r = run(def);
+  ASSERT_TRUE(r.layout) << errors(r);
+  std::vector<std::string> codes;
+  for (const Diagnostic& d : r.diagnostics) {
+    EXPECT_EQ(d.severity, Severity::Warning);
+    codes.push_back(d.code + ":" + std::to_string(d.line));
+  }
+  // n's wiring is not kept (line 11); lone has one pin shape: a blockage, not a net (line 15)
+  EXPECT_EQ(codes, (std::vector<std::string>{"IO-0107:11", "IO-0106:15"}));
+  ASSERT_NE(blockage(*r.layout, "lone/a/VDD"), nullptr);
+  EXPECT_EQ(r.layout->nets.size(), 1u);
+}
+
+// Seeded mutations of a small design (tokens deleted, duplicated, swapped, the text cut short):
+// every one is answered with a layout or an error diagnostic, never an exception.
+TEST(ImportDef, MutatedInputIsAnsweredNeverThrown) {
+  const std::string base = def_with(
+      "COMPONENTS 2 ;\n - a CELL + FIXED ( 0 0 ) FS ;\n - b BUMP + FIXED ( 100000 100000 ) W ;\nEND COMPONENTS\n"
+      "PINS 1 ;\n - io + NET s + PORT + LAYER m2 ( -500 -500 ) ( 500 500 ) + FIXED ( 50000 90000 ) N ;\nEND PINS\n"
+      "SPECIALNETS 1 ;\n - W ( * VDD ) + ROUTED m2 2000 + SHAPE STRIPE ( 600000 100000 ) ( 700000 * ) V12 NEW m2 2000 ( 0 0 ) ( 0 10 ) ;\n"
+      "END SPECIALNETS\nNETS 1 ;\n - s ( a P ) ( b PAD ) ( PIN io ) + USE SIGNAL ;\nEND NETS\n");
+  ASSERT_TRUE(run(base).layout) << errors(run(base));
+  std::vector<std::string> toks;
+  for (std::size_t i = 0; i < base.size();) {
+    std::size_t j = base.find_first_of(" \n", i);
+    if (j == std::string::npos) j = base.size();
+    toks.push_back(base.substr(i, j - i + (j < base.size() ? 1 : 0)));
+    i = j + 1;
+  }
+  int layouts = 0, refused = 0;
+  for (unsigned seed = 1; seed <= 2000; ++seed) {
+    std::mt19937 rng(seed);
+    std::vector<std::string> t = toks;
+    const int edits = 1 + static_cast<int>(rng() % 3);
+    for (int e = 0; e < edits && !t.empty(); ++e) {
+      const std::size_t k = rng() % t.size();
+      switch (rng() % 5) {
+        case 0: t.erase(t.begin() + static_cast<long>(k)); break;
+        case 1: t.insert(t.begin() + static_cast<long>(k), t[rng() % t.size()]); break;
+        case 2: std::swap(t[k], t[rng() % t.size()]); break;
+        case 3: t.resize(k); break;
+        default: t[k] = std::to_string(static_cast<int>(rng() % 4000000) - 2000000) + " "; break;
+      }
+    }
+    const std::string text = std::accumulate(t.begin(), t.end(), std::string());
+    DefImportResult r;
+    ASSERT_NO_THROW(r = run(text)) << "seed " << seed;
+    if (r.layout) {
+      ++layouts;
+    } else {
+      ++refused;
+      ASSERT_FALSE(r.diagnostics.empty()) << "seed " << seed;
+      EXPECT_EQ(r.diagnostics.back().severity, Severity::Error) << "seed " << seed;
+    }
+  }
+  EXPECT_GT(layouts, 50);
+  EXPECT_GT(refused, 500);
+}
+
+}  // namespace lefdef_test
