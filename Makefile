@@ -5,7 +5,7 @@ BUILD ?= build
 ASAN_BUILD ?= build-asan
 CMAKE_FLAGS ?=
 
-.PHONY: all deps build build-asan build-tests build-asan-tests run test test-release test-asan test-long bench install clean
+.PHONY: all deps build build-asan build-tests build-asan-tests run test test-release test-asan test-long bench rdl install clean
 
 all: build
 
@@ -101,6 +101,11 @@ bench: build
 	$(BUILD)/bench/bench_check
 	$(BUILD)/bench/bench_steiner
 	$(BUILD)/bench/bench_net_router --threads 2 --tighten
+
+# OpenROAD's flip-chip RDL test case (../shared/data/openroad-rdl): imported, routed, checked,
+# and compared with OpenROAD's own routing of it (README, "A real layout").
+rdl: build
+	python3 scripts/rdl_openroad.py --taut $(BUILD)/tools/taut --out out/rdl
 
 install: build
 	cmake --install $(BUILD) --prefix $(or $(PREFIX),/usr/local)
