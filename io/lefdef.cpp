@@ -6,6 +6,8 @@
 // subset a planar layer needs is small.)
 #include "io/lefdef.h"
 
+#include "io/stats_json.h"
+
 #include <fnmatch.h>
 
 #include <algorithm>
@@ -429,12 +431,18 @@ struct Terminal {
   int line = 0;
 };
 
+struct WireSeg {
+  std::int64_t w = 0;
+  Point a, b;
+};
+
 struct DefNet {
   std::string name, use;
   int line = 0;
   bool special = false;
   std::vector<Terminal> terms;
   std::vector<Geo> wiring;  // on the layer (special nets), absolute
+  std::vector<WireSeg> segs;  // the same wiring's segments (centrelines)
   bool regular_wiring_on_layer = false;
   int wiring_line = 0;
 };
@@ -451,7 +459,9 @@ struct Def {
   std::map<std::string, Via, std::less<>> vias;  // DEF VIAS section (on the layer)
 };
 
-std::pair<std::int64_t, std::int64_t> def_point(Cursor& c, std::optional<std::pair<std::int64_t, std::int64_t>> prev = std::nullopt) {
+// "( x y [ext] )", "*" repeating the previous point's coordinate; *ext gets ext, or 0
+std::pair<std::int64_t, std::int64_t> def_point(Cursor& c, std::optional<std::pair<std::int64_t, std::int64_t>> prev = std::nullopt,
+                                                std::int64_t* ext = nullptr) {
   c.expect("(");
   const Tok tx = c.next();
   const Tok ty = c.next();
@@ -468,7 +478,9 @@ std::pair<std::int64_t, std::int64_t> def_point(Cursor& c, std::optional<std::pa
   } else {
     y = def_int(c, ty);
   }
-  if (c.peek().s != ")") def_int(c, c.next());  // an extension value
+  const std::int64_t e = c.peek().s != ")" ? def_int(c, c.next()) : 0;  // an extension value
+  if (e < 0) c.fail("IO-0103", "a negative extension", ty.line);
+  if (ext) *ext = e;
   c.expect(")");
   return {x, y};
 }
@@ -538,20 +550,30 @@ void def_wiring(Cursor& c, const std::string& layer, const std::map<std::string,
       }
     }
     std::optional<std::pair<std::int64_t, std::int64_t>> prev;
+    std::int64_t prev_ext = 0;
     for (;;) {
       const Tok t = c.peek();
       if (t.s == "(") {
-        const auto p = def_point(c, prev);
+        std::int64_t ext = 0;
+        const auto p = def_point(c, prev, &ext);
         if (on && net.special && prev) {
           if (p.first != prev->first && p.second != prev->second)
             c.fail("IO-0102", "a wiring segment of net " + net.name + " that is not axis-parallel", t.line);
           const std::int64_t h = width / 2;
           if (width % 2 != 0) c.fail("IO-0102", "odd wire width " + std::to_string(width) + " of net " + net.name + " (its half is not whole DBU)", t.line);
-          const std::int64_t x0 = std::min(p.first, prev->first) - h, x1 = std::max(p.first, prev->first) + h;
-          const std::int64_t y0 = std::min(p.second, prev->second) - h, y1 = std::max(p.second, prev->second) + h;
+          // the metal: half the width to each side, and along the wire only as far as the points
+          // and their extension values (a special wire has no other extension: as OpenDB reads it)
+          const bool horizontal = p.second == prev->second;
+          const auto lo_end = horizontal ? (p.first < prev->first ? ext : prev_ext) : (p.second < prev->second ? ext : prev_ext);
+          const auto hi_end = horizontal ? (p.first < prev->first ? prev_ext : ext) : (p.second < prev->second ? prev_ext : ext);
+          const std::int64_t x0 = std::min(p.first, prev->first) - (horizontal ? lo_end : h),
+                             x1 = std::max(p.first, prev->first) + (horizontal ? hi_end : h);
+          const std::int64_t y0 = std::min(p.second, prev->second) - (horizontal ? h : lo_end),
+                             y1 = std::max(p.second, prev->second) + (horizontal ? h : hi_end);
           if (!geom::in_range(x0) || !geom::in_range(x1) || !geom::in_range(y0) || !geom::in_range(y1))
             c.fail("IO-0103", "a wiring segment of net " + net.name + " beyond the coordinate range", t.line);
-          if (width > 0) net.wiring.push_back(Geo{true, {pt(x0, y0), pt(x1, y1)}, t.line});
+          if (width > 0 && p != *prev) net.wiring.push_back(Geo{true, {pt(x0, y0), pt(x1, y1)}, t.line});
+          if (width > 0 && p != *prev) net.segs.push_back(WireSeg{width, pt(prev->first, prev->second), pt(p.first, p.second)});
         }
         if (on && !net.special) {
           net.regular_wiring_on_layer = true;
@@ -559,6 +581,7 @@ void def_wiring(Cursor& c, const std::string& layer, const std::map<std::string,
         }
         if (on && net.special && !net.wiring_line) net.wiring_line = t.line;
         prev = p;
+        prev_ext = ext;
       } else if (t.s == "NEW") {
         c.next();
         break;
@@ -960,9 +983,39 @@ struct NetInfo {
   int line = 0;
   std::vector<Terminal> terms;
   std::vector<Geo> wiring;
+  std::vector<WireSeg> segs;
   bool regular_wiring_on_layer = false;
   int wiring_line = 0;
 };
+
+// --keep-wiring: a net's special wiring as 2-point wires on their centrelines. A segment drawn
+// out by half its width past a corner (as OpenROAD writes them, so that the rectangles overlap)
+// is taken back to the corner when the other segment's centreline passes exactly there, so the
+// wires meet end to end.
+std::vector<Wire> centre_wires(const std::vector<WireSeg>& segs) {
+  std::vector<Wire> out;
+  auto on = [](const WireSeg& s, Point r) {
+    return std::min(s.a.x, s.b.x) <= r.x && r.x <= std::max(s.a.x, s.b.x) && std::min(s.a.y, s.b.y) <= r.y &&
+           r.y <= std::max(s.a.y, s.b.y) && (s.a.x == s.b.x ? r.x == s.a.x : r.y == s.a.y);
+  };
+  for (std::size_t k = 0; k < segs.size(); ++k) {
+    const WireSeg& s = segs[k];
+    const std::int64_t h = s.w / 2;
+    auto pull = [&](Point p, Point q) {
+      const std::int64_t len = std::abs(std::int64_t{q.x} - p.x) + std::abs(std::int64_t{q.y} - p.y);
+      if (len <= h) return p;
+      const Point r{static_cast<geom::Coord>(p.x + (q.x > p.x) * h - (q.x < p.x) * h),
+                    static_cast<geom::Coord>(p.y + (q.y > p.y) * h - (q.y < p.y) * h)};
+      for (std::size_t j = 0; j < segs.size(); ++j)
+        if (j != k && (segs[j].a.x == segs[j].b.x) != (s.a.x == s.b.x) && on(segs[j], r)) return r;
+      return p;
+    };
+    Wire w;
+    w.points = {pull(s.a, s.b), pull(s.b, s.a)};
+    out.push_back(std::move(w));
+  }
+  return out;
+}
 
 Layout assemble(const Def& d, const Lib& lib, const DefImportOptions& o, const Cursor& dc, std::vector<Diagnostic>& diags,
                 DefImportStats& stats) {
@@ -1008,11 +1061,12 @@ Layout assemble(const Def& d, const Lib& lib, const DefImportOptions& o, const C
   std::map<std::string, std::size_t, std::less<>> net_index;
   for (const DefNet& dn : d.nets) {
     auto [it, fresh] = net_index.try_emplace(dn.name, nets.size());
-    if (fresh) nets.push_back(NetInfo{dn.name, dn.use, dn.line, {}, {}, false, 0});
+    if (fresh) nets.push_back(NetInfo{dn.name, dn.use, dn.line, {}, {}, {}, false, 0});
     NetInfo& n = nets[it->second];
     if (n.use.empty()) n.use = dn.use;
     n.terms.insert(n.terms.end(), dn.terms.begin(), dn.terms.end());
     n.wiring.insert(n.wiring.end(), dn.wiring.begin(), dn.wiring.end());
+    n.segs.insert(n.segs.end(), dn.segs.begin(), dn.segs.end());
     n.regular_wiring_on_layer = n.regular_wiring_on_layer || dn.regular_wiring_on_layer;
     if (!n.wiring_line) n.wiring_line = dn.wiring_line;
   }
@@ -1083,12 +1137,16 @@ Layout assemble(const Def& d, const Lib& lib, const DefImportOptions& o, const C
   out.rules = rules;
 
   std::vector<Blockage> extra;  // shapes of selected nets that are not written as nets
+  std::vector<Route> kept;      // --keep-wiring
   std::size_t pins_written = 0;
   for (std::size_t i = 0; i < nets.size(); ++i) {
     if (!selected[i]) continue;
     const NetInfo& ni = nets[i];
-    if (!ni.wiring.empty() || ni.regular_wiring_on_layer)
-      warn("IO-0107", ni.wiring_line, "net " + ni.name + " already has wiring on layer " + o.layer + ": not kept (taut routes the net)");
+    if (o.keep_wiring ? ni.regular_wiring_on_layer || ni.wiring.size() != ni.segs.size()
+                      : !ni.wiring.empty() || ni.regular_wiring_on_layer)
+      warn("IO-0107", ni.wiring_line,
+           "net " + ni.name + " already has wiring on layer " + o.layer +
+               (o.keep_wiring ? ": its regular wiring and vias are not kept (only special wires are)" : ": not kept (taut routes the net)"));
     Net net;
     net.name = ni.name;
     std::vector<char> cover;  // per pin: a bump's (a CLASS COVER cell's) shape
@@ -1187,6 +1245,22 @@ Layout assemble(const Def& d, const Lib& lib, const DefImportOptions& o, const C
       continue;
     }
     pins_written += net.pins.size();
+    if (o.keep_wiring) {
+      Route rt;
+      rt.net = net.name;
+      rt.wires = centre_wires(ni.segs);
+      if (rt.wires.empty()) {
+        rt.status = "failed";
+        rt.reason = "no special wiring on layer " + o.layer + " in the DEF";
+      } else {
+        rt.status = "routed";
+        std::vector<std::vector<Point>> lines;
+        for (const Wire& w : rt.wires) lines.push_back(w.points);
+        rt.length = format_total_length(lines);
+        rt.bends = 0;
+      }
+      kept.push_back(std::move(rt));
+    }
     out.nets.push_back(std::move(net));
   }
 
@@ -1236,6 +1310,13 @@ Layout assemble(const Def& d, const Lib& lib, const DefImportOptions& o, const C
     out.blockages.push_back(std::move(b));
   }
   for (Blockage& b : extra) out.blockages.push_back(std::move(b));
+  if (o.keep_wiring) {
+    Routes rs;
+    rs.tool = "DEF wiring (taut import --keep-wiring)";
+    rs.orientations = "rectilinear";
+    rs.routes = std::move(kept);
+    out.routes = std::move(rs);
+  }
   if (out.nets.empty() && out.blockages.empty()) dc.fail("IO-0105", "no shape of the design is on layer " + o.layer, 0);
   stats.nets = out.nets.size();
   stats.pins = pins_written;

@@ -25,7 +25,8 @@
 //   - one <blockage> per other metal: cell obstructions (OBS) of every instance, component pins
 //     and DEF pins on the layer that belong to no selected net, DEF BLOCKAGES on the layer, and
 //     the SPECIALNETS wiring on the layer of nets not selected (each segment as the rectangle
-//     its width and half-width extensions cover).
+//     it covers: half the width to each side, and along the wire to its points and their
+//     extension values, as OpenDB reads a special wire).
 //
 // Diagnostics (file:line, never a crash; errors leave no layout):
 //   IO-0100 a file cannot be read
@@ -64,6 +65,10 @@ struct DefImportOptions {
   // centres (each pad offered ceil(bumps / pads) times). As a flip-chip redistribution layer is
   // routed: a power net's pads are already joined by the pad ring, so each bump needs one.
   bool bump_to_pad = false;
+  // The selected nets' SPECIALNETS wiring on the layer is written as <routes> (each segment a
+  // 2-point wire on its centreline, taken back to the corner where it was drawn past one), so
+  // `taut check` and `taut stats` judge another router's result. Not with bump_to_pad.
+  bool keep_wiring = false;
 };
 
 struct DefImportStats {

@@ -16,7 +16,7 @@ void add_import(CLI::App& app, int& status) {
   struct Args {
     std::string def, out, layer, nets, width = "0", spacing = "0";
     std::vector<std::string> lefs;
-    bool quiet = false, bump_to_pad = false;
+    bool quiet = false, bump_to_pad = false, keep_wiring = false;
   };
   auto args = std::make_shared<Args>();
   CLI::App* sub = app.add_subcommand(
@@ -34,8 +34,17 @@ void add_import(CLI::App& app, int& status) {
   sub->add_flag("--bump-to-pad", args->bump_to_pad,
                 "a net with bumps (CLASS COVER cells) and other pins becomes a net per bump, joined to one pad pin: the "
                 "assignment of least total distance (a flip-chip RDL: the pad ring already joins a power net's pads)");
+  sub->add_flag("--keep-wiring", args->keep_wiring,
+                "write the selected nets' SPECIALNETS wiring on the layer as <routes> (centrelines), for taut check and taut "
+                "stats to judge another router's result");
   sub->add_flag("-q,--quiet", args->quiet, "do not print warnings or the summary");
   sub->callback([args, &status] {
+    if (args->keep_wiring && args->bump_to_pad) {
+      print_usage_error("CLI-0032", "import: --keep-wiring and --bump-to-pad together are not supported (the kept wiring "
+                                    "would have to be split among the bumps' nets)");
+      status = kInvalid;
+      return;
+    }
     io::DefImportOptions o;
     o.layer = args->layer;
     std::istringstream in(args->nets);
@@ -43,6 +52,7 @@ void add_import(CLI::App& app, int& status) {
     o.wire_width = args->width;
     o.spacing = args->spacing;
     o.bump_to_pad = args->bump_to_pad;
+    o.keep_wiring = args->keep_wiring;
     io::DefImportResult r = io::import_def(args->def, args->lefs, o);
     if (r.layout) {  // what taut check would say of the file: refused here, not at route time
       r.layout->file = args->def;

@@ -4,6 +4,7 @@
 //     (rdl_route.defok, an independent program's output) has its two free ends inside the net's
 //     two imported pin shapes, one in each (the pads in orientations N, W, FS and FW);
 //   - the imported layout routes, and the routed file passes `taut check`;
+//   - OpenROAD's routing itself, imported with --keep-wiring, passes `taut check`;
 //   - a LEF that cannot be read is exit status 2 with nothing written.
 // Skips when the data is absent.
 #include <gtest/gtest.h>
@@ -113,6 +114,30 @@ TEST(Import, TheRdlLayoutRoutesAndChecks) {
   EXPECT_GE(j["totals"]["completion"].get<double>(), 0.99);
   const auto check = run_taut({"check", dir + "/routed.xml"}, 600);
   EXPECT_EQ(check.status, 0) << check.out << check.err;
+}
+
+// OpenROAD's own routing of the signal nets, kept as <routes>, passes taut's independent check:
+// free space (its power wiring and the other pins as blockages), connectivity, clearance (4 um
+// at exactly the spacing in places), lengths as written.
+TEST(Import, OpenRoadsRoutingPassesTheCheck) {
+  REQUIRE_RDL();
+  const std::string dir = test::temp_dir("import_rdl_keep");
+  const std::string d = rdl_dir();
+  const auto r = run_taut({"import", d + "/rdl_route.defok", "--lef", d + "/dummy_pads.lef", "--layer", "metal10", "--nets", "p_*",
+                           "--wire-width", "4", "--spacing", "4", "--keep-wiring", "-q", "-o", dir + "/or.xml"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto check = run_taut({"check", dir + "/or.xml", "--json"}, 600);
+  EXPECT_EQ(check.status, 0) << check.out << check.err;
+  const auto stats = run_taut({"stats", dir + "/or.xml", "--json"});
+  ASSERT_EQ(stats.status, 0) << stats.err;
+  const auto j = nlohmann::json::parse(stats.out);
+  EXPECT_EQ(j["totals"]["routed"], 135);
+  // with --bump-to-pad: refused
+  const auto both = run_taut({"import", d + "/rdl_route.defok", "--lef", d + "/dummy_pads.lef", "--layer", "metal10",
+                              "--keep-wiring", "--bump-to-pad", "-o", dir + "/both.xml"});
+  EXPECT_EQ(both.status, 2);
+  EXPECT_NE(both.err.find("[CLI-0032]"), std::string::npos) << both.err;
+  EXPECT_FALSE(test::file_exists(dir + "/both.xml"));
 }
 
 TEST(Import, AMissingLefWritesNothing) {

@@ -169,14 +169,15 @@ TEST(ImportDef, NetsTakeTheirTerminalsAndEverythingElseOnTheLayerBlocks) {
   ASSERT_EQ(vdd->pins.size(), 2u);
   EXPECT_EQ(vdd->pins[1].name, "b/VDD");
   // the rest on the layer: obstructions, the layer blockage, the other net's wiring (half the
-  // width beyond each end); the placement blockage and m1 shapes are not on the layer
+  // width to each side, none past its ends: no extension values); the placement blockage and m1
+  // shapes are not on the layer
   ASSERT_NE(blockage(l, "a/OBS"), nullptr);
   EXPECT_EQ(blockage(l, "a/OBS")->shapes[0].rect, (Box{{10000, 5000}, {12500, 6000}}));
   ASSERT_NE(blockage(l, "b/OBS"), nullptr);
   ASSERT_NE(blockage(l, "BLOCKAGE/1"), nullptr);
   EXPECT_EQ(blockage(l, "BLOCKAGE/2"), nullptr);
   ASSERT_NE(blockage(l, "OTHER/wiring"), nullptr);
-  EXPECT_EQ(blockage(l, "OTHER/wiring")->shapes[0].rect, (Box{{599000, 99000}, {701000, 101000}}));
+  EXPECT_EQ(blockage(l, "OTHER/wiring")->shapes[0].rect, (Box{{600000, 99000}, {700000, 101000}}));
   EXPECT_EQ(l.blockages.size(), 4u);
   EXPECT_EQ(ok.stats.nets, 2u);
   EXPECT_EQ(ok.stats.pins, 5u);
@@ -297,13 +298,15 @@ TEST(ImportDef, BadInputIsAnsweredWithCodeFileAndLine) {
     EXPECT_EQ(d.file, c.file) << c.what;
   }
   // the LEF's own errors name the LEF
-  const DefImportResult lef = import_def_text({"t.def", def_with("")}, {{"x.lef", "MACRO M\n SIZE 1.0005 BY 1 ;\nEND M\n"}}, {"m2"});
+  DefImportOptions m2;
+  m2.layer = "m2";
+  const DefImportResult lef = import_def_text({"t.def", def_with("")}, {{"x.lef", "MACRO M\n SIZE 1.0005 BY 1 ;\nEND M\n"}}, m2);
   ASSERT_FALSE(lef.layout);
   EXPECT_EQ(lef.diagnostics.back().code, "IO-0103");
   EXPECT_EQ(lef.diagnostics.back().file, "x.lef");
   EXPECT_EQ(lef.diagnostics.back().line, 2);
   // files that cannot be read
-  const DefImportResult missing = import_def("/nonexistent/x.def", {}, {"m2"});
+  const DefImportResult missing = import_def("/nonexistent/x.def", {}, m2);
   ASSERT_FALSE(missing.layout);
   EXPECT_EQ(missing.diagnostics.back().code, "IO-0100");
   // --wire-width not whole DBU
@@ -330,6 +333,44 @@ TEST(ImportDef, WarningsSayWhatIsNotWritten) {
   EXPECT_EQ(codes, (std::vector<std::string>{"IO-0107:11", "IO-0106:15"}));
   ASSERT_NE(blockage(*r.layout, "lone/a/VDD"), nullptr);
   EXPECT_EQ(r.layout->nets.size(), 1u);
+}
+
+// --keep-wiring: a net's special wiring as wires on their centrelines; a segment drawn out by half
+// its width past a corner (OpenROAD's way: the boxes meet flush) is taken back to the corner,
+// so the wires meet end to end; an extension value lengthens the blockage of another net's wire.
+TEST(ImportDef, KeptWiringMeetsAtItsCorners) {
+  const std::string def = def_with(
+      "COMPONENTS 2 ;\n - a CELL + FIXED ( 0 0 ) N ;\n - b CELL + FIXED ( 200000 100000 ) N ;\nEND COMPONENTS\n"
+      "SPECIALNETS 2 ;\n"
+      // a/P centre (2000, 3000) to b/P centre (202000, 103000): right, up, right; width 1000
+      " - s ( a P ) ( b P ) + ROUTED m2 1000 ( 2000 3000 ) ( 100500 3000 ) NEW m2 1000 ( 100000 2500 ) ( 100000 103500 )\n"
+      "   NEW m2 1000 ( 99500 103000 ) ( 202000 103000 ) ;\n"
+      " - o + ROUTED m2 1000 ( 500000 500000 300 ) ( 600000 500000 ) ;\n"
+      "END SPECIALNETS\n");
+  DefImportOptions o;
+  o.nets = {"s"};
+  o.keep_wiring = true;
+  const DefImportResult r = run(def, o);
+  ASSERT_TRUE(r.layout) << errors(r);
+  ASSERT_TRUE(r.layout->routes);
+  ASSERT_EQ(r.layout->routes->routes.size(), 1u);
+  const Route& rt = r.layout->routes->routes[0];
+  EXPECT_EQ(rt.status, "routed");
+  ASSERT_EQ(rt.wires.size(), 3u);
+  EXPECT_EQ(rt.wires[0].points, (std::vector<Point>{{2000, 3000}, {100000, 3000}}));
+  EXPECT_EQ(rt.wires[1].points, (std::vector<Point>{{100000, 3000}, {100000, 103000}}));
+  EXPECT_EQ(rt.wires[2].points, (std::vector<Point>{{100000, 103000}, {202000, 103000}}));
+  EXPECT_EQ(rt.length, "300000");
+  const Blockage* w = blockage(*r.layout, "o/wiring");
+  ASSERT_NE(w, nullptr);
+  EXPECT_EQ(w->shapes[0].rect, (Box{{499700, 499500}, {600000, 500500}}));
+  // without the flag: no routes, and the wiring not kept is said
+  o.keep_wiring = false;
+  const DefImportResult plain = run(def, o);
+  ASSERT_TRUE(plain.layout);
+  EXPECT_FALSE(plain.layout->routes);
+  ASSERT_FALSE(plain.diagnostics.empty());
+  EXPECT_EQ(plain.diagnostics[0].code, "IO-0107");
 }
 
 // Seeded mutations of a small design (tokens deleted, duplicated, swapped, the text cut short):
