@@ -81,7 +81,7 @@ class Cursor {
     throw Failure{code, file_, line < 0 ? this->line() : line, msg};
   }
   const Tok& peek() const {
-    if (done()) fail("IO-0101", "unexpected end of file");
+    if (done()) fail("IO-0121", "unexpected end of file");
     return t_[k_];
   }
   // the token after the next one ("" at the end)
@@ -100,7 +100,7 @@ class Cursor {
   }
   void expect(std::string_view s) {
     const Tok t = next();
-    if (t.s != s) fail("IO-0101", "expected \"" + std::string(s) + "\", found \"" + std::string(t.s) + "\"", t.line);
+    if (t.s != s) fail("IO-0121", "expected \"" + std::string(s) + "\", found \"" + std::string(t.s) + "\"", t.line);
   }
   void skip_statement() {
     while (next().s != ";") {
@@ -111,7 +111,7 @@ class Cursor {
     if (k.s != "END") return false;
     const Tok e = next();
     if (e.s != name)
-      fail("IO-0101", std::string(kind) + " " + std::string(name) + " ends with END " + std::string(e.s), e.line);
+      fail("IO-0121", std::string(kind) + " " + std::string(name) + " ends with END " + std::string(e.s), e.line);
     return true;
   }
   // past the tokens "END <name>" (a block whose inner ENDs name other things)
@@ -137,8 +137,8 @@ std::int64_t def_int(const Cursor& c, const Tok& t) {
   const char* e = b + t.s.size();
   if (!t.s.empty() && *b == '+') ++b;
   auto [p, ec] = std::from_chars(b, e, v);
-  if (ec != std::errc() || p != e || b == e) c.fail("IO-0103", "\"" + std::string(t.s) + "\" is not an integer", t.line);
-  if (!geom::in_range(v)) c.fail("IO-0103", std::string(t.s) + " is beyond the coordinate range (|v| <= 2^30 - 1)", t.line);
+  if (ec != std::errc() || p != e || b == e) c.fail("IO-0123", "\"" + std::string(t.s) + "\" is not an integer", t.line);
+  if (!geom::in_range(v)) c.fail("IO-0123", std::string(t.s) + " is beyond the coordinate range (|v| <= 2^30 - 1)", t.line);
   return v;
 }
 
@@ -175,7 +175,7 @@ std::optional<std::int64_t> exact_dbu(std::string_view s, std::int64_t units) {
 std::int64_t lef_dbu(const Cursor& c, const Tok& t, std::int64_t units) {
   const auto v = exact_dbu(t.s, units);
   if (!v)
-    c.fail("IO-0103", "\"" + std::string(t.s) + "\" microns is not a whole number of DBU at " + std::to_string(units) +
+    c.fail("IO-0123", "\"" + std::string(t.s) + "\" microns is not a whole number of DBU at " + std::to_string(units) +
                           " DBU per micron (or is malformed, or beyond the coordinate range)", t.line);
   return *v;
 }
@@ -204,6 +204,7 @@ struct Macro {
   std::vector<std::string> pin_order;
   std::vector<Geo> obs;
   bool cover = false;  // CLASS COVER (a bump)
+  bool has_size = false;
 };
 
 struct Lib {
@@ -216,27 +217,34 @@ Point pt(std::int64_t x, std::int64_t y) { return Point{static_cast<geom::Coord>
 // RECT/POLYGON/VIA/PATH/ITERATE statement bodies inside LEF geometry (after the keyword).
 void lef_rect(Cursor& c, const Tok& kw, std::int64_t units, bool on_layer, std::vector<Geo>& out) {
   if (c.accept("MASK")) c.next();
-  if (c.peek().s == "ITERATE") c.fail("IO-0102", "RECT ITERATE is not supported", kw.line);
+  if (c.peek().s == "ITERATE") c.fail("IO-0122", "RECT ITERATE is not supported", kw.line);
+  if (!on_layer) {  // numbers off the layer are not converted: they need not be whole DBU here
+    for (int k = 0; k < 4; ++k) c.next();
+    c.expect(";");
+    return;
+  }
   std::int64_t v[4];
   for (auto& x : v) x = lef_dbu(c, c.next(), units);
   c.expect(";");
-  if (!on_layer) return;
-  if (v[0] == v[2] || v[1] == v[3]) c.fail("IO-0101", "a RECT with no area", kw.line);
+  if (v[0] == v[2] || v[1] == v[3]) c.fail("IO-0121", "a RECT with no area", kw.line);
   out.push_back({true, {pt(std::min(v[0], v[2]), std::min(v[1], v[3])), pt(std::max(v[0], v[2]), std::max(v[1], v[3]))}, kw.line});
 }
 
 void lef_polygon(Cursor& c, const Tok& kw, std::int64_t units, bool on_layer, std::vector<Geo>& out) {
   if (c.accept("MASK")) c.next();
-  if (c.peek().s == "ITERATE") c.fail("IO-0102", "POLYGON ITERATE is not supported", kw.line);
+  if (c.peek().s == "ITERATE") c.fail("IO-0122", "POLYGON ITERATE is not supported", kw.line);
+  if (!on_layer) {
+    c.skip_statement();
+    return;
+  }
   std::vector<Point> p;
   while (c.peek().s != ";") {
     const std::int64_t x = lef_dbu(c, c.next(), units);
-    if (c.peek().s == ";") c.fail("IO-0101", "a POLYGON with an odd number of coordinates", kw.line);
+    if (c.peek().s == ";") c.fail("IO-0121", "a POLYGON with an odd number of coordinates", kw.line);
     p.push_back(pt(x, lef_dbu(c, c.next(), units)));
   }
   c.expect(";");
-  if (!on_layer) return;
-  if (p.size() < 3) c.fail("IO-0101", "a POLYGON with fewer than three vertices", kw.line);
+  if (p.size() < 3) c.fail("IO-0121", "a POLYGON with fewer than three vertices", kw.line);
   out.push_back({false, std::move(p), kw.line});
 }
 
@@ -257,17 +265,19 @@ void lef_geometry(Cursor& c, std::int64_t units, const std::string& layer, const
     } else if (t.s == "POLYGON") {
       lef_polygon(c, t, units, on, out);
     } else if (t.s == "PATH") {
-      if (on) c.fail("IO-0102", "PATH on layer " + layer + " (in " + where + ") is not supported", t.line);
+      if (on) c.fail("IO-0122", "PATH on layer " + layer + " (in " + where + ") is not supported", t.line);
       c.skip_statement();
     } else if (t.s == "VIA") {
       if (c.accept("MASK")) c.next();
-      if (c.peek().s == "ITERATE") c.fail("IO-0102", "VIA ITERATE is not supported", t.line);
-      const std::int64_t x = lef_dbu(c, c.next(), units), y = lef_dbu(c, c.next(), units);
+      if (c.peek().s == "ITERATE") c.fail("IO-0122", "VIA ITERATE is not supported", t.line);
+      const Tok tx = c.next(), ty = c.next();
       const Tok name = c.next();
       c.expect(";");
       const auto v = lib.vias.find(name.s);
-      if (v == lib.vias.end()) c.fail("IO-0104", "via " + std::string(name.s) + " (in " + where + ") is not defined before it is used", name.line);
-      if (v->second.generated_on_layer) c.fail("IO-0102", "generated via " + std::string(name.s) + " on layer " + layer + " is not supported", name.line);
+      if (v == lib.vias.end()) c.fail("IO-0124", "via " + std::string(name.s) + " (in " + where + ") is not defined before it is used", name.line);
+      if (v->second.generated_on_layer) c.fail("IO-0122", "generated via " + std::string(name.s) + " on layer " + layer + " is not supported", name.line);
+      if (v->second.shapes.empty()) continue;  // nothing on the layer: its place need not be whole DBU
+      const std::int64_t x = lef_dbu(c, tx, units), y = lef_dbu(c, ty, units);
       for (Geo g : v->second.shapes) {
         for (Point& p : g.pts) p = pt(std::int64_t{p.x} + x, std::int64_t{p.y} + y);
         g.line = t.line;
@@ -287,18 +297,18 @@ void parse_lef(Cursor& c, std::int64_t units, const std::string& layer, Lib& lib
       Macro m;
       m.file = c.file();
       m.line = name.line;
-      Point origin{0, 0};
+      std::optional<std::pair<Tok, Tok>> origin_t, size_tok;  // converted below only if the macro has shapes on the layer
       for (;;) {
         const Tok k = c.next();
         if (c.ends(k, "MACRO", name.s)) break;
         if (k.s == "ORIGIN") {
-          const std::int64_t x = lef_dbu(c, c.next(), units), y = lef_dbu(c, c.next(), units);
-          origin = pt(x, y);
+          const Tok x = c.next(), y = c.next();
+          origin_t = {x, y};
           c.expect(";");
         } else if (k.s == "SIZE") {
-          m.w = lef_dbu(c, c.next(), units);
+          const Tok w = c.next();
           c.expect("BY");
-          m.h = lef_dbu(c, c.next(), units);
+          size_tok = {w, c.next()};
           c.expect(";");
         } else if (k.s == "PIN") {
           const Tok pn = c.next();
@@ -325,6 +335,15 @@ void parse_lef(Cursor& c, std::int64_t units, const std::string& layer, Lib& lib
         } else {
           c.skip_statement();
         }
+      }
+      bool on = !m.obs.empty();
+      for (const auto& [n, p] : m.pins) on = on || !p.shapes.empty();
+      Point origin{0, 0};
+      if (on && origin_t) origin = pt(lef_dbu(c, origin_t->first, units), lef_dbu(c, origin_t->second, units));
+      if (on && size_tok) {
+        m.w = lef_dbu(c, size_tok->first, units);
+        m.h = lef_dbu(c, size_tok->second, units);
+        m.has_size = true;
       }
       auto shift = [&](std::vector<Geo>& gs) {
         for (Geo& g : gs)
@@ -467,19 +486,19 @@ std::pair<std::int64_t, std::int64_t> def_point(Cursor& c, std::optional<std::pa
   const Tok ty = c.next();
   std::int64_t x = 0, y = 0;
   if (tx.s == "*") {
-    if (!prev) c.fail("IO-0101", "\"*\" with no previous point", tx.line);
+    if (!prev) c.fail("IO-0121", "\"*\" with no previous point", tx.line);
     x = prev->first;
   } else {
     x = def_int(c, tx);
   }
   if (ty.s == "*") {
-    if (!prev) c.fail("IO-0101", "\"*\" with no previous point", ty.line);
+    if (!prev) c.fail("IO-0121", "\"*\" with no previous point", ty.line);
     y = prev->second;
   } else {
     y = def_int(c, ty);
   }
   const std::int64_t e = c.peek().s != ")" ? def_int(c, c.next()) : 0;  // an extension value
-  if (e < 0) c.fail("IO-0103", "a negative extension", ty.line);
+  if (e < 0) c.fail("IO-0123", "a negative extension", ty.line);
   if (ext) *ext = e;
   c.expect(")");
   return {x, y};
@@ -491,7 +510,7 @@ Placement def_placement(Cursor& c) {
   std::tie(p.x, p.y) = def_point(c);
   const Tok o = c.next();
   const auto orient = parse_orient(o.s);
-  if (!orient) c.fail("IO-0101", "unknown orientation \"" + std::string(o.s) + "\"", o.line);
+  if (!orient) c.fail("IO-0121", "unknown orientation \"" + std::string(o.s) + "\"", o.line);
   p.orient = *orient;
   return p;
 }
@@ -504,7 +523,7 @@ void skip_option(Cursor& c) {
 Geo def_rect_geo(Cursor& c, int line) {
   const auto a = def_point(c);
   const auto b = def_point(c);
-  if (a.first == b.first || a.second == b.second) c.fail("IO-0101", "a rectangle with no area", line);
+  if (a.first == b.first || a.second == b.second) c.fail("IO-0121", "a rectangle with no area", line);
   return Geo{true,
              {pt(std::min(a.first, b.first), std::min(a.second, b.second)), pt(std::max(a.first, b.first), std::max(a.second, b.second))},
              line};
@@ -517,7 +536,7 @@ Geo def_polygon_geo(Cursor& c, int line) {
     prev = def_point(c, prev);
     g.pts.push_back(pt(prev->first, prev->second));
   }
-  if (g.pts.size() < 3) c.fail("IO-0101", "a POLYGON with fewer than three points", line);
+  if (g.pts.size() < 3) c.fail("IO-0121", "a POLYGON with fewer than three points", line);
   return g;
 }
 
@@ -558,9 +577,9 @@ void def_wiring(Cursor& c, const std::string& layer, const std::map<std::string,
         const auto p = def_point(c, prev, &ext);
         if (on && net.special && prev) {
           if (p.first != prev->first && p.second != prev->second)
-            c.fail("IO-0102", "a wiring segment of net " + net.name + " that is not axis-parallel", t.line);
+            c.fail("IO-0122", "a wiring segment of net " + net.name + " that is not axis-parallel", t.line);
           const std::int64_t h = width / 2;
-          if (width % 2 != 0) c.fail("IO-0102", "odd wire width " + std::to_string(width) + " of net " + net.name + " (its half is not whole DBU)", t.line);
+          if (width % 2 != 0) c.fail("IO-0122", "odd wire width " + std::to_string(width) + " of net " + net.name + " (its half is not whole DBU)", t.line);
           // the metal: half the width to each side, and along the wire only as far as the points
           // and their extension values (a special wire has no other extension: as OpenDB reads it)
           const bool horizontal = p.second == prev->second;
@@ -571,7 +590,7 @@ void def_wiring(Cursor& c, const std::string& layer, const std::map<std::string,
           const std::int64_t y0 = std::min(p.second, prev->second) - (horizontal ? h : lo_end),
                              y1 = std::max(p.second, prev->second) + (horizontal ? h : hi_end);
           if (!geom::in_range(x0) || !geom::in_range(x1) || !geom::in_range(y0) || !geom::in_range(y1))
-            c.fail("IO-0103", "a wiring segment of net " + net.name + " beyond the coordinate range", t.line);
+            c.fail("IO-0123", "a wiring segment of net " + net.name + " beyond the coordinate range", t.line);
           if (width > 0 && p != *prev) net.wiring.push_back(Geo{true, {pt(x0, y0), pt(x1, y1)}, t.line});
           if (width > 0 && p != *prev) net.segs.push_back(WireSeg{width, pt(prev->first, prev->second), pt(p.first, p.second)});
         }
@@ -589,9 +608,10 @@ void def_wiring(Cursor& c, const std::string& layer, const std::map<std::string,
         return;
       } else if (t.s == "RECT" || t.s == "VIRTUAL") {  // regular-net patches and virtual points
         c.next();
-        if (t.s == "RECT") {
-          def_point(c);
-          def_point(c);
+        if (t.s == "RECT") {  // RECT ( dx1 dy1 dx2 dy2 ), relative to the previous point
+          c.expect("(");
+          for (int k = 0; k < 4; ++k) def_int(c, c.next());
+          c.expect(")");
           if (on) net.regular_wiring_on_layer = true;
         } else {
           def_point(c);
@@ -601,14 +621,14 @@ void def_wiring(Cursor& c, const std::string& layer, const std::map<std::string,
         c.next();
       } else {  // a via at the previous point, with an optional orientation (or DO .. BY .. STEP ..)
         c.next();
-        if (!prev) c.fail("IO-0101", "via " + std::string(t.s) + " with no point", t.line);
+        if (!prev) c.fail("IO-0121", "via " + std::string(t.s) + " with no point", t.line);
         if (parse_orient(c.peek().s)) c.next();
-        if (c.peek().s == "DO") c.fail("IO-0102", "via arrays (DO .. BY .. STEP) are not supported", t.line);
+        if (c.peek().s == "DO") c.fail("IO-0122", "via arrays (DO .. BY .. STEP) are not supported", t.line);
         const Via* v = nullptr;
         if (const auto d = def_vias.find(t.s); d != def_vias.end()) v = &d->second;
         else if (const auto l = lib.vias.find(t.s); l != lib.vias.end()) v = &l->second;
-        if (!v) c.fail("IO-0104", "via " + std::string(t.s) + " of net " + net.name + " is not defined", t.line);
-        if (v->generated_on_layer) c.fail("IO-0102", "generated via " + std::string(t.s) + " on layer " + layer + " is not supported", t.line);
+        if (!v) c.fail("IO-0124", "via " + std::string(t.s) + " of net " + net.name + " is not defined", t.line);
+        if (v->generated_on_layer) c.fail("IO-0122", "generated via " + std::string(t.s) + " on layer " + layer + " is not supported", t.line);
         for (Geo g : v->shapes) {
           for (Point& q : g.pts) q = pt(std::int64_t{q.x} + prev->first, std::int64_t{q.y} + prev->second);
           g.line = t.line;
@@ -626,7 +646,7 @@ void parse_def(Cursor& c, const std::string& layer, const Lib& lib, Def& d) {
     if (c.peek().s == "END") {
       c.next();
       const Tok e = c.next();
-      if (e.s != name) c.fail("IO-0101", "section " + std::string(name) + " ends with END " + std::string(e.s), e.line);
+      if (e.s != name) c.fail("IO-0121", "section " + std::string(name) + " ends with END " + std::string(e.s), e.line);
       return true;
     }
     return false;
@@ -641,10 +661,10 @@ void parse_def(Cursor& c, const std::string& layer, const Lib& lib, Def& d) {
       c.expect("DISTANCE");
       c.expect("MICRONS");
       const Tok u = c.next();
-      if (d.units != 0) c.fail("IO-0101", "a second UNITS statement", t.line);
+      if (d.units != 0) c.fail("IO-0121", "a second UNITS statement", t.line);
       d.units = def_int(c, u);
       d.units_line = u.line;
-      if (d.units <= 0) c.fail("IO-0103", "UNITS DISTANCE MICRONS must be positive", u.line);
+      if (d.units <= 0) c.fail("IO-0123", "UNITS DISTANCE MICRONS must be positive", u.line);
       c.expect(";");
     } else if (t.s == "DIEAREA") {
       std::vector<Point> p;
@@ -666,8 +686,8 @@ void parse_def(Cursor& c, const std::string& layer, const Lib& lib, Def& d) {
           rect = rect && (u.x == v.x) != (u.y == v.y) && (u.x == b.lo.x || u.x == b.hi.x) && (u.y == b.lo.y || u.y == b.hi.y);
         }
       }
-      if (!rect) c.fail("IO-0102", "a DIEAREA that is not a rectangle is not supported", t.line);
-      if (b.lo.x == b.hi.x || b.lo.y == b.hi.y) c.fail("IO-0101", "a DIEAREA with no area", t.line);
+      if (!rect) c.fail("IO-0122", "a DIEAREA that is not a rectangle is not supported", t.line);
+      if (b.lo.x == b.hi.x || b.lo.y == b.hi.y) c.fail("IO-0121", "a DIEAREA with no area", t.line);
       d.die = b;
     } else if (t.s == "VIAS") {
       c.skip_statement();
@@ -752,8 +772,8 @@ void parse_def(Cursor& c, const std::string& layer, const Lib& lib, Def& d) {
             const Via* v = nullptr;
             if (const auto dv = d.vias.find(vn.s); dv != d.vias.end()) v = &dv->second;
             else if (const auto lv = lib.vias.find(vn.s); lv != lib.vias.end()) v = &lv->second;
-            if (!v) c.fail("IO-0104", "via " + std::string(vn.s) + " of pin " + p.name + " is not defined", vn.line);
-            if (v->generated_on_layer) c.fail("IO-0102", "generated via " + std::string(vn.s) + " on layer " + layer + " is not supported", vn.line);
+            if (!v) c.fail("IO-0124", "via " + std::string(vn.s) + " of pin " + p.name + " is not defined", vn.line);
+            if (v->generated_on_layer) c.fail("IO-0122", "generated via " + std::string(vn.s) + " on layer " + layer + " is not supported", vn.line);
             for (Geo g : v->shapes) {
               for (Point& q : g.pts) q = pt(std::int64_t{q.x} + at.first, std::int64_t{q.y} + at.second);
               g.line = vn.line;
@@ -778,7 +798,7 @@ void parse_def(Cursor& c, const std::string& layer, const Lib& lib, Def& d) {
         const Tok n = c.next();
         net.name = std::string(n.s);
         net.line = n.line;
-        if (c.accept("MUSTJOIN")) c.fail("IO-0102", "MUSTJOIN nets are not supported", n.line);
+        if (c.accept("MUSTJOIN")) c.fail("IO-0122", "MUSTJOIN nets are not supported", n.line);
         while (c.peek().s == "(") {
           const Tok open = c.next();
           Terminal term;
@@ -811,7 +831,7 @@ void parse_def(Cursor& c, const std::string& layer, const Lib& lib, Def& d) {
               if (!net.wiring_line) net.wiring_line = k.line;
             }
           } else if (k.s == "SUBNET") {
-            c.fail("IO-0102", "SUBNET in net " + net.name + " is not supported", k.line);
+            c.fail("IO-0122", "SUBNET in net " + net.name + " is not supported", k.line);
           } else {
             skip_option(c);
           }
@@ -829,7 +849,7 @@ void parse_def(Cursor& c, const std::string& layer, const Lib& lib, Def& d) {
         if (k.s == "LAYER") {
           on = c.next().s == layer;
         } else if (k.s != "PLACEMENT" && k.s != "VIA") {
-          c.fail("IO-0101", "an item of " + std::string(section) + " is LAYER, PLACEMENT or VIA, not \"" + std::string(k.s) + "\"", k.line);
+          c.fail("IO-0121", "an item of " + std::string(section) + " is LAYER, PLACEMENT or VIA, not \"" + std::string(k.s) + "\"", k.line);
         }
         std::optional<Tok> via;  // FILLS: "- VIA name [+ MASK n] [+ OPC] pts"
         if (k.s == "VIA") via = c.next();
@@ -844,8 +864,8 @@ void parse_def(Cursor& c, const std::string& layer, const Lib& lib, Def& d) {
             const Via* v = nullptr;
             if (const auto dv = d.vias.find(via->s); dv != d.vias.end()) v = &dv->second;
             else if (const auto lv = lib.vias.find(via->s); lv != lib.vias.end()) v = &lv->second;
-            if (!v) c.fail("IO-0104", "via " + std::string(via->s) + " is not defined", via->line);
-            if (v->generated_on_layer) c.fail("IO-0102", "generated via " + std::string(via->s) + " on layer " + layer + " is not supported", via->line);
+            if (!v) c.fail("IO-0124", "via " + std::string(via->s) + " is not defined", via->line);
+            if (v->generated_on_layer) c.fail("IO-0122", "generated via " + std::string(via->s) + " on layer " + layer + " is not supported", via->line);
             for (Geo g : v->shapes) {
               for (Point& r : g.pts) r = pt(std::int64_t{r.x} + at.first, std::int64_t{r.y} + at.second);
               g.line = q.line;
@@ -869,7 +889,7 @@ void parse_def(Cursor& c, const std::string& layer, const Lib& lib, Def& d) {
     } else if (t.s == "PROPERTYDEFINITIONS") {
       c.skip_block("PROPERTYDEFINITIONS");
     } else if (t.s == "REGIONS" || t.s == "GROUPS" || t.s == "NONDEFAULTRULES" || t.s == "SCANCHAINS" || t.s == "STYLES" ||
-               t.s == "SLOTS" || t.s == "PINPROPERTIES" || t.s == "COMPONENTMASKSHIFT" || t.s == "BEGINEXT") {
+               t.s == "SLOTS" || t.s == "PINPROPERTIES" || t.s == "BEGINEXT") {
       if (t.s == "BEGINEXT") {
         while (c.next().s != "ENDEXT") {
         }
@@ -882,8 +902,10 @@ void parse_def(Cursor& c, const std::string& layer, const Lib& lib, Def& d) {
   }
 }
 
-Shape to_shape(const Geo& g) {
+// A shape as the layout holds it, with `line` the DEF line of the object it comes from.
+Shape to_shape(const Geo& g, int line) {
   Shape s;
+  s.line = line;
   if (g.rect) {
     s.kind = Shape::Kind::Rect;
     s.rect = Box{g.pts[0], g.pts[1]};
@@ -901,7 +923,7 @@ Geo moved(const Geo& g, Orient o, std::int64_t dx, std::int64_t dy, const Cursor
   for (Point& p : out.pts) {
     const auto [x, y] = turn(o, p.x, p.y);
     if (!geom::in_range(x + dx) || !geom::in_range(y + dy))
-      c.fail("IO-0103", "a shape placed beyond the coordinate range (|v| <= 2^30 - 1)", g.line);
+      c.fail("IO-0123", "a shape placed beyond the coordinate range (|v| <= 2^30 - 1)", g.line);
     p = pt(x + dx, y + dy);
   }
   if (out.rect)
@@ -1026,31 +1048,39 @@ Layout assemble(const Def& d, const Lib& lib, const DefImportOptions& o, const C
   std::map<std::string, std::size_t, std::less<>> comp_index;
   for (std::size_t i = 0; i < d.comps.size(); ++i) {
     const Component& cp = d.comps[i];
-    comp_index[cp.name] = i;
+    if (!comp_index.try_emplace(cp.name, i).second)
+      dc.fail("IO-0129", "component " + cp.name + " is defined twice (first on line " + std::to_string(d.comps[comp_index[cp.name]].line) + ")",
+              cp.line);
     const auto m = lib.macros.find(cp.macro);
     if (m == lib.macros.end())
-      dc.fail("IO-0104", "component " + cp.name + ": macro " + cp.macro + " is not in the LEF files", cp.line);
+      dc.fail("IO-0124", "component " + cp.name + ": macro " + cp.macro + " is not in the LEF files", cp.line);
     if (!cp.at.placed) {
       bool on = !m->second.obs.empty();
       for (const auto& [n, p] : m->second.pins) on = on || !p.shapes.empty();
-      if (on) dc.fail("IO-0102", "component " + cp.name + " is not placed but its macro " + cp.macro + " has shapes on layer " + o.layer, cp.line);
+      if (on) dc.fail("IO-0122", "component " + cp.name + " is not placed but its macro " + cp.macro + " has shapes on layer " + o.layer, cp.line);
     }
   }
   auto macro_of = [&](std::size_t i) -> const Macro& { return lib.macros.find(d.comps[i].macro)->second; };
   auto place = [&](std::size_t i, const Geo& g) {
     const Component& cp = d.comps[i];
     const Macro& m = macro_of(i);
+    if (!m.has_size && cp.at.orient != Orient::N)
+      dc.fail("IO-0121", "component " + cp.name + ": macro " + cp.macro + " has no SIZE, so orientation other than N cannot be placed",
+              cp.line);
     const auto [ax, ay] = turn(cp.at.orient, 0, 0);
     const auto [bx, by] = turn(cp.at.orient, m.w, m.h);
     return moved(g, cp.at.orient, cp.at.x - std::min(ax, bx), cp.at.y - std::min(ay, by), dc);
   };
   std::map<std::string, std::size_t, std::less<>> pin_index;
-  for (std::size_t i = 0; i < d.pins.size(); ++i) pin_index[d.pins[i].name] = i;
+  for (std::size_t i = 0; i < d.pins.size(); ++i)
+    if (!pin_index.try_emplace(d.pins[i].name, i).second)
+      dc.fail("IO-0129", "pin " + d.pins[i].name + " is defined twice (first on line " + std::to_string(d.pins[pin_index[d.pins[i].name]].line) + ")",
+              d.pins[i].line);
   auto def_pin_shapes = [&](std::size_t i) {
     std::vector<Geo> out;
     for (const DefPort& port : d.pins[i].ports)
       for (const Geo& g : port.shapes) {
-        if (!port.at.placed) dc.fail("IO-0102", "pin " + d.pins[i].name + " has shapes on layer " + o.layer + " but is not placed", port.line);
+        if (!port.at.placed) dc.fail("IO-0122", "pin " + d.pins[i].name + " has shapes on layer " + o.layer + " but is not placed", port.line);
         out.push_back(moved(g, port.at.orient, port.at.x, port.at.y, dc));
       }
     return out;
@@ -1075,7 +1105,7 @@ Layout assemble(const Def& d, const Lib& lib, const DefImportOptions& o, const C
     bool any = false;
     for (std::size_t i = 0; i < nets.size(); ++i)
       if (fnmatch(pat.c_str(), nets[i].name.c_str(), 0) == 0) selected[i] = any = true;
-    if (!any) dc.fail("IO-0105", "--nets pattern \"" + pat + "\" matches no net of the DEF", 0);
+    if (!any) dc.fail("IO-0125", "--nets pattern \"" + pat + "\" matches no net of the DEF", 0);
   }
 
   // which selected net owns each terminal: explicit ones first, then `( * pin )` and the global
@@ -1088,18 +1118,18 @@ Layout assemble(const Def& d, const Lib& lib, const DefImportOptions& o, const C
       if (t.comp == "*") continue;
       if (t.comp == "PIN") {
         const auto p = pin_index.find(t.pin);
-        if (p == pin_index.end()) dc.fail("IO-0104", "net " + nets[i].name + ": pin " + t.pin + " is not in PINS", t.line);
+        if (p == pin_index.end()) dc.fail("IO-0124", "net " + nets[i].name + ": pin " + t.pin + " is not in PINS", t.line);
         pin_owner.try_emplace(p->second, i);
         continue;
       }
       const auto ci = comp_index.find(t.comp);
-      if (ci == comp_index.end()) dc.fail("IO-0104", "net " + nets[i].name + ": component " + t.comp + " is not in COMPONENTS", t.line);
+      if (ci == comp_index.end()) dc.fail("IO-0124", "net " + nets[i].name + ": component " + t.comp + " is not in COMPONENTS", t.line);
       const Macro& m = macro_of(ci->second);
       if (!m.pins.count(t.pin))
-        dc.fail("IO-0104", "net " + nets[i].name + ": component " + t.comp + " (macro " + d.comps[ci->second].macro + ") has no pin " + t.pin, t.line);
+        dc.fail("IO-0124", "net " + nets[i].name + ": component " + t.comp + " (macro " + d.comps[ci->second].macro + ") has no pin " + t.pin, t.line);
       const auto [it, fresh] = owner.try_emplace({ci->second, t.pin}, i);
       if (!fresh && it->second != i)
-        dc.fail("IO-0104", "terminal " + t.comp + "/" + t.pin + " is in nets " + nets[it->second].name + " and " + nets[i].name, t.line);
+        dc.fail("IO-0124", "terminal " + t.comp + "/" + t.pin + " is in nets " + nets[it->second].name + " and " + nets[i].name, t.line);
     }
   }
   for (std::size_t i = 0; i < d.pins.size(); ++i)
@@ -1124,38 +1154,38 @@ Layout assemble(const Def& d, const Lib& lib, const DefImportOptions& o, const C
     }
   }
 
+  if (d.units == 0)  // scanned but not read as a statement: swallowed by a statement missing its ';'
+    dc.fail("IO-0121", "UNITS DISTANCE MICRONS is not read as a statement (is a ';' missing before it?)", 0);
   Layout out;
   out.name = d.design.empty() ? "imported" : d.design;
   out.dbu_per_micron = d.units;
   if (d.die) out.boundary = Boundary{*d.die, 0};
   Rules rules;
   const auto w = exact_dbu(o.wire_width, d.units), s = exact_dbu(o.spacing, d.units);
-  if (!w || *w < 0) dc.fail("IO-0103", "--wire-width " + o.wire_width + " microns is not a whole, non-negative number of DBU at " + std::to_string(d.units) + " DBU per micron", 0);
-  if (!s || *s < 0) dc.fail("IO-0103", "--spacing " + o.spacing + " microns is not a whole, non-negative number of DBU at " + std::to_string(d.units) + " DBU per micron", 0);
+  if (!w || *w < 0) dc.fail("IO-0123", "--wire-width " + o.wire_width + " microns is not a whole, non-negative number of DBU at " + std::to_string(d.units) + " DBU per micron", 0);
+  if (!s || *s < 0) dc.fail("IO-0123", "--spacing " + o.spacing + " microns is not a whole, non-negative number of DBU at " + std::to_string(d.units) + " DBU per micron", 0);
   rules.wire_width = *w;
   rules.spacing = *s;
   out.rules = rules;
 
   std::vector<Blockage> extra;  // shapes of selected nets that are not written as nets
   std::vector<Route> kept;      // --keep-wiring
+  std::vector<char> written(nets.size(), 0);  // written as a net (or nets)
   std::size_t pins_written = 0;
   for (std::size_t i = 0; i < nets.size(); ++i) {
     if (!selected[i]) continue;
     const NetInfo& ni = nets[i];
-    if (o.keep_wiring ? ni.regular_wiring_on_layer || ni.wiring.size() != ni.segs.size()
-                      : !ni.wiring.empty() || ni.regular_wiring_on_layer)
-      warn("IO-0107", ni.wiring_line,
-           "net " + ni.name + " already has wiring on layer " + o.layer +
-               (o.keep_wiring ? ": its regular wiring and vias are not kept (only special wires are)" : ": not kept (taut routes the net)"));
     Net net;
     net.name = ni.name;
+    net.line = ni.line;
     std::vector<char> cover;  // per pin: a bump's (a CLASS COVER cell's) shape
-    auto add = [&](const std::string& name, const std::vector<Geo>& shapes, bool is_cover) {
+    auto same = [](const Shape& a, const Shape& b) { return a.kind == b.kind && a.rect == b.rect && a.polygon == b.polygon; };
+    auto add = [&](const std::string& name, const std::vector<Geo>& shapes, bool is_cover, int line) {
       for (std::size_t k = 0; k < shapes.size(); ++k) {
-        Shape sh = to_shape(shapes[k]);
+        Shape sh = to_shape(shapes[k], line);
         const std::string pn = shapes.size() == 1 ? name : name + "#" + std::to_string(k + 1);
         std::size_t j = 0;
-        while (j < net.pins.size() && *net.pins[j].shape != sh) ++j;
+        while (j < net.pins.size() && !same(*net.pins[j].shape, sh)) ++j;
         if (j < net.pins.size()) {  // the same shape twice: one pin, named by the bump if one is
           if (is_cover && !cover[j]) net.pins[j].name = pn;
           cover[j] = cover[j] || is_cover;
@@ -1163,6 +1193,7 @@ Layout assemble(const Def& d, const Lib& lib, const DefImportOptions& o, const C
         }
         Pin p;
         p.name = pn;
+        p.line = line;
         p.shape = std::move(sh);
         net.pins.push_back(std::move(p));
         cover.push_back(is_cover);
@@ -1173,7 +1204,7 @@ Layout assemble(const Def& d, const Lib& lib, const DefImportOptions& o, const C
     std::set<std::pair<std::size_t, std::string>> comps_done;
     auto add_def_pin = [&](std::size_t p) {
       if (!pins_done.insert(p).second) return;
-      add("PIN/" + d.pins[p].name, def_pin_shapes(p), false);
+      add("PIN/" + d.pins[p].name, def_pin_shapes(p), false, d.pins[p].line);
     };
     for (const Terminal& t : ni.terms) {
       if (t.comp == "*") continue;
@@ -1189,7 +1220,7 @@ Layout assemble(const Def& d, const Lib& lib, const DefImportOptions& o, const C
       std::vector<Geo> g;
       for (const Geo& x : macro_of(c).pins.find(t.pin)->second.shapes) g.push_back(place(c, x));
       if (g.empty()) off_layer.push_back({t.line, t.comp + "/" + t.pin});
-      add(t.comp + "/" + t.pin, g, macro_of(c).cover);
+      add(t.comp + "/" + t.pin, g, macro_of(c).cover, d.comps[c].line);
     }
     for (std::size_t p = 0; p < d.pins.size(); ++p)
       if (const auto po = pin_owner.find(p); po != pin_owner.end() && po->second == i) add_def_pin(p);
@@ -1197,54 +1228,69 @@ Layout assemble(const Def& d, const Lib& lib, const DefImportOptions& o, const C
       if (!comps_done.insert({c, pin}).second) continue;
       std::vector<Geo> g;
       for (const Geo& x : macro_of(c).pins.find(pin)->second.shapes) g.push_back(place(c, x));
-      add(d.comps[c].name + "/" + pin, g, macro_of(c).cover);
+      add(d.comps[c].name + "/" + pin, g, macro_of(c).cover, d.comps[c].line);
     }
     if (!off_layer.empty())  // one line per net: a power net lists hundreds of cells' pins on other layers
-      warn("IO-0106", off_layer[0].first,
+      warn("IO-0126", off_layer[0].first,
            "net " + ni.name + ": " + std::to_string(off_layer.size()) + " of its terminals have no shape on layer " + o.layer +
                " (the first: " + off_layer[0].second + "); they are not pins here");
-    if (net.pins.size() < 2) {
-      warn("IO-0106", ni.line, "net " + ni.name + " has " + std::to_string(net.pins.size()) + " pin shape(s) on layer " + o.layer +
-                                   ": not written as a net" + (net.pins.empty() ? "" : " (its shape is a blockage)"));
+    if (net.pins.size() < 2) {  // its shape and its wiring (below) are blockages
+      warn("IO-0126", ni.line, "net " + ni.name + " has " + std::to_string(net.pins.size()) + " pin shape(s) on layer " + o.layer +
+                                   ": not written as a net" +
+                                   (net.pins.empty() && ni.wiring.empty() ? "" : " (its shape and wiring there are blockages)"));
       if (!net.pins.empty()) {
         Blockage b;
         b.id = ni.name + "/" + net.pins[0].name;
+        b.line = net.pins[0].line;
         b.shapes.push_back(*net.pins[0].shape);
         extra.push_back(std::move(b));
       }
       continue;
     }
+    if (o.keep_wiring ? ni.regular_wiring_on_layer || ni.wiring.size() != ni.segs.size()
+                      : !ni.wiring.empty() || ni.regular_wiring_on_layer)
+      warn("IO-0127", ni.wiring_line,
+           "net " + ni.name + " already has wiring on layer " + o.layer +
+               (o.keep_wiring ? ": its regular wiring and vias are not kept (only special wires are)" : ": not kept (taut routes the net)"));
     std::size_t covers = 0;
     for (const char x : cover) covers += x;
     if (o.bump_to_pad && covers > 0 && covers < net.pins.size() && net.pins.size() > 2) {
-      // a net per bump, joined to the pad pin the assignment gives it
+      // a net per pad the assignment gives bumps to: the pad and its bumps (one bump unless
+      // there are more bumps than pads), named by its first bump
       std::vector<std::size_t> bumps, pads;
       for (std::size_t k = 0; k < net.pins.size(); ++k) (cover[k] ? bumps : pads).push_back(k);
       const std::vector<std::size_t> to = assign_bumps(net.pins, bumps, pads);
       std::vector<char> used(net.pins.size(), 0);
       for (std::size_t b = 0; b < bumps.size(); ++b) {
+        if (used[to[b]]) continue;  // joined to the net of this pad's first bump
         Net part;
         part.name = net.name + "/" + net.pins[bumps[b]].name;
-        part.pins = {net.pins[bumps[b]], net.pins[to[b]]};
+        part.line = net.line;
+        for (std::size_t c = b; c < bumps.size(); ++c)
+          if (to[c] == to[b]) part.pins.push_back(net.pins[bumps[c]]);
+        part.pins.push_back(net.pins[to[b]]);
         used[to[b]] = 1;
-        pins_written += 2;
+        pins_written += part.pins.size();
         out.nets.push_back(std::move(part));
       }
+      written[i] = 1;
       std::size_t unused = 0;
       for (const std::size_t k : pads) {
         if (used[k]) continue;
         ++unused;
         Blockage b;
         b.id = net.name + "/" + net.pins[k].name;
+        b.line = net.pins[k].line;
         b.shapes.push_back(*net.pins[k].shape);
         extra.push_back(std::move(b));
       }
       if (unused > 0)
-        warn("IO-0108", ni.line, "net " + ni.name + ": " + std::to_string(unused) + " of its " + std::to_string(pads.size()) +
+        warn("IO-0128", ni.line, "net " + ni.name + ": " + std::to_string(unused) + " of its " + std::to_string(pads.size()) +
                                      " pad pins are joined to no bump (more pads than bumps); they are blockages");
       continue;
     }
     pins_written += net.pins.size();
+    written[i] = 1;
     if (o.keep_wiring) {
       Route rt;
       rt.net = net.name;
@@ -1273,13 +1319,15 @@ Layout assemble(const Def& d, const Lib& lib, const DefImportOptions& o, const C
       if (shapes.empty() || owner.count({c, pin})) continue;
       Blockage b;
       b.id = d.comps[c].name + "/" + pin;
-      for (const Geo& g : shapes) b.shapes.push_back(to_shape(place(c, g)));
+      b.line = d.comps[c].line;
+      for (const Geo& g : shapes) b.shapes.push_back(to_shape(place(c, g), b.line));
       out.blockages.push_back(std::move(b));
     }
     if (!m.obs.empty()) {
       Blockage b;
       b.id = d.comps[c].name + "/OBS";
-      for (const Geo& g : m.obs) b.shapes.push_back(to_shape(place(c, g)));
+      b.line = d.comps[c].line;
+      for (const Geo& g : m.obs) b.shapes.push_back(to_shape(place(c, g), b.line));
       out.blockages.push_back(std::move(b));
     }
   }
@@ -1289,24 +1337,27 @@ Layout assemble(const Def& d, const Lib& lib, const DefImportOptions& o, const C
     if (g.empty()) continue;
     Blockage b;
     b.id = "PIN/" + d.pins[p].name;
-    for (const Geo& x : g) b.shapes.push_back(to_shape(x));
+    b.line = d.pins[p].line;
+    for (const Geo& x : g) b.shapes.push_back(to_shape(x, b.line));
     out.blockages.push_back(std::move(b));
   }
   for (std::size_t k = 0; k < d.blockages.size(); ++k) {
     Blockage b;
     b.id = "BLOCKAGE/" + std::to_string(k + 1);
-    b.shapes.push_back(to_shape(d.blockages[k]));
+    b.line = d.blockages[k].line;
+    b.shapes.push_back(to_shape(d.blockages[k], b.line));
     out.blockages.push_back(std::move(b));
   }
   for (std::size_t i = 0; i < nets.size(); ++i) {
-    if (selected[i]) continue;
+    if (written[i]) continue;  // (a selected net not written, with fewer than two pins: its wiring blocks too)
     if (nets[i].regular_wiring_on_layer)
-      dc.fail("IO-0102", "net " + nets[i].name + " (not selected) has regular wiring on layer " + o.layer +
+      dc.fail("IO-0122", "net " + nets[i].name + (selected[i] ? " (not written)" : " (not selected)") + " has regular wiring on layer " + o.layer +
                              ": not supported (select the net, or remove its wiring)", nets[i].wiring_line);
     if (nets[i].wiring.empty()) continue;
     Blockage b;
     b.id = nets[i].name + "/wiring";
-    for (const Geo& g : nets[i].wiring) b.shapes.push_back(to_shape(g));
+    b.line = nets[i].wiring_line;
+    for (const Geo& g : nets[i].wiring) b.shapes.push_back(to_shape(g, g.line));
     out.blockages.push_back(std::move(b));
   }
   for (Blockage& b : extra) out.blockages.push_back(std::move(b));
@@ -1317,7 +1368,7 @@ Layout assemble(const Def& d, const Lib& lib, const DefImportOptions& o, const C
     rs.routes = std::move(kept);
     out.routes = std::move(rs);
   }
-  if (out.nets.empty() && out.blockages.empty()) dc.fail("IO-0105", "no shape of the design is on layer " + o.layer, 0);
+  if (out.nets.empty() && out.blockages.empty()) dc.fail("IO-0125", "no shape of the design is on layer " + o.layer, 0);
   stats.nets = out.nets.size();
   stats.pins = pins_written;
   stats.blockages = out.blockages.size();
@@ -1347,8 +1398,8 @@ DefImportResult import_def_text(const std::pair<std::string, std::string>& def,
     const std::int64_t units = scan_units(toks);
     Cursor dc(std::move(toks), def.first);
     {
-      if (units == 0) dc.fail("IO-0101", "no UNITS DISTANCE MICRONS statement", 1);
-      if (units < 0) dc.fail("IO-0103", "UNITS DISTANCE MICRONS is not an integer from 1 to 10^6", 1);
+      if (units == 0) dc.fail("IO-0121", "no UNITS DISTANCE MICRONS statement", 1);
+      if (units < 0) dc.fail("IO-0123", "UNITS DISTANCE MICRONS is not an integer from 1 to 10^6", 1);
       Lib lib;
       for (const auto& [name, text] : lefs) {
         Cursor lc(tokenize(text), name);
@@ -1380,14 +1431,14 @@ DefImportResult import_def(const std::string& def_path, const std::vector<std::s
   for (const std::string& p : lef_paths) {
     auto t = read(p);
     if (!t) {
-      r.diagnostics.push_back(Diagnostic{Severity::Error, "IO-0100", p, 0, 0, "cannot read the LEF file"});
+      r.diagnostics.push_back(Diagnostic{Severity::Error, "IO-0120", p, 0, 0, "cannot read the LEF file"});
       return r;
     }
     lefs.emplace_back(p, std::move(*t));
   }
   auto t = read(def_path);
   if (!t) {
-    r.diagnostics.push_back(Diagnostic{Severity::Error, "IO-0100", def_path, 0, 0, "cannot read the DEF file"});
+    r.diagnostics.push_back(Diagnostic{Severity::Error, "IO-0120", def_path, 0, 0, "cannot read the DEF file"});
     return r;
   }
   return import_def_text({def_path, std::move(*t)}, lefs, options);

@@ -29,21 +29,25 @@
 //     extension values, as OpenDB reads a special wire).
 //
 // Diagnostics (file:line, never a crash; errors leave no layout):
-//   IO-0100 a file cannot be read
-//   IO-0101 a syntax error (an unexpected token or end of file) in LEF or DEF
-//   IO-0102 a construct outside the subset above that would change the layer's metal (LEF
+//   IO-0120 a file cannot be read
+//   IO-0121 a syntax error (an unexpected token or end of file) in LEF or DEF
+//   IO-0122 a construct outside the subset above that would change the layer's metal (LEF
 //           ITERATE or PATH, a VIA in a port, a non-rectangular DIEAREA, regular NETS wiring on
 //           the layer, a wiring segment that is not axis-parallel)
-//   IO-0103 a number that is malformed, not whole DBU, or beyond the coordinate range
-//   IO-0104 a reference to an undefined macro, component, macro pin or DEF pin
-//   IO-0105 a --nets pattern that matches no net, or a layer no shape is on
-//   IO-0106 warning: a selected net with fewer than two pin shapes on the layer (not written as
+//   IO-0123 a number that is malformed, not whole DBU, or beyond the coordinate range
+//   IO-0124 a reference to an undefined macro, component, macro pin or DEF pin
+//   IO-0125 a --nets pattern that matches no net, or a layer no shape is on
+//   IO-0126 warning: a selected net with fewer than two pin shapes on the layer (not written as
 //           a net; its shape, if any, is a blockage), or an explicit terminal with no shape on
 //           the layer
-//   IO-0107 warning: the wiring a selected net already has in the DEF is not kept (taut routes
+//   IO-0127 warning: the wiring a selected net already has in the DEF is not kept (taut routes
 //           the net)
-//   IO-0108 warning: --bump-to-pad joined no bump to some of a net's pad pins (more pads than
+//   IO-0128 warning: --bump-to-pad joined no bump to some of a net's pad pins (more pads than
 //           bumps); they are written as blockages
+//   IO-0129 a component or DEF pin defined twice
+// Every object written carries the DEF line it comes from (a component's, a pin's, a net's), so
+// validating the layout names it. Numbers of shapes off the layer are not converted (they need
+// not be whole DBU).
 #pragma once
 
 #include <optional>
@@ -62,8 +66,10 @@ struct DefImportOptions {
   std::string spacing = "0";          // microns, as written
   // A net with bumps (pins of CLASS COVER cells) and other pins becomes one net per bump, joined
   // to one of the other pins: the assignment of least total L1 distance between the shapes' box
-  // centres (each pad offered ceil(bumps / pads) times). As a flip-chip redistribution layer is
-  // routed: a power net's pads are already joined by the pad ring, so each bump needs one.
+  // centres. With more bumps than pads each pad is offered ceil(bumps / pads) times and takes its
+  // bumps in one net (named by the first), so no pad is a pin of two nets. As a flip-chip
+  // redistribution layer is routed: a power net's pads are already joined by the pad ring, so
+  // each bump needs one.
   bool bump_to_pad = false;
   // The selected nets' SPECIALNETS wiring on the layer is written as <routes> (each segment a
   // 2-point wire on its centreline, taken back to the corner where it was drawn past one), so

@@ -147,14 +147,14 @@ TEST(Import, AMissingLefWritesNothing) {
   a[3] = dir + "/none.lef";
   const auto r = run_taut(a);
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find("[IO-0100]"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("[IO-0120]"), std::string::npos) << r.err;
   EXPECT_FALSE(test::file_exists(dir + "/rdl.xml"));
   // a pattern that matches no net
   a = import_args(dir + "/rdl.xml", false);
   a[7] = "p_* q_*";
   const auto q = run_taut(a);
   EXPECT_EQ(q.status, 2);
-  EXPECT_NE(q.err.find("[IO-0105]"), std::string::npos) << q.err;
+  EXPECT_NE(q.err.find("[IO-0125]"), std::string::npos) << q.err;
   EXPECT_FALSE(test::file_exists(dir + "/rdl.xml"));
 }
 
