@@ -190,6 +190,7 @@ struct Geo {
 struct Via {
   std::vector<Geo> shapes;   // on the layer, relative to the via's origin
   bool generated_on_layer = false;  // a VIARULE-generated via whose LAYERS name the layer
+  std::vector<std::string> layers;  // every layer it has a shape on, in order (generated: bottom, top)
 };
 
 struct MacroPin {
@@ -210,21 +211,45 @@ struct Macro {
 struct Lib {
   std::map<std::string, Macro, std::less<>> macros;
   std::map<std::string, Via, std::less<>> vias;
+  std::map<std::string, std::string, std::less<>> layer_type;  // LEF LAYER .. TYPE (ROUTING, CUT, ..)
 };
 
+// The layer a wire continues on after via v, from layer `cur`: the via's other routing layer (by
+// the LEF layer types when known, else its first and last layers). nullopt when cur is not one
+// of them or there is no single other one.
+std::optional<std::string> via_exit(const Via& v, std::string_view cur, const Lib& lib) {
+  std::vector<std::string> routing;
+  for (const std::string& l : v.layers) {
+    const auto t = lib.layer_type.find(l);
+    if (t != lib.layer_type.end() ? t->second == "ROUTING" : true) routing.push_back(l);
+  }
+  if (routing.size() > 2 && std::none_of(v.layers.begin(), v.layers.end(), [&](const std::string& l) { return lib.layer_type.count(l); }))
+    routing = {routing.front(), routing.back()};
+  if (routing.size() != 2 || (routing[0] != cur && routing[1] != cur)) return std::nullopt;
+  return routing[0] == cur ? routing[1] : routing[0];
+}
+
 Point pt(std::int64_t x, std::int64_t y) { return Point{static_cast<geom::Coord>(x), static_cast<geom::Coord>(y)}; }
+
+// The next number of a LEF point, which may be written "( x y )".
+Tok lef_number(Cursor& c) {
+  while (c.peek().s == "(" || c.peek().s == ")") c.next();
+  return c.next();
+}
 
 // RECT/POLYGON/VIA/PATH/ITERATE statement bodies inside LEF geometry (after the keyword).
 void lef_rect(Cursor& c, const Tok& kw, std::int64_t units, bool on_layer, std::vector<Geo>& out) {
   if (c.accept("MASK")) c.next();
   if (c.peek().s == "ITERATE") c.fail("IO-0122", "RECT ITERATE is not supported", kw.line);
   if (!on_layer) {  // numbers off the layer are not converted: they need not be whole DBU here
-    for (int k = 0; k < 4; ++k) c.next();
+    for (int k = 0; k < 4; ++k) lef_number(c);
+    while (c.peek().s == ")") c.next();
     c.expect(";");
     return;
   }
   std::int64_t v[4];
-  for (auto& x : v) x = lef_dbu(c, c.next(), units);
+  for (auto& x : v) x = lef_dbu(c, lef_number(c), units);
+  while (c.peek().s == ")") c.next();
   c.expect(";");
   if (v[0] == v[2] || v[1] == v[3]) c.fail("IO-0121", "a RECT with no area", kw.line);
   out.push_back({true, {pt(std::min(v[0], v[2]), std::min(v[1], v[3])), pt(std::max(v[0], v[2]), std::max(v[1], v[3]))}, kw.line});
@@ -239,9 +264,10 @@ void lef_polygon(Cursor& c, const Tok& kw, std::int64_t units, bool on_layer, st
   }
   std::vector<Point> p;
   while (c.peek().s != ";") {
-    const std::int64_t x = lef_dbu(c, c.next(), units);
+    const std::int64_t x = lef_dbu(c, lef_number(c), units);
     if (c.peek().s == ";") c.fail("IO-0121", "a POLYGON with an odd number of coordinates", kw.line);
-    p.push_back(pt(x, lef_dbu(c, c.next(), units)));
+    p.push_back(pt(x, lef_dbu(c, lef_number(c), units)));
+    while (c.peek().s == ")") c.next();
   }
   c.expect(";");
   if (p.size() < 3) c.fail("IO-0121", "a POLYGON with fewer than three vertices", kw.line);
@@ -279,7 +305,11 @@ void lef_geometry(Cursor& c, std::int64_t units, const std::string& layer, const
       if (v->second.shapes.empty()) continue;  // nothing on the layer: its place need not be whole DBU
       const std::int64_t x = lef_dbu(c, tx, units), y = lef_dbu(c, ty, units);
       for (Geo g : v->second.shapes) {
-        for (Point& p : g.pts) p = pt(std::int64_t{p.x} + x, std::int64_t{p.y} + y);
+        for (Point& p : g.pts) {
+          if (!geom::in_range(std::int64_t{p.x} + x) || !geom::in_range(std::int64_t{p.y} + y))
+            c.fail("IO-0123", "via " + std::string(name.s) + " (in " + where + ") placed beyond the coordinate range", t.line);
+          p = pt(std::int64_t{p.x} + x, std::int64_t{p.y} + y);
+        }
         g.line = t.line;
         out.push_back(std::move(g));
       }
@@ -331,7 +361,8 @@ void parse_lef(Cursor& c, std::int64_t units, const std::string& layer, Lib& lib
           m.cover = c.peek().s == "COVER";
           c.skip_statement();
         } else if (k.s == "DENSITY") {
-          c.skip_block("END");  // DENSITY .. END: no END <name>; skip to the bare END
+          while (c.next().s != "END") {  // DENSITY .. END: no END <name>; skip to the bare END
+          }
         } else {
           c.skip_statement();
         }
@@ -347,7 +378,12 @@ void parse_lef(Cursor& c, std::int64_t units, const std::string& layer, Lib& lib
       }
       auto shift = [&](std::vector<Geo>& gs) {
         for (Geo& g : gs)
-          for (Point& p : g.pts) p = pt(std::int64_t{p.x} + origin.x, std::int64_t{p.y} + origin.y);
+          for (Point& p : g.pts) {
+            const std::int64_t x = std::int64_t{p.x} + origin.x, y = std::int64_t{p.y} + origin.y;
+            if (!geom::in_range(x) || !geom::in_range(y))
+              c.fail("IO-0123", "MACRO " + std::string(name.s) + ": a shape beyond the coordinate range with its ORIGIN", g.line);
+            p = pt(x, y);
+          }
       };
       for (auto& [n, p] : m.pins) shift(p.shapes);
       shift(m.obs);
@@ -363,23 +399,39 @@ void parse_lef(Cursor& c, std::int64_t units, const std::string& layer, Lib& lib
           break;
         }
         if (k.s == "LAYER") {
-          on = c.next().s == layer;
+          const Tok ln = c.next();
+          on = ln.s == layer;
+          if (std::find(v.layers.begin(), v.layers.end(), ln.s) == v.layers.end()) v.layers.emplace_back(ln.s);
           c.skip_statement();
         } else if (k.s == "RECT") {
           lef_rect(c, k, units, on, v.shapes);
         } else if (k.s == "POLYGON") {
           lef_polygon(c, k, units, on, v.shapes);
         } else if (k.s == "LAYERS") {  // a generated via: LAYERS bottom cut top ;
-          while (c.peek().s != ";") v.generated_on_layer = v.generated_on_layer || c.next().s == layer;
+          std::vector<std::string> ls;
+          while (c.peek().s != ";") ls.emplace_back(c.next().s);
           c.next();
+          for (const std::string& l : ls) v.generated_on_layer = v.generated_on_layer || l == layer;
+          if (ls.size() == 3) v.layers = {ls[0], ls[2]};
         } else if (k.s != "DEFAULT" && k.s != "GENERATED") {
           if (k.s != ";") c.skip_statement();
         }
       }
       lib.vias[std::string(name.s)] = std::move(v);
-    } else if (t.s == "SITE" || t.s == "LAYER" || t.s == "VIARULE" || t.s == "NONDEFAULTRULE") {
+    } else if (t.s == "LAYER") {  // its TYPE only (which layers a via joins)
+      const Tok name = c.next();
+      for (;;) {
+        const Tok k = c.next();
+        if (k.s == "END" && c.peek().s == name.s) {
+          c.next();
+          break;
+        }
+        if (k.s == "TYPE") lib.layer_type[std::string(name.s)] = std::string(c.next().s);
+        if (k.s != ";") c.skip_statement();
+      }
+    } else if (t.s == "SITE" || t.s == "VIARULE" || t.s == "NONDEFAULTRULE" || t.s == "ARRAY") {
       c.skip_block(c.next().s);
-    } else if (t.s == "UNITS" || t.s == "PROPERTYDEFINITIONS" || t.s == "SPACING" || t.s == "ARRAY") {
+    } else if (t.s == "UNITS" || t.s == "PROPERTYDEFINITIONS" || t.s == "SPACING") {
       c.skip_block(t.s);
     } else if (t.s == "BEGINEXT") {
       while (c.next().s != "ENDEXT") {
@@ -544,13 +596,70 @@ Geo def_polygon_geo(Cursor& c, int line) {
 // "layer width [+ SHAPE s] [+ MASK n] [+ STYLE n] pts [via]"; regular nets: "layer [TAPER |
 // TAPERRULE r] [STYLE n] pts [via] [RECT ..] [VIRTUAL ..]". Adds the special wiring on the layer
 // to net.wiring; marks regular wiring on the layer.
+// Via v's shapes on the layer, turned by orientation o and placed at (x, y).
+std::vector<Geo> place_via(const Cursor& c, const Via& v, Orient o, std::int64_t x, std::int64_t y, int line) {
+  std::vector<Geo> out;
+  for (Geo g : v.shapes) {
+    for (Point& q : g.pts) {
+      const auto [tx, ty] = turn(o, q.x, q.y);
+      if (!geom::in_range(tx + x) || !geom::in_range(ty + y)) c.fail("IO-0123", "a via placed beyond the coordinate range", line);
+      q = pt(tx + x, ty + y);
+    }
+    if (g.rect)
+      g.pts = {Point{std::min(g.pts[0].x, g.pts[1].x), std::min(g.pts[0].y, g.pts[1].y)},
+               Point{std::max(g.pts[0].x, g.pts[1].x), std::max(g.pts[0].y, g.pts[1].y)}};
+    g.line = line;
+    out.push_back(std::move(g));
+  }
+  return out;
+}
+
+const Via* find_via(const Cursor& c, std::string_view name, const std::map<std::string, Via, std::less<>>& def_vias, const Lib& lib,
+                    const std::string& layer, int line, const std::string& whose) {
+  const Via* v = nullptr;
+  if (const auto d = def_vias.find(name); d != def_vias.end()) v = &d->second;
+  else if (const auto l = lib.vias.find(name); l != lib.vias.end()) v = &l->second;
+  if (!v) c.fail("IO-0124", "via " + std::string(name) + whose + " is not defined", line);
+  if (v->generated_on_layer) c.fail("IO-0122", "generated via " + std::string(name) + " on layer " + layer + " is not supported", line);
+  return v;
+}
+
+// "viaName [orient] [DO n BY m STEP dx dy]" after the point (x, y): the via's shapes on the
+// layer, each copy of an array.
+std::vector<Geo> via_here(Cursor& c, const Via& v, std::int64_t x, std::int64_t y, int line) {
+  Orient o = Orient::N;
+  if (const auto po = parse_orient(c.peek().s)) {
+    o = *po;
+    c.next();
+  }
+  std::int64_t nx = 1, ny = 1, dx = 0, dy = 0;
+  if (c.accept("DO")) {
+    nx = def_int(c, c.next());
+    c.expect("BY");
+    ny = def_int(c, c.next());
+    c.expect("STEP");
+    dx = def_int(c, c.next());
+    dy = def_int(c, c.next());
+    if (nx < 1 || ny < 1) c.fail("IO-0123", "a via array with no copies", line);
+  }
+  std::vector<Geo> out;
+  if (v.shapes.empty()) return out;
+  if (nx * ny > 100000) c.fail("IO-0122", "a via array of more than 100,000 copies on the layer", line);
+  for (std::int64_t i = 0; i < nx; ++i)
+    for (std::int64_t j = 0; j < ny; ++j)
+      for (Geo& g : place_via(c, v, o, x + i * dx, y + j * dy, line)) out.push_back(std::move(g));
+  return out;
+}
+
 void def_wiring(Cursor& c, const std::string& layer, const std::map<std::string, Via, std::less<>>& def_vias, const Lib& lib,
                 DefNet& net) {
   for (;;) {
     const Tok lt = c.next();
-    const bool on = lt.s == layer;
+    std::string cur(lt.s);  // the layer the path is on (a via takes it to another)
+    bool on = cur == layer;
     std::int64_t width = 0;
     if (net.special) width = def_int(c, c.next());
+    if (width < 0) c.fail("IO-0123", "a negative wire width of net " + net.name, lt.line);
     for (;;) {  // options before the points
       if (c.peek().s == "+" ) {
         // "+ SHAPE x", "+ MASK n", "+ STYLE n" continue the wire; any other "+" ends the wiring
@@ -622,20 +731,21 @@ void def_wiring(Cursor& c, const std::string& layer, const std::map<std::string,
       } else {  // a via at the previous point, with an optional orientation (or DO .. BY .. STEP ..)
         c.next();
         if (!prev) c.fail("IO-0121", "via " + std::string(t.s) + " with no point", t.line);
-        if (parse_orient(c.peek().s)) c.next();
-        if (c.peek().s == "DO") c.fail("IO-0122", "via arrays (DO .. BY .. STEP) are not supported", t.line);
-        const Via* v = nullptr;
-        if (const auto d = def_vias.find(t.s); d != def_vias.end()) v = &d->second;
-        else if (const auto l = lib.vias.find(t.s); l != lib.vias.end()) v = &l->second;
-        if (!v) c.fail("IO-0124", "via " + std::string(t.s) + " of net " + net.name + " is not defined", t.line);
-        if (v->generated_on_layer) c.fail("IO-0122", "generated via " + std::string(t.s) + " on layer " + layer + " is not supported", t.line);
-        for (Geo g : v->shapes) {
-          for (Point& q : g.pts) q = pt(std::int64_t{q.x} + prev->first, std::int64_t{q.y} + prev->second);
-          g.line = t.line;
+        const Via* v = find_via(c, t.s, def_vias, lib, layer, t.line, " of net " + net.name);
+        for (Geo& g : via_here(c, *v, prev->first, prev->second, t.line)) {
           if (net.special) net.wiring.push_back(std::move(g));
           else net.regular_wiring_on_layer = true;
           if (!net.wiring_line) net.wiring_line = t.line;
         }
+        // the path goes on from the via's other layer (as OpenDB reads it)
+        if (const auto next = via_exit(*v, cur, lib)) {
+          cur = *next;
+        } else if (std::find(v->layers.begin(), v->layers.end(), layer) != v->layers.end() || cur == layer) {
+          c.fail("IO-0122", "cannot tell which layer the wiring of net " + net.name + " continues on after via " + std::string(t.s) +
+                                " (from layer " + cur + ")", t.line);
+        }
+        on = cur == layer;
+        prev_ext = 0;
       }
     }
   }
@@ -698,24 +808,20 @@ void parse_def(Cursor& c, const std::string& layer, const Lib& lib, Def& d) {
         while (c.peek().s != ";") {
           c.expect("+");
           const Tok k = c.next();
-          if (k.s == "RECT") {
-            const bool on = c.next().s == layer;
+          if (k.s == "RECT" || k.s == "POLYGON") {
+            const Tok ln = c.next();
+            const bool on = ln.s == layer;
+            if (std::find(v.layers.begin(), v.layers.end(), ln.s) == v.layers.end()) v.layers.emplace_back(ln.s);
             if (c.accept("+")) {  // + MASK n
               c.next();
               c.next();
             }
-            Geo g = def_rect_geo(c, k.line);
+            Geo g = k.s == "RECT" ? def_rect_geo(c, k.line) : def_polygon_geo(c, k.line);
             if (on) v.shapes.push_back(g);
-          } else if (k.s == "POLYGON") {
-            const bool on = c.next().s == layer;
-            if (c.accept("+")) {
-              c.next();
-              c.next();
-            }
-            Geo g = def_polygon_geo(c, k.line);
-            if (on) v.shapes.push_back(g);
-          } else if (k.s == "LAYERS") {
-            for (int i = 0; i < 3; ++i) v.generated_on_layer = v.generated_on_layer || c.next().s == layer;
+          } else if (k.s == "LAYERS") {  // a generated via: bottom cut top
+            const Tok b = c.next(), cut = c.next(), top = c.next();
+            v.generated_on_layer = b.s == layer || cut.s == layer || top.s == layer;
+            v.layers = {std::string(b.s), std::string(top.s)};
           } else {
             skip_option(c);
           }
@@ -769,16 +875,8 @@ void parse_def(Cursor& c, const std::string& layer, const Lib& lib, Def& d) {
             const Tok vn = c.next();
             if (c.accept("MASK")) c.next();
             const auto at = def_point(c);
-            const Via* v = nullptr;
-            if (const auto dv = d.vias.find(vn.s); dv != d.vias.end()) v = &dv->second;
-            else if (const auto lv = lib.vias.find(vn.s); lv != lib.vias.end()) v = &lv->second;
-            if (!v) c.fail("IO-0124", "via " + std::string(vn.s) + " of pin " + p.name + " is not defined", vn.line);
-            if (v->generated_on_layer) c.fail("IO-0122", "generated via " + std::string(vn.s) + " on layer " + layer + " is not supported", vn.line);
-            for (Geo g : v->shapes) {
-              for (Point& q : g.pts) q = pt(std::int64_t{q.x} + at.first, std::int64_t{q.y} + at.second);
-              g.line = vn.line;
-              p.ports.back().shapes.push_back(std::move(g));
-            }
+            const Via* v = find_via(c, vn.s, d.vias, lib, layer, vn.line, " of pin " + p.name);
+            for (Geo& g : place_via(c, *v, Orient::N, at.first, at.second, vn.line)) p.ports.back().shapes.push_back(std::move(g));
           } else if (k.s == "PLACED" || k.s == "FIXED" || k.s == "COVER") {
             p.ports.back().at = def_placement(c);
           } else {
@@ -798,7 +896,7 @@ void parse_def(Cursor& c, const std::string& layer, const Lib& lib, Def& d) {
         const Tok n = c.next();
         net.name = std::string(n.s);
         net.line = n.line;
-        if (c.accept("MUSTJOIN")) c.fail("IO-0122", "MUSTJOIN nets are not supported", n.line);
+        if (n.s == "MUSTJOIN") c.fail("IO-0122", "MUSTJOIN nets are not supported", n.line);
         while (c.peek().s == "(") {
           const Tok open = c.next();
           Terminal term;
@@ -819,6 +917,22 @@ void parse_def(Cursor& c, const std::string& layer, const Lib& lib, Def& d) {
           } else if (k.s == "SHIELD" && special) {
             c.next();  // the shielded net's name
             def_wiring(c, layer, d.vias, lib, net);
+          } else if (special && k.s == "VIA") {  // + VIA viaName [orient] ( x y ) ..: the via at each point
+            const Tok vn = c.next();
+            const Via* v = find_via(c, vn.s, d.vias, lib, layer, vn.line, " of net " + net.name);
+            Orient o = Orient::N;
+            if (const auto po = parse_orient(c.peek().s)) {
+              o = *po;
+              c.next();
+            }
+            std::optional<std::pair<std::int64_t, std::int64_t>> prev;
+            while (c.peek().s == "(") {
+              prev = def_point(c, prev);
+              for (Geo& g : place_via(c, *v, o, prev->first, prev->second, vn.line)) {
+                net.wiring.push_back(std::move(g));
+                if (!net.wiring_line) net.wiring_line = vn.line;
+              }
+            }
           } else if (special && (k.s == "RECT" || k.s == "POLYGON")) {
             const bool on = c.next().s == layer;
             if (c.accept("+")) {  // + MASK n
@@ -861,16 +975,8 @@ void parse_def(Cursor& c, const std::string& layer, const Lib& lib, Def& d) {
           }
           if (q.s == "(" && via) {
             const auto at = def_point(c);
-            const Via* v = nullptr;
-            if (const auto dv = d.vias.find(via->s); dv != d.vias.end()) v = &dv->second;
-            else if (const auto lv = lib.vias.find(via->s); lv != lib.vias.end()) v = &lv->second;
-            if (!v) c.fail("IO-0124", "via " + std::string(via->s) + " is not defined", via->line);
-            if (v->generated_on_layer) c.fail("IO-0122", "generated via " + std::string(via->s) + " on layer " + layer + " is not supported", via->line);
-            for (Geo g : v->shapes) {
-              for (Point& r : g.pts) r = pt(std::int64_t{r.x} + at.first, std::int64_t{r.y} + at.second);
-              g.line = q.line;
-              d.blockages.push_back(std::move(g));
-            }
+            const Via* v = find_via(c, via->s, d.vias, lib, layer, via->line, "");
+            for (Geo& g : place_via(c, *v, Orient::N, at.first, at.second, q.line)) d.blockages.push_back(std::move(g));
             continue;
           }
           c.next();
@@ -900,6 +1006,7 @@ void parse_def(Cursor& c, const std::string& layer, const Lib& lib, Def& d) {
       c.skip_statement();
     }
   }
+  c.fail("IO-0121", "the DEF ends without END DESIGN (is the file cut short?)");
 }
 
 // A shape as the layout holds it, with `line` the DEF line of the object it comes from.
@@ -917,13 +1024,14 @@ Shape to_shape(const Geo& g, int line) {
   return s;
 }
 
-// A shape moved by orientation o about the origin, then by (dx, dy).
-Geo moved(const Geo& g, Orient o, std::int64_t dx, std::int64_t dy, const Cursor& c) {
+// A shape moved by orientation o about the origin, then by (dx, dy); `what` and `line` name the
+// placing object (a component, a pin) in the DEF.
+Geo moved(const Geo& g, Orient o, std::int64_t dx, std::int64_t dy, const Cursor& c, const std::string& what, int line) {
   Geo out = g;
   for (Point& p : out.pts) {
     const auto [x, y] = turn(o, p.x, p.y);
     if (!geom::in_range(x + dx) || !geom::in_range(y + dy))
-      c.fail("IO-0123", "a shape placed beyond the coordinate range (|v| <= 2^30 - 1)", g.line);
+      c.fail("IO-0123", what + ": a shape placed beyond the coordinate range (|v| <= 2^30 - 1)", line);
     p = pt(x + dx, y + dy);
   }
   if (out.rect)
@@ -1065,11 +1173,11 @@ Layout assemble(const Def& d, const Lib& lib, const DefImportOptions& o, const C
     const Component& cp = d.comps[i];
     const Macro& m = macro_of(i);
     if (!m.has_size && cp.at.orient != Orient::N)
-      dc.fail("IO-0121", "component " + cp.name + ": macro " + cp.macro + " has no SIZE, so orientation other than N cannot be placed",
+      dc.fail("IO-0122", "component " + cp.name + ": macro " + cp.macro + " has no SIZE, so orientation other than N cannot be placed",
               cp.line);
     const auto [ax, ay] = turn(cp.at.orient, 0, 0);
     const auto [bx, by] = turn(cp.at.orient, m.w, m.h);
-    return moved(g, cp.at.orient, cp.at.x - std::min(ax, bx), cp.at.y - std::min(ay, by), dc);
+    return moved(g, cp.at.orient, cp.at.x - std::min(ax, bx), cp.at.y - std::min(ay, by), dc, "component " + cp.name, cp.line);
   };
   std::map<std::string, std::size_t, std::less<>> pin_index;
   for (std::size_t i = 0; i < d.pins.size(); ++i)
@@ -1081,7 +1189,7 @@ Layout assemble(const Def& d, const Lib& lib, const DefImportOptions& o, const C
     for (const DefPort& port : d.pins[i].ports)
       for (const Geo& g : port.shapes) {
         if (!port.at.placed) dc.fail("IO-0122", "pin " + d.pins[i].name + " has shapes on layer " + o.layer + " but is not placed", port.line);
-        out.push_back(moved(g, port.at.orient, port.at.x, port.at.y, dc));
+        out.push_back(moved(g, port.at.orient, port.at.x, port.at.y, dc, "pin " + d.pins[i].name, d.pins[i].line));
       }
     return out;
   };
@@ -1129,13 +1237,20 @@ Layout assemble(const Def& d, const Lib& lib, const DefImportOptions& o, const C
         dc.fail("IO-0124", "net " + nets[i].name + ": component " + t.comp + " (macro " + d.comps[ci->second].macro + ") has no pin " + t.pin, t.line);
       const auto [it, fresh] = owner.try_emplace({ci->second, t.pin}, i);
       if (!fresh && it->second != i)
-        dc.fail("IO-0124", "terminal " + t.comp + "/" + t.pin + " is in nets " + nets[it->second].name + " and " + nets[i].name, t.line);
+        dc.fail("IO-0129", "terminal " + t.comp + "/" + t.pin + " is in nets " + nets[it->second].name + " and " + nets[i].name, t.line);
     }
   }
   for (std::size_t i = 0; i < d.pins.size(); ++i)
     if (const auto n = net_index.find(d.pins[i].net); n != net_index.end() && selected[n->second]) pin_owner.try_emplace(i, n->second);
   std::vector<std::vector<std::pair<std::size_t, std::string>>> wild(nets.size());  // per net, in component order
   {
+    // a terminal any net names explicitly, selected or not, is that net's: a wildcard or a global
+    // connection of another net does not take it (the result must not depend on the selection)
+    std::set<std::pair<std::size_t, std::string>> named;
+    for (const NetInfo& n : nets)
+      for (const Terminal& t : n.terms)
+        if (t.comp != "*" && t.comp != "PIN")
+          if (const auto ci = comp_index.find(t.comp); ci != comp_index.end()) named.insert({ci->second, t.pin});
     std::vector<std::pair<std::size_t, std::string>> wants;  // (net, pin name)
     for (std::size_t i = 0; i < nets.size(); ++i) {
       if (!selected[i]) continue;
@@ -1148,7 +1263,7 @@ Layout assemble(const Def& d, const Lib& lib, const DefImportOptions& o, const C
       const Macro& m = macro_of(c);
       for (const auto& [i, pin] : wants) {
         const auto mp = m.pins.find(pin);
-        if (mp == m.pins.end() || mp->second.shapes.empty()) continue;
+        if (mp == m.pins.end() || mp->second.shapes.empty() || named.count({c, pin})) continue;
         if (owner.try_emplace({c, pin}, i).second) wild[i].push_back({c, pin});
       }
     }

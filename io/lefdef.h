@@ -28,14 +28,22 @@
 //     it covers: half the width to each side, and along the wire to its points and their
 //     extension values, as OpenDB reads a special wire).
 //
+// Vias: LEF and DEF (VIAS) vias are placed with their orientation (and arrays, DO .. BY .. STEP);
+// after a via a wire goes on on the via's other routing layer (by the LEF layer TYPEs, else its
+// first and last layers), as OpenDB reads it. A terminal a net names explicitly is never taken by
+// another net's `( * pin )` or global connection, whichever nets are selected.
+//
 // Diagnostics (file:line, never a crash; errors leave no layout):
 //   IO-0120 a file cannot be read
 //   IO-0121 a syntax error (an unexpected token or end of file) in LEF or DEF
 //   IO-0122 a construct outside the subset above that would change the layer's metal (LEF
-//           ITERATE or PATH, a VIA in a port, a non-rectangular DIEAREA, regular NETS wiring on
-//           the layer, a wiring segment that is not axis-parallel)
+//           ITERATE or PATH on the layer, a generated via on the layer, a non-rectangular
+//           DIEAREA, regular NETS wiring on the layer of a net not written, a wiring segment that
+//           is not axis-parallel or of odd width, a via after which the layer is unknown, an
+//           unplaced cell or a cell without SIZE turned, with shapes on the layer, SUBNET,
+//           MUSTJOIN)
 //   IO-0123 a number that is malformed, not whole DBU, or beyond the coordinate range
-//   IO-0124 a reference to an undefined macro, component, macro pin or DEF pin
+//   IO-0124 a reference to an undefined macro, component, macro pin, DEF pin or via
 //   IO-0125 a --nets pattern that matches no net, or a layer no shape is on
 //   IO-0126 warning: a selected net with fewer than two pin shapes on the layer (not written as
 //           a net; its shape, if any, is a blockage), or an explicit terminal with no shape on
@@ -44,7 +52,7 @@
 //           the net)
 //   IO-0128 warning: --bump-to-pad joined no bump to some of a net's pad pins (more pads than
 //           bumps); they are written as blockages
-//   IO-0129 a component or DEF pin defined twice
+//   IO-0129 a component or DEF pin defined twice, or a terminal in two nets
 // Every object written carries the DEF line it comes from (a component's, a pin's, a net's), so
 // validating the layout names it. Numbers of shapes off the layer are not converted (they need
 // not be whole DBU).

@@ -290,7 +290,10 @@ TEST(ImportDef, BadInputIsAnsweredWithCodeFileAndLine) {
       {"an undefined macro pin in a net", def_with(comps + "NETS 1 ;\n - n ( a P ) ( a Q ) ;\nEND NETS\n"), "IO-0124", 10},
       {"an undefined DEF pin in a net", def_with(comps + "NETS 1 ;\n - n ( a P ) ( PIN q ) ;\nEND NETS\n"), "IO-0124", 10},
       {"a --nets pattern matching nothing", def_with(comps + "NETS 1 ;\n - n ( a P ) ;\nEND NETS\n"), "IO-0125", 0, {"x*"}},
-      {"a terminal in two nets", def_with(comps + "NETS 2 ;\n - n ( a P ) ;\n - m ( a P ) ;\nEND NETS\n"), "IO-0124", 11},
+      {"a terminal in two nets", def_with(comps + "NETS 2 ;\n - n ( a P ) ;\n - m ( a P ) ;\nEND NETS\n"), "IO-0129", 11},
+      {"a DEF cut short", "UNITS DISTANCE MICRONS 1000 ;\nCOMPONENTS 1 ;\n - a CELL + FIXED ( 0 0 ) N ;\nEND COMPONENTS\n", "IO-0121", 4},
+      {"a negative wire width", def_with("SPECIALNETS 1 ;\n - w + ROUTED m2 -100 ( 0 0 ) ( 100 0 ) ;\nEND SPECIALNETS\n"), "IO-0123", 7},
+      {"a MUSTJOIN net", def_with(comps + "NETS 1 ;\n - MUSTJOIN ( a P ) ;\nEND NETS\n"), "IO-0122", 10},
       {"regular wiring of an unselected net on the layer",
        def_with(comps + "NETS 2 ;\n - n ( a P ) ;\n - m ( a VDD ) + ROUTED m2 ( 0 0 ) ( 100 0 ) ;\nEND NETS\n"), "IO-0122", 11, {"n"}},
       {"a sloped special wire", def_with("SPECIALNETS 1 ;\n - w + ROUTED m2 100 ( 0 0 ) ( 100 100 ) ;\nEND SPECIALNETS\n"), "IO-0122",
@@ -401,6 +404,72 @@ TEST(ImportDef, FoundBySearchingRealFiles) {
     ASSERT_NE(blockage(*r.layout, "a/OBS"), nullptr);
     EXPECT_EQ(blockage(*r.layout, "a/OBS")->line, 7);
     EXPECT_EQ(blockage(*r.layout, "a/OBS")->shapes[0].line, 7);
+  }
+}
+
+// Regressions from a review: pins turned about their origin, ORIGIN with a turned cell, vias in
+// wiring (the layer they lead to, their orientation, arrays, `+ VIA`), DENSITY, and a wildcard
+// that must not take a terminal another net names.
+TEST(ImportDef, FoundByReview) {
+  std::string lef = kLef;
+  lef.insert(lef.find("END LIBRARY"),
+             "MACRO OFF\n SIZE 10 BY 5 ;\n ORIGIN 1 2 ;\n PIN A\n  PORT\n   LAYER m2 ;\n   RECT ( -1 -2 ) ( 0 -1 ) ;\n  END\n END A\n"
+             " DENSITY\n  LAYER m2 ;\n  RECT 0 0 10 5 50 ;\n END\nEND OFF\n");
+  DefImportOptions o;
+  o.layer = "m2";
+  auto go = [&](const std::string& body, DefImportOptions opt) { return import_def_text({"t.def", def_with(body)}, {{"t.lef", lef}}, opt); };
+  {
+    const DefImportResult r = go(
+        "COMPONENTS 1 ;\n - f OFF + FIXED ( 0 0 ) E ;\nEND COMPONENTS\n"
+        "PINS 2 ;\n - pe + NET x + PORT + LAYER m2 ( 0 0 ) ( 3000 1000 ) + FIXED ( 100000 100000 ) E ;\n"
+        " - pw + NET x + PORT + LAYER m2 ( 0 0 ) ( 3000 1000 ) + FIXED ( 100000 100000 ) FW ;\nEND PINS\n",
+        o);
+    ASSERT_TRUE(r.layout) << errors(r);
+    // E: (y, W - x) with W = 10000, the pin [0, 1000]^2 after ORIGIN
+    EXPECT_EQ(blockage(*r.layout, "f/A")->shapes[0].rect, (Box{{0, 9000}, {1000, 10000}}));
+    // about the pin's origin: E (y, -x), FW (y, x)
+    EXPECT_EQ(blockage(*r.layout, "PIN/pe")->shapes[0].rect, (Box{{100000, 97000}, {101000, 100000}}));
+    EXPECT_EQ(blockage(*r.layout, "PIN/pw")->shapes[0].rect, (Box{{100000, 100000}, {101000, 103000}}));
+  }
+  {
+    const DefImportResult r = go(
+        "SPECIALNETS 4 ;\n"
+        " - up + ROUTED m1 2000 ( 500000 500000 ) V12 ( 500000 600000 ) ;\n"          // m1, then m2 after the via
+        " - down + ROUTED m2 2000 ( 0 0 ) ( 0 100000 ) V12 E ( 100000 100000 ) ;\n"   // m2, then m1
+        " - arr + ROUTED m1 2000 ( 700000 700000 ) V12 DO 2 BY 1 STEP 10000 0 ;\n"
+        " - pv + VIA V12 ( 300000 300000 ) ( 400000 * ) ;\nEND SPECIALNETS\n",
+        o);
+    ASSERT_TRUE(r.layout) << errors(r);
+    const Blockage* up = blockage(*r.layout, "up/wiring");
+    ASSERT_NE(up, nullptr);
+    ASSERT_EQ(up->shapes.size(), 2u);  // the via's m2 pad, then the m2 segment
+    EXPECT_EQ(up->shapes[0].rect, (Box{{498000, 499000}, {502000, 501000}}));
+    EXPECT_EQ(up->shapes[1].rect, (Box{{499000, 500000}, {501000, 600000}}));
+    const Blockage* down = blockage(*r.layout, "down/wiring");
+    ASSERT_NE(down, nullptr);
+    ASSERT_EQ(down->shapes.size(), 2u);  // the m2 segment, the via's pad turned E; the m1 segment is not on m2
+    EXPECT_EQ(down->shapes[1].rect, (Box{{-1000, 98000}, {1000, 102000}}));
+    ASSERT_NE(blockage(*r.layout, "arr/wiring"), nullptr);
+    EXPECT_EQ(blockage(*r.layout, "arr/wiring")->shapes.size(), 2u);
+    ASSERT_NE(blockage(*r.layout, "pv/wiring"), nullptr);
+    EXPECT_EQ(blockage(*r.layout, "pv/wiring")->shapes[1].rect, (Box{{398000, 299000}, {402000, 301000}}));
+  }
+  {  // a wildcard does not take a terminal another net names, whichever nets are selected
+    const std::string body =
+        "COMPONENTS 3 ;\n - a CELL + FIXED ( 0 0 ) N ;\n - b CELL + FIXED ( 0 50000 ) N ;\n - c CELL + FIXED ( 0 100000 ) N ;\n"
+        "END COMPONENTS\nSPECIALNETS 1 ;\n - n1 ( * P ) ;\nEND SPECIALNETS\nNETS 1 ;\n - n2 ( a P ) ( b P ) ;\nEND NETS\n";
+    DefImportOptions one = o;
+    one.nets = {"n1"};
+    const DefImportResult r1 = go(body, one);
+    ASSERT_TRUE(r1.layout) << errors(r1);
+    EXPECT_EQ(net(*r1.layout, "n1"), nullptr);  // only c/P: one pin, not a net
+    EXPECT_NE(blockage(*r1.layout, "a/P"), nullptr);
+    DefImportOptions both = o;
+    both.nets = {"n1", "n2"};
+    const DefImportResult r2 = go(body, both);
+    ASSERT_TRUE(r2.layout) << errors(r2);
+    ASSERT_NE(net(*r2.layout, "n2"), nullptr);
+    EXPECT_EQ(net(*r2.layout, "n2")->pins.size(), 2u);
   }
 }
 
