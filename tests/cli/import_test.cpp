@@ -106,8 +106,11 @@ TEST(Import, TheRdlLayoutRoutesAndChecks) {
   const std::string dir = test::temp_dir("import_rdl_route");
   const auto r = run_taut(import_args(dir + "/rdl.xml", true));
   ASSERT_EQ(r.status, 0) << r.err;
-  const auto route = run_taut({"route", dir + "/rdl.xml", "-o", dir + "/routed.xml", "--stats", dir + "/s.json", "-q"}, 600);
+  const auto route = run_taut(
+      {"route", dir + "/rdl.xml", "-o", dir + "/routed.xml", "--stats", dir + "/s.json", "--svg", dir + "/rdl.svg", "-q"}, 600);
   ASSERT_TRUE(route.status == 0 || route.status == 1) << route.err;
+  EXPECT_EQ(test::read_text(dir + "/rdl.svg"), test::read_text(std::string(TAUT_SOURCE_DIR) + "/docs/rdl.svg"))
+      << "docs/rdl.svg is not what taut draws now: copy " << dir << "/rdl.svg";
   const auto j = nlohmann::json::parse(test::read_text(dir + "/s.json"));
   // 135 signal nets and 102 power bumps, each its own net (--bump-to-pad)
   EXPECT_EQ(j["nets"], 237);
