@@ -105,6 +105,7 @@ bench: build
 # OpenROAD's flip-chip RDL test case (../shared/data/openroad-rdl): imported, routed, checked,
 # and compared with OpenROAD's own routing of it (README, "A real layout").
 rdl: build
+	@command -v python3 >/dev/null || { echo "make rdl needs python3 (apt-get install python3)" >&2; exit 2; }
 	python3 scripts/rdl_openroad.py --taut $(BUILD)/tools/taut --out out/rdl
 
 install: build

@@ -319,6 +319,39 @@ void lef_geometry(Cursor& c, std::int64_t units, const std::string& layer, const
   }
 }
 
+// A LEF "VIA name .. END name" block after its keyword: its shapes on the layer and its layers.
+void lef_via(Cursor& c, std::int64_t units, const std::string& layer, Lib& lib) {
+  const Tok name = c.next();
+  Via v;
+  bool on = false;
+  for (;;) {
+    const Tok k = c.next();
+    if (k.s == "END" && c.peek().s == name.s) {
+      c.next();
+      break;
+    }
+    if (k.s == "LAYER") {
+      const Tok ln = c.next();
+      on = ln.s == layer;
+      if (std::find(v.layers.begin(), v.layers.end(), ln.s) == v.layers.end()) v.layers.emplace_back(ln.s);
+      c.skip_statement();
+    } else if (k.s == "RECT") {
+      lef_rect(c, k, units, on, v.shapes);
+    } else if (k.s == "POLYGON") {
+      lef_polygon(c, k, units, on, v.shapes);
+    } else if (k.s == "LAYERS") {  // a generated via: LAYERS bottom cut top ;
+      std::vector<std::string> ls;
+      while (c.peek().s != ";") ls.emplace_back(c.next().s);
+      c.next();
+      for (const std::string& l : ls) v.generated_on_layer = v.generated_on_layer || l == layer;
+      if (ls.size() == 3) v.layers = {ls[0], ls[2]};
+    } else if (k.s != "DEFAULT" && k.s != "GENERATED") {
+      if (k.s != ";") c.skip_statement();
+    }
+  }
+  lib.vias[std::string(name.s)] = std::move(v);
+}
+
 void parse_lef(Cursor& c, std::int64_t units, const std::string& layer, Lib& lib) {
   while (!c.done()) {
     const Tok t = c.next();
@@ -389,35 +422,7 @@ void parse_lef(Cursor& c, std::int64_t units, const std::string& layer, Lib& lib
       shift(m.obs);
       lib.macros[std::string(name.s)] = std::move(m);
     } else if (t.s == "VIA") {
-      const Tok name = c.next();
-      Via v;
-      bool on = false;
-      for (;;) {
-        const Tok k = c.next();
-        if (k.s == "END" && c.peek().s == name.s) {
-          c.next();
-          break;
-        }
-        if (k.s == "LAYER") {
-          const Tok ln = c.next();
-          on = ln.s == layer;
-          if (std::find(v.layers.begin(), v.layers.end(), ln.s) == v.layers.end()) v.layers.emplace_back(ln.s);
-          c.skip_statement();
-        } else if (k.s == "RECT") {
-          lef_rect(c, k, units, on, v.shapes);
-        } else if (k.s == "POLYGON") {
-          lef_polygon(c, k, units, on, v.shapes);
-        } else if (k.s == "LAYERS") {  // a generated via: LAYERS bottom cut top ;
-          std::vector<std::string> ls;
-          while (c.peek().s != ";") ls.emplace_back(c.next().s);
-          c.next();
-          for (const std::string& l : ls) v.generated_on_layer = v.generated_on_layer || l == layer;
-          if (ls.size() == 3) v.layers = {ls[0], ls[2]};
-        } else if (k.s != "DEFAULT" && k.s != "GENERATED") {
-          if (k.s != ";") c.skip_statement();
-        }
-      }
-      lib.vias[std::string(name.s)] = std::move(v);
+      lef_via(c, units, layer, lib);
     } else if (t.s == "LAYER") {  // its TYPE only (which layers a via joins)
       const Tok name = c.next();
       for (;;) {
@@ -429,7 +434,23 @@ void parse_lef(Cursor& c, std::int64_t units, const std::string& layer, Lib& lib
         if (k.s == "TYPE") lib.layer_type[std::string(name.s)] = std::string(c.next().s);
         if (k.s != ";") c.skip_statement();
       }
-    } else if (t.s == "SITE" || t.s == "VIARULE" || t.s == "NONDEFAULTRULE" || t.s == "ARRAY") {
+    } else if (t.s == "NONDEFAULTRULE") {  // its vias are defined for the design to use
+      const Tok name = c.next();
+      for (;;) {
+        const Tok k = c.next();
+        if (k.s == "END" && c.peek().s == name.s) {
+          c.next();
+          break;
+        }
+        if (k.s == "VIA") {
+          lef_via(c, units, layer, lib);
+        } else if (k.s == "LAYER") {
+          c.skip_block(c.next().s);
+        } else if (k.s != ";") {
+          c.skip_statement();
+        }
+      }
+    } else if (t.s == "SITE" || t.s == "VIARULE" || t.s == "ARRAY") {
       c.skip_block(c.next().s);
     } else if (t.s == "UNITS" || t.s == "PROPERTYDEFINITIONS" || t.s == "SPACING") {
       c.skip_block(t.s);

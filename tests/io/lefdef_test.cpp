@@ -414,7 +414,9 @@ TEST(ImportDef, FoundByReview) {
   std::string lef = kLef;
   lef.insert(lef.find("END LIBRARY"),
              "MACRO OFF\n SIZE 10 BY 5 ;\n ORIGIN 1 2 ;\n PIN A\n  PORT\n   LAYER m2 ;\n   RECT ( -1 -2 ) ( 0 -1 ) ;\n  END\n END A\n"
-             " DENSITY\n  LAYER m2 ;\n  RECT 0 0 10 5 50 ;\n END\nEND OFF\n");
+             " DENSITY\n  LAYER m2 ;\n  RECT 0 0 10 5 50 ;\n END\nEND OFF\n"
+             "NONDEFAULTRULE NDR\n HARDSPACING ;\n LAYER m2\n  WIDTH 1 ;\n END m2\n VIA NV DEFAULT\n  LAYER m1 ; RECT -1 -1 1 1 ;\n"
+             "  LAYER m2 ; RECT -3 -1 3 1 ;\n END NV\nEND NDR\n");
   DefImportOptions o;
   o.layer = "m2";
   auto go = [&](const std::string& body, DefImportOptions opt) { return import_def_text({"t.def", def_with(body)}, {{"t.lef", lef}}, opt); };
@@ -433,7 +435,8 @@ TEST(ImportDef, FoundByReview) {
   }
   {
     const DefImportResult r = go(
-        "SPECIALNETS 4 ;\n"
+        "SPECIALNETS 5 ;\n"
+        " - nv + ROUTED m1 2000 ( 800000 800000 ) NV ;\n"  // a via of a NONDEFAULTRULE
         " - up + ROUTED m1 2000 ( 500000 500000 ) V12 ( 500000 600000 ) ;\n"          // m1, then m2 after the via
         " - down + ROUTED m2 2000 ( 0 0 ) ( 0 100000 ) V12 E ( 100000 100000 ) ;\n"   // m2, then m1
         " - arr + ROUTED m1 2000 ( 700000 700000 ) V12 DO 2 BY 1 STEP 10000 0 ;\n"
@@ -451,6 +454,8 @@ TEST(ImportDef, FoundByReview) {
     EXPECT_EQ(down->shapes[1].rect, (Box{{-1000, 98000}, {1000, 102000}}));
     ASSERT_NE(blockage(*r.layout, "arr/wiring"), nullptr);
     EXPECT_EQ(blockage(*r.layout, "arr/wiring")->shapes.size(), 2u);
+    ASSERT_NE(blockage(*r.layout, "nv/wiring"), nullptr);
+    EXPECT_EQ(blockage(*r.layout, "nv/wiring")->shapes[0].rect, (Box{{797000, 799000}, {803000, 801000}}));
     ASSERT_NE(blockage(*r.layout, "pv/wiring"), nullptr);
     EXPECT_EQ(blockage(*r.layout, "pv/wiring")->shapes[1].rect, (Box{{398000, 299000}, {402000, 301000}}));
   }
