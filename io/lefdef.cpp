@@ -114,6 +114,8 @@ class Cursor {
       fail("IO-0121", std::string(kind) + " " + std::string(name) + " ends with END " + std::string(e.s), e.line);
     return true;
   }
+  // k is END and the next token is `name` (consumed): a block that may hold other ENDs closes
+  bool closes(const Tok& k, std::string_view name) { return k.s == "END" && !done() && t_[k_].s == name && (++k_, true); }
   // past the tokens "END <name>" (a block whose inner ENDs name other things)
   void skip_block(std::string_view name) {
     for (;;) {
@@ -326,10 +328,7 @@ void lef_via(Cursor& c, std::int64_t units, const std::string& layer, Lib& lib) 
   bool on = false;
   for (;;) {
     const Tok k = c.next();
-    if (k.s == "END" && c.peek().s == name.s) {
-      c.next();
-      break;
-    }
+    if (c.closes(k, name.s)) break;
     if (k.s == "LAYER") {
       const Tok ln = c.next();
       on = ln.s == layer;
@@ -427,10 +426,7 @@ void parse_lef(Cursor& c, std::int64_t units, const std::string& layer, Lib& lib
       const Tok name = c.next();
       for (;;) {
         const Tok k = c.next();
-        if (k.s == "END" && c.peek().s == name.s) {
-          c.next();
-          break;
-        }
+        if (c.closes(k, name.s)) break;
         if (k.s == "TYPE") lib.layer_type[std::string(name.s)] = std::string(c.next().s);
         if (k.s != ";") c.skip_statement();
       }
@@ -438,10 +434,7 @@ void parse_lef(Cursor& c, std::int64_t units, const std::string& layer, Lib& lib
       const Tok name = c.next();
       for (;;) {
         const Tok k = c.next();
-        if (k.s == "END" && c.peek().s == name.s) {
-          c.next();
-          break;
-        }
+        if (c.closes(k, name.s)) break;
         if (k.s == "VIA") {
           lef_via(c, units, layer, lib);
         } else if (k.s == "LAYER") {
