@@ -6,6 +6,7 @@
 // subset a planar layer needs is small.)
 #include "io/lefdef.h"
 
+#include "geom/normalize.h"
 #include "io/stats_json.h"
 
 #include <fnmatch.h>
@@ -200,8 +201,6 @@ struct MacroPin {
 };
 
 struct Macro {
-  std::string file;
-  int line = 0;
   std::int64_t w = 0, h = 0;
   std::map<std::string, MacroPin, std::less<>> pins;
   std::vector<std::string> pin_order;
@@ -233,6 +232,11 @@ std::optional<std::string> via_exit(const Via& v, std::string_view cur, const Li
 
 Point pt(std::int64_t x, std::int64_t y) { return Point{static_cast<geom::Coord>(x), static_cast<geom::Coord>(y)}; }
 
+// A rectangle's two corners, lower-left first, from any two opposite ones.
+std::vector<Point> corners(Point a, Point b) {
+  return {Point{std::min(a.x, b.x), std::min(a.y, b.y)}, Point{std::max(a.x, b.x), std::max(a.y, b.y)}};
+}
+
 // The next number of a LEF point, which may be written "( x y )".
 Tok lef_number(Cursor& c) {
   while (c.peek().s == "(" || c.peek().s == ")") c.next();
@@ -254,7 +258,7 @@ void lef_rect(Cursor& c, const Tok& kw, std::int64_t units, bool on_layer, std::
   while (c.peek().s == ")") c.next();
   c.expect(";");
   if (v[0] == v[2] || v[1] == v[3]) c.fail("IO-0121", "a RECT with no area", kw.line);
-  out.push_back({true, {pt(std::min(v[0], v[2]), std::min(v[1], v[3])), pt(std::max(v[0], v[2]), std::max(v[1], v[3]))}, kw.line});
+  out.push_back({true, corners(pt(v[0], v[1]), pt(v[2], v[3])), kw.line});
 }
 
 void lef_polygon(Cursor& c, const Tok& kw, std::int64_t units, bool on_layer, std::vector<Geo>& out) {
@@ -357,8 +361,6 @@ void parse_lef(Cursor& c, std::int64_t units, const std::string& layer, Lib& lib
     if (t.s == "MACRO") {
       const Tok name = c.next();
       Macro m;
-      m.file = c.file();
-      m.line = name.line;
       std::optional<std::pair<Tok, Tok>> origin_t, size_tok;  // converted below only if the macro has shapes on the layer
       for (;;) {
         const Tok k = c.next();
@@ -590,9 +592,7 @@ Geo def_rect_geo(Cursor& c, int line) {
   const auto a = def_point(c);
   const auto b = def_point(c);
   if (a.first == b.first || a.second == b.second) c.fail("IO-0121", "a rectangle with no area", line);
-  return Geo{true,
-             {pt(std::min(a.first, b.first), std::min(a.second, b.second)), pt(std::max(a.first, b.first), std::max(a.second, b.second))},
-             line};
+  return Geo{true, corners(pt(a.first, a.second), pt(b.first, b.second)), line};
 }
 
 Geo def_polygon_geo(Cursor& c, int line) {
@@ -619,9 +619,7 @@ std::vector<Geo> place_via(const Cursor& c, const Via& v, Orient o, std::int64_t
       if (!geom::in_range(tx + x) || !geom::in_range(ty + y)) c.fail("IO-0123", "a via placed beyond the coordinate range", line);
       q = pt(tx + x, ty + y);
     }
-    if (g.rect)
-      g.pts = {Point{std::min(g.pts[0].x, g.pts[1].x), std::min(g.pts[0].y, g.pts[1].y)},
-               Point{std::max(g.pts[0].x, g.pts[1].x), std::max(g.pts[0].y, g.pts[1].y)}};
+    if (g.rect) g.pts = corners(g.pts[0], g.pts[1]);
     g.line = line;
     out.push_back(std::move(g));
   }
@@ -797,11 +795,8 @@ void parse_def(Cursor& c, const std::string& layer, const Lib& lib, Def& d) {
         p.push_back(pt(q.first, q.second));
       }
       c.expect(";");
-      Box b{p.empty() ? Point{} : p[0], p.empty() ? Point{} : p[0]};
-      for (const Point& q : p) {
-        b.lo = Point{std::min(b.lo.x, q.x), std::min(b.lo.y, q.y)};
-        b.hi = Point{std::max(b.hi.x, q.x), std::max(b.hi.y, q.y)};
-      }
+      if (p.empty()) c.fail("IO-0121", "a DIEAREA with no points", t.line);
+      const Box b = geom::bounding_box(p);
       bool rect = p.size() == 2;
       if (p.size() == 4) {  // four corners of a rectangle, in order
         rect = true;
@@ -1048,20 +1043,13 @@ Geo moved(const Geo& g, Orient o, std::int64_t dx, std::int64_t dy, const Cursor
       c.fail("IO-0123", what + ": a shape placed beyond the coordinate range (|v| <= 2^30 - 1)", line);
     p = pt(x + dx, y + dy);
   }
-  if (out.rect)
-    out.pts = {Point{std::min(out.pts[0].x, out.pts[1].x), std::min(out.pts[0].y, out.pts[1].y)},
-               Point{std::max(out.pts[0].x, out.pts[1].x), std::max(out.pts[0].y, out.pts[1].y)}};
+  if (out.rect) out.pts = corners(out.pts[0], out.pts[1]);
   return out;
 }
 
 // The box centre of a pin's shape, doubled (integer).
 Point centre2(const Pin& p) {
-  Box b = p.shape->kind == Shape::Kind::Rect ? p.shape->rect : Box{p.shape->polygon.outer[0], p.shape->polygon.outer[0]};
-  if (p.shape->kind != Shape::Kind::Rect)
-    for (const Point& q : p.shape->polygon.outer) {
-      b.lo = Point{std::min(b.lo.x, q.x), std::min(b.lo.y, q.y)};
-      b.hi = Point{std::max(b.hi.x, q.x), std::max(b.hi.y, q.y)};
-    }
+  const Box b = p.shape->kind == Shape::Kind::Rect ? p.shape->rect : geom::bounding_box(p.shape->polygon.outer);
   return Point{b.lo.x + b.hi.x, b.lo.y + b.hi.y};  // (fits: |coordinates| < 2^30)
 }
 

@@ -20,7 +20,7 @@ using geom::Polygon;
 
 SpaceTightener::SpaceTightener(const geom::NormalizedObstacles& norm, TightenOrientations orientations,
                                std::int64_t snap_scale)
-    : orientations_(orientations), snap_scale_(snap_scale), tri_(geom::triangulate_free_space(norm.domain, norm.obstacles)) {
+    : orientations_(orientations), tri_(geom::triangulate_free_space(norm.domain, norm.obstacles)) {
   if (!tri_.ok()) {
     std::string why;
     for (const Diagnostic& d : tri_.diagnostics()) why += " [" + d.code + "] " + d.message;
@@ -29,7 +29,7 @@ SpaceTightener::SpaceTightener(const geom::NormalizedObstacles& norm, TightenOri
   tight_ = std::make_unique<Tightener>(tri_);
   if (orientations_.set) {
     StaircaseOptions so;
-    so.snap_scale = snap_scale_;
+    so.snap_scale = snap_scale;
     sb_ = std::make_unique<StaircaseBuilder>(norm.domain, norm.obstacles, so);
   }
 }
@@ -65,7 +65,7 @@ SpaceTightener::Result SpaceTightener::run(std::span<const Point> line) const {
     COriented c;
     try {
       c = c_oriented(*tight_, *sb_, r.taut.points, *orientations_.set);
-    } catch (const StaircaseTooFine&) {  // (snap_scale_ > 1 only): taken as none
+    } catch (const StaircaseTooFine&) {  // (snap_scale > 1 only): taken as none
     }
     if (c.points.empty()) {
       r.no_staircase = true;

@@ -94,7 +94,6 @@ class SpaceTightener {
 
  private:
   TightenOrientations orientations_;
-  std::int64_t snap_scale_ = 1;
   geom::FreeSpaceTriangulation tri_;
   std::unique_ptr<Tightener> tight_;
   std::unique_ptr<StaircaseBuilder> sb_;

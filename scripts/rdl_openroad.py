@@ -7,9 +7,10 @@ checks it with `taut check`, and compares per net group with OpenROAD's routing
 (rdl_route.defok): connections made, wirelength and bends.
 
 A fair length: OpenROAD ends its wires at the pins' centres, taut on their edges (a wire may end
-anywhere on a pin shape, FORMAT.md), so both are measured outside the pins of their net: each
-OpenROAD segment is taken back to its centreline (it is drawn out by half the width at its corners)
-and the parts inside the net's pins are cut off; taut's wires are measured the same way.
+anywhere on a pin shape, FORMAT.md), so both are measured outside the pins of their net: OpenROAD's
+wiring is read by `taut import --keep-wiring` (each segment taken back to its centreline where it is
+drawn out by half the width past a corner), and the parts inside the net's pins are cut off; taut's
+wires are measured the same way.
 
 Usage: scripts/rdl_openroad.py [--taut build/tools/taut] [--data ../shared/data/openroad-rdl]
        [--out out/rdl] [--orientations rectilinear|octilinear]
@@ -18,7 +19,6 @@ Exit status: 0, or 1 when a step fails.
 import argparse
 import json
 import os
-import re
 import subprocess
 import sys
 import time
@@ -69,47 +69,25 @@ def outside(segments, pins):
     return total
 
 
-def openroad_routes(defok):
-    """{net: [(w, (x0, y0), (x1, y1))]} of SPECIALNETS wiring on metal10."""
-    text = open(defok).read()
-    sec = text[text.index("\nSPECIALNETS"):text.index("END SPECIALNETS")]
+def kept_routes(path):
+    """{net: ([segment], [pin rect], bends)} of a file written by `taut import --keep-wiring`: each
+    wire a 2-point segment on its centreline; a bend where two perpendicular wires meet end to end."""
+    root = ET.parse(path).getroot()
+    pins = {n.get("name"): [tuple(int(r.get(k)) for k in ("x0", "y0", "x1", "y1")) for r in n.iter("rect")]
+            for n in root.findall("net")}
     out = {}
-    for item in sec.split("\n    - ")[1:]:
-        name = item.split()[0]
+    for r in root.find("routes").findall("route"):
         segs = []
-        for w, x0, y0, x1, y1 in re.findall(r"metal10 (\d+) \+ SHAPE \w+ \( (\d+) (\d+) \) \( (\d+|\*) (\d+|\*) \)", item):
-            x0, y0 = int(x0), int(y0)
-            x1 = x0 if x1 == "*" else int(x1)
-            y1 = y0 if y1 == "*" else int(y1)
-            segs.append((int(w), (x0, y0), (x1, y1)))
-        out[name] = segs
+        for w in r.findall("wire"):
+            pts = [tuple(int(v) for v in p.split(",")) for p in w.get("points").split()]
+            segs += list(zip(pts, pts[1:]))
+        ends = {}
+        for a, b in segs:
+            for p in (a, b):
+                ends.setdefault(p, []).append(a[0] == b[0])
+        bends = sum(1 for v in ends.values() if len(v) == 2 and v[0] != v[1])
+        out[r.get("net")] = (segs, pins[r.get("net")], bends)
     return out
-
-
-def centrelines(segs):
-    """OpenROAD draws each segment out by half its width where it meets another: take it back."""
-    def covered(p, k):
-        for j, (w, a, b) in enumerate(segs):
-            if j == k:
-                continue
-            h = w // 2
-            if min(a[0], b[0]) - h <= p[0] <= max(a[0], b[0]) + h and min(a[1], b[1]) - h <= p[1] <= max(a[1], b[1]) + h:
-                return True
-        return False
-
-    out, bends = [], 0
-    for k, (w, a, b) in enumerate(segs):
-        h = w // 2
-        ends = []
-        for p, q in ((a, b), (b, a)):
-            if covered(p, k):  # a corner: back by h towards the other end
-                dx = (q[0] > p[0]) - (q[0] < p[0])
-                dy = (q[1] > p[1]) - (q[1] < p[1])
-                p = (p[0] + dx * h, p[1] + dy * h)
-                bends += 1
-            ends.append(p)
-        out.append((ends[0], ends[1]))
-    return out, bends // 2  # each corner is counted from both of its segments
 
 
 def group(net):
@@ -126,6 +104,7 @@ def main():
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
     layout, routed = os.path.join(a.out, "rdl.xml"), os.path.join(a.out, "rdl.routed.xml")
+    openroad = os.path.join(a.out, "openroad.xml")
     steps = [
         [a.taut, "import", os.path.join(a.data, "floorplan_flipchip.def"), "--lef", os.path.join(a.data, "dummy_pads.lef"),
          "--layer", "metal10", "--nets", "VDD DVDD VSS DVSS p_*", "--wire-width", "4", "--spacing", "4", "--bump-to-pad",
@@ -133,6 +112,9 @@ def main():
         [a.taut, "route", layout, "-o", routed, "--svg", os.path.join(a.out, "rdl.svg"), "--stats",
          os.path.join(a.out, "rdl.json"), "--orientations", a.orientations, "-q"],
         [a.taut, "check", routed],
+        [a.taut, "import", os.path.join(a.data, "rdl_route.defok"), "--lef", os.path.join(a.data, "dummy_pads.lef"),
+         "--layer", "metal10", "--nets", "VDD DVDD VSS DVSS p_*", "--wire-width", "4", "--spacing", "4",
+         "--keep-wiring", "-q", "-o", openroad],
     ]
     seconds = []
     for cmd in steps:
@@ -169,19 +151,14 @@ def main():
             pts = [tuple(int(v) for v in p.split(",")) for p in w.get("points").split()]
             segs += list(zip(pts, pts[1:]))
         e["taut_len"] += outside(segs, pins[r.get("net")])
-    # OpenROAD: a net's pins are those of every taut net made from it
-    or_routes = openroad_routes(os.path.join(a.data, "rdl_route.defok"))
-    for name, segs in or_routes.items():
-        if not segs:
-            continue
-        net_pins = sorted({r for n, rs in pins.items() if n == name or n.startswith(name + "/") for r in rs})
-        lines, bends = centrelines(segs)
+    # OpenROAD's routing, read by taut import --keep-wiring (the same nets, whole)
+    for name, (segs, net_pins, bends) in kept_routes(openroad).items():
         e = g(name)
-        e["or_len"] += outside(lines, net_pins)
+        e["or_len"] += outside(segs, net_pins)
         e["or_bends"] += bends
 
     print("taut %s against OpenROAD rdl_route on %s (metal10, 4 um wires, 4 um spacing)" % (a.orientations, a.data))
-    print("import %.2f s, route %.2f s, check %.2f s; taut check: ok" % tuple(seconds))
+    print("import %.2f s, route %.2f s, check %.2f s; taut check: ok" % tuple(seconds[:3]))
     print("%-14s %6s %8s %16s %16s %7s %9s %9s" % ("nets", "taut", "routed", "OpenROAD length", "taut length", "ratio",
                                                   "OR bends", "taut bends"))
     tot = {"n": 0, "r": 0, "ol": 0.0, "tl": 0.0, "ob": 0, "tb": 0}

@@ -251,13 +251,16 @@ void add_tighten(CLI::App& app, int& status) {
     // the default (<rules orientations>, else rectilinear) may not be the directions the file was
     // routed in (route --orientations octilinear over rectilinear rules), and their staircases
     // are longer (TIGHTEN-0014, since 2026-12-05).
-    if (o.empty() && layout->routes && orientations != "any") {
-      const auto set = geom::LatticeDirections::parse(orientations);
+    // (per input: routed wires with a segment outside the output's directions; `any` has none)
+    const std::optional<geom::LatticeDirections> out_set = tighten_orientations(orientations).set;
+    std::vector<char> off_directions(inputs.size(), 0);
+    for (std::size_t i = 0; i < inputs.size(); ++i)
+      off_directions[i] = out_set && inputs[i].source == "wires" &&
+                          !std::all_of(inputs[i].lines.begin(), inputs[i].lines.end(), [&](const auto& l) { return out_set->runs_along(l); });
+    if (o.empty() && layout->routes) {
       std::size_t off = 0, first = 0;
       for (std::size_t i = 0; i < inputs.size(); ++i)
-        if (inputs[i].source == "wires" && set &&
-            !std::all_of(inputs[i].lines.begin(), inputs[i].lines.end(), [&](const auto& l) { return set->runs_along(l); }))
-          if (off++ == 0) first = i;
+        if (off_directions[i] && off++ == 0) first = i;
       if (off > 0)
         print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0014", layout->file, layout->routes->line, 0,
                                       std::to_string(off) + " net" + (off == 1 ? "'s" : "s'") + " routed wires (net \"" +
@@ -356,14 +359,7 @@ void add_tighten(CLI::App& app, int& status) {
       // degree corridor at exactly the clearance its staircase steps at the lattice's unit, K
       // times as many steps in the scaled plane: degenerate seed 11 of Tighten.OctilinearRoutesTightened
       // grew past 1.5 GB there.)
-      const std::optional<geom::LatticeDirections> out_set = tighten_orientations(orientations).set;
-      // every segment of the lines along a direction of the output's set (any: every one)
-      auto in_directions = [&](const std::vector<std::vector<geom::Point>>& lines) {
-        return !out_set || std::all_of(lines.begin(), lines.end(), [&](const auto& l) { return out_set->runs_along(l); });
-      };
-      bool off_set = false;
-      for (std::size_t i = 0; i < layout->nets.size(); ++i)
-        off_set = off_set || (inputs[i].source == "wires" && !in_directions(inputs[i].lines));
+      const bool off_set = std::find(off_directions.begin(), off_directions.end(), 1) != off_directions.end();
       const std::int64_t k = off_set ? 1 : router::exact_gaps_scale(domain, plain.obstacles, all_pins, rules, true);
       const bool exact_plane = router::exact_gaps_scale(domain, plain.obstacles, all_pins, rules) > 1;
       if (k > 1) {
@@ -433,7 +429,7 @@ void add_tighten(CLI::App& app, int& status) {
             if (p.other_net) bad[*p.other_net] = 1;
           }
         for (std::size_t i = 0; i < given.size(); ++i)
-          legal_as_given[i] = inputs[i].source == "wires" && !bad[i] ? (in_directions(given[i]) ? 1 : 2) : 0;
+          legal_as_given[i] = inputs[i].source == "wires" && !bad[i] ? (off_directions[i] ? 2 : 1) : 0;
       }
     }
     const auto t1 = Clock::now();

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <memory>
 #include <random>
 #include <set>
 
@@ -943,6 +944,19 @@ TEST(NetRouter, PadStaircasesAreTheCellsInThePin) {
 // Then a net with the first diamond as a pad whose right corner lies 2 DBU from a
 // blockage (inside its clearance of 3) routes under length + 7 x bends and under the link metric,
 // and passes the checker.
+// The nets routed together under length + 7 x bends (or the link metric), w = s = 2, on the
+// rectilinear cover `covered` (the bend-aware routers' obstacles).
+std::unique_ptr<router::NetRouter> route_with_bends(const geom::NormalizedObstacles& covered, const std::vector<router::NetPins>& nets,
+                                                    bool link) {
+  router::NetRouterOptions opt;
+  opt.cost = link ? router::NetRouterOptions::Cost::Link : router::NetRouterOptions::Cost::Combined;
+  opt.bend_cost = 7;
+  auto nr = std::make_unique<router::NetRouter>(covered.domain, covered.obstacles, nets,
+                                                router::NetRules{2, 2, router::kDefaultCoverPieces}, opt);
+  nr->run(router::NetRouter::bend_router(link ? router::BendMetric::Link : router::BendMetric::Combined, 7));
+  return nr;
+}
+
 TEST(NetRouter, WidePadStaircasesTakeCoarserColumns) {
   struct Diamond {
     std::int64_t cx, cy, r, step;
@@ -1031,11 +1045,8 @@ TEST(NetRouter, WidePadStaircasesTakeCoarserColumns) {
   const std::vector<router::NetPins> nets{{"wide", {ring_of({0, 0, 10001, 1}), Polygon{{{15000, 3000}}, {}}}}};
   for (const bool link : {false, true}) {
     SCOPED_TRACE(link ? "link" : "combined");
-    router::NetRouterOptions opt;
-    opt.cost = link ? router::NetRouterOptions::Cost::Link : router::NetRouterOptions::Cost::Combined;
-    opt.bend_cost = 7;
-    router::NetRouter nr(covered.domain, covered.obstacles, nets, router::NetRules{2, 2, router::kDefaultCoverPieces}, opt);
-    nr.run(router::NetRouter::bend_router(link ? router::BendMetric::Link : router::BendMetric::Combined, 7));
+    const std::unique_ptr<router::NetRouter> routed = route_with_bends(covered, nets, link);
+    const router::NetRouter& nr = *routed;
     EXPECT_TRUE(nr.outcomes()[0].routed) << nr.outcomes()[0].code << " " << nr.outcomes()[0].reason;
     const router::CheckResult cr = router::check_routes(norm, check_nets(nets, nr), {2, 2});
     EXPECT_TRUE(cr.problems.empty()) << cr.problems[0].message;
@@ -1071,11 +1082,8 @@ TEST(NetRouter, ThinDiagonalPadsAreReachedByTheirLargestPart) {
     const geom::NormalizedObstacles covered = geom::normalize_obstacles(router::rectilinear_cover(norm.obstacles), norm.domain);
     for (const bool link : {false, true}) {
       SCOPED_TRACE(link ? "link" : "combined");
-      router::NetRouterOptions opt;
-      opt.cost = link ? router::NetRouterOptions::Cost::Link : router::NetRouterOptions::Cost::Combined;
-      opt.bend_cost = 7;
-      router::NetRouter nr(covered.domain, covered.obstacles, nets, router::NetRules{2, 2, router::kDefaultCoverPieces}, opt);
-      nr.run(router::NetRouter::bend_router(link ? router::BendMetric::Link : router::BendMetric::Combined, 7));
+      const std::unique_ptr<router::NetRouter> routed = route_with_bends(covered, nets, link);
+      const router::NetRouter& nr = *routed;
       const router::NetOutcome& o = nr.outcomes()[0];
       ASSERT_TRUE(o.routed) << o.code << " " << o.reason;
       EXPECT_TRUE(router::check_routes(norm, check_nets(nets, nr), {2, 2}).problems.empty());
