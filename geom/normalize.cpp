@@ -260,6 +260,13 @@ Polygon normalize_polygon(const Polygon& polygon) {
 
 NormalizedObstacles normalize_obstacles(std::span<const Polygon> inputs,
                                         std::optional<Box> boundary) {
+  std::vector<const Polygon*> at(inputs.size());
+  for (std::size_t i = 0; i < inputs.size(); ++i) at[i] = &inputs[i];
+  return normalize_obstacle_refs(at, boundary);
+}
+
+NormalizedObstacles normalize_obstacle_refs(std::span<const Polygon* const> inputs,
+                                            std::optional<Box> boundary) {
   NormalizedObstacles result;
   NormalizeStats& st = result.stats;
   st.input_polygons = static_cast<std::int64_t>(inputs.size());
@@ -270,18 +277,18 @@ NormalizedObstacles normalize_obstacles(std::span<const Polygon> inputs,
   bool any = false;
   Point lo{kMaxCoord, kMaxCoord}, hi{-kMaxCoord, -kMaxCoord};
   for (std::size_t i = 0; i < inputs.size(); ++i) {
-    st.input_vertices += static_cast<std::int64_t>(inputs[i].outer.size());
-    for (const Ring& h : inputs[i].holes) st.input_vertices += static_cast<std::int64_t>(h.size());
-    const Polygon p = canonical(inputs[i], counts, nullptr);
+    st.input_vertices += static_cast<std::int64_t>(inputs[i]->outer.size());
+    for (const Ring& h : inputs[i]->holes) st.input_vertices += static_cast<std::int64_t>(h.size());
+    Polygon p = canonical(*inputs[i], counts, nullptr);
     if (p.outer.size() < 3 || twice_area(p.outer) == 0) continue;
     for (Point v : p.outer) {
       lo = {std::min(lo.x, v.x), std::min(lo.y, v.y)};
       hi = {std::max(hi.x, v.x), std::max(hi.y, v.y)};
       any = true;
     }
-    loops.push_back({p.outer, static_cast<std::int64_t>(i)});
-    for (const Ring& h : p.holes)
-      if (h.size() >= 3) loops.push_back({h, static_cast<std::int64_t>(i)});
+    loops.push_back({std::move(p.outer), static_cast<std::int64_t>(i)});
+    for (Ring& h : p.holes)
+      if (h.size() >= 3) loops.push_back({std::move(h), static_cast<std::int64_t>(i)});
   }
   st.removed_repeated = counts.repeated;
   st.removed_collinear = counts.collinear;

@@ -85,6 +85,10 @@ inline constexpr Coord kDomainMargin = 64;
 // The union of `inputs` (valid polygons, any orientation) clipped to `boundary`.
 NormalizedObstacles normalize_obstacles(std::span<const Polygon> inputs,
                                         std::optional<Box> boundary);
+// The same, of polygons held elsewhere (a caller that gathers them from several stores need not
+// copy them; `sources` then index `inputs` as here).
+NormalizedObstacles normalize_obstacle_refs(std::span<const Polygon* const> inputs,
+                                            std::optional<Box> boundary);
 
 // Pieces whose union is the Minkowski sum of the polygons with the square [-r, r]^2 (r >= 0):
 // each polygon itself (holes kept) and, for every edge ab of every ring, the convex hull of the

@@ -4,7 +4,9 @@
 #include <cassert>
 #include <numeric>
 #include <memory_resource>
+#include <optional>
 #include <set>
+#include <type_traits>
 #include <stdexcept>
 
 #include <boost/geometry.hpp>
@@ -92,6 +94,61 @@ struct Below {
   }
 };
 
+// The sweep's order of the groups crossing the sweep line (union_loops): a sorted vector, or a
+// balanced tree for inputs of more than kVectorSweep edges (there a sweep line may cross many
+// edges, and a vector would move them all at each vertex below them). A position is where a
+// group goes: below the entry there.
+constexpr std::int64_t kVectorSweep = 8192;
+[[noreturn]] void lost_group() { throw std::logic_error("union_loops: a group lost from the sweep's order"); }
+struct VectorOrder {
+  using Pos = std::size_t;
+  std::vector<int> v;
+  const Below* order;
+  const std::vector<Group>* groups;
+  Pos lower_bound(int g) const { return static_cast<Pos>(std::lower_bound(v.begin(), v.end(), g, *order) - v.begin()); }
+  // Removes the run of groups that end at vertex x around g (`count` of them when >= 0); its place.
+  Pos erase_ending(int g, int x, int count) {
+    const Pos at = lower_bound(g);
+    if (at == v.size() || v[at] != g) lost_group();
+    Pos lo = at, hi = at + 1;
+    while (lo > 0 && (*groups)[v[lo - 1]].v == x) --lo;
+    while (hi < v.size() && (*groups)[v[hi]].v == x) ++hi;
+    if (count >= 0 && hi - lo != static_cast<Pos>(count)) lost_group();
+    v.erase(v.begin() + static_cast<std::ptrdiff_t>(lo), v.begin() + static_cast<std::ptrdiff_t>(hi));
+    return lo;
+  }
+  int below(Pos p) const { return p == 0 ? -1 : v[p - 1]; }
+  // Inserts g at p, which then names the entry above it; the entry below it (-1: none).
+  int insert(Pos& p, int g) {
+    const int b = below(p);
+    v.insert(v.begin() + static_cast<std::ptrdiff_t>(p++), g);
+    return b;
+  }
+};
+struct TreeOrder {
+  using Set = std::pmr::set<int, Below>;
+  using Pos = Set::iterator;
+  Set s;
+  const std::vector<Group>* groups;
+  Pos lower_bound(int g) { return s.lower_bound(g); }
+  Pos erase_ending(int g, int x, int count) {
+    const Pos at = s.find(g);
+    if (at == s.end()) lost_group();
+    Pos lo = at, hi = std::next(at);
+    int n = 1;
+    while (lo != s.begin() && (*groups)[*std::prev(lo)].v == x) --lo, ++n;
+    while (hi != s.end() && (*groups)[*hi].v == x) ++hi, ++n;
+    if (count >= 0 && n != count) lost_group();
+    return s.erase(lo, hi);
+  }
+  int below(Pos p) const { return p == s.begin() ? -1 : *std::prev(p); }
+  int insert(Pos& p, int g) {  // (a wrong hint costs a search, never a wrong order)
+    const Pos it = s.emplace_hint(p, g);
+    p = std::next(it);
+    return below(it);
+  }
+};
+
 // Angle class of d seen counter-clockwise from ref, in (0, 2*pi]: 0 (0, pi), 1 pi,
 // 2 (pi, 2 pi), 3 exactly 2 pi.
 int angle_class(Vec ref, Vec d) {
@@ -119,22 +176,51 @@ void counting_sort(std::vector<T>& v, std::size_t buckets, Key key, std::vector<
   v.swap(scratch);
 }
 
-// Sorts by the 64-bit key key(x) (stable, least significant byte first, skipping the bytes in
-// which all keys agree; std::sort for a few elements): the order of std::sort on (key, index)
-// pairs whose indices come increasing. The keys here span a window's coordinates, so most of
-// their bytes agree and four passes or fewer are made.
+// Sorts v[0, n) by the 64-bit key key(x), stably (the order of std::stable_sort by key): most
+// significant varying bits first. The top eight bits in which the keys differ (fewer for fewer
+// elements) split them into up to 256 runs by a stable counting sort (`scratch` holds n
+// elements), and each run is sorted the same way, or by insertion when short. The keys here are
+// points of a window, and many share a coordinate (tracks): a run is mostly a few points, so
+// this reads the elements about twice, where sorting least significant byte first read them
+// once for each of the six bytes in which a window's scaled coordinates vary (a twentieth of a
+// window union's time).
 template <class T, class Key>
-void radix_sort(std::vector<T>& v, Key key) {
-  if (v.size() < 64) {
-    std::stable_sort(v.begin(), v.end(), [&](const T& a, const T& b) { return key(a) < key(b); });
+void msd_sort(T* v, std::size_t n, Key key, T* scratch) {
+  if (n < 32) {
+    for (std::size_t i = 1; i < n; ++i) {
+      T x = v[i];
+      const std::uint64_t kx = key(x);
+      std::size_t j = i;
+      for (; j > 0 && key(v[j - 1]) > kx; --j) v[j] = v[j - 1];
+      v[j] = x;
+    }
     return;
   }
   std::uint64_t any = 0, all = ~std::uint64_t{0};
-  for (const T& x : v) any |= key(x), all &= key(x);
-  std::vector<T> scratch;
-  for (int shift = 0; shift < 64; shift += 8)
-    if (((any ^ all) >> shift & 0xff) != 0)
-      counting_sort(v, 256, [&](const T& x) { return key(x) >> shift & 0xff; }, scratch);
+  for (std::size_t i = 0; i < n; ++i) any |= key(v[i]), all &= key(v[i]);
+  const std::uint64_t differ = any ^ all;
+  if (differ == 0) return;  // equal keys: already in order
+  const int high = 63 - __builtin_clzll(differ);
+  // (fewer runs for fewer elements, about one per two: 16 to 256)
+  const int bits = std::clamp(62 - __builtin_clzll(n), 4, 8), buckets = 1 << bits;
+  const int shift = std::max(0, high - bits + 1);
+  const std::uint64_t mask = static_cast<std::uint64_t>(buckets - 1);
+  std::size_t first[257] = {};
+  for (std::size_t i = 0; i < n; ++i) ++first[(key(v[i]) >> shift & mask) + 1];
+  for (int b = 0; b < buckets; ++b) first[b + 1] += first[b];
+  std::size_t fill[256];
+  std::copy(first, first + buckets, fill);
+  for (std::size_t i = 0; i < n; ++i) scratch[fill[key(v[i]) >> shift & mask]++] = v[i];
+  std::copy(scratch, scratch + n, v);
+  if (shift == 0) return;  // every run holds one key
+  for (int b = 0; b < buckets; ++b)
+    if (first[b + 1] - first[b] > 1) msd_sort(v + first[b], first[b + 1] - first[b], key, scratch);
+}
+
+template <class T, class Key>
+void radix_sort(std::vector<T>& v, Key key) {
+  std::vector<T> scratch(v.size());
+  msd_sort(v.data(), v.size(), key, scratch.data());
 }
 
 struct UnionFind {
@@ -191,7 +277,8 @@ int orient_sign(Point a, Point b, const RPoint& v) {
   return sign(dx * vy - dy * vx);
 }
 
-UnionResult union_loops(const std::vector<Loop>& loops, const Box& domain, std::int64_t sweep_budget) {
+UnionResult union_loops(const std::vector<Loop>& loops, const Box& domain, std::int64_t sweep_budget,
+                        std::int64_t vector_sweep) {
   UnionResult result;
 
   // --- Edges of the loops and of the domain box.
@@ -241,7 +328,10 @@ UnionResult union_loops(const std::vector<Loop>& loops, const Box& domain, std::
       const SegmentIntersection r = intersect({s.a, s.b}, {t.a, t.b});
       if (r == SegmentIntersection::None) return;
       if (r == SegmentIntersection::Proper) {
-        const RPoint p = to_rpoint(line_intersection({s.a, s.b}, {t.a, t.b}));
+        // (a vertical and a horizontal edge, most crossings here: the point without a division)
+        const RPoint p = s.a.x == s.b.x && t.a.y == t.b.y   ? to_rpoint(Point{s.a.x, t.a.y})
+                         : s.a.y == s.b.y && t.a.x == t.b.x ? to_rpoint(Point{t.a.x, s.a.y})
+                                                            : to_rpoint(line_intersection({s.a, s.b}, {t.a, t.b}));
         splits.emplace_back(i, p);
         splits.emplace_back(j, p);
         if (!p.is_integer()) ++result.proper_crossings;
@@ -284,7 +374,11 @@ UnionResult union_loops(const std::vector<Loop>& loops, const Box& domain, std::
       SBox box;
       int i;
     };
-    std::vector<std::vector<Open>> open(static_cast<std::size_t>(nbands));
+    // (the bands' lists are kept from one call to the next on each thread, emptied: made anew,
+    // their growth was most of a window union's calls to the allocator)
+    thread_local std::vector<std::vector<Open>> open;
+    if (open.size() < static_cast<std::size_t>(nbands)) open.resize(static_cast<std::size_t>(nbands));
+    for (std::size_t k = 0; k < static_cast<std::size_t>(nbands); ++k) open[k].clear();
     bool swept = true;
     for (const int b : by_left) {
       const SBox& bb = boxes[static_cast<std::size_t>(b)];
@@ -483,55 +577,61 @@ UnionResult union_loops(const std::vector<Loop>& loops, const Box& domain, std::
     keys[static_cast<std::size_t>(g)] = {groups[g].sa, groups[g].sb, v.floor(), groups[g].u, v.is_integer()};
   }
   const Below below{&keys, &verts};
-  // (their nodes from one arena, freed together: 4 % fewer instructions in a window's union than
-  // with the allocator's calls)
-  std::pmr::monotonic_buffer_resource arena;
-  std::pmr::set<int, Below> status(below, &arena), bstatus(below, &arena);
-  std::vector<std::pmr::set<int, Below>::iterator> pos(ng), bpos(ng);
-  std::size_t next_start = 0;
-  for (int x = 0; x < nv; ++x) {
-    for (int k = end_first[x]; k < end_first[x + 1]; ++k) {
-      const int g = end_list[k];
-      status.erase(pos[g]);
-      if (groups[g].boundary) bstatus.erase(bpos[g]);
-    }
-    // Hints, each checked by the set (a wrong one costs a search, never a wrong order): a group
-    // from the vertex of the last one lies just above it (they come upward, and no group in the
-    // status passes through a vertex: pieces are split there); a group whose neighbour below is a
-    // boundary group lies just above that one among the boundary groups too.
-    int last = -1;
-    while (next_start < start_order.size() && groups[start_order[next_start]].u == x) {
-      const int gi = start_order[next_start++];
-      Group& g = groups[gi];
-      const auto it = last >= 0 ? status.emplace_hint(std::next(pos[last]), gi) : status.insert(gi).first;
-      pos[gi] = it;
-      last = gi;
-      const int below = it == status.begin() ? -1 : *std::prev(it);
-      if (below >= 0) {
-        const Group& p = groups[below];
-        g.w_below = p.w_below + p.dw;
-        g.b_below = p.b_below + p.db;
+  // The groups crossing the sweep line, and the boundary groups among them, sorted by `below`:
+  // the groups that end at a vertex are adjacent there (a group between two of them would pass
+  // through the vertex, and pieces are split at every vertex on them), and the groups that start
+  // there go in their place, upward; so each vertex costs one search in each order. (Vectors,
+  // for up to kVectorSweep edges: each vertex then also moves the entries above it, few on a
+  // window, where a balanced tree cost a third more of the union's time; a tree beyond.)
+  auto sweep = [&](auto& status, auto& bstatus) {
+    std::size_t next_start = 0;
+    for (int x = 0; x < nv; ++x) {
+      // where the vertex lies in each order: the place of the groups that end there, or, when
+      // none does, found by the first group that starts there (none: nothing to insert)
+      using Pos = typename std::remove_reference_t<decltype(status)>::Pos;
+      std::optional<Pos> at, bat;
+      if (end_first[x] < end_first[x + 1]) {
+        int gb = -1;
+        for (int k = end_first[x]; k < end_first[x + 1] && gb < 0; ++k)
+          if (groups[end_list[k]].boundary) gb = end_list[k];
+        at = status.erase_ending(end_list[end_first[x]], x, end_first[x + 1] - end_first[x]);
+        if (gb >= 0) bat = bstatus.erase_ending(gb, x, -1);
       }
-      const bool below_boundary = below >= 0 && groups[below].boundary;
-      g.union_below = covered(g.w_below, g.b_below);
-      g.union_above = covered(g.w_below + g.dw, g.b_below + g.db);
-      g.boundary = g.union_below != g.union_above;
-      if (g.boundary) {
-        const auto bit = below_boundary ? bstatus.emplace_hint(std::next(bpos[below]), gi) : bstatus.insert(gi).first;
-        bpos[gi] = bit;
-        g.bpred = bit == bstatus.begin() ? -1 : *std::prev(bit);
-      } else if (g.union_below) {
-        if (below_boundary) {
-          g.bpred = below;
-        } else {
-          const auto bit = bstatus.lower_bound(gi);
-          g.bpred = bit == bstatus.begin() ? -1 : *std::prev(bit);
+      if (next_start == start_order.size() || groups[start_order[next_start]].u != x) continue;
+      const int first = start_order[next_start];
+      if (!at) at = status.lower_bound(first);
+      if (!bat) bat = bstatus.lower_bound(first);
+      Pos p = *at, bp = *bat;
+      while (next_start < start_order.size() && groups[start_order[next_start]].u == x) {
+        const int gi = start_order[next_start++];
+        Group& g = groups[gi];
+        const int below_g = status.insert(p, gi);
+        if (below_g >= 0) {
+          const Group& q = groups[below_g];
+          g.w_below = q.w_below + q.dw;
+          g.b_below = q.b_below + q.db;
         }
+        g.union_below = covered(g.w_below, g.b_below);
+        g.union_above = covered(g.w_below + g.dw, g.b_below + g.db);
+        g.boundary = g.union_below != g.union_above;
+        // the nearest boundary group below: the one under the vertex among the boundary groups
+        if (g.boundary)
+          g.bpred = bstatus.insert(bp, gi);
+        else if (g.union_below)
+          g.bpred = bstatus.below(bp);
       }
     }
+  };
+  if (ns <= (vector_sweep >= 0 ? vector_sweep : kVectorSweep)) {
+    VectorOrder status{{}, &below, &groups}, bstatus{{}, &below, &groups};
+    sweep(status, bstatus);
+  } else {
+    // (their nodes from one arena, freed together)
+    std::pmr::monotonic_buffer_resource arena;
+    TreeOrder status{std::pmr::set<int, Below>(below, &arena), &groups};
+    TreeOrder bstatus{std::pmr::set<int, Below>(below, &arena), &groups};
+    sweep(status, bstatus);
   }
-  status.clear();
-  bstatus.clear();
 
   // --- Boundary edges directed with the union on their left, linked into rings.
   std::vector<int> bedges;
@@ -579,6 +679,10 @@ UnionResult union_loops(const std::vector<Loop>& loops, const Box& domain, std::
     if (ring_of[e0] >= 0) continue;
     const int r = static_cast<int>(result.rings.size());
     UnionRing ring;
+    std::size_t len = 1;  // (a reserve only: bounded should the walk not come back to e0)
+    for (int e = next[e0]; e != e0 && len < static_cast<std::size_t>(nb); e = next[e]) ++len;
+    ring.vertices.reserve(len);
+    ring.lines.reserve(len);
     for (int e = e0; ring_of[e] < 0; e = next[e]) {
       ring_of[e] = r;
       ring.vertices.push_back(verts[from[e]]);

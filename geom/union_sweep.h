@@ -12,8 +12,9 @@
 // by intersect() (predicates.h); (2) every edge split at every point where another edge meets
 // it, collinear overlapping pieces merged (their windings add); (3) a sweep in lexicographic
 // (x, y) order (a vertical edge is the limit of a slightly tilted one) keeps the pieces
-// crossing the sweep line in a balanced tree: the winding below a new piece is the winding
-// above its predecessor, so every piece learns the winding on both sides in O(log n);
+// crossing the sweep line in order (a sorted vector for small inputs, else a balanced tree):
+// the winding below a new piece is the winding above its predecessor, so every piece learns
+// the winding on both sides by one search (O(log n); the vector also moves the entries above);
 // (4) pieces with covered points on exactly one side are the boundary, linked into rings that
 // keep free space on their right; at a vertex where the union pinches, an incoming edge takes
 // the first outgoing edge counter-clockwise from its own reverse, so each ring bounds one face
@@ -76,7 +77,10 @@ struct UnionResult {
 };
 
 // sweep_budget: the box comparisons the sweep for edge pairs may make before the pairs are found
-// by an R-tree instead (-1: 64 per edge plus 2^20; 0: the R-tree at once). Same result either way.
-UnionResult union_loops(const std::vector<Loop>& loops, const Box& domain, std::int64_t sweep_budget = -1);
+// by an R-tree instead (-1: 64 per edge plus 2^20; 0: the R-tree at once). vector_sweep: the most
+// edges for which the winding sweep keeps its order in a sorted vector rather than a balanced
+// tree (-1: 8192; 0: the tree always). Same result either way.
+UnionResult union_loops(const std::vector<Loop>& loops, const Box& domain, std::int64_t sweep_budget = -1,
+                        std::int64_t vector_sweep = -1);
 
 }  // namespace taut::geom::detail

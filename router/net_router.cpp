@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
+#include <deque>
 #include <exception>
 #include <limits>
 #include <map>
@@ -588,8 +589,9 @@ geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel lev
     n.obstacles = ix.plain.polys;
     return n;
   }
-  // The other nets' pieces in the window (the dynamic part).
-  std::vector<Polygon> dynamic;
+  // The other nets' pieces in the window (the dynamic part), where they are kept (the union
+  // reads them there: copied, they cost a tenth of the window's union).
+  std::vector<const Polygon*> dynamic;
   std::vector<Box> dynamic_boxes;
   if (level == NetSpaceLevel::Pins || level == NetSpaceLevel::Full) {
     std::vector<Index::Entry> found;
@@ -598,7 +600,7 @@ geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel lev
     for (const auto& [box, id] : found) {
       const Index::Piece& pc = ix.pieces[id];
       if ((pc.kind == Index::GrownPin || pc.kind == Index::ShapePin) && pc.owner != net) {
-        dynamic.push_back(pc.poly);
+        dynamic.push_back(&pc.poly);
         dynamic_boxes.push_back(box);
       }
     }
@@ -616,7 +618,7 @@ geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel lev
     for (const auto& [box, id] : wf)
       if (id.first != net && (only.empty() || only[id.first])) {
         const std::vector<Polygon>* o = overlay ? overlay->find(id.first) : nullptr;
-        dynamic.push_back(o ? (*o)[id.second] : ix.wire_union[id.first][id.second]);
+        dynamic.push_back(o ? &(*o)[id.second] : &ix.wire_union[id.first][id.second]);
         dynamic_boxes.push_back(box);
       }
   }
@@ -666,14 +668,15 @@ geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel lev
         cut_boxes.push_back(found[f].first);
         break;
       }
-  std::vector<Polygon> rest = std::move(dynamic), pass;
+  std::deque<Polygon> made;  // the pieces made here (cut, framed): `rest` points into it too
+  std::vector<const Polygon*> rest = std::move(dynamic), pass;
   for (std::size_t f = 0; f < found.size(); ++f) {
     const auto& [box, c] = found[f];
     if (cut[f]) {
       for (const std::size_t id : comps.sources[c]) {
         const Index::Piece& pc = ix.pieces[id];
         if (pc.kind != Index::GrownEdge) {
-          rest.push_back(pc.poly);
+          rest.push_back(&pc.poly);
           continue;
         }
         std::vector<Ring> cur{pc.poly.outer};
@@ -687,7 +690,7 @@ geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel lev
               next.push_back(std::move(part));
           cur = std::move(next);
         }
-        for (Ring& r : cur) rest.push_back(Polygon{std::move(r), {}});
+        for (Ring& r : cur) rest.push_back(&made.emplace_back(Polygon{std::move(r), {}}));
       }
       continue;
     }
@@ -695,7 +698,7 @@ geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel lev
     bool alone = (framed ? box_strictly_inside(box, dom) : box_inside(box, dom)) &&
                  dyn_tree.qbegin(bgi::intersects(box)) == dyn_tree.qend();
     for (std::size_t k = 0; k < cut_boxes.size() && alone; ++k) alone = !boxes_meet(box, cut_boxes[k]);
-    (alone ? pass : rest).push_back(comps.polys[c]);
+    (alone ? pass : rest).push_back(&comps.polys[c]);
   }
   // Passed-through components must be disjoint from everything else. They meet no other piece's
   // box (components of one union never touch), but the union of the rest rounds sloped crossings
@@ -708,28 +711,33 @@ geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel lev
   // (First, what lies beyond the window's sides does not count, geom::cut_beyond: on 3,000
   // planted nets the pieces that cross a side carried a fifth of the union's input vertices, and
   // the cut removes 7 % of all of them. Then the union and its loop.)
-  std::erase_if(rest, [&](Polygon& p) { return !geom::cut_beyond(p, dom); });
+  for (const Polygon*& p : rest) {
+    if (box_inside(box_of(p->outer), dom)) continue;  // (cut_beyond would leave it as it is)
+    Polygon c = *p;
+    p = geom::cut_beyond(c, dom) ? &made.emplace_back(std::move(c)) : nullptr;
+  }
+  std::erase(rest, nullptr);
   // framed: the frame lies in the box one unit larger (what the cut left beyond the window's
   // sides joins it there), and the union is clipped to that box
   const Box clip = framed ? Box{{dom.lo.x - 1, dom.lo.y - 1}, {dom.hi.x + 1, dom.hi.y + 1}} : dom;
-  if (framed) rest.push_back(geom::domain_frame(dom));
+  if (framed) rest.push_back(&made.emplace_back(geom::domain_frame(dom)));
   geom::NormalizedObstacles out;
   for (;;) {
-    out = geom::normalize_obstacles(rest, clip);
+    out = geom::normalize_obstacle_refs(rest, clip);
     // nothing rounded: the union is exactly the rest's, which no passed component meets
     if (pass.empty() || out.stats.rounded == 0) break;
     std::vector<Index::Entry> ob;
     ob.reserve(out.obstacles.size());
     for (std::size_t i = 0; i < out.obstacles.size(); ++i) ob.push_back({box_of(out.obstacles[i].outer), i});
     const bgi::rtree<Index::Entry, bgi::rstar<16>> out_tree(ob.begin(), ob.end());
-    std::vector<Polygon> apart;
+    std::vector<const Polygon*> apart;
     const std::size_t before = rest.size();
-    for (Polygon& p : pass)
-      (out_tree.qbegin(bgi::intersects(box_of(p.outer))) == out_tree.qend() ? apart : rest).push_back(std::move(p));
+    for (const Polygon* p : pass)
+      (out_tree.qbegin(bgi::intersects(box_of(p->outer))) == out_tree.qend() ? apart : rest).push_back(p);
     pass = std::move(apart);
     if (rest.size() == before) break;
   }
-  for (Polygon& p : pass) out.obstacles.push_back(std::move(p));
+  for (const Polygon* p : pass) out.obstacles.push_back(*p);
   std::sort(out.obstacles.begin(), out.obstacles.end(),
             [](const Polygon& x, const Polygon& y) { return x.outer[0] < y.outer[0]; });
   out.sources.clear();

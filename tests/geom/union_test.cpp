@@ -537,6 +537,8 @@ TEST(UnionPairs, SweepAndRTreeGiveTheSameUnion) {
     EXPECT_FALSE(swept.pairs_by_rtree);
     EXPECT_TRUE(by_tree.pairs_by_rtree);
     expect_same_union(swept, by_tree);
+    // (the winding sweep's order in a balanced tree instead of a vector: UnionSweepOrder)
+    expect_same_union(swept, ud::union_loops(loops, dom, -1, 0));
     crossings += swept.proper_crossings > 0;
     if (HasFailure()) return;
   }
@@ -578,6 +580,32 @@ TEST(UnionPairs, ManyLongEdgesOpenAtOnceTakeTheRTree) {
   EXPECT_TRUE(by_tree.pairs_by_rtree);
   expect_same_union(swept, by_tree);
   check_rectilinear(in, dom);
+}
+
+// The winding sweep keeps the edges crossing the sweep line in a sorted vector up to 8,192
+// edges and in a balanced tree beyond: both orders give the same union, ring for ring, on the
+// random layouts (stars cross at rational points, rectangles touch and overlap; compared in
+// UnionPairs.SweepAndRTreeGiveTheSameUnion) and here on long bars that one sweep line crosses
+// all of (a vertex below them moves them all in the vector), over 8,192 edges.
+TEST(UnionSweepOrder, VectorAndTreeGiveTheSameUnion) {
+  std::vector<Polygon> in;
+  for (Coord k = 0; k < 3000; ++k) in.push_back(rect(0, 3 * k + 10, 5000 + k, 3 * k + 12));  // bars across
+  for (Coord k = 0; k < 600; ++k) in.push_back(rect(8 * k, 0, 8 * k + 5, 4 + k % 5));  // pads below them all
+  for (Coord k = 0; k < 10; ++k) in.push_back(rect(500 * k + 7, 0, 500 * k + 9, 9100));  // posts through all
+  const std::vector<ud::Loop> loops = loops_of(in);
+  const Box dom{{-1, -1}, {8100, 9101}};
+  ASSERT_GT(loops.size() * 4, 8192u);  // the default takes the tree here
+  const ud::UnionResult by_default = ud::union_loops(loops, dom);
+  expect_same_union(by_default, ud::union_loops(loops, dom, -1, 0));
+  expect_same_union(by_default, ud::union_loops(loops, dom, -1, 1 << 20));
+  // the posts join the bars and the pads they touch; every other pad is an obstacle of its own
+  int apart = 0;
+  for (Coord j = 0; j < 600; ++j) {
+    bool touches = false;
+    for (Coord k = 0; k < 10; ++k) touches = touches || (8 * j <= 500 * k + 9 && 8 * j + 5 >= 500 * k + 7);
+    apart += !touches;
+  }
+  EXPECT_EQ(by_default.components, 1 + apart);
 }
 
 TEST(UnionScale, DISABLED_MillionVerticesOfRandomRectangles) {
