@@ -239,6 +239,10 @@ struct UnionFind {
 
 }  // namespace
 
+void sort_by_key(std::vector<std::pair<std::uint64_t, int>>& v) {
+  radix_sort(v, [](const std::pair<std::uint64_t, int>& k) { return k.first; });
+}
+
 RPoint to_rpoint(Point p) { return {p.x, p.y, 0, 0, 1}; }
 
 RPoint to_rpoint(const RationalPoint& r) {
@@ -374,9 +378,12 @@ UnionResult union_loops(const std::vector<Loop>& loops, const Box& domain, std::
       SBox box;
       int i;
     };
-    // (the bands' lists are kept from one call to the next on each thread, emptied: made anew,
-    // their growth was most of a window union's calls to the allocator)
-    thread_local std::vector<std::vector<Open>> open;
+    // (for small inputs, a window's, the bands' lists are kept from one call to the next on each
+    // thread, emptied: made anew, their growth was most of its calls to the allocator; a large
+    // input's lists are its own, so no thread keeps their size)
+    thread_local std::vector<std::vector<Open>> kept;
+    std::vector<std::vector<Open>> own;
+    std::vector<std::vector<Open>>& open = ns <= kVectorSweep ? kept : own;
     if (open.size() < static_cast<std::size_t>(nbands)) open.resize(static_cast<std::size_t>(nbands));
     for (std::size_t k = 0; k < static_cast<std::size_t>(nbands); ++k) open[k].clear();
     bool swept = true;
@@ -471,7 +478,7 @@ UnionResult union_loops(const std::vector<Loop>& loops, const Box& domain, std::
       };
       std::vector<std::pair<std::uint64_t, int>> keyed(pts.size());
       for (std::size_t k = 0; k < pts.size(); ++k) keyed[k] = {key(pts[k]), static_cast<int>(k)};
-      radix_sort(keyed, [](const std::pair<std::uint64_t, int>& k) { return k.first; });
+      sort_by_key(keyed);
       for (std::size_t k = 0; k < keyed.size(); ++k) order[k] = keyed[k].second;
       for (std::size_t k = 0; k < keyed.size();) {
         std::size_t e = k + 1;

@@ -54,6 +54,10 @@ bool lex_less(const RPoint& a, const RPoint& b);
 // Sign of orient(a, b, v) (> 0: v left of the directed line a->b). Exact in __int128.
 int orient_sign(Point a, Point b, const RPoint& v);
 
+// Sorts by the first member, stably (std::stable_sort's order), most significant bits first:
+// how union_loops orders its vertex keys.
+void sort_by_key(std::vector<std::pair<std::uint64_t, int>>& v);
+
 // A directed closed loop of integer points (no repeated closing vertex); `tag` is carried to
 // the output so callers can tell which obstacle each loop ended in.
 struct Loop {

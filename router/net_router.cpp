@@ -712,7 +712,7 @@ geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel lev
   // planted nets the pieces that cross a side carried a fifth of the union's input vertices, and
   // the cut removes 7 % of all of them. Then the union and its loop.)
   for (const Polygon*& p : rest) {
-    if (box_inside(box_of(p->outer), dom)) continue;  // (cut_beyond would leave it as it is)
+    if (p->outer.empty() || box_inside(box_of(p->outer), dom)) continue;  // (cut_beyond would leave it as it is)
     Polygon c = *p;
     p = geom::cut_beyond(c, dom) ? &made.emplace_back(std::move(c)) : nullptr;
   }

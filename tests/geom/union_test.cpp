@@ -595,9 +595,8 @@ TEST(UnionSweepOrder, VectorAndTreeGiveTheSameUnion) {
   const std::vector<ud::Loop> loops = loops_of(in);
   const Box dom{{-1, -1}, {8100, 9101}};
   ASSERT_GT(loops.size() * 4, 8192u);  // the default takes the tree here
-  const ud::UnionResult by_default = ud::union_loops(loops, dom);
-  expect_same_union(by_default, ud::union_loops(loops, dom, -1, 0));
-  expect_same_union(by_default, ud::union_loops(loops, dom, -1, 1 << 20));
+  const ud::UnionResult by_default = ud::union_loops(loops, dom);  // (the tree)
+  expect_same_union(by_default, ud::union_loops(loops, dom, -1, 1 << 20));  // the vector
   // the posts join the bars and the pads they touch; every other pad is an obstacle of its own
   int apart = 0;
   for (Coord j = 0; j < 600; ++j) {
@@ -606,6 +605,33 @@ TEST(UnionSweepOrder, VectorAndTreeGiveTheSameUnion) {
     apart += !touches;
   }
   EXPECT_EQ(by_default.components, 1 + apart);
+}
+
+// The vertex keys' sort (most significant bits first, insertion under 32 elements, 16 to 256
+// runs by size) against std::stable_sort: sizes across its thresholds, keys that differ only in
+// low bits, only in high bits, in both, with many repeats (their second members must stay in
+// input order).
+TEST(UnionOrder, KeySortIsStableSort) {
+  std::mt19937_64 rng(997);
+  for (int it = 0; it < 3000; ++it) {
+    SCOPED_TRACE("case " + std::to_string(it));
+    const std::size_t n = it % 3 == 0 ? rng() % 40 : it % 3 == 1 ? 30 + rng() % 300 : rng() % 5000;
+    const int kind = it % 5;
+    std::vector<std::pair<std::uint64_t, int>> v(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::uint64_t r = rng();
+      const std::uint64_t key = kind == 0   ? r % 7                             // repeats, low bits
+                                : kind == 1 ? (r % 5) << 58                     // high bits only
+                                : kind == 2 ? (r % 64) << 32 | (r >> 40) % 9   // two fields
+                                : kind == 3 ? r                                 // all bits
+                                            : (1ull << 40) + (r % 3000) * 2048;  // scaled plane
+      v[i] = {key, static_cast<int>(i)};
+    }
+    std::vector<std::pair<std::uint64_t, int>> want = v;
+    std::stable_sort(want.begin(), want.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    ud::sort_by_key(v);
+    ASSERT_TRUE(v == want);
+  }
 }
 
 TEST(UnionScale, DISABLED_MillionVerticesOfRandomRectangles) {
