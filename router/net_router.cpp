@@ -558,7 +558,7 @@ std::vector<Polygon> NetSpace::wire_union(const Lines& wires) const {
   return geom::normalize_obstacles(grown, domain_).obstacles;
 }
 
-void NetSpace::set_wires(std::size_t net, const Lines& wires) {
+void NetSpace::set_wires(std::size_t net, const Lines& wires, const std::vector<Polygon>* unioned) {
   Index& ix = *index_;
   for (std::size_t k = 0; k < ix.wire_pieces[net].size(); ++k)
     ix.wire_tree.remove(Index::WireEntry{box_of(ix.wire_pieces[net][k]), {net, k}});
@@ -572,7 +572,7 @@ void NetSpace::set_wires(std::size_t net, const Lines& wires) {
       ix.wire_tree.insert(Index::WireEntry{box_of(g), {net, ix.wire_pieces[net].size()}});
       ix.wire_pieces[net].push_back(std::move(g));
     });
-  ix.wire_union[net] = wire_union(wires);
+  ix.wire_union[net] = unioned ? *unioned : wire_union(wires);
   for (std::size_t k = 0; k < ix.wire_union[net].size(); ++k)
     ix.union_tree.insert(Index::WireEntry{box_of(ix.wire_union[net][k].outer), {net, k}});
 }
@@ -1469,7 +1469,7 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
   }
 }
 
-void NetRouter::place(std::size_t i, NetAttempt a) {
+void NetRouter::place(std::size_t i, NetAttempt a, const std::vector<Polygon>* unioned) {
   // the log (changed_) tells attempts made ahead (threads) and failed attempts kept (failed_)
   // whether the space in their windows is still what they saw
   std::unique_lock lock(space_mutex_);
@@ -1483,7 +1483,7 @@ void NetRouter::place(std::size_t i, NetAttempt a) {
   out_[i].wires = a.routed ? std::move(a.wires) : Lines{};
   out_[i].code = a.routed ? std::string() : std::move(a.code);
   out_[i].reason = a.routed ? std::string() : std::move(a.reason);
-  space_.set_wires(i, out_[i].wires);
+  space_.set_wires(i, out_[i].wires, out_[i].routed ? unioned : nullptr);
   for (const Box& b : space_.wire_boxes(i)) changed_.push_back({b, i});
 }
 
@@ -1700,7 +1700,8 @@ NetRouter::RipPlan NetRouter::plan_rip_up(const NetRouteFn& route, std::size_t i
     add_counts(p.counts, t.counts);
     p.reads.push_back(t.window);
     p.windows.push_back(t.window);
-    ov.set(j, t.a.routed ? space_.wire_union(t.a.wires) : std::vector<Polygon>{});
+    p.again_unions.push_back(t.a.routed ? space_.wire_union(t.a.wires) : std::vector<Polygon>{});
+    ov.set(j, p.again_unions.back());
     failed += !t.a.routed;
     now += t.a.routed;
     p.again.push_back({j, std::move(t.a)});
@@ -1760,7 +1761,7 @@ bool NetRouter::commit(RipPlan p) {
   }
   for (const std::size_t b : p.blockers) place(b, NetAttempt{});
   count_rips();
-  for (auto& [j, a] : p.again) place(j, std::move(a));
+  for (std::size_t k = 0; k < p.again.size(); ++k) place(p.again[k].first, std::move(p.again[k].second), &p.again_unions[k]);
   undone_[i].reset();
   return false;
 }

@@ -358,7 +358,9 @@ class NetSpace {
   static constexpr std::int64_t kMaxUnitStaircaseColumns = 4096;
 
   // Net `net`'s wires as the other nets see them (replacing earlier ones; empty: none).
-  void set_wires(std::size_t net, const std::vector<std::vector<geom::Point>>& wires);
+  // (`unioned`: wire_union(wires), when the caller has it already)
+  void set_wires(std::size_t net, const std::vector<std::vector<geom::Point>>& wires,
+                 const std::vector<geom::Polygon>* unioned = nullptr);
 
   // The obstacles net `net` is routed among at `level`, normalized in `window` (clipped to the
   // domain; the whole domain when nullopt): every piece meeting the window, found in R-trees.
@@ -711,7 +713,8 @@ class NetRouter {
   enum class InOrder { Cautious, Failing, Serial };
   void route_in_order(const NetRouteFn& route, std::span<const std::size_t> nets,
                       const std::function<bool(std::size_t, const geom::Box&)>& after, InOrder how = InOrder::Cautious);
-  void place(std::size_t net, NetAttempt a);
+  // (`unioned`: the union of a's wires, NetSpace::wire_union, when made already)
+  void place(std::size_t net, NetAttempt a, const std::vector<geom::Polygon>* unioned = nullptr);
   // A way round the wires of the nets that may not be ripped up again (around_), with those of
   // them whose wires met its last window.
   struct AroundWay {
@@ -737,6 +740,7 @@ class NetRouter {
     std::optional<AroundWay> around;   // a new way round the nets at the limit
     std::set<std::size_t> blockers;
     std::vector<std::pair<std::size_t, NetAttempt>> again;  // the net, then its blockers, as routed
+    std::vector<std::vector<geom::Polygon>> again_unions;   // their wires' unions (NetSpace::wire_union)
     std::vector<geom::Box> windows;    // the last windows of those attempts
     bool undone = false;               // Made: fewer of them routed after (with gain: not more)
   };
