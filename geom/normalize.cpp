@@ -405,8 +405,12 @@ Ring cut_ring_beyond(const Ring& ring, const Box& d) {
 }
 }  // namespace
 
+bool cut_leaves(const Polygon& polygon, const Box& d) {
+  return std::all_of(polygon.outer.begin(), polygon.outer.end(), [&](Point p) { return in_box(p, d); });
+}
+
 bool cut_beyond(Polygon& polygon, const Box& d) {
-  if (std::all_of(polygon.outer.begin(), polygon.outer.end(), [&](Point p) { return in_box(p, d); })) return true;
+  if (cut_leaves(polygon, d)) return true;
   Ring outer = cut_ring_beyond(polygon.outer, d);
   if (outer.empty()) return false;
   polygon.outer = std::move(outer);

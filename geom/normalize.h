@@ -110,6 +110,9 @@ std::vector<Polygon> square_grown(std::span<const Polygon> polygons, Coord r);
 // the polygon has no point in d: false, the polygon left as it was). In place; a polygon with
 // its outer ring in d is not touched. Exact; no vertex is moved or added.
 bool cut_beyond(Polygon& polygon, const Box& d);
+// Whether cut_beyond(polygon, d) leaves the polygon as it is: its outer ring lies in d (or it
+// has none). A caller holding the polygon elsewhere copies it only when this is false.
+bool cut_leaves(const Polygon& polygon, const Box& d);
 
 // The frame of a domain box d: the box one unit larger on every side (not clamped: d must lie
 // within the coordinate limit, so the frame lies within it plus one) with d as its hole, outer

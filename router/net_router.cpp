@@ -558,7 +558,7 @@ std::vector<Polygon> NetSpace::wire_union(const Lines& wires) const {
   return geom::normalize_obstacles(grown, domain_).obstacles;
 }
 
-void NetSpace::set_wires(std::size_t net, const Lines& wires, const std::vector<Polygon>* unioned) {
+void NetSpace::set_wires(std::size_t net, const Lines& wires, std::optional<std::vector<Polygon>> unioned) {
   Index& ix = *index_;
   for (std::size_t k = 0; k < ix.wire_pieces[net].size(); ++k)
     ix.wire_tree.remove(Index::WireEntry{box_of(ix.wire_pieces[net][k]), {net, k}});
@@ -572,7 +572,7 @@ void NetSpace::set_wires(std::size_t net, const Lines& wires, const std::vector<
       ix.wire_tree.insert(Index::WireEntry{box_of(g), {net, ix.wire_pieces[net].size()}});
       ix.wire_pieces[net].push_back(std::move(g));
     });
-  ix.wire_union[net] = unioned ? *unioned : wire_union(wires);
+  ix.wire_union[net] = unioned ? std::move(*unioned) : wire_union(wires);
   for (std::size_t k = 0; k < ix.wire_union[net].size(); ++k)
     ix.union_tree.insert(Index::WireEntry{box_of(ix.wire_union[net][k].outer), {net, k}});
 }
@@ -712,7 +712,7 @@ geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel lev
   // planted nets the pieces that cross a side carried a fifth of the union's input vertices, and
   // the cut removes 7 % of all of them. Then the union and its loop.)
   for (const Polygon*& p : rest) {
-    if (p->outer.empty() || box_inside(box_of(p->outer), dom)) continue;  // (cut_beyond would leave it as it is)
+    if (geom::cut_leaves(*p, dom)) continue;
     Polygon c = *p;
     p = geom::cut_beyond(c, dom) ? &made.emplace_back(std::move(c)) : nullptr;
   }
@@ -1469,7 +1469,7 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
   }
 }
 
-void NetRouter::place(std::size_t i, NetAttempt a, const std::vector<Polygon>* unioned) {
+void NetRouter::place(std::size_t i, NetAttempt a, std::optional<std::vector<Polygon>> unioned) {
   // the log (changed_) tells attempts made ahead (threads) and failed attempts kept (failed_)
   // whether the space in their windows is still what they saw
   std::unique_lock lock(space_mutex_);
@@ -1483,7 +1483,7 @@ void NetRouter::place(std::size_t i, NetAttempt a, const std::vector<Polygon>* u
   out_[i].wires = a.routed ? std::move(a.wires) : Lines{};
   out_[i].code = a.routed ? std::string() : std::move(a.code);
   out_[i].reason = a.routed ? std::string() : std::move(a.reason);
-  space_.set_wires(i, out_[i].wires, out_[i].routed ? unioned : nullptr);
+  space_.set_wires(i, out_[i].wires, out_[i].routed ? std::move(unioned) : std::nullopt);
   for (const Box& b : space_.wire_boxes(i)) changed_.push_back({b, i});
 }
 
@@ -1761,7 +1761,7 @@ bool NetRouter::commit(RipPlan p) {
   }
   for (const std::size_t b : p.blockers) place(b, NetAttempt{});
   count_rips();
-  for (std::size_t k = 0; k < p.again.size(); ++k) place(p.again[k].first, std::move(p.again[k].second), &p.again_unions[k]);
+  for (std::size_t k = 0; k < p.again.size(); ++k) place(p.again[k].first, std::move(p.again[k].second), std::move(p.again_unions[k]));
   undone_[i].reset();
   return false;
 }

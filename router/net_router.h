@@ -360,7 +360,7 @@ class NetSpace {
   // Net `net`'s wires as the other nets see them (replacing earlier ones; empty: none).
   // (`unioned`: wire_union(wires), when the caller has it already)
   void set_wires(std::size_t net, const std::vector<std::vector<geom::Point>>& wires,
-                 const std::vector<geom::Polygon>* unioned = nullptr);
+                 std::optional<std::vector<geom::Polygon>> unioned = std::nullopt);
 
   // The obstacles net `net` is routed among at `level`, normalized in `window` (clipped to the
   // domain; the whole domain when nullopt): every piece meeting the window, found in R-trees.
@@ -714,7 +714,7 @@ class NetRouter {
   void route_in_order(const NetRouteFn& route, std::span<const std::size_t> nets,
                       const std::function<bool(std::size_t, const geom::Box&)>& after, InOrder how = InOrder::Cautious);
   // (`unioned`: the union of a's wires, NetSpace::wire_union, when made already)
-  void place(std::size_t net, NetAttempt a, const std::vector<geom::Polygon>* unioned = nullptr);
+  void place(std::size_t net, NetAttempt a, std::optional<std::vector<geom::Polygon>> unioned = std::nullopt);
   // A way round the wires of the nets that may not be ripped up again (around_), with those of
   // them whose wires met its last window.
   struct AroundWay {
