@@ -136,7 +136,7 @@ TEST(Spm, GeneratedLayoutsMatchTheReference) {
     }
   }
   std::printf("%d reachable queries checked\n", reachable);
-  EXPECT_GT(reachable, sanitized_share(120, 2));  // of 240 (120 under the sanitizers)
+  EXPECT_GT(reachable, sanitized_share(120, 2));  // of 240 (fewer under the sanitizers)
 }
 
 TEST(Spm, DemoNamesBlockedAndWalledInQueries) {

@@ -352,7 +352,7 @@ TEST(NetRouter, EveryRoutedNetPassesTheChecker) {
     EXPECT_GT(around, 0);
     EXPECT_GT(final_gain, 0);
   }
-  EXPECT_GT(pads, sanitized_share(100, 4));  // 38 of 83 layouts under the sanitizers
+  EXPECT_GT(pads, sanitized_share(100, 4));
 }
 
 // One net alone with no rules: the exact L1 shortest length of the reference (the other nets'

@@ -381,7 +381,7 @@ TEST(Tighten, COrientedFewestLinksOnDegenerateScenes) {
   std::printf("%lld degenerate layouts: %lld c-oriented wires compared with the exhaustive search, %lld missing "
               "(none found by the search either)\n",
               scenes, compared, missing);
-  EXPECT_GE(compared, sanitized_share(3000, 20));  // 3,398 here, 221 under the sanitizers
+  EXPECT_GE(compared, sanitized_share(3000, 20));  // 3,398 here
 }
 
 // Small layouts (coordinates 0..9, one to three rectangles that may touch): the c-oriented
@@ -658,7 +658,7 @@ TEST(TightenLoop, RandomLoopsAgainstTheReferences) {
   }
   std::printf("%lld loops tightened (%lld with a cyclic word of two or more letters, %lld bends), %lld contractible\n",
               loops, winding, bends, contractible);
-  EXPECT_GE(loops, sanitized_share(900, 20));  // 50 of 43 instances under the sanitizers
+  EXPECT_GE(loops, sanitized_share(900, 20));
   EXPECT_GE(winding, sanitized_share(600, 16));
   EXPECT_GE(contractible, sanitized_share(1500, 16));
 }
