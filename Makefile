@@ -28,11 +28,11 @@ build-asan: deps $(ASAN_BUILD)/CMakeCache.txt
 # cmake_check_build_system first: a tree configured before taut_tests existed learns of it.
 build-tests: deps $(BUILD)/CMakeCache.txt
 	@cmake --build $(BUILD) --target cmake_check_build_system -- --no-print-directory
-	@cmake --build $(BUILD) -j $(JOBS) --target taut_tests -- --no-print-directory
+	@cmake --build $(BUILD) -j $(BUILD_JOBS) --target taut_tests -- --no-print-directory
 
 build-asan-tests: deps $(ASAN_BUILD)/CMakeCache.txt
 	@cmake --build $(ASAN_BUILD) --target cmake_check_build_system -- --no-print-directory
-	@cmake --build $(ASAN_BUILD) -j $(JOBS) --target taut_tests -- --no-print-directory
+	@cmake --build $(ASAN_BUILD) -j $(BUILD_JOBS) --target taut_tests -- --no-print-directory
 
 run: build
 	@mkdir -p out
@@ -60,14 +60,15 @@ run: build
 	$(BUILD)/tools/taut check out/pitch.routed.xml -q
 	@echo "wrote out/demo.routed.xml, out/demo.svg, out/demo.stats.json, out/demo.check.json, octilinear wires in out/demo.oct.routed.xml, out/demo.oct.svg, with clk as an octilinear Steiner tree in out/demo.oct.steiner.xml, out/demo.oct.steiner.svg, out/demo.oct.steiner.json, the pins' Voronoi diagram in out/demo.cells.xml, out/demo.voronoi.svg, designs/wind.xml's sketches tightened in out/wind.tightened.xml, out/wind.svg, out/wind.stats.json, and designs/bends.xml routed with bend costs 0 and 5000 in out/bends.c0.xml, out/bends.c0.svg, out/bends.c5000.xml, out/bends.c5000.svg, and designs/diameter.xml's link diameter in out/diameter.json, out/diameter.svg, and designs/demo.xml routed with length + 1000 x bends (shape pins included) in out/demo.bends.xml, out/demo.bends.svg, routed and tightened together (bump by its sketch) in out/demo.tight.xml, out/demo.tight.svg, and designs/wind.xml tightened in the diagonals only (c:45,135) in out/wind.diagonal.xml, out/wind.diagonal.svg, and in octilinear with each wire's minimum-link octilinear path (dash-dotted) in out/wind.oct.xml, out/wind.oct.svg, out/wind.oct.stats.json, and designs/pitch.xml's four nets on four tracks at exactly the pitch in out/pitch.routed.xml, out/pitch.svg, out/pitch.stats.json"
 
-# The two trees build and test side by side, each with half the JOBS (one each on two cores):
-# one's serial tails (a big file compiling alone, links, a slow test) overlap the other's work,
-# and the machine runs as many processes as it has cores. Each tree with all of them (four
-# processes on two cores) cost 20-40 % more CPU per compile (router/check.cpp: 8.5 s of CPU
-# alone, 10.2-12.2 s each of four at once; 2026-12-05). Output is kept per step.
-TEST_JOBS ?= $(shell echo $$(( ($(JOBS) + 1) / 2 )))
+# The two trees build and test side by side: one's serial tails (a big file compiling alone,
+# links, a slow test) overlap the other's work. Each compiles with half the JOBS (one job each
+# on two cores): each with all of them (four compilers on two cores) cost 20-40 % more CPU per
+# compile (router/check.cpp: 8.5 s of CPU alone, 10.2-12.2 s each of four at once; 2026-12-05).
+# ctest keeps all the JOBS: the tree that ends its tests last runs them alone. Output is kept
+# per step.
+BUILD_JOBS ?= $(JOBS)
 test: deps
-	@$(MAKE) --no-print-directory -j 2 --output-sync=target JOBS=$(TEST_JOBS) test-release test-asan
+	@$(MAKE) --no-print-directory -j 2 --output-sync=target BUILD_JOBS=$(shell echo $$(( ($(JOBS) + 1) / 2 ))) test-release test-asan
 
 # A fresh tree has no timings of its own yet: ctest would start the slowest tests last and end
 # on one of them alone. tests/cost/ holds timings measured here (the format of ctest's
