@@ -226,7 +226,7 @@ void check_layout(const Layout& lay, std::uint64_t seed, int* hits) {
 
 TEST(ObstacleIndex, RaysMatchBruteForceOnCoarseGrids) {
   int hits = 0;
-  // Under the sanitizers a quarter of the layouts (support/sanitized.h).
+  // Under the sanitizers an eighth of the layouts (support/sanitized.h).
   const int layouts = static_cast<int>(taut::test::sanitized_share(250, 4));
   for (int i = 0; i < layouts; ++i) {
     const std::uint64_t seed = kBaseSeed + i;

@@ -338,7 +338,7 @@ TEST(OctOracle, MatchesLatticeDijkstraOnRandomRectangles) {
   const unsigned base = 31000;
   int layouts = 0, compared = 0, reachable = 0, not_free = 0, pinch_queries = 0,
       layouts_with_pinch = 0, paths = 0, diagonal_answers = 0;
-  // Under the sanitizers a quarter of the layouts (support/sanitized.h); the thresholds scale.
+  // Under the sanitizers an eighth of the layouts (support/sanitized.h); the thresholds scale.
   const auto share = [](std::int64_t n) { return static_cast<int>(taut::test::sanitized_share(n, 4)); };
   for (int it = 0; it < share(2500); ++it) {
     const unsigned seed = base + static_cast<unsigned>(it);

@@ -27,7 +27,7 @@
 // router accepts it and agrees with the reference on it).
 //
 // Measured: 2,400 instances, ~48,000 queries (~31,000 found, ~420 pairs whose answer depends on
-// the metric) in ~3.5 s in the Release tree; a twelfth of them in the sanitizer tree (~3 s).
+// the metric) in ~3.5 s in the Release tree; a twenty-fourth of them in the sanitizer tree.
 //
 // A failure prints the seed, the instance as C++ initializers, the query and both answers.
 // TAUT_BEND_SEED=N runs only seed N. Seeds that ever failed stay in kRegressionSeeds.

@@ -395,7 +395,7 @@ TEST(NetRouter, ANetAloneWithoutRulesIsShortest) {
 // pass the checker.
 TEST(NetRouter, WindowsGiveTheWholeLayoutsLengths) {
   int failed = 0, compared = 0, widened = 0, trees = 0, tree_windows = 0;
-  for (int seed = 1; seed <= sanitized_share(60, 16); ++seed) {
+  for (int seed = 1; seed <= sanitized_share(60, 8); ++seed) {  // 3 there: a Steiner tree too
     std::mt19937 rng(static_cast<unsigned>(900000 + seed));
     const auto [boxes, norm] = box_layout(rng);
     router::L1Router plain(norm.domain, norm.obstacles);
@@ -481,8 +481,8 @@ TEST(NetRouter, WindowsGiveTheWholeLayoutsLengths) {
   std::printf("%d nets alone compared, %d needed a wider window; %d trees compared, %d of them decided in a window\n",
               compared, widened, trees, tree_windows);
   EXPECT_EQ(failed, 0);
-  EXPECT_GE(compared, sanitized_share(40, 16));
-  EXPECT_GE(trees, sanitized_share(40, 16));
+  EXPECT_GE(compared, sanitized_share(40, 8));
+  EXPECT_GE(trees, sanitized_share(40, 8));
   EXPECT_GE(tree_windows * 4, trees * 3);  // most decided in a window, not on the whole domain
   // a wall between two close pins: the way round is far longer than the first window allows, so
   // the window widens until it is proven (or whole), with the whole domain's length
@@ -1603,7 +1603,7 @@ TEST(NetRouter, LastPassSupersetGivesTheSameOutcomes) {
 // (L1 and octilinear, Steiner trees, rip limits 1-4; 10 under the sanitizers) of seeds base + 1...
 template <class Compare>
 void on_random_layouts(int base, Compare compare) {
-  for (int seed = 1; seed <= sanitized_share(100, 10); ++seed) {
+  for (int seed = 1; seed <= sanitized_share(100, 5); ++seed) {  // seed 9: octilinear Steiner trees
     const RandomLayout L = random_layout(base + seed);
     router::NetRouterOptions opt;
     opt.octilinear = seed % 5 == 4;

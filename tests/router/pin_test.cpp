@@ -231,7 +231,7 @@ TEST(Pins, ShapePinsMatchBruteForce) {
   EXPECT_EQ(c.unsupported, 0);
 }
 
-// The same for octilinear wires over 2,000 pairs (500 in the sanitizer tree): every wire is checked octilinear, free, from
+// The same for octilinear wires over 2,000 pairs (250 in the sanitizer tree): every wire is checked octilinear, free, from
 // pin to pin, of the least octilinear length over every pair of free integer points of the two
 // shapes. Diamonds and 45-degree triangles included (since 2026-12-03: their candidates add the
 // projections along the other diagonal, both integer neighbours of a half-integer one; without

@@ -5,7 +5,7 @@
 // end of an edge or a projection of an integer point, router/wavefront.h).
 //
 // Instances: support/wavefront_cases.h (every `taut gen` kind and the hand-made degenerate
-// families), each with up to 4 small shapes (400 instances; 100 under the sanitizers) (rectangles, diamonds, 45-degree triangles and
+// families), each with up to 4 small shapes (400 instances; 25 under the sanitizers) (rectangles, diamonds, 45-degree triangles and
 // L-shapes) put at random candidate points where L1Map::shape_problem accepts them (off every
 // blockage and each other), 0-2 point sources and 60 queries. Checks per query: is_free, the
 // distance (exactly; null exactly when nothing reaches the query), the named source at that
@@ -249,7 +249,7 @@ std::string check_seed(std::uint64_t seed, Tally& tally) {
 
 TEST(ShapeSources, MatchTheReferenceOnRandomLayouts) {
   Tally t;
-  // 50 seeds under the sanitizers (100 took 11 s there)
+  // 25 seeds under the sanitizers (100 took 11 s there)
   if (!run_seed_range("TAUT_SHAPE_SOURCE_SEED", 400, [&](std::uint64_t seed) { return check_seed(seed, t); }, 8)) return;
   std::cout << "instances " << t.instances << " (skipped " << t.skipped << "), shapes " << t.shapes << ", queries "
             << t.queries << ": reached " << t.reached << ", from a shape " << t.from_shape << " (straight out of a side "

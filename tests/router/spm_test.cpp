@@ -141,7 +141,7 @@ TEST(L1Map, MatchesTheReferenceOnRandomLayouts) {
     run_seeds({*s}, t);
     return;
   }
-  // Under the sanitizers a quarter of the seeds (support/sanitized.h); the thresholds scale with them.
+  // Under the sanitizers an eighth of the seeds (support/sanitized.h); the thresholds scale with them.
   const auto share = [](std::int64_t n) { return sanitized_share(n, 4); };
   Tally t;
   run_seeds(spm_seed_list(), t);

@@ -625,7 +625,7 @@ TEST(Staircase, RandomSmallLayoutsMatchLatticeReference) {
   const auto t0 = std::chrono::steady_clock::now();
   Counters c;
   const unsigned base = 51000;
-  // Under the sanitizers a quarter of the layouts (support/sanitized.h); the thresholds scale with them.
+  // Under the sanitizers an eighth of the layouts (support/sanitized.h); the thresholds scale with them.
   const auto share = [](std::int64_t n) { return taut::test::sanitized_share(n, 4); };
   for (unsigned it = 0; it < share(300); ++it) {
     const unsigned seed = base + it;

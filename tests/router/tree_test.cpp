@@ -436,7 +436,7 @@ void run_seed(std::uint64_t seed, Tally& t, bool verbose) {
   }
 }
 
-// The regression seeds and `trees` nets (a quarter under the sanitizers), or only seed
+// The regression seeds and `trees` nets (an eighth under the sanitizers), or only seed
 // TAUT_TREE_SEED verbosely; then floors on what the generator exercised (about half of what it
 // does), scaled likewise.
 template <class Router, class Reference>

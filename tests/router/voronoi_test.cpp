@@ -417,7 +417,7 @@ void run_seeds(const std::vector<std::uint64_t>& seeds, Tally& tally) {
   }
 }
 
-// the sanitizer tree: ~10x slower, a tenth of the seeds
+// the sanitizer tree: ~10x slower, a twentieth of the seeds
 constexpr std::uint64_t kSeedsPerHalf = sanitized_share(500, 10);
 
 void run_half(std::uint64_t first) {

@@ -277,7 +277,7 @@ auto least_distances(const Ref& ref, const std::vector<geom::Point>& from, const
   return best;
 }
 
-// The seeds of the random tests: 1..1000 and 100 of the larger instances (a quarter of each
+// The seeds of the random tests: 1..1000 and 100 of the larger instances (an eighth of each
 // under the sanitizers, support/sanitized.h).
 inline std::vector<std::uint64_t> spm_seed_list() {
   std::vector<std::uint64_t> seeds;
@@ -305,9 +305,9 @@ inline void run_spm_seeds(const std::vector<std::uint64_t>& seeds, const std::fu
   }
 }
 
-// Seeds 1..n (n / sanitized_divisor of them under the sanitizers) through check, or only the seed
-// the environment variable `env` names. False when it named one (the caller's totals then mean
-// nothing and its thresholds are skipped).
+// Seeds 1..n (sanitized_share(n, sanitized_divisor) of them under the sanitizers) through
+// check, or only the seed the environment variable `env` names. False when it named one (the
+// caller's totals then mean nothing and its thresholds are skipped).
 inline bool run_seed_range(const char* env, std::int64_t n, const std::function<std::string(std::uint64_t)>& check,
                            std::int64_t sanitized_divisor = 4) {
   if (const char* s = std::getenv(env)) {

@@ -1491,7 +1491,7 @@ void run_random_wavefront_test(WaveMetric metric) {
     std::printf("%s\n", tally.summary().c_str());
     return;
   }
-  // Under the sanitizers a quarter of the seeds (support/sanitized.h); the thresholds scale with them.
+  // Under the sanitizers an eighth of the seeds (support/sanitized.h); the thresholds scale with them.
   const auto share = [](std::int64_t n) { return sanitized_share(n, 4); };
   const WavefrontSweep sw = run_wavefront_sweep(1, share(2000), 3, metric);
   std::printf("%s\n%.2f s\n", sw.tally.summary().c_str(), sw.seconds);
