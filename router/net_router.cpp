@@ -610,9 +610,9 @@ geom::NormalizedObstacles NetSpace::obstacles(std::size_t net, NetSpaceLevel lev
     ix.union_tree.query(bgi::intersects(dom), std::back_inserter(wf));
     if (overlay) {  // its nets' pieces instead, in the same order as if they were in the space
       std::erase_if(wf, [&](const Index::WireEntry& e) { return overlay->find(e.second.first) != nullptr; });
-      for (std::size_t k = 0; k < overlay->nets.size(); ++k)
-        for (std::size_t j = 0; j < overlay->unions[k].size(); ++j)
-          if (const Box b = box_of(overlay->unions[k][j].outer); boxes_meet(b, dom)) wf.push_back({b, {overlay->nets[k], j}});
+      for (const WireOverlay::Entry& e : overlay->entries)
+        for (std::size_t j = 0; j < e.wire_union.size(); ++j)
+          if (const Box b = box_of(e.wire_union[j].outer); boxes_meet(b, dom)) wf.push_back({b, {e.net, j}});
     }
     std::sort(wf.begin(), wf.end(), [](const Index::WireEntry& x, const Index::WireEntry& y) { return x.second < y.second; });
     for (const auto& [box, id] : wf)
@@ -1687,7 +1687,7 @@ NetRouter::RipPlan NetRouter::plan_rip_up(const NetRouteFn& route, std::size_t i
   p.kind = RipPlan::Kind::Made;
   // The blockers ripped up, then the net and they routed in their order, each seeing the wires
   // of those routed before it (an overlay: the space is not changed).
-  WireOverlay ov;
+  WireOverlay& ov = p.overlay;
   for (const std::size_t b : blockers) ov.set(b, {});
   std::vector<std::size_t> again_nets{i};
   for (const std::size_t j : order_)
@@ -1700,8 +1700,7 @@ NetRouter::RipPlan NetRouter::plan_rip_up(const NetRouteFn& route, std::size_t i
     add_counts(p.counts, t.counts);
     p.reads.push_back(t.window);
     p.windows.push_back(t.window);
-    p.again_unions.push_back(t.a.routed ? space_.wire_union(t.a.wires) : std::vector<Polygon>{});
-    ov.set(j, p.again_unions.back());
+    ov.set(j, t.a.routed ? space_.wire_union(t.a.wires) : std::vector<Polygon>{});
     failed += !t.a.routed;
     now += t.a.routed;
     p.again.push_back({j, std::move(t.a)});
@@ -1761,7 +1760,7 @@ bool NetRouter::commit(RipPlan p) {
   }
   for (const std::size_t b : p.blockers) place(b, NetAttempt{});
   count_rips();
-  for (std::size_t k = 0; k < p.again.size(); ++k) place(p.again[k].first, std::move(p.again[k].second), std::move(p.again_unions[k]));
+  for (auto& [j, a] : p.again) place(j, std::move(a), p.overlay.take(j));
   undone_[i].reset();
   return false;
 }

@@ -264,21 +264,29 @@ enum class NetSpaceLevel {
 // per net in `nets`, the union of its grown segments (NetSpace::wire_union; empty: no wires),
 // which NetSpace::obstacles reads instead of the net's wires in the space.
 struct WireOverlay {
-  std::vector<std::size_t> nets;
-  std::vector<std::vector<geom::Polygon>> unions;
+  struct Entry {
+    std::size_t net;
+    std::vector<geom::Polygon> wire_union;
+  };
+  std::vector<Entry> entries;
   const std::vector<geom::Polygon>* find(std::size_t net) const {
-    for (std::size_t k = 0; k < nets.size(); ++k)
-      if (nets[k] == net) return &unions[k];
+    for (const Entry& e : entries)
+      if (e.net == net) return &e.wire_union;
     return nullptr;
   }
   void set(std::size_t net, std::vector<geom::Polygon> u) {
-    for (std::size_t k = 0; k < nets.size(); ++k)
-      if (nets[k] == net) {
-        unions[k] = std::move(u);
+    for (Entry& e : entries)
+      if (e.net == net) {
+        e.wire_union = std::move(u);
         return;
       }
-    nets.push_back(net);
-    unions.push_back(std::move(u));
+    entries.push_back({net, std::move(u)});
+  }
+  // Moves the net's union out (empty when it has none).
+  std::vector<geom::Polygon> take(std::size_t net) {
+    for (Entry& e : entries)
+      if (e.net == net) return std::move(e.wire_union);
+    return {};
   }
 };
 
@@ -740,7 +748,7 @@ class NetRouter {
     std::optional<AroundWay> around;   // a new way round the nets at the limit
     std::set<std::size_t> blockers;
     std::vector<std::pair<std::size_t, NetAttempt>> again;  // the net, then its blockers, as routed
-    std::vector<std::vector<geom::Polygon>> again_unions;   // their wires' unions (NetSpace::wire_union)
+    WireOverlay overlay;               // their wires' unions (NetSpace::wire_union), which commit moves
     std::vector<geom::Box> windows;    // the last windows of those attempts
     bool undone = false;               // Made: fewer of them routed after (with gain: not more)
   };
