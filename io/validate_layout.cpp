@@ -12,7 +12,8 @@
 //                that does not meet the closed box at all); on a boundary edge is fine
 //   LAYOUT-0007  warning: a net has fewer than two pins (it is reported as not routable), unless
 //                its sketch is a loop (closed: a guard ring)
-//   LAYOUT-0008  warning: a sketch does not start on the net's first pin or end on its second
+//   LAYOUT-0008  warning: a sketch does not start on the net's first pin or end on its second (one
+//                warning when it runs from the second to the first)
 //   LAYOUT-0009  warning: a sketch on a net that does not have exactly two pins
 //   (neither for a loop: a sketch whose last point is its first, which belongs to no pin)
 //   LAYOUT-0010  a route names a net that does not exist
@@ -530,11 +531,20 @@ class Validator {
       return;
     }
     if (s.points.empty()) return;
-    if (!point_on_pin(s.points.front(), net.pins[0]))
+    const bool starts = point_on_pin(s.points.front(), net.pins[0]), ends = point_on_pin(s.points.back(), net.pins[1]);
+    if (!starts && !ends && point_on_pin(s.points.front(), net.pins[1]) && point_on_pin(s.points.back(), net.pins[0])) {
+      // drawn the other way round: it still joins the pins, and tighten and route --tighten
+      // follow it (one warning, not one per end)
+      warning("LAYOUT-0008", s.line,
+              ctx + " sketch: runs from the second pin " + q(net.pins[1].name) + " to the first " +
+                  q(net.pins[0].name) + " (reversed); it is followed as drawn");
+      return;
+    }
+    if (!starts)
       warning("LAYOUT-0008", s.line,
               ctx + " sketch: starts at " + pt(s.points.front()) + ", not on the first pin " +
                   q(net.pins[0].name));
-    if (!point_on_pin(s.points.back(), net.pins[1]))
+    if (!ends)
       warning("LAYOUT-0008", s.line,
               ctx + " sketch: ends at " + pt(s.points.back()) + ", not on the second pin " +
                   q(net.pins[1].name));

@@ -1067,6 +1067,10 @@ TEST(Tighten, SketchOffItsPinsIsNotTaken) {
     const auto tr = run_taut({"tighten", dir + "/rev.xml", "--clearance", "-o", dir + "/rev.t.xml"});
     EXPECT_EQ(tr.status, 0) << tr.err;
     EXPECT_EQ(tr.err.find("TIGHTEN-0012"), std::string::npos) << tr.err;
+    // one warning for the reversed sketch, not one for each end
+    const std::size_t w = tr.err.find("[LAYOUT-0008] net \"diag\" sketch: runs from the second pin");
+    EXPECT_NE(w, std::string::npos) << tr.err;
+    EXPECT_EQ(tr.err.find("LAYOUT-0008", tr.err.find('\n', w)), std::string::npos) << tr.err;
     EXPECT_EQ(run_taut({"check", dir + "/rev.t.xml", "-q"}).status, 0);
   }
   // three pins and a sketch, no routed wire: nothing to tighten
