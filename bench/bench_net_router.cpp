@@ -33,14 +33,20 @@
 // passed by the independent checker), so a legal routing of every net is known to exist: the
 // completion target's instance. Their planted length is printed beside the routed length.
 //
-//   bench_net_router [--sizes N,..] [--nets M,..] [--threads T,..] [--rounds R] [--max-rips K] [--search-windows W] [--no-final-round] [--no-superset] [--tighten] [--planted] [--exact-gaps] [--metric l1|combined|link] [--bend-cost C]
+// --round-log: on stderr, when each phase and each rip-up round begins (wall clock from the
+// run's start, at its first net tried) and how many nets are routed then
+// (NetRouterOptions::progress), to see what each round gains for its time.
+//
+//   bench_net_router [--sizes N,..] [--nets M,..] [--threads T,..] [--rounds R] [--max-rips K] [--search-windows W] [--no-final-round] [--no-superset] [--tighten] [--planted] [--exact-gaps] [--round-log] [--metric l1|combined|link] [--bend-cost C]
 //   (--sizes: blockage vertices)
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <random>
 #include <map>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -68,7 +74,7 @@ int main(int argc, char** argv) {
       search_windows = taut::router::NetRouterOptions{}.search_windows;
   bool final_round = true;
   bool superset = true;
-  bool tighten = false, planted = false, exact_gaps = false;
+  bool tighten = false, planted = false, exact_gaps = false, round_log = false;
   std::string metric = "l1";
   std::int64_t bend_cost = 1000;
   for (int i = 1; i < argc; ++i) {
@@ -83,10 +89,11 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--tighten")) tighten = true;
     else if (!std::strcmp(argv[i], "--planted")) planted = true;
     else if (!std::strcmp(argv[i], "--exact-gaps")) exact_gaps = true;
+    else if (!std::strcmp(argv[i], "--round-log")) round_log = true;
     else if (!std::strcmp(argv[i], "--metric") && i + 1 < argc) metric = argv[++i];
     else if (!std::strcmp(argv[i], "--bend-cost") && i + 1 < argc) bend_cost = std::atoll(argv[++i]);
     else {
-      std::fprintf(stderr, "usage: %s [--sizes N,..] [--nets M,..] [--threads T,..] [--rounds R] [--max-rips K] [--search-windows W] [--no-final-round] [--no-superset] [--tighten] [--planted] [--exact-gaps] [--metric l1|combined|link] [--bend-cost C]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--sizes N,..] [--nets M,..] [--threads T,..] [--rounds R] [--max-rips K] [--search-windows W] [--no-final-round] [--no-superset] [--tighten] [--planted] [--exact-gaps] [--round-log] [--metric l1|combined|link] [--bend-cost C]\n", argv[0]);
       return 2;
     }
   }
@@ -111,6 +118,21 @@ int main(int argc, char** argv) {
              : metric == "link" ? taut::router::NetRouterOptions::Cost::Link : taut::router::NetRouterOptions::Cost::Combined;
     o.bend_cost = bend_cost;
     o.exact_gaps = exact_gaps;
+    if (round_log) {
+      auto t0 = std::make_shared<std::chrono::steady_clock::time_point>(std::chrono::steady_clock::now());
+      auto last = std::make_shared<int>(-1);
+      o.progress = [t0, last](const taut::router::NetRouterProgress& p) {
+        const int key = p.phase == taut::router::NetRouterProgress::Phase::RipUp ? p.round : p.phase == taut::router::NetRouterProgress::Phase::FirstPass ? 0 : 1000;
+        if (key != *last) {
+          *last = key;
+          const bool round = p.phase == taut::router::NetRouterProgress::Phase::RipUp;
+          const char* what = round ? "rip-up round" : p.phase == taut::router::NetRouterProgress::Phase::FirstPass ? "first pass" : "explaining";
+          std::fprintf(stderr, "    %8.3f s: %s%s%s, after its first net tried: %zu nets routed\n",
+                       std::chrono::duration<double>(std::chrono::steady_clock::now() - *t0).count(), what,
+                       round ? " " : "", round ? std::to_string(p.round).c_str() : "", p.routed);
+        }
+      };
+    }
     return o;
   };
   const taut::router::NetRules rules{10, 10, bends ? taut::router::kDefaultCoverPieces : 0};
