@@ -396,6 +396,7 @@ void add_route(CLI::App& app, int& status) {
     std::string tree = "spt";
     double time_limit = 0;  // seconds; 0: none
     unsigned threads = 1;   // 0: every hardware thread
+    int max_rips = router::NetRouterOptions{}.max_rips;
   };
   auto args = std::make_shared<Args>();
   CLI::App* sub = app.add_subcommand("route", "Route every net (shortest wires; a shortest-path tree from the first pin, or with --tree steiner a Steiner tree, for nets of three or more pins) and write the routed layout");
@@ -418,11 +419,16 @@ void add_route(CLI::App& app, int& status) {
                   "nets tried at once by the net router (default 1; 0: one per hardware thread); the output is the "
                   "same byte for byte whatever N")
       ->check(CLI::Range(0u, 1024u));
+  CLI::Option* max_rips_opt = sub->add_option("--max-rips", args->max_rips,
+                  "rip-up: each net is ripped up at most N times (default 3; fewer is faster and may leave more "
+                  "nets unrouted, see docs/PERFORMANCE.md; 0: no rip-up, a net blocked by others is only routed round "
+                  "their wires); the final round may rip any net")
+      ->check(CLI::Range(0, 1000));
   sub->add_option("--tree", args->tree,
                   "nets of three or more pins: spt (default: a shortest-path tree from the first pin, every pin at its "
                   "shortest distance) or steiner (short total length; L1 wires, rectilinear or octilinear, point and shape pins)");
   add_input_options(sub, args->file, args->load, "do not print warnings or the summary");
-  sub->callback([args, &status] {
+  sub->callback([args, max_rips_opt, &status] {
     using Clock = std::chrono::steady_clock;
     const auto t0 = Clock::now();
     // --time-limit, SIGINT, SIGTERM: checked between nets (and between a net's windows); the run
@@ -478,6 +484,11 @@ void add_route(CLI::App& app, int& status) {
       print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0017", layout->file, 0, 0,
                                     "--threads applies to the nets routed together; --independent routes the nets one "
                                     "after another on one thread"}},
+                        args->load.quiet);
+    if (max_rips_opt->count() > 0 && args->independent)  // said, not dropped silently
+      print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0017", layout->file, 0, 0,
+                                    "--max-rips applies to the nets routed together; --independent routes each net "
+                                    "alone and rips up nothing"}},
                         args->load.quiet);
     io::Routes routes;
     routes.tool = "taut " + std::string(router::version());
@@ -549,6 +560,7 @@ void add_route(CLI::App& app, int& status) {
             nro.stop = stop;
             nro.progress = progress;
             nro.threads = static_cast<int>(args->threads ? args->threads : std::max(1u, std::thread::hardware_concurrency()));
+            nro.max_rips = args->max_rips;
             nro.exact_gaps = exact;
             nro.blockages_covered = !obs.covered.empty();  // (no claim of shortest cost then)
             net_threads = nro.threads;
@@ -689,6 +701,7 @@ void add_route(CLI::App& app, int& status) {
           // tightening reads the obstacles itself)
           nro.framed = [&](std::size_t i) { return !follows_sketch(layout->nets[i]); };
           nro.threads = static_cast<int>(args->threads ? args->threads : std::max(1u, std::thread::hardware_concurrency()));
+          nro.max_rips = args->max_rips;
           nro.exact_gaps = exact;
           net_threads = nro.threads;
           net_router = std::make_unique<router::NetRouter>(space.domain, space.obstacles, pins, rules, nro);
