@@ -69,11 +69,14 @@ geom::Box routing_domain(const Layout& layout, std::span<const geom::Point> extr
       if (pin.shape) add_polygon(shape_polygon(*pin.shape));
     }
   for (geom::Point p : extra) add(p);
-  if (!any) return geom::Box{{0, 0}, {0, 0}};
+  const std::int64_t m = geom::kDomainMargin;
+  // nothing drawn (no blockage, pin or point): the margin round the origin, so the domain is
+  // never empty (the triangulation of tightening refuses an empty one; taut tighten on such a
+  // file was an internal error, found by fuzzing on 2026-12-06)
+  if (!any) return geom::Box{{-m, -m}, {m, m}};
   auto clamp = [](std::int64_t v) {
     return static_cast<geom::Coord>(std::clamp<std::int64_t>(v, -geom::kMaxCoord, geom::kMaxCoord));
   };
-  const std::int64_t m = geom::kDomainMargin;
   return geom::Box{{clamp(x0 - m), clamp(y0 - m)}, {clamp(x1 + m), clamp(y1 + m)}};
 }
 

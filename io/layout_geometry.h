@@ -29,7 +29,7 @@ std::vector<geom::Polygon> blockage_polygons(const Layout& layout,
 // geom::kDomainMargin on each side and clamped to the coordinate limit. Without a boundary the
 // plane is unbounded, and a shortest L1 path never needs to leave that box: clamping a path
 // into a box that holds every obstacle with a margin and both ends keeps it free and never
-// lengthens it. An empty box at the origin when there is nothing at all.
+// lengthens it. With nothing at all, the margin round the origin (never an empty box).
 geom::Box routing_domain(const Layout& layout, std::span<const geom::Point> extra = {});
 
 // Number of vertices written in blockage shapes (a rect counts 4).

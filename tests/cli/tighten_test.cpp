@@ -1328,5 +1328,37 @@ TEST(Tighten, BadInputExit2AndWritesNothing) {
   EXPECT_EQ(read_text(dir + "/t.xml"), "old");
 }
 
+// A layout with nothing drawn (no blockage, no pin): nothing to tighten, not an internal error
+// (the routing domain was an empty box, which the triangulation refuses: exit 3; found by
+// fuzzing, 2026-12-06).
+TEST(Tighten, NothingDrawnIsNotAnInternalError) {
+  const std::string dir = temp_dir("tighten_nothing");
+  const std::vector<std::pair<std::string, int>> files = {
+      {"<layout/>\n", 0},
+      {"<layout version=\"1\"><rules wire-width=\"2\" spacing=\"1\" orientations=\"any\"/></layout>\n", 0},
+      // a sketch on a net without pins that is not a loop: ignored (LAYOUT-0009), nothing to tighten
+      {"<layout version=\"1\"><net name=\"a\"><sketch points=\"0,0 0,1\"/></net></layout>\n", 1}};
+  for (const auto& [text, want] : files) {
+    write_text(dir + "/in.xml", text);
+    for (const std::vector<std::string>& extra : std::vector<std::vector<std::string>>{
+             {}, {"--clearance"}, {"--min-link"}, {"--clearance", "--orientations", "octilinear"}}) {
+      std::vector<std::string> cmd{"tighten", dir + "/in.xml", "-o", dir + "/out.xml"};
+      cmd.insert(cmd.end(), extra.begin(), extra.end());
+      std::remove((dir + "/out.xml").c_str());
+      const auto r = run_taut(cmd);
+      EXPECT_EQ(r.status, want) << text << r.err;
+      EXPECT_EQ(r.err.find("internal error"), std::string::npos) << text << r.err;
+      EXPECT_TRUE(file_exists(dir + "/out.xml")) << text;
+    }
+    // (route refuses orientations="any" with CLI-0021, exit 2)
+    for (const std::vector<std::string>& other : std::vector<std::vector<std::string>>{
+             {"route", dir + "/in.xml", "-q", "-o", dir + "/r.xml"}, {"check", dir + "/in.xml", "-q"}, {"stats", dir + "/in.xml"}}) {
+      const auto r = run_taut(other);
+      EXPECT_TRUE(r.status >= 0 && r.status <= 2) << other[0] << " " << text << r.err;
+      EXPECT_EQ(r.err.find("internal error"), std::string::npos) << other[0] << " " << text << r.err;
+    }
+  }
+}
+
 }  // namespace tighten_test
 }  // namespace taut::test
