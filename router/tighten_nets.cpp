@@ -347,8 +347,21 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
   std::vector<char> failed(n, 0), retry(n, 0);
 
   // One wire of net i in growing windows: the result and the window it was decided in.
+  // In a set whose cones do not bracket a link's box (c:0,45, c:45,135: not rectilinear, not
+  // octilinear), a staircase leaves the box of its link's ends, by up to |dx| + |dy| (the
+  // parallelogram of its two steps): the window starts that much larger than the line's box, and
+  // grows while the staircase, not only the taut path, reaches one of its inner sides (its walls
+  // would otherwise cost links: a zigzag of one bend per window width; found by fuzzing,
+  // 2026-12-06).
+  const bool wide_set = options_.orientations.set && !options_.orientations.set->is_rectilinear() &&
+                        !options_.orientations.set->is_octilinear();
   auto tighten_one = [&](std::size_t i, const std::vector<Point>& line) {
     std::int64_t margin = margin0;
+    if (wide_set) {
+      const Box bb = geom::bounding_box(line);
+      margin = std::min<std::int64_t>(margin0 + (std::int64_t{bb.hi.x} - bb.lo.x) + (std::int64_t{bb.hi.y} - bb.lo.y),
+                                      4 * std::int64_t{geom::kMaxCoord});
+    }
     while (true) {
       if (options_.stop && options_.stop()) throw NetRouterStopped();
       const Box w = options_.windows ? geom::clipped_box(geom::grown_box(geom::bounding_box(line), margin), dom) : dom;
@@ -358,7 +371,8 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
       const SpaceTightener st(space.obstacles(i, NetSpaceLevel::Full, whole ? std::nullopt : std::optional<Box>(w)),
                               options_.orientations, options_.snap_scale);
       SpaceTightener::Result r = st.run(line);
-      if (whole || r.taut.status != TightenStatus::Ok || r.contractible || !on_inner_side(r.taut.points, w, dom))
+      if (whole || r.taut.status != TightenStatus::Ok || r.contractible ||
+          (!on_inner_side(r.taut.points, w, dom) && !(wide_set && on_inner_side(r.points, w, dom))))
         return std::make_pair(std::move(r), w);
       margin = std::min<std::int64_t>(4 * margin, 4 * std::int64_t{geom::kMaxCoord});
     }

@@ -253,6 +253,20 @@ void add_tighten(CLI::App& app, int& status) {
     // are longer (TIGHTEN-0014, since 2026-12-05).
     // (per input: routed wires with a segment outside the output's directions; `any` has none)
     const std::optional<geom::LatticeDirections> out_set = tighten_orientations(orientations).set;
+    // A staircase in a cone of two steps that do not bracket the link's box, as in c:0,45 (NE and
+    // W round north) or c:45,135 (NE and SE round east), leaves the box of its ends: (0,0) to
+    // (0,1000) in c:0,45 is (0,0) (1000,1000) (0,1000). Without a <boundary> the plane is
+    // unbounded, so the domain must hold those staircases, or the fewest links are lost to its
+    // walls (a zigzag of one bend per 128 DBU there, millions on a long wire; found by fuzzing,
+    // 2026-12-06). Each lies in the parallelogram of its link, within |dx| + |dy| of the link's
+    // box; the box is grown by its width plus its height on each side (clamped).
+    if (!layout->boundary && out_set && !out_set->is_rectilinear() && !out_set->is_octilinear()) {
+      const geom::Box b = io::routing_domain(*layout, extra);
+      const std::int64_t g = (std::int64_t{b.hi.x} - b.lo.x) + (std::int64_t{b.hi.y} - b.lo.y);
+      auto clamp = [](std::int64_t v) { return static_cast<geom::Coord>(std::clamp<std::int64_t>(v, -geom::kMaxCoord, geom::kMaxCoord)); };
+      extra.push_back({clamp(b.lo.x - g), clamp(b.lo.y - g)});
+      extra.push_back({clamp(b.hi.x + g), clamp(b.hi.y + g)});
+    }
     std::vector<char> off_directions(inputs.size(), 0);
     for (std::size_t i = 0; i < inputs.size(); ++i)
       off_directions[i] = out_set && inputs[i].source == "wires" &&

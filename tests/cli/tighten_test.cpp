@@ -1360,5 +1360,45 @@ TEST(Tighten, NothingDrawnIsNotAnInternalError) {
   }
 }
 
+// Sets whose cones do not bracket a link's box (c:0,45: NE and W round north; c:45,135: NE and
+// SE round east): in the unbounded plane (no <boundary>) the staircase with the fewest links
+// leaves the box of the link's ends, (0,0) (1000,1000) (0,1000) in c:0,45. The domain and the
+// tightening windows must hold it: before 2026-12-06 their walls, 64 DBU from the ends, made a
+// zigzag of a bend per 128 DBU (millions on a wire 10^9 long; found by fuzzing).
+TEST(Tighten, WideConesLeaveTheBoxOfTheEnds) {
+  const std::string dir = temp_dir("tighten_wide_cones");
+  struct Case {
+    std::int64_t x1, y1;
+    std::string set;
+    std::vector<Path> want;  // the one staircase with one bend (the other order crosses nothing either)
+  };
+  const std::vector<Case> cases = {
+      {0, 1000, "c:0,45", {{{0, 0}, {1000, 1000}, {0, 1000}}}},
+      {1000, 0, "c:45,135", {}},
+      {0, 1000, "c:0,135", {}},
+      {1000, 0, "c:90,135", {}},
+      {1000000000, 0, "c:45,135", {}},
+      {0, 1000000000, "c:0,45", {}},
+  };
+  for (const Case& c : cases)
+    for (const bool clearance : {false, true}) {
+      const std::string pts = "0,0 " + std::to_string(c.x1) + "," + std::to_string(c.y1);
+      write_text(dir + "/in.xml", "<layout version=\"1\"><net name=\"a\"><pin name=\"p\" x=\"0\" y=\"0\"/><pin name=\"q\" x=\"" +
+                                      std::to_string(c.x1) + "\" y=\"" + std::to_string(c.y1) + "\"/><sketch points=\"" + pts +
+                                      "\"/></net></layout>\n");
+      std::vector<std::string> cmd{"tighten", dir + "/in.xml", "-o", dir + "/out.xml", "--orientations", c.set};
+      if (clearance) cmd.push_back("--clearance");
+      const auto r = run_taut(cmd);
+      ASSERT_EQ(r.status, 0) << c.set << " " << pts << r.err;
+      const std::vector<Path> w = wires_of(dir + "/out.xml", "a");
+      ASSERT_EQ(w.size(), 1u) << c.set << " " << pts;
+      EXPECT_EQ(w[0].size(), 3u) << c.set << " " << pts << " clearance " << clearance << ": " << r.err;  // one bend
+      if (!c.want.empty() && !clearance) {
+        EXPECT_EQ(w, c.want);
+      }
+      EXPECT_EQ(run_taut({"check", dir + "/out.xml", "-q"}).status, 0) << c.set << " " << pts;
+    }
+}
+
 }  // namespace tighten_test
 }  // namespace taut::test
