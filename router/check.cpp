@@ -393,6 +393,18 @@ bool meets_shape(Point a, Point b, const geom::Polygon& shape) {
   return std::any_of(shape.holes.begin(), shape.holes.end(), ring_hit);
 }
 
+// Do two closed polygons meet? An edge of one (outer ring or hole) meets the other, or the
+// other lies wholly inside it.
+bool shapes_meet(const geom::Polygon& a, const geom::Polygon& b) {
+  auto ring_meets = [&](const geom::Ring& r) {
+    for (std::size_t i = 0; i < r.size(); ++i)
+      if (meets_shape(r[i], r[(i + 1) % r.size()], b)) return true;
+    return false;
+  };
+  if (ring_meets(a.outer) || std::any_of(a.holes.begin(), a.holes.end(), ring_meets)) return true;
+  return !b.outer.empty() && geom::locate(b.outer[0], a) != geom::Location::Outside;
+}
+
 geom::Box pin_box(const CheckPin& pin) {
   if (pin.point) return {*pin.point, *pin.point};
   return bounds(pin.shape->outer);
@@ -686,14 +698,18 @@ CheckResult check_routes(const geom::NormalizedObstacles& obstacles, std::span<c
       for (std::size_t p = 0; p < net.pins.size(); ++p)
         if (segment_meets_pin(s.a, s.b, net.pins[p])) uf.join(s.wire, wires + p);
     }
-    // Pins that coincide (or overlap) connect without a wire.
+    // Pins that coincide (or overlap) connect without a wire: a shape pin is metal, so two shapes
+    // of the net that meet (a common point, closed) are joined by their own metal, as the router
+    // takes them in a tree (before 2026-12-06 two shapes connected only through a wire, and a
+    // tree the router joined through their overlap failed here; found by fuzzing).
     for (std::size_t p = 0; p < net.pins.size(); ++p)
       for (std::size_t q = p + 1; q < net.pins.size(); ++q) {
         const CheckPin &a = net.pins[p], &b = net.pins[q];
         const bool meet = a.point && b.point   ? *a.point == *b.point
                           : a.point && b.shape ? geom::locate(*a.point, *b.shape) != geom::Location::Outside
                           : b.point && a.shape ? geom::locate(*b.point, *a.shape) != geom::Location::Outside
-                                               : false;  // two shapes: through a wire
+                          : a.shape && b.shape ? shapes_meet(*a.shape, *b.shape)
+                                               : false;
         if (meet) uf.join(wires + p, wires + q);
       }
     if (net.pins.empty()) continue;

@@ -1183,5 +1183,26 @@ TEST(Route, MaxRipsLimitsTheRipUps) {
     EXPECT_EQ(run_taut({"route", in, "--max-rips", bad, "-o", dir + "/b.xml"}).status, 2) << bad;
 }
 
+// Two shape pins of a net that overlap: the router joins them through their overlap (a tree of
+// one wire, to the third pin) and the written file passes the check, which takes shapes that
+// meet as joined by their own metal (before 2026-12-06 it did not: found by fuzzing).
+TEST(Route, OverlappingShapePinsPassTheCheck) {
+  const std::string dir = temp_dir("route_overlapping_pins");
+  write_text(dir + "/in.xml",
+             "<layout version=\"1\">\n  <net name=\"n\">\n"
+             "    <pin name=\"a\"><rect x0=\"400\" y0=\"100\" x1=\"700\" y1=\"500\"/></pin>\n"
+             "    <pin name=\"b\" x=\"100\" y=\"500\"/>\n"
+             "    <pin name=\"c\"><rect x0=\"300\" y0=\"100\" x1=\"500\" y1=\"200\"/></pin>\n  </net>\n</layout>\n");
+  for (const std::vector<std::string>& extra :
+       std::vector<std::vector<std::string>>{{}, {"--tree", "steiner"}, {"--tighten", "--orientations", "octilinear"}}) {
+    std::vector<std::string> cmd{"route", dir + "/in.xml", "-q", "-o", dir + "/r.xml"};
+    cmd.insert(cmd.end(), extra.begin(), extra.end());
+    const auto r = run_taut(cmd);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto c = run_taut({"check", dir + "/r.xml"});
+    EXPECT_EQ(c.status, 0) << (extra.empty() ? "" : extra[0]) << c.err;
+  }
+}
+
 }  // namespace route_test
 }  // namespace taut::test

@@ -226,8 +226,9 @@ TEST(CheckRoutes, ConnectivityAndShortsMatchALatticeBruteForce) {
       std::vector<std::set<std::pair<int, int>>> pts(N);
       for (std::size_t i = 0; i < W; ++i) pts[i] = wire_points(net.wires[i]);
       for (std::size_t i = 0; i < net.pins.size(); ++i) pts[W + i] = pin_points(net.pins[i]);
-      // Groups by flood fill; two pins meet directly only when a point pin lies on the other
-      // (two shapes need a wire between them, as in the product).
+      // Groups by flood fill; two pins meet directly when they share a lattice point (the shapes
+      // are lattice rectangles, so closed ones that meet share one): a point pin on a shape, or
+      // two shapes that meet, joined by their own metal (since 2026-12-06, as in the product).
       std::vector<int> group(N, -1);
       for (std::size_t s = 0; s < N; ++s) {
         if (group[s] >= 0) continue;
@@ -238,8 +239,6 @@ TEST(CheckRoutes, ConnectivityAndShortsMatchALatticeBruteForce) {
           stack.pop_back();
           for (std::size_t v = 0; v < N; ++v) {
             if (group[v] >= 0) continue;
-            const bool pins = u >= W && v >= W;
-            if (pins && net.pins[u - W].shape && net.pins[v - W].shape) continue;
             if (meet(pts[u], pts[v])) {
               group[v] = static_cast<int>(s);
               stack.push_back(v);
@@ -532,6 +531,45 @@ namespace check_test {
 
 // A pad gives no pin access (found by review): twenty wires that each end twice on the pad hug a
 // blockage 1 above it, where w/2 + s = 5 is needed; every one is reported.
+// Shape pins of one net that meet (a common point of the closed shapes) are joined by their own
+// metal; the router takes them so in a tree (fuzzing found a routed tree that failed here before
+// 2026-12-06, when two shapes connected only through a wire). Each case: pin "a", the other pin,
+// and whether they are connected with no wire (a third pin, a point, is wired to "a").
+TEST(CheckRoutes, ShapePinsThatMeetAreConnected) {
+  const geom::NormalizedObstacles norm = geom::normalize_obstacles(std::vector<geom::Polygon>{}, geom::Box{{-100, -100}, {1000, 1000}});
+  const geom::Polygon a{{{400, 100}, {700, 100}, {700, 500}, {400, 500}}, {}};
+  auto rect = [](geom::Coord x0, geom::Coord y0, geom::Coord x1, geom::Coord y1) {
+    return geom::Polygon{{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, {}};
+  };
+  const geom::Polygon ring{{{0, 0}, {900, 0}, {900, 900}, {0, 900}}, {{{100, 100}, {100, 800}, {800, 800}, {800, 100}}}};
+  struct Case {
+    geom::Polygon a, other;
+    bool connected;
+  };
+  const std::vector<Case> cases = {
+      {a, rect(300, 100, 500, 200), true},     // overlapping (the fuzzer's case)
+      {a, rect(700, 200, 800, 300), true},     // sharing part of an edge
+      {a, rect(700, 500, 800, 600), true},     // touching at a corner
+      {a, rect(450, 150, 500, 200), true},     // inside a
+      {a, rect(701, 100, 800, 200), false},    // one unit apart
+      {ring, rect(300, 300, 400, 400), false}, // in the ring's hole, apart
+      {ring, rect(300, 300, 800, 400), true},  // in the hole, touching its side
+  };
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    std::vector<router::CheckNet> nets(1);
+    nets[0].name = "n";
+    nets[0].routed = true;
+    nets[0].pins = {{"a", std::nullopt, cases[k].a, 1}, {"b", std::nullopt, cases[k].other, 2}, {"p", geom::Point{950, 950}, std::nullopt, 3}};
+    // from a's lower right corner down, right and up to p: it meets none of the other pins
+    const geom::Point c = cases[k].a.outer[1];
+    nets[0].wires.push_back({{c, {c.x, -50}, {950, -50}, {950, 950}}, 4});
+    const auto got = router::check_routes(norm, nets).problems;
+    std::size_t apart = 0;
+    for (const auto& p : got) apart += p.kind == router::CheckProblem::Kind::Disconnected;
+    EXPECT_EQ(apart, cases[k].connected ? 0u : 1u) << "case " << k;
+  }
+}
+
 TEST(CheckRoutes, PadsGiveNoPinAccess) {
   const geom::NormalizedObstacles norm = geom::normalize_obstacles(
       std::vector<geom::Polygon>{{{{-50, 12}, {150, 12}, {150, 60}, {-50, 60}}, {}}}, geom::Box{{-200, -200}, {300, 200}});
