@@ -35,7 +35,9 @@
 //
 // --round-log: on stderr, when each phase and each rip-up round begins (wall clock from the
 // run's start, at its first net tried) and how many nets are routed then
-// (NetRouterOptions::progress), to see what each round gains for its time.
+// (NetRouterOptions::progress), to see what each round gains for its time. The final round
+// shows as the round after the last (its count taken before the best state was put back), the
+// last pass not at all; the clock starts before the router is built.
 //
 //   bench_net_router [--sizes N,..] [--nets M,..] [--threads T,..] [--rounds R] [--max-rips K] [--search-windows W] [--no-final-round] [--no-superset] [--tighten] [--planted] [--exact-gaps] [--round-log] [--metric l1|combined|link] [--bend-cost C]
 //   (--sizes: blockage vertices)

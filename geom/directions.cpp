@@ -89,6 +89,14 @@ bool LatticeDirections::runs_along(std::span<const Point> line) const {
   return true;
 }
 
+bool LatticeDirections::cones_leave_box() const {
+  for (std::size_t i = 0; i < steps_.size(); ++i) {
+    const Point a = steps_[i], b = steps_[(i + 1) % steps_.size()];
+    if (std::int64_t{a.x} * b.x < 0 || std::int64_t{a.y} * b.y < 0) return true;
+  }
+  return false;
+}
+
 int LatticeDirections::cone(i64 dx, i64 dy) const {
   const std::size_t n = steps_.size();
   for (std::size_t i = 0; i < n; ++i) {

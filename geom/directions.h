@@ -60,6 +60,10 @@ class LatticeDirections {
   bool along(std::int64_t dx, std::int64_t dy) const;
   // Every segment of the polyline of non-zero length lies along one of the steps.
   bool runs_along(std::span<const Point> line) const;
+  // Some cone's two steps do not lie in one closed quadrant (c:0,45: NE and W; c:45,135: NE and
+  // SE), so a staircase in it leaves the box of its link's ends, by up to |dx| + |dy| (the
+  // parallelogram of its steps). Not for rectilinear, octilinear, c:0,45,90 and the like.
+  bool cones_leave_box() const;
   // The open cone holding v's direction (v not zero), or -1 when v lies along a step.
   int cone(std::int64_t dx, std::int64_t dy) const;
   // The cone's two steps (counter-clockwise order).

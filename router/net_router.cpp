@@ -2262,7 +2262,9 @@ NetRouter::Explained NetRouter::explain(const NetRouteFn& route, std::size_t net
   for (const std::size_t x : e.blockers) limit = limit || out_[x].rips >= options_.max_rips;
   e.reason = "the wires of other nets block every way (kept " + b + " DBU, w + s, apart): its way alone crosses nets " +
              net_list(e.blockers, name) +
-             (limit ? "; they may not be ripped up again (each net at most " + std::to_string(options_.max_rips) + " times" +
+             (limit ? (options_.max_rips == 0 ? std::string("; they may not be ripped up (no rip-up rounds: --max-rips 0")
+                                              : "; they may not be ripped up again (each net at most " +
+                                                    std::to_string(options_.max_rips) + " times") +
                           (net < final_undone_.size() && final_undone_[net]
                                ? "; ripping them up once more in the final round routed no more nets and was undone)"
                                : ")")

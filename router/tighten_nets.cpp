@@ -347,14 +347,13 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
   std::vector<char> failed(n, 0), retry(n, 0);
 
   // One wire of net i in growing windows: the result and the window it was decided in.
-  // In a set whose cones do not bracket a link's box (c:0,45, c:45,135: not rectilinear, not
-  // octilinear), a staircase leaves the box of its link's ends, by up to |dx| + |dy| (the
+  // In a set whose cones do not bracket a link's box (c:0,45, c:45,135:
+  // LatticeDirections::cones_leave_box), a staircase leaves the box of its link's ends, by up to |dx| + |dy| (the
   // parallelogram of its two steps): the window starts that much larger than the line's box, and
   // grows while the staircase, not only the taut path, reaches one of its inner sides (its walls
   // would otherwise cost links: a zigzag of one bend per window width; found by fuzzing,
   // 2026-12-06).
-  const bool wide_set = options_.orientations.set && !options_.orientations.set->is_rectilinear() &&
-                        !options_.orientations.set->is_octilinear();
+  const bool wide_set = options_.orientations.set && options_.orientations.set->cones_leave_box();
   auto tighten_one = [&](std::size_t i, const std::vector<Point>& line) {
     std::int64_t margin = margin0;
     if (wide_set) {

@@ -259,8 +259,11 @@ void add_tighten(CLI::App& app, int& status) {
     // unbounded, so the domain must hold those staircases, or the fewest links are lost to its
     // walls (a zigzag of one bend per 128 DBU there, millions on a long wire; found by fuzzing,
     // 2026-12-06). Each lies in the parallelogram of its link, within |dx| + |dy| of the link's
-    // box; the box is grown by its width plus its height on each side (clamped).
-    if (!layout->boundary && out_set && !out_set->is_rectilinear() && !out_set->is_octilinear()) {
+    // box; the box is grown by its width plus its height on each side (clamped). (A larger
+    // domain lowers the scale --clearance can tighten in, router::exact_gaps_scale: on a layout
+    // over about 10^7 DBU across, such a set tightens in the layout's units, gaps of exactly the
+    // clearance closed.)
+    if (!layout->boundary && out_set && out_set->cones_leave_box()) {
       const geom::Box b = io::routing_domain(*layout, extra);
       const std::int64_t g = (std::int64_t{b.hi.x} - b.lo.x) + (std::int64_t{b.hi.y} - b.lo.y);
       auto clamp = [](std::int64_t v) { return static_cast<geom::Coord>(std::clamp<std::int64_t>(v, -geom::kMaxCoord, geom::kMaxCoord)); };

@@ -92,6 +92,33 @@ std::map<std::pair<int, int>, Root2> lattice_lengths(const LatticeDirections& d,
   return best;
 }
 
+// cones_leave_box against its meaning: for every set (every mask of two orientations or more),
+// some cone's staircase from 0 to d1 + d2 (inside the cone) turns at d1 or d2, and one of those
+// lies outside the box of 0 and d1 + d2.
+TEST(LatticeDirections, ConesLeaveTheBoxExactlyWhenAStaircaseDoes) {
+  int leave = 0;
+  for (unsigned mask = 1; mask < 16; ++mask) {
+    const auto set = geom::LatticeDirections::from_mask(mask);
+    if (!set) continue;
+    bool want = false;
+    const auto& st = set->steps();
+    for (std::size_t i = 0; i < st.size(); ++i) {
+      const geom::Point d1 = st[i], d2 = st[(i + 1) % st.size()], e{d1.x + d2.x, d1.y + d2.y};
+      const geom::Box box{{std::min(0, e.x), std::min(0, e.y)}, {std::max(0, e.x), std::max(0, e.y)}};
+      for (const geom::Point c : {d1, d2})
+        want = want || c.x < box.lo.x || c.x > box.hi.x || c.y < box.lo.y || c.y > box.hi.y;
+    }
+    EXPECT_EQ(set->cones_leave_box(), want) << set->name();
+    leave += want;
+  }
+  EXPECT_FALSE(geom::LatticeDirections::rectilinear().cones_leave_box());
+  EXPECT_FALSE(geom::LatticeDirections::octilinear().cones_leave_box());
+  EXPECT_TRUE(geom::LatticeDirections::parse("c:0,45")->cones_leave_box());
+  EXPECT_TRUE(geom::LatticeDirections::parse("c:45,135")->cones_leave_box());
+  EXPECT_FALSE(geom::LatticeDirections::parse("c:0,45,90")->cones_leave_box());
+  EXPECT_GT(leave, 0);
+}
+
 TEST(LatticeDirections, LengthIsTheShortestLatticePathInTheSet) {
   const int R = 9;
   int compared = 0, halves = 0;

@@ -529,8 +529,6 @@ TEST(CheckRoutes, ClearanceMatchesAGapBruteForce) {
 namespace taut::test {
 namespace check_test {
 
-// A pad gives no pin access (found by review): twenty wires that each end twice on the pad hug a
-// blockage 1 above it, where w/2 + s = 5 is needed; every one is reported.
 // Shape pins of one net that meet (a common point of the closed shapes) are joined by their own
 // metal; the router takes them so in a tree (fuzzing found a routed tree that failed here before
 // 2026-12-06, when two shapes connected only through a wire). Each case: pin "a", the other pin,
@@ -570,6 +568,8 @@ TEST(CheckRoutes, ShapePinsThatMeetAreConnected) {
   }
 }
 
+// A pad gives no pin access (found by review): twenty wires that each end twice on the pad hug a
+// blockage 1 above it, where w/2 + s = 5 is needed; every one is reported.
 TEST(CheckRoutes, PadsGiveNoPinAccess) {
   const geom::NormalizedObstacles norm = geom::normalize_obstacles(
       std::vector<geom::Polygon>{{{{-50, 12}, {150, 12}, {150, 60}, {-50, 60}}, {}}}, geom::Box{{-200, -200}, {300, 200}});
