@@ -104,12 +104,17 @@ bool point_on_pin(geom::Point p, const Pin& pin) {
   return geom::locate(p, pin.shape->polygon) != geom::Location::Outside;
 }
 
+bool sketch_reversed(const Net& net) {
+  if (!net.sketch || net.sketch->points.empty() || net.pins.size() != 2) return false;
+  const auto& pts = net.sketch->points;
+  return point_on_pin(pts.front(), net.pins[1]) && point_on_pin(pts.back(), net.pins[0]);
+}
+
 std::string sketch_off_pins(const Net& net) {
   if (!net.sketch || net.sketch->points.empty() || net.pins.size() != 2) return {};
   const auto& pts = net.sketch->points;
   auto text = [](geom::Point p) { return "(" + std::to_string(p.x) + "," + std::to_string(p.y) + ")"; };
-  // drawn from the second pin to the first, it joins them too
-  if (point_on_pin(pts.front(), net.pins[1]) && point_on_pin(pts.back(), net.pins[0])) return {};
+  if (sketch_reversed(net)) return {};  // drawn from the second pin to the first, it joins them too
   if (!point_on_pin(pts.front(), net.pins[0]))
     return "starts at " + text(pts.front()) + ", not on the first pin \"" + net.pins[0].name + "\"";
   if (!point_on_pin(pts.back(), net.pins[1]))

@@ -43,5 +43,8 @@ bool point_on_pin(geom::Point p, const Pin& pin);
 // (LAYOUT-0008 warns of any other order; the tightening commands cannot take a sketch that misses
 // a pin as the net's wire).
 std::string sketch_off_pins(const Net& net);
+// A two-pin net's open <sketch> that starts on its second pin and ends on its first: it joins
+// them the other way round (sketch_off_pins takes it; LAYOUT-0008 warns of the order).
+bool sketch_reversed(const Net& net);
 
 }  // namespace taut::io

@@ -533,9 +533,9 @@ class Validator {
     if (s.points.empty()) return;
     const bool starts = point_on_pin(s.points.front(), net.pins[0]), ends = point_on_pin(s.points.back(), net.pins[1]);
     if (starts && ends) return;
-    if (point_on_pin(s.points.front(), net.pins[1]) && point_on_pin(s.points.back(), net.pins[0])) {
-      // drawn the other way round (as io::sketch_off_pins takes it): it still joins the pins, and
-      // tighten and route --tighten follow it; one warning, not one per end
+    if (sketch_reversed(net)) {
+      // drawn the other way round: it still joins the pins, and tighten and route --tighten
+      // follow it; one warning, not one per end
       warning("LAYOUT-0008", s.line,
               ctx + " sketch: runs from the second pin " + q(net.pins[1].name) + " to the first " +
                   q(net.pins[0].name) + " (reversed)");

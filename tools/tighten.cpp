@@ -265,10 +265,9 @@ void add_tighten(CLI::App& app, int& status) {
     // clearance closed.)
     if (!layout->boundary && out_set && out_set->cones_leave_box()) {
       const geom::Box b = io::routing_domain(*layout, extra);
-      const std::int64_t g = (std::int64_t{b.hi.x} - b.lo.x) + (std::int64_t{b.hi.y} - b.lo.y);
-      auto clamp = [](std::int64_t v) { return static_cast<geom::Coord>(std::clamp<std::int64_t>(v, -geom::kMaxCoord, geom::kMaxCoord)); };
-      extra.push_back({clamp(b.lo.x - g), clamp(b.lo.y - g)});
-      extra.push_back({clamp(b.hi.x + g), clamp(b.hi.y + g)});
+      const geom::Box grown = geom::grown_box(b, (std::int64_t{b.hi.x} - b.lo.x) + (std::int64_t{b.hi.y} - b.lo.y));
+      extra.push_back(grown.lo);
+      extra.push_back(grown.hi);
     }
     std::vector<char> off_directions(inputs.size(), 0);
     for (std::size_t i = 0; i < inputs.size(); ++i)
