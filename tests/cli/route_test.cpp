@@ -1204,5 +1204,66 @@ TEST(Route, OverlappingShapePinsPassTheCheck) {
   }
 }
 
+// Two pads of a net that touch, with a blockage within the clearance of the points they share:
+// the routers' answer was a wire of one point at the pads' shared corner, which the checker found
+// too near the blockage (CHECK-0007) while route exited 0 (found by fuzzing, 2026-12-06). Pins
+// that meet are joined by their own metal, so the net is routed with no wire, under every metric;
+// a third pin apart still gets its wire.
+TEST(Route, TouchingPadsNearABlockageNeedNoWire) {
+  const std::string dir = temp_dir("route_touching_pads");
+  const std::string head =
+      "<layout version=\"1\">\n  <rules wire-width=\"4\" spacing=\"1\"/>\n"
+      "  <blockage id=\"b\"><rect x0=\"22\" y0=\"22\" x1=\"23\" y1=\"23\"/></blockage>\n  <net name=\"n\">\n"
+      "    <pin name=\"a\"><rect x0=\"0\" y0=\"0\" x1=\"45\" y1=\"21\"/></pin>\n"
+      "    <pin name=\"c\"><rect x0=\"24\" y0=\"21\" x1=\"45\" y1=\"24\"/></pin>\n";
+  write_text(dir + "/two.xml", head + "  </net>\n</layout>\n");
+  write_text(dir + "/three.xml", head + "    <pin name=\"d\" x=\"100\" y=\"60\"/>\n  </net>\n</layout>\n");
+  for (const std::vector<std::string>& extra :
+       std::vector<std::vector<std::string>>{{},
+                                             {"--tree", "steiner"},
+                                             {"--orientations", "octilinear"},
+                                             {"--metric", "combined", "--bend-cost", "10"},
+                                             {"--metric", "link"},
+                                             {"--tighten"}}) {
+    std::string what = "l1";
+    for (const std::string& e : extra) what += " " + e;
+    for (const std::string name : {"two", "three"}) {
+      std::vector<std::string> cmd{"route", dir + "/" + name + ".xml", "-q", "-o", dir + "/r.xml"};
+      cmd.insert(cmd.end(), extra.begin(), extra.end());
+      const auto r = run_taut(cmd);
+      ASSERT_EQ(r.status, 0) << what << " " << name << r.err;
+      const auto c = run_taut({"check", dir + "/r.xml"});
+      EXPECT_EQ(c.status, 0) << what << " " << name << c.err;
+      const io::ReadResult rr = io::read_layout(dir + "/r.xml");
+      ASSERT_TRUE(rr.layout && rr.layout->routes) << what;
+      ASSERT_EQ(rr.layout->routes->routes.size(), 1u);
+      const auto& route = rr.layout->routes->routes[0];
+      EXPECT_EQ(route.status, "routed") << what << " " << name;
+      if (name == "two") {
+        EXPECT_TRUE(route.wires.empty()) << what;
+      } else {
+        ASSERT_FALSE(route.wires.empty()) << what;
+        for (const auto& w : route.wires) EXPECT_GE(w.points.size(), 2u) << what;
+      }
+    }
+  }
+  // taut tighten keeps such a net routed, with no wire (it said TIGHTEN-0002, nothing to tighten,
+  // and wrote it failed)
+  ASSERT_EQ(run_taut({"route", dir + "/two.xml", "-q", "-o", dir + "/r.xml"}).status, 0);
+  for (const std::vector<std::string>& extra : std::vector<std::vector<std::string>>{{}, {"--clearance"}}) {
+    std::vector<std::string> cmd{"tighten", dir + "/r.xml", "-o", dir + "/t.xml"};
+    cmd.insert(cmd.end(), extra.begin(), extra.end());
+    const auto t = run_taut(cmd);
+    EXPECT_EQ(t.status, 0) << t.err;
+    EXPECT_EQ(t.err.find("TIGHTEN-0002"), std::string::npos) << t.err;
+    const io::ReadResult rt = io::read_layout(dir + "/t.xml");
+    ASSERT_TRUE(rt.layout && rt.layout->routes);
+    ASSERT_EQ(rt.layout->routes->routes.size(), 1u);
+    EXPECT_EQ(rt.layout->routes->routes[0].status, "routed");
+    EXPECT_TRUE(rt.layout->routes->routes[0].wires.empty());
+    EXPECT_EQ(run_taut({"check", dir + "/t.xml", "-q"}).status, 0);
+  }
+}
+
 }  // namespace route_test
 }  // namespace taut::test
