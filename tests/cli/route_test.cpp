@@ -1177,6 +1177,28 @@ TEST(Route, MaxRipsLimitsTheRipUps) {
     EXPECT_EQ(run_taut({"check", out, "-q"}).status, 0) << k;
   }
   EXPECT_LT(stats["1"]["net_router"]["rip_ups"].get<int>(), stats["3"]["net_router"]["rip_ups"].get<int>());
+  // the bend-aware metrics pass the option by the same line: their rounds are limited too (with
+  // combined the 120 nets above all route; 160 of another seed do not)
+  const std::string denser = dir + "/g3.xml";
+  ASSERT_EQ(run_taut({"gen", "rects", "--size", "1000", "--nets", "160", "--pins", "2-4", "--width", "10", "--spacing", "10",
+                      "--seed", "3", "-o", denser})
+                .status,
+            0);
+  for (const std::vector<std::string>& metric :
+       std::vector<std::vector<std::string>>{{"--metric", "combined", "--bend-cost", "20"}, {"--metric", "link"}}) {
+    std::map<std::string, int> rips;
+    for (const std::string k : {"3", "1"}) {
+      const std::string out = dir + "/m" + k + ".xml", js = dir + "/m" + k + ".json";
+      std::vector<std::string> cmd{"route", metric[1] == "link" ? in : denser, "-q", "-o", out, "--stats", js, "--max-rips", k};
+      cmd.insert(cmd.end(), metric.begin(), metric.end());
+      const auto r = run_taut(cmd);
+      EXPECT_EQ(r.status, 1) << metric[1] << r.err;
+      rips[k] = nlohmann::json::parse(read_text(js))["net_router"]["rip_ups"].get<int>();
+      EXPECT_NE(read_text(out).find("(each net at most " + k + " times"), std::string::npos) << metric[1];
+      EXPECT_EQ(run_taut({"check", out, "-q"}).status, 0) << metric[1] << " " << k;
+    }
+    EXPECT_LT(rips["1"], rips["3"]) << metric[1];
+  }
   const auto ind = run_taut({"route", in, "--independent", "--max-rips", "2", "-o", dir + "/i.xml"});
   EXPECT_NE(ind.err.find("[ROUTE-0017] --max-rips applies to the nets routed together"), std::string::npos) << ind.err;
   for (const std::string bad : {"-1", "x", "1001"})
