@@ -246,21 +246,6 @@ bool box_strictly_inside(const Box& in, const Box& out) {
 }
 using geom::boxes_meet;
 
-// The wires without those of zero length that lie on a pin of the net (closed). Such a wire joins
-// nothing the pins do not join by themselves: every pin it touches holds its point, so those pins
-// meet there and are joined by their own metal (FORMAT.md; router/check joins pins that meet), and
-// every other wire through the point meets that pin. So a net whose pins meet gets no wire. (A
-// router's answer for pins that share a point is a wire of one point there; in a pad cut out of a
-// grown blockage it could lie nearer the blockage than the clearance, which the checker then
-// refused while route exited 0: found by fuzzing, 2026-12-06.)
-void drop_point_wires(Lines& wires, std::span<const Polygon> pins) {
-  std::erase_if(wires, [&](const std::vector<Point>& w) {
-    if (w.empty()) return true;
-    if (!std::all_of(w.begin(), w.end(), [&](Point p) { return p == w[0]; })) return false;
-    return std::any_of(pins.begin(), pins.end(), [&](const Polygon& pin) { return in_pin(w[0], pin); });
-  });
-}
-
 // The wires without their parts of positive length in the closed pads `pads` (the net's own pads,
 // counter-clockwise convex rings with edges at 0, 45 or 90 degrees: metal of the net, so a wire's
 // stretch over or along one is redundant, and where the pad lies on a blockage's edge that stretch
@@ -1305,7 +1290,7 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
       t.a.window = t.window;
     }
   }
-  if (t.a.routed) drop_point_wires(t.a.wires, space_.net(net).pins);
+  if (t.a.routed) drop_point_wires(t.a.wires, space_.net(net).pins);  // (pins that meet: no wire)
   return t;
 }
 

@@ -1229,8 +1229,8 @@ TEST(Route, OverlappingShapePinsPassTheCheck) {
 // Two pads of a net that touch, with a blockage within the clearance of the points they share:
 // the routers' answer was a wire of one point at the pads' shared corner, which the checker found
 // too near the blockage (CHECK-0007) while route exited 0 (found by fuzzing, 2026-12-06). Pins
-// that meet are joined by their own metal, so the net is routed with no wire, under every metric;
-// a third pin apart still gets its wire.
+// that meet are joined by their own metal, so the net is routed with no wire, under every metric
+// and with --independent too; a third pin apart still gets its wire.
 TEST(Route, TouchingPadsNearABlockageNeedNoWire) {
   const std::string dir = temp_dir("route_touching_pads");
   const std::string head =
@@ -1246,7 +1246,10 @@ TEST(Route, TouchingPadsNearABlockageNeedNoWire) {
                                              {"--orientations", "octilinear"},
                                              {"--metric", "combined", "--bend-cost", "10"},
                                              {"--metric", "link"},
-                                             {"--tighten"}}) {
+                                             {"--tighten"},
+                                             {"--independent"},
+                                             {"--independent", "--metric", "link"},
+                                             {"--independent", "--tighten"}}) {
     std::string what = "l1";
     for (const std::string& e : extra) what += " " + e;
     for (const std::string name : {"two", "three"}) {
