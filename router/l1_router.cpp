@@ -373,7 +373,18 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t, std
         break;
       }
       // sources: the first part's metal; targets: the other part's nodes and the projections
-      // onto its segments of the obstacle vertices, domain corners and the first part's nodes
+      // onto its segments of the obstacle vertices, domain corners and the first part's nodes.
+      // The other part is the one holding p's other end: metal in neither part (a pin on a pad
+      // that meets the tree's pads only through another pad: pads that meet are joined by their
+      // own metal, not by the graph) is not reached through p, and a way to it would drop p's
+      // join (found by fuzzing, 2026-12-06: a pin apart left unconnected).
+      std::vector<char> other;
+      {
+        std::vector<char> first_side = side;
+        part_of(first_side[p.nodes.front()] ? p.nodes.back() : p.nodes.front());
+        other = std::move(side);
+        side = std::move(first_side);
+      }
       std::vector<char> inner(g.nodes.size(), 0);
       for (std::size_t k = 1; k + 1 < p.nodes.size(); ++k) inner[p.nodes[k]] = 1;
       std::vector<Point> points, targets;
@@ -384,7 +395,7 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t, std
           axs.push_back(g.nodes[n].x);
           ays.push_back(g.nodes[n].y);
           if (g.key[n]) points.push_back(g.nodes[n]);
-        } else if (!inner[n]) {
+        } else if (!inner[n] && other[n]) {
           targets.push_back(g.nodes[n]);
         }
       }
@@ -414,6 +425,7 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t, std
           segments.push_back({a, b});
           continue;
         }
+        if (!other[g.edges[e].first]) continue;
         if constexpr (kOctilinear) {
           obstacle_lines_->inside(a, b, targets);
           first_lines->inside(a, b, targets);
@@ -436,7 +448,7 @@ std::size_t BasicRouter<W>::improve(std::span<const Point> pins, Steiner& t, std
           if (members[k].empty()) continue;
           if (side[members[k][0]]) {
             for_each_pin_edge(pads[k], [&](Point a, Point b) { segments.push_back({a, b}); });
-          } else {
+          } else if (other[members[k][0]]) {
             const std::vector<Point> c = pin_candidates(pads[k], first);
             targets.insert(targets.end(), c.begin(), c.end());
           }

@@ -761,6 +761,31 @@ std::vector<std::size_t> nets_met(const Index& ix, std::size_t net, std::span<co
 }
 }  // namespace
 
+bool NetSpace::keeps_clearance(std::size_t net, Point p, const WireOverlay* overlay) const {
+  const Index& ix = *index_;
+  const Box at{p, p};
+  auto inside = [&](const Polygon& poly) { return geom::locate(p, poly) == geom::Location::Inside; };
+  std::vector<Index::Entry> found;
+  ix.grown.tree.query(bgi::intersects(at), std::back_inserter(found));
+  for (const auto& [box, c] : found)
+    if (inside(ix.grown.polys[c])) return false;
+  found.clear();
+  ix.tree.query(bgi::intersects(at), std::back_inserter(found));
+  for (const auto& [box, id] : found)
+    if (ix.pieces[id].owner != net && inside(ix.pieces[id].poly)) return false;
+  std::vector<Index::WireEntry> wf;
+  ix.wire_tree.query(bgi::intersects(at), std::back_inserter(wf));
+  for (const auto& [box, id] : wf)
+    if (id.first != net && !(overlay && overlay->find(id.first)) && inside(Polygon{ix.wire_pieces[id.first][id.second], {}}))
+      return false;
+  if (overlay)
+    for (const WireOverlay::Entry& e : overlay->entries)
+      if (e.net != net)
+        for (const Polygon& u : e.wire_union)
+          if (boxes_meet(box_of(u.outer), at) && inside(u)) return false;
+  return true;
+}
+
 std::vector<std::size_t> NetSpace::wire_blockers(std::size_t net, std::span<const Point> line) const {
   return nets_met(*index_, net, line, segment_enters);
 }
@@ -1290,8 +1315,35 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
       t.a.window = t.window;
     }
   }
-  if (t.a.routed) drop_point_wires(t.a.wires, space_.net(net).pins);  // (pins that meet: no wire)
+  if (t.a.routed) move_point_wires(t.a.wires, net, overlay);
   return t;
+}
+
+// A wire of one point (every point the same) is the routers' answer for pins that share a point.
+// In a pad cut out of the grown blockages (a pad is free space for its net) that point may lie
+// within the clearance of a blockage, and taut check refused it (CHECK-0007) while route exited
+// 0 (found by fuzzing, 2026-12-06: two touching pads next to a blockage, the wire at their shared
+// corner). Such a wire moves to a point the same two pins share that keeps the clearance, the
+// first found by router::shared_point over their vertices (and where their edges cross), on
+// the scaled plane's lattice; with none it stays. Moved, it still joins what it joined: the pins
+// holding the old point all meet there (the checker joins pins that meet by their own metal), and
+// a wire through the old point meets those pins.
+void NetRouter::move_point_wires(Lines& wires, std::size_t net, const WireOverlay* overlay) const {
+  const std::vector<Polygon>& pins = space_.net(net).pins;
+  std::shared_lock lock(space_mutex_);
+  auto usable = [&](Point q) {
+    return (scale_ == 1 || (q.x % scale_ == 0 && q.y % scale_ == 0)) && space_.keeps_clearance(net, q, overlay);
+  };
+  for (auto& w : wires) {
+    if (w.empty() || !std::all_of(w.begin(), w.end(), [&](Point q) { return q == w[0]; })) continue;
+    const Point p = w[0];
+    if (space_.keeps_clearance(net, p, overlay)) continue;
+    std::optional<Point> q;
+    for (std::size_t i = 0; i < pins.size() && !q; ++i)
+      for (std::size_t j = i + 1; j < pins.size() && !q; ++j)
+        if (in_pin(p, pins[i]) && in_pin(p, pins[j])) q = shared_point(pins[i].outer, pins[i], pins[j].outer, pins[j], usable);
+    if (q) w.assign(w.size(), *q);
+  }
 }
 
 NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size_t net, NetSpaceLevel level,

@@ -105,14 +105,6 @@ bool in_pin(Point p, const geom::Polygon& pin) {
   return is_point_pin(pin) ? p == pin.outer[0] : geom::locate(p, pin) != geom::Location::Outside;
 }
 
-void drop_point_wires(std::vector<std::vector<Point>>& wires, std::span<const geom::Polygon> pins) {
-  std::erase_if(wires, [&](const std::vector<Point>& w) {
-    if (w.empty()) return true;
-    if (!std::all_of(w.begin(), w.end(), [&](Point p) { return p == w[0]; })) return false;
-    return std::any_of(pins.begin(), pins.end(), [&](const geom::Polygon& pin) { return in_pin(w[0], pin); });
-  });
-}
-
 std::optional<Point> shared_point(std::span<const Point> a_cands, const geom::Polygon& a,
                                   std::span<const Point> b_cands, const geom::Polygon& b,
                                   const std::function<bool(Point)>& usable) {

@@ -33,15 +33,6 @@ bool is_point_pin(const geom::Polygon& pin);
 // The closed pin holds p.
 bool in_pin(geom::Point p, const geom::Polygon& pin);
 
-// The wires without those of zero length (every point the same, or none) that lie on one of the
-// net's pins (closed). Such a wire joins nothing the pins do not join by themselves: every pin it
-// touches holds its point, so those pins meet there and are joined by their own metal (FORMAT.md;
-// router/check joins pins that meet), and every other wire through the point meets that pin. So
-// a net whose pins meet gets no wire. (A router's answer for pins that share a point is a wire of
-// one point there; in a pad cut out of a grown blockage it could lie nearer the blockage than the
-// clearance, which the checker refused while route exited 0: found by fuzzing, 2026-12-06.)
-void drop_point_wires(std::vector<std::vector<geom::Point>>& wires, std::span<const geom::Polygon> pins);
-
 // A pin the routers take: a point, or rings of at least 3 vertices whose every edge (closing ones
 // included) has non-zero length and is horizontal, vertical or at 45 degrees.
 bool pin_shape_supported(const geom::Polygon& pin);

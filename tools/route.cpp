@@ -130,20 +130,18 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router
     if constexpr (oct) return length_text(len); else return std::to_string(len);
   };
   auto finish = [&](std::vector<io::Wire> wires) {
+    for (io::Wire& wire : wires)
+      if (wire.points.size() == 1) wire.points.push_back(wire.points[0]);  // pins at one point
     std::vector<std::vector<geom::Point>> lines;
-    for (const io::Wire& wire : wires) lines.push_back(wire.points);
-    router::drop_point_wires(lines, geometry);  // pins that meet: no wire (as the net router)
-    for (auto& line : lines)
-      if (line.size() == 1) line.push_back(line[0]);  // (a wire is written with two points at least)
     long bends = 0;
-    r.route.wires.clear();
-    for (const auto& line : lines) {
-      bends += geom::count_bends(line);
-      r.route.wires.push_back(io::Wire{line});
+    for (const io::Wire& wire : wires) {
+      lines.push_back(wire.points);
+      bends += geom::count_bends(wire.points);
     }
     r.route.status = "routed";
     r.route.length = io::format_total_length(lines);
     r.route.bends = bends;
+    r.route.wires = std::move(wires);
     return r;
   };
   {
@@ -324,14 +322,13 @@ NetResult route_net_bends(const io::Layout& layout, const io::Net& net, const Be
   }
   NetResult r;
   r.route.net = net.name;
-  std::vector<std::vector<geom::Point>> lines = t.wires;
-  router::drop_point_wires(lines, geometry);  // pins that meet: no wire (as the net router)
-  for (auto& line : lines)
-    if (line.size() == 1) line.push_back(line[0]);  // (a wire is written with two points at least)
+  std::vector<std::vector<geom::Point>> lines;
   long bends = 0;
-  for (const std::vector<geom::Point>& w : lines) {
+  for (std::vector<geom::Point> w : t.wires) {
+    if (w.size() == 1) w.push_back(w[0]);  // pins at one point
     bends += geom::count_bends(w);
     r.route.wires.push_back(io::Wire{w});
+    lines.push_back(std::move(w));
   }
   for (const std::vector<geom::Point>& p : t.paths) {
     std::int64_t length = 0;
@@ -423,8 +420,8 @@ void add_route(CLI::App& app, int& status) {
                   "same byte for byte whatever N")
       ->check(CLI::Range(0u, 1024u));
   CLI::Option* max_rips_opt = sub->add_option("--max-rips", args->max_rips,
-                  "rip-up: each net is ripped up at most N times (default 3; fewer is faster and may leave more "
-                  "nets unrouted, see docs/PERFORMANCE.md; 0: no rip-up, a net blocked by others is only routed round "
+                  "rip-up: each net is ripped up at most N times (default 3; fewer makes fewer attempts and may "
+                  "leave more nets unrouted, see docs/PERFORMANCE.md; 0: no rip-up, a net blocked by others is only routed round "
                   "their wires); the final round may rip any net")
       ->check(CLI::Range(0, 1000));
   sub->add_option("--tree", args->tree,

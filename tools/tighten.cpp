@@ -214,7 +214,6 @@ void add_tighten(CLI::App& app, int& status) {
       std::string source;
       std::string off_pins;  // a two-pin net's open sketch that does not join its pins: why (TIGHTEN-0012)
       bool ignored_sketch = false;  // a sketch on a net without two pins, not a loop (LAYOUT-0009: ignored)
-      bool routed_without_wire = false;  // routed with no <wire>: its pins meet (taut route writes them so)
     };
     std::vector<Input> inputs(layout->nets.size());
     const std::vector<router::NetPins> all_pins = net_pins(*layout);
@@ -235,10 +234,7 @@ void add_tighten(CLI::App& app, int& status) {
         in.line_numbers.push_back(net.sketch->line);
       } else if (layout->routes) {
         for (const io::Route& r : layout->routes->routes)
-          if (r.net == net.name && r.status == "routed" && r.wires.empty()) {
-            in.source = "wires";
-            in.routed_without_wire = true;
-          } else if (r.net == net.name && r.status == "routed") {
+          if (r.net == net.name && r.status == "routed" && !r.wires.empty()) {
             in.source = "wires";
             for (const io::Wire& w : r.wires) {
               in.lines.push_back(w.points);
@@ -247,7 +243,7 @@ void add_tighten(CLI::App& app, int& status) {
             break;
           }
       }
-      if (!in.off_pins.empty() && in.lines.empty() && !in.routed_without_wire) in.source = "sketch";  // failed (TIGHTEN-0012)
+      if (!in.off_pins.empty() && in.lines.empty()) in.source = "sketch";  // failed (TIGHTEN-0012)
       for (const auto& l : in.lines) extra.insert(extra.end(), l.begin(), l.end());
     }
 
@@ -484,17 +480,6 @@ void add_tighten(CLI::App& app, int& status) {
           routes.routes.push_back(std::move(route));
           continue;
         }
-      }
-      if (in.lines.empty() && in.routed_without_wire) {
-        // routed with no wire (pins that meet are joined by their own metal, and taut route writes
-        // no wire for them; since 2026-12-06): nothing to pull, written as it was
-        route.status = "routed";
-        route.length = io::format_total_length(in.lines);
-        route.bends = 0;
-        stats[i].source = in.source;
-        routes.routes.push_back(std::move(route));
-        ++done;
-        continue;
       }
       if (in.lines.empty()) {
         route.status = "failed";
