@@ -761,28 +761,38 @@ std::vector<std::size_t> nets_met(const Index& ix, std::size_t net, std::span<co
 }
 }  // namespace
 
-bool NetSpace::keeps_clearance(std::size_t net, Point p, const WireOverlay* overlay) const {
+bool NetSpace::keeps_clearance(std::size_t net, Point p, std::span<const char> only, const WireOverlay* overlay) const {
   const Index& ix = *index_;
+  const Box& d = domain_;
+  if (p.x < d.lo.x || p.x > d.hi.x || p.y < d.lo.y || p.y > d.hi.y) return false;
+  const bool on_side = p.x == d.lo.x || p.x == d.hi.x || p.y == d.lo.y || p.y == d.hi.y;
   const Box at{p, p};
   auto inside = [&](const Polygon& poly) { return geom::locate(p, poly) == geom::Location::Inside; };
   std::vector<Index::Entry> found;
   ix.grown.tree.query(bgi::intersects(at), std::back_inserter(found));
-  for (const auto& [box, c] : found)
+  for (const auto& [box, c] : found) {
     if (inside(ix.grown.polys[c])) return false;
+    for (const std::size_t id : ix.grown.sources[c])  // (the union is cut at the domain's sides)
+      if (inside(ix.pieces[id].poly)) return false;
+  }
   found.clear();
   ix.tree.query(bgi::intersects(at), std::back_inserter(found));
   for (const auto& [box, id] : found)
     if (ix.pieces[id].owner != net && inside(ix.pieces[id].poly)) return false;
   std::vector<Index::WireEntry> wf;
   ix.wire_tree.query(bgi::intersects(at), std::back_inserter(wf));
+  auto seen = [&](std::size_t n) { return n != net && (only.empty() || only[n]); };
   for (const auto& [box, id] : wf)
-    if (id.first != net && !(overlay && overlay->find(id.first)) && inside(Polygon{ix.wire_pieces[id.first][id.second], {}}))
+    if (seen(id.first) && !(overlay && overlay->find(id.first)) && inside(Polygon{ix.wire_pieces[id.first][id.second], {}}))
       return false;
-  if (overlay)
+  if (overlay)  // (its unions are cut at the domain's sides too: there a boundary point counts as inside)
     for (const WireOverlay::Entry& e : overlay->entries)
-      if (e.net != net)
+      if (seen(e.net))
         for (const Polygon& u : e.wire_union)
-          if (boxes_meet(box_of(u.outer), at) && inside(u)) return false;
+          if (boxes_meet(box_of(u.outer), at)) {
+            const geom::Location l = geom::locate(p, u);
+            if (l == geom::Location::Inside || (on_side && l == geom::Location::Boundary)) return false;
+          }
   return true;
 }
 
@@ -1315,7 +1325,7 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
       t.a.window = t.window;
     }
   }
-  if (t.a.routed) move_point_wires(t.a.wires, net, overlay);
+  if (t.a.routed) move_point_wires(t.a.wires, net, level, only, overlay);
   return t;
 }
 
@@ -1327,17 +1337,21 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
 // first found by router::shared_point over their vertices (and where their edges cross), on
 // the scaled plane's lattice; with none it stays. Moved, it still joins what it joined: the pins
 // holding the old point all meet there (the checker joins pins that meet by their own metal), and
-// a wire through the old point meets those pins.
-void NetRouter::move_point_wires(Lines& wires, std::size_t net, const WireOverlay* overlay) const {
+// a wire through the old point meets those pins. Only at the Full level, as the attempt sees the
+// space (`only`, the overlay): the lower levels' attempts read no wires and are kept for the run
+// (NetRouter::alone_), so reading them here would make the outcome depend on when they were made.
+void NetRouter::move_point_wires(Lines& wires, std::size_t net, NetSpaceLevel level, std::span<const char> only,
+                                 const WireOverlay* overlay) const {
+  if (level != NetSpaceLevel::Full) return;
   const std::vector<Polygon>& pins = space_.net(net).pins;
   std::shared_lock lock(space_mutex_);
   auto usable = [&](Point q) {
-    return (scale_ == 1 || (q.x % scale_ == 0 && q.y % scale_ == 0)) && space_.keeps_clearance(net, q, overlay);
+    return (scale_ == 1 || (q.x % scale_ == 0 && q.y % scale_ == 0)) && space_.keeps_clearance(net, q, only, overlay);
   };
   for (auto& w : wires) {
     if (w.empty() || !std::all_of(w.begin(), w.end(), [&](Point q) { return q == w[0]; })) continue;
     const Point p = w[0];
-    if (space_.keeps_clearance(net, p, overlay)) continue;
+    if (space_.keeps_clearance(net, p, only, overlay)) continue;
     std::optional<Point> q;
     for (std::size_t i = 0; i < pins.size() && !q; ++i)
       for (std::size_t j = i + 1; j < pins.size() && !q; ++j)

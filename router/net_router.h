@@ -387,11 +387,13 @@ class NetSpace {
   // keeps it).
   std::vector<geom::Polygon> wire_union(const std::vector<std::vector<geom::Point>>& wires) const;
 
-  // Whether a wire of one point at p keeps the clearance for net `net`: p lies in no grown
-  // blockage's interior (the grown edges uncut: a pad of the net cut out of them does not count)
-  // and in the interior of no other net's grown pin or wire. (A point on such a boundary keeps
-  // exactly the clearance.) With an overlay, its nets' wires are those of the overlay.
-  bool keeps_clearance(std::size_t net, geom::Point p, const WireOverlay* overlay = nullptr) const;
+  // Whether a wire of one point at p keeps the clearance for net `net`: p lies in the domain, in
+  // no grown blockage's interior (the grown edges uncut: a pad of the net cut out of them does not
+  // count; each piece whole, as the domain's sides cut the union) and in the interior of no other
+  // net's grown pin or wire. (A point on such a boundary keeps exactly the clearance.) The wires
+  // of the nets `only` marks (all when empty), an overlay's nets' wires being the overlay's.
+  bool keeps_clearance(std::size_t net, geom::Point p, std::span<const char> only = {},
+                       const WireOverlay* overlay = nullptr) const;
 
   // The nets (other than `net`) whose grown wires the polyline enters (meets in their interior),
   // and, separately, the nets whose grown pins it enters.
@@ -714,8 +716,9 @@ class NetRouter {
   Tried try_net_unsnapped(const NetRouteFn& route, std::size_t net, NetSpaceLevel level, std::span<const char> only,
                           const WireOverlay* overlay) const;
   // A wire of one point that does not keep the clearance moved to another point its pins share
-  // that does, when there is one among their vertices (try_net; see there).
-  void move_point_wires(std::vector<std::vector<geom::Point>>& wires, std::size_t net, const WireOverlay* overlay) const;
+  // that does, when there is one among their vertices (try_net at the Full level; see there).
+  void move_point_wires(std::vector<std::vector<geom::Point>>& wires, std::size_t net, NetSpaceLevel level,
+                        std::span<const char> only, const WireOverlay* overlay) const;
   void run_scaled(const NetRouteFn& route);
   geom::Box first_window(std::size_t net) const;  // the first window try_net tries
   NetAttempt attempt(const NetRouteFn& route, std::size_t net, NetSpaceLevel level);  // counted
