@@ -763,10 +763,9 @@ std::vector<std::size_t> nets_met(const Index& ix, std::size_t net, std::span<co
 
 bool NetSpace::keeps_clearance(std::size_t net, Point p, std::span<const char> only, const WireOverlay* overlay) const {
   const Index& ix = *index_;
-  const Box& d = domain_;
-  if (p.x < d.lo.x || p.x > d.hi.x || p.y < d.lo.y || p.y > d.hi.y) return false;
-  const bool on_side = p.x == d.lo.x || p.x == d.hi.x || p.y == d.lo.y || p.y == d.hi.y;
   const Box at{p, p};
+  if (!box_inside(at, domain_)) return false;
+  const bool on_side = !box_strictly_inside(at, domain_);
   auto inside = [&](const Polygon& poly) { return geom::locate(p, poly) == geom::Location::Inside; };
   std::vector<Index::Entry> found;
   ix.grown.tree.query(bgi::intersects(at), std::back_inserter(found));
