@@ -446,6 +446,7 @@ NetSpace::NetSpace(const geom::Box& domain, std::span<const geom::Polygon> obsta
   if (rules.wire_width < 0 || rules.spacing < 0) throw std::invalid_argument("NetSpace: negative width or spacing");
   if (rules.scale < 1) throw std::invalid_argument("NetSpace: a scale below 1");
   cut_shapes_ = rules.cover_pieces == 0;
+  scale_ = rules.scale;
   rule_a_ = router::blockage_rule(rules);
   rule_b_ = router::net_rule(rules);
   if (rule_a_ > geom::kMaxCoord || rule_b_ > geom::kMaxCoord) throw std::domain_error("the clearance of <rules> passes the coordinate limit");
@@ -768,11 +769,41 @@ bool NetSpace::keeps_clearance(std::size_t net, Point p, std::span<const char> o
   const bool on_side = !box_strictly_inside(at, domain_);
   auto inside = [&](const Polygon& poly) { return geom::locate(p, poly) == geom::Location::Inside; };
   std::vector<Index::Entry> found;
-  ix.grown.tree.query(bgi::intersects(at), std::back_inserter(found));
-  for (const auto& [box, c] : found) {
-    if (inside(ix.grown.polys[c])) return false;
-    for (const std::size_t id : ix.grown.sources[c])  // (the union is cut at the domain's sides)
-      if (inside(ix.pieces[id].poly)) return false;
+  // the blockages within K a (those in a component of the grown blockages' union holding p; the
+  // union is cut at the domain's sides, so found by box)
+  const i128 r = i128{rule_a_} * scale_;
+  auto far_from = [&](const Ring& ring) {  // |p - ab| >= r for every edge ab, exactly
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const Point a = ring[i], b = ring[(i + 1) % ring.size()];
+      const i128 ux = i128{b.x} - a.x, uy = i128{b.y} - a.y, vx = i128{p.x} - a.x, vy = i128{p.y} - a.y;
+      const i128 t = ux * vx + uy * vy, l = ux * ux + uy * uy;
+      i128 d2num, d2den = 1;  // (coordinates within 2^30: every product below fits)
+      if (t <= 0 || l == 0) d2num = vx * vx + vy * vy;
+      else if (t >= l) d2num = (i128{p.x} - b.x) * (i128{p.x} - b.x) + (i128{p.y} - b.y) * (i128{p.y} - b.y);
+      else {
+        const i128 cr = ux * vy - uy * vx;
+        d2num = cr * cr;
+        d2den = l;
+      }
+      if (d2num < r * r * d2den) return false;
+    }
+    return true;
+  };
+  if (r > 0) {
+    const i128 reach = std::min<i128>(r, geom::kMaxCoord);
+    ix.grown.tree.query(bgi::intersects(geom::grown_box(at, static_cast<std::int64_t>(reach))), std::back_inserter(found));
+    for (const auto& [box, c] : found)
+      for (const std::size_t id : ix.grown.sources[c]) {
+        const Index::Piece& piece = ix.pieces[id];
+        if (piece.kind != Index::Blockage) continue;
+        if (inside(piece.poly) || !far_from(piece.poly.outer)) return false;
+        for (const Ring& h : piece.poly.holes)
+          if (!far_from(h)) return false;
+      }
+  } else {
+    ix.grown.tree.query(bgi::intersects(at), std::back_inserter(found));
+    for (const auto& [box, c] : found)
+      if (inside(ix.grown.polys[c])) return false;
   }
   found.clear();
   ix.tree.query(bgi::intersects(at), std::back_inserter(found));
@@ -793,6 +824,53 @@ bool NetSpace::keeps_clearance(std::size_t net, Point p, std::span<const char> o
             if (l == geom::Location::Inside || (on_side && l == geom::Location::Boundary)) return false;
           }
   return true;
+}
+
+std::vector<Point> NetSpace::clearance_candidates(std::size_t net, const Polygon& pin, const WireOverlay* overlay) const {
+  const Index& ix = *index_;
+  const Box pb = box_of(pin.outer);
+  std::vector<Point> out(pin.outer.begin(), pin.outer.end());
+  auto add_ring = [&](const Ring& r) {
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      const Point a = r[i], b = r[(i + 1) % r.size()];
+      if (box_inside(Box{a, a}, pb)) out.push_back(a);
+      if (!boxes_meet(Box{{std::min(a.x, b.x), std::min(a.y, b.y)}, {std::max(a.x, b.x), std::max(a.y, b.y)}}, pb)) continue;
+      for (std::size_t j = 0; j < pin.outer.size(); ++j) {
+        const geom::Segment s{a, b}, t{pin.outer[j], pin.outer[(j + 1) % pin.outer.size()]};
+        if (geom::intersect(s, t) != geom::SegmentIntersection::Proper) continue;  // (a touch is at a vertex)
+        const geom::RationalPoint c = geom::line_intersection(s, t);
+        for (const geom::i128 x : {geom::floor_div(c.x_num, c.den), geom::ceil_div(c.x_num, c.den)})
+          for (const geom::i128 y : {geom::floor_div(c.y_num, c.den), geom::ceil_div(c.y_num, c.den)})
+            out.push_back({static_cast<geom::Coord>(x), static_cast<geom::Coord>(y)});
+      }
+    }
+  };
+  auto add = [&](const Polygon& poly) {
+    if (!boxes_meet(box_of(poly.outer), pb)) return;
+    add_ring(poly.outer);
+    for (const Ring& h : poly.holes) add_ring(h);
+  };
+  std::vector<Index::Entry> found;
+  ix.grown.tree.query(bgi::intersects(pb), std::back_inserter(found));
+  for (const auto& [box, c] : found) {
+    add(ix.grown.polys[c]);
+    for (const std::size_t id : ix.grown.sources[c]) add(ix.pieces[id].poly);
+  }
+  found.clear();
+  ix.tree.query(bgi::intersects(pb), std::back_inserter(found));
+  for (const auto& [box, id] : found)
+    if (ix.pieces[id].owner != net) add(ix.pieces[id].poly);
+  std::vector<Index::WireEntry> wf;
+  ix.wire_tree.query(bgi::intersects(pb), std::back_inserter(wf));
+  for (const auto& [box, id] : wf)
+    if (id.first != net) add_ring(ix.wire_pieces[id.first][id.second]);
+  if (overlay)
+    for (const WireOverlay::Entry& e : overlay->entries)
+      if (e.net != net)
+        for (const Polygon& u : e.wire_union) add(u);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
 }
 
 std::vector<std::size_t> NetSpace::wire_blockers(std::size_t net, std::span<const Point> line) const {
@@ -1334,7 +1412,8 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
 // 0 (found by fuzzing, 2026-12-06: two touching pads next to a blockage, the wire at their shared
 // corner). Such a wire moves to a point the same two pins share that keeps the clearance, the
 // first found by router::shared_point over their vertices (and where their edges cross), on
-// the scaled plane's lattice; with none it stays. Moved, it still joins what it joined: the pins
+// the scaled plane's lattice; with none, to another point of the net's pins (below); with none
+// of those either it stays (every point of every pin within the clearance). Moved, it still joins what it joined: the pins
 // holding the old point all meet there (the checker joins pins that meet by their own metal), and
 // a wire through the old point meets those pins. Only at the Full level, as the attempt sees the
 // space (`only`, the overlay): the lower levels' attempts read no wires and are kept for the run
@@ -1347,14 +1426,41 @@ void NetRouter::move_point_wires(Lines& wires, std::size_t net, NetSpaceLevel le
   auto usable = [&](Point q) {
     return (scale_ == 1 || (q.x % scale_ == 0 && q.y % scale_ == 0)) && space_.keeps_clearance(net, q, only, overlay);
   };
+  auto point_pin = [&](Point q) {
+    return std::any_of(pins.begin(), pins.end(), [&](const Polygon& g) { return g.outer.size() == 1 && g.outer[0] == q; });
+  };
   for (auto& w : wires) {
     if (w.empty() || !std::all_of(w.begin(), w.end(), [&](Point q) { return q == w[0]; })) continue;
     const Point p = w[0];
-    if (space_.keeps_clearance(net, p, only, overlay)) continue;
+    // on a point pin the checker exempts it (the pin's access zone), and other nets keep their
+    // clearance from the pin
+    if (point_pin(p) || space_.keeps_clearance(net, p, only, overlay)) continue;
     std::optional<Point> q;
     for (std::size_t i = 0; i < pins.size() && !q; ++i)
       for (std::size_t j = i + 1; j < pins.size() && !q; ++j)
         if (in_pin(p, pins[i]) && in_pin(p, pins[j])) q = shared_point(pins[i].outer, pins[i], pins[j].outer, pins[j], usable);
+    // else any point of the net's pins that keeps the clearance (since 2026-12-07: the pins that
+    // hold p meet there, so they stay joined without the wire, which FORMAT.md's one or more
+    // wires of a routed net keep on a pin): a point of a pin holding p, a point pin (exempt, as
+    // above), a point of any pin; the points tried are NetSpace::clearance_candidates on the
+    // scaled plane's lattice (the multiples of K next to each)
+    for (int pass = 0; pass < 3 && !q; ++pass)
+      for (const Polygon& g : pins) {
+        if (pass == 0 && !in_pin(p, g)) continue;
+        if (pass == 1) {
+          if (g.outer.size() == 1 && (scale_ == 1 || (g.outer[0].x % scale_ == 0 && g.outer[0].y % scale_ == 0))) q = g.outer[0];
+        } else if (g.outer.size() > 1) {
+          for (const Point v : space_.clearance_candidates(net, g, overlay)) {
+            for (const std::int64_t x : geom::lattice_neighbours(2 * std::int64_t{v.x}, scale_))
+              for (const std::int64_t y : geom::lattice_neighbours(2 * std::int64_t{v.y}, scale_)) {
+                const Point c{static_cast<geom::Coord>(x), static_cast<geom::Coord>(y)};
+                if (!q && in_pin(c, g) && usable(c)) q = c;
+              }
+            if (q) break;
+          }
+        }
+        if (q) break;
+      }
     if (q) w.assign(w.size(), *q);
   }
 }
@@ -1377,18 +1483,17 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
   bool fitted = false;  // grown once to the margin its answer needs (see below)
   // the wavefronts' frame merged in the space's union
   const bool framed = options_.framed ? options_.framed(net) : takes_frames(route);
-  // the net's pads (shape pins cut out of the grown blockages) that meet none of its other pins
-  // (the wires over a pad are trimmed, and one that reaches another pin there must stay)
+  // the net's pads (shape pins cut out of the grown blockages): the wires' stretches over and
+  // along them are trimmed (trim_at_pads), every pad's, those that meet other pins of the net
+  // too (until 2026-12-07 only the pads that met none: a wire along a chain of touching pads, or
+  // on from one pad into an overlapping one, kept its stretch there within the clearance of a
+  // blockage, and taut check refused it; found by fuzzing). Nothing the trimmed stretch joined
+  // comes apart: it lies in the union of the closed pads, so the pins and wires it met meet those
+  // pads, which meet one another along it (the checker joins pins that meet, as the router does).
   std::vector<Ring> pads;
-  for (std::size_t i = 0; i < pins.pins.size(); ++i) {
-    if (!is_pad(pins.pins[i], space_.cuts_shape_pads())) continue;
-    const Box b = box_of(pins.pins[i].outer);
-    bool alone = true;
-    for (std::size_t j = 0; j < pins.pins.size() && alone; ++j)
-      if (j != i) alone = !boxes_meet(b, box_of(pins.pins[j].outer));
-    if (alone)
+  for (std::size_t i = 0; i < pins.pins.size(); ++i)
+    if (is_pad(pins.pins[i], space_.cuts_shape_pads()))
       for (Ring& piece : pad_pieces(pins.pins[i])) pads.push_back(std::move(piece));
-  }
   while (true) {
     if (options_.stop && options_.stop()) throw NetRouterStopped();
     const Box w = options_.windows ? clipped(geom::grown_box(hp, m), dom) : dom;
@@ -1405,7 +1510,13 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
     t.window = w;
     NetAttempt& a = t.a;
     a = route(net, pins, obs);
-    if (a.routed && level != NetSpaceLevel::Plain) a.wires = trim_at_pads(a.wires, pads);
+    if (a.routed && level != NetSpaceLevel::Plain && !pads.empty()) {
+      // every wire over pads only (the pins it joins meet one another): a wire of one point, on
+      // a pin, stays, as FORMAT.md's routed net has one or more wires (move_point_wires may move it)
+      Lines trimmed = trim_at_pads(a.wires, pads);
+      if (trimmed.empty() && !a.wires.empty() && !a.wires[0].empty()) trimmed.push_back({a.wires[0][0], a.wires[0][0]});
+      a.wires = std::move(trimmed);
+    }
     const auto t2 = Clock::now();
     st.space_seconds += std::chrono::duration<double>(t1 - t0).count();
     st.route_seconds += std::chrono::duration<double>(t2 - t1).count();

@@ -387,13 +387,22 @@ class NetSpace {
   // keeps it).
   std::vector<geom::Polygon> wire_union(const std::vector<std::vector<geom::Point>>& wires) const;
 
-  // Whether a wire of one point at p keeps the clearance for net `net`: p lies in the domain, in
-  // no grown blockage's interior (the grown edges uncut: a pad of the net cut out of them does not
-  // count; each piece whole, as the domain's sides cut the union) and in the interior of no other
-  // net's grown pin or wire. (A point on such a boundary keeps exactly the clearance.) The wires
-  // of the nets `only` marks (all when empty), an overlay's nets' wires being the overlay's.
+  // Whether a wire of one point at p keeps the clearance for net `net`: p lies in the domain, at
+  // a Euclidean distance of at least K a from every blockage (exactly; since 2026-12-07: the grown
+  // blockages are L-infinity neighbourhoods, which hold points the rule allows, and a pad of the
+  // net cut out of them does not count) and in the interior of no other net's grown pin or wire.
+  // (A point on such a boundary keeps exactly the clearance.) The wires of the nets `only` marks
+  // (all when empty), an overlay's nets' wires being the overlay's.
   bool keeps_clearance(std::size_t net, geom::Point p, std::span<const char> only = {},
                        const WireOverlay* overlay = nullptr) const;
+  // Integer points to try for such a point in the closed polygon `pin`: its vertices, the
+  // vertices in its box of the pieces keeps_clearance tests (the grown blockages, their union's
+  // components, the other nets' grown pins and wires, the overlay's unions), and the integer
+  // points next to where their edges meet the pin's edges (a crossing may be a half-integer
+  // point). The corners of the region of `pin` that keeps the clearance are among these points,
+  // or next to them; they may lie outside `pin` (tested by the caller, with keeps_clearance).
+  std::vector<geom::Point> clearance_candidates(std::size_t net, const geom::Polygon& pin,
+                                                const WireOverlay* overlay = nullptr) const;
 
   // The nets (other than `net`) whose grown wires the polyline enters (meets in their interior),
   // and, separately, the nets whose grown pins it enters.
@@ -438,6 +447,7 @@ class NetSpace {
   std::map<std::size_t, NetPins> reach_;  // reach(): the nets with a pin reached as its staircase
   std::int64_t a_ = 0, b_ = 1, rule_a_ = 0, rule_b_ = 1;
   std::int64_t access_ = 0;  // a point pin's access square's half-side: a, or K a when scaled
+  std::int64_t scale_ = 1;   // NetRules::scale
   bool cut_shapes_ = true;
   std::unique_ptr<Index> index_;
 };

@@ -1316,5 +1316,58 @@ TEST(Route, SteinerKeepsAPinApartFromTouchingPads) {
     }
 }
 
+// A net's pads are free space for it, and its wires were trimmed only over pads that met none of
+// its other pins. Three findings of the fuzz search of 2026-12-06, each routed with exit 0 and
+// refused by taut check (CHECK-0007): (chain) pins joined only through a chain of touching pads
+// got a wire along their edges, on a blockage's side; (overlap) a wire ran into one pad and on into
+// an overlapping one that touches a blockage; (clear) a wire started on a pad within the clearance
+// where a touching pad of the net has a clear point. And (corner) two pads touching only at a
+// corner within the clearance kept their wire of one point there. Every metric, Steiner trees,
+// octilinear and --tighten: exit 0, the check passes, and the net keeps one or more wires.
+TEST(Route, PadChainsAndOverlapsKeepTheClearance) {
+  const std::string dir = temp_dir("route_pad_chains");
+  auto pad = [](const char* name, int x0, int y0, int x1, int y1) {
+    return "    <pin name=\"" + std::string(name) + "\"><rect x0=\"" + std::to_string(x0) + "\" y0=\"" + std::to_string(y0) + "\" x1=\"" +
+           std::to_string(x1) + "\" y1=\"" + std::to_string(y1) + "\"/></pin>\n";
+  };
+  auto layout = [](int w, int s, const std::string& blockage, const std::string& pins) {
+    return "<layout version=\"1\">\n  <rules wire-width=\"" + std::to_string(w) + "\" spacing=\"" + std::to_string(s) +
+           "\"/>\n  <blockage id=\"k\"><rect " + blockage + "/></blockage>\n  <net name=\"n\">\n" + pins + "  </net>\n</layout>\n";
+  };
+  write_text(dir + "/chain.xml", layout(2, 2, "x0=\"12\" y0=\"-2\" x1=\"18\" y1=\"0\"",
+                                        pad("a", 0, 0, 10, 10) + pad("b", 10, 0, 20, 10) + pad("c", 20, 0, 30, 10)));
+  write_text(dir + "/overlap.xml", layout(6, 2, "x0=\"0\" y0=\"-6\" x1=\"10\" y1=\"0\"",
+                                          "    <pin name=\"p\" x=\"30\" y=\"20\"/>\n" + pad("a", 0, 2, 10, 10) + pad("b", 3, 0, 5, 3)));
+  write_text(dir + "/clear.xml", layout(0, 5, "x0=\"13\" y0=\"13\" x1=\"14\" y1=\"14\"",
+                                        pad("a", 10, 10, 11, 12) + pad("b", 0, 0, 11, 10) + "    <pin name=\"p\" x=\"40\" y=\"0\"/>\n"));
+  write_text(dir + "/corner.xml", layout(2, 2, "x0=\"11\" y0=\"7\" x1=\"13\" y1=\"9\"", pad("a", 0, 0, 10, 10) + pad("b", 10, 10, 20, 20)));
+  for (const std::vector<std::string>& extra :
+       std::vector<std::vector<std::string>>{{},
+                                             {"--tree", "steiner"},
+                                             {"--orientations", "octilinear"},
+                                             {"--orientations", "octilinear", "--tree", "steiner"},
+                                             {"--metric", "combined", "--bend-cost", "10"},
+                                             {"--metric", "link"},
+                                             {"--tighten"}}) {
+    // under the sanitizers l1 and --tighten only
+    if (test::kSanitized && !(extra.empty() || extra[0] == "--tighten")) continue;
+    std::string what = "l1";
+    for (const std::string& e : extra) what += " " + e;
+    for (const std::string name : {"chain", "overlap", "clear", "corner"}) {
+      std::vector<std::string> cmd{"route", dir + "/" + name + ".xml", "-q", "-o", dir + "/r.xml"};
+      cmd.insert(cmd.end(), extra.begin(), extra.end());
+      const auto r = run_taut(cmd);
+      ASSERT_EQ(r.status, 0) << what << " " << name << r.err;
+      const auto c = run_taut({"check", dir + "/r.xml"});
+      EXPECT_EQ(c.status, 0) << what << " " << name << c.err;
+      const io::ReadResult rr = io::read_layout(dir + "/r.xml");
+      ASSERT_TRUE(rr.layout && rr.layout->routes) << what;
+      ASSERT_EQ(rr.layout->routes->routes.size(), 1u);
+      EXPECT_EQ(rr.layout->routes->routes[0].status, "routed") << what << " " << name;
+      EXPECT_FALSE(rr.layout->routes->routes[0].wires.empty()) << what << " " << name;  // FORMAT.md: one or more
+    }
+  }
+}
+
 }  // namespace route_test
 }  // namespace taut::test
