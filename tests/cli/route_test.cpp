@@ -305,8 +305,10 @@ TEST(Route, GeneratedMultiPinLayoutsPassTheCheck) {
       if (kSanitized && (kind == "maze" || kind == "polygons")) continue;  // a sample there
       SCOPED_TRACE(kind + " " + tree);
       const std::string in = dir + "/" + kind + ".xml", out = dir + "/" + kind + "." + tree + ".xml";
-      // fewer nets under the sanitizers, where a Steiner tree's improvement pass costs seconds
-      ASSERT_EQ(run_taut({"gen", kind, "--size", "1500", "--nets", kSanitized ? "5" : "12", "--pins", "2-8", "--width", "10",
+      // fewer nets under the sanitizers, where a Steiner tree's improvement pass costs seconds; 8
+      // in Release (12 until 2026-12-07: the degenerate layout's Steiner run, 7 of 12 nets left
+      // unrouted, took 17 s of the test's 23 in 96 attempts of rip-up rounds)
+      ASSERT_EQ(run_taut({"gen", kind, "--size", "1500", "--nets", kSanitized ? "5" : "8", "--pins", "2-8", "--width", "10",
                           "--spacing", "6", "--seed", "5", "-o", in}).status, 0);
       const auto r = tree == "octilinear" ? run_taut({"route", in, "--orientations", "octilinear", "-q", "-o", out}, 120)
                                           : run_taut({"route", in, "--tree", tree, "-q", "-o", out}, 120);

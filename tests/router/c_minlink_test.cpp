@@ -433,10 +433,12 @@ TEST(CMinLinkLoop, RandomLoopsAgainstTheReferences) {
   long long taut_loops = 0;
   const bool all_sets = std::getenv("TAUT_LOOP_SEARCH_ALL") != nullptr;
   const long long scenes = for_each_small_scene(
-      static_cast<int>(sanitized_share(20, 20)), 9, 137, 6007,
+      // 20 seeds until 2026-12-07 (make test's time on CI: the slowest test of both trees); four
+      // loops of each scene of one seed under the sanitizers, where its six took 33 s (9 s now)
+      static_cast<int>(sanitized_share(14, 14)), 9, 137, 6007,
       [&](int seed, int kind, const Judged& j, const Path& pts, std::mt19937_64& rng64) {
         Sketcher sk{j.ref, j.h, pts, rng64};
-        for (int t = 0; t < 6; ++t) {
+        for (int t = 0; t < (kSanitized ? 4 : 6); ++t) {
           Path loop = sk.walk(3 + static_cast<int>(rng64() % 4));
           if (loop.size() < 2) continue;
           if (t % 2 == 1) sk.add_loops(loop);
@@ -462,9 +464,9 @@ TEST(CMinLinkLoop, RandomLoopsAgainstTheReferences) {
               "bound; %lld starts), %lld with none; lattice search on %lld: as few links on %lld, fewer on %lld\n",
               scenes, taut_loops, tot.loops, tot.minimal, tot.open, tot.starts, tot.none, tot.searched,
               tot.search_equal, tot.search_beats);
-  EXPECT_GE(tot.loops, sanitized_share(1100, 40));  // 1,221 here (one seed of the 20 under the sanitizers)
+  EXPECT_GE(tot.loops, kSanitized ? 5 : 850);  // 913 here (1,221 of 20 seeds)
   EXPECT_EQ(tot.none, 0);
-  EXPECT_GE(tot.searched, sanitized_share(40, 40));
+  EXPECT_GE(tot.searched, kSanitized ? 1 : 35);  // 38 here
   // the search is not vacuous: it finds a loop with as many links most of the time
   EXPECT_GE(tot.search_equal * 10, tot.searched * 8);
 }
