@@ -762,11 +762,10 @@ std::vector<std::size_t> nets_met(const Index& ix, std::size_t net, std::span<co
 }
 }  // namespace
 
-bool NetSpace::keeps_clearance(std::size_t net, Point p, std::span<const char> only, const WireOverlay* overlay) const {
+bool NetSpace::keeps_blockage_clearance(Point p) const {
   const Index& ix = *index_;
   const Box at{p, p};
   if (!box_inside(at, domain_)) return false;
-  const bool on_side = !box_strictly_inside(at, domain_);
   auto inside = [&](const Polygon& poly) { return geom::locate(p, poly) == geom::Location::Inside; };
   std::vector<Index::Entry> found;
   // the blockages within K a (those in a component of the grown blockages' union holding p; the
@@ -805,7 +804,16 @@ bool NetSpace::keeps_clearance(std::size_t net, Point p, std::span<const char> o
     for (const auto& [box, c] : found)
       if (inside(ix.grown.polys[c])) return false;
   }
-  found.clear();
+  return true;
+}
+
+bool NetSpace::keeps_clearance(std::size_t net, Point p, std::span<const char> only, const WireOverlay* overlay) const {
+  if (!keeps_blockage_clearance(p)) return false;
+  const Index& ix = *index_;
+  const Box at{p, p};
+  const bool on_side = !box_strictly_inside(at, domain_);
+  auto inside = [&](const Polygon& poly) { return geom::locate(p, poly) == geom::Location::Inside; };
+  std::vector<Index::Entry> found;
   ix.tree.query(bgi::intersects(at), std::back_inserter(found));
   for (const auto& [box, id] : found)
     if (ix.pieces[id].owner != net && inside(ix.pieces[id].poly)) return false;
@@ -1403,7 +1411,36 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
     }
   }
   if (t.a.routed) move_point_wires(t.a.wires, net, level, only, overlay);
+  if (t.a.routed && level != NetSpaceLevel::Plain && point_wire_stuck(t.a.wires, net)) {
+    // the same at every level with the clearance (it reads the blockages only), so the net is
+    // explained as ROUTE-0010 with this reason
+    t.a = NetAttempt{};
+    t.a.code = "ROUTE-0010";
+    t.a.reason = "its pins meet (joined by their own metal), but every point of them lies within " +
+                 std::to_string(space_.blockage_rule()) +
+                 " DBU (ceil(w/2) + s) of a blockage: no wire on them keeps the clearance of <rules>, and a routed "
+                 "net has one or more wires";
+  }
   return t;
+}
+
+bool NetRouter::point_wire_stuck(const Lines& wires, std::size_t net) const {
+  const std::vector<Polygon>& pins = space_.net(net).pins;
+  for (const auto& w : wires) {
+    if (w.empty() || !std::all_of(w.begin(), w.end(), [&](Point q) { return q == w[0]; })) return false;
+    const Point p = w[0];
+    if (std::any_of(pins.begin(), pins.end(), [&](const Polygon& g) { return g.outer.size() == 1; })) return false;
+    std::shared_lock lock(space_mutex_);
+    if (space_.keeps_blockage_clearance(p)) return false;
+    for (const Polygon& g : pins)
+      for (const Point v : space_.clearance_candidates(net, g))
+        for (const std::int64_t x : geom::lattice_neighbours(2 * std::int64_t{v.x}, scale_))
+          for (const std::int64_t y : geom::lattice_neighbours(2 * std::int64_t{v.y}, scale_)) {
+            const Point c{static_cast<geom::Coord>(x), static_cast<geom::Coord>(y)};
+            if (in_pin(c, g) && space_.keeps_blockage_clearance(c)) return false;
+          }
+  }
+  return !wires.empty();
 }
 
 // A wire of one point (every point the same) is the routers' answer for pins that share a point.
@@ -1510,6 +1547,9 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
     t.window = w;
     NetAttempt& a = t.a;
     a = route(net, pins, obs);
+    // the length as routed, before the trim: the window proof below bounds how far the route's
+    // wavefronts ran, and they ran over the pads too
+    const std::int64_t routed_len = a.routed ? l1_length(a.wires) : 0;
     if (a.routed && level != NetSpaceLevel::Plain && !pads.empty()) {
       // every wire over pads only (the pins it joins meet one another): a wire of one point, on
       // a pin, stays, as FORMAT.md's routed net has one or more wires (move_point_wires may move it)
@@ -1578,7 +1618,7 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
       const __int128 grow = std::max<__int128>(4 * __int128{m}, worst + 3);
       m = static_cast<std::int64_t>(std::min<__int128>(grow, std::numeric_limits<std::int64_t>::max() / 8));
     } else if (a.routed) {
-      const std::int64_t len = l1_length(a.wires);
+      const std::int64_t len = routed_len;
       bool proven;
       std::optional<std::int64_t> fit;  // a margin in which this answer would pass its proof
       if (two_point_pins(pins)) {
@@ -2378,7 +2418,9 @@ NetRouter::Explained NetRouter::explain(const NetRouteFn& route, std::size_t net
   }
   const NetAttempt clear = tried(NetSpaceLevel::Clearance);
   const std::string a = std::to_string(space_.blockage_rule()), b = std::to_string(space_.net_rule());
-  if (!clear.routed && clear.code == "ROUTE-0018") {  // the route function's own way misses the clearance
+  // the route function's own way misses the clearance, or the net's pins meet within it everywhere
+  // (try_net)
+  if (!clear.routed && (clear.code == "ROUTE-0018" || clear.code == "ROUTE-0010")) {
     e.code = clear.code;
     e.reason = clear.reason;
     return e;

@@ -395,6 +395,8 @@ class NetSpace {
   // (all when empty), an overlay's nets' wires being the overlay's.
   bool keeps_clearance(std::size_t net, geom::Point p, std::span<const char> only = {},
                        const WireOverlay* overlay = nullptr) const;
+  // Its first part: p in the domain and at least K a from every blockage.
+  bool keeps_blockage_clearance(geom::Point p) const;
   // Integer points to try for such a point in the closed polygon `pin`: its vertices, the
   // vertices in its box of the pieces keeps_clearance tests (the grown blockages, their union's
   // components, the other nets' grown pins and wires, the overlay's unions), and the integer
@@ -729,6 +731,10 @@ class NetRouter {
   // that does, when there is one among their vertices (try_net at the Full level; see there).
   void move_point_wires(std::vector<std::vector<geom::Point>>& wires, std::size_t net, NetSpaceLevel level,
                         std::span<const char> only, const WireOverlay* overlay) const;
+  // Whether a wire of one point lies within the clearance of a blockage where no point of the
+  // net's pins (NetSpace::clearance_candidates, on the lattice) keeps it: the pins meet, and no wire
+  // on them can keep the clearance (try_net then fails the attempt, ROUTE-0010).
+  bool point_wire_stuck(const std::vector<std::vector<geom::Point>>& wires, std::size_t net) const;
   void run_scaled(const NetRouteFn& route);
   geom::Box first_window(std::size_t net) const;  // the first window try_net tries
   NetAttempt attempt(const NetRouteFn& route, std::size_t net, NetSpaceLevel level);  // counted

@@ -1325,7 +1325,8 @@ TEST(Route, SteinerKeepsAPinApartFromTouchingPads) {
 // an overlapping one that touches a blockage; (clear) a wire started on a pad within the clearance
 // where a touching pad of the net has a clear point. And (corner) two pads touching only at a
 // corner within the clearance kept their wire of one point there. Every metric, Steiner trees,
-// octilinear and --tighten: exit 0, the check passes, and the net keeps one or more wires.
+// octilinear and --tighten: exit 0, the check passes, and the net keeps one or more wires (and
+// pads within the clearance everywhere are refused, below).
 TEST(Route, PadChainsAndOverlapsKeepTheClearance) {
   const std::string dir = temp_dir("route_pad_chains");
   auto pad = [](const char* name, int x0, int y0, int x1, int y1) {
@@ -1343,6 +1344,9 @@ TEST(Route, PadChainsAndOverlapsKeepTheClearance) {
   write_text(dir + "/clear.xml", layout(0, 5, "x0=\"13\" y0=\"13\" x1=\"14\" y1=\"14\"",
                                         pad("a", 10, 10, 11, 12) + pad("b", 0, 0, 11, 10) + "    <pin name=\"p\" x=\"40\" y=\"0\"/>\n"));
   write_text(dir + "/corner.xml", layout(2, 2, "x0=\"11\" y0=\"7\" x1=\"13\" y1=\"9\"", pad("a", 0, 0, 10, 10) + pad("b", 10, 10, 20, 20)));
+  // (within) two touching pads within 3 (ceil(w/2) + s) of a blockage everywhere: no wire on them
+  // keeps the clearance, so the net is refused like a lone pad drawn so (ROUTE-0010), exit 1
+  write_text(dir + "/within.xml", layout(2, 2, "x0=\"0\" y0=\"0\" x1=\"10\" y1=\"2\"", pad("a", 0, 3, 5, 4) + pad("b", 5, 3, 10, 4)));
   for (const std::vector<std::string>& extra :
        std::vector<std::vector<std::string>>{{},
                                              {"--tree", "steiner"},
@@ -1355,10 +1359,20 @@ TEST(Route, PadChainsAndOverlapsKeepTheClearance) {
     if (test::kSanitized && !(extra.empty() || extra[0] == "--tighten")) continue;
     std::string what = "l1";
     for (const std::string& e : extra) what += " " + e;
-    for (const std::string name : {"chain", "overlap", "clear", "corner"}) {
+    for (const std::string name : {"chain", "overlap", "clear", "corner", "within"}) {
       std::vector<std::string> cmd{"route", dir + "/" + name + ".xml", "-q", "-o", dir + "/r.xml"};
       cmd.insert(cmd.end(), extra.begin(), extra.end());
       const auto r = run_taut(cmd);
+      if (name == "within") {
+        EXPECT_EQ(r.status, 1) << what << r.err;
+        EXPECT_EQ(run_taut({"check", dir + "/r.xml", "-q"}).status, 0) << what;
+        const io::ReadResult rr = io::read_layout(dir + "/r.xml");
+        ASSERT_TRUE(rr.layout && rr.layout->routes && rr.layout->routes->routes.size() == 1) << what;
+        const io::Route& route = rr.layout->routes->routes[0];
+        EXPECT_EQ(route.status, "failed") << what;
+        EXPECT_NE(route.reason.value_or("").find("its pins meet"), std::string::npos) << what << route.reason.value_or("");
+        continue;
+      }
       ASSERT_EQ(r.status, 0) << what << " " << name << r.err;
       const auto c = run_taut({"check", dir + "/r.xml"});
       EXPECT_EQ(c.status, 0) << what << " " << name << c.err;
