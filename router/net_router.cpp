@@ -1443,6 +1443,39 @@ bool NetRouter::point_wire_stuck(const Lines& wires, std::size_t net) const {
   return !wires.empty();
 }
 
+namespace {
+// A point where the pins meet, when they all meet: joined pair by pair at integer points they
+// share (router::shared_point), into one group; nullopt otherwise (or with fewer than two pins).
+std::optional<Point> all_pins_meet(const NetPins& pins) {
+  const std::size_t k = pins.pins.size();
+  if (k < 2) return std::nullopt;
+  if (std::all_of(pins.pins.begin(), pins.pins.end(), [](const Polygon& g) { return g.outer.size() == 1; }) &&
+      std::any_of(pins.pins.begin(), pins.pins.end(), [&](const Polygon& g) { return g.outer[0] != pins.pins[0].outer[0]; }))
+    return std::nullopt;  // point pins apart (the common case, decided without the pairs)
+  std::vector<std::size_t> group(k);
+  for (std::size_t i = 0; i < k; ++i) group[i] = i;
+  auto find = [&](std::size_t i) {
+    while (group[i] != i) i = group[i] = group[group[i]];
+    return i;
+  };
+  std::optional<Point> first;
+  std::size_t groups = k;
+  for (std::size_t i = 0; i < k && groups > 1; ++i)
+    for (std::size_t j = i + 1; j < k && groups > 1; ++j) {
+      if (find(i) == find(j)) continue;
+      const Polygon &a = pins.pins[i], &b = pins.pins[j];
+      if (!geom::boxes_meet(box_of(a.outer), box_of(b.outer))) continue;
+      if (const auto p = shared_point(a.outer, a, b.outer, b, [](Point) { return true; })) {
+        if (!first) first = p;
+        group[find(i)] = find(j);
+        --groups;
+      }
+    }
+  if (groups > 1) return std::nullopt;
+  return first;
+}
+}  // namespace
+
 // A wire of one point (every point the same) is the routers' answer for pins that share a point.
 // In a pad cut out of the grown blockages (a pad is free space for its net) that point may lie
 // within the clearance of a blockage, and taut check refused it (CHECK-0007) while route exited
@@ -1531,6 +1564,12 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
   for (std::size_t i = 0; i < pins.pins.size(); ++i)
     if (is_pad(pins.pins[i], space_.cuts_shape_pads()))
       for (Ring& piece : pad_pieces(pins.pins[i])) pads.push_back(std::move(piece));
+  // Pins that all meet (joined, pair by pair, at integer points they share) are joined by their
+  // own metal: no route, a wire of one point where two of them meet (move_point_wires and
+  // point_wire_stuck see to the clearance). Since 2026-12-07: the route functions take the pins
+  // apart, and where they meet only at corners that pinch shut in the cut pads, found pins of the
+  // net in different parts of free space (ROUTE-0002, then ROUTE-0010; found by fuzzing).
+  const std::optional<Point> joined = all_pins_meet(pins);
   while (true) {
     if (options_.stop && options_.stop()) throw NetRouterStopped();
     const Box w = options_.windows ? clipped(geom::grown_box(hp, m), dom) : dom;
@@ -1546,7 +1585,16 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
     const auto t1 = Clock::now();
     t.window = w;
     NetAttempt& a = t.a;
-    a = route(net, pins, obs);
+    if (joined) {
+      a = NetAttempt{};
+      a.routed = true;
+      a.wires = {{*joined, *joined}};
+      a.sink_costs.assign(pins.pins.size() - 1, {0, 0});
+      a.radius = geom::Root2{0, 0};
+      if (pins.pins.size() == 2) a.distance = geom::Root2{0, 0};
+    } else {
+      a = route(net, pins, obs);
+    }
     // the length as routed, before the trim: the window proof below bounds how far the route's
     // wavefronts ran, and they ran over the pads too
     const std::int64_t routed_len = a.routed ? l1_length(a.wires) : 0;

@@ -1346,6 +1346,13 @@ TEST(Route, PadChainsAndOverlapsKeepTheClearance) {
   write_text(dir + "/corner.xml", layout(2, 2, "x0=\"11\" y0=\"7\" x1=\"13\" y1=\"9\"", pad("a", 0, 0, 10, 10) + pad("b", 10, 10, 20, 20)));
   // (within) two touching pads within 3 (ceil(w/2) + s) of a blockage everywhere: no wire on them
   // keeps the clearance, so the net is refused like a lone pad drawn so (ROUTE-0010), exit 1
+  // (pinch) pins that meet only at corners that pinch shut in the cut pads (a0-a1, a1-a2; a3 in
+  // a2 against the blockage): the route function found a0 and a3 in different parts of free
+  // space and the net was refused (ROUTE-0010, found by fuzzing, 2026-12-07); pins that all meet
+  // are now joined without a route, a wire of one point at 13,13 (7.07 from the blockage, 6 needed)
+  write_text(dir + "/pinch.xml", layout(5, 3, "x0=\"6\" y0=\"18\" x1=\"8\" y1=\"23\"",
+                                        pad("a0", 13, 10, 17, 13) + pad("a1", 10, 13, 13, 18) + pad("a2", 8, 18, 10, 19) +
+                                            pad("a3", 8, 18, 9, 19)));
   write_text(dir + "/within.xml", layout(2, 2, "x0=\"0\" y0=\"0\" x1=\"10\" y1=\"2\"", pad("a", 0, 3, 5, 4) + pad("b", 5, 3, 10, 4)));
   for (const std::vector<std::string>& extra :
        std::vector<std::vector<std::string>>{{},
@@ -1359,7 +1366,7 @@ TEST(Route, PadChainsAndOverlapsKeepTheClearance) {
     if (test::kSanitized && !(extra.empty() || extra[0] == "--tighten")) continue;
     std::string what = "l1";
     for (const std::string& e : extra) what += " " + e;
-    for (const std::string name : {"chain", "overlap", "clear", "corner", "within"}) {
+    for (const std::string name : {"chain", "overlap", "clear", "corner", "pinch", "within"}) {
       std::vector<std::string> cmd{"route", dir + "/" + name + ".xml", "-q", "-o", dir + "/r.xml"};
       cmd.insert(cmd.end(), extra.begin(), extra.end());
       const auto r = run_taut(cmd);
