@@ -834,10 +834,35 @@ bool NetSpace::keeps_clearance(std::size_t net, Point p, std::span<const char> o
   return true;
 }
 
-std::vector<Point> NetSpace::clearance_candidates(std::size_t net, const Polygon& pin, const WireOverlay* overlay) const {
+std::vector<Point> NetSpace::clearance_candidates(std::size_t net, const Polygon& pin, const WireOverlay* overlay,
+                                                  bool with_wires) const {
   const Index& ix = *index_;
   const Box pb = box_of(pin.outer);
   std::vector<Point> out(pin.outer.begin(), pin.outer.end());
+  // where the circle of radius K a round a blockage vertex c crosses a horizontal or vertical edge
+  // of the pin: the integers next to c.x +- sqrt(r^2 - dy^2) (or in y)
+  const i128 r = i128{rule_a_} * scale_;
+  auto isqrt = [](i128 v) {  // floor(sqrt(v)), v >= 0
+    i128 x = static_cast<i128>(std::sqrt(static_cast<long double>(v)));
+    while (x > 0 && x * x > v) --x;
+    while ((x + 1) * (x + 1) <= v) ++x;
+    return x;
+  };
+  auto add_circle = [&](Point c) {
+    for (std::size_t j = 0; j < pin.outer.size(); ++j) {
+      const Point u = pin.outer[j], v = pin.outer[(j + 1) % pin.outer.size()];
+      if (u.x != v.x && u.y != v.y) continue;
+      const bool horizontal = u.y == v.y;
+      const i128 d = horizontal ? i128{u.y} - c.y : i128{u.x} - c.x;
+      if (d * d > r * r) continue;
+      const i128 h = isqrt(r * r - d * d), m = horizontal ? c.x : c.y;
+      for (const i128 t : {m - h - 1, m - h, m + h, m + h + 1}) {
+        const Point q = horizontal ? Point{static_cast<geom::Coord>(std::clamp<i128>(t, -geom::kMaxCoord, geom::kMaxCoord)), u.y}
+                                   : Point{u.x, static_cast<geom::Coord>(std::clamp<i128>(t, -geom::kMaxCoord, geom::kMaxCoord))};
+        if (box_inside(Box{q, q}, pb)) out.push_back(q);
+      }
+    }
+  };
   auto add_ring = [&](const Ring& r) {
     for (std::size_t i = 0; i < r.size(); ++i) {
       const Point a = r[i], b = r[(i + 1) % r.size()];
@@ -862,12 +887,21 @@ std::vector<Point> NetSpace::clearance_candidates(std::size_t net, const Polygon
   ix.grown.tree.query(bgi::intersects(pb), std::back_inserter(found));
   for (const auto& [box, c] : found) {
     add(ix.grown.polys[c]);
-    for (const std::size_t id : ix.grown.sources[c]) add(ix.pieces[id].poly);
+    for (const std::size_t id : ix.grown.sources[c]) {
+      add(ix.pieces[id].poly);
+      if (ix.pieces[id].kind == Index::Blockage && r > 0)
+        for (const Point v : ix.pieces[id].poly.outer) add_circle(v);
+    }
   }
   found.clear();
   ix.tree.query(bgi::intersects(pb), std::back_inserter(found));
   for (const auto& [box, id] : found)
     if (ix.pieces[id].owner != net) add(ix.pieces[id].poly);
+  if (!with_wires) {
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  }
   std::vector<Index::WireEntry> wf;
   ix.wire_tree.query(bgi::intersects(pb), std::back_inserter(wf));
   for (const auto& [box, id] : wf)
@@ -1416,12 +1450,47 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
     // explained as ROUTE-0010 with this reason
     t.a = NetAttempt{};
     t.a.code = "ROUTE-0010";
-    t.a.reason = "its pins meet (joined by their own metal), but every point of them lies within " +
-                 std::to_string(space_.blockage_rule()) +
-                 " DBU (ceil(w/2) + s) of a blockage: no wire on them keeps the clearance of <rules>, and a routed "
-                 "net has one or more wires";
+    const std::string a = std::to_string(space_.blockage_rule());
+    t.a.reason = "its pins meet (joined by their own metal), but no point of them tried keeps " + a +
+                 " DBU (ceil(w/2) + s) from every blockage (their vertices, and where the grown blockages' edges and the "
+                 "circles of radius " + a + " round blockage corners cross their edges): no wire on them keeps the "
+                 "clearance of <rules>, and a routed net has one or more wires";
   }
   return t;
+}
+
+std::optional<Point> NetRouter::joined_point(std::size_t net, const NetPins& pins, NetSpaceLevel level,
+                                             std::span<const char> only, const WireOverlay* overlay) const {
+  std::shared_lock lock(space_mutex_);
+  const std::vector<char> none(space_.size(), 0);  // (no net's wires)
+  auto usable = [&](Point q) {
+    if (scale_ > 1 && (q.x % scale_ != 0 || q.y % scale_ != 0)) return false;
+    switch (level) {
+      case NetSpaceLevel::Plain: return true;
+      case NetSpaceLevel::Clearance: return space_.keeps_blockage_clearance(q);
+      case NetSpaceLevel::Pins: return space_.keeps_clearance(net, q, none, nullptr);
+      default: return space_.keeps_clearance(net, q, only, overlay);
+    }
+  };
+  // a point pin: the checker's access zone exempts the wire there, and the other nets keep their
+  // clearance from the pin
+  for (const Polygon& g : pins.pins)
+    if (g.outer.size() == 1 && (scale_ == 1 || (g.outer[0].x % scale_ == 0 && g.outer[0].y % scale_ == 0))) return g.outer[0];
+  for (std::size_t i = 0; i < pins.pins.size(); ++i)
+    for (std::size_t j = i + 1; j < pins.pins.size(); ++j) {
+      const Polygon &a = pins.pins[i], &b = pins.pins[j];
+      if (!boxes_meet(box_of(a.outer), box_of(b.outer))) continue;
+      if (const auto q = shared_point(a.outer, a, b.outer, b, usable)) return q;
+    }
+  if (level == NetSpaceLevel::Plain) return std::nullopt;
+  for (const Polygon& g : pins.pins)
+    for (const Point v : space_.clearance_candidates(net, g, overlay, level == NetSpaceLevel::Full))
+      for (const std::int64_t x : geom::lattice_neighbours(2 * std::int64_t{v.x}, scale_))
+        for (const std::int64_t y : geom::lattice_neighbours(2 * std::int64_t{v.y}, scale_)) {
+          const Point c{static_cast<geom::Coord>(x), static_cast<geom::Coord>(y)};
+          if (in_pin(c, g) && usable(c)) return c;
+        }
+  return std::nullopt;
 }
 
 bool NetRouter::point_wire_stuck(const Lines& wires, std::size_t net) const {
@@ -1433,7 +1502,7 @@ bool NetRouter::point_wire_stuck(const Lines& wires, std::size_t net) const {
     std::shared_lock lock(space_mutex_);
     if (space_.keeps_blockage_clearance(p)) return false;
     for (const Polygon& g : pins)
-      for (const Point v : space_.clearance_candidates(net, g))
+      for (const Point v : space_.clearance_candidates(net, g, nullptr, false))
         for (const std::int64_t x : geom::lattice_neighbours(2 * std::int64_t{v.x}, scale_))
           for (const std::int64_t y : geom::lattice_neighbours(2 * std::int64_t{v.y}, scale_)) {
             const Point c{static_cast<geom::Coord>(x), static_cast<geom::Coord>(y)};
@@ -1444,9 +1513,10 @@ bool NetRouter::point_wire_stuck(const Lines& wires, std::size_t net) const {
 }
 
 namespace {
-// A point where the pins meet, when they all meet: joined pair by pair at integer points they
-// share (router::shared_point), into one group; nullopt otherwise (or with fewer than two pins).
-std::optional<Point> all_pins_meet(const NetPins& pins) {
+// A point where the pins meet, when they all meet: joined pair by pair at points they share on
+// the lattice of multiples of k_lattice (router::shared_point), into one group; nullopt otherwise
+// (or with fewer than two pins).
+std::optional<Point> all_pins_meet(const NetPins& pins, std::int64_t k_lattice) {
   const std::size_t k = pins.pins.size();
   if (k < 2) return std::nullopt;
   if (std::all_of(pins.pins.begin(), pins.pins.end(), [](const Polygon& g) { return g.outer.size() == 1; }) &&
@@ -1465,7 +1535,8 @@ std::optional<Point> all_pins_meet(const NetPins& pins) {
       if (find(i) == find(j)) continue;
       const Polygon &a = pins.pins[i], &b = pins.pins[j];
       if (!geom::boxes_meet(box_of(a.outer), box_of(b.outer))) continue;
-      if (const auto p = shared_point(a.outer, a, b.outer, b, [](Point) { return true; })) {
+      auto on_lattice = [&](Point q) { return k_lattice == 1 || (q.x % k_lattice == 0 && q.y % k_lattice == 0); };
+      if (const auto p = shared_point(a.outer, a, b.outer, b, on_lattice)) {
         if (!first) first = p;
         group[find(i)] = find(j);
         --groups;
@@ -1564,12 +1635,13 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
   for (std::size_t i = 0; i < pins.pins.size(); ++i)
     if (is_pad(pins.pins[i], space_.cuts_shape_pads()))
       for (Ring& piece : pad_pieces(pins.pins[i])) pads.push_back(std::move(piece));
-  // Pins that all meet (joined, pair by pair, at integer points they share) are joined by their
-  // own metal: no route, a wire of one point where two of them meet (move_point_wires and
-  // point_wire_stuck see to the clearance). Since 2026-12-07: the route functions take the pins
+  // Pins that all meet (joined, pair by pair, at lattice points they share) are joined by their
+  // own metal: no route, a wire of one point on them that keeps the clearance of this level
+  // (joined_point); with none, the route function as for any net (move_point_wires and
+  // point_wire_stuck then see to its wire). Since 2026-12-07: the route functions take the pins
   // apart, and where they meet only at corners that pinch shut in the cut pads, found pins of the
   // net in different parts of free space (ROUTE-0002, then ROUTE-0010; found by fuzzing).
-  const std::optional<Point> joined = all_pins_meet(pins);
+  const bool joined = all_pins_meet(pins, scale_).has_value();
   while (true) {
     if (options_.stop && options_.stop()) throw NetRouterStopped();
     const Box w = options_.windows ? clipped(geom::grown_box(hp, m), dom) : dom;
@@ -1585,10 +1657,11 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
     const auto t1 = Clock::now();
     t.window = w;
     NetAttempt& a = t.a;
-    if (joined) {
+    const std::optional<Point> at = joined ? joined_point(net, pins, level, only, overlay) : std::nullopt;
+    if (at) {
       a = NetAttempt{};
       a.routed = true;
-      a.wires = {{*joined, *joined}};
+      a.wires = {{*at, *at}};
       a.sink_costs.assign(pins.pins.size() - 1, {0, 0});
       a.radius = geom::Root2{0, 0};
       if (pins.pins.size() == 2) a.distance = geom::Root2{0, 0};

@@ -399,12 +399,15 @@ class NetSpace {
   bool keeps_blockage_clearance(geom::Point p) const;
   // Integer points to try for such a point in the closed polygon `pin`: its vertices, the
   // vertices in its box of the pieces keeps_clearance tests (the grown blockages, their union's
-  // components, the other nets' grown pins and wires, the overlay's unions), and the integer
-  // points next to where their edges meet the pin's edges (a crossing may be a half-integer
-  // point). The corners of the region of `pin` that keeps the clearance are among these points,
-  // or next to them; they may lie outside `pin` (tested by the caller, with keeps_clearance).
+  // components, the other nets' grown pins, and with `with_wires` the other nets' grown wires and
+  // the overlay's unions), the integer points next to where their edges meet the pin's edges (a
+  // crossing may be a half-integer point), and next to where the circles of radius K a round the
+  // blockages' vertices meet the pin's horizontal and vertical edges. The corners of the region of
+  // a rectilinear pin that keeps the blockages' clearance on its boundary are next to these
+  // points; they may lie outside `pin` (tested by the caller, with keeps_clearance). Without
+  // `with_wires` the answer reads no wires (the same whenever it is asked).
   std::vector<geom::Point> clearance_candidates(std::size_t net, const geom::Polygon& pin,
-                                                const WireOverlay* overlay = nullptr) const;
+                                                const WireOverlay* overlay = nullptr, bool with_wires = true) const;
 
   // The nets (other than `net`) whose grown wires the polyline enters (meets in their interior),
   // and, separately, the nets whose grown pins it enters.
@@ -735,6 +738,13 @@ class NetRouter {
   // net's pins (NetSpace::clearance_candidates, on the lattice) keeps it: the pins meet, and no wire
   // on them can keep the clearance (try_net then fails the attempt, ROUTE-0010).
   bool point_wire_stuck(const std::vector<std::vector<geom::Point>>& wires, std::size_t net) const;
+  // For pins that all meet: a point on them for a wire of one point that keeps the clearance at
+  // this level (none at Plain, the blockages' at Clearance, the other nets' pins' too at Pins, and
+  // the wires `only` and the overlay give at Full: the lower levels read no wires), on the
+  // scaled lattice; nullopt when none of the points tried (a point pin, the shared points, the
+  // NetSpace::clearance_candidates) does.
+  std::optional<geom::Point> joined_point(std::size_t net, const NetPins& pins, NetSpaceLevel level,
+                                          std::span<const char> only, const WireOverlay* overlay) const;
   void run_scaled(const NetRouteFn& route);
   geom::Box first_window(std::size_t net) const;  // the first window try_net tries
   NetAttempt attempt(const NetRouteFn& route, std::size_t net, NetSpaceLevel level);  // counted
