@@ -1580,7 +1580,7 @@ void NetRouter::move_point_wires(Lines& wires, std::size_t net, NetSpaceLevel le
     for (std::size_t i = 0; i < pins.size() && !q; ++i)
       for (std::size_t j = i + 1; j < pins.size() && !q; ++j)
         if (in_pin(p, pins[i]) && in_pin(p, pins[j])) q = shared_point(pins[i].outer, pins[i], pins[j].outer, pins[j], usable);
-    // else any point of the net's pins that keeps the clearance (since 2026-12-07: the pins that
+    // else any point of the net's pins that keeps the clearance (since 2026-12-06: the pins that
     // hold p meet there, so they stay joined without the wire, which FORMAT.md's one or more
     // wires of a routed net keep on a pin): a point of a pin holding p, a point pin (exempt, as
     // above), a point of any pin; the points tried are NetSpace::clearance_candidates on the
@@ -1626,7 +1626,7 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
   const bool framed = options_.framed ? options_.framed(net) : takes_frames(route);
   // the net's pads (shape pins cut out of the grown blockages): the wires' stretches over and
   // along them are trimmed (trim_at_pads), every pad's, those that meet other pins of the net
-  // too (until 2026-12-07 only the pads that met none: a wire along a chain of touching pads, or
+  // too (until 2026-12-06 only the pads that met none: a wire along a chain of touching pads, or
   // on from one pad into an overlapping one, kept its stretch there within the clearance of a
   // blockage, and taut check refused it; found by fuzzing). Nothing the trimmed stretch joined
   // comes apart: it lies in the union of the closed pads, so the pins and wires it met meet those
@@ -1638,7 +1638,7 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
   // Pins that all meet (joined, pair by pair, at lattice points they share) are joined by their
   // own metal: no route, a wire of one point on them that keeps the clearance of this level
   // (joined_point); with none, the route function as for any net (move_point_wires and
-  // point_wire_stuck then see to its wire). Since 2026-12-07: the route functions take the pins
+  // point_wire_stuck then see to its wire). Since 2026-12-06: the route functions take the pins
   // apart, and where they meet only at corners that pinch shut in the cut pads, found pins of the
   // net in different parts of free space (ROUTE-0002, then ROUTE-0010; found by fuzzing).
   const bool joined = all_pins_meet(pins, scale_).has_value();

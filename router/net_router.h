@@ -388,7 +388,7 @@ class NetSpace {
   std::vector<geom::Polygon> wire_union(const std::vector<std::vector<geom::Point>>& wires) const;
 
   // Whether a wire of one point at p keeps the clearance for net `net`: p lies in the domain, at
-  // a Euclidean distance of at least K a from every blockage (exactly; since 2026-12-07: the grown
+  // a Euclidean distance of at least K a from every blockage (exactly; since 2026-12-06: the grown
   // blockages are L-infinity neighbourhoods, which hold points the rule allows, and a pad of the
   // net cut out of them does not count) and in the interior of no other net's grown pin or wire.
   // (A point on such a boundary keeps exactly the clearance.) The wires of the nets `only` marks

@@ -306,7 +306,7 @@ TEST(Route, GeneratedMultiPinLayoutsPassTheCheck) {
       SCOPED_TRACE(kind + " " + tree);
       const std::string in = dir + "/" + kind + ".xml", out = dir + "/" + kind + "." + tree + ".xml";
       // fewer nets under the sanitizers, where a Steiner tree's improvement pass costs seconds; 8
-      // in Release (12 until 2026-12-07: the degenerate layout's Steiner run, 7 of 12 nets left
+      // in Release (12 until 2026-12-06: the degenerate layout's Steiner run, 7 of 12 nets left
       // unrouted, took 17 s of the test's 23 in 96 attempts of rip-up rounds)
       ASSERT_EQ(run_taut({"gen", kind, "--size", "1500", "--nets", kSanitized ? "5" : "8", "--pins", "2-8", "--width", "10",
                           "--spacing", "6", "--seed", "5", "-o", in}).status, 0);
@@ -1348,7 +1348,7 @@ TEST(Route, PadChainsAndOverlapsKeepTheClearance) {
   // keeps the clearance, so the net is refused like a lone pad drawn so (ROUTE-0010), exit 1
   // (pinch) pins that meet only at corners that pinch shut in the cut pads (a0-a1, a1-a2; a3 in
   // a2 against the blockage): the route function found a0 and a3 in different parts of free
-  // space and the net was refused (ROUTE-0010, found by fuzzing, 2026-12-07); pins that all meet
+  // space and the net was refused (ROUTE-0010, found by fuzzing, 2026-12-06); pins that all meet
   // are now joined without a route, a wire of one point at 13,13 (7.07 from the blockage, 6 needed)
   write_text(dir + "/pinch.xml", layout(5, 3, "x0=\"6\" y0=\"18\" x1=\"8\" y1=\"23\"",
                                         pad("a0", 13, 10, 17, 13) + pad("a1", 10, 13, 13, 18) + pad("a2", 8, 18, 10, 19) +

@@ -433,7 +433,7 @@ TEST(CMinLinkLoop, RandomLoopsAgainstTheReferences) {
   long long taut_loops = 0;
   const bool all_sets = std::getenv("TAUT_LOOP_SEARCH_ALL") != nullptr;
   const long long scenes = for_each_small_scene(
-      // 20 seeds until 2026-12-07 (make test's time on CI: the slowest test of both trees); four
+      // 20 seeds until 2026-12-06 (make test's time on CI: the slowest test of both trees); four
       // loops of each scene of one seed under the sanitizers, where its six took 33 s (9 s now)
       static_cast<int>(sanitized_share(14, 14)), 9, 137, 6007,
       [&](int seed, int kind, const Judged& j, const Path& pts, std::mt19937_64& rng64) {

@@ -772,7 +772,7 @@ TEST(Tighten, RegressionSeeds) {
 TEST(Tighten, RandomSketchesAgainstTheReferences) {
   Totals tot;
   // 450 seeds (900 until 2026-12-02: 11,870 sketches, 3,298 winding, 4,604 in the global class;
-  // 600 until 2026-12-07: 7,902 sketches; fewer for make test's time on CI's two cores)
+  // 600 until 2026-12-06: 7,902 sketches; fewer for make test's time on CI's two cores)
   const std::uint64_t n = static_cast<std::uint64_t>(sanitized_share(450, 15));  // / 14 until 2026-12-04 (make test's time on CI)
   for (std::uint64_t seed = 1; seed <= n; ++seed) {
     check_seed(seed, tot);
