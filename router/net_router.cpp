@@ -16,6 +16,8 @@
 #include <thread>
 #include <utility>
 
+#include <boost/pending/disjoint_sets.hpp>
+
 #include "geom/bg.h"
 #include "geom/predicates.h"
 #include "geom/validate.h"
@@ -1177,6 +1179,34 @@ std::int64_t exact_gaps_scale(const Box& domain, std::span<const Polygon> obstac
   return any_angle || octilinear_edges(obstacles, nets) ? gap_scale(domain, rules) : 1;
 }
 
+namespace {
+// Whether the pins all meet: joined pair by pair at points they share on the lattice of multiples
+// of k_lattice (router::shared_point), into one group (false with fewer than two pins).
+bool all_pins_meet(const NetPins& pins, std::int64_t k_lattice) {
+  const std::size_t k = pins.pins.size();
+  if (k < 2) return false;
+  if (std::all_of(pins.pins.begin(), pins.pins.end(), [](const Polygon& g) { return g.outer.size() == 1; }) &&
+      std::any_of(pins.pins.begin(), pins.pins.end(), [&](const Polygon& g) { return g.outer[0] != pins.pins[0].outer[0]; }))
+    return false;  // point pins apart (the common case, decided without the pairs)
+  std::vector<std::size_t> rank(k), parent(k);
+  boost::disjoint_sets<std::size_t*, std::size_t*> groups(rank.data(), parent.data());
+  for (std::size_t i = 0; i < k; ++i) groups.make_set(i);
+  std::size_t left = k;
+  auto on_lattice = [&](Point q) { return k_lattice == 1 || (q.x % k_lattice == 0 && q.y % k_lattice == 0); };
+  for (std::size_t i = 0; i < k && left > 1; ++i)
+    for (std::size_t j = i + 1; j < k && left > 1; ++j) {
+      if (groups.find_set(i) == groups.find_set(j)) continue;
+      const Polygon &a = pins.pins[i], &b = pins.pins[j];
+      if (!geom::boxes_meet(box_of(a.outer), box_of(b.outer))) continue;
+      if (shared_point(a.outer, a, b.outer, b, on_lattice)) {
+        groups.union_set(i, j);
+        --left;
+      }
+    }
+  return left == 1;
+}
+}  // namespace
+
 NetRouter::NetRouter(const geom::Box& domain, std::span<const geom::Polygon> obstacles, std::vector<NetPins> nets,
                      NetRules rules, NetRouterOptions options)
     : scale_(router_scale(domain, obstacles, nets, rules, options)),
@@ -1184,6 +1214,8 @@ NetRouter::NetRouter(const geom::Box& domain, std::span<const geom::Polygon> obs
              scaled(std::move(nets), scale_), with_scale(rules, scale_)),
       options_(options) {
   options_.bend_cost *= scale_;  // lengths are scale_ times (router_scale keeps it <= 2^31)
+  joined_.resize(space_.size());
+  for (std::size_t i = 0; i < space_.size(); ++i) joined_[i] = all_pins_meet(space_.reach(i), scale_);
   covers_pins_ = rules.cover_pieces > 0;
   for (std::size_t i = 0; i < space_.size() && rectilinear_pins_; ++i)
     for (const Polygon& pin : space_.net(i).pins) rectilinear_pins_ = rectilinear_pins_ && is_rectilinear_shape(pin);
@@ -1464,7 +1496,7 @@ std::optional<Point> NetRouter::joined_point(std::size_t net, const NetPins& pin
   std::shared_lock lock(space_mutex_);
   const std::vector<char> none(space_.size(), 0);  // (no net's wires)
   auto usable = [&](Point q) {
-    if (scale_ > 1 && (q.x % scale_ != 0 || q.y % scale_ != 0)) return false;
+    if (!on_lattice(q)) return false;
     switch (level) {
       case NetSpaceLevel::Plain: return true;
       case NetSpaceLevel::Clearance: return space_.keeps_blockage_clearance(q);
@@ -1472,10 +1504,7 @@ std::optional<Point> NetRouter::joined_point(std::size_t net, const NetPins& pin
       default: return space_.keeps_clearance(net, q, only, overlay);
     }
   };
-  // a point pin: the checker's access zone exempts the wire there, and the other nets keep their
-  // clearance from the pin
-  for (const Polygon& g : pins.pins)
-    if (g.outer.size() == 1 && (scale_ == 1 || (g.outer[0].x % scale_ == 0 && g.outer[0].y % scale_ == 0))) return g.outer[0];
+  if (const auto q = lattice_point_pin(pins.pins, scale_)) return q;
   for (std::size_t i = 0; i < pins.pins.size(); ++i)
     for (std::size_t j = i + 1; j < pins.pins.size(); ++j) {
       const Polygon &a = pins.pins[i], &b = pins.pins[j];
@@ -1484,12 +1513,24 @@ std::optional<Point> NetRouter::joined_point(std::size_t net, const NetPins& pin
     }
   if (level == NetSpaceLevel::Plain) return std::nullopt;
   for (const Polygon& g : pins.pins)
-    for (const Point v : space_.clearance_candidates(net, g, overlay, level == NetSpaceLevel::Full))
-      for (const std::int64_t x : geom::lattice_neighbours(2 * std::int64_t{v.x}, scale_))
-        for (const std::int64_t y : geom::lattice_neighbours(2 * std::int64_t{v.y}, scale_)) {
-          const Point c{static_cast<geom::Coord>(x), static_cast<geom::Coord>(y)};
-          if (in_pin(c, g) && usable(c)) return c;
-        }
+    if (const auto q = pin_candidate(net, g, overlay, level == NetSpaceLevel::Full, usable)) return q;
+  return std::nullopt;
+}
+
+std::optional<Point> NetRouter::lattice_point_pin(std::span<const Polygon> pins, std::int64_t scale) {
+  for (const Polygon& g : pins)
+    if (g.outer.size() == 1 && (scale == 1 || (g.outer[0].x % scale == 0 && g.outer[0].y % scale == 0))) return g.outer[0];
+  return std::nullopt;
+}
+
+std::optional<Point> NetRouter::pin_candidate(std::size_t net, const Polygon& g, const WireOverlay* overlay, bool with_wires,
+                                              const std::function<bool(Point)>& usable) const {
+  for (const Point v : space_.clearance_candidates(net, g, overlay, with_wires))
+    for (const std::int64_t x : geom::lattice_neighbours(2 * std::int64_t{v.x}, scale_))
+      for (const std::int64_t y : geom::lattice_neighbours(2 * std::int64_t{v.y}, scale_)) {
+        const Point c{static_cast<geom::Coord>(x), static_cast<geom::Coord>(y)};
+        if (in_pin(c, g) && usable(c)) return c;
+      }
   return std::nullopt;
 }
 
@@ -1502,50 +1543,11 @@ bool NetRouter::point_wire_stuck(const Lines& wires, std::size_t net) const {
     std::shared_lock lock(space_mutex_);
     if (space_.keeps_blockage_clearance(p)) return false;
     for (const Polygon& g : pins)
-      for (const Point v : space_.clearance_candidates(net, g, nullptr, false))
-        for (const std::int64_t x : geom::lattice_neighbours(2 * std::int64_t{v.x}, scale_))
-          for (const std::int64_t y : geom::lattice_neighbours(2 * std::int64_t{v.y}, scale_)) {
-            const Point c{static_cast<geom::Coord>(x), static_cast<geom::Coord>(y)};
-            if (in_pin(c, g) && space_.keeps_blockage_clearance(c)) return false;
-          }
+      if (pin_candidate(net, g, nullptr, false, [&](Point c) { return space_.keeps_blockage_clearance(c); })) return false;
   }
   return !wires.empty();
 }
 
-namespace {
-// A point where the pins meet, when they all meet: joined pair by pair at points they share on
-// the lattice of multiples of k_lattice (router::shared_point), into one group; nullopt otherwise
-// (or with fewer than two pins).
-std::optional<Point> all_pins_meet(const NetPins& pins, std::int64_t k_lattice) {
-  const std::size_t k = pins.pins.size();
-  if (k < 2) return std::nullopt;
-  if (std::all_of(pins.pins.begin(), pins.pins.end(), [](const Polygon& g) { return g.outer.size() == 1; }) &&
-      std::any_of(pins.pins.begin(), pins.pins.end(), [&](const Polygon& g) { return g.outer[0] != pins.pins[0].outer[0]; }))
-    return std::nullopt;  // point pins apart (the common case, decided without the pairs)
-  std::vector<std::size_t> group(k);
-  for (std::size_t i = 0; i < k; ++i) group[i] = i;
-  auto find = [&](std::size_t i) {
-    while (group[i] != i) i = group[i] = group[group[i]];
-    return i;
-  };
-  std::optional<Point> first;
-  std::size_t groups = k;
-  for (std::size_t i = 0; i < k && groups > 1; ++i)
-    for (std::size_t j = i + 1; j < k && groups > 1; ++j) {
-      if (find(i) == find(j)) continue;
-      const Polygon &a = pins.pins[i], &b = pins.pins[j];
-      if (!geom::boxes_meet(box_of(a.outer), box_of(b.outer))) continue;
-      auto on_lattice = [&](Point q) { return k_lattice == 1 || (q.x % k_lattice == 0 && q.y % k_lattice == 0); };
-      if (const auto p = shared_point(a.outer, a, b.outer, b, on_lattice)) {
-        if (!first) first = p;
-        group[find(i)] = find(j);
-        --groups;
-      }
-    }
-  if (groups > 1) return std::nullopt;
-  return first;
-}
-}  // namespace
 
 // A wire of one point (every point the same) is the routers' answer for pins that share a point.
 // In a pad cut out of the grown blockages (a pad is free space for its net) that point may lie
@@ -1564,9 +1566,7 @@ void NetRouter::move_point_wires(Lines& wires, std::size_t net, NetSpaceLevel le
   if (level != NetSpaceLevel::Full) return;
   const std::vector<Polygon>& pins = space_.net(net).pins;
   std::shared_lock lock(space_mutex_);
-  auto usable = [&](Point q) {
-    return (scale_ == 1 || (q.x % scale_ == 0 && q.y % scale_ == 0)) && space_.keeps_clearance(net, q, only, overlay);
-  };
+  auto usable = [&](Point q) { return on_lattice(q) && space_.keeps_clearance(net, q, only, overlay); };
   auto point_pin = [&](Point q) {
     return std::any_of(pins.begin(), pins.end(), [&](const Polygon& g) { return g.outer.size() == 1 && g.outer[0] == q; });
   };
@@ -1588,18 +1588,8 @@ void NetRouter::move_point_wires(Lines& wires, std::size_t net, NetSpaceLevel le
     for (int pass = 0; pass < 3 && !q; ++pass)
       for (const Polygon& g : pins) {
         if (pass == 0 && !in_pin(p, g)) continue;
-        if (pass == 1) {
-          if (g.outer.size() == 1 && (scale_ == 1 || (g.outer[0].x % scale_ == 0 && g.outer[0].y % scale_ == 0))) q = g.outer[0];
-        } else if (g.outer.size() > 1) {
-          for (const Point v : space_.clearance_candidates(net, g, overlay)) {
-            for (const std::int64_t x : geom::lattice_neighbours(2 * std::int64_t{v.x}, scale_))
-              for (const std::int64_t y : geom::lattice_neighbours(2 * std::int64_t{v.y}, scale_)) {
-                const Point c{static_cast<geom::Coord>(x), static_cast<geom::Coord>(y)};
-                if (!q && in_pin(c, g) && usable(c)) q = c;
-              }
-            if (q) break;
-          }
-        }
+        if (pass == 1) q = lattice_point_pin(std::span<const Polygon>(&g, 1), scale_);
+        else if (g.outer.size() > 1) q = pin_candidate(net, g, overlay, true, usable);
         if (q) break;
       }
     if (q) w.assign(w.size(), *q);
@@ -1641,7 +1631,7 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
   // point_wire_stuck then see to its wire). Since 2026-12-06: the route functions take the pins
   // apart, and where they meet only at corners that pinch shut in the cut pads, found pins of the
   // net in different parts of free space (ROUTE-0002, then ROUTE-0010; found by fuzzing).
-  const bool joined = all_pins_meet(pins, scale_).has_value();
+  const bool joined = joined_[net];
   while (true) {
     if (options_.stop && options_.stop()) throw NetRouterStopped();
     const Box w = options_.windows ? clipped(geom::grown_box(hp, m), dom) : dom;

@@ -738,6 +738,16 @@ class NetRouter {
   // net's pins (NetSpace::clearance_candidates, on the lattice) keeps it: the pins meet, and no wire
   // on them can keep the clearance (try_net then fails the attempt, ROUTE-0010).
   bool point_wire_stuck(const std::vector<std::vector<geom::Point>>& wires, std::size_t net) const;
+  // Whether p lies on the scaled plane's lattice (the multiples of scale_; every point when 1).
+  bool on_lattice(geom::Point p) const { return scale_ == 1 || (p.x % scale_ == 0 && p.y % scale_ == 0); }
+  // The first point pin of `pins` on the lattice: always a legal wire of one point (the checker's
+  // access zone exempts the wire there, and the other nets keep their clearance from the pin).
+  static std::optional<geom::Point> lattice_point_pin(std::span<const geom::Polygon> pins, std::int64_t scale);
+  // The first lattice point in pin g, taken next to each of NetSpace::clearance_candidates(net, g,
+  // overlay, with_wires) in turn (geom::lattice_neighbours), that `usable` accepts; the caller
+  // holds space_mutex_. move_point_wires, point_wire_stuck and joined_point try their points so.
+  std::optional<geom::Point> pin_candidate(std::size_t net, const geom::Polygon& g, const WireOverlay* overlay,
+                                           bool with_wires, const std::function<bool(geom::Point)>& usable) const;
   // For pins that all meet: a point on them for a wire of one point that keeps the clearance at
   // this level (none at Plain, the blockages' at Clearance, the other nets' pins' too at Pins, and
   // the wires `only` and the overlay give at Full: the lower levels read no wires), on the
@@ -814,6 +824,9 @@ class NetRouter {
   // the run, so tried once per net and kept)
   std::vector<std::optional<NetAttempt>> alone_;
   std::vector<char> final_undone_;  // per net: its rip-up in the final round was undone
+  // per net: its pins all meet (joined pair by pair at lattice points they share, into one
+  // group), so an attempt first tries a wire of one point on them (try_net_unsnapped)
+  std::vector<char> joined_;
   bool capped_ = false;  // Full attempts stop after options_.search_windows unreachable windows
   // The boxes of every wire piece placed or removed since run() began, with their net (an attempt
   // made ahead, or a failed one kept, is valid while none of another net meets its last window).
