@@ -1231,6 +1231,28 @@ TEST(Route, OverlappingShapePinsPassTheCheck) {
   }
 }
 
+// Routes dir/NAME.xml with the options `extra` into dir/r.xml, expecting exit status `want`,
+// then taut check must pass the result (exit 0), which must hold exactly one route: returned
+// (nullopt, the failure recorded, when any of that does not hold).
+std::optional<io::Route> route_one_net(const std::string& dir, const std::string& name, const std::vector<std::string>& extra,
+                                       int want) {
+  std::string what = "l1";
+  for (const std::string& e : extra) what += " " + e;
+  what += " " + name;
+  std::vector<std::string> cmd{"route", dir + "/" + name + ".xml", "-q", "-o", dir + "/r.xml"};
+  cmd.insert(cmd.end(), extra.begin(), extra.end());
+  const auto r = run_taut(cmd);
+  EXPECT_EQ(r.status, want) << what << r.err;
+  if (r.status != want) return std::nullopt;
+  const auto c = run_taut({"check", dir + "/r.xml"});
+  EXPECT_EQ(c.status, 0) << what << c.err;
+  const io::ReadResult rr = io::read_layout(dir + "/r.xml");
+  const bool one = rr.layout && rr.layout->routes && rr.layout->routes->routes.size() == 1;
+  EXPECT_TRUE(one) << what;
+  if (!one) return std::nullopt;
+  return rr.layout->routes->routes[0];
+}
+
 // Two pads of a net that touch, with a blockage within the clearance of their shared corner: the
 // routers' answer was a wire of one point at that corner, which the checker found too near the
 // blockage (CHECK-0007) while route exited 0 (found by fuzzing, 2026-12-06). The wire of one point
@@ -1265,16 +1287,9 @@ TEST(Route, TouchingPadsNearABlockageKeepTheClearance) {
     std::string what = "l1";
     for (const std::string& e : extra) what += " " + e;
     for (const std::string name : {"two", "three", "side"}) {
-      std::vector<std::string> cmd{"route", dir + "/" + name + ".xml", "-q", "-o", dir + "/r.xml"};
-      cmd.insert(cmd.end(), extra.begin(), extra.end());
-      const auto r = run_taut(cmd);
-      ASSERT_EQ(r.status, 0) << what << " " << name << r.err;
-      const auto c = run_taut({"check", dir + "/r.xml"});
-      EXPECT_EQ(c.status, 0) << what << " " << name << c.err;
-      const io::ReadResult rr = io::read_layout(dir + "/r.xml");
-      ASSERT_TRUE(rr.layout && rr.layout->routes) << what;
-      ASSERT_EQ(rr.layout->routes->routes.size(), 1u);
-      const auto& route = rr.layout->routes->routes[0];
+      const std::optional<io::Route> got = route_one_net(dir, name, extra, 0);
+      if (!got) continue;
+      const io::Route& route = *got;
       EXPECT_EQ(route.status, "routed") << what << " " << name;
       ASSERT_FALSE(route.wires.empty()) << what << " " << name;  // FORMAT.md: one or more
       if (name != "three") {
@@ -1367,27 +1382,16 @@ TEST(Route, PadChainsAndOverlapsKeepTheClearance) {
     std::string what = "l1";
     for (const std::string& e : extra) what += " " + e;
     for (const std::string name : {"chain", "overlap", "clear", "corner", "pinch", "within"}) {
-      std::vector<std::string> cmd{"route", dir + "/" + name + ".xml", "-q", "-o", dir + "/r.xml"};
-      cmd.insert(cmd.end(), extra.begin(), extra.end());
-      const auto r = run_taut(cmd);
-      if (name == "within") {
-        EXPECT_EQ(r.status, 1) << what << r.err;
-        EXPECT_EQ(run_taut({"check", dir + "/r.xml", "-q"}).status, 0) << what;
-        const io::ReadResult rr = io::read_layout(dir + "/r.xml");
-        ASSERT_TRUE(rr.layout && rr.layout->routes && rr.layout->routes->routes.size() == 1) << what;
-        const io::Route& route = rr.layout->routes->routes[0];
-        EXPECT_EQ(route.status, "failed") << what;
-        EXPECT_NE(route.reason.value_or("").find("its pins meet"), std::string::npos) << what << route.reason.value_or("");
+      const bool within = name == "within";
+      const std::optional<io::Route> route = route_one_net(dir, name, extra, within ? 1 : 0);
+      if (!route) continue;
+      if (within) {
+        EXPECT_EQ(route->status, "failed") << what;
+        EXPECT_NE(route->reason.value_or("").find("its pins meet"), std::string::npos) << what << route->reason.value_or("");
         continue;
       }
-      ASSERT_EQ(r.status, 0) << what << " " << name << r.err;
-      const auto c = run_taut({"check", dir + "/r.xml"});
-      EXPECT_EQ(c.status, 0) << what << " " << name << c.err;
-      const io::ReadResult rr = io::read_layout(dir + "/r.xml");
-      ASSERT_TRUE(rr.layout && rr.layout->routes) << what;
-      ASSERT_EQ(rr.layout->routes->routes.size(), 1u);
-      EXPECT_EQ(rr.layout->routes->routes[0].status, "routed") << what << " " << name;
-      EXPECT_FALSE(rr.layout->routes->routes[0].wires.empty()) << what << " " << name;  // FORMAT.md: one or more
+      EXPECT_EQ(route->status, "routed") << what << " " << name;
+      EXPECT_FALSE(route->wires.empty()) << what << " " << name;  // FORMAT.md: one or more
     }
   }
 }
