@@ -10,6 +10,18 @@ bool on_segment(Point p, Point a, Point b) {
          std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
 }
 
+SquaredDistance point_segment_distance2(Point p, Point a, Point b) {
+  const i128 ux = i128{b.x} - a.x, uy = i128{b.y} - a.y, vx = i128{p.x} - a.x, vy = i128{p.y} - a.y;
+  const i128 t = ux * vx + uy * vy, l = ux * ux + uy * uy;
+  if (l == 0 || t <= 0) return {vx * vx + vy * vy, 1};
+  if (t >= l) {
+    const i128 wx = i128{p.x} - b.x, wy = i128{p.y} - b.y;
+    return {wx * wx + wy * wy, 1};
+  }
+  const i128 c = ux * vy - uy * vx;  // |c| < 2^63
+  return {c * c, l};
+}
+
 SegmentIntersection intersect(Segment s, Segment t) {
   const int d1 = orientation(s.a, s.b, t.a);
   const int d2 = orientation(s.a, s.b, t.b);

@@ -46,6 +46,14 @@ inline constexpr i64 dot(Point a, Point b, Point c, Point d) {
 // True when p lies on the closed segment ab (ab may be degenerate).
 bool on_segment(Point p, Point a, Point b);
 
+// The squared Euclidean distance from p to the closed segment ab (ab may be degenerate), exactly:
+// num / den with den > 0 (den = |ab|^2 where the nearest point lies inside ab, else 1). With
+// coordinates within 2^31, num < 2^126 and den < 2^65.
+struct SquaredDistance {
+  i128 num = 0, den = 1;
+};
+SquaredDistance point_segment_distance2(Point p, Point a, Point b);
+
 // How two closed segments meet. Either segment may be a single point (a == b): a point on the
 // other segment is a Touch, two equal points are a Touch, otherwise None.
 enum class SegmentIntersection {

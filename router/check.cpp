@@ -74,15 +74,8 @@ bool at_least(Dist2 d, i64 twice) { return Big(d.num) * 4 >= Big(twice) * Big(tw
 double approx(Dist2 d) { return std::sqrt(static_cast<double>(d.num) / static_cast<double>(d.den)); }
 // Point p to the closed segment ab.
 Dist2 point_segment(Point p, Point a, Point b) {
-  const Dir ab = dir(a, b), ap = dir(a, p);
-  const i128 len2 = dotp(ab, ab), t = dotp(ap, ab);
-  if (len2 == 0 || t <= 0) return {dotp(ap, ap), 1};
-  if (t >= len2) {
-    const Dir bp = dir(b, p);
-    return {dotp(bp, bp), 1};
-  }
-  const i128 c = cross(ab, ap);
-  return {c * c, len2};  // |c| < 2^63: c^2 < 2^126
+  const geom::SquaredDistance d = geom::point_segment_distance2(p, a, b);
+  return {d.num, d.den};
 }
 bool smaller(Dist2 x, Dist2 y) { return Big(x.num) * Big(y.den) < Big(y.num) * Big(x.den); }
 // The closed segments ab and cd (0 when they meet).

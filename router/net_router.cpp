@@ -775,18 +775,9 @@ bool NetSpace::keeps_blockage_clearance(Point p) const {
   const i128 r = i128{rule_a_} * scale_;
   auto far_from = [&](const Ring& ring) {  // |p - ab| >= r for every edge ab, exactly
     for (std::size_t i = 0; i < ring.size(); ++i) {
-      const Point a = ring[i], b = ring[(i + 1) % ring.size()];
-      const i128 ux = i128{b.x} - a.x, uy = i128{b.y} - a.y, vx = i128{p.x} - a.x, vy = i128{p.y} - a.y;
-      const i128 t = ux * vx + uy * vy, l = ux * ux + uy * uy;
-      i128 d2num, d2den = 1;  // (coordinates within 2^30: every product below fits)
-      if (t <= 0 || l == 0) d2num = vx * vx + vy * vy;
-      else if (t >= l) d2num = (i128{p.x} - b.x) * (i128{p.x} - b.x) + (i128{p.y} - b.y) * (i128{p.y} - b.y);
-      else {
-        const i128 cr = ux * vy - uy * vx;
-        d2num = cr * cr;
-        d2den = l;
-      }
-      if (d2num < r * r * d2den) return false;
+      // (coordinates within 2^30 and r within 2^31: r^2 den fits)
+      const geom::SquaredDistance d = geom::point_segment_distance2(p, ring[i], ring[(i + 1) % ring.size()]);
+      if (d.num < r * r * d.den) return false;
     }
     return true;
   };

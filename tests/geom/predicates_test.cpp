@@ -449,6 +449,33 @@ TEST(Predicates, TwiceAreaMatchesGmp) {
   EXPECT_EQ(Z(twice_area(rev)), -8 * Z(L) * Z(L));
 }
 
+// The reference: the nearest point a + lambda (b - a), lambda the projection clamped to [0, 1],
+// and its squared distance, all in GMP rationals (no case for the segment's inside).
+TEST(Predicates, PointSegmentDistanceMatchesGmp) {
+  int inside = 0;
+  for (int i = 0; i < 20000; ++i) {
+    Gen g(kBaseSeed + 300000 + i);
+    const int mode = i % 5;
+    const Point a = g.point(mode), b = (i % 13 == 0) ? a : g.point(mode), p = (i % 11 == 0) ? a : g.point(mode);
+    mpq_class lambda = 0;
+    const mpz_class len2 = dot_ref(a, b, b);
+    if (len2 != 0) {
+      lambda = mpq_class(dot_ref(a, p, b), len2);
+      lambda.canonicalize();
+      inside += lambda > 0 && lambda < 1;
+      lambda = std::clamp(lambda, mpq_class(0), mpq_class(1));
+    }
+    const mpq_class qx = Z(a.x) + lambda * (Z(b.x) - Z(a.x)), qy = Z(a.y) + lambda * (Z(b.y) - Z(a.y));
+    const mpq_class ref = (Z(p.x) - qx) * (Z(p.x) - qx) + (Z(p.y) - qy) * (Z(p.y) - qy);
+    const SquaredDistance d = point_segment_distance2(p, a, b);
+    ASSERT_GT(d.den, 0) << "seed " << kBaseSeed + 300000 + i;
+    mpq_class got(Z(d.num), Z(d.den));
+    got.canonicalize();
+    ASSERT_EQ(got, ref) << "seed " << kBaseSeed + 300000 + i;
+  }
+  EXPECT_GT(inside, 3000);  // the nearest point inside the segment, not only at its ends
+}
+
 }  // namespace predicates_test
 }  // namespace taut::geom
 
