@@ -27,6 +27,8 @@
 //   IO-0020  a blockage has no <rect> or <polygon>
 //   IO-0021  a polyline (sketch, wire) has fewer than 2 points, or a ring fewer than 1
 //   IO-0022  an id or name is empty
+//   IO-0023  <routes metric> is not l1 | euclidean | combined | link (<routes orientations>: IO-0015,
+//            also for a c: set with fewer than 2 directions modulo 180 degrees)
 //   GEOM-0008 a rect or the boundary is empty (x0 >= x1 or y0 >= y1)
 #include "io/layout_reader.h"
 
@@ -35,10 +37,12 @@
 #include <libxml/tree.h>
 #include <libxml/xmlerror.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <charconv>
 #include <climits>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -454,8 +458,8 @@ class Reader {
           return fail("vertex " + std::to_string(out.size() + 1) + ": " + quoted(tok) +
                       " is not an integer");
         case IntError::Range:
-          return fail("vertex " + std::to_string(out.size() + 1) + ": " + quoted(tok) +
-                      " is out of range");
+          return fail("vertex " + std::to_string(out.size() + 1) + ": " + quoted(tok) + " is out of range [" +
+                      std::to_string(-geom::kMaxCoord) + ", " + std::to_string(geom::kMaxCoord) + "]");
         case IntError::None:
           break;
       }
@@ -706,8 +710,27 @@ class Reader {
     Attrs a;
     attrs(n, "routes", {"tool", "metric", "orientations", "bend-cost"}, a);
     if (a.present[0]) r.tool = std::string(a.value[0]);
-    if (a.present[1]) r.metric = std::string(a.value[1]);
-    if (a.present[2]) r.orientations = std::string(a.value[2]);
+    // (since 2026-12-06 the values are checked: before, a typo such as orientations="rectilniear"
+    // made taut check skip the wires' directions without a word; found by fuzzing)
+    if (a.present[1]) {
+      r.metric = std::string(a.value[1]);
+      if (r.metric != "l1" && r.metric != "euclidean" && r.metric != "combined" && r.metric != "link")
+        error("IO-0023", line_of(n), "routes: attribute metric: " + quoted(r.metric) + " is not l1, euclidean, combined or link");
+    }
+    if (a.present[2]) {
+      Rules syntax;  // the same values as <rules orientations> (IO-0015)
+      const std::size_t before = diagnostics_.size();
+      orientations(n, Ctx("routes"), a.value[2], syntax);
+      r.orientations = std::string(a.value[2]);
+      // and, as LAYOUT-0014 asks of <rules>, two directions at least modulo 180 degrees
+      std::vector<double> mod;
+      for (const double d : syntax.orientation_degrees) mod.push_back(std::fmod(d, 180.0));
+      std::sort(mod.begin(), mod.end());
+      mod.erase(std::unique(mod.begin(), mod.end()), mod.end());
+      if (diagnostics_.size() == before && !syntax.orientation_degrees.empty() && mod.size() < 2)
+        error("IO-0015", line_of(n),
+              "routes: attribute orientations: " + quoted(r.orientations) + " has fewer than 2 distinct directions modulo 180 degrees");
+    }
     std::int64_t c = 0;
     if (a.present[3] && integer(n, Ctx("routes"), "bend-cost", a.value[3], c, 0)) r.bend_cost = c;
     for (const xmlNode* c = n->children; c; c = c->next) {

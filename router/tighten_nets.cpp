@@ -341,6 +341,16 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
 
   const std::int64_t margin0 = 2 * (space.blockage_clearance() + space.net_clearance()) + 64;
   const Box dom = space.domain();
+  // The window round a line: its box grown by the margin, clipped to the domain; the whole domain
+  // when that leaves no area (a line far outside the domain, as a hand-edited wire: its lift then
+  // fails there, at the first point outside, as it does without windows; since 2026-12-06, before
+  // which the empty window reached the triangulation and taut tighten --clearance exited 3;
+  // found by fuzzing).
+  auto window = [&](const std::vector<Point>& line, std::int64_t margin) {
+    if (!options_.windows) return dom;
+    const Box w = geom::clipped_box(geom::grown_box(geom::bounding_box(line), margin), dom);
+    return w.lo.x < w.hi.x && w.lo.y < w.hi.y ? w : dom;
+  };
   std::vector<std::pair<Box, std::size_t>> changed;  // boxes of every net's wires changed, with the net
   std::vector<std::size_t> since(n, 0);
   std::vector<std::optional<Box>> seen(n);  // the windows a net's last tightening used (their hull)
@@ -367,7 +377,7 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
     }
     while (true) {
       if (options_.stop && options_.stop()) throw NetRouterStopped();
-      const Box w = options_.windows ? geom::clipped_box(geom::grown_box(geom::bounding_box(line), margin), dom) : dom;
+      const Box w = window(line, margin);
       const bool whole = w == dom;
       ++stats_.windows;
       stats_.whole += whole;
@@ -401,7 +411,7 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
   // The lift of a line in net i's space as it is now, in a window round the line.
   auto lift_now = [&](std::size_t i, const std::vector<Point>& line, std::size_t* seg, Point* where) {
     if (options_.stop && options_.stop()) throw NetRouterStopped();
-    const Box w = options_.windows ? geom::clipped_box(geom::grown_box(geom::bounding_box(line), margin0), dom) : dom;
+    const Box w = window(line, margin0);
     const SpaceTightener st(space.obstacles(i, NetSpaceLevel::Full, w == dom ? std::nullopt : std::optional<Box>(w)),
                             TightenOrientations::Any);
     const Tightener& t = st.tightener();

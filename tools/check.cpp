@@ -188,7 +188,7 @@ void add_check(CLI::App& app, int& status) {
         // set (geom/directions.h) every wire segment runs in those directions (CHECK-0002, the first offending segment of each route); then
         // the independent checker (router/check.h): free space, connectivity, shorts and the
         // clearance of <rules>.
-        int mismatches = 0, off_orientation = 0;
+        int mismatches = 0, off_orientation = 0, failed_with_wires = 0;
         const std::string& orientations = layout->routes->orientations;
         // rectilinear, octilinear and the other lattice c: sets (multiples of 45 degrees)
         const std::optional<geom::LatticeDirections> set = geom::LatticeDirections::parse(orientations);
@@ -204,7 +204,23 @@ void add_check(CLI::App& app, int& status) {
           set_words += " degrees";
         }
         for (const io::Route& r : layout->routes->routes) {
-          if (r.status != "routed") continue;
+          if (r.status != "routed") {
+            // FORMAT.md: a failed route gives a reason and no wires; wires kept on one are checked
+            // by nothing below (neither free space nor clearance), so the file is refused
+            // (CHECK-0009; since 2026-12-06: before, taut check passed such a file whatever the
+            // wires were, one inside a blockage included; found by fuzzing hand-edited routes)
+            if (!r.wires.empty()) {
+              ++failed_with_wires;
+              Diagnostic d{Severity::Error, "CHECK-0009", args->file, r.line, 0,
+                           "route \"" + r.net + "\": status is " + r.status + " but it has " + std::to_string(r.wires.size()) +
+                               " <wire>" + (r.wires.size() == 1 ? "" : "s") +
+                               " (first at line " + std::to_string(r.wires[0].line) +
+                               "): a failed route has none; write status=\"routed\" to have them checked, or remove them"};
+              diags.push_back(d);
+              std::cerr << format(d) << '\n';
+            }
+            continue;
+          }
           std::vector<std::vector<geom::Point>> wires;
           long bends = 0;
           for (const io::Wire& w : r.wires) {
@@ -245,6 +261,7 @@ void add_check(CLI::App& app, int& status) {
         auto verdict = [](int n) { return n == 0 ? "ok" : "failed"; };
         j["routes_check"] = {{"lengths_and_bends", mismatches == 0 ? "ok" : "failed"},
                              {"mismatches", mismatches},
+                             {"failed_with_wires", failed_with_wires},
                              {"orientations", !check_directions        ? "not checked"
                                               : off_orientation == 0 ? "ok"
                                                                      : "failed"},
@@ -262,8 +279,8 @@ void add_check(CLI::App& app, int& status) {
                                            {"net_clearance", rp.net_clearance}}},
                              {"wires", rp.wires}};
         j["diagnostics"] = diagnostics_json(diags);
-        j["errors"] = errors + mismatches + off_orientation + rp.total();
-        if (mismatches || off_orientation || rp.total()) status = kIncomplete;
+        j["errors"] = errors + mismatches + off_orientation + failed_with_wires + rp.total();
+        if (mismatches || off_orientation || failed_with_wires || rp.total()) status = kIncomplete;
       }
       j["free_space"] = {{"triangles", triangles}};
       j["seconds"] = {{"normalize", std::chrono::duration<double>(t1 - t0).count()},
@@ -290,7 +307,11 @@ void add_check(CLI::App& app, int& status) {
                   << "; free space " << j["routes_check"]["free_space"].get<std::string>() << "; connectivity "
                   << j["routes_check"]["connectivity"].get<std::string>() << "; shorts between nets "
                   << (j["routes_check"]["shorts"] == "ok" ? std::string("none") : std::string("found"))
-                  << "; clearance " << j["routes_check"]["clearance"].get<std::string>() << "\n";
+                  << "; clearance " << j["routes_check"]["clearance"].get<std::string>()
+                  << (j["routes_check"]["failed_with_wires"].get<int>() > 0
+                          ? "; failed routes with wires: " + std::to_string(j["routes_check"]["failed_with_wires"].get<int>())
+                          : std::string())
+                  << "\n";
     }
   });
 }

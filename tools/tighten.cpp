@@ -584,7 +584,8 @@ void add_tighten(CLI::App& app, int& status) {
                         : "'s segment " + std::to_string(lift.segment + 1) + " (" + point_text(line[lift.segment]) +
                               " to " + point_text(line[lift.segment + 1]) + ") comes " + within + " at or after " +
                               point_text(lift.where)) +
-                   ": sketches of different nets must keep that apart, as they say which way each passes the other";
+                   (what == "sketch" ? ": sketches of different nets must keep that apart, as they say which way each passes the other"
+                                     : ": wires of different nets must keep that apart (taut check: CHECK-0008)");
           }
           errors.push_back(Diagnostic{Severity::Error, "TIGHTEN-0001", layout->file, in.line_numbers[k], 0, text});
           continue;

@@ -104,6 +104,36 @@ TEST(CheckRoutes, ALegalRoutePasses) {
   EXPECT_EQ(c["clearance"], "not required");  // no <rules>
 }
 
+// A failed route keeps no wires (FORMAT.md): one that does is CHECK-0009, at the route's line,
+// naming the net and its first wire's line, exit status 1, counted in the JSON; here the wire runs
+// through the wall, which nothing else checks for a failed route (found by fuzzing hand-edited
+// routes, 2026-12-06: taut check passed such a file).
+TEST(CheckRoutes, AFailedRouteWithWiresIsRefused) {
+  const std::string file = test::layout_file(
+      "check_routes_failed_wires",
+      kLayout +
+          "<routes tool=\"hand\" metric=\"l1\" orientations=\"rectilinear\">\n"
+          "<route net=\"ok\" status=\"routed\" length=\"80\" bends=\"0\"><wire points=\"10,10 10,90\"/></route>\n"
+          "<route net=\"through\" status=\"failed\" reason=\"hand\">\n<wire points=\"30,20 70,20\"/></route>\n"
+          "</routes>\n");
+  const std::string text = test::read_text(file);
+  const test::RunResult r = run_taut({"check", file, "--json"});
+  ASSERT_EQ(r.status, 1) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["routes_check"]["failed_with_wires"], 1);
+  EXPECT_EQ(j["routes_check"]["free_space"], "ok");  // (the routed nets' wires)
+  EXPECT_EQ(j["errors"], 1);
+  const std::string at = file + ":" + std::to_string(line_of(text, "net=\"through\"")) + ": error: [CHECK-0009]";
+  const std::size_t k = r.err.find(at);
+  ASSERT_NE(k, std::string::npos) << "no " << at << " in\n" << r.err;
+  const std::string msg = r.err.substr(k, r.err.find('\n', k) - k);
+  EXPECT_NE(msg.find("route \"through\""), std::string::npos) << msg;
+  EXPECT_NE(msg.find("line " + std::to_string(line_of(text, "30,20 70,20"))), std::string::npos) << msg;
+  const test::RunResult t = run_taut({"check", file});
+  EXPECT_EQ(t.status, 1);
+  EXPECT_NE(t.out.find("failed routes with wires: 1"), std::string::npos) << t.out;
+}
+
 // With <rules wire-width="2" spacing="1">: w/2 + s = 2 from blockages, w + s = 3 between nets.
 // The legal route of "through" runs along the wall's side (CHECK-0007, naming the wall); "pinch"
 // runs 2 from "ok"'s wire and its pin b (CHECK-0008, naming both); its first steps off its pin

@@ -908,6 +908,39 @@ TEST(Tighten, NoLatticeStaircaseInTheClassIsAFailedNet) {
   EXPECT_EQ(read_text(dir + "/r.xml"), "old");
 }
 
+// A routed wire far outside the boundary (a hand-edited file): refused with TIGHTEN-0001 at its
+// line, exit 2, nothing written, with --clearance too, with and without <rules>. With
+// --clearance the tightener's window round the wire, clipped to the boundary, was empty and
+// reached the triangulation: exit 3, an internal error (found by fuzzing, 2026-12-06); a wire
+// outside by less than the window's margin was refused as it should be.
+TEST(Tighten, AWireFarOutsideTheBoundaryIsRefused) {
+  const std::string dir = temp_dir("tighten_wire_outside_out");
+  for (const std::string rules : {"", "  <rules wire-width=\"4\" spacing=\"2\"/>\n"})
+    for (const std::string y : {"1050", "1500", "900000"}) {
+      const std::string file = layout_file(
+          "tighten_wire_outside",
+          "  <boundary x0=\"0\" y0=\"0\" x1=\"1000\" y1=\"1000\"/>\n" + rules +
+              "  <net name=\"a\"><pin name=\"l\" x=\"100\" y=\"500\"/><pin name=\"r\" x=\"900\" y=\"500\"/></net>\n"
+              "  <routes><route net=\"a\" status=\"routed\" length=\"800\" bends=\"0\">\n"
+              "    <wire points=\"100," + y + " 900," + y + "\"/></route></routes>\n");
+      const int line = rules.empty() ? 5 : 6;
+      for (const bool clearance : {false, true}) {
+        if (!clearance && !rules.empty()) continue;  // (TIGHTEN-0006: the rules need --clearance)
+        write_text(dir + "/t.xml", "old");
+        std::vector<std::string> cmd{"tighten", file, "-o", dir + "/t.xml"};
+        if (clearance) cmd.push_back("--clearance");
+        const auto run = run_taut(cmd);
+        const std::string what = "y " + y + (clearance ? " --clearance" : "") + (rules.empty() ? "" : " with rules");
+        EXPECT_EQ(run.status, 2) << what << run.err;
+        EXPECT_NE(run.err.find(":" + std::to_string(line) + ": error: [TIGHTEN-0001] net \"a\": the wire starts at 100," + y +
+                               ", which lies outside the boundary"),
+                  std::string::npos)
+            << what << run.err;
+        EXPECT_EQ(read_text(dir + "/t.xml"), "old") << what;
+      }
+    }
+}
+
 // c:45,135 steps keep the parity of x + y: a net whose pins differ in it has no wire in those
 // directions (TIGHTEN-0004, failed, exit 1, with the reason), while c:0,45,90 writes it; the same
 // layout with the set in <rules> is tightened in it (no TIGHTEN-0003).

@@ -137,6 +137,8 @@ case('points_separator.xml', text(poly('1000,1000;2000,1000;2000,2000')), 'IO-00
 case('points_space_in_pair.xml', text(poly('1000, 1000 2000,1000 2000,2000')), 'IO-0014', 4, 'points')
 case('points_odd.xml', text(poly('1000,1000 2000,1000 2000')), 'IO-0014', 4, 'points')
 case('points_float.xml', text(poly('1000,1000 2000.5,1000 2000,2000')), 'IO-0014', 4, '"2000.5"')
+case('points_2p30.xml', text(poly('1000,1000 1073741824,1000 2000,2000')), 'IO-0014', 4,
+     '"1073741824" is out of range [-1073741823, 1073741823]')
 case('orientations_bad.xml', text(None, {4: '  <rules orientations="c:0,-45"/>'}), 'IO-0015', 4, 'orientations')
 case('orientations_unknown.xml', text(None, {4: '  <rules orientations="manhattan"/>'}), 'IO-0015', 4,
      'orientations')
@@ -154,6 +156,17 @@ case('route_bad_status.xml', text(None, {9: ROUTES('    <route net="n0" status="
      'IO-0019', 10, 'status')
 case('route_bad_length.xml', text(None, {9: ROUTES('    <route net="n0" status="failed" length="1.5"/>')}),
      'IO-0019', 10, 'length')
+# <routes orientations> and metric are checked as <rules orientations> is (since 2026-12-06: a typo
+# made taut check skip the wires' directions without a word)
+case('routes_orientations_unknown.xml',
+     text(None, {9: ['  <routes tool="t" orientations="rectilniear">', '    <route net="n0" status="failed"/>', '  </routes>']}),
+     'IO-0015', 9, 'rectilniear')
+case('routes_orientations_one_direction.xml',
+     text(None, {9: ['  <routes tool="t" orientations="c:0,180">', '    <route net="n0" status="failed"/>', '  </routes>']}),
+     'IO-0015', 9, 'fewer than 2 distinct directions')
+case('routes_metric_unknown.xml',
+     text(None, {9: ['  <routes tool="t" metric="manhattan">', '    <route net="n0" status="failed"/>', '  </routes>']}),
+     'IO-0023', 9, 'manhattan')
 case('blockage_empty.xml', text({4: '  <blockage id="ram0"/>'}), 'IO-0020', 4, 'ram0')
 case('wire_one_point.xml',
      text(None, {9: ROUTES('    <route net="n0" status="routed"><wire points="100,100"/></route>')}),
