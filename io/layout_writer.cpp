@@ -4,6 +4,8 @@
 // vertices is written in well under a second.
 #include "io/layout_writer.h"
 
+#include "io/xml_text.h"
+
 #include <charconv>
 
 namespace taut::io {
@@ -27,7 +29,8 @@ class XmlOut {
   // Attribute value: escapes the five XML specials, and tab/newline/CR as character references
   // (a parser would otherwise normalize them to spaces, breaking the round trip). Bytes that
   // XML 1.0 cannot carry (other control characters, invalid UTF-8) become U+FFFD, so the output
-  // is always well-formed; names read from a file never contain them.
+  // is always well-formed; names read from a layout file never contain them (taut import refuses
+  // DEF and LEF names with them, IO-0130).
   void escaped(std::string_view s) {
     for (std::size_t i = 0; i < s.size(); ++i) {
       const char c = s[i];
@@ -58,35 +61,6 @@ class XmlOut {
             out_ += c;
       }
     }
-  }
-
-  // Length of the well-formed UTF-8 sequence starting at s[i] (a byte >= 0x80), 0 if invalid
-  // (overlong forms, surrogates, beyond U+10FFFF, truncated).
-  static std::size_t utf8_length(std::string_view s, std::size_t i) {
-    const auto b = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
-    const unsigned lead = b(i);
-    std::size_t n;
-    unsigned lo = 0x80, hi = 0xBF;  // allowed range of the second byte
-    if (lead >= 0xC2 && lead <= 0xDF) {
-      n = 2;
-    } else if (lead >= 0xE0 && lead <= 0xEF) {
-      n = 3;
-      if (lead == 0xE0) lo = 0xA0;
-      if (lead == 0xED) hi = 0x9F;
-    } else if (lead >= 0xF0 && lead <= 0xF4) {
-      n = 4;
-      if (lead == 0xF0) lo = 0x90;
-      if (lead == 0xF4) hi = 0x8F;
-    } else {
-      return 0;
-    }
-    if (i + n > s.size()) return 0;
-    if (b(i + 1) < lo || b(i + 1) > hi) return 0;
-    for (std::size_t k = 2; k < n; ++k)
-      if (b(i + k) < 0x80 || b(i + k) > 0xBF) return 0;
-    // U+FFFE and U+FFFF are not XML characters either.
-    if (n == 3 && lead == 0xEF && b(i + 1) == 0xBF && b(i + 2) >= 0xBE) return 0;
-    return n;
   }
 
   void attr(const char* name, std::string_view value) {

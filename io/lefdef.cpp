@@ -6,6 +6,8 @@
 // subset a planar layer needs is small.)
 #include "io/lefdef.h"
 
+#include "io/xml_text.h"
+
 #include "geom/normalize.h"
 #include "io/stats_json.h"
 
@@ -13,6 +15,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cstdio>
 #include <fstream>
 #include <limits>
 #include <map>
@@ -1485,6 +1488,34 @@ Layout assemble(const Def& d, const Lib& lib, const DefImportOptions& o, const C
     rs.routes = std::move(kept);
     out.routes = std::move(rs);
   }
+  // Names are written as XML text: a byte XML cannot carry (Latin-1 letters, control characters)
+  // would be written as U+FFFD, and two names differing there would become one (since
+  // 2026-12-06: import wrote such a layout, which taut check then refused, LAYOUT-0001/0002;
+  // found by fuzzing)
+  auto text_name = [&](const std::string& what, const std::string& name, int line) {
+    const std::size_t k = first_non_xml_byte(name);
+    if (k == std::string::npos) return;
+    char byte[8];
+    std::snprintf(byte, sizeof byte, "0x%02X", static_cast<unsigned>(static_cast<unsigned char>(name[k])));
+    std::string shown;
+    for (const char ch : name) {
+      const auto u = static_cast<unsigned char>(ch);
+      if (u >= 0x20 && u < 0x7F) shown += ch;
+      else {
+        char esc[8];
+        std::snprintf(esc, sizeof esc, "\\x%02X", static_cast<unsigned>(u));
+        shown += esc;
+      }
+    }
+    dc.fail("IO-0130", what + " \"" + shown + "\" has byte " + byte + " at " + std::to_string(k + 1) +
+                           ", which is no UTF-8 character XML can carry: taut writes names as UTF-8 XML (rename it in the DEF or LEF)",
+            line);
+  };
+  for (const Net& n : out.nets) {
+    text_name("net", n.name, n.line);
+    for (const Pin& p : n.pins) text_name("pin of net " + n.name, p.name, p.line);
+  }
+  for (const Blockage& b : out.blockages) text_name("blockage", b.id, b.line);
   if (out.nets.empty() && out.blockages.empty()) dc.fail("IO-0125", "no shape of the design is on layer " + o.layer, 0);
   stats.nets = out.nets.size();
   stats.pins = pins_written;

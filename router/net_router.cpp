@@ -1171,32 +1171,45 @@ std::int64_t exact_gaps_scale(const Box& domain, std::span<const Polygon> obstac
 }
 
 namespace {
-// Whether the pins all meet: joined pair by pair at points they share on the lattice of multiples
-// of k_lattice (router::shared_point), into one group (false with fewer than two pins).
-bool all_pins_meet(const NetPins& pins, std::int64_t k_lattice) {
+// The pins in groups that meet: joined pair by pair at points they share on the lattice of
+// multiples of k_lattice (router::shared_point), each group's pins in increasing order, the groups
+// in the order of their first pin.
+std::vector<std::vector<std::size_t>> pin_groups(const NetPins& pins, std::int64_t k_lattice) {
   const std::size_t k = pins.pins.size();
-  if (k < 2) return false;
+  std::vector<std::vector<std::size_t>> out;
   if (std::all_of(pins.pins.begin(), pins.pins.end(), [](const Polygon& g) { return g.outer.size() == 1; }) &&
-      std::any_of(pins.pins.begin(), pins.pins.end(), [&](const Polygon& g) { return g.outer[0] != pins.pins[0].outer[0]; }))
-    return false;  // point pins apart (the common case, decided without the pairs)
+      std::any_of(pins.pins.begin(), pins.pins.end(), [&](const Polygon& g) { return g.outer[0] != pins.pins[0].outer[0]; })) {
+    // point pins apart (the common case, decided without the pairs): each its own group, unless
+    // two share their point
+    std::map<Point, std::size_t> at;
+    for (std::size_t i = 0; i < k; ++i) {
+      const auto [it, fresh] = at.try_emplace(pins.pins[i].outer[0], out.size());
+      if (fresh) out.emplace_back();
+      out[it->second].push_back(i);
+    }
+    return out;
+  }
   std::vector<std::size_t> rank(k), parent(k);
   boost::disjoint_sets<std::size_t*, std::size_t*> groups(rank.data(), parent.data());
   for (std::size_t i = 0; i < k; ++i) groups.make_set(i);
-  std::size_t left = k;
   auto on_lattice = [&](Point q) { return k_lattice == 1 || (q.x % k_lattice == 0 && q.y % k_lattice == 0); };
-  for (std::size_t i = 0; i < k && left > 1; ++i)
-    for (std::size_t j = i + 1; j < k && left > 1; ++j) {
+  for (std::size_t i = 0; i < k; ++i)
+    for (std::size_t j = i + 1; j < k; ++j) {
       if (groups.find_set(i) == groups.find_set(j)) continue;
       const Polygon &a = pins.pins[i], &b = pins.pins[j];
       if (!geom::boxes_meet(box_of(a.outer), box_of(b.outer))) continue;
-      if (shared_point(a.outer, a, b.outer, b, on_lattice)) {
-        groups.union_set(i, j);
-        --left;
-      }
+      if (shared_point(a.outer, a, b.outer, b, on_lattice)) groups.union_set(i, j);
     }
-  return left == 1;
+  std::map<std::size_t, std::size_t> index;  // a group's root -> its place in out
+  for (std::size_t i = 0; i < k; ++i) {
+    const auto [it, fresh] = index.try_emplace(groups.find_set(i), out.size());
+    if (fresh) out.emplace_back();
+    out[it->second].push_back(i);
+  }
+  return out;
 }
 }  // namespace
+
 
 NetRouter::NetRouter(const geom::Box& domain, std::span<const geom::Polygon> obstacles, std::vector<NetPins> nets,
                      NetRules rules, NetRouterOptions options)
@@ -1206,7 +1219,13 @@ NetRouter::NetRouter(const geom::Box& domain, std::span<const geom::Polygon> obs
       options_(options) {
   options_.bend_cost *= scale_;  // lengths are scale_ times (router_scale keeps it <= 2^31)
   joined_.resize(space_.size());
-  for (std::size_t i = 0; i < space_.size(); ++i) joined_[i] = all_pins_meet(space_.reach(i), scale_);
+  groups_.resize(space_.size());
+  for (std::size_t i = 0; i < space_.size(); ++i) {
+    std::vector<std::vector<std::size_t>> g = pin_groups(space_.reach(i), scale_);
+    const std::size_t k = space_.reach(i).pins.size();
+    joined_[i] = k >= 2 && g.size() == 1;
+    if (g.size() > 1 && g.size() < k) groups_[i] = std::move(g);
+  }
   covers_pins_ = rules.cover_pieces > 0;
   for (std::size_t i = 0; i < space_.size() && rectilinear_pins_; ++i)
     for (const Polygon& pin : space_.net(i).pins) rectilinear_pins_ = rectilinear_pins_ && is_rectilinear_shape(pin);
@@ -1348,6 +1367,7 @@ void add_counts(NetRouterStats& to, const NetRouterStats& c) {
   to.whole_seconds += c.whole_seconds;
   to.capped += c.capped;
   to.superset_apart += c.superset_apart;
+  to.group_choices += c.group_choices;
   to.snap_far += c.snap_far;
 }
 
@@ -1623,6 +1643,18 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
   // apart, and where they meet only at corners that pinch shut in the cut pads, found pins of the
   // net in different parts of free space (ROUTE-0002, then ROUTE-0010; found by fuzzing).
   const bool joined = joined_[net];
+  // Pins in two or more groups that meet (groups_): when the route function fails on all the
+  // pins, one pin of each group is routed instead (the others meet it: the checker joins them by
+  // their own metal), the first of each group first, then the others in turn, up to
+  // kMaxGroupChoices choices; the choice that routes is kept for the larger windows (`use`).
+  // Since 2026-12-06: a group that meets only through corners that pinch shut in the cut pads lies
+  // in several parts of free space, and the route function, which takes every pin, found the net
+  // apart (ROUTE-0002, then ROUTE-0010) while a legal routing existed. The proofs that pins are
+  // apart in a window (apart_in_window, the last pass's superset) are not used for such a net:
+  // they speak of all its pins, and its windows grow to the whole domain instead.
+  const std::vector<std::vector<std::size_t>>& groups = groups_[net];
+  NetPins chosen;
+  const NetPins* use = &pins;
   while (true) {
     if (options_.stop && options_.stop()) throw NetRouterStopped();
     const Box w = options_.windows ? clipped(geom::grown_box(hp, m), dom) : dom;
@@ -1647,7 +1679,29 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
       a.radius = geom::Root2{0, 0};
       if (pins.pins.size() == 2) a.distance = geom::Root2{0, 0};
     } else {
-      a = route(net, pins, obs);
+      a = route(net, *use, obs);
+      if (!a.routed && use == &pins && !groups.empty()) {
+        std::size_t choices = 1;
+        for (const auto& g : groups) choices = std::min(choices * g.size(), kMaxGroupChoices);
+        for (std::size_t c = 0; c < choices; ++c) {
+          NetPins r;
+          r.name = pins.name;
+          r.scale = pins.scale;
+          std::size_t rest = c;
+          for (const auto& g : groups) {
+            r.pins.push_back(pins.pins[g[rest % g.size()]]);
+            r.index.push_back(g[rest % g.size()]);
+            rest /= g.size();
+          }
+          NetAttempt b = route(net, r, obs);
+          if (!b.routed) continue;
+          chosen = std::move(r);
+          use = &chosen;
+          a = std::move(b);
+          ++st.group_choices;
+          break;
+        }
+      }
     }
     // the length as routed, before the trim: the window proof below bounds how far the route's
     // wavefronts ran, and they ran over the pads too
@@ -1677,7 +1731,7 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
     };
     if (a.routed && options_.cost != NetRouterOptions::Cost::Length) {
       // the bend-aware metrics (see the header): per sink, the least a path out of the window costs
-      if (a.sink_costs.size() + 1 != pins.pins.size()) throw std::logic_error("NetRouter: a bend-aware attempt without its sinks' costs");
+      if (a.sink_costs.size() + 1 != use->pins.size()) throw std::logic_error("NetRouter: a bend-aware attempt without its sinks' costs");
       const std::int64_t out = 2 * (inner(hp) - 2);
       const bool link = options_.cost == NetRouterOptions::Cost::Link;
       const __int128 c = options_.bend_cost;
@@ -1686,8 +1740,8 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
       for (std::size_t i = 0; i < a.sink_costs.size(); ++i) {
         const auto [len, bends] = a.sink_costs[i];
         std::int64_t least = out;
-        if (is_point_pin(pins.pins[0]) && is_point_pin(pins.pins[i + 1])) {
-          const Point p = pins.pins[0].outer[0], q = pins.pins[i + 1].outer[0];
+        if (is_point_pin(use->pins[0]) && is_point_pin(use->pins[i + 1])) {
+          const Point p = use->pins[0].outer[0], q = use->pins[i + 1].outer[0];
           least += std::abs(std::int64_t{p.x} - q.x) + std::abs(std::int64_t{p.y} - q.y);
         }
         if (link) proven = proven && (bends < 2 || (bends == 2 && len <= least));
@@ -1706,7 +1760,7 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
         }
         open.domain = clipped(geom::grown_box(w, 1), dom);
         const auto r0 = Clock::now();
-        const NetAttempt r = route(net, pins, open);
+        const NetAttempt r = route(net, *use, open);
         st.route_seconds += std::chrono::duration<double>(Clock::now() - r0).count();
         ++st.relaxed;
         proven = r.routed && r.sink_costs.size() == a.sink_costs.size();
@@ -1723,11 +1777,11 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
       const std::int64_t len = routed_len;
       bool proven;
       std::optional<std::int64_t> fit;  // a margin in which this answer would pass its proof
-      if (two_point_pins(pins)) {
+      if (two_point_pins(*use)) {
         // A way out through a top or bottom side at distance d from the pins' box climbs at
         // least |dy| + 2d, through a left or right one |dx| + 2d: a lower bound in L1 and in
         // the octilinear metric alike (each unit along an axis costs at least 1).
-        const Point p = pins.pins[0].outer[0], q = pins.pins[1].outer[0];
+        const Point p = use->pins[0].outer[0], q = use->pins[1].outer[0];
         const std::int64_t dx = std::abs(std::int64_t{p.x} - q.x), dy = std::abs(std::int64_t{p.y} - q.y);
         const std::int64_t big = std::numeric_limits<std::int64_t>::max() / 4;
         std::int64_t bound = big;
@@ -1753,7 +1807,7 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
         std::vector<Point> all = pts;
         for (const auto& wire : a.wires) all.insert(all.end(), wire.begin(), wire.end());
         proven = len < inner(box_of(all)) - 2 ||
-                 (a.radius && *a.radius < geom::Root2{inner(box_of(pins.pins[0].outer)) - 2, 0});
+                 (a.radius && *a.radius < geom::Root2{inner(box_of(use->pins[0].outer)) - 2, 0});
         if (a.radius && a.radius->a >= 0 && a.radius->b >= 0) fit = a.radius->a + 2 * a.radius->b + 3;  // > radius + 2
       }
       if (proven) return t;
@@ -1769,11 +1823,11 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
     } else if (a.code == "ROUTE-0002") {  // unreachable: a larger window may hold a way round,
       // Pins apart in the last pass's superset of the space are apart in it (before a second
       // wavefront in this window, and before windows up to the whole domain)
-      if (superset_ && level == NetSpaceLevel::Full && only.empty() && superset_->apart(pins)) {
+      if (groups.empty() && superset_ && level == NetSpaceLevel::Full && only.empty() && superset_->apart(pins)) {
         ++st.superset_apart;
         return t;
       }
-      if (apart_in_window(obs, pins, w)) return t;  // unless a pin is shut in inside this one
+      if (groups.empty() && apart_in_window(obs, pins, w)) return t;  // unless a pin is shut in inside this one
       // While rounds remain, a net the other nets' wires shut out of its first windows is taken as
       // blocked (its blockers are ripped up) rather than followed round a detour up to the whole
       // domain; the last pass (run) tries every net left unrouted without this limit.

@@ -219,6 +219,10 @@ struct NetPins {
   // L1 one needs none), and a bend-aware one weighs a bend by this many times its cost; NetRouter
   // sets it on the pins it passes, so no route function has to be told.
   std::int64_t scale = 1;
+  // Empty, or when NetRouter routes some of the net's pins only (one of each group of pins that
+  // meet, see NetRouter::try_net_unsnapped): pins[j] is the net's pin index[j]. A route function
+  // that reads the net's own pins by the net's index must take these ones.
+  std::vector<std::size_t> index{};
 };
 
 // The scaled plane of NetRouterOptions::exact_gaps (NetRouter::scale() K) and back: every
@@ -636,6 +640,9 @@ struct NetRouterStats {
   // Last-pass attempts that stopped because the net's pins are apart in a superset of its space
   // (NetRouterOptions::superset).
   std::int64_t superset_apart = 0;
+  // Attempts routed with one pin of each group of pins that meet, after the route function failed
+  // on all of them (try_net_unsnapped; since 2026-12-06).
+  std::int64_t group_choices = 0;
   // NetRouterOptions::exact_gaps: attempts whose wires had a vertex a quarter of the scale or
   // more from the multiple it was snapped to (see the header); such a wire may have lost its
   // direction, a connection or the clearance, and the outcomes must be routed again without
@@ -827,6 +834,10 @@ class NetRouter {
   // per net: its pins all meet (joined pair by pair at lattice points they share, into one
   // group), so an attempt first tries a wire of one point on them (try_net_unsnapped)
   std::vector<char> joined_;
+  // per net: its pins in groups that meet, when there are two groups or more and fewer than its
+  // pins (else empty); try_net_unsnapped routes one pin of each group when all of them fail
+  std::vector<std::vector<std::vector<std::size_t>>> groups_;
+  static constexpr std::size_t kMaxGroupChoices = 16;
   bool capped_ = false;  // Full attempts stop after options_.search_windows unreachable windows
   // The boxes of every wire piece placed or removed since run() began, with their net (an attempt
   // made ahead, or a failed one kept, is valid while none of another net meets its last window).

@@ -261,7 +261,18 @@ io::Net scaled_net(const io::Net& net, std::int64_t k) {
 // The net with the pins the net router routes it to (router::NetSpace::reach: a pad with a
 // 45-degree edge in the clearance of a blockage as its staircase under the bend-aware metrics),
 // in the same order as net.pins.
+// The net's pins the net router passes (NetPins::index: some of them only, one of each group of
+// pins that meet), in its order.
+io::Net selected_pins(io::Net net, const router::NetPins& pins) {
+  if (pins.index.empty()) return net;
+  std::vector<io::Pin> some;
+  for (const std::size_t j : pins.index) some.push_back(net.pins.at(j));
+  net.pins = std::move(some);
+  return net;
+}
+
 io::Net with_pins(io::Net net, const router::NetPins& pins) {
+  net = selected_pins(std::move(net), pins);
   for (std::size_t j = 0; j < net.pins.size() && j < pins.pins.size(); ++j) {
     io::Pin& pin = net.pins[j];
     if (!pin.shape || io::pin_polygon(pin) == pins.pins[j]) continue;
@@ -719,7 +730,7 @@ void add_route(CLI::App& app, int& status) {
               return sketch_attempt(*layout, scaled_net(net, pins.scale), obs, orient_word, nr.space().domain(), pins.scale);
             }
             NetResult r;
-            const io::Net sn = scaled_net(net, pins.scale);
+            const io::Net sn = selected_pins(scaled_net(net, pins.scale), pins);
             if (octilinear) {
               router::OctRouter rt(obs.domain, obs.obstacles);
               rt.set_lattice(pins.scale);  // no vertex half way between the plane's multiples
@@ -1007,6 +1018,7 @@ void add_route(CLI::App& app, int& status) {
                          {"last_pass_nets", net_stats->last_pass},
                          {"last_pass_routed", net_stats->last_pass_routed},
                          {"last_pass_proven_apart", net_stats->superset_apart},
+                         {"group_choice_routes", net_stats->group_choices},
                          {"final_round_nets", net_stats->final_round},
                          {"final_round_routed", net_stats->final_round_routed},
                          {"relaxed_windows", net_stats->relaxed},

@@ -1368,6 +1368,12 @@ TEST(Route, PadChainsAndOverlapsKeepTheClearance) {
   write_text(dir + "/pinch.xml", layout(5, 3, "x0=\"6\" y0=\"18\" x1=\"8\" y1=\"23\"",
                                         pad("a0", 13, 10, 17, 13) + pad("a1", 10, 13, 13, 18) + pad("a2", 8, 18, 10, 19) +
                                             pad("a3", 8, 18, 9, 19)));
+  // (apart) the same pinched group and a point pin apart: the route function takes every pin and
+  // found a0 and a3 apart, and the net was refused (ROUTE-0010) while routing one pin of each group
+  // that meets joins them (a0 to p; a1, a2 and a3 meet a0); since 2026-12-06
+  write_text(dir + "/apart.xml", layout(5, 3, "x0=\"6\" y0=\"18\" x1=\"8\" y1=\"23\"",
+                                        pad("a0", 13, 10, 17, 13) + pad("a1", 10, 13, 13, 18) + pad("a2", 8, 18, 10, 19) +
+                                            pad("a3", 8, 18, 9, 19) + "    <pin name=\"p\" x=\"40\" y=\"0\"/>\n"));
   write_text(dir + "/within.xml", layout(2, 2, "x0=\"0\" y0=\"0\" x1=\"10\" y1=\"2\"", pad("a", 0, 3, 5, 4) + pad("b", 5, 3, 10, 4)));
   for (const std::vector<std::string>& extra :
        std::vector<std::vector<std::string>>{{},
@@ -1381,7 +1387,7 @@ TEST(Route, PadChainsAndOverlapsKeepTheClearance) {
     if (test::kSanitized && !(extra.empty() || extra[0] == "--tighten")) continue;
     std::string what = "l1";
     for (const std::string& e : extra) what += " " + e;
-    for (const std::string name : {"chain", "overlap", "clear", "corner", "pinch", "within"}) {
+    for (const std::string name : {"chain", "overlap", "clear", "corner", "pinch", "apart", "within"}) {
       const bool within = name == "within";
       const std::optional<io::Route> route = route_one_net(dir, name, extra, within ? 1 : 0);
       if (!route) continue;

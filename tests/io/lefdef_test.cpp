@@ -298,6 +298,17 @@ TEST(ImportDef, BadInputIsAnsweredWithCodeFileAndLine) {
        def_with(comps + "NETS 2 ;\n - n ( a P ) ;\n - m ( a VDD ) + ROUTED m2 ( 0 0 ) ( 100 0 ) ;\nEND NETS\n"), "IO-0122", 11, {"n"}},
       {"a sloped special wire", def_with("SPECIALNETS 1 ;\n - w + ROUTED m2 100 ( 0 0 ) ( 100 100 ) ;\nEND SPECIALNETS\n"), "IO-0122",
        7},
+      // names XML cannot carry as written (found by fuzzing, 2026-12-06: two such names became one
+      // U+FFFD name in the layout written, which taut check refused)
+      {"DEF pins (blockages) named with a Latin-1 byte and a control character",
+       def_with("PINS 2 ;\n - p\xe9 + NET x + LAYER m2 ( 0 0 ) ( 100 100 ) + FIXED ( 1000 1000 ) N ;\n"
+                " - p\x01 + NET y + LAYER m2 ( 0 0 ) ( 100 100 ) + FIXED ( 5000 1000 ) N ;\nEND PINS\n"),
+       "IO-0130", 7},
+      {"a net named with a Latin-1 byte",
+       def_with("PINS 2 ;\n - a1 + NET n\xe9 + LAYER m2 ( 0 0 ) ( 100 100 ) + FIXED ( 1000 1000 ) N ;\n"
+                " - a2 + NET n\xe9 + LAYER m2 ( 0 0 ) ( 100 100 ) + FIXED ( 5000 1000 ) N ;\nEND PINS\n"
+                "NETS 1 ;\n - n\xe9 ( PIN a1 ) ( PIN a2 ) ;\nEND NETS\n"),
+       "IO-0130", 11},
   };
   for (const BadCase& c : cases) {
     DefImportOptions o;
