@@ -48,7 +48,8 @@ bool on_segment(Point p, Point a, Point b);
 
 // The squared Euclidean distance from p to the closed segment ab (ab may be degenerate), exactly:
 // num / den with den > 0 (den = |ab|^2 where the nearest point lies inside ab, else 1). With
-// coordinates within 2^31, num < 2^126 and den < 2^65.
+// coordinates within kMaxCoord (2^30 - 1): |cross| < 2^63, num < 2^126 and den < 2^63 (beyond
+// that the square overflows).
 struct SquaredDistance {
   i128 num = 0, den = 1;
 };

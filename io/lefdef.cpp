@@ -539,6 +539,7 @@ struct DefNet {
 
 struct Def {
   std::string design;
+  int design_line = 0;
   std::int64_t units = 0;
   int units_line = 0;
   std::optional<Box> die;
@@ -780,6 +781,7 @@ void parse_def(Cursor& c, const std::string& layer, const Lib& lib, Def& d) {
   while (!c.done()) {
     const Tok t = c.next();
     if (t.s == "DESIGN") {
+      d.design_line = t.line;
       d.design = std::string(c.next().s);
       c.skip_statement();
     } else if (t.s == "UNITS") {
@@ -1523,6 +1525,7 @@ Layout assemble(const Def& d, const Lib& lib, const DefImportOptions& o, const C
                            ", which is no UTF-8 character XML can carry: taut writes names as UTF-8 XML (rename it in the DEF or LEF)",
             line);
   };
+  text_name("design", out.name, d.design_line);  // (the layout's name)
   for (const Net& n : out.nets) {
     text_name("net", n.name, n.line);
     for (const Pin& p : n.pins) text_name("pin of net " + n.name, p.name, p.line);

@@ -53,7 +53,7 @@
 //   IO-0128 warning: --bump-to-pad joined no bump to some of a net's pad pins (more pads than
 //           bumps); they are written as blockages
 //   IO-0129 a component or DEF pin defined twice, or a terminal in two nets
-//   IO-0130 a name written to the layout (net, pin, blockage id) with a byte XML cannot carry
+//   IO-0130 a name written to the layout (design, net, pin, blockage id) with a byte XML cannot carry
 //           (no UTF-8 character, or a control character): two such names could become one
 // Every object written carries the DEF line it comes from (a component's, a pin's, a net's), so
 // validating the layout names it. Numbers of shapes off the layer are not converted (they need

@@ -1646,15 +1646,23 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
   // Pins in two or more groups that meet (groups_): when the route function fails on all the
   // pins, one pin of each group is routed instead (the others meet it: the checker joins them by
   // their own metal), the first of each group first, then the others in turn, up to
-  // kMaxGroupChoices choices; the choice that routes is kept for the larger windows (`use`).
-  // Since 2026-12-06: a group that meets only through corners that pinch shut in the cut pads lies
-  // in several parts of free space, and the route function, which takes every pin, found the net
-  // apart (ROUTE-0002, then ROUTE-0010) while a legal routing existed. The proofs that pins are
-  // apart in a window (apart_in_window, the last pass's superset) are not used for such a net:
-  // they speak of all its pins, and its windows grow to the whole domain instead.
+  // kMaxGroupChoices choices; the choice that routes is kept for the larger windows, and the
+  // proofs below read the pins routed (`use`). Since 2026-12-06: a group that meets only through
+  // corners that pinch shut in the cut pads lies in several parts of free space, and the route
+  // function, which takes every pin, found the net apart (ROUTE-0002, then ROUTE-0010), or a pin
+  // of a group not free (ROUTE-0001, nested against a blockage), while a legal routing existed.
+  // When all the pins are apart (ROUTE-0002), the choices are tried in the whole domain only (a
+  // larger window may join all the pins; and a net of such groups that other nets' wires block
+  // costs no more than before in the windows the rip-up rounds cap). After a failure that any
+  // window decides (a pin not free), they are tried at once, and when one of them was apart
+  // (ROUTE-0002) the window grows as for ROUTE-0002 (`choices_apart`), so the answer does not
+  // depend on the first window; the net's reason stays the one for all its pins. (apart_in_window
+  // and the last pass's superset prove nothing for shape pins, and for point pins a group is one
+  // point, so they read all the pins as before.)
   const std::vector<std::vector<std::size_t>>& groups = groups_[net];
   NetPins chosen;
   const NetPins* use = &pins;
+  bool choices_apart = false;  // no choice routed, and one of them was apart in this window
   while (true) {
     if (options_.stop && options_.stop()) throw NetRouterStopped();
     const Box w = options_.windows ? clipped(geom::grown_box(hp, m), dom) : dom;
@@ -1680,7 +1688,8 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
       if (pins.pins.size() == 2) a.distance = geom::Root2{0, 0};
     } else {
       a = route(net, *use, obs);
-      if (!a.routed && use == &pins && !groups.empty()) {
+      choices_apart = false;
+      if (!a.routed && use == &pins && !groups.empty() && (whole || a.code != "ROUTE-0002")) {
         std::size_t choices = 1;
         for (const auto& g : groups) choices = std::min(choices * g.size(), kMaxGroupChoices);
         for (std::size_t c = 0; c < choices; ++c) {
@@ -1694,7 +1703,11 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
             rest /= g.size();
           }
           NetAttempt b = route(net, r, obs);
-          if (!b.routed) continue;
+          if (!b.routed) {
+            choices_apart = choices_apart || b.code == "ROUTE-0002";
+            continue;
+          }
+          choices_apart = false;
           chosen = std::move(r);
           use = &chosen;
           a = std::move(b);
@@ -1823,11 +1836,11 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
     } else if (a.code == "ROUTE-0002") {  // unreachable: a larger window may hold a way round,
       // Pins apart in the last pass's superset of the space are apart in it (before a second
       // wavefront in this window, and before windows up to the whole domain)
-      if (groups.empty() && superset_ && level == NetSpaceLevel::Full && only.empty() && superset_->apart(pins)) {
+      if (superset_ && level == NetSpaceLevel::Full && only.empty() && superset_->apart(pins)) {
         ++st.superset_apart;
         return t;
       }
-      if (groups.empty() && apart_in_window(obs, pins, w)) return t;  // unless a pin is shut in inside this one
+      if (apart_in_window(obs, pins, w)) return t;  // unless a pin is shut in inside this one
       // While rounds remain, a net the other nets' wires shut out of its first windows is taken as
       // blocked (its blockers are ripped up) rather than followed round a detour up to the whole
       // domain; the last pass (run) tries every net left unrouted without this limit.
@@ -1835,6 +1848,8 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
         ++st.capped;
         return t;
       }
+      m *= 4;
+    } else if (choices_apart && !whole) {  // (a choice of one pin per group may join in a larger window)
       m *= 4;
     } else {  // a pin that is not free, or no staircase: decided near the pins, in any window
       return t;

@@ -835,7 +835,8 @@ class NetRouter {
   // group), so an attempt first tries a wire of one point on them (try_net_unsnapped)
   std::vector<char> joined_;
   // per net: its pins in groups that meet, when there are two groups or more and fewer than its
-  // pins (else empty); try_net_unsnapped routes one pin of each group when all of them fail
+  // pins (else empty); try_net_unsnapped routes one pin of each group when the route function
+  // fails on all of them (see there)
   std::vector<std::vector<std::vector<std::size_t>>> groups_;
   static constexpr std::size_t kMaxGroupChoices = 16;
   bool capped_ = false;  // Full attempts stop after options_.search_windows unreachable windows

@@ -258,11 +258,8 @@ io::Net scaled_net(const io::Net& net, std::int64_t k) {
   return s;
 }
 
-// The net with the pins the net router routes it to (router::NetSpace::reach: a pad with a
-// 45-degree edge in the clearance of a blockage as its staircase under the bend-aware metrics),
-// in the same order as net.pins.
 // The net's pins the net router passes (NetPins::index: some of them only, one of each group of
-// pins that meet), in its order.
+// pins that meet, in that order; all of them, in net.pins' order, when the index is empty).
 io::Net selected_pins(io::Net net, const router::NetPins& pins) {
   if (pins.index.empty()) return net;
   std::vector<io::Pin> some;
@@ -271,6 +268,9 @@ io::Net selected_pins(io::Net net, const router::NetPins& pins) {
   return net;
 }
 
+// The net with the pins the net router routes it to (selected_pins, and
+// router::NetSpace::reach: a pad with a 45-degree edge in the clearance of a blockage as its
+// staircase under the bend-aware metrics), in the order of pins.pins.
 io::Net with_pins(io::Net net, const router::NetPins& pins) {
   net = selected_pins(std::move(net), pins);
   for (std::size_t j = 0; j < net.pins.size() && j < pins.pins.size(); ++j) {

@@ -1402,5 +1402,32 @@ TEST(Route, PadChainsAndOverlapsKeepTheClearance) {
   }
 }
 
+// A pin the routers cannot take (an edge at 30 degrees: ROUTE-0005) that meets another pin of its
+// net: since 2026-12-06 the net is routed between one pin of each group that meets (the other
+// pin and the pin apart), and the sloped pin joins by its own metal; the check passes. Without
+// the pin it meets, the net is still ROUTE-0005.
+TEST(Route, APinTheRoutersCannotTakeJoinsThroughAPinItMeets) {
+  const std::string dir = temp_dir("route_group_sloped");
+  const std::string sloped = "    <pin name=\"a\"><polygon points=\"0,0 30,0 30,17\"/></pin>\n";
+  const std::string far = "    <pin name=\"c\" x=\"100\" y=\"50\"/>\n";
+  write_text(dir + "/met.xml", "<layout version=\"1\">\n  <net name=\"n\">\n" + sloped +
+                                   "    <pin name=\"b\"><rect x0=\"30\" y0=\"0\" x1=\"40\" y1=\"10\"/></pin>\n" + far +
+                                   "  </net>\n</layout>\n");
+  write_text(dir + "/alone.xml", "<layout version=\"1\">\n  <net name=\"n\">\n" + sloped + far + "  </net>\n</layout>\n");
+  for (const std::vector<std::string>& extra :
+       std::vector<std::vector<std::string>>{{}, {"--tree", "steiner"}, {"--orientations", "octilinear"}}) {
+    const std::optional<io::Route> met = route_one_net(dir, "met", extra, 0);
+    if (met) {
+      EXPECT_EQ(met->status, "routed");
+      EXPECT_FALSE(met->wires.empty());
+    }
+    std::vector<std::string> cmd{"route", dir + "/alone.xml", "-o", dir + "/r.xml"};
+    cmd.insert(cmd.end(), extra.begin(), extra.end());
+    const auto r = run_taut(cmd);
+    EXPECT_EQ(r.status, 1) << r.err;
+    EXPECT_NE(r.err.find("[ROUTE-0005]"), std::string::npos) << r.err;
+  }
+}
+
 }  // namespace route_test
 }  // namespace taut::test

@@ -321,7 +321,18 @@ TEST(ImportDef, BadInputIsAnsweredWithCodeFileAndLine) {
     EXPECT_EQ(d.code, c.code) << c.what << ": " << format(d);
     EXPECT_EQ(d.line, c.line) << c.what << ": " << format(d);
     EXPECT_EQ(d.file, c.file) << c.what;
+    if (c.code == "IO-0130") {  // the name escaped and the byte
+      EXPECT_TRUE(d.message.find("\"PIN/p\\xE9\" has byte 0xE9 at 6") != std::string::npos ||
+                  d.message.find("net \"n\\xE9\" has byte 0xE9 at 2") != std::string::npos)
+          << d.message;
+    }
   }
+  // the design's name (the layout's) too, at the DESIGN line
+  const DefImportResult design = run("VERSION 5.8 ;\nDIVIDERCHAR \"/\" ;\nDESIGN t\xe9st ;\nUNITS DISTANCE MICRONS 1000 ;\n"
+                                     "DIEAREA ( 0 0 ) ( 1000000 1000000 ) ;\nCOMPONENTS 1 ;\n - a CELL + FIXED ( 0 0 ) N ;\nEND COMPONENTS\nEND DESIGN\n");
+  ASSERT_FALSE(design.layout);
+  EXPECT_EQ(design.diagnostics.back().code, "IO-0130");
+  EXPECT_EQ(design.diagnostics.back().line, 3);
   // the LEF's own errors name the LEF
   DefImportOptions m2;
   m2.layer = "m2";
