@@ -214,6 +214,8 @@ struct Macro {
 
 struct Lib {
   std::map<std::string, Macro, std::less<>> macros;
+  std::map<std::string, std::pair<std::string, int>, std::less<>> macro_at;  // where each was defined (file, line)
+  std::vector<Diagnostic> warnings;  // (IO-0131)
   std::map<std::string, Via, std::less<>> vias;
   std::map<std::string, std::string, std::less<>> layer_type;  // LEF LAYER .. TYPE (ROUTING, CUT, ..)
 };
@@ -412,6 +414,12 @@ void parse_lef(Cursor& c, std::int64_t units, const std::string& layer, Lib& lib
         m.w = lef_dbu(c, size_tok->first, units);
         m.h = lef_dbu(c, size_tok->second, units);
         m.has_size = true;
+        // (a SIZE of no area flips the cell's shapes out of its footprint; found by fuzzing,
+        // 2026-12-06, when it was accepted)
+        if (m.w <= 0 || m.h <= 0)
+          c.fail("IO-0123", "MACRO " + std::string(name.s) + ": SIZE " + std::string(size_tok->first.s) + " BY " +
+                                std::string(size_tok->second.s) + " is not positive",
+                 size_tok->first.line);
       }
       auto shift = [&](std::vector<Geo>& gs) {
         for (Geo& g : gs)
@@ -424,6 +432,13 @@ void parse_lef(Cursor& c, std::int64_t units, const std::string& layer, Lib& lib
       };
       for (auto& [n, p] : m.pins) shift(p.shapes);
       shift(m.obs);
+      // a macro defined again (in this LEF or an earlier one): the later definition is used, as
+      // before, but said (IO-0131, since 2026-12-06; found by fuzzing)
+      if (const auto at = lib.macro_at.find(name.s); at != lib.macro_at.end())
+        lib.warnings.push_back(Diagnostic{Severity::Warning, "IO-0131", c.file(), name.line, 0,
+                                          "MACRO " + std::string(name.s) + " is defined again (first at " + at->second.first + ":" +
+                                              std::to_string(at->second.second) + "): this definition is used"});
+      lib.macro_at[std::string(name.s)] = {c.file(), name.line};
       lib.macros[std::string(name.s)] = std::move(m);
     } else if (t.s == "VIA") {
       lef_via(c, units, layer, lib);
@@ -1568,6 +1583,7 @@ DefImportResult import_def_text(const std::pair<std::string, std::string>& def,
         Cursor lc(tokenize(text), name);
         parse_lef(lc, units, options.layer, lib);
       }
+      r.diagnostics.insert(r.diagnostics.end(), lib.warnings.begin(), lib.warnings.end());
       Def d;
       parse_def(dc, options.layer, lib, d);
       r.layout = assemble(d, lib, options, dc, r.diagnostics, r.stats);

@@ -42,7 +42,8 @@
 //           is not axis-parallel or of odd width, a via after which the layer is unknown, an
 //           unplaced cell or a cell without SIZE turned, with shapes on the layer, SUBNET,
 //           MUSTJOIN)
-//   IO-0123 a number that is malformed, not whole DBU, or beyond the coordinate range
+//   IO-0123 a number that is malformed, not whole DBU, or beyond the coordinate range (or a
+//           MACRO SIZE that is not positive)
 //   IO-0124 a reference to an undefined macro, component, macro pin, DEF pin or via
 //   IO-0125 a --nets pattern that matches no net, or a layer no shape is on
 //   IO-0126 warning: a selected net with fewer than two pin shapes on the layer (not written as
@@ -55,6 +56,8 @@
 //   IO-0129 a component or DEF pin defined twice, or a terminal in two nets
 //   IO-0130 a name written to the layout (design, net, pin, blockage id) with a byte XML cannot carry
 //           (no UTF-8 character, or a control character): two such names could become one
+//   IO-0131 warning: a LEF MACRO defined again, in one LEF or across --lef files (the later
+//           definition is used)
 // Every object written carries the DEF line it comes from (a component's, a pin's, a net's), so
 // validating the layout names it. Numbers of shapes off the layer are not converted (they need
 // not be whole DBU).

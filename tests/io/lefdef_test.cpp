@@ -343,6 +343,33 @@ TEST(ImportDef, BadInputIsAnsweredWithCodeFileAndLine) {
   EXPECT_EQ(lef.diagnostics.back().code, "IO-0123");
   EXPECT_EQ(lef.diagnostics.back().file, "x.lef");
   EXPECT_EQ(lef.diagnostics.back().line, 2);
+  // a SIZE of no area (found by fuzzing, 2026-12-06: accepted, and the cell's shapes flipped out
+  // of its footprint), at its line in the LEF
+  const std::string flat = "MACRO M\n SIZE -10 BY -10 ;\n PIN A\n  PORT\n   LAYER m2 ;\n   RECT 0 0 1 1 ;\n  END\n END A\nEND M\n";
+  const DefImportResult sized = import_def_text(
+      {"t.def", def_with("COMPONENTS 1 ;\n - a M + FIXED ( 0 0 ) S ;\nEND COMPONENTS\n")}, {{"x.lef", flat}}, m2);
+  ASSERT_FALSE(sized.layout);
+  EXPECT_EQ(sized.diagnostics.back().code, "IO-0123");
+  EXPECT_EQ(sized.diagnostics.back().file, "x.lef");
+  EXPECT_EQ(sized.diagnostics.back().line, 2);
+  // a MACRO defined again in a second LEF: the later one is used, with a warning naming both places
+  const std::string one = "MACRO M\n SIZE 2 BY 2 ;\n PIN A\n  PORT\n   LAYER m2 ;\n   RECT 0 0 1 1 ;\n  END\n END A\nEND M\n";
+  const std::string two = "\nMACRO M\n SIZE 2 BY 2 ;\n PIN A\n  PORT\n   LAYER m2 ;\n   RECT 1 1 2 2 ;\n  END\n END A\nEND M\n";
+  const DefImportResult again = import_def_text(
+      {"t.def", def_with("COMPONENTS 1 ;\n - a M + FIXED ( 0 0 ) N ;\nEND COMPONENTS\n")}, {{"x.lef", one}, {"y.lef", two}}, m2);
+  ASSERT_TRUE(again.layout);
+  bool warned = false;
+  for (const Diagnostic& d : again.diagnostics)
+    if (d.code == "IO-0131") {
+      warned = true;
+      EXPECT_EQ(d.severity, Severity::Warning);
+      EXPECT_EQ(d.file, "y.lef");
+      EXPECT_EQ(d.line, 2);
+      EXPECT_NE(d.message.find("first at x.lef:1"), std::string::npos) << d.message;
+    }
+  EXPECT_TRUE(warned);
+  ASSERT_EQ(again.layout->blockages.size(), 1u);  // the later definition's shape: 1000..2000 DBU
+  EXPECT_EQ(again.layout->blockages[0].shapes.at(0).rect.lo, (taut::geom::Point{1000, 1000}));
   // files that cannot be read
   const DefImportResult missing = import_def("/nonexistent/x.def", {}, m2);
   ASSERT_FALSE(missing.layout);
