@@ -79,4 +79,12 @@ std::string canonical_orientations(std::string_view text) {
   return std::string(text);
 }
 
+std::size_t distinct_orientations(const std::vector<double>& degrees) {
+  std::vector<double> mod;
+  for (const double d : degrees) mod.push_back(std::fmod(std::fmod(d, 180.0) + 180.0, 180.0));
+  std::sort(mod.begin(), mod.end());
+  mod.erase(std::unique(mod.begin(), mod.end()), mod.end());
+  return mod.size();
+}
+
 }  // namespace taut::io

@@ -2,6 +2,7 @@
 // so diagnostics can point at it. Plain data; readers and writers live beside it.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -120,5 +121,9 @@ bool same_document(const Layout& a, const Layout& b);
 // 180 degrees exactly {0, 90} are "rectilinear", exactly {0, 45, 90, 135} "octilinear" (e.g.
 // c:90,0 or c:0,45,90,135,180). Anything else is returned unchanged.
 std::string canonical_orientations(std::string_view text);
+
+// How many distinct directions modulo 180 degrees a c: set's degrees give (LAYOUT-0014 for
+// <rules>, IO-0015 for <routes>: fewer than 2 cannot connect points in the plane).
+std::size_t distinct_orientations(const std::vector<double>& degrees);
 
 }  // namespace taut::io

@@ -723,11 +723,7 @@ class Reader {
       orientations(n, Ctx("routes"), a.value[2], syntax);
       r.orientations = std::string(a.value[2]);
       // and, as LAYOUT-0014 asks of <rules>, two directions at least modulo 180 degrees
-      std::vector<double> mod;
-      for (const double d : syntax.orientation_degrees) mod.push_back(std::fmod(d, 180.0));
-      std::sort(mod.begin(), mod.end());
-      mod.erase(std::unique(mod.begin(), mod.end()), mod.end());
-      if (diagnostics_.size() == before && !syntax.orientation_degrees.empty() && mod.size() < 2)
+      if (diagnostics_.size() == before && !syntax.orientation_degrees.empty() && distinct_orientations(syntax.orientation_degrees) < 2)
         error("IO-0015", line_of(n),
               "routes: attribute orientations: " + quoted(r.orientations) + " has fewer than 2 distinct directions modulo 180 degrees");
     }

@@ -330,11 +330,7 @@ class Validator {
       return;
     }
     // Directions modulo 180 degrees (a direction and its opposite are the same wire direction).
-    std::vector<double> mod;
-    for (double d : r.orientation_degrees) mod.push_back(std::fmod(std::fmod(d, 180.0) + 180.0, 180.0));
-    std::sort(mod.begin(), mod.end());
-    mod.erase(std::unique(mod.begin(), mod.end()), mod.end());
-    if (mod.size() < 2)
+    if (distinct_orientations(r.orientation_degrees) < 2)
       error("LAYOUT-0014", r.line,
             "rules: orientations " + q(r.orientations) +
                 " has fewer than 2 distinct directions modulo 180 degrees");

@@ -1192,13 +1192,13 @@ std::vector<std::vector<std::size_t>> pin_groups(const NetPins& pins, std::int64
   std::vector<std::size_t> rank(k), parent(k);
   boost::disjoint_sets<std::size_t*, std::size_t*> groups(rank.data(), parent.data());
   for (std::size_t i = 0; i < k; ++i) groups.make_set(i);
-  auto on_lattice = [&](Point q) { return k_lattice == 1 || (q.x % k_lattice == 0 && q.y % k_lattice == 0); };
+  auto lattice = [&](Point q) { return on_lattice(q, k_lattice); };
   for (std::size_t i = 0; i < k; ++i)
     for (std::size_t j = i + 1; j < k; ++j) {
       if (groups.find_set(i) == groups.find_set(j)) continue;
       const Polygon &a = pins.pins[i], &b = pins.pins[j];
       if (!geom::boxes_meet(box_of(a.outer), box_of(b.outer))) continue;
-      if (shared_point(a.outer, a, b.outer, b, on_lattice)) groups.union_set(i, j);
+      if (shared_point(a.outer, a, b.outer, b, lattice)) groups.union_set(i, j);
     }
   std::map<std::size_t, std::size_t> index;  // a group's root -> its place in out
   for (std::size_t i = 0; i < k; ++i) {
@@ -1530,7 +1530,7 @@ std::optional<Point> NetRouter::joined_point(std::size_t net, const NetPins& pin
 
 std::optional<Point> NetRouter::lattice_point_pin(std::span<const Polygon> pins, std::int64_t scale) {
   for (const Polygon& g : pins)
-    if (g.outer.size() == 1 && (scale == 1 || (g.outer[0].x % scale == 0 && g.outer[0].y % scale == 0))) return g.outer[0];
+    if (g.outer.size() == 1 && router::on_lattice(g.outer[0], scale)) return g.outer[0];
   return std::nullopt;
 }
 

@@ -211,6 +211,9 @@ inline std::int64_t blockage_rule(const NetRules& r) { return (r.wire_width + 1)
 inline std::int64_t net_rule(const NetRules& r) { return std::max<std::int64_t>(r.wire_width + r.spacing, 1); }
 
 // A net's pins: a point pin is an outer ring of one point, a shape pin a polygon.
+// Whether p lies on the lattice of multiples of k (every point when k is 1).
+inline bool on_lattice(geom::Point p, std::int64_t k) { return k == 1 || (p.x % k == 0 && p.y % k == 0); }
+
 struct NetPins {
   std::string name;  // for reasons
   std::vector<geom::Polygon> pins;
@@ -746,7 +749,7 @@ class NetRouter {
   // on them can keep the clearance (try_net then fails the attempt, ROUTE-0010).
   bool point_wire_stuck(const std::vector<std::vector<geom::Point>>& wires, std::size_t net) const;
   // Whether p lies on the scaled plane's lattice (the multiples of scale_; every point when 1).
-  bool on_lattice(geom::Point p) const { return scale_ == 1 || (p.x % scale_ == 0 && p.y % scale_ == 0); }
+  bool on_lattice(geom::Point p) const { return router::on_lattice(p, scale_); }
   // The first point pin of `pins` on the lattice: always a legal wire of one point (the checker's
   // access zone exempts the wire there, and the other nets keep their clearance from the pin).
   static std::optional<geom::Point> lattice_point_pin(std::span<const geom::Polygon> pins, std::int64_t scale);
