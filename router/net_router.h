@@ -119,7 +119,8 @@
 // one kept; a final round then tries each net still unrouted once more, its blockers ripped up
 // whatever their rips, and keeps only the rip-ups that route more nets. In the first pass and
 // the rounds a net finding no way in its first search_windows
-// windows (NetRouterOptions) is taken as blocked there, not widened to the whole domain; the
+// windows (NetRouterOptions), or only a detour there that they cannot prove shortest after its
+// pins were apart in a smaller one, is taken as blocked there, not widened to the whole domain; the
 // last pass then tries each net still unrouted without that limit, and places what it routes;
 // it first builds, once, a superset of every unrouted net's free space on the whole domain
 // (NetRouterOptions::superset), so a net whose pins lie in different free components of it stops
@@ -584,7 +585,8 @@ struct NetRouterOptions {
   // In the first pass and the rip-up rounds, a net that finds no way among the other nets' wires
   // in this many windows (each 4 times the last's margin) is taken as blocked by them, and its
   // blockers are ripped up, instead of its window growing to the whole domain to look for a
-  // detour. Every net still unrouted after the rounds is then tried once more without the limit
+  // detour; so is one whose pins were apart in a smaller window and whose way in the last of
+  // them is a detour that window cannot prove shortest (since 2026-12-06). Every net still unrouted after the rounds is then tried once more without the limit
   // (so a net is left unrouted only when no way exists in the whole final layout). 0: no limit.
   int search_windows = 2;
   // After the rounds, one final round over the nets still unrouted in the best state, in which

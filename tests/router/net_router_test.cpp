@@ -1856,6 +1856,14 @@ TEST(NetRouter, ARipUpThatLosesNetsIsUndone) {
   EXPECT_TRUE(router::check_routes(none, check_nets(nets, nr), {2, 2}).problems.empty());
 }
 
+// The L1 length of a net's wires.
+std::int64_t l1_wire_length(const std::vector<std::vector<Point>>& wires) {
+  std::int64_t len = 0;
+  for (const auto& w : wires)
+    for (std::size_t i = 1; i < w.size(); ++i) len += std::abs(w[i].x - w[i - 1].x) + std::abs(w[i].y - w[i - 1].y);
+  return len;
+}
+
 // NetRouterOptions::search_windows: a net shut out of its first two windows by another net's wire
 // is taken as blocked while the rounds last, and the last pass routes it round its detour. A
 // wall of blockage across the layout has a gap, which net b's short wire plugs (b goes first:
@@ -1887,9 +1895,7 @@ TEST(NetRouter, TheLastPassRoutesADetourBeyondTheWindowLimit) {
     EXPECT_TRUE(router::check_routes(norm, check_nets(nets, *nr), {0, 0}).problems.empty());
   }
   EXPECT_EQ(limited->outcomes()[0].wires, unlimited->outcomes()[0].wires);
-  std::int64_t len = 0;
-  for (const auto& w : limited->outcomes()[0].wires)
-    for (std::size_t i = 1; i < w.size(); ++i) len += std::abs(w[i].x - w[i - 1].x) + std::abs(w[i].y - w[i - 1].y);
+  const std::int64_t len = l1_wire_length(limited->outcomes()[0].wires);
   EXPECT_EQ(len, 8000 + 2 * 45000);  // over the wall's top at y = 95,000
   // limited: a stopped at the limit (first pass and rounds), then routed by the last pass
   EXPECT_EQ(limited->stats().first_pass, 1u);
@@ -1911,6 +1917,45 @@ TEST(NetRouter, TheLastPassRoutesADetourBeyondTheWindowLimit) {
   ASSERT_TRUE(final->outcomes()[1].routed);
   EXPECT_EQ(final->outcomes()[0].wires, (std::vector<std::vector<Point>>{{{1000, 50000}, {9000, 50000}}}));
   EXPECT_TRUE(router::check_routes(norm, check_nets(nets, *final), {0, 0}).problems.empty());
+}
+
+// The window limit also stops a net whose pins were apart in its first window and whose way in
+// the second is a detour that window cannot prove shortest (since 2026-12-06: before, the window
+// grew on to prove it, which on 10^4 planted nets cost a quarter of the rip-up rounds' time).
+// Pins (0, 0) and (100, 0): a wall at x = 40..60 up to y = 300, and a shelf over the left pin
+// from x = -300 to the wall, so the only way goes left round the shelf, up, over the wall and
+// down: 1,300 long. The first window (margin 86) holds no way; the second (margin 344) holds
+// this one, but a way out through its sides would be at most 100 + 2 x 342 = 784, so it proves
+// nothing. Limited, the net is taken as blocked there (no other net: the rounds find no blocker)
+// and the last pass routes it, with the wire the unlimited search gives in its first pass.
+TEST(NetRouter, TheLastPassRoutesADetourItsSecondWindowCannotProve) {
+  const geom::Box domain{{-400, -400}, {500, 400}};
+  const std::vector<Polygon> blocks{{{{40, -400}, {60, -400}, {60, 300}, {40, 300}}, {}},
+                                    {{{-300, 10}, {40, 10}, {40, 20}, {-300, 20}}, {}}};
+  const geom::NormalizedObstacles norm = geom::normalize_obstacles(blocks, domain);
+  std::vector<router::NetPins> nets(1);
+  nets[0] = {"a", {Polygon{{{0, 0}}, {}}, Polygon{{{100, 0}}, {}}}};
+  auto run = [&](int search_windows) {
+    router::NetRouterOptions o;
+    o.search_windows = search_windows;
+    auto nr = std::make_unique<router::NetRouter>(norm.domain, norm.obstacles, nets, router::NetRules{0, 0}, o);
+    nr->run(router::NetRouter::l1_router(false));
+    return nr;
+  };
+  const auto limited = run(2), unlimited = run(0);
+  for (const auto* nr : {limited.get(), unlimited.get()}) {
+    ASSERT_TRUE(nr->outcomes()[0].routed);
+    EXPECT_TRUE(router::check_routes(norm, check_nets(nets, *nr), {0, 0}).problems.empty());
+  }
+  EXPECT_EQ(limited->outcomes()[0].wires, unlimited->outcomes()[0].wires);
+  const std::int64_t len = l1_wire_length(limited->outcomes()[0].wires);
+  EXPECT_EQ(len, 1300);
+  EXPECT_EQ(limited->stats().first_pass, 0u);
+  EXPECT_GE(limited->stats().capped, 1);
+  EXPECT_EQ(limited->stats().last_pass, 1u);
+  EXPECT_EQ(limited->stats().last_pass_routed, 1u);
+  EXPECT_EQ(unlimited->stats().first_pass, 1u);
+  EXPECT_EQ(unlimited->stats().capped, 0);
 }
 
 // A net whose only way runs at exactly the clearance between two other nets' wires: legal (the
