@@ -1826,6 +1826,26 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
         for (const auto& wire : a.wires) all.insert(all.end(), wire.begin(), wire.end());
         proven = len < inner(box_of(all)) - 2 ||
                  (a.radius && *a.radius < geom::Root2{inner(box_of(use->pins[0].outer)) - 2, 0});
+        // Sink by sink (since 2026-12-06): a way of the whole layout from the first pin to sink s
+        // that comes within 2 of an inner side runs, along the axis across that side, at least
+        // the first pin's box's distance from the side and s's box's, less 2 each (out and
+        // back): when each sink's distance is below the least such sum over the inner sides,
+        // less 4, its shortest way lies where the window's space is the layout's, so the window
+        // gives every sink the whole layout's distance (the radius's test asks the first pin's
+        // distance alone to exceed the radius).
+        if (!proven && a.radius && a.sink_distances.size() + 1 == use->pins.size()) {
+          const Box b0 = box_of(use->pins[0].outer);
+          proven = true;
+          for (std::size_t i = 0; proven && i < a.sink_distances.size(); ++i) {
+            const Box bs = box_of(use->pins[i + 1].outer);
+            std::int64_t least = std::numeric_limits<std::int64_t>::max();
+            if (w.lo.x > dom.lo.x) least = std::min<std::int64_t>(least, std::int64_t{b0.lo.x} + bs.lo.x - 2 * std::int64_t{w.lo.x});
+            if (w.hi.x < dom.hi.x) least = std::min<std::int64_t>(least, 2 * std::int64_t{w.hi.x} - b0.hi.x - bs.hi.x);
+            if (w.lo.y > dom.lo.y) least = std::min<std::int64_t>(least, std::int64_t{b0.lo.y} + bs.lo.y - 2 * std::int64_t{w.lo.y});
+            if (w.hi.y < dom.hi.y) least = std::min<std::int64_t>(least, 2 * std::int64_t{w.hi.y} - b0.hi.y - bs.hi.y);
+            proven = a.sink_distances[i] < geom::Root2{least - 4, 0};
+          }
+        }
         if (a.radius && a.radius->a >= 0 && a.radius->b >= 0) fit = a.radius->a + 2 * a.radius->b + 3;  // > radius + 2
       }
       if (proven) return t;
@@ -2725,6 +2745,7 @@ NetAttempt route_with(const NetPins& net, const geom::NormalizedObstacles& obs, 
     if (t.status != WireStatus::Ok) return fail(t.status);
     a.wires = t.wires;
     a.radius = tree_radius(t);
+    if (auto d = tree_sink_distances(t)) a.sink_distances = std::move(*d);
   }
   a.routed = true;
   return a;

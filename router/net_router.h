@@ -475,6 +475,9 @@ struct NetAttempt {
   // (L1, or octilinear a + b sqrt2). Every point that wave labelled lies that near the first pin,
   // which proves a window whose sides are farther (NetRouter); nullopt: not such a tree.
   std::optional<geom::Root2> radius;
+  // With radius: each sink's exact distance from the first pin (pins 1, 2, ... in order; radius
+  // is the greatest), which proves a window sink by sink (NetRouter; empty: not proven so).
+  std::vector<geom::Root2> sink_distances;
   // With NetRouterOptions::cost Combined or Link: per sink (every pin but the first), the L1
   // length and the bends of its optimal path from the first pin (what the windows' proof bounds).
   std::vector<std::pair<std::int64_t, std::int64_t>> sink_costs;
@@ -494,15 +497,24 @@ using NetRouteFn =
 
 // The greatest exact distance of a routed tree's sinks from its source (L1Router::Tree or
 // OctRouter::Tree), as NetAttempt::radius; nullopt when a sink has none.
+// Each sink's exact distance from the source, in the sinks' order, as NetAttempt::sink_distances;
+// nullopt when a sink has none.
 template <class Tree>
-std::optional<geom::Root2> tree_radius(const Tree& t) {
-  geom::Root2 r{0, 0};
+std::optional<std::vector<geom::Root2>> tree_sink_distances(const Tree& t) {
+  std::vector<geom::Root2> out;
+  out.reserve(t.distance.size());
   for (const auto& d : t.distance) {
     if (!d) return std::nullopt;
-    geom::Root2 v;
-    if constexpr (std::is_same_v<std::decay_t<decltype(*d)>, geom::Root2>) v = *d; else v = geom::Root2{*d, 0};
-    r = std::max(r, v);
+    if constexpr (std::is_same_v<std::decay_t<decltype(*d)>, geom::Root2>) out.push_back(*d); else out.push_back(geom::Root2{*d, 0});
   }
+  return out;
+}
+template <class Tree>
+std::optional<geom::Root2> tree_radius(const Tree& t) {
+  const auto d = tree_sink_distances(t);
+  if (!d) return std::nullopt;
+  geom::Root2 r{0, 0};
+  for (const geom::Root2& v : *d) r = std::max(r, v);
   return r;
 }
 

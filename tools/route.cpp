@@ -56,6 +56,7 @@ struct NetResult {
   io::Route route;
   std::string code;  // ROUTE-xxxx when failed
   std::optional<geom::Root2> radius;  // a shortest-path tree's: router::NetAttempt::radius
+  std::vector<geom::Root2> sink_distances;  // its sinks': router::NetAttempt::sink_distances
   std::optional<geom::Root2> distance;  // two pins by a shortest path: router::NetAttempt::distance
   bool shortest = false;  // router::NetOutcome::shortest
   std::vector<std::pair<std::int64_t, std::int64_t>> sink_costs;  // bend metrics: router::NetAttempt::sink_costs
@@ -195,7 +196,10 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router
     std::vector<io::Wire> wires;
     for (const auto& pts : t.wires) wires.push_back(io::Wire{pts});
     NetResult done = finish(std::move(wires));
-    if (done.route.status == "routed") done.radius = router::tree_radius(t);
+    if (done.route.status == "routed") {
+      done.radius = router::tree_radius(t);
+      if (auto d = router::tree_sink_distances(t)) done.sink_distances = std::move(*d);
+    }
     return done;
   }
   const typename Router::Wire w = router.shortest(ga, gb);
@@ -745,6 +749,7 @@ void add_route(CLI::App& app, int& status) {
             a.code = r.code;
             a.reason = r.route.reason.value_or("");
             a.radius = r.radius;
+            a.sink_distances = r.sink_distances;
             a.distance = r.distance;
             return a;
           });

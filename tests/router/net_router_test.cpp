@@ -24,6 +24,7 @@
 #include "router/check.h"
 #include "router/l1_router.h"
 #include "router/net_router.h"
+#include "router/oct_router.h"
 #include "support/net_layouts.h"
 #include "support/wavefront_hand.h"
 #include "support/random_shapes.h"
@@ -177,6 +178,81 @@ std::optional<Point> free_near(std::mt19937& rng, const router::L1Router& plain,
   return std::nullopt;
 }
 
+
+// NetAttempt::sink_distances: a tree is proven in its window sink by sink (each sink's distance
+// below the least, over the window's inner sides, of the first pin's and the sink's distances
+// from that side, less 4), which the radius alone (below the first pin's distance from every
+// inner side) does not prove. Walls on a coarse grid (shared coordinates, walls crossing and
+// touching) make detours; every tree proven in its window, with or without the sink-by-sink
+// proof, has the whole domain's distance at every sink, in L1 and octilinear, and the sink-by-
+// sink proof is needed for some (fewer windows).
+TEST(NetRouter, TreesProvenSinkBySinkHaveTheWholeLayoutsDistances) {
+  int failed = 0, trees = 0, fewer = 0;
+  for (int seed = 1; seed <= sanitized_share(200, 20); ++seed) {
+    std::mt19937 rng(static_cast<unsigned>(770000 + seed));
+    const geom::Box domain{{0, 0}, {2000, 2000}};
+    std::vector<Polygon> walls;
+    for (int k = 0, n = 15 + static_cast<int>(rng() % 20); k < n; ++k) {
+      const geom::Coord x = static_cast<geom::Coord>(50 * (rng() % 40)), y = static_cast<geom::Coord>(50 * (rng() % 40));
+      const geom::Coord len = static_cast<geom::Coord>(50 * (4 + rng() % 20)), t = static_cast<geom::Coord>(10 * (1 + rng() % 3));
+      const geom::Coord w = rng() % 2 ? len : t, h = w == len ? t : len;
+      walls.push_back(Polygon{{{x, y}, {std::min<geom::Coord>(x + w, 2000), y}, {std::min<geom::Coord>(x + w, 2000), std::min<geom::Coord>(y + h, 2000)},
+                                {x, std::min<geom::Coord>(y + h, 2000)}}, {}});
+    }
+    const geom::NormalizedObstacles norm = geom::normalize_obstacles(walls, domain);
+    const router::L1Router plain(norm.domain, norm.obstacles);
+    const Point c{static_cast<geom::Coord>(rng() % 2001), static_cast<geom::Coord>(rng() % 2001)};
+    std::vector<router::NetPins> tree{{"t", {}}};
+    for (int j = 0, pins = 3 + static_cast<int>(rng() % 4); j < pins; ++j)
+      if (const auto p = free_near(rng, plain, c, 250, 1000)) tree[0].pins.push_back(Polygon{{*p}, {}});
+    if (tree[0].pins.size() < 3) continue;
+    const router::NetRules rules{static_cast<std::int64_t>(rng() % 3), static_cast<std::int64_t>(rng() % 3)};
+    for (const bool oct : {false, true}) {
+      std::vector<geom::Root2> got;
+      const auto fn = [&](bool sinks) {
+        return [&, sinks](std::size_t, const router::NetPins& net, const geom::NormalizedObstacles& obs) {
+          router::NetAttempt at;
+          auto take = [&](const auto& t) {
+            got.clear();
+            at.routed = t.status == router::WireStatus::Ok;
+            at.code = at.routed ? "" : t.status == router::WireStatus::Unreachable ? "ROUTE-0002" : "ROUTE-0001";
+            if (!at.routed) return;
+            at.wires = t.wires;
+            at.radius = router::tree_radius(t);
+            got = *router::tree_sink_distances(t);
+            if (sinks) at.sink_distances = got;
+          };
+          if (oct) take(router::OctRouter(obs.domain, obs.obstacles).tree(net.pins[0], std::span<const Polygon>(net.pins).subspan(1)));
+          else take(router::L1Router(obs.domain, obs.obstacles).tree(net.pins[0], std::span<const Polygon>(net.pins).subspan(1)));
+          return at;
+        };
+      };
+      router::NetRouterOptions o;
+      o.octilinear = oct;
+      router::NetRouterOptions whole_o = o;
+      whole_o.windows = false;
+      router::NetRouter all(norm.domain, norm.obstacles, tree, rules, whole_o);
+      all.run(fn(false));
+      const std::vector<geom::Root2> whole = got;
+      std::int64_t windows[2] = {0, 0};
+      for (const bool sinks : {false, true}) {
+        router::NetRouter tw(norm.domain, norm.obstacles, tree, rules, o);
+        tw.run(fn(sinks));
+        windows[sinks] = tw.stats().windows;
+        if ((tw.outcomes()[0].routed != all.outcomes()[0].routed || got != whole) && failed++ < 5)
+          ADD_FAILURE() << "seed " << 770000 + seed << (oct ? " octilinear" : " L1") << (sinks ? ", sink by sink" : "")
+                        << ": the tree's distances differ from the whole domain's";
+      }
+      trees += all.outcomes()[0].routed;
+      fewer += windows[1] < windows[0];
+      if (windows[1] > windows[0] && failed++ < 5) ADD_FAILURE() << "seed " << 770000 + seed << ": more windows sink by sink";
+    }
+  }
+  std::printf("%d trees compared, %d proven in fewer windows sink by sink\n", trees, fewer);
+  EXPECT_EQ(failed, 0);
+  EXPECT_GE(trees, sanitized_share(260, 20));
+  EXPECT_GE(fewer, sanitized_share(12, 1));
+}
 
 // router::uncovered_segments (what a net's changed wires freed; the claims' withdrawal) against a
 // brute force on the lattice: a segment pq of length > 0 runs through the lattice points
