@@ -1418,8 +1418,8 @@ namespace {
 // so trees whose radius is up to an eighth longer are kept; a longer one gets the window it
 // needs next, NetRouter::try_net_unsnapped's fit). Until 2026-12-06 1.5 times: on 10^4 planted
 // nets (bench_net_router --planted --rounds 0) the first pass's windows then held a third more
-// vertices in all, and the routed wires after the last pass were the same, each the shortest
-// its window proves. Other nets: twice
+// vertices in all, and after the last pass the same nets were routed with the same total
+// length (each window's answer is the shortest it proves). Other nets: twice
 // the half-perimeter (the proof then needs the whole length inside the margin).
 std::int64_t first_margin(const NetPins& pins, const Box& hp, std::int64_t a, std::int64_t b) {
   const std::int64_t hpwl = (std::int64_t{hp.hi.x} - hp.lo.x) + (std::int64_t{hp.hi.y} - hp.lo.y);
@@ -1668,6 +1668,19 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
   const NetPins* use = &pins;
   bool choices_apart = false;  // no choice routed, and one of them was apart in this window
   bool was_apart = false;      // the pins were apart in an earlier window (ROUTE-0002)
+  const std::int64_t first_m = m;
+  // Whether `pins` are apart (ROUTE-0002) in the window of margin mm among the blockages and the
+  // other nets' pins alone (NetSpaceLevel::Pins: no wire, so the same all run long)
+  auto apart_among_pins = [&](std::int64_t mm, const NetPins& pins_used) {
+    const Box w0 = options_.windows ? clipped(geom::grown_box(hp, mm), dom) : dom;
+    geom::NormalizedObstacles o;
+    {
+      std::shared_lock lock(space_mutex_);
+      o = space_.obstacles(net, NetSpaceLevel::Pins, w0 == dom ? std::nullopt : std::optional<Box>(w0), {}, framed, nullptr);
+    }
+    const NetAttempt b = route(net, pins_used, o);
+    return !b.routed && b.code == "ROUTE-0002";
+  };
   while (true) {
     if (options_.stop && options_.stop()) throw NetRouterStopped();
     const Box w = options_.windows ? clipped(geom::grown_box(hp, m), dom) : dom;
@@ -1833,7 +1846,10 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
         // less 4, its shortest way lies where the window's space is the layout's, so the window
         // gives every sink the whole layout's distance (the radius's test asks the first pin's
         // distance alone to exceed the radius).
-        if (!proven && a.radius && a.sink_distances.size() + 1 == use->pins.size()) {
+        if (!a.sink_distances.empty() && (a.sink_distances.size() + 1 != use->pins.size() || !a.radius ||
+                                          *a.radius != greatest_distance(a.sink_distances)))
+          throw std::logic_error("NetRouter: a tree's sink distances do not match its pins or its radius");
+        if (!proven && !a.sink_distances.empty()) {
           const Box b0 = box_of(use->pins[0].outer);
           proven = true;
           for (std::size_t i = 0; proven && i < a.sink_distances.size(); ++i) {
@@ -1850,15 +1866,20 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
       }
       if (proven) return t;
       // A way round that a window found only after the pins were apart in a smaller one, and
-      // that this window cannot prove, is a detour of more than its margin: within the window
-      // limit (NetRouterOptions::search_windows) the net is taken as blocked, as when it finds no
-      // way there. (Since 2026-12-06. Before, the window grew on to prove the detour; on 10^4
-      // planted nets those windows, 70 in the rip-up rounds, held 51,000 vertices each and took a
-      // quarter of the rounds' time, and the rip-ups they made the way for routed fewer nets and
-      // longer wires: 9,926 nets and 44,672,833 DBU then, 9,926 and 43,735,619 with this and the
-      // smaller first margin above.)
+      // that this window cannot prove, is a detour of more than its margin. When the other nets'
+      // wires made it one (the pins meet in the first window among the blockages and pins
+      // alone), within the window limit (NetRouterOptions::search_windows) the net is taken as
+      // blocked, as when it finds no way there: its blockers are ripped up in the rounds, and the
+      // last pass routes it without the limit. (Since 2026-12-06, length cost only. Before, the
+      // window grew on to prove the detour; on 10^4 planted nets those windows, 70 in the rip-up
+      // rounds, held 51,000 vertices each and took a third of the rounds' time, and the rip-ups
+      // they made way for gave longer wires: 44,672,833 DBU then, 43,735,619 with this and the
+      // smaller first margin above, 9,926 nets routed either way. A net the blockages alone
+      // send round a detour grows its window as before: no rip-up could shorten its way, and
+      // capped it would wait for the last pass, where other wires may have shut it.) The code
+      // and reason are internal: the last pass tries every capped net again.
       if (was_apart && level == NetSpaceLevel::Full && capped_ && options_.search_windows > 0 &&
-          st.windows >= options_.search_windows) {
+          st.windows >= options_.search_windows && !apart_among_pins(first_m, *use)) {
         ++st.capped;
         a = NetAttempt{};
         a.code = "ROUTE-0002";
@@ -2744,8 +2765,10 @@ NetAttempt route_with(const NetPins& net, const geom::NormalizedObstacles& obs, 
     const typename Router::Tree t = r.tree(net.pins[0], std::span<const Polygon>(net.pins).subspan(1));
     if (t.status != WireStatus::Ok) return fail(t.status);
     a.wires = t.wires;
-    a.radius = tree_radius(t);
-    if (auto d = tree_sink_distances(t)) a.sink_distances = std::move(*d);
+    if (auto d = tree_sink_distances(t)) {
+      a.radius = greatest_distance(*d);
+      a.sink_distances = std::move(*d);
+    }
   }
   a.routed = true;
   return a;

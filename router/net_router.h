@@ -68,7 +68,8 @@
 //
 // Windows. A net is routed in a window round its pins (their bounding box grown by m = 2 x its
 // half-perimeter + 8(a + b) + 64), with only the pieces that meet it (R-trees), and the answer is
-// kept when it is provably what the whole layout gives: for two point pins when its length L is
+// kept when it is provably what the whole layout gives (a shortest way; for a tree grown from its
+// first pin, every sink's distance, see NetRouter::try_net_unsnapped): for two point pins when its length L is
 // at most the least of |dy| + 2(d - 2) over the window's top and bottom sides inside the domain
 // (d: that side's distance from the pins' box) and of |dx| + 2(d - 2) over its left and right
 // ones: a way out through a side and back climbs at least that far along one axis, so it is at
@@ -119,8 +120,9 @@
 // one kept; a final round then tries each net still unrouted once more, its blockers ripped up
 // whatever their rips, and keeps only the rip-ups that route more nets. In the first pass and
 // the rounds a net finding no way in its first search_windows
-// windows (NetRouterOptions), or only a detour there that they cannot prove shortest after its
-// pins were apart in a smaller one, is taken as blocked there, not widened to the whole domain; the
+// windows (NetRouterOptions), or (length cost) only a detour there that they cannot prove
+// shortest after the other nets' wires set its pins apart in a smaller one, is taken as blocked
+// there, not widened to the whole domain; the
 // last pass then tries each net still unrouted without that limit, and places what it routes;
 // it first builds, once, a superset of every unrouted net's free space on the whole domain
 // (NetRouterOptions::superset), so a net whose pins lie in different free components of it stops
@@ -497,8 +499,9 @@ using NetRouteFn =
 
 // The greatest exact distance of a routed tree's sinks from its source (L1Router::Tree or
 // OctRouter::Tree), as NetAttempt::radius; nullopt when a sink has none.
-// Each sink's exact distance from the source, in the sinks' order, as NetAttempt::sink_distances;
-// nullopt when a sink has none.
+// Each sink's exact distance from the source of a routed tree (L1Router::Tree or
+// OctRouter::Tree), in the sinks' order, as NetAttempt::sink_distances; nullopt when a sink has
+// none.
 template <class Tree>
 std::optional<std::vector<geom::Root2>> tree_sink_distances(const Tree& t) {
   std::vector<geom::Root2> out;
@@ -509,13 +512,19 @@ std::optional<std::vector<geom::Root2>> tree_sink_distances(const Tree& t) {
   }
   return out;
 }
+// The greatest of them, as NetAttempt::radius (0 for none).
+inline geom::Root2 greatest_distance(std::span<const geom::Root2> d) {
+  geom::Root2 r{0, 0};
+  for (const geom::Root2& v : d) r = std::max(r, v);
+  return r;
+}
+// The greatest exact distance of a routed tree's sinks from its source, as NetAttempt::radius;
+// nullopt when a sink has none.
 template <class Tree>
 std::optional<geom::Root2> tree_radius(const Tree& t) {
   const auto d = tree_sink_distances(t);
   if (!d) return std::nullopt;
-  geom::Root2 r{0, 0};
-  for (const geom::Root2& v : *d) r = std::max(r, v);
-  return r;
+  return greatest_distance(*d);
 }
 
 struct NetOutcome {
@@ -597,8 +606,10 @@ struct NetRouterOptions {
   // In the first pass and the rip-up rounds, a net that finds no way among the other nets' wires
   // in this many windows (each 4 times the last's margin) is taken as blocked by them, and its
   // blockers are ripped up, instead of its window growing to the whole domain to look for a
-  // detour; so is one whose pins were apart in a smaller window and whose way in the last of
-  // them is a detour that window cannot prove shortest (since 2026-12-06). Every net still unrouted after the rounds is then tried once more without the limit
+  // detour; so is one (length cost) whose pins were apart in a smaller window, though not among
+  // the blockages and pins alone, and whose way in the last of them is a detour that window
+  // cannot prove shortest (since 2026-12-06). Every net still unrouted after the rounds is then
+  // tried once more without the limit
   // (so a net is left unrouted only when no way exists in the whole final layout). 0: no limit.
   int search_windows = 2;
   // After the rounds, one final round over the nets still unrouted in the best state, in which

@@ -197,8 +197,10 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router
     for (const auto& pts : t.wires) wires.push_back(io::Wire{pts});
     NetResult done = finish(std::move(wires));
     if (done.route.status == "routed") {
-      done.radius = router::tree_radius(t);
-      if (auto d = router::tree_sink_distances(t)) done.sink_distances = std::move(*d);
+      if (auto d = router::tree_sink_distances(t)) {
+        done.radius = router::greatest_distance(*d);
+        done.sink_distances = std::move(*d);
+      }
     }
     return done;
   }

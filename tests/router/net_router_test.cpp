@@ -1932,14 +1932,6 @@ TEST(NetRouter, ARipUpThatLosesNetsIsUndone) {
   EXPECT_TRUE(router::check_routes(none, check_nets(nets, nr), {2, 2}).problems.empty());
 }
 
-// The L1 length of a net's wires.
-std::int64_t l1_wire_length(const std::vector<std::vector<Point>>& wires) {
-  std::int64_t len = 0;
-  for (const auto& w : wires)
-    for (std::size_t i = 1; i < w.size(); ++i) len += std::abs(w[i].x - w[i - 1].x) + std::abs(w[i].y - w[i - 1].y);
-  return len;
-}
-
 // NetRouterOptions::search_windows: a net shut out of its first two windows by another net's wire
 // is taken as blocked while the rounds last, and the last pass routes it round its detour. A
 // wall of blockage across the layout has a gap, which net b's short wire plugs (b goes first:
@@ -1971,7 +1963,7 @@ TEST(NetRouter, TheLastPassRoutesADetourBeyondTheWindowLimit) {
     EXPECT_TRUE(router::check_routes(norm, check_nets(nets, *nr), {0, 0}).problems.empty());
   }
   EXPECT_EQ(limited->outcomes()[0].wires, unlimited->outcomes()[0].wires);
-  const std::int64_t len = l1_wire_length(limited->outcomes()[0].wires);
+  const std::int64_t len = l1_len(limited->outcomes()[0]);
   EXPECT_EQ(len, 8000 + 2 * 45000);  // over the wall's top at y = 95,000
   // limited: a stopped at the limit (first pass and rounds), then routed by the last pass
   EXPECT_EQ(limited->stats().first_pass, 1u);
@@ -1995,43 +1987,57 @@ TEST(NetRouter, TheLastPassRoutesADetourBeyondTheWindowLimit) {
   EXPECT_TRUE(router::check_routes(norm, check_nets(nets, *final), {0, 0}).problems.empty());
 }
 
-// The window limit also stops a net whose pins were apart in its first window and whose way in
-// the second is a detour that window cannot prove shortest (since 2026-12-06: before, the window
-// grew on to prove it, which on 10^4 planted nets cost a quarter of the rip-up rounds' time).
-// Pins (0, 0) and (100, 0): a wall at x = 40..60 up to y = 300, and a shelf over the left pin
-// from x = -300 to the wall, so the only way goes left round the shelf, up, over the wall and
-// down: 1,300 long. The first window (margin 86) holds no way; the second (margin 344) holds
-// this one, but a way out through its sides would be at most 100 + 2 x 342 = 784, so it proves
-// nothing. Limited, the net is taken as blocked there (no other net: the rounds find no blocker)
-// and the last pass routes it, with the wire the unlimited search gives in its first pass.
+// The window limit also stops a net whose pins were apart in its first window because of other
+// nets' wires and whose way in the second is a detour that window cannot prove shortest (since
+// 2026-12-06: before, the window grew on to prove it, which on 10^4 planted nets cost a third of
+// the rip-up rounds' time); a net the blockages alone send round such a detour grows its window
+// as before (no rip-up could help it). Pins of a at (0, 0) and (1,000, 0); a wall at x = 490..510
+// up to y = 100 (a goes over it, 1,202 long, among the blockages alone); net b, shorter, goes
+// first, straight up from the wall's top at (500, 100) to (500, 700); a shelf from x = -1,800 to
+// b's wire at y = 600..620. Then a's only way goes left round the shelf, over b's end and down:
+// 6,002 long (along the top of b's grown wire, y = 701). Its first window (margin 536) holds no way; its second (margin 2,144) holds this
+// one, but a way out through its sides is at most 1,000 + 2 x 2,142 = 5,284, so it proves
+// nothing. With no rip-up allowed a is taken as blocked in the first pass and the rounds, and the
+// last pass routes it, with the wire the unlimited search gives in its first pass. With b's wire
+// made a blockage instead (one net), a follows the detour in the first pass, limit or not.
 TEST(NetRouter, TheLastPassRoutesADetourItsSecondWindowCannotProve) {
-  const geom::Box domain{{-400, -400}, {500, 400}};
-  const std::vector<Polygon> blocks{{{{40, -400}, {60, -400}, {60, 300}, {40, 300}}, {}},
-                                    {{{-300, 10}, {40, 10}, {40, 20}, {-300, 20}}, {}}};
-  const geom::NormalizedObstacles norm = geom::normalize_obstacles(blocks, domain);
-  std::vector<router::NetPins> nets(1);
-  nets[0] = {"a", {Polygon{{{0, 0}}, {}}, Polygon{{{100, 0}}, {}}}};
-  auto run = [&](int search_windows) {
+  const geom::Box domain{{-2500, -3000}, {3500, 3000}};
+  const Polygon wall{{{490, -3000}, {510, -3000}, {510, 100}, {490, 100}}, {}};
+  const Polygon shelf{{{-1800, 600}, {499, 600}, {499, 620}, {-1800, 620}}, {}};
+  const router::NetPins a{"a", {Polygon{{{0, 0}}, {}}, Polygon{{{1000, 0}}, {}}}};
+  const router::NetPins b{"b", {Polygon{{{500, 100}}, {}}, Polygon{{{500, 700}}, {}}}};
+  auto run = [&](const std::vector<Polygon>& blocks, const std::vector<router::NetPins>& nets, int search_windows) {
+    const geom::NormalizedObstacles norm = geom::normalize_obstacles(blocks, domain);
     router::NetRouterOptions o;
+    o.max_rips = 0;
+    o.final_round = false;
     o.search_windows = search_windows;
     auto nr = std::make_unique<router::NetRouter>(norm.domain, norm.obstacles, nets, router::NetRules{0, 0}, o);
     nr->run(router::NetRouter::l1_router(false));
+    for (const auto& o2 : nr->outcomes()) EXPECT_TRUE(o2.routed) << o2.reason;
+    EXPECT_TRUE(router::check_routes(norm, check_nets(nets, *nr), {0, 0}).problems.empty());
     return nr;
   };
-  const auto limited = run(2), unlimited = run(0);
-  for (const auto* nr : {limited.get(), unlimited.get()}) {
-    ASSERT_TRUE(nr->outcomes()[0].routed);
-    EXPECT_TRUE(router::check_routes(norm, check_nets(nets, *nr), {0, 0}).problems.empty());
-  }
+  // b's wire to blame: capped while the limit holds
+  const std::vector<router::NetPins> two{a, b};
+  const auto limited = run({wall, shelf}, two, 2), unlimited = run({wall, shelf}, two, 0);
+  EXPECT_EQ(limited->order(), (std::vector<std::size_t>{1, 0}));
   EXPECT_EQ(limited->outcomes()[0].wires, unlimited->outcomes()[0].wires);
-  const std::int64_t len = l1_wire_length(limited->outcomes()[0].wires);
-  EXPECT_EQ(len, 1300);
-  EXPECT_EQ(limited->stats().first_pass, 0u);
+  const std::int64_t len = l1_len(limited->outcomes()[0]);
+  EXPECT_EQ(len, 6002);
+  EXPECT_EQ(limited->stats().first_pass, 1u);
   EXPECT_GE(limited->stats().capped, 1);
   EXPECT_EQ(limited->stats().last_pass, 1u);
   EXPECT_EQ(limited->stats().last_pass_routed, 1u);
-  EXPECT_EQ(unlimited->stats().first_pass, 1u);
+  EXPECT_EQ(unlimited->stats().first_pass, 2u);
   EXPECT_EQ(unlimited->stats().capped, 0);
+  // the blockages alone to blame: b's wire a blockage, a alone routed in the first pass
+  const Polygon b_wire{{{499, 99}, {501, 99}, {501, 701}, {499, 701}}, {}};
+  const auto alone = run({wall, shelf, b_wire}, {a}, 2);
+  EXPECT_EQ(l1_len(alone->outcomes()[0]), 6002);
+  EXPECT_EQ(alone->stats().first_pass, 1u);
+  EXPECT_EQ(alone->stats().capped, 0);
+  EXPECT_EQ(alone->stats().last_pass, 0u);
 }
 
 // A net whose only way runs at exactly the clearance between two other nets' wires: legal (the
