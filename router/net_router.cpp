@@ -1669,8 +1669,11 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
   bool choices_apart = false;  // no choice routed, and one of them was apart in this window
   bool was_apart = false;      // the pins were apart in an earlier window (ROUTE-0002)
   const std::int64_t first_m = m;
-  // Whether `pins` are apart (ROUTE-0002) in the window of margin mm among the blockages and the
-  // other nets' pins alone (NetSpaceLevel::Pins: no wire, so the same all run long)
+  // Whether `pins_used` are apart (ROUTE-0002) in the window of margin mm among the blockages and
+  // the other nets' pins alone (NetSpaceLevel::Pins: no wire, so the same all run long). Called
+  // with the first window only (with search_windows > 2 a later window may have been the one
+  // apart: the cap is then missed, never wrongly made), and not cached (a net not capped grows
+  // on, and each later unproven window asks again: rare).
   auto apart_among_pins = [&](std::int64_t mm, const NetPins& pins_used) {
     const Box w0 = options_.windows ? clipped(geom::grown_box(hp, mm), dom) : dom;
     geom::NormalizedObstacles o;
@@ -1874,7 +1877,9 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
       // window grew on to prove the detour; on 10^4 planted nets those windows, 70 in the rip-up
       // rounds, held 51,000 vertices each and took a third of the rounds' time, and the rip-ups
       // they made way for gave longer wires: 44,672,833 DBU then, 43,735,619 with this and the
-      // smaller first margin above, 9,926 nets routed either way. A net the blockages alone
+      // smaller first margin above, 9,926 nets routed either way (1c9682c, which capped the
+      // blockages' detours too; on that row it makes no difference: f399af9 gave 76e798d's
+      // counts exactly). A net the blockages alone
       // send round a detour grows its window as before: no rip-up could shorten its way, and
       // capped it would wait for the last pass, where other wires may have shut it.) The code
       // and reason are internal: the last pass tries every capped net again.

@@ -121,7 +121,7 @@
 // whatever their rips, and keeps only the rip-ups that route more nets. In the first pass and
 // the rounds a net finding no way in its first search_windows
 // windows (NetRouterOptions), or (length cost) only a detour there that they cannot prove
-// shortest after the other nets' wires set its pins apart in a smaller one, is taken as blocked
+// shortest after the other nets' wires set its pins apart in its first one, is taken as blocked
 // there, not widened to the whole domain; the
 // last pass then tries each net still unrouted without that limit, and places what it routes;
 // it first builds, once, a superset of every unrouted net's free space on the whole domain
@@ -478,7 +478,8 @@ struct NetAttempt {
   // which proves a window whose sides are farther (NetRouter); nullopt: not such a tree.
   std::optional<geom::Root2> radius;
   // With radius: each sink's exact distance from the first pin (pins 1, 2, ... in order; radius
-  // is the greatest), which proves a window sink by sink (NetRouter; empty: not proven so).
+  // is the greatest), which proves a window sink by sink (NetRouter; empty: not proven so; set
+  // without radius, or not matching it or the pins, NetRouter throws std::logic_error).
   std::vector<geom::Root2> sink_distances;
   // With NetRouterOptions::cost Combined or Link: per sink (every pin but the first), the L1
   // length and the bends of its optimal path from the first pin (what the windows' proof bounds).
@@ -497,8 +498,6 @@ struct NetAttempt {
 using NetRouteFn =
     std::function<NetAttempt(std::size_t net, const NetPins& pins, const geom::NormalizedObstacles& obstacles)>;
 
-// The greatest exact distance of a routed tree's sinks from its source (L1Router::Tree or
-// OctRouter::Tree), as NetAttempt::radius; nullopt when a sink has none.
 // Each sink's exact distance from the source of a routed tree (L1Router::Tree or
 // OctRouter::Tree), in the sinks' order, as NetAttempt::sink_distances; nullopt when a sink has
 // none.
@@ -606,8 +605,8 @@ struct NetRouterOptions {
   // In the first pass and the rip-up rounds, a net that finds no way among the other nets' wires
   // in this many windows (each 4 times the last's margin) is taken as blocked by them, and its
   // blockers are ripped up, instead of its window growing to the whole domain to look for a
-  // detour; so is one (length cost) whose pins were apart in a smaller window, though not among
-  // the blockages and pins alone, and whose way in the last of them is a detour that window
+  // detour; so is one (length cost) whose pins were apart in its first window, though not among
+  // the blockages and pins alone there, and whose way in a later one is a detour that window
   // cannot prove shortest (since 2026-12-06). Every net still unrouted after the rounds is then
   // tried once more without the limit
   // (so a net is left unrouted only when no way exists in the whole final layout). 0: no limit.

@@ -188,7 +188,7 @@ std::optional<Point> free_near(std::mt19937& rng, const router::L1Router& plain,
 // sink proof is needed for some (fewer windows).
 TEST(NetRouter, TreesProvenSinkBySinkHaveTheWholeLayoutsDistances) {
   int failed = 0, trees = 0, fewer = 0;
-  for (int seed = 1; seed <= sanitized_share(200, 20); ++seed) {
+  for (int seed = 1; seed <= sanitized_share(200, 4); ++seed) {  // 25 under the sanitizers: 44 trees, 13 fewer
     std::mt19937 rng(static_cast<unsigned>(770000 + seed));
     const geom::Box domain{{0, 0}, {2000, 2000}};
     std::vector<Polygon> walls;
@@ -250,8 +250,8 @@ TEST(NetRouter, TreesProvenSinkBySinkHaveTheWholeLayoutsDistances) {
   }
   std::printf("%d trees compared, %d proven in fewer windows sink by sink\n", trees, fewer);
   EXPECT_EQ(failed, 0);
-  EXPECT_GE(trees, sanitized_share(260, 20));
-  EXPECT_GE(fewer, sanitized_share(12, 1));
+  EXPECT_GE(trees, sanitized_share(260, 8));
+  EXPECT_GE(fewer, sanitized_share(12, 6));
 }
 
 // router::uncovered_segments (what a net's changed wires freed; the claims' withdrawal) against a
@@ -1996,7 +1996,7 @@ TEST(NetRouter, TheLastPassRoutesADetourBeyondTheWindowLimit) {
 // first, straight up from the wall's top at (500, 100) to (500, 700); a shelf from x = -1,800 to
 // b's wire at y = 600..620. Then a's only way goes left round the shelf, over b's end and down:
 // 6,002 long (along the top of b's grown wire, y = 701). Its first window (margin 536) holds no way; its second (margin 2,144) holds this
-// one, but a way out through its sides is at most 1,000 + 2 x 2,142 = 5,284, so it proves
+// one, but a way out through its sides is at least 1,000 + 2 x 2,142 = 5,284, so it proves
 // nothing. With no rip-up allowed a is taken as blocked in the first pass and the rounds, and the
 // last pass routes it, with the wire the unlimited search gives in its first pass. With b's wire
 // made a blockage instead (one net), a follows the detour in the first pass, limit or not.
