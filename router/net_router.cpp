@@ -1,6 +1,7 @@
 #include "router/net_router.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -1669,13 +1670,13 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
   bool choices_apart = false;  // no choice routed, and one of them was apart in this window
   bool was_apart = false;      // the pins were apart in an earlier window (ROUTE-0002)
   const std::int64_t first_m = m;
-  // Whether `pins_used` are apart (ROUTE-0002) in the window of margin mm among the blockages and
-  // the other nets' pins alone (NetSpaceLevel::Pins: no wire, so the same all run long). Called
-  // with the first window only (with search_windows > 2 a later window may have been the one
-  // apart: the cap is then missed, never wrongly made), and not cached (a net not capped grows
+  // Whether `pins_used` are apart (ROUTE-0002) in the first window among the blockages and
+  // the other nets' pins alone (NetSpaceLevel::Pins: no wire, so the same all run long; with
+  // search_windows > 2 a later window may have been the one apart: the cap is then missed,
+  // never wrongly made), and not cached (a net not capped grows
   // on, and each later unproven window asks again: rare).
-  auto apart_among_pins = [&](std::int64_t mm, const NetPins& pins_used) {
-    const Box w0 = options_.windows ? clipped(geom::grown_box(hp, mm), dom) : dom;
+  auto apart_among_pins = [&](const NetPins& pins_used) {
+    const Box w0 = options_.windows ? clipped(geom::grown_box(hp, first_m), dom) : dom;
     geom::NormalizedObstacles o;
     {
       std::shared_lock lock(space_mutex_);
@@ -1755,13 +1756,18 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
     st.whole += whole;
     if (whole) return t;
     // the least distance from box b to a side of the window that lies inside the domain
+    // box b's distance from each side of the window (left, right, bottom, top); none (the
+    // int64 maximum) for a side on the domain's
+    constexpr std::int64_t kNone = std::numeric_limits<std::int64_t>::max();
+    auto side_gaps = [&](const Box& b) {
+      return std::array<std::int64_t, 4>{w.lo.x > dom.lo.x ? std::int64_t{b.lo.x} - w.lo.x : kNone,
+                                         w.hi.x < dom.hi.x ? std::int64_t{w.hi.x} - b.hi.x : kNone,
+                                         w.lo.y > dom.lo.y ? std::int64_t{b.lo.y} - w.lo.y : kNone,
+                                         w.hi.y < dom.hi.y ? std::int64_t{w.hi.y} - b.hi.y : kNone};
+    };
     auto inner = [&](const Box& b) {
-      std::int64_t d = std::numeric_limits<std::int64_t>::max();
-      if (w.lo.x > dom.lo.x) d = std::min<std::int64_t>(d, std::int64_t{b.lo.x} - w.lo.x);
-      if (w.hi.x < dom.hi.x) d = std::min<std::int64_t>(d, std::int64_t{w.hi.x} - b.hi.x);
-      if (w.lo.y > dom.lo.y) d = std::min<std::int64_t>(d, std::int64_t{b.lo.y} - w.lo.y);
-      if (w.hi.y < dom.hi.y) d = std::min<std::int64_t>(d, std::int64_t{w.hi.y} - b.hi.y);
-      return d;
+      const auto g = side_gaps(b);
+      return *std::min_element(g.begin(), g.end());
     };
     if (a.routed && options_.cost != NetRouterOptions::Cost::Length) {
       // the bend-aware metrics (see the header): per sink, the least a path out of the window costs
@@ -1853,15 +1859,13 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
                                           *a.radius != greatest_distance(a.sink_distances)))
           throw std::logic_error("NetRouter: a tree's sink distances do not match its pins or its radius");
         if (!proven && !a.sink_distances.empty()) {
-          const Box b0 = box_of(use->pins[0].outer);
+          const auto g0 = side_gaps(box_of(use->pins[0].outer));
           proven = true;
           for (std::size_t i = 0; proven && i < a.sink_distances.size(); ++i) {
-            const Box bs = box_of(use->pins[i + 1].outer);
-            std::int64_t least = std::numeric_limits<std::int64_t>::max();
-            if (w.lo.x > dom.lo.x) least = std::min<std::int64_t>(least, std::int64_t{b0.lo.x} + bs.lo.x - 2 * std::int64_t{w.lo.x});
-            if (w.hi.x < dom.hi.x) least = std::min<std::int64_t>(least, 2 * std::int64_t{w.hi.x} - b0.hi.x - bs.hi.x);
-            if (w.lo.y > dom.lo.y) least = std::min<std::int64_t>(least, std::int64_t{b0.lo.y} + bs.lo.y - 2 * std::int64_t{w.lo.y});
-            if (w.hi.y < dom.hi.y) least = std::min<std::int64_t>(least, 2 * std::int64_t{w.hi.y} - b0.hi.y - bs.hi.y);
+            const auto gs = side_gaps(box_of(use->pins[i + 1].outer));
+            std::int64_t least = kNone;
+            for (std::size_t k = 0; k < 4; ++k)
+              if (g0[k] != kNone) least = std::min(least, g0[k] + gs[k]);
             proven = a.sink_distances[i] < geom::Root2{least - 4, 0};
           }
         }
@@ -1884,7 +1888,7 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
       // capped it would wait for the last pass, where other wires may have shut it.) The code
       // and reason are internal: the last pass tries every capped net again.
       if (was_apart && level == NetSpaceLevel::Full && capped_ && options_.search_windows > 0 &&
-          st.windows >= options_.search_windows && !apart_among_pins(first_m, *use)) {
+          st.windows >= options_.search_windows && !apart_among_pins(*use)) {
         ++st.capped;
         a = NetAttempt{};
         a.code = "ROUTE-0002";
