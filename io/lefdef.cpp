@@ -75,6 +75,22 @@ std::vector<Tok> tokenize(std::string_view text) {
   return out;
 }
 
+// s with every byte outside printable ASCII as \xNN, for a message
+std::string shown(std::string_view s) {
+  std::string out;
+  for (const char ch : s) {
+    const auto u = static_cast<unsigned char>(ch);
+    if (u >= 0x20 && u < 0x7F) {
+      out += ch;
+    } else {
+      char esc[8];
+      std::snprintf(esc, sizeof esc, "\\x%02X", static_cast<unsigned>(u));
+      out += esc;
+    }
+  }
+  return out;
+}
+
 class Cursor {
  public:
   Cursor(std::vector<Tok> toks, std::string file) : t_(std::move(toks)), file_(std::move(file)) {}
@@ -563,6 +579,7 @@ struct Def {
   std::vector<DefNet> nets;
   std::vector<Geo> blockages;
   std::map<std::string, Via, std::less<>> vias;  // DEF VIAS section (on the layer)
+  std::vector<Diagnostic> warnings;               // IO-0132: a section's count differs from its items
 };
 
 // "( x y [ext] )", "*" repeating the previous point's coordinate; *ext gets ext, or 0
@@ -792,7 +809,30 @@ void parse_def(Cursor& c, const std::string& layer, const Lib& lib, Def& d) {
     }
     return false;
   };
-  auto item_start = [&]() { c.expect("-"); };
+  std::size_t items = 0;  // the items of the section being read
+  auto item_start = [&]() {
+    c.expect("-");
+    ++items;
+  };
+  // "NAME n ;", the head of a section: the number of items it declares (a whole number)
+  auto section_start = [&](const Tok& name) {
+    const Tok n = c.next();
+    std::size_t v = 0;
+    const auto [p, ec] = std::from_chars(n.s.data(), n.s.data() + n.s.size(), v);
+    if (ec != std::errc() || p != n.s.data() + n.s.size())
+      c.fail("IO-0121", "section " + std::string(name.s) + " declares its number of items, not \"" + std::string(n.s) + "\"", n.line);
+    c.expect(";");
+    items = 0;
+    return v;
+  };
+  // after END NAME: a count that differs from the items read is named (a file cut or edited by
+  // hand; what was read is used)
+  auto section_read = [&](const Tok& name, std::size_t declared) {
+    if (items != declared)
+      d.warnings.push_back(Diagnostic{Severity::Warning, "IO-0132", c.file(), name.line, 0,
+                                      "section " + std::string(name.s) + " declares " + std::to_string(declared) + " item" +
+                                          (declared == 1 ? "" : "s") + " and holds " + std::to_string(items)});
+  };
   while (!c.done()) {
     const Tok t = c.next();
     if (t.s == "DESIGN") {
@@ -829,7 +869,7 @@ void parse_def(Cursor& c, const std::string& layer, const Lib& lib, Def& d) {
       if (b.lo.x == b.hi.x || b.lo.y == b.hi.y) c.fail("IO-0121", "a DIEAREA with no area", t.line);
       d.die = b;
     } else if (t.s == "VIAS") {
-      c.skip_statement();
+      const std::size_t declared = section_start(t);
       while (!section_end("VIAS")) {
         item_start();
         const Tok name = c.next();
@@ -858,8 +898,9 @@ void parse_def(Cursor& c, const std::string& layer, const Lib& lib, Def& d) {
         c.next();
         d.vias[std::string(name.s)] = std::move(v);
       }
+      section_read(t, declared);
     } else if (t.s == "COMPONENTS") {
-      c.skip_statement();
+      const std::size_t declared = section_start(t);
       while (!section_end("COMPONENTS")) {
         item_start();
         Component comp;
@@ -876,8 +917,9 @@ void parse_def(Cursor& c, const std::string& layer, const Lib& lib, Def& d) {
         c.next();
         d.comps.push_back(std::move(comp));
       }
+      section_read(t, declared);
     } else if (t.s == "PINS") {
-      c.skip_statement();
+      const std::size_t declared = section_start(t);
       while (!section_end("PINS")) {
         item_start();
         DefPin p;
@@ -915,9 +957,10 @@ void parse_def(Cursor& c, const std::string& layer, const Lib& lib, Def& d) {
         c.next();
         d.pins.push_back(std::move(p));
       }
+      section_read(t, declared);
     } else if (t.s == "NETS" || t.s == "SPECIALNETS") {
       const bool special = t.s == "SPECIALNETS";
-      c.skip_statement();
+      const std::size_t declared = section_start(t);
       while (!section_end(t.s)) {
         item_start();
         DefNet net;
@@ -982,9 +1025,10 @@ void parse_def(Cursor& c, const std::string& layer, const Lib& lib, Def& d) {
         c.next();
         d.nets.push_back(std::move(net));
       }
+      section_read(t, declared);
     } else if (t.s == "BLOCKAGES" || t.s == "FILLS") {  // metal fill on the layer blocks as a blockage does
       const std::string_view section = t.s;
-      c.skip_statement();
+      const std::size_t declared = section_start(t);
       while (!section_end(section)) {
         item_start();
         const Tok k = c.next();
@@ -1018,6 +1062,7 @@ void parse_def(Cursor& c, const std::string& layer, const Lib& lib, Def& d) {
           }
         }
       }
+      section_read(t, declared);
     } else if (t.s == "END") {
       c.expect("DESIGN");
       return;
@@ -1031,8 +1076,12 @@ void parse_def(Cursor& c, const std::string& layer, const Lib& lib, Def& d) {
       } else {
         c.skip_block(t.s);
       }
-    } else {
+    } else if (t.s == "VERSION" || t.s == "NAMESCASESENSITIVE" || t.s == "DIVIDERCHAR" || t.s == "BUSBITCHARS" ||
+               t.s == "TECHNOLOGY" || t.s == "HISTORY" || t.s == "ROW" || t.s == "TRACKS" || t.s == "GCELLGRID" ||
+               t.s == "COMPONENTMASKSHIFT" || t.s == "FIXEDMASK") {  // DEF 5.8's other statements: nothing on the layer
       c.skip_statement();
+    } else {  // (since 2026-12-06: before, skipped to the next ';' unseen, junk before VERSION included)
+      c.fail("IO-0121", "\"" + shown(t.s) + "\" begins no DEF statement", t.line);
     }
   }
   c.fail("IO-0121", "the DEF ends without END DESIGN (is the file cut short?)");
@@ -1291,8 +1340,6 @@ Layout assemble(const Def& d, const Lib& lib, const DefImportOptions& o, const C
     }
   }
 
-  if (d.units == 0)  // scanned but not read as a statement: swallowed by a statement missing its ';'
-    dc.fail("IO-0121", "UNITS DISTANCE MICRONS is not read as a statement (is a ';' missing before it?)", 0);
   Layout out;
   out.name = d.design.empty() ? "imported" : d.design;
   out.dbu_per_micron = d.units;
@@ -1526,17 +1573,7 @@ Layout assemble(const Def& d, const Lib& lib, const DefImportOptions& o, const C
     if (k == std::string::npos) return;
     char byte[8];
     std::snprintf(byte, sizeof byte, "0x%02X", static_cast<unsigned>(static_cast<unsigned char>(name[k])));
-    std::string shown;
-    for (const char ch : name) {
-      const auto u = static_cast<unsigned char>(ch);
-      if (u >= 0x20 && u < 0x7F) shown += ch;
-      else {
-        char esc[8];
-        std::snprintf(esc, sizeof esc, "\\x%02X", static_cast<unsigned>(u));
-        shown += esc;
-      }
-    }
-    dc.fail("IO-0130", what + " \"" + shown + "\" has byte " + byte + " at " + std::to_string(k + 1) +
+    dc.fail("IO-0130", what + " \"" + shown(name) + "\" has byte " + byte + " at " + std::to_string(k + 1) +
                            ", which is no UTF-8 character XML can carry: taut writes names as UTF-8 XML (rename it in the DEF or LEF)",
             line);
   };
@@ -1554,15 +1591,17 @@ Layout assemble(const Def& d, const Lib& lib, const DefImportOptions& o, const C
   return out;
 }
 
-std::int64_t scan_units(const std::vector<Tok>& t) {
+// the first "UNITS DISTANCE MICRONS n": n (-1 when it is not an integer from 1 to 10^6), 0 when
+// there is none, and its line
+std::pair<std::int64_t, int> scan_units(const std::vector<Tok>& t) {
   for (std::size_t i = 0; i + 3 < t.size(); ++i)
     if (t[i].s == "UNITS" && t[i + 1].s == "DISTANCE" && t[i + 2].s == "MICRONS") {
       std::int64_t v = 0;
       auto [p, ec] = std::from_chars(t[i + 3].s.data(), t[i + 3].s.data() + t[i + 3].s.size(), v);
-      if (ec == std::errc() && p == t[i + 3].s.data() + t[i + 3].s.size() && v > 0 && v <= 1'000'000) return v;
-      return -1;
+      if (ec == std::errc() && p == t[i + 3].s.data() + t[i + 3].s.size() && v > 0 && v <= 1'000'000) return {v, t[i].line};
+      return {-1, t[i].line};
     }
-  return 0;
+  return {0, 1};
 }
 
 }  // namespace
@@ -1573,11 +1612,11 @@ DefImportResult import_def_text(const std::pair<std::string, std::string>& def,
   DefImportResult r;
   try {
     std::vector<Tok> toks = tokenize(def.second);
-    const std::int64_t units = scan_units(toks);
+    const auto [units, units_line] = scan_units(toks);
     Cursor dc(std::move(toks), def.first);
     {
       if (units == 0) dc.fail("IO-0121", "no UNITS DISTANCE MICRONS statement", 1);
-      if (units < 0) dc.fail("IO-0123", "UNITS DISTANCE MICRONS is not an integer from 1 to 10^6", 1);
+      if (units < 0) dc.fail("IO-0123", "UNITS DISTANCE MICRONS is not an integer from 1 to 10^6", units_line);
       Lib lib;
       for (const auto& [name, text] : lefs) {
         Cursor lc(tokenize(text), name);
@@ -1586,6 +1625,9 @@ DefImportResult import_def_text(const std::pair<std::string, std::string>& def,
       r.diagnostics.insert(r.diagnostics.end(), lib.warnings.begin(), lib.warnings.end());
       Def d;
       parse_def(dc, options.layer, lib, d);
+      if (d.units == 0)  // scanned but not read as a statement: swallowed by a statement missing its ';'
+        dc.fail("IO-0121", "UNITS DISTANCE MICRONS is not read as a statement (is a ';' missing before it?)", units_line);
+      r.diagnostics.insert(r.diagnostics.end(), d.warnings.begin(), d.warnings.end());
       r.layout = assemble(d, lib, options, dc, r.diagnostics, r.stats);
     }
   } catch (const Failure& f) {

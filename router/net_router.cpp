@@ -1670,13 +1670,10 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
   bool choices_apart = false;  // no choice routed, and one of them was apart in this window
   bool was_apart = false;      // the pins were apart in an earlier window (ROUTE-0002)
   const std::int64_t first_m = m;
-  // Whether `pins_used` are apart (ROUTE-0002) in the first window among the blockages and
-  // the other nets' pins alone (NetSpaceLevel::Pins: no wire, so the same all run long; with
-  // search_windows > 2 a later window may have been the one apart: the cap is then missed,
-  // never wrongly made), and not cached (a net not capped grows
-  // on, and each later unproven window asks again: rare).
-  auto apart_among_pins = [&](const NetPins& pins_used) {
-    const Box w0 = options_.windows ? clipped(geom::grown_box(hp, first_m), dom) : dom;
+  // Whether `pins_used` are apart (ROUTE-0002) in window `w0` among the blockages and the other
+  // nets' pins alone (NetSpaceLevel::Pins: no wire, so the same all run long), and not cached (a
+  // net not capped grows on, and each later window the cap would stop asks again: rare).
+  auto apart_among_pins = [&](const NetPins& pins_used, const Box& w0) {
     geom::NormalizedObstacles o;
     {
       std::shared_lock lock(space_mutex_);
@@ -1888,7 +1885,8 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
       // capped it would wait for the last pass, where other wires may have shut it.) The code
       // and reason are internal: the last pass tries every capped net again.
       if (was_apart && level == NetSpaceLevel::Full && capped_ && options_.search_windows > 0 &&
-          st.windows >= options_.search_windows && !apart_among_pins(*use)) {
+          st.windows >= options_.search_windows &&
+          !apart_among_pins(*use, options_.windows ? clipped(geom::grown_box(hp, first_m), dom) : dom)) {
         ++st.capped;
         a = NetAttempt{};
         a.code = "ROUTE-0002";
@@ -1914,8 +1912,13 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
       if (apart_in_window(obs, pins, w)) return t;  // unless a pin is shut in inside this one
       // While rounds remain, a net the other nets' wires shut out of its first windows is taken as
       // blocked (its blockers are ripped up) rather than followed round a detour up to the whole
-      // domain; the last pass (run) tries every net left unrouted without this limit.
-      if (level == NetSpaceLevel::Full && capped_ && options_.search_windows > 0 && st.windows >= options_.search_windows) {
+      // domain; the last pass (run) tries every net left unrouted without this limit. Only when
+      // the pins meet in this window among the blockages and pins alone (since 2026-12-06): when
+      // the blockages alone keep them apart here, no rip-up could join them in it, and the window
+      // grows as without the limit (capped, such a net waited for the last pass, where the wires
+      // placed since may shut its way).
+      if (level == NetSpaceLevel::Full && capped_ && options_.search_windows > 0 && st.windows >= options_.search_windows &&
+          !apart_among_pins(*use, w)) {
         ++st.capped;
         return t;
       }

@@ -120,7 +120,7 @@
 // one kept; a final round then tries each net still unrouted once more, its blockers ripped up
 // whatever their rips, and keeps only the rip-ups that route more nets. In the first pass and
 // the rounds a net finding no way in its first search_windows
-// windows (NetRouterOptions), or (length cost) only a detour there that they cannot prove
+// windows (NetRouterOptions) though its pins meet in the last among the blockages and pins alone, or (length cost) only a detour there that they cannot prove
 // shortest after the other nets' wires set its pins apart in its first one, is taken as blocked
 // there, not widened to the whole domain; the
 // last pass then tries each net still unrouted without that limit, and places what it routes;
@@ -605,7 +605,8 @@ struct NetRouterOptions {
   // In the first pass and the rip-up rounds, a net that finds no way among the other nets' wires
   // in this many windows (each 4 times the last's margin) is taken as blocked by them, and its
   // blockers are ripped up, instead of its window growing to the whole domain to look for a
-  // detour; so is one (length cost) whose pins were apart in its first window, though not among
+  // detour, when its pins meet in the last of them among the blockages and pins alone (since
+  // 2026-12-06: one the blockages alone keep apart grows on, as no rip-up could help it there); so is one (length cost) whose pins were apart in its first window, though not among
   // the blockages and pins alone there, and whose way in a later one is a detour that window
   // cannot prove shortest (since 2026-12-06). Every net still unrouted after the rounds is then
   // tried once more without the limit

@@ -304,6 +304,14 @@ TEST(ImportDef, BadInputIsAnsweredWithCodeFileAndLine) {
        def_with("PINS 2 ;\n - p\xe9 + NET x + LAYER m2 ( 0 0 ) ( 100 100 ) + FIXED ( 1000 1000 ) N ;\n"
                 " - p\x01 + NET y + LAYER m2 ( 0 0 ) ( 100 100 ) + FIXED ( 5000 1000 ) N ;\nEND PINS\n"),
        "IO-0130", 7},
+      // since 2026-12-06: a word that begins no DEF statement (junk before VERSION was skipped
+      // to the next ';'), a section head without its count, and UNITS swallowed by a statement
+      // missing its ';' (named at UNITS's line; it had none) or not an integer from 1 to 10^6
+      {"bytes before VERSION", "\x7f\x45LF\x02 junk ;\n" + def_with(""), "IO-0121", 1},
+      {"a word that begins no statement", def_with("COMPONENT 1 ;\n - a CELL + FIXED ( 0 0 ) N ;\nEND COMPONENT\n"), "IO-0121", 6},
+      {"a section without its count", def_with("COMPONENTS ;\n - a CELL + FIXED ( 0 0 ) N ;\nEND COMPONENTS\n"), "IO-0121", 6},
+      {"UNITS swallowed", "VERSION 5.8 ;\nDESIGN top\nUNITS DISTANCE MICRONS 1000 ;\nEND DESIGN\n", "IO-0121", 3},
+      {"UNITS not a whole number", "VERSION 5.8 ;\nDESIGN top ;\n\nUNITS DISTANCE MICRONS 1e3 ;\nEND DESIGN\n", "IO-0123", 4},
       {"a net named with a Latin-1 byte",
        def_with("PINS 2 ;\n - a1 + NET n\xe9 + LAYER m2 ( 0 0 ) ( 100 100 ) + FIXED ( 1000 1000 ) N ;\n"
                 " - a2 + NET n\xe9 + LAYER m2 ( 0 0 ) ( 100 100 ) + FIXED ( 5000 1000 ) N ;\nEND PINS\n"
@@ -321,6 +329,9 @@ TEST(ImportDef, BadInputIsAnsweredWithCodeFileAndLine) {
     EXPECT_EQ(d.code, c.code) << c.what << ": " << format(d);
     EXPECT_EQ(d.line, c.line) << c.what << ": " << format(d);
     EXPECT_EQ(d.file, c.file) << c.what;
+    if (c.what == std::string("bytes before VERSION")) {  // the word escaped
+      EXPECT_NE(d.message.find("\"\\x7FELF\\x02\" begins no DEF statement"), std::string::npos) << d.message;
+    }
     if (c.code == "IO-0130") {  // the name escaped and the byte
       EXPECT_TRUE(d.message.find("\"PIN/p\\xE9\" has byte 0xE9 at 6") != std::string::npos ||
                   d.message.find("net \"n\\xE9\" has byte 0xE9 at 2") != std::string::npos)
@@ -398,6 +409,30 @@ TEST(ImportDef, WarningsSayWhatIsNotWritten) {
   EXPECT_EQ(codes, (std::vector<std::string>{"IO-0127:11", "IO-0126:15"}));
   ASSERT_NE(blockage(*r.layout, "lone/a/VDD"), nullptr);
   EXPECT_EQ(r.layout->nets.size(), 1u);
+}
+
+// A section whose count differs from the items it holds (a file cut or edited by hand, as
+// OpenROAD's flip-chip test DEF: COMPONENTS 1489 with 1,452 items) is named at its head, with
+// both numbers, and what it holds is read (since 2026-12-06: before, the count was skipped).
+TEST(ImportDef, ASectionCountThatDiffersFromItsItemsIsNamed) {
+  const std::string def = def_with(
+      "COMPONENTS 3 ;\n - a CELL + FIXED ( 0 0 ) N ;\n - b CELL + FIXED ( 0 50000 ) N ;\nEND COMPONENTS\n"
+      "NETS 1 ;\n - n ( a P ) ( b P ) ;\nEND NETS\n"
+      "PINS 0 ;\n - q + NET x + LAYER m2 ( 0 0 ) ( 100 100 ) + FIXED ( 1000 1000 ) N ;\nEND PINS\n");
+  const DefImportResult r = run(def);
+  ASSERT_TRUE(r.layout) << errors(r);
+  std::vector<std::string> got;
+  for (const Diagnostic& d : r.diagnostics)
+    if (d.code == "IO-0132") {
+      EXPECT_EQ(d.severity, Severity::Warning);
+      got.push_back(std::to_string(d.line) + ": " + d.message);
+    }
+  EXPECT_EQ(got, (std::vector<std::string>{"6: section COMPONENTS declares 3 items and holds 2",
+                                           "13: section PINS declares 0 items and holds 1"}))
+      << errors(r);
+  ASSERT_NE(net(*r.layout, "n"), nullptr);
+  EXPECT_EQ(net(*r.layout, "n")->pins.size(), 2u);
+  ASSERT_NE(blockage(*r.layout, "PIN/q"), nullptr);
 }
 
 // Regressions from a seeded search over real DEF/LEF files (OpenROAD's test data) and mutations.

@@ -1595,16 +1595,21 @@ Planted planted_layout(std::uint64_t seed, int size, int nets) {
 // It is sound only if it never separates pins that some window would join: then a net would
 // fail with it and route without it. So the outcomes with and without it must be the same, bit
 // for bit. Layouts where it matters: a wall across a large domain with one slot; net x's pins at
-// the slot's two ends (its wire closes the slot), net y's pins on the two sides of the wall, far
-// from the slot, so one of the two is left for the last pass, apart in a component much larger
-// than its first windows; random rules, sizes, slot height (room for y's wire between x's pins,
-// or exactly that room), islands (rectangles) on both sides, and a third net among them. The
-// superset must prove the left net apart in nearly every layout, with fewer whole-domain
-// windows. In every other layout there is no net x: y's way is through the slot, far beyond
-// the windows the rounds look in (NetRouterOptions::search_windows), so only the last pass routes
-// it, through windows that grow past the first that finds no way: a superset that separated its
-// pins would leave it unrouted (taking every such net as apart fails here). Then dense local nets
-// among rectangles, where it seldom applies, for the outcomes.
+// the slot's two ends (its wire closes the slot), net y's pins on the two sides of the wall, the
+// slot outside y's first window and inside its second (so x's wire, not the wall alone, keeps
+// y's pins apart there, and the window limit stops y: NetRouterOptions::search_windows), so one
+// of the two is left for the last pass, apart in a component much larger than its first
+// windows; random rules, sizes, slot height (room for y's wire between x's pins, or exactly that
+// room), islands (rectangles) on both sides, and a third net among them. The superset must prove
+// the left net apart in nearly every layout, with fewer whole-domain windows. In every other
+// layout the wall has a second slot, far beyond the windows the rounds look in, and no rip-up
+// is allowed: y is stopped by the limit in the first pass and the rounds, and only the last pass
+// routes it, through the far slot, in windows that grow past the first that finds no way: a
+// superset that separated its pins would leave it unrouted (taking every such net as apart fails
+// here). (Until 2026-12-06 those layouts had one far slot and no x: the limit stopped y, apart
+// in its first two windows; now a net the blockages alone keep apart there grows on, and routes
+// in the first pass.) Then dense local nets among rectangles, where it seldom applies, for the
+// outcomes.
 TEST(NetRouter, LastPassSupersetGivesTheSameOutcomes) {
   int failed = 0;
   std::int64_t apart = 0, last_pass = 0, whole_with = 0, whole_without = 0, layouts = 0, last_routed = 0;
@@ -1634,12 +1639,21 @@ TEST(NetRouter, LastPassSupersetGivesTheSameOutcomes) {
     std::mt19937 rng(static_cast<unsigned>(790000 + seed));
     auto uni = [&](int lo, int hi) { return lo + static_cast<int>(rng() % static_cast<unsigned>(hi - lo + 1)); };
     const int w = uni(0, 6), sp = uni(0, 4), a = (w + 1) / 2 + sp, b = std::max(w + sp, 1);
-    const bool detour = seed % 2 == 0;  // no net x: y goes round by the slot, found by the last pass only
+    const bool detour = seed % 2 == 0;  // a far slot, no rip-up: y goes round by it, found by the last pass only
     const int side = detour ? uni(100000, 200000) : uni(20000, 200000), t = uni(10, 300), wx = uni(side / 4, side / 2);
     const int h = 2 * a + 2 * b + 2 + (seed % 4 == 0 ? 0 : uni(0, 40));  // the slot: room for one wire between x's pins
     const int g0 = uni(side / 8, side / 4), g1 = g0 + h;
-    std::vector<geom::Box> boxes{{{wx, 0}, {wx + t, g0}}, {{wx, g1}, {wx + t, side}}};
-    const int y0 = uni(side / 2, side - side / 8), d = uni(4 * (a + b) + 10, 8 * (a + b) + 400);
+    const int d = uni(4 * (a + b) + 10, 8 * (a + b) + 400);
+    const int m1 = (2 * d + t) / 2 + 4 * (a + b) + 32;  // y's first margin (two point pins)
+    const int y0 = g1 + 2 * m1 + uni(0, m1 / 2);        // the slot between y's first window and its second (4 m1)
+    std::vector<geom::Box> boxes{{{wx, 0}, {wx + t, g0}}};
+    if (detour) {
+      const int f0 = uni(side - side / 4, side - side / 8);
+      boxes.push_back({{wx, g1}, {wx + t, f0}});
+      boxes.push_back({{wx, f0 + h}, {wx + t, side}});
+    } else {
+      boxes.push_back({{wx, g1}, {wx + t, side}});
+    }
     for (int k = 0, n = uni(0, 6); k < n; ++k) {  // islands, away from the wall and the pins
       const int x = uni(0, side - 400), y = uni(0, side - 400), e = uni(20, 390);
       const geom::Box isl{{x, y}, {x + e, y + e}};
@@ -1651,9 +1665,10 @@ TEST(NetRouter, LastPassSupersetGivesTheSameOutcomes) {
     std::vector<router::NetPins> nets{
         {"y", {Polygon{{{wx - d, y0}}, {}}, Polygon{{{wx + t + d, y0}}, {}}}},
         {"z", {Polygon{{{wx - d, y0 - 4 * (a + b) - 40}}, {}}, Polygon{{{wx - d - 300, y0 - 4 * (a + b) - 340}}, {}}}}};
-    if (!detour) nets.push_back({"x", {Polygon{{{cx, g0 + a}}, {}}, Polygon{{{cx, g1 - a}}, {}}}});
+    nets.push_back({"x", {Polygon{{{cx, g0 + a}}, {}}, Polygon{{{cx, g1 - a}}, {}}}});
     router::NetRouterOptions opt;
-    opt.max_rips = uni(1, 3);
+    opt.max_rips = detour ? 0 : uni(1, 3);
+    opt.final_round = !detour;
     both("wall seed " + std::to_string(790000 + seed), norm, nets, {w, sp}, opt, router::NetRouter::l1_router(seed % 2 == 0));
     ASSERT_FALSE(::testing::Test::HasFailure()) << "wall seed " << 790000 + seed;
   }
@@ -1985,6 +2000,33 @@ TEST(NetRouter, TheLastPassRoutesADetourBeyondTheWindowLimit) {
   ASSERT_TRUE(final->outcomes()[1].routed);
   EXPECT_EQ(final->outcomes()[0].wires, (std::vector<std::vector<Point>>{{{1000, 50000}, {9000, 50000}}}));
   EXPECT_TRUE(router::check_routes(norm, check_nets(nets, *final), {0, 0}).problems.empty());
+}
+
+// The window limit stops only a net the other nets' wires keep apart (since 2026-12-06): with
+// the gap walled up, the blockages alone keep a's pins apart in its first two windows, no rip-up
+// could join them there, and a follows its detour over the wall's top in the first pass, limit
+// or not (capped, it waited for the last pass, where wires placed since may shut its way). With
+// the gap open and b's wire plugging it, a is stopped as above: the pins meet in the second
+// window among the blockages alone.
+TEST(NetRouter, TheWindowLimitDoesNotStopANetTheBlockagesAloneKeepApart) {
+  const geom::Box domain{{0, 0}, {10000, 100000}};
+  const std::vector<Polygon> solid{{{{4900, 0}, {5100, 0}, {5100, 95000}, {4900, 95000}}, {}}};
+  const std::vector<router::NetPins> nets{{"a", {Polygon{{{1000, 50000}}, {}}, Polygon{{{9000, 50000}}, {}}}}};
+  const geom::NormalizedObstacles norm = geom::normalize_obstacles(solid, domain);
+  for (const int search_windows : {2, 0}) {
+    router::NetRouterOptions o;
+    o.max_rips = 0;
+    o.final_round = false;
+    o.search_windows = search_windows;
+    router::NetRouter nr(norm.domain, norm.obstacles, nets, router::NetRules{0, 0}, o);
+    nr.run(router::NetRouter::l1_router(false));
+    ASSERT_TRUE(nr.outcomes()[0].routed) << search_windows;
+    EXPECT_EQ(l1_len(nr.outcomes()[0]), 8000 + 2 * 45000) << search_windows;
+    EXPECT_EQ(nr.stats().first_pass, 1u) << search_windows;
+    EXPECT_EQ(nr.stats().capped, 0) << search_windows;
+    EXPECT_EQ(nr.stats().last_pass, 0u) << search_windows;
+    EXPECT_TRUE(router::check_routes(norm, check_nets(nets, nr), {0, 0}).problems.empty());
+  }
 }
 
 // The window limit also stops a net whose pins were apart in its first window because of other
