@@ -566,6 +566,7 @@ struct DefNet {
   std::vector<WireSeg> segs;  // the same wiring's segments (centrelines)
   bool regular_wiring_on_layer = false;
   int wiring_line = 0;
+  int degenerate_line = 0;  // the first special segment on the layer with no length or no width (no metal)
 };
 
 struct Def {
@@ -750,6 +751,7 @@ void def_wiring(Cursor& c, const std::string& layer, const std::map<std::string,
             c.fail("IO-0123", "a wiring segment of net " + net.name + " beyond the coordinate range", t.line);
           if (width > 0 && p != *prev) net.wiring.push_back(Geo{true, {pt(x0, y0), pt(x1, y1)}, t.line});
           if (width > 0 && p != *prev) net.segs.push_back(WireSeg{width, pt(prev->first, prev->second), pt(p.first, p.second)});
+          if ((width == 0 || p == *prev) && !net.degenerate_line) net.degenerate_line = t.line;
         }
         if (on && !net.special) {
           net.regular_wiring_on_layer = true;
@@ -1187,6 +1189,7 @@ struct NetInfo {
   std::vector<WireSeg> segs;
   bool regular_wiring_on_layer = false;
   int wiring_line = 0;
+  int degenerate_line = 0;
 };
 
 // --keep-wiring: a net's special wiring as 2-point wires on their centrelines. A segment drawn
@@ -1270,7 +1273,7 @@ Layout assemble(const Def& d, const Lib& lib, const DefImportOptions& o, const C
   std::map<std::string, std::size_t, std::less<>> net_index;
   for (const DefNet& dn : d.nets) {
     auto [it, fresh] = net_index.try_emplace(dn.name, nets.size());
-    if (fresh) nets.push_back(NetInfo{dn.name, dn.use, dn.line, {}, {}, {}, false, 0});
+    if (fresh) nets.push_back(NetInfo{dn.name, dn.use, dn.line, {}, {}, {}, false, 0, 0});
     NetInfo& n = nets[it->second];
     if (n.use.empty()) n.use = dn.use;
     n.terms.insert(n.terms.end(), dn.terms.begin(), dn.terms.end());
@@ -1278,6 +1281,7 @@ Layout assemble(const Def& d, const Lib& lib, const DefImportOptions& o, const C
     n.segs.insert(n.segs.end(), dn.segs.begin(), dn.segs.end());
     n.regular_wiring_on_layer = n.regular_wiring_on_layer || dn.regular_wiring_on_layer;
     if (!n.wiring_line) n.wiring_line = dn.wiring_line;
+    if (!n.degenerate_line) n.degenerate_line = dn.degenerate_line;
   }
   std::vector<char> selected(nets.size(), o.nets.empty() ? 1 : 0);
   for (const std::string& pat : o.nets) {
@@ -1493,7 +1497,11 @@ Layout assemble(const Def& d, const Lib& lib, const DefImportOptions& o, const C
       rt.wires = centre_wires(ni.segs);
       if (rt.wires.empty()) {
         rt.status = "failed";
-        rt.reason = "no special wiring on layer " + o.layer + " in the DEF";
+        // (since 2026-12-06 a net whose special wiring there has no metal says so: before, "no
+        // special wiring", though the DEF has some)
+        rt.reason = ni.degenerate_line ? "its special wiring on layer " + o.layer + " in the DEF has no segment of both length and width (line " +
+                                             std::to_string(ni.degenerate_line) + ")"
+                                       : "no special wiring on layer " + o.layer + " in the DEF";
       } else {
         rt.status = "routed";
         std::vector<std::vector<Point>> lines;

@@ -598,6 +598,20 @@ TEST(ImportDef, KeptWiringMeetsAtItsCorners) {
   EXPECT_FALSE(plain.layout->routes);
   ASSERT_FALSE(plain.diagnostics.empty());
   EXPECT_EQ(plain.diagnostics[0].code, "IO-0127");
+  // a kept net whose wiring on the layer has no metal (a segment of one point, another of width
+  // 0) is written failed, and its reason says what the DEF has there and where (since
+  // 2026-12-06: before, "no special wiring")
+  const std::string empty = def_with(
+      "COMPONENTS 2 ;\n - a CELL + FIXED ( 0 0 ) N ;\n - b CELL + FIXED ( 200000 100000 ) N ;\nEND COMPONENTS\n"
+      "SPECIALNETS 1 ;\n - s ( a P ) ( b P ) + ROUTED m2 1000 ( 2000 3000 ) ( 2000 3000 )\n"
+      "   NEW m2 0 ( 2000 3000 ) ( 9000 3000 ) ;\nEND SPECIALNETS\n");
+  o.keep_wiring = true;
+  const DefImportResult e = run(empty, o);
+  ASSERT_TRUE(e.layout) << errors(e);
+  ASSERT_TRUE(e.layout->routes);
+  ASSERT_EQ(e.layout->routes->routes.size(), 1u);
+  EXPECT_EQ(e.layout->routes->routes[0].status, "failed");
+  EXPECT_EQ(e.layout->routes->routes[0].reason, "its special wiring on layer m2 in the DEF has no segment of both length and width (line 11)");
 }
 
 // Seeded mutations of a small design (tokens deleted, duplicated, swapped, the text cut short):

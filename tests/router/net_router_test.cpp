@@ -2004,8 +2004,8 @@ TEST(NetRouter, TheLastPassRoutesADetourBeyondTheWindowLimit) {
 
 // The window limit stops only a net the other nets' wires keep apart (since 2026-12-06): with
 // the gap walled up, the blockages alone keep a's pins apart in its first two windows, no rip-up
-// could join them there, and a follows its detour over the wall's top in the first pass, limit
-// or not (capped, it waited for the last pass, where wires placed since may shut its way). With
+// could join them there, and a follows its detour over the wall's top in the first pass, with a
+// limit of one window or two, or none (capped, it waited for the last pass, where wires placed since may shut its way). With
 // the gap open and b's wire plugging it, a is stopped as above: the pins meet in the second
 // window among the blockages alone.
 TEST(NetRouter, TheWindowLimitDoesNotStopANetTheBlockagesAloneKeepApart) {
@@ -2013,7 +2013,7 @@ TEST(NetRouter, TheWindowLimitDoesNotStopANetTheBlockagesAloneKeepApart) {
   const std::vector<Polygon> solid{{{{4900, 0}, {5100, 0}, {5100, 95000}, {4900, 95000}}, {}}};
   const std::vector<router::NetPins> nets{{"a", {Polygon{{{1000, 50000}}, {}}, Polygon{{{9000, 50000}}, {}}}}};
   const geom::NormalizedObstacles norm = geom::normalize_obstacles(solid, domain);
-  for (const int search_windows : {2, 0}) {
+  for (const int search_windows : {1, 2, 0}) {
     router::NetRouterOptions o;
     o.max_rips = 0;
     o.final_round = false;
