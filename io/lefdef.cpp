@@ -566,7 +566,7 @@ struct DefNet {
   std::vector<WireSeg> segs;  // the same wiring's segments (centrelines)
   bool regular_wiring_on_layer = false;
   int wiring_line = 0;
-  int degenerate_line = 0;  // the first special segment on the layer with no length or no width (no metal)
+  int special_line = 0;  // the first point of special wiring on the layer
 };
 
 struct Def {
@@ -751,13 +751,13 @@ void def_wiring(Cursor& c, const std::string& layer, const std::map<std::string,
             c.fail("IO-0123", "a wiring segment of net " + net.name + " beyond the coordinate range", t.line);
           if (width > 0 && p != *prev) net.wiring.push_back(Geo{true, {pt(x0, y0), pt(x1, y1)}, t.line});
           if (width > 0 && p != *prev) net.segs.push_back(WireSeg{width, pt(prev->first, prev->second), pt(p.first, p.second)});
-          if ((width == 0 || p == *prev) && !net.degenerate_line) net.degenerate_line = t.line;
         }
         if (on && !net.special) {
           net.regular_wiring_on_layer = true;
           net.wiring_line = net.wiring_line ? net.wiring_line : t.line;
         }
         if (on && net.special && !net.wiring_line) net.wiring_line = t.line;
+        if (on && net.special && !net.special_line) net.special_line = t.line;
         prev = p;
         prev_ext = ext;
       } else if (t.s == "NEW") {
@@ -1189,7 +1189,7 @@ struct NetInfo {
   std::vector<WireSeg> segs;
   bool regular_wiring_on_layer = false;
   int wiring_line = 0;
-  int degenerate_line = 0;
+  int special_line = 0;
 };
 
 // --keep-wiring: a net's special wiring as 2-point wires on their centrelines. A segment drawn
@@ -1281,7 +1281,7 @@ Layout assemble(const Def& d, const Lib& lib, const DefImportOptions& o, const C
     n.segs.insert(n.segs.end(), dn.segs.begin(), dn.segs.end());
     n.regular_wiring_on_layer = n.regular_wiring_on_layer || dn.regular_wiring_on_layer;
     if (!n.wiring_line) n.wiring_line = dn.wiring_line;
-    if (!n.degenerate_line) n.degenerate_line = dn.degenerate_line;
+    if (!n.special_line) n.special_line = dn.special_line;
   }
   std::vector<char> selected(nets.size(), o.nets.empty() ? 1 : 0);
   for (const std::string& pat : o.nets) {
@@ -1497,11 +1497,11 @@ Layout assemble(const Def& d, const Lib& lib, const DefImportOptions& o, const C
       rt.wires = centre_wires(ni.segs);
       if (rt.wires.empty()) {
         rt.status = "failed";
-        // (since 2026-12-06 a net whose special wiring there has no metal says so: before, "no
-        // special wiring", though the DEF has some)
-        rt.reason = ni.degenerate_line ? "its special wiring on layer " + o.layer + " in the DEF has no segment of both length and width (line " +
-                                             std::to_string(ni.degenerate_line) + ")"
-                                       : "no special wiring on layer " + o.layer + " in the DEF";
+        // (since 2026-12-06 a net with special wiring there but no segment of it, only points
+        // or segments of no length or width, says so: before, "no special wiring")
+        rt.reason = ni.special_line ? "its special wiring on layer " + o.layer + " in the DEF has no segment of both length and width (line " +
+                                          std::to_string(ni.special_line) + ")"
+                                    : "no special wiring on layer " + o.layer + " in the DEF";
       } else {
         rt.status = "routed";
         std::vector<std::vector<Point>> lines;

@@ -1682,6 +1682,18 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
     const NetAttempt b = route(net, pins_used, o);
     return !b.routed && b.code == "ROUTE-0002";
   };
+  // ... in the first window, asked once for the pins used (the window limit's check there, then
+  // the detour cap's: with a limit of 1 a net the blockages alone keep apart in its first window
+  // is the only kind to reach the detour cap, which then asks nothing again)
+  std::optional<bool> apart_first;
+  const NetPins* apart_first_for = nullptr;
+  auto apart_in_first = [&](const NetPins& pins_used) {
+    if (!apart_first || apart_first_for != &pins_used) {
+      apart_first = apart_among_pins(pins_used, options_.windows ? clipped(geom::grown_box(hp, first_m), dom) : dom);
+      apart_first_for = &pins_used;
+    }
+    return *apart_first;
+  };
   while (true) {
     if (options_.stop && options_.stop()) throw NetRouterStopped();
     const Box w = options_.windows ? clipped(geom::grown_box(hp, m), dom) : dom;
@@ -1885,8 +1897,7 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
       // capped it would wait for the last pass, where other wires may have shut it.) The code
       // and reason are internal: the last pass tries every capped net again.
       if (was_apart && level == NetSpaceLevel::Full && capped_ && options_.search_windows > 0 &&
-          st.windows >= options_.search_windows &&
-          !apart_among_pins(*use, options_.windows ? clipped(geom::grown_box(hp, first_m), dom) : dom)) {
+          st.windows >= options_.search_windows && !apart_in_first(*use)) {
         ++st.capped;
         a = NetAttempt{};
         a.code = "ROUTE-0002";
@@ -1918,7 +1929,7 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
       // grows as without the limit (capped, such a net waited for the last pass, where the wires
       // placed since may shut its way).
       if (level == NetSpaceLevel::Full && capped_ && options_.search_windows > 0 && st.windows >= options_.search_windows &&
-          !apart_among_pins(*use, w)) {
+          !(m == first_m ? apart_in_first(*use) : apart_among_pins(*use, w))) {
         ++st.capped;
         return t;
       }

@@ -609,7 +609,7 @@ struct NetRouterOptions {
   // 2026-12-06: one the blockages alone keep apart grows on, as no rip-up could help it there);
   // so is one (length cost) whose pins were apart in its first window, though not among the
   // blockages and pins alone there, and whose way in a later one is a detour that window cannot
-  // prove shortest (since 2026-12-06). Every net still unrouted after the rounds is then tried
+  // prove shortest (since 2026-12-06; with a limit of 1 such a net is stopped in its first window). Every net still unrouted after the rounds is then tried
   // once more without the limit (so a net is left unrouted only when no way exists in the whole
   // final layout). 0: no limit. 1 since 2026-12-06 (2 before, once that check was made): on the
   // congested spread rows of docs/PERFORMANCE.md it routes 22 and 26 more of 3,000 nets in 0.66

@@ -612,6 +612,14 @@ TEST(ImportDef, KeptWiringMeetsAtItsCorners) {
   ASSERT_EQ(e.layout->routes->routes.size(), 1u);
   EXPECT_EQ(e.layout->routes->routes[0].status, "failed");
   EXPECT_EQ(e.layout->routes->routes[0].reason, "its special wiring on layer m2 in the DEF has no segment of both length and width (line 11)");
+  // a path of one point on the layer too
+  const DefImportResult one = run(def_with("COMPONENTS 2 ;\n - a CELL + FIXED ( 0 0 ) N ;\n - b CELL + FIXED ( 200000 100000 ) N ;\n"
+                                           "END COMPONENTS\nSPECIALNETS 1 ;\n - s ( a P ) ( b P )\n + ROUTED m2 1000 ( 2000 3000 ) ;\n"
+                                           "END SPECIALNETS\n"),
+                                  o);
+  ASSERT_TRUE(one.layout) << errors(one);
+  ASSERT_TRUE(one.layout->routes);
+  EXPECT_EQ(one.layout->routes->routes[0].reason, "its special wiring on layer m2 in the DEF has no segment of both length and width (line 12)");
 }
 
 // Seeded mutations of a small design (tokens deleted, duplicated, swapped, the text cut short):
