@@ -1670,33 +1670,36 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
   bool choices_apart = false;  // no choice routed, and one of them was apart in this window
   bool was_apart = false;      // the pins were apart in an earlier window (ROUTE-0002)
   const std::int64_t first_m = m;
-  // Whether `pins_used` are apart (ROUTE-0002) in window `w0` among the blockages and the other
-  // nets' pins alone (NetSpaceLevel::Pins: no wire, so the same all run long), and not cached (a
-  // net not capped grows on, and each later window the cap would stop asks again: rare).
-  auto apart_among_pins = [&](const NetPins& pins_used, const Box& w0) {
+  // the window of margin mm
+  auto window_at = [&](std::int64_t mm) { return options_.windows ? clipped(geom::grown_box(hp, mm), dom) : dom; };
+  // Whether `pins_used` are apart (ROUTE-0002) in the window of margin mm among the blockages and
+  // the other nets' pins alone (NetSpaceLevel::Pins: no wire, so the same all run long). The
+  // first window's answer is kept for the pins asked (the window limit asks it there, then the
+  // detour cap: with a limit of 1 a net the blockages alone keep apart in its first window is
+  // the only kind to reach the detour cap); a later window's is not (a net not capped grows on,
+  // and each later window the cap would stop asks again: rare).
+  std::optional<bool> apart_first;
+  const NetPins* apart_first_for = nullptr;
+  auto apart_among_pins = [&](const NetPins& pins_used, std::int64_t mm) {
+    const bool first = mm == first_m;
+    if (first && apart_first && apart_first_for == &pins_used) return *apart_first;
+    const Box w0 = window_at(mm);
     geom::NormalizedObstacles o;
     {
       std::shared_lock lock(space_mutex_);
       o = space_.obstacles(net, NetSpaceLevel::Pins, w0 == dom ? std::nullopt : std::optional<Box>(w0), {}, framed, nullptr);
     }
     const NetAttempt b = route(net, pins_used, o);
-    return !b.routed && b.code == "ROUTE-0002";
-  };
-  // ... in the first window, asked once for the pins used (the window limit's check there, then
-  // the detour cap's: with a limit of 1 a net the blockages alone keep apart in its first window
-  // is the only kind to reach the detour cap, which then asks nothing again)
-  std::optional<bool> apart_first;
-  const NetPins* apart_first_for = nullptr;
-  auto apart_in_first = [&](const NetPins& pins_used) {
-    if (!apart_first || apart_first_for != &pins_used) {
-      apart_first = apart_among_pins(pins_used, options_.windows ? clipped(geom::grown_box(hp, first_m), dom) : dom);
+    const bool apart = !b.routed && b.code == "ROUTE-0002";
+    if (first) {
+      apart_first = apart;
       apart_first_for = &pins_used;
     }
-    return *apart_first;
+    return apart;
   };
   while (true) {
     if (options_.stop && options_.stop()) throw NetRouterStopped();
-    const Box w = options_.windows ? clipped(geom::grown_box(hp, m), dom) : dom;
+    const Box w = window_at(m);
     const bool whole = w == dom;
     const auto t0 = Clock::now();
     geom::NormalizedObstacles obs;
@@ -1897,7 +1900,7 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
       // capped it would wait for the last pass, where other wires may have shut it.) The code
       // and reason are internal: the last pass tries every capped net again.
       if (was_apart && level == NetSpaceLevel::Full && capped_ && options_.search_windows > 0 &&
-          st.windows >= options_.search_windows && !apart_in_first(*use)) {
+          st.windows >= options_.search_windows && !apart_among_pins(*use, first_m)) {
         ++st.capped;
         a = NetAttempt{};
         a.code = "ROUTE-0002";
@@ -1929,7 +1932,7 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
       // grows as without the limit (capped, such a net waited for the last pass, where the wires
       // placed since may shut its way).
       if (level == NetSpaceLevel::Full && capped_ && options_.search_windows > 0 && st.windows >= options_.search_windows &&
-          !(m == first_m ? apart_in_first(*use) : apart_among_pins(*use, w))) {
+          !apart_among_pins(*use, m)) {
         ++st.capped;
         return t;
       }
