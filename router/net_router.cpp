@@ -927,7 +927,7 @@ std::vector<std::size_t> NetSpace::wire_nets_in(const Box& window) const {
   return out;
 }
 
-geom::NormalizedObstacles NetSpace::superset_obstacles() const {
+geom::NormalizedObstacles NetSpace::superset_obstacles(bool with_wires) const {
   const Index& ix = *index_;
   std::vector<Index::Entry> acc;  // every net's pin access: the boxes its obstacles() may cut
   for (const NetPins& n : nets_)
@@ -946,7 +946,8 @@ geom::NormalizedObstacles NetSpace::superset_obstacles() const {
       if (pc.kind != Index::GrownEdge || !near_pin(box_of(pc.poly.outer))) rest.push_back(pc.poly);
     }
   }
-  for (const auto& pieces : ix.wire_union) rest.insert(rest.end(), pieces.begin(), pieces.end());
+  if (with_wires)
+    for (const auto& pieces : ix.wire_union) rest.insert(rest.end(), pieces.begin(), pieces.end());
   rest.push_back(geom::domain_frame(domain_));
   geom::NormalizedObstacles out =
       geom::normalize_obstacles(rest, Box{{domain_.lo.x - 1, domain_.lo.y - 1}, {domain_.hi.x + 1, domain_.hi.y + 1}});
@@ -1355,6 +1356,14 @@ struct FreeComponents {
   }
 };
 
+// The free components among the blockages alone (NetSpace::superset_obstacles without the wires),
+// a superset of every net's space at every level for the whole run: built once, by the first
+// attempt that needs it (on any thread); nullptr when the union rounded a sloped crossing.
+struct BlockageParts {
+  std::once_flag once;
+  std::unique_ptr<const FreeComponents> parts;
+};
+
 namespace {
 
 // Adds the counts of one attempt (or explanation) to the run's.
@@ -1368,6 +1377,7 @@ void add_counts(NetRouterStats& to, const NetRouterStats& c) {
   to.whole_seconds += c.whole_seconds;
   to.capped += c.capped;
   to.superset_apart += c.superset_apart;
+  to.blockages_apart += c.blockages_apart;
   to.group_choices += c.group_choices;
   to.snap_far += c.snap_far;
 }
@@ -1936,6 +1946,21 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
         ++st.capped;
         return t;
       }
+      // Before a wider window: pins apart among the blockages alone are apart at every level,
+      // whatever the wires (a wall from side to side of the domain: before 2026-12-06 such a net
+      // grew its windows to the whole domain in every pass, and its way alone did too). Built at
+      // the first net that gets here, once per run.
+      if (blockage_parts_) {
+        BlockageParts& bp = *blockage_parts_;
+        std::call_once(bp.once, [&] {
+          geom::NormalizedObstacles sup = space_.superset_obstacles(/*with_wires=*/false);
+          if (sup.stats.rounded == 0) bp.parts = std::make_unique<const FreeComponents>(std::move(sup));
+        });
+        if (bp.parts && bp.parts->apart(pins)) {
+          ++st.blockages_apart;
+          return t;
+        }
+      }
       was_apart = true;
       m *= 4;
     } else if (choices_apart && !whole) {  // (a choice of one pin per group may join in a larger window)
@@ -2399,6 +2424,8 @@ void NetRouter::run_scaled(const NetRouteFn& route) {
     to += std::chrono::duration<double>(now - t).count();
     t = now;
   };
+  // the free components among the blockages alone, built when first needed (try_net_unsnapped)
+  blockage_parts_ = options_.superset ? std::make_shared<BlockageParts>() : nullptr;
   route_in_order(route, order_, [&](std::size_t i, const Box&) {
     routed_now += out_[i].routed;
     tell();

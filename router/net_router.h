@@ -193,6 +193,7 @@
 namespace taut::router {
 
 struct FreeComponents;  // net_router.cpp
+struct BlockageParts;   // net_router.cpp
 
 struct NetRules {
   std::int64_t wire_width = 0, spacing = 0;  // <rules wire-width spacing>, each >= 0
@@ -448,7 +449,9 @@ class NetSpace {
   // whose boxes meet no net's pin access (a point pin's access square, a shape pin's box); no
   // pins. Each net's own access cuts and the other nets' pins only add obstacles to this, so
   // pins apart here (in different free components) are apart there, for every such net.
-  geom::NormalizedObstacles superset_obstacles() const;
+  // with_wires false: without the wires too, so a superset of every net's space at every level
+  // whatever wires are placed or removed.
+  geom::NormalizedObstacles superset_obstacles(bool with_wires = true) const;
 
   const geom::Box& domain() const { return domain_; }
   std::size_t size() const { return nets_.size(); }
@@ -672,6 +675,11 @@ struct NetRouterStats {
   // Last-pass attempts that stopped because the net's pins are apart in a superset of its space
   // (NetRouterOptions::superset).
   std::int64_t superset_apart = 0;
+  // Attempts (every pass, every level) that stopped without a way instead of widening their
+  // window because the net's pins lie in different free components among the blockages alone
+  // (built once per run with NetRouterOptions::superset; since 2026-12-06): a wall across the
+  // whole domain.
+  std::int64_t blockages_apart = 0;
   // Attempts routed with one pin of each group of pins that meet, after the route function failed
   // on all of them (try_net_unsnapped; since 2026-12-06).
   std::int64_t group_choices = 0;
@@ -852,6 +860,9 @@ class NetRouter {
   // During the last pass (no wire is removed then, so it stays a superset of every unrouted
   // net's free space): the free components of NetSpace::superset_obstacles, built once.
   std::shared_ptr<const FreeComponents> superset_;
+  // For the whole run (NetRouterOptions::superset): the free components among the blockages
+  // alone, a superset of every net's space at every level, built when an attempt first needs it.
+  std::shared_ptr<BlockageParts> blockage_parts_;
 
   std::int64_t scale_ = 1;  // before space_, which is built scaled
   NetSpace space_;

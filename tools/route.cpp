@@ -1025,6 +1025,7 @@ void add_route(CLI::App& app, int& status) {
                          {"last_pass_nets", net_stats->last_pass},
                          {"last_pass_routed", net_stats->last_pass_routed},
                          {"last_pass_proven_apart", net_stats->superset_apart},
+                         {"proven_apart_among_blockages", net_stats->blockages_apart},
                          {"group_choice_routes", net_stats->group_choices},
                          {"final_round_nets", net_stats->final_round},
                          {"final_round_routed", net_stats->final_round_routed},
