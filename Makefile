@@ -104,6 +104,7 @@ bench: build
 	$(BUILD)/bench/bench_diameter
 	$(BUILD)/bench/bench_diameter_approx
 	$(BUILD)/bench/bench_check
+	$(BUILD)/bench/bench_import
 	$(BUILD)/bench/bench_steiner
 	$(BUILD)/bench/bench_net_router --threads 2 --tighten
 

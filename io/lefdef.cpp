@@ -1130,9 +1130,19 @@ Point centre2(const Pin& p) {
 std::vector<std::size_t> assign_bumps(const std::vector<Pin>& pins, const std::vector<std::size_t>& bumps,
                                       const std::vector<std::size_t>& pads) {
   const std::size_t n = bumps.size(), reps = (n + pads.size() - 1) / pads.size(), m = pads.size() * reps;
+  // the centres once (1-based, as the rows and columns): a cost is then two subtractions (taking
+  // them from the shapes for every cost, 2,000 bumps and pads took 12.6 s)
+  std::vector<std::int64_t> ax(n + 1), ay(n + 1), bx(m + 1), by(m + 1);
+  for (std::size_t i = 1; i <= n; ++i) {
+    const Point a = centre2(pins[bumps[i - 1]]);
+    ax[i] = a.x, ay[i] = a.y;
+  }
+  for (std::size_t j = 1; j <= m; ++j) {
+    const Point b = centre2(pins[pads[(j - 1) % pads.size()]]);
+    bx[j] = b.x, by[j] = b.y;
+  }
   auto cost = [&](std::size_t i, std::size_t j) {  // 1-based row i (bump), column j (pad copy)
-    const Point a = centre2(pins[bumps[i - 1]]), b = centre2(pins[pads[(j - 1) % pads.size()]]);
-    return std::abs(std::int64_t{a.x} - b.x) + std::abs(std::int64_t{a.y} - b.y);
+    return std::abs(ax[i] - bx[j]) + std::abs(ay[i] - by[j]);
   };
   const std::int64_t inf = std::numeric_limits<std::int64_t>::max() / 4;
   std::vector<std::int64_t> u(n + 1, 0), v(m + 1, 0);
