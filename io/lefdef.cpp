@@ -1070,14 +1070,21 @@ void parse_def(Cursor& c, const std::string& layer, const Lib& lib, Def& d) {
       return;
     } else if (t.s == "PROPERTYDEFINITIONS") {
       c.skip_block("PROPERTYDEFINITIONS");
-    } else if (t.s == "REGIONS" || t.s == "GROUPS" || t.s == "NONDEFAULTRULES" || t.s == "SCANCHAINS" || t.s == "STYLES" ||
-               t.s == "SLOTS" || t.s == "PINPROPERTIES" || t.s == "BEGINEXT") {
-      if (t.s == "BEGINEXT") {
-        while (c.next().s != "ENDEXT") {
-        }
-      } else {
-        c.skip_block(t.s);
+    } else if (t.s == "BEGINEXT") {
+      while (c.next().s != "ENDEXT") {
       }
+    } else if (t.s == "REGIONS" || t.s == "GROUPS" || t.s == "NONDEFAULTRULES" || t.s == "SCANCHAINS" || t.s == "STYLES" ||
+               t.s == "SLOTS" || t.s == "PINPROPERTIES") {
+      // nothing on the layer, but its count is checked as a read section's (since 2026-12-06):
+      // an item is a statement that begins with "-"
+      const std::size_t declared = section_start(t);
+      for (bool at_start = true;;) {
+        const Tok k = c.next();
+        if (c.closes(k, t.s)) break;
+        if (at_start && k.s == "-") ++items;
+        at_start = k.s == ";";
+      }
+      section_read(t, declared);
     } else if (t.s == "VERSION" || t.s == "NAMESCASESENSITIVE" || t.s == "DIVIDERCHAR" || t.s == "BUSBITCHARS" ||
                t.s == "TECHNOLOGY" || t.s == "HISTORY" || t.s == "ROW" || t.s == "TRACKS" || t.s == "GCELLGRID" ||
                t.s == "COMPONENTMASKSHIFT" || t.s == "FIXEDMASK") {  // DEF 5.8's other statements: nothing on the layer

@@ -370,7 +370,12 @@ TEST(ImportDef, ASectionCountThatDiffersFromItsItemsIsNamed) {
   const std::string def = def_with(
       "COMPONENTS 3 ;\n - a CELL + FIXED ( 0 0 ) N ;\n - b CELL + FIXED ( 0 50000 ) N ;\nEND COMPONENTS\n"
       "NETS 1 ;\n - n ( a P ) ( b P ) ;\nEND NETS\n"
-      "PINS 0 ;\n - q + NET x + LAYER m2 ( 0 0 ) ( 100 100 ) + FIXED ( 1000 1000 ) N ;\nEND PINS\n");
+      "PINS 0 ;\n - q + NET x + LAYER m2 ( 0 0 ) ( 100 100 ) + FIXED ( 1000 1000 ) N ;\nEND PINS\n"
+      // sections with nothing on the layer are counted too (since 2026-12-06); a negative
+      // number is no item
+      "REGIONS 1 ;\n - r1 ( -10 0 ) ( 10 10 ) + TYPE FENCE ;\nEND REGIONS\n"
+      "GROUPS 1 ;\n - g1 a b\n + REGION r1 ;\nEND GROUPS\n"
+      "NONDEFAULTRULES 1 ;\n - wide + HARDSPACING\n + LAYER m2 WIDTH 400 ;\n - wider + LAYER m2 WIDTH 800 ;\nEND NONDEFAULTRULES\n");
   const DefImportResult r = run(def);
   ASSERT_TRUE(r.layout) << errors(r);
   std::vector<std::string> got;
@@ -380,7 +385,8 @@ TEST(ImportDef, ASectionCountThatDiffersFromItsItemsIsNamed) {
       got.push_back(std::to_string(d.line) + ": " + d.message);
     }
   EXPECT_EQ(got, (std::vector<std::string>{"6: section COMPONENTS declares 3 items and holds 2",
-                                           "13: section PINS declares 0 items and holds 1"}))
+                                           "13: section PINS declares 0 items and holds 1",
+                                           "23: section NONDEFAULTRULES declares 1 item and holds 2"}))
       << errors(r);
   ASSERT_NE(net(*r.layout, "n"), nullptr);
   EXPECT_EQ(net(*r.layout, "n")->pins.size(), 2u);
