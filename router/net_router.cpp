@@ -1510,9 +1510,10 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
     t.a.code = "ROUTE-0010";
     const std::string a = std::to_string(space_.blockage_rule());
     t.a.reason = "its pins meet (joined by their own metal), but no point of them tried keeps " + a +
-                 " DBU (ceil(w/2) + s) from every blockage (their vertices, and where the grown blockages' edges and the "
-                 "circles of radius " + a + " round blockage corners cross their edges): no wire on them keeps the "
-                 "clearance of <rules>, and a routed net has one or more wires";
+                 " DBU (ceil(w/2) + s) from every blockage (their vertices, where the grown blockages' edges and the "
+                 "circles of radius " + a + " round blockage corners cross their edges, and every point of a pin of at "
+                 "most " + std::to_string(kPinScanPoints) + " points): no wire on them keeps the clearance of <rules>, and a "
+                 "routed net has one or more wires";
   }
   return t;
 }
@@ -1555,6 +1556,18 @@ std::optional<Point> NetRouter::pin_candidate(std::size_t net, const Polygon& g,
     for (const std::int64_t x : geom::lattice_neighbours(2 * std::int64_t{v.x}, scale_))
       for (const std::int64_t y : geom::lattice_neighbours(2 * std::int64_t{v.y}, scale_)) {
         const Point c{static_cast<geom::Coord>(x), static_cast<geom::Coord>(y)};
+        if (in_pin(c, g) && usable(c)) return c;
+      }
+  // A small pin is read whole (since 2026-12-06): the points above miss a clear pocket inside it
+  // that the clearance's circles bound (and a clear stretch of a 45-degree edge), where a wire of
+  // one point is legal (NetRouter.PadsMeetingInAPocketTheCirclesBoundAreRouted).
+  const Box b = box_of(g.outer);
+  const std::int64_t x0 = static_cast<std::int64_t>(geom::ceil_div(b.lo.x, scale_)), x1 = static_cast<std::int64_t>(geom::floor_div(b.hi.x, scale_));
+  const std::int64_t y0 = static_cast<std::int64_t>(geom::ceil_div(b.lo.y, scale_)), y1 = static_cast<std::int64_t>(geom::floor_div(b.hi.y, scale_));
+  if (x0 <= x1 && y0 <= y1 && (x1 - x0 + 1) * (y1 - y0 + 1) <= kPinScanPoints)
+    for (std::int64_t x = x0; x <= x1; ++x)
+      for (std::int64_t y = y0; y <= y1; ++y) {
+        const Point c{static_cast<geom::Coord>(x * scale_), static_cast<geom::Coord>(y * scale_)};
         if (in_pin(c, g) && usable(c)) return c;
       }
   return std::nullopt;

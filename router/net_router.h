@@ -791,8 +791,11 @@ class NetRouter {
   // access zone exempts the wire there, and the other nets keep their clearance from the pin).
   static std::optional<geom::Point> lattice_point_pin(std::span<const geom::Polygon> pins, std::int64_t scale);
   // The first lattice point in pin g, taken next to each of NetSpace::clearance_candidates(net, g,
-  // overlay, with_wires) in turn (geom::lattice_neighbours), that `usable` accepts; the caller
-  // holds space_mutex_. move_point_wires, point_wire_stuck and joined_point try their points so.
+  // overlay, with_wires) in turn (geom::lattice_neighbours), that `usable` accepts; when none is,
+  // and g holds at most kPinScanPoints lattice points, the first of those (x, then y, increasing);
+  // the caller holds space_mutex_. move_point_wires, point_wire_stuck and joined_point try their
+  // points so.
+  static constexpr std::int64_t kPinScanPoints = 4096;
   std::optional<geom::Point> pin_candidate(std::size_t net, const geom::Polygon& g, const WireOverlay* overlay,
                                            bool with_wires, const std::function<bool(geom::Point)>& usable) const;
   // For pins that all meet: a point on them for a wire of one point that keeps the clearance at

@@ -2212,6 +2212,42 @@ TEST(NetRouter, ReasonsForNetsLeftUnrouted) {
   }
 }
 
+// Pads that meet where the only points keeping the clearance lie inside them, in a pocket the
+// clearance's circles bound: w = 0, s = 5; a pad 0,0 10,10 with a 1 x 1 blockage at the middle
+// of each side (outside, touching it) and a pad 4,4 6,6 inside it. Every point of the pads'
+// edges, their vertices, the grown blockages' vertices and crossings with the pads' edges, and
+// where the circles of radius 5 round the blockage corners cross the pads' edges, lies within 5
+// of a blockage; 5,5 lies exactly 5 from all four. Before 2026-12-06 those were the only points
+// tried, and the net was refused (ROUTE-0010, "its pins meet") without the exact gaps (in the
+// scaled plane the multiples of K next to those points happened to reach 5,5); now a pin of at
+// most 4,096 lattice points is read whole when they fail, and the net is routed with a wire of
+// one point there, which the checker passes.
+TEST(NetRouter, PadsMeetingInAPocketTheCirclesBoundAreRouted) {
+  const geom::Box domain{{-20, -20}, {30, 30}};
+  auto rect = [](geom::Coord x0, geom::Coord y0, geom::Coord x1, geom::Coord y1) {
+    return Polygon{{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, {}};
+  };
+  const std::vector<Polygon> blocks{rect(5, -1, 6, 0), rect(-1, 4, 0, 5), rect(4, 10, 5, 11), rect(10, 5, 11, 6)};
+  const std::vector<router::NetPins> nets{{"n", {rect(0, 0, 10, 10), rect(4, 4, 6, 6)}}};
+  const geom::NormalizedObstacles norm = geom::normalize_obstacles(blocks, domain);
+  const router::NetRules rules{0, 5};
+  for (const bool exact : {false, true})
+    for (const bool oct : {false, true}) {
+      const std::string at = std::string(oct ? "octilinear" : "rectilinear") + (exact ? ", exact gaps" : "");
+      router::NetRouterOptions o;
+      o.exact_gaps = exact;
+      o.octilinear = oct;
+      router::NetRouter nr(norm.domain, norm.obstacles, nets, rules, o);
+      nr.run(oct ? router::NetRouter::oct_router(false) : router::NetRouter::l1_router(false));
+      const router::NetOutcome& out = nr.outcomes()[0];
+      EXPECT_TRUE(out.routed) << at << ": " << out.code << " " << out.reason;
+      if (!out.routed) continue;
+      ASSERT_EQ(out.wires.size(), 1u) << at;  // a wire of one point (written once, or twice as here)
+      for (const Point q : out.wires[0]) EXPECT_EQ(q, (Point{5, 5})) << at;
+      EXPECT_TRUE(router::check_routes(norm, check_nets(nets, nr), {rules.wire_width, rules.spacing}).problems.empty()) << at;
+    }
+}
+
 // Pads of one net that touch, overlap or nest (a cluster per net, as flows write a pin's several
 // shapes), beside blockages they touch or come within the clearance of, and a pin apart: a net's
 // pads are free space for it (cut out of the grown blockages), so its wires could run over or
