@@ -955,6 +955,15 @@ geom::NormalizedObstacles NetSpace::superset_obstacles(bool with_wires) const {
   return out;
 }
 
+geom::NormalizedObstacles NetSpace::plain_obstacles_framed() const {
+  std::vector<Polygon> all = index_->plain.polys;
+  all.push_back(geom::domain_frame(domain_));
+  geom::NormalizedObstacles out =
+      geom::normalize_obstacles(all, Box{{domain_.lo.x - 1, domain_.lo.y - 1}, {domain_.hi.x + 1, domain_.hi.y + 1}});
+  out.domain = domain_;
+  return out;
+}
+
 std::vector<Box> NetSpace::wire_boxes(std::size_t net) const {
   std::vector<Box> out;
   for (const Polygon& p : index_->wire_union[net]) out.push_back(box_of(p.outer));
@@ -1356,12 +1365,14 @@ struct FreeComponents {
   }
 };
 
-// The free components among the blockages alone (NetSpace::superset_obstacles without the wires),
-// a superset of every net's space at every level for the whole run: built once, by the first
-// attempt that needs it (on any thread); nullptr when the union rounded a sloped crossing.
+// The free components among the grown blockages alone (NetSpace::superset_obstacles without the
+// wires), a superset of every net's space at every level but Plain for the whole run, and those
+// of the plain blockages (NetSpace::plain_obstacles_framed), the Plain level's space: each built
+// once, by the first attempt that needs it (on any thread); nullptr when the union rounded a
+// sloped crossing.
 struct BlockageParts {
-  std::once_flag once;
-  std::unique_ptr<const FreeComponents> parts;
+  std::once_flag grown_once, plain_once;
+  std::unique_ptr<const FreeComponents> grown, plain;
 };
 
 namespace {
@@ -1511,8 +1522,8 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
     const std::string a = std::to_string(space_.blockage_rule());
     t.a.reason = "its pins meet (joined by their own metal), but no point of them tried keeps " + a +
                  " DBU (ceil(w/2) + s) from every blockage (their vertices, where the grown blockages' edges and the "
-                 "circles of radius " + a + " round blockage corners cross their edges, and every point of a pin of at "
-                 "most " + std::to_string(kPinScanPoints) + " points): no wire on them keeps the clearance of <rules>, and a "
+                 "circles of radius " + a + " round blockage corners cross their edges, and every point of a pin whose "
+                 "box holds at most " + std::to_string(kPinScanPoints) + " points): no wire on them keeps the clearance of <rules>, and a "
                  "routed net has one or more wires";
   }
   return t;
@@ -1558,7 +1569,8 @@ std::optional<Point> NetRouter::pin_candidate(std::size_t net, const Polygon& g,
         const Point c{static_cast<geom::Coord>(x), static_cast<geom::Coord>(y)};
         if (in_pin(c, g) && usable(c)) return c;
       }
-  // A small pin is read whole (since 2026-12-06): the points above miss a clear pocket inside it
+  // A small pin (its box at most kPinScanPoints lattice points) is read whole (since 2026-12-06):
+  // the points above miss a clear pocket inside it
   // that the clearance's circles bound (and a clear stretch of a 45-degree edge), where a wire of
   // one point is legal (NetRouter.PadsMeetingInAPocketTheCirclesBoundAreRouted).
   const Box b = box_of(g.outer);
@@ -1959,17 +1971,21 @@ NetRouter::Tried NetRouter::try_net_unsnapped(const NetRouteFn& route, std::size
         ++st.capped;
         return t;
       }
-      // Before a wider window: pins apart among the blockages alone are apart at every level,
-      // whatever the wires (a wall from side to side of the domain: before 2026-12-06 such a net
-      // grew its windows to the whole domain in every pass, and its way alone did too). Built at
-      // the first net that gets here, once per run.
+      // Before a wider window: pins apart among the grown blockages alone are apart at every level
+      // with the clearance, whatever the wires (a wall from side to side of the domain: before
+      // 2026-12-06 such a net grew its windows to the whole domain in every pass, and its way
+      // alone did too); at the Plain level, whose blockages are not grown (a gap narrower than
+      // the clearance is open there, and explain() tells such a net by it), the plain blockages'
+      // own components. Each built by the first attempt that gets here, once per run.
       if (blockage_parts_) {
         BlockageParts& bp = *blockage_parts_;
-        std::call_once(bp.once, [&] {
-          geom::NormalizedObstacles sup = space_.superset_obstacles(/*with_wires=*/false);
-          if (sup.stats.rounded == 0) bp.parts = std::make_unique<const FreeComponents>(std::move(sup));
+        const bool plain = level == NetSpaceLevel::Plain;
+        std::call_once(plain ? bp.plain_once : bp.grown_once, [&] {
+          geom::NormalizedObstacles sup = plain ? space_.plain_obstacles_framed() : space_.superset_obstacles(/*with_wires=*/false);
+          if (sup.stats.rounded == 0) (plain ? bp.plain : bp.grown) = std::make_unique<const FreeComponents>(std::move(sup));
         });
-        if (bp.parts && bp.parts->apart(pins)) {
+        const FreeComponents* parts = (plain ? bp.plain : bp.grown).get();
+        if (parts && parts->apart(pins)) {
           ++st.blockages_apart;
           return t;
         }

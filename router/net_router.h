@@ -450,8 +450,11 @@ class NetSpace {
   // pins. Each net's own access cuts and the other nets' pins only add obstacles to this, so
   // pins apart here (in different free components) are apart there, for every such net.
   // with_wires false: without the wires too, so a superset of every net's space at every level
-  // whatever wires are placed or removed.
+  // with the clearance (not Plain, whose blockages are not grown), whatever wires are placed or
+  // removed.
   geom::NormalizedObstacles superset_obstacles(bool with_wires = true) const;
+  // The whole domain, framed, with the plain blockages: the Plain level's space of every net.
+  geom::NormalizedObstacles plain_obstacles_framed() const;
 
   const geom::Box& domain() const { return domain_; }
   std::size_t size() const { return nets_.size(); }
@@ -675,10 +678,10 @@ struct NetRouterStats {
   // Last-pass attempts that stopped because the net's pins are apart in a superset of its space
   // (NetRouterOptions::superset).
   std::int64_t superset_apart = 0;
-  // Attempts (every pass, every level) that stopped without a way instead of widening their
-  // window because the net's pins lie in different free components among the blockages alone
-  // (built once per run with NetRouterOptions::superset; since 2026-12-06): a wall across the
-  // whole domain.
+  // Attempts (every pass, every level, explanations too) that stopped without a way instead of
+  // widening their window because the net's pins lie in different free components among the
+  // blockages alone, grown by the clearance (the plain ones at the Plain level), built once per
+  // run with NetRouterOptions::superset (since 2026-12-06): a wall across the whole domain.
   std::int64_t blockages_apart = 0;
   // Attempts routed with one pin of each group of pins that meet, after the route function failed
   // on all of them (try_net_unsnapped; since 2026-12-06).
@@ -792,7 +795,8 @@ class NetRouter {
   static std::optional<geom::Point> lattice_point_pin(std::span<const geom::Polygon> pins, std::int64_t scale);
   // The first lattice point in pin g, taken next to each of NetSpace::clearance_candidates(net, g,
   // overlay, with_wires) in turn (geom::lattice_neighbours), that `usable` accepts; when none is,
-  // and g holds at most kPinScanPoints lattice points, the first of those (x, then y, increasing);
+  // and g's box holds at most kPinScanPoints lattice points, the first of those in g (x, then y,
+  // increasing);
   // the caller holds space_mutex_. move_point_wires, point_wire_stuck and joined_point try their
   // points so.
   static constexpr std::int64_t kPinScanPoints = 4096;
@@ -863,8 +867,9 @@ class NetRouter {
   // During the last pass (no wire is removed then, so it stays a superset of every unrouted
   // net's free space): the free components of NetSpace::superset_obstacles, built once.
   std::shared_ptr<const FreeComponents> superset_;
-  // For the whole run (NetRouterOptions::superset): the free components among the blockages
-  // alone, a superset of every net's space at every level, built when an attempt first needs it.
+  // For the whole run (NetRouterOptions::superset): the free components among the grown blockages
+  // alone, a superset of every net's space at every level but Plain, and among the plain ones,
+  // each built when an attempt first needs it.
   std::shared_ptr<BlockageParts> blockage_parts_;
 
   std::int64_t scale_ = 1;  // before space_, which is built scaled

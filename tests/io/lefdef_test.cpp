@@ -236,6 +236,7 @@ TEST(ImportDef, BadInputIsAnsweredWithCodeFileAndLine) {
       {"a DIEAREA that is not a rectangle",
        "UNITS DISTANCE MICRONS 1000 ;\nDIEAREA ( 0 0 ) ( 10 0 ) ( 10 10 ) ( 5 20 ) ( 0 10 ) ;\nEND DESIGN\n", "IO-0122", 2},
       {"a coordinate that is not an integer", def_with("COMPONENTS 1 ;\n - a CELL + FIXED ( 0.5 0 ) N ;\nEND COMPONENTS\n"), "IO-0123", 7},
+      {"a section read past without its count", def_with("REGIONS ;\nEND REGIONS\n"), "IO-0121", 6},
       {"a coordinate out of range", def_with("COMPONENTS 1 ;\n - a CELL + FIXED ( 2000000000 0 ) N ;\nEND COMPONENTS\n"), "IO-0123", 7},
       {"an undefined macro", def_with("COMPONENTS 1 ;\n - a NOPE + FIXED ( 0 0 ) N ;\nEND COMPONENTS\n"), "IO-0124", 7},
       {"an undefined component in a net", def_with(comps + "NETS 1 ;\n - n ( a P ) ( z P ) ;\nEND NETS\n"), "IO-0124", 10},
@@ -371,11 +372,12 @@ TEST(ImportDef, ASectionCountThatDiffersFromItsItemsIsNamed) {
       "COMPONENTS 3 ;\n - a CELL + FIXED ( 0 0 ) N ;\n - b CELL + FIXED ( 0 50000 ) N ;\nEND COMPONENTS\n"
       "NETS 1 ;\n - n ( a P ) ( b P ) ;\nEND NETS\n"
       "PINS 0 ;\n - q + NET x + LAYER m2 ( 0 0 ) ( 100 100 ) + FIXED ( 1000 1000 ) N ;\nEND PINS\n"
-      // sections with nothing on the layer are counted too (since 2026-12-06); a negative
-      // number is no item
+      // sections with nothing on the layer are counted too (since 2026-12-06)
       "REGIONS 1 ;\n - r1 ( -10 0 ) ( 10 10 ) + TYPE FENCE ;\nEND REGIONS\n"
       "GROUPS 1 ;\n - g1 a b\n + REGION r1 ;\nEND GROUPS\n"
-      "NONDEFAULTRULES 1 ;\n - wide + HARDSPACING\n + LAYER m2 WIDTH 400 ;\n - wider + LAYER m2 WIDTH 800 ;\nEND NONDEFAULTRULES\n");
+      "NONDEFAULTRULES 1 ;\n - wide + HARDSPACING\n + LAYER m2 WIDTH 400 ;\n - wider + LAYER m2 WIDTH 800 ;\nEND NONDEFAULTRULES\n"
+      "STYLES 2 ;\n - STYLE 0 ( 30 10 ) ( 10 30 ) ( -10 30 ) ;\n - STYLE 1 ( 0 0 ) ( 5 5 ) ;\nEND STYLES\n"
+      "SLOTS 1 ;\n - LAYER m2 RECT ( 0 0 ) ( 10 10 ) ;\nEND SLOTS\n");
   const DefImportResult r = run(def);
   ASSERT_TRUE(r.layout) << errors(r);
   std::vector<std::string> got;

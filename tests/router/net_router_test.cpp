@@ -2036,13 +2036,18 @@ TEST(NetRouter, TheWindowLimitDoesNotStopANetTheBlockagesAloneKeepApart) {
 // in the rounds (a generated layout of 2,000 nets with such a wall: 115 s against 58 s without
 // it). The outcomes are the same with and without them; "detour" finds no way in its first window
 // (a bar between its pins) and is routed in a wider one. Variants: rules w = s = 10 (grown edges),
-// and a wall of two blockages that touch at a corner (a pinch no wire passes).
+// a wall of two blockages that touch at a corner (a pinch no wire passes), and a wall with a gap
+// 20 wide far from the nets, open among the plain blockages and shut by the clearance of w = s =
+// 10: the nets across are then ROUTE-0010, found by explaining them at the Plain level, where
+// the components do not apply (a review found them applied there: the nets were ROUTE-0002).
 TEST(NetRouter, AWallAcrossTheDomainIsFoundOnceNotByGrowingWindows) {
   const geom::Box domain{{0, 0}, {10000, 100000}};
   const Polygon bar{{{1900, 30000}, {2100, 30000}, {2100, 45000}, {1900, 45000}}, {}};
   const std::vector<Polygon> straight{{{{4900, 0}, {5100, 0}, {5100, 100000}, {4900, 100000}}, {}}, bar};
   const std::vector<Polygon> pinched{{{{4900, 0}, {5100, 0}, {5100, 60000}, {4900, 60000}}, {}},
                                      {{{5100, 60000}, {5300, 60000}, {5300, 100000}, {5100, 100000}}, {}}, bar};
+  const std::vector<Polygon> slit{{{{4900, 0}, {5100, 0}, {5100, 98000}, {4900, 98000}}, {}},
+                                  {{{4900, 98020}, {5100, 98020}, {5100, 100000}, {4900, 100000}}, {}}, bar};
   const std::vector<router::NetPins> nets{
       {"across", {Polygon{{{1000, 50000}}, {}}, Polygon{{{9000, 50000}}, {}}}},
       {"west", {Polygon{{{1000, 10000}}, {}}, Polygon{{{3000, 20000}}, {}}, Polygon{{{2000, 90000}}, {}}}},
@@ -2050,10 +2055,11 @@ TEST(NetRouter, AWallAcrossTheDomainIsFoundOnceNotByGrowingWindows) {
       {"across2", {Polygon{{{4000, 80000}}, {}}, Polygon{{{8000, 20000}}, {}}}},
       {"detour", {Polygon{{{1000, 40000}}, {}}, Polygon{{{3000, 40000}}, {}}}},
   };
-  for (const bool pinch : {false, true})
+  for (const int wall : {0, 1, 2})
     for (const std::int64_t rule : {0, 10}) {
-      const std::string at = std::string(pinch ? "pinched" : "straight") + " wall, w = s = " + std::to_string(rule);
-      const geom::NormalizedObstacles norm = geom::normalize_obstacles(pinch ? pinched : straight, domain);
+      if (wall == 2 && rule == 0) continue;  // (the slit is open: the nets across are routed through it)
+      const std::string at = std::string(wall == 0 ? "straight" : wall == 1 ? "pinched" : "slit") + " wall, w = s = " + std::to_string(rule);
+      const geom::NormalizedObstacles norm = geom::normalize_obstacles(wall == 0 ? straight : wall == 1 ? pinched : slit, domain);
       auto run = [&](bool superset) {
         router::NetRouterOptions o;
         o.superset = superset;
@@ -2070,9 +2076,8 @@ TEST(NetRouter, AWallAcrossTheDomainIsFoundOnceNotByGrowingWindows) {
         EXPECT_EQ(a.reason, b.reason) << at << ": " << nets[i].name;
         EXPECT_EQ(a.wires, b.wires) << at << ": " << nets[i].name;
       }
-      EXPECT_EQ(with->outcomes()[0].code, "ROUTE-0002") << at;
+      EXPECT_EQ(with->outcomes()[0].code, wall == 2 ? "ROUTE-0010" : "ROUTE-0002") << at;
       EXPECT_TRUE(router::check_routes(norm, check_nets(nets, *with), {rule, rule}).problems.empty()) << at;
-      EXPECT_EQ(without->stats().blockages_apart, 0) << at;
       std::printf("%s: whole-domain windows %lld with, %lld without; apart among the blockages %lld\n", at.c_str(),
                   static_cast<long long>(with->stats().whole), static_cast<long long>(without->stats().whole),
                   static_cast<long long>(with->stats().blockages_apart));
