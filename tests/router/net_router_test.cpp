@@ -2082,7 +2082,10 @@ TEST(NetRouter, AWallAcrossTheDomainIsFoundOnceNotByGrowingWindows) {
                   static_cast<long long>(with->stats().whole), static_cast<long long>(without->stats().whole),
                   static_cast<long long>(with->stats().blockages_apart));
       EXPECT_GT(without->stats().whole, 0) << at;
-      EXPECT_GE(with->stats().blockages_apart, 2) << at;
+      // each net across stopped once in the first pass (the grown blockages' components) and, on
+      // the straight and pinched walls, once more when explained at the Plain level (the plain
+      // blockages' own); the slit is open there, so those two grow and route through it
+      EXPECT_GE(with->stats().blockages_apart, wall == 2 ? 2 : 4) << at;
       // (the whole domain is also the window of "west", whose pins span most of it)
       EXPECT_LT(with->stats().whole, without->stats().whole) << at;
     }
