@@ -948,18 +948,15 @@ geom::NormalizedObstacles NetSpace::superset_obstacles(bool with_wires) const {
   }
   if (with_wires)
     for (const auto& pieces : ix.wire_union) rest.insert(rest.end(), pieces.begin(), pieces.end());
-  rest.push_back(geom::domain_frame(domain_));
-  geom::NormalizedObstacles out =
-      geom::normalize_obstacles(rest, Box{{domain_.lo.x - 1, domain_.lo.y - 1}, {domain_.hi.x + 1, domain_.hi.y + 1}});
-  out.domain = domain_;
-  return out;
+  return framed_whole(std::move(rest));
 }
 
-geom::NormalizedObstacles NetSpace::plain_obstacles_framed() const {
-  std::vector<Polygon> all = index_->plain.polys;
-  all.push_back(geom::domain_frame(domain_));
+geom::NormalizedObstacles NetSpace::plain_obstacles_framed() const { return framed_whole(index_->plain.polys); }
+
+geom::NormalizedObstacles NetSpace::framed_whole(std::vector<Polygon> obstacles) const {
+  obstacles.push_back(geom::domain_frame(domain_));
   geom::NormalizedObstacles out =
-      geom::normalize_obstacles(all, Box{{domain_.lo.x - 1, domain_.lo.y - 1}, {domain_.hi.x + 1, domain_.hi.y + 1}});
+      geom::normalize_obstacles(obstacles, Box{{domain_.lo.x - 1, domain_.lo.y - 1}, {domain_.hi.x + 1, domain_.hi.y + 1}});
   out.domain = domain_;
   return out;
 }
@@ -1570,9 +1567,9 @@ std::optional<Point> NetRouter::pin_candidate(std::size_t net, const Polygon& g,
         if (in_pin(c, g) && usable(c)) return c;
       }
   // A small pin (its box at most kPinScanPoints lattice points) is read whole (since 2026-12-06):
-  // the points above miss a clear pocket inside it
-  // that the clearance's circles bound (and a clear stretch of a 45-degree edge), where a wire of
-  // one point is legal (NetRouter.PadsMeetingInAPocketTheCirclesBoundAreRouted).
+  // the points above miss a clear pocket inside it that the clearance's circles bound (and a
+  // clear stretch of a 45-degree edge), where a wire of one point is legal
+  // (NetRouter.PadsMeetingInAPocketTheCirclesBoundAreRouted).
   const Box b = box_of(g.outer);
   const std::int64_t x0 = static_cast<std::int64_t>(geom::ceil_div(b.lo.x, scale_)), x1 = static_cast<std::int64_t>(geom::floor_div(b.hi.x, scale_));
   const std::int64_t y0 = static_cast<std::int64_t>(geom::ceil_div(b.lo.y, scale_)), y1 = static_cast<std::int64_t>(geom::floor_div(b.hi.y, scale_));

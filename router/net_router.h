@@ -463,6 +463,9 @@ class NetSpace {
   struct Index;  // the R-trees (Boost.Geometry): defined in net_router.cpp only
 
  private:
+  // `obstacles` with the domain's frame, normalized over the whole domain (grown by 1)
+  geom::NormalizedObstacles framed_whole(std::vector<geom::Polygon> obstacles) const;
+
   geom::Box domain_;
   std::vector<NetPins> nets_;
   std::map<std::size_t, NetPins> reach_;  // reach(): the nets with a pin reached as its staircase
@@ -796,9 +799,8 @@ class NetRouter {
   // The first lattice point in pin g, taken next to each of NetSpace::clearance_candidates(net, g,
   // overlay, with_wires) in turn (geom::lattice_neighbours), that `usable` accepts; when none is,
   // and g's box holds at most kPinScanPoints lattice points, the first of those in g (x, then y,
-  // increasing);
-  // the caller holds space_mutex_. move_point_wires, point_wire_stuck and joined_point try their
-  // points so.
+  // increasing); the caller holds space_mutex_. move_point_wires, point_wire_stuck and
+  // joined_point try their points so.
   static constexpr std::int64_t kPinScanPoints = 4096;
   std::optional<geom::Point> pin_candidate(std::size_t net, const geom::Polygon& g, const WireOverlay* overlay,
                                            bool with_wires, const std::function<bool(geom::Point)>& usable) const;
