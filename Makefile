@@ -53,12 +53,15 @@ run: build
 	$(BUILD)/tools/taut route designs/demo.xml -q --metric combined --bend-cost 1000 -o out/demo.bends.xml --svg out/demo.bends.svg
 	$(BUILD)/tools/taut route designs/demo.xml -q --tighten -o out/demo.tight.xml --svg out/demo.tight.svg
 	$(BUILD)/tools/taut check out/demo.tight.xml -q
+	@# any-angle wires: routed octilinear, then tightened together into any angle (bump by its sketch); the whole check passes
+	$(BUILD)/tools/taut route designs/demo.xml -q --orientations any -o out/demo.any.xml --svg out/demo.any.svg
+	$(BUILD)/tools/taut check out/demo.any.xml -q
 	$(BUILD)/tools/taut tighten designs/wind.xml -q --clearance --orientations c:45,135 -o out/wind.diagonal.xml --svg out/wind.diagonal.svg
 	$(BUILD)/tools/taut tighten designs/wind.xml -q --clearance --min-link --orientations octilinear -o out/wind.oct.xml --svg out/wind.oct.svg --stats out/wind.oct.stats.json
 	@# four nets through a channel exactly four tracks wide (tracks at exactly the clearance and the pitch)
 	$(BUILD)/tools/taut route designs/pitch.xml -q -o out/pitch.routed.xml --svg out/pitch.svg --stats out/pitch.stats.json
 	$(BUILD)/tools/taut check out/pitch.routed.xml -q
-	@echo "wrote out/demo.routed.xml, out/demo.svg, out/demo.stats.json, out/demo.check.json, octilinear wires in out/demo.oct.routed.xml, out/demo.oct.svg, with clk as an octilinear Steiner tree in out/demo.oct.steiner.xml, out/demo.oct.steiner.svg, out/demo.oct.steiner.json, the pins' Voronoi diagram in out/demo.cells.xml, out/demo.voronoi.svg, designs/wind.xml's sketches tightened in out/wind.tightened.xml, out/wind.svg, out/wind.stats.json, and designs/bends.xml routed with bend costs 0 and 5000 in out/bends.c0.xml, out/bends.c0.svg, out/bends.c5000.xml, out/bends.c5000.svg, and designs/diameter.xml's link diameter in out/diameter.json, out/diameter.svg, and designs/demo.xml routed with length + 1000 x bends (shape pins included) in out/demo.bends.xml, out/demo.bends.svg, routed and tightened together (bump by its sketch) in out/demo.tight.xml, out/demo.tight.svg, and designs/wind.xml tightened in the diagonals only (c:45,135) in out/wind.diagonal.xml, out/wind.diagonal.svg, and in octilinear with each wire's minimum-link octilinear path (dash-dotted) in out/wind.oct.xml, out/wind.oct.svg, out/wind.oct.stats.json, and designs/pitch.xml's four nets on four tracks at exactly the pitch in out/pitch.routed.xml, out/pitch.svg, out/pitch.stats.json"
+	@echo "wrote out/demo.routed.xml, out/demo.svg, out/demo.stats.json, out/demo.check.json, octilinear wires in out/demo.oct.routed.xml, out/demo.oct.svg, with clk as an octilinear Steiner tree in out/demo.oct.steiner.xml, out/demo.oct.steiner.svg, out/demo.oct.steiner.json, the pins' Voronoi diagram in out/demo.cells.xml, out/demo.voronoi.svg, designs/wind.xml's sketches tightened in out/wind.tightened.xml, out/wind.svg, out/wind.stats.json, and designs/bends.xml routed with bend costs 0 and 5000 in out/bends.c0.xml, out/bends.c0.svg, out/bends.c5000.xml, out/bends.c5000.svg, and designs/diameter.xml's link diameter in out/diameter.json, out/diameter.svg, and designs/demo.xml routed with length + 1000 x bends (shape pins included) in out/demo.bends.xml, out/demo.bends.svg, routed and tightened together (bump by its sketch) in out/demo.tight.xml, out/demo.tight.svg, with any-angle wires in out/demo.any.xml, out/demo.any.svg, and designs/wind.xml tightened in the diagonals only (c:45,135) in out/wind.diagonal.xml, out/wind.diagonal.svg, and in octilinear with each wire's minimum-link octilinear path (dash-dotted) in out/wind.oct.xml, out/wind.oct.svg, out/wind.oct.stats.json, and designs/pitch.xml's four nets on four tracks at exactly the pitch in out/pitch.routed.xml, out/pitch.svg, out/pitch.stats.json"
 
 # The two trees build and test side by side: one's serial tails (a big file compiling alone,
 # links, a slow test) overlap the other's work. Each compiles with half the JOBS (one job each
@@ -107,6 +110,8 @@ bench: build
 	$(BUILD)/bench/bench_import
 	$(BUILD)/bench/bench_steiner
 	$(BUILD)/bench/bench_net_router --threads 2 --tighten
+	$(BUILD)/bench/bench_net_router --sizes 10000 --nets 300,1000 --threads 1 --orientations any
+	$(BUILD)/bench/bench_net_router --sizes 10000 --nets 300,1000 --threads 1 --orientations c:0,45,90
 
 # OpenROAD's flip-chip RDL test case (../shared/data/openroad-rdl): imported, routed, checked,
 # and compared with OpenROAD's own routing of it (README, "A real layout").

@@ -33,13 +33,20 @@
 // passed by the independent checker), so a legal routing of every net is known to exist: the
 // completion target's instance. Their planted length is printed beside the routed length.
 //
+// --orientations SET (any, or a lattice c: set such as c:45,135; l1 only): each row is then also
+// routed as `taut route --orientations SET` does it (since 2026-12-06): octilinear, the gaps of
+// exactly the clearance closed, each attempt tightened into a lattice set where it was routed
+// (router::tighten_attempt), then every net tightened together into the set (NetsTightener);
+// against a baseline in the same run, the same nets routed octilinear alone (no tightening):
+// time and its ratio, nets routed each way, and nets left with a wire outside the set.
+//
 // --round-log: on stderr, when each phase and each rip-up round begins (wall clock from the
 // run's start, at its first net tried) and how many nets are routed then
 // (NetRouterOptions::progress), to see what each round gains for its time. The final round
 // shows as the round after the last (its count taken before the best state was put back), the
 // last pass not at all; the clock starts before the router is built.
 //
-//   bench_net_router [--sizes N,..] [--nets M,..] [--threads T,..] [--rounds R] [--max-rips K] [--search-windows W] [--no-final-round] [--no-superset] [--tighten] [--planted] [--exact-gaps] [--round-log] [--metric l1|combined|link] [--bend-cost C]
+//   bench_net_router [--sizes N,..] [--nets M,..] [--threads T,..] [--rounds R] [--max-rips K] [--search-windows W] [--no-final-round] [--no-superset] [--tighten] [--planted] [--exact-gaps] [--round-log] [--metric l1|combined|link] [--bend-cost C] [--orientations SET]
 //   (--sizes: blockage vertices)
 #include <chrono>
 #include <cmath>
@@ -49,6 +56,7 @@
 #include <random>
 #include <map>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -56,6 +64,7 @@
 #include "bench/bench_util.h"
 #include "bench/free_points.h"
 #include "bench/planted_nets.h"
+#include "geom/directions.h"
 #include "router/bend_router.h"
 #include "router/l1_router.h"
 #include "router/net_router.h"
@@ -78,6 +87,7 @@ int main(int argc, char** argv) {
   bool superset = true;
   bool tighten = false, planted = false, exact_gaps = false, round_log = false;
   std::string metric = "l1";
+  std::string set_word;  // --orientations: "" (none), "any" or a lattice c: set
   std::int64_t bend_cost = 1000;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--sizes") && i + 1 < argc) sizes = taut::bench::parse_list(argv[++i]);
@@ -94,8 +104,9 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--round-log")) round_log = true;
     else if (!std::strcmp(argv[i], "--metric") && i + 1 < argc) metric = argv[++i];
     else if (!std::strcmp(argv[i], "--bend-cost") && i + 1 < argc) bend_cost = std::atoll(argv[++i]);
+    else if (!std::strcmp(argv[i], "--orientations") && i + 1 < argc) set_word = argv[++i];
     else {
-      std::fprintf(stderr, "usage: %s [--sizes N,..] [--nets M,..] [--threads T,..] [--rounds R] [--max-rips K] [--search-windows W] [--no-final-round] [--no-superset] [--tighten] [--planted] [--exact-gaps] [--round-log] [--metric l1|combined|link] [--bend-cost C]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--sizes N,..] [--nets M,..] [--threads T,..] [--rounds R] [--max-rips K] [--search-windows W] [--no-final-round] [--no-superset] [--tighten] [--planted] [--exact-gaps] [--round-log] [--metric l1|combined|link] [--bend-cost C] [--orientations SET]\n", argv[0]);
       return 2;
     }
   }
@@ -105,6 +116,15 @@ int main(int argc, char** argv) {
   }
   const bool bends = metric != "l1";
   if (bends) tighten = false;
+  std::optional<taut::router::TightenOrientations> set_orient;
+  if (!set_word.empty()) {
+    const auto lattice = taut::geom::LatticeDirections::parse(set_word);
+    if (set_word != "any" && !lattice) {
+      std::fprintf(stderr, "--orientations: any or a c: set of directions at multiples of 45 degrees\n");
+      return 2;
+    }
+    if (!bends) set_orient = taut::router::TightenOrientations{lattice};
+  }
   const taut::router::BendMetric bm = metric == "link" ? taut::router::BendMetric::Link : taut::router::BendMetric::Combined;
   if (metric == "link") bend_cost = 0;
   auto route_fn = [&] { return bends ? taut::router::NetRouter::bend_router(bm, bend_cost) : taut::router::NetRouter::l1_router(false); };
@@ -318,6 +338,64 @@ int main(int argc, char** argv) {
                     static_cast<long long>(pieces), static_cast<long long>(nt.stats().kept), static_cast<long long>(bends_before),
                     static_cast<long long>(bends_after), static_cast<long long>(bends_alone),
                     static_cast<long long>(nt.stats().windows), static_cast<long long>(nt.stats().whole));
+      }
+      if (set_orient) {
+        // baseline: the same nets routed octilinear (gaps closed), nothing tightened
+        taut::router::NetRouterOptions oo = options(1);
+        oo.octilinear = true;
+        oo.exact_gaps = false;
+        taut::router::NetRouter oct(dom, lay.norm.obstacles, nets, rules, oo);
+        const double oct_s = taut::bench::seconds_of([&] { oct.run(taut::router::NetRouter::oct_router()); }, 1);
+        std::size_t oct_routed = 0;
+        for (const auto& o : oct.outcomes()) oct_routed += o.routed;
+        // as taut route --orientations SET: each attempt tightened into a lattice set (unframed
+        // windows), then every net together
+        const taut::router::TightenOrientations to = *set_orient;
+        taut::router::NetRouter sr(dom, lay.norm.obstacles, nets, rules, oo);
+        std::vector<taut::router::NetLines> wires;
+        std::size_t set_routed = 0, outside = 0;
+        taut::router::NetsTightenStats nts;
+        const double set_s = taut::bench::seconds_of([&] {
+          const taut::router::NetRouteFn base = taut::router::NetRouter::oct_router();
+          if (to.set)
+            sr.run([&](std::size_t i, const taut::router::NetPins& pins, const taut::geom::NormalizedObstacles& obs) {
+              // c:45,135 keeps the parity of x + y: a net of point pins of both parities is not
+              // routed (taut route fails it with ROUTE-0021 before routing, so it takes no room)
+              if (to.set->mask() == 0b1010)
+                for (const Polygon& p : pins.pins)
+                  if ((p.outer[0].x + p.outer[0].y - pins.pins[0].outer[0].x - pins.pins[0].outer[0].y) % 2 != 0) {
+                    taut::router::NetAttempt no;
+                    no.code = "ROUTE-0021";
+                    no.reason = "parity";
+                    return no;
+                  }
+              taut::router::NetAttempt a = base(i, pins, obs);
+              taut::router::tighten_attempt(a, pins, obs, to);
+              return a;
+            });
+          else
+            sr.run(base);
+          wires.clear();
+          for (const auto& o : sr.outcomes()) wires.push_back(o.routed ? o.wires : taut::router::NetLines{});
+          taut::router::NetSpace space(dom, lay.norm.obstacles, nets, {10, 10});
+          taut::router::NetsTightenOptions no;
+          no.orientations = to;
+          taut::router::NetsTightener nt(space, no);
+          (void)nt.run(wires);
+          nts = nt.stats();
+        }, 1);
+        (void)nts;
+        for (std::size_t i = 0; i < wires.size(); ++i) {
+          if (wires[i].empty()) continue;
+          bool in = true;
+          for (const auto& w : wires[i]) in = in && (!to.set || to.set->runs_along(w));
+          set_routed += in;
+          outside += !in;
+        }
+        std::printf("%18s --orientations %s: %.3f s, %.2f x routing octilinear alone (%.3f s); %zu routed in the set "
+                    "(%zu left outside it), %zu octilinear; tightening: %d rounds, %lld wires moved\n", "",
+                    set_word.c_str(), set_s, set_s / oct_s, oct_s, set_routed, outside, oct_routed, nts.rounds,
+                    static_cast<long long>(nts.moved));
       }
       for (const std::int64_t t : thread_counts) {
         taut::router::NetRouter par(dom, lay.norm.obstacles, nets, rules, options(static_cast<int>(t)));

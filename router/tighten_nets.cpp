@@ -677,4 +677,22 @@ std::optional<std::vector<NetLines>> tighten_scaled(const geom::Box& domain, std
   return back;
 }
 
+void tighten_attempt(NetAttempt& attempt, const NetPins& pins, const geom::NormalizedObstacles& obstacles,
+                     const TightenOrientations& orientations, const std::function<bool()>& stop) {
+  if (!attempt.routed || attempt.wires.empty()) return;
+  NetSpace space(obstacles.domain, obstacles.obstacles, std::vector<NetPins>{pins}, NetRules{});
+  NetsTightenOptions o;
+  o.orientations = orientations;
+  o.stop = stop;
+  NetsTightener nt(space, o);
+  std::vector<NetLines> w{attempt.wires};
+  const std::vector<NetTightenOutcome> out = nt.run(w);
+  if (out.empty() || out[0].status != NetTightenOutcome::Status::Ok || w[0].empty()) return;
+  if (orientations.set &&
+      !std::all_of(w[0].begin(), w[0].end(), [&](const auto& line) { return orientations.set->runs_along(line); }))
+    return;
+  attempt.wires = std::move(w[0]);
+  attempt.distance.reset();
+}
+
 }  // namespace taut::router

@@ -187,6 +187,18 @@ class NetsTightener {
   NetsTightenStats stats_;
 };
 
+// A net router's attempt (NetRouteFn) tightened into `orientations` among the obstacles it was
+// routed among (the net alone: a NetsTightener on a NetSpace of those obstacles with no rules, as
+// they are grown already; they must not hold the domain's frame, NetRouterOptions::framed), so
+// that a net router places wires already in those directions and routes the later nets round
+// them (`taut route --orientations` with a lattice c: set, since 2026-12-06: a net whose octilinear
+// wire is tightened only after every net is placed can be left in a gap of exactly the clearance
+// between later wires, where no wire of a set that lacks its direction fits). The attempt is left
+// as it was when it is not routed, when the tightening fails, or when a wire stays outside the
+// set. Its claim (NetAttempt::distance) is dropped: it was the route's.
+void tighten_attempt(NetAttempt& attempt, const NetPins& pins, const geom::NormalizedObstacles& obstacles,
+                     const TightenOrientations& orientations, const std::function<bool()>& stop = {});
+
 // Cuts a net's wires at the ends of its other wires, and at its pins, that lie on them (see
 // Trees above). `frozen` flags the pieces of wires that touch a shape pin mid-segment only (they
 // must stay as they are).

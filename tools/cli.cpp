@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "geom/directions.h"
 #include "io/atomic_file.h"
 #include "io/layout_reader.h"
 #include "io/validate_layout.h"
@@ -128,20 +129,24 @@ bool check_routing_options(const RoutingOptions& options, const io::Layout& layo
   }
   auto available = [&](const std::string& text) {
     const std::string o = io::canonical_orientations(text);
-    return o == "rectilinear" || o == "octilinear" || (options.allow_any && o == "any");
+    return o == "rectilinear" || o == "octilinear" || ((options.allow_any || options.allow_sets) && o == "any") ||
+           (options.allow_sets && geom::LatticeDirections::parse(o));
   };
+  // what is available, said in the refusal
+  const std::string offered = options.allow_sets
+                                  ? "rectilinear, octilinear, any and c: sets of directions at multiples of 45 "
+                                    "degrees (e.g. c:45,135) are available; a direction at another angle has no "
+                                    "integer step, so no wire with integer vertices runs along it"
+                                  : "only rectilinear and octilinear wires are available in this version";
   if (!options.orientations.empty() && !available(options.orientations)) {
-    print_usage_error("CLI-0021", "--orientations " + options.orientations +
-                                      ": only rectilinear and octilinear wires are available in "
-                                      "this version");
+    print_usage_error("CLI-0021", "--orientations " + options.orientations + ": " + offered);
     return false;
   }
   if (options.orientations.empty() && layout.rules && !available(layout.rules->orientations)) {
     print_diagnostics({Diagnostic{Severity::Error, "CLI-0021", layout.file, layout.rules->line, 0,
-                                  "<rules> orientations=\"" + layout.rules->orientations +
-                                      "\": only rectilinear and octilinear wires are available "
-                                      "in this version; pass --orientations rectilinear or "
-                                      "--orientations octilinear to route anyway"}});
+                                  "<rules> orientations=\"" + layout.rules->orientations + "\": " + offered +
+                                      "; pass --orientations rectilinear or --orientations octilinear to route "
+                                      "anyway"}});
     return false;
   }
   if (bends && routing_orientations(options, layout) != "rectilinear") {

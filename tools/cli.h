@@ -66,6 +66,10 @@ struct RoutingOptions {
   bool allow_any = false;
   // `path` and `route`: --metric combined and link (rectilinear wires).
   bool allow_bends = false;
+  // `route` only: orientations "any" and the lattice c: sets (geom/directions.h: directions at
+  // multiples of 45 degrees, such as c:45,135) are accepted; the nets are routed octilinear and
+  // then tightened together into them (since 2026-12-06).
+  bool allow_sets = false;
 };
 // The combined metric's C: --bend-cost, else <rules> bend-cost, else 0.
 std::int64_t routing_bend_cost(const RoutingOptions& options, const io::Layout& layout);
@@ -78,7 +82,8 @@ inline constexpr std::int64_t kMaxBendCost = geom::kMaxCoord;
 bool check_routing_options(const RoutingOptions& options, const io::Layout& layout, bool quiet);
 
 // The orientations to route in after check_routing_options() accepted them: --orientations,
-// else <rules>, else "rectilinear"; "rectilinear" or "octilinear" (or "any" with allow_any).
+// else <rules>, else "rectilinear"; "rectilinear" or "octilinear" (or "any" with allow_any, or
+// "any" and a lattice c: set as written with allow_sets).
 std::string routing_orientations(const RoutingOptions& options, const io::Layout& layout);
 
 // load_layout(), then check_routing_options(): the layout when routing may start, otherwise

@@ -28,6 +28,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "geom/directions.h"
 #include "geom/predicates.h"
 #include "io/layout_geometry.h"
 #include "io/layout_writer.h"
@@ -401,6 +402,37 @@ router::NetAttempt sketch_attempt(const io::Layout& layout, const io::Net& net, 
   return a;
 }
 
+// Why a net routed octilinear could not be written in a lattice c: set (route --orientations
+// c:…, ROUTE-0021): a piece of its wires was kept as routed by the tightening. Two point pins
+// whose x + y differ in parity are named first when the set has only the two diagonals, whose
+// steps keep that parity: no wire of the set joins them at all.
+std::optional<std::string> parity_reason(const io::Net& net, const geom::LatticeDirections& set) {
+  if (set.mask() == 0b1010)
+    for (const io::Pin& p : net.pins)
+      for (const io::Pin& q : net.pins)
+        if (p.point && q.point && &p < &q &&
+            ((std::int64_t{p.point->x} + p.point->y) - (std::int64_t{q.point->x} + q.point->y)) % 2 != 0)
+          return "pins \"" + p.name + "\" (" + std::to_string(p.point->x) + "," + std::to_string(p.point->y) +
+                 ") and \"" + q.name + "\" (" + std::to_string(q.point->x) + "," + std::to_string(q.point->y) + ") differ in the parity of x + y, which " +
+                 set.name() + " wires keep (each step moves x and y by one): no wire in " + set.name() +
+                 " joins them; route it rectilinear or octilinear";
+  return std::nullopt;
+}
+
+// `status`: the tightening's outcome for the net (NoStaircase, NotFree), when known.
+std::string off_set_reason(const io::Net& net, const geom::LatticeDirections& set,
+                           std::optional<router::NetTightenOutcome::Status> status) {
+  if (auto why = parity_reason(net, set)) return *why;
+  const std::string head = "its octilinear route could not be tightened into " + set.name() + ": ";
+  using S = router::NetTightenOutcome::Status;
+  if (status == S::NoStaircase) return head + no_staircase_reason(set.name());
+  if (status == S::NotFree)
+    return head + "a piece of it lies where the other nets' wires leave no room to move it (at exactly the "
+                  "clearance on both sides), so it stays in octilinear directions the set lacks; route it octilinear";
+  return head + "a piece of it was kept as routed (it touches a shape pin only along a segment, or no staircase of "
+                "the set follows it), in octilinear directions the set lacks; route it octilinear";
+}
+
 }  // namespace
 
 void add_route(CLI::App& app, int& status) {
@@ -422,6 +454,7 @@ void add_route(CLI::App& app, int& status) {
   sub->add_option("--stats", args->stats, "also write statistics as JSON");
   add_routing_options(sub, args->routing);
   args->routing.allow_bends = true;
+  args->routing.allow_sets = true;
   sub->add_flag("--tighten", args->tighten,
                 "then pull every wire taut in its class and write it with the fewest links (a net with a "
                 "<sketch> follows its sketch), as taut tighten does");
@@ -491,6 +524,14 @@ void add_route(CLI::App& app, int& status) {
       return;
     }
     const bool bends = args->routing.metric != "l1";
+    // --orientations any, or a lattice c: set other than rectilinear and octilinear (since
+    // 2026-12-06): the nets are routed octilinear with the gaps of exactly the clearance closed,
+    // then tightened together into those directions (--tighten is implied), and a net whose wires
+    // cannot be written in them is failed (ROUTE-0021). `target` is what the wires are written in.
+    const std::string target = routing_orientations(args->routing, *layout);
+    const std::optional<geom::LatticeDirections> target_set = geom::LatticeDirections::parse(target);
+    const bool reshaped = !bends && target != "rectilinear" && target != "octilinear";
+    if (reshaped) args->tighten = true;
     if (bends && args->tighten) {
       print_usage_error("CLI-0020", "--tighten makes every wire shortest in L1 in its class; it does not apply "
                                     "to --metric " + args->routing.metric);
@@ -638,7 +679,7 @@ void add_route(CLI::App& app, int& status) {
         for (const io::Net& net : layout->nets)
           if (net.sketch) sketch_points.insert(sketch_points.end(), net.sketch->points.begin(), net.sketch->points.end());
       const geom::NormalizedObstacles norm = routing_obstacles(*layout, sketch_points);
-      const bool octilinear = routing_orientations(args->routing, *layout) == "octilinear";
+      const bool octilinear = reshaped || routing_orientations(args->routing, *layout) == "octilinear";
       std::optional<router::L1Router> l1;
       std::optional<router::OctRouter> oct;
       if (octilinear)
@@ -649,6 +690,10 @@ void add_route(CLI::App& app, int& status) {
 
       routes.metric = "l1";
       routes.orientations = octilinear ? "octilinear" : "rectilinear";
+      if (reshaped) {  // written as taut tighten writes them
+        routes.metric = target_set ? "l1" : "euclidean";
+        routes.orientations = target_set ? target_set->name() : "any";
+      }
       // With --tighten a two-pin net's sketch, or a loop sketch on any net, is what gets tightened.
       // (A two-pin net's open sketch that misses a pin is not followed: the net is routed without
       // it, ROUTE-0020, since its tightened sketch would join nothing.)
@@ -668,6 +713,8 @@ void add_route(CLI::App& app, int& status) {
       std::set<std::string> contractible_loop;  // --tighten: loop sketches that wind around no blockage
       geom::Box net_domain = norm.domain;  // the net router's (grown when there is no boundary)
       const std::string orient_word = octilinear ? "octilinear" : "rectilinear";
+      // the directions the wires are tightened into: the routing's, or the target's
+      const std::string tighten_word = reshaped ? (target_set ? target_set->name() : "any") : orient_word;
       if (args->tighten && !args->independent) {
         // A sketch that leaves free space is an input error, found before routing (nothing written).
         std::optional<WireTightener> plain;
@@ -710,13 +757,15 @@ void add_route(CLI::App& app, int& status) {
           // triangulated space closes it; a net that follows its sketch has it tightened in the
           // router's scaled plane, and snapped back as every wire is).
           for (const bool exact : {true, false}) {
+          if (exact && reshaped) continue;  // (a wire in such a gap would stay as routed, outside the target's directions)
           router::NetRouterOptions nro;
           nro.octilinear = octilinear;
           nro.stop = stop;
           nro.progress = progress;
           // the nets routed by L1Router or OctRouter alone take framed windows (a sketch's
           // tightening reads the obstacles itself)
-          nro.framed = [&](std::size_t i) { return !follows_sketch(layout->nets[i]); };
+          // (and with the wires tightened into a lattice set, which reads them: router::tighten_attempt)
+          nro.framed = [&](std::size_t i) { return !(reshaped && target_set) && !follows_sketch(layout->nets[i]); };
           nro.threads = static_cast<int>(args->threads ? args->threads : std::max(1u, std::thread::hardware_concurrency()));
           nro.max_rips = args->max_rips;
           nro.exact_gaps = exact;
@@ -733,8 +782,16 @@ void add_route(CLI::App& app, int& status) {
                 a.reason = "the loop sketch winds around no blockage: it can be pulled to a point";
                 return a;
               }
-              return sketch_attempt(*layout, scaled_net(net, pins.scale), obs, orient_word, nr.space().domain(), pins.scale);
+              return sketch_attempt(*layout, scaled_net(net, pins.scale), obs, reshaped ? tighten_word : orient_word,
+                                    nr.space().domain(), pins.scale);
             }
+            if (reshaped && target_set)
+              if (auto why = parity_reason(net, *target_set)) {  // never routed, so it takes no room
+                router::NetAttempt a;
+                a.code = "ROUTE-0021";
+                a.reason = *why;
+                return a;
+              }
             NetResult r;
             const io::Net sn = selected_pins(scaled_net(net, pins.scale), pins);
             if (octilinear) {
@@ -753,6 +810,8 @@ void add_route(CLI::App& app, int& status) {
             a.radius = r.radius;
             a.sink_distances = r.sink_distances;
             a.distance = r.distance;
+            // (a lattice set: the wires placed are already in it; router/tighten_nets.h)
+            if (reshaped && target_set) router::tighten_attempt(a, pins, obs, tighten_orientations(tighten_word), stop);
             return a;
           });
           net_stats = nr.stats();
@@ -775,7 +834,8 @@ void add_route(CLI::App& app, int& status) {
         }
       } else if (args->tighten) {
         print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0013", layout->file, 0, 0,
-                                      "--tighten with --independent pulls each wire taut among the blockages alone: "
+                                      std::string(reshaped ? "--orientations " + target : "--tighten") +
+                                          " with --independent pulls each wire taut among the blockages alone: "
                                       "tightened wires may come closer to other nets or to blockages than <rules> "
                                       "allows (taut check finds where)"}},
                           args->load.quiet);
@@ -835,7 +895,8 @@ void add_route(CLI::App& app, int& status) {
           }
         }
         router::NetsTightenOptions o;
-        o.orientations = tighten_orientations(orient_word);
+        std::vector<router::NetTightenOutcome> tighten_outcomes;  // in the layout's units (empty: scaled)
+        o.orientations = tighten_orientations(tighten_word);
         o.stop = stop;
         // In the net router's scaled plane first (since 2026-12-05), where gaps of exactly the
         // clearance are open (net_router.h), so a wire there is pulled taut too; then snapped back
@@ -869,7 +930,7 @@ void add_route(CLI::App& app, int& status) {
         if (tighten_scale == 1) {
           router::NetSpace ts(net_domain, norm.obstacles, net_pins(*layout), rules);
           router::NetsTightener nt(ts, o);
-          (void)nt.run(wires, kind);
+          tighten_outcomes = nt.run(wires, kind);
           tighten_stats = nt.stats();
         }
         // A claim of shortest length stands only while no other net's wire left its proof window
@@ -904,6 +965,20 @@ void add_route(CLI::App& app, int& status) {
             continue;
           }
           if (wires[i].empty()) continue;
+          if (reshaped && target_set &&
+              !std::all_of(wires[i].begin(), wires[i].end(), [&](const auto& w) { return target_set->runs_along(w); })) {
+            // a piece kept as routed, in octilinear directions the target lacks: not written so
+            if (was_routed) --routed;
+            route = io::Route{};
+            route.net = net.name;
+            route.status = "failed";
+            route.reason = off_set_reason(net, *target_set,
+                                          i < tighten_outcomes.size() ? std::optional(tighten_outcomes[i].status) : std::nullopt);
+            print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0021", layout->file, net.line, 0,
+                                          "net \"" + net.name + "\" not routed: " + *route.reason}},
+                              args->load.quiet);
+            continue;
+          }
           if (!was_routed) ++routed;
           route = io::Route{};
           route.net = net.name;
@@ -920,12 +995,13 @@ void add_route(CLI::App& app, int& status) {
         // --independent: every routed wire pulled taut in its class and written with the fewest links (its L1 or
         // octilinear length cannot grow: the routed wire is a staircase of the class); a net with a
         // sketch gets its sketch tightened instead, which fixes its class.
-        const WireTightener wt(norm, octilinear ? "octilinear" : "rectilinear");
+        const WireTightener wt(norm, tighten_word);
         std::vector<Diagnostic> errors;
         for (std::size_t i = 0; i < layout->nets.size(); ++i) {
           const io::Net& net = layout->nets[i];
           io::Route& route = routes.routes[i];
           std::vector<io::Wire> wires;
+          bool no_staircase = false;  // a piece has no staircase in the set
           if (follows_sketch(net)) {
             const auto res = wt.run(net.sketch->points);
             if (res.taut.status != router::TightenStatus::Ok) {
@@ -941,7 +1017,7 @@ void add_route(CLI::App& app, int& status) {
               route.status = "failed";
               route.reason = res.contractible
                                  ? std::string("the loop sketch winds around no blockage: it can be pulled to a point")
-                                 : no_staircase_reason(octilinear ? "octilinear" : "rectilinear") + " (the net's <sketch>)";
+                                 : no_staircase_reason(tighten_word) + " (the net's <sketch>)";
               print_diagnostics({Diagnostic{Severity::Warning, res.contractible ? "TIGHTEN-0005" : "TIGHTEN-0004",
                                             layout->file, net.sketch->line, 0, "net \"" + net.name + "\": " + *route.reason}},
                                 args->load.quiet);
@@ -959,12 +1035,28 @@ void add_route(CLI::App& app, int& status) {
             lines = router::cut_at_joints(lines, pins, &frozen);
             for (std::size_t k = 0; k < lines.size(); ++k) {
               const auto res = frozen[k] ? WireTightener::Result{} : wt.run(lines[k]);
+              no_staircase = no_staircase || res.no_staircase;
               // a routed wire is in free space; when no staircase is found, or the one found has
-              // more bends (its fewest links not proven), the routed one stays
-              const bool better = !res.points.empty() && geom::count_bends(res.points) <= geom::count_bends(lines[k]);
+              // more bends (its fewest links not proven), the routed one stays (not when the wires
+              // are written in other directions than routed: then any result is taken)
+              const bool better = !res.points.empty() &&
+                                  (reshaped || geom::count_bends(res.points) <= geom::count_bends(lines[k]));
               wires.push_back(io::Wire{better ? res.points : lines[k]});
             }
           } else {
+            continue;
+          }
+          if (reshaped && target_set &&
+              !std::all_of(wires.begin(), wires.end(), [&](const io::Wire& w) { return target_set->runs_along(w.points); })) {
+            if (route.status == "routed") --routed;
+            route = io::Route{};
+            route.net = net.name;
+            route.status = "failed";
+            route.reason = off_set_reason(net, *target_set,
+                                          no_staircase ? std::optional(router::NetTightenOutcome::Status::NoStaircase) : std::nullopt);
+            print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0021", layout->file, net.line, 0,
+                                          "net \"" + net.name + "\" not routed: " + *route.reason}},
+                              args->load.quiet);
             continue;
           }
           std::vector<std::vector<geom::Point>> lines;

@@ -1383,7 +1383,7 @@ TEST(Tighten, NothingDrawnIsNotAnInternalError) {
       EXPECT_EQ(r.err.find("internal error"), std::string::npos) << text << r.err;
       EXPECT_TRUE(file_exists(dir + "/out.xml")) << text;
     }
-    // (route refuses orientations="any" with CLI-0021, exit 2)
+    // (route routes orientations="any" octilinear and tightens the wires, since 2026-12-06)
     for (const std::vector<std::string>& other : std::vector<std::vector<std::string>>{
              {"route", dir + "/in.xml", "-q", "-o", dir + "/r.xml"}, {"check", dir + "/in.xml", "-q"}, {"stats", dir + "/in.xml"}}) {
       const auto r = run_taut(other);
