@@ -686,8 +686,8 @@ void tighten_attempt(NetAttempt& attempt, const NetPins& pins, const geom::Norma
   o.stop = stop;
   NetsTightener nt(space, o);
   std::vector<NetLines> w{attempt.wires};
-  const std::vector<NetTightenOutcome> out = nt.run(w);
-  if (out.empty() || out[0].status != NetTightenOutcome::Status::Ok || w[0].empty()) return;
+  (void)nt.run(w);  // (a piece it could not move stays as routed, which the test below finds)
+  if (w[0].empty()) return;
   if (orientations.set &&
       !std::all_of(w[0].begin(), w[0].end(), [&](const auto& line) { return orientations.set->runs_along(line); }))
     return;

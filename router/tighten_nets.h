@@ -194,8 +194,8 @@ class NetsTightener {
 // them (`taut route --orientations` with a lattice c: set, since 2026-12-06: a net whose octilinear
 // wire is tightened only after every net is placed can be left in a gap of exactly the clearance
 // between later wires, where no wire of a set that lacks its direction fits). The attempt is left
-// as it was when it is not routed, when the tightening fails, or when a wire stays outside the
-// set. Its claim (NetAttempt::distance) is dropped: it was the route's.
+// as it was when it is not routed or when a wire stays outside the set (a piece the tightening
+// could not move). Its claim (NetAttempt::distance) is dropped: it was the route's.
 void tighten_attempt(NetAttempt& attempt, const NetPins& pins, const geom::NormalizedObstacles& obstacles,
                      const TightenOrientations& orientations, const std::function<bool()>& stop = {});
 

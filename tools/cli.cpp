@@ -135,8 +135,9 @@ bool check_routing_options(const RoutingOptions& options, const io::Layout& layo
   // what is available, said in the refusal
   const std::string offered = options.allow_sets
                                   ? "rectilinear, octilinear, any and c: sets of directions at multiples of 45 "
-                                    "degrees (e.g. c:45,135) are available; a direction at another angle has no "
-                                    "integer step, so no wire with integer vertices runs along it"
+                                    "degrees from 0 to 360, two orientations at least (e.g. c:45,135), are "
+                                    "available; a direction at another angle has no integer step, so no wire with "
+                                    "integer vertices runs along it"
                                   : "only rectilinear and octilinear wires are available in this version";
   if (!options.orientations.empty() && !available(options.orientations)) {
     print_usage_error("CLI-0021", "--orientations " + options.orientations + ": " + offered);
@@ -151,7 +152,7 @@ bool check_routing_options(const RoutingOptions& options, const io::Layout& layo
   }
   if (bends && routing_orientations(options, layout) != "rectilinear") {
     const std::string why = "--metric " + options.metric +
-                            " routes rectilinear wires only (bends of octilinear wires are not weighed yet)";
+                            " routes rectilinear wires only (bends of wires in other directions are not weighed yet)";
     if (options.orientations.empty() && layout.rules)  // the orientations come from the file
       print_diagnostics({Diagnostic{Severity::Error, "CLI-0021", layout.file, layout.rules->line, 0,
                                     why + ": <rules> orientations=\"" + layout.rules->orientations +

@@ -405,9 +405,11 @@ router::NetAttempt sketch_attempt(const io::Layout& layout, const io::Net& net, 
 // Why a net routed octilinear could not be written in a lattice c: set (route --orientations
 // c:…, ROUTE-0021): a piece of its wires was kept as routed by the tightening. Two point pins
 // whose x + y differ in parity are named first when the set has only the two diagonals, whose
-// steps keep that parity: no wire of the set joins them at all.
+// steps keep that parity, and the net has no shape pin: no wire of the set joins them at all.
 std::optional<std::string> parity_reason(const io::Net& net, const geom::LatticeDirections& set) {
-  if (set.mask() == 0b1010)
+  // (a shape pin is metal holding points of both parities, through which such pins may join)
+  const bool points = std::all_of(net.pins.begin(), net.pins.end(), [](const io::Pin& p) { return p.point.has_value(); });
+  if (set.mask() == 0b1010 && points)
     for (const io::Pin& p : net.pins)
       for (const io::Pin& q : net.pins)
         if (p.point && q.point && &p < &q &&
@@ -529,8 +531,10 @@ void add_route(CLI::App& app, int& status) {
     // then tightened together into those directions (--tighten is implied), and a net whose wires
     // cannot be written in them is failed (ROUTE-0021). `target` is what the wires are written in.
     const std::string target = routing_orientations(args->routing, *layout);
-    const std::optional<geom::LatticeDirections> target_set = geom::LatticeDirections::parse(target);
     const bool reshaped = !bends && target != "rectilinear" && target != "octilinear";
+    // the lattice set the wires are written in when reshaped (nullopt: any, or not reshaped)
+    const std::optional<geom::LatticeDirections> target_set =
+        reshaped ? geom::LatticeDirections::parse(target) : std::nullopt;
     if (reshaped) args->tighten = true;
     if (bends && args->tighten) {
       print_usage_error("CLI-0020", "--tighten makes every wire shortest in L1 in its class; it does not apply "
@@ -757,7 +761,9 @@ void add_route(CLI::App& app, int& status) {
           // triangulated space closes it; a net that follows its sketch has it tightened in the
           // router's scaled plane, and snapped back as every wire is).
           for (const bool exact : {true, false}) {
-          if (exact && reshaped) continue;  // (a wire in such a gap would stay as routed, outside the target's directions)
+          // (under a lattice set a wire in such a gap would stay as routed, outside its directions;
+          // under any it is written as it is)
+          if (exact && target_set) continue;
           router::NetRouterOptions nro;
           nro.octilinear = octilinear;
           nro.stop = stop;
@@ -832,7 +838,7 @@ void add_route(CLI::App& app, int& status) {
           status = kInvalid;
           return;
         }
-      } else if (args->tighten) {
+      } else if (args->tighten && !(reshaped && !(layout->rules && (layout->rules->wire_width > 0 || layout->rules->spacing > 0)))) {
         print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0013", layout->file, 0, 0,
                                       std::string(reshaped ? "--orientations " + target : "--tighten") +
                                           " with --independent pulls each wire taut among the blockages alone: "
@@ -915,7 +921,7 @@ void add_route(CLI::App& app, int& status) {
             // from the other nets (NetRouter::withdraw_claims, below), and a wire that would run
             // on through the corner where it ends on another gains no bend)
             std::vector<router::NetLines> mixed = *back;
-            for (std::size_t i = 0; i < wires.size(); ++i) {
+            for (std::size_t i = 0; i < wires.size() && !reshaped; ++i) {  // (in a set, its wires are asked for)
               if (wires[i].empty()) continue;
               const auto [l0, b0] = router::length_and_bends(wires[i]);
               const auto [l1, b1] = router::length_and_bends((*back)[i]);
@@ -943,8 +949,10 @@ void add_route(CLI::App& app, int& status) {
             if (before != wires[i]) net_router->withdraw_claims(i, before, wires[i]);
           }
           for (std::size_t i = 0; i < layout->nets.size(); ++i)
-            if (shortest_of[i]) shortest_of[i] = net_router->outcomes()[i].shortest;
+            if (shortest_of[i]) shortest_of[i] = net_router->outcomes()[i].shortest && !reshaped;
           net_stats = net_router->stats();
+          // (claims are of the octilinear routing's length, not of the set's: none under --orientations any or c:)
+          if (reshaped) net_stats->shortest = 0;
         }
         for (std::size_t i = 0; i < layout->nets.size(); ++i) {
           const io::Net& net = layout->nets[i];
@@ -969,6 +977,7 @@ void add_route(CLI::App& app, int& status) {
               !std::all_of(wires[i].begin(), wires[i].end(), [&](const auto& w) { return target_set->runs_along(w); })) {
             // a piece kept as routed, in octilinear directions the target lacks: not written so
             if (was_routed) --routed;
+            shortest_of[i].reset();
             route = io::Route{};
             route.net = net.name;
             route.status = "failed";
@@ -1000,6 +1009,7 @@ void add_route(CLI::App& app, int& status) {
         for (std::size_t i = 0; i < layout->nets.size(); ++i) {
           const io::Net& net = layout->nets[i];
           io::Route& route = routes.routes[i];
+          const bool was_routed = route.status == "routed";
           std::vector<io::Wire> wires;
           bool no_staircase = false;  // a piece has no staircase in the set
           if (follows_sketch(net)) {
@@ -1048,7 +1058,8 @@ void add_route(CLI::App& app, int& status) {
           }
           if (reshaped && target_set &&
               !std::all_of(wires.begin(), wires.end(), [&](const io::Wire& w) { return target_set->runs_along(w.points); })) {
-            if (route.status == "routed") --routed;
+            if (was_routed || follows_sketch(net)) --routed;  // (a sketch net was counted above)
+            shortest_of[i].reset();
             route = io::Route{};
             route.net = net.name;
             route.status = "failed";

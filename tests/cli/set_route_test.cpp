@@ -57,7 +57,6 @@ TEST(SetRoute, AnyAngleWiresAloneAreTautAndBetweenTheBounds) {
       ASSERT_EQ(run_taut({"gen", kind, "-o", in, "--size", "300", "--nets", "8", "--seed", std::to_string(seed)}).status, 0);
       const auto r = run_taut({"route", in, "--independent", "-o", out, "-q", "--orientations", "any"});
       ASSERT_TRUE(r.status == 0 || r.status == 1) << r.err;
-      EXPECT_EQ(r.err.find("ROUTE-0021"), std::string::npos) << r.err;  // any angle takes every wire
       io::ReadResult rr = io::read_layout(out);
       ASSERT_TRUE(rr.layout && rr.layout->routes);
       EXPECT_EQ(rr.layout->routes->orientations, "any");
@@ -76,7 +75,7 @@ TEST(SetRoute, AnyAngleWiresAloneAreTautAndBetweenTheBounds) {
         ASSERT_EQ(net.pins.size(), 2u);
         const Point a = *net.pins[0].point, b = *net.pins[1].point;
         const auto d8 = oct.distance(a, b);
-        if (route.status != "routed") {
+        if (route.status != "routed") {  // (so never ROUTE-0021: any angle takes every wire)
           EXPECT_FALSE(d8.has_value()) << net.name << ": " << route.reason.value_or("");
           continue;
         }
@@ -110,7 +109,7 @@ TEST(SetRoute, AnyAngleWiresAloneAreTautAndBetweenTheBounds) {
 
 // Generated layouts with rules, routed together into every kind of set: the written layout
 // passes the whole `taut check`; with any angle no net is lost to the set (ROUTE-0021), and the
-// output is the same for one thread and two.
+// output is the same for one thread and two (any, and c:0,45,90 whose attempts are tightened).
 TEST(SetRoute, TogetherEverySetPassesTheChecker) {
   const std::string dir = temp_dir("set_route_together");
   std::map<std::string, int> routed, failed_set, parity;
@@ -155,7 +154,7 @@ TEST(SetRoute, TogetherEverySetPassesTheChecker) {
         if (set == "any") {
           EXPECT_EQ(in_set, 0) << r.err;
         }
-        if (set == "any" && seed == 1) {
+        if ((set == "any" || set == "c:0,45,90") && seed == 1) {  // (attempts tightened on the threads too)
           const std::string out2 = dir + "/" + kind + "2threads.xml";
           ASSERT_EQ(run_taut({"route", in, "-o", out2, "-q", "--orientations", set, "--threads", "2"}, 60).status, r.status);
           EXPECT_EQ(read_text(out2), read_text(out));
@@ -176,7 +175,7 @@ TEST(SetRoute, TogetherEverySetPassesTheChecker) {
   // c:90,135 and c:45,135 were lost so (and 35 fewer routed in all).
   int lost = 0;
   for (const auto& [set, n] : failed_set) lost += n;
-  EXPECT_LE(lost, 3);
+  EXPECT_EQ(lost, 0);
   EXPECT_EQ(parity["c:0,45"] + parity["c:0,45,90"] + parity["c:90,135"] + parity["any"], 0);
 }
 
@@ -223,6 +222,28 @@ TEST(SetRoute, HandCases) {
     EXPECT_EQ(std::abs(even.wires[0].points[1].y), 2) << str(even.wires[0].points);
     EXPECT_EQ(rr.layout->routes->routes[1].status, "failed");
     EXPECT_EQ(run_taut({"check", dir + "/par.xml", "-q"}).status, 0);
+    // a pad holds points of both parities, so pins of both parities may join through it (a
+    // reviewer's case): not refused for parity. (This tree joins a to b directly, a piece
+    // between the two parities, so it is failed for want of a staircase of its class.)
+    const std::string pad = layout_file("set_route_pad", R"(  <net name="n"><pin name="a" x="-21" y="0"/><pin name="b" x="22" y="0"/>
+    <pin name="p"><rect x0="-5" y0="20" x1="6" y1="30"/></pin></net>
+)");
+    const auto q = run_taut({"route", pad, "-o", dir + "/pad.xml", "--orientations", "c:45,135"});
+    EXPECT_TRUE(q.status == 0 || q.status == 1) << q.err;
+    EXPECT_EQ(q.err.find("joins them"), std::string::npos) << q.err;
+    EXPECT_EQ(run_taut({"check", dir + "/pad.xml", "-q"}).status, 0);
+  }
+  {
+    // designs/pitch.xml: four nets through a channel exactly four tracks wide; under any angle the
+    // gaps of exactly the clearance stay open (a wire there is written as routed), so all four route
+    const std::string pitch = std::string(TAUT_SOURCE_DIR) + "/designs/pitch.xml";
+    const auto r = run_taut({"route", pitch, "-o", dir + "/pitch.xml", "--orientations", "any", "-q", "--stats", dir + "/pitch.json"});
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(run_taut({"check", dir + "/pitch.xml", "-q"}).status, 0);
+    const auto j = nlohmann::json::parse(read_text(dir + "/pitch.json"));
+    EXPECT_GT(j["net_router"]["exact_gaps"]["scale"].get<int>(), 1);
+    EXPECT_EQ(j["net_router"]["proven_shortest"], 0);  // (octilinear claims, not the written wires')
+    for (const auto& [name, route] : j["routes"].items()) EXPECT_EQ(route.value("shortest", false), false) << name;
   }
   {
     // a V-shaped notch whose sides are steeper than 45 degrees: from its apex only directions
@@ -263,7 +284,7 @@ TEST(SetRoute, HandCases) {
     const auto r = run_taut({"route", kDemo, "-o", dir + "/x.xml", "--orientations", "c:0,60,120"});
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.err.find("[CLI-0021] --orientations c:0,60,120: rectilinear, octilinear, any and c: sets of "
-                         "directions at multiples of 45 degrees"),
+                         "directions at multiples of 45 degrees from 0 to 360, two orientations at least"),
               std::string::npos)
         << r.err;
     const std::string in = layout_file("set_route_sixty", "  <rules orientations=\"c:0,60,120\"/>\n");
