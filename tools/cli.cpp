@@ -135,7 +135,7 @@ bool check_routing_options(const RoutingOptions& options, const io::Layout& layo
   // what is available, said in the refusal
   const std::string offered = options.allow_sets
                                   ? "rectilinear, octilinear, any and c: sets of directions at multiples of 45 "
-                                    "degrees from 0 to 360, two orientations at least (e.g. c:45,135), are "
+                                    "degrees, two orientations at least (e.g. c:45,135), are "
                                     "available; a direction at another angle has no integer step, so no wire with "
                                     "integer vertices runs along it"
                                   : "only rectilinear and octilinear wires are available in this version";

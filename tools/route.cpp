@@ -952,7 +952,7 @@ void add_route(CLI::App& app, int& status) {
             if (shortest_of[i]) shortest_of[i] = net_router->outcomes()[i].shortest && !reshaped;
           net_stats = net_router->stats();
           // (claims are of the octilinear routing's length, not of the set's: none under --orientations any or c:)
-          if (reshaped) net_stats->shortest = 0;
+          if (reshaped) net_stats->shortest = net_stats->shortest_withdrawn = 0;
         }
         for (std::size_t i = 0; i < layout->nets.size(); ++i) {
           const io::Net& net = layout->nets[i];

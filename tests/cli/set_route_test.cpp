@@ -1,7 +1,8 @@
 // `taut route --orientations any` and lattice c: sets (since 2026-12-06): the nets are routed
-// octilinear with the gaps of exactly the clearance closed, then tightened together into the
-// set (router::NetsTightener), and a net whose wires cannot be written in it is failed with
-// ROUTE-0021. Checked, sharing nothing with the router but geom:
+// octilinear (the gaps of exactly the clearance open under any, closed under a lattice set, whose
+// attempts are tightened into it as they are placed: router::tighten_attempt), then tightened
+// together into the set (router::NetsTightener), and a net whose wires cannot be written in it
+// is failed with ROUTE-0021. Checked, sharing nothing with the router but geom:
 //   - alone (--independent, no clearance): every any-angle wire stays in free space
 //     (oracle::L1Reference::check_path), is locally taut (tests/support/taut_check.h: every bend on
 //     an obstacle vertex, wrapping it), is no shorter than the global Euclidean shortest path (a
@@ -108,7 +109,8 @@ TEST(SetRoute, AnyAngleWiresAloneAreTautAndBetweenTheBounds) {
 }
 
 // Generated layouts with rules, routed together into every kind of set: the written layout
-// passes the whole `taut check`; with any angle no net is lost to the set (ROUTE-0021), and the
+// passes the whole `taut check`; with any angle no net is lost to the set (as many are routed as
+// with --orientations octilinear --tighten, the same routing), and the
 // output is the same for one thread and two (any, and c:0,45,90 whose attempts are tightened).
 TEST(SetRoute, TogetherEverySetPassesTheChecker) {
   const std::string dir = temp_dir("set_route_together");
@@ -152,7 +154,17 @@ TEST(SetRoute, TogetherEverySetPassesTheChecker) {
         EXPECT_EQ(r.status, any_failed ? 1 : 0);
         failed_set[set] += in_set;
         if (set == "any") {
-          EXPECT_EQ(in_set, 0) << r.err;
+          // the same routing as --orientations octilinear --tighten (gaps open, octilinear), and
+          // no net lost to the set: as many nets routed
+          const std::string oct = dir + "/" + kind + std::to_string(seed) + ".oct.xml";
+          const auto o = run_taut({"route", in, "-o", oct, "-q", "--orientations", "octilinear", "--tighten"}, 60);
+          EXPECT_EQ(o.status, r.status) << o.err;
+          io::ReadResult orr = io::read_layout(oct);
+          ASSERT_TRUE(orr.layout && orr.layout->routes);
+          int oct_routed = 0, any_routed = 0;
+          for (const io::Route& route : orr.layout->routes->routes) oct_routed += route.status == "routed";
+          for (const io::Route& route : rr.layout->routes->routes) any_routed += route.status == "routed";
+          EXPECT_EQ(any_routed, oct_routed);
         }
         if ((set == "any" || set == "c:0,45,90") && seed == 1) {  // (attempts tightened on the threads too)
           const std::string out2 = dir + "/" + kind + "2threads.xml";
@@ -223,26 +235,32 @@ TEST(SetRoute, HandCases) {
     EXPECT_EQ(rr.layout->routes->routes[1].status, "failed");
     EXPECT_EQ(run_taut({"check", dir + "/par.xml", "-q"}).status, 0);
     // a pad holds points of both parities, so pins of both parities may join through it (a
-    // reviewer's case): not refused for parity. (This tree joins a to b directly, a piece
-    // between the two parities, so it is failed for want of a staircase of its class.)
-    const std::string pad = layout_file("set_route_pad", R"(  <net name="n"><pin name="a" x="-21" y="0"/><pin name="b" x="22" y="0"/>
-    <pin name="p"><rect x0="-5" y0="20" x1="6" y1="30"/></pin></net>
+    // reviewer's case): not refused for parity, and routed, each pin to the pad (its first pin)
+    const std::string pad = layout_file("set_route_pad", R"(  <net name="n"><pin name="p"><rect x0="-5" y0="20" x1="6" y1="30"/></pin>
+    <pin name="a" x="-21" y="0"/><pin name="b" x="22" y="0"/></net>
 )");
     const auto q = run_taut({"route", pad, "-o", dir + "/pad.xml", "--orientations", "c:45,135"});
-    EXPECT_TRUE(q.status == 0 || q.status == 1) << q.err;
-    EXPECT_EQ(q.err.find("joins them"), std::string::npos) << q.err;
+    EXPECT_EQ(q.status, 0) << q.err;
     EXPECT_EQ(run_taut({"check", dir + "/pad.xml", "-q"}).status, 0);
+    io::ReadResult pr = io::read_layout(dir + "/pad.xml");
+    ASSERT_TRUE(pr.layout && pr.layout->routes);
+    ASSERT_EQ(pr.layout->routes->routes[0].status, "routed");
+    for (const io::Wire& w : pr.layout->routes->routes[0].wires)
+      EXPECT_TRUE(geom::LatticeDirections::parse("c:45,135")->runs_along(w.points)) << str(w.points);
   }
   {
     // designs/pitch.xml: four nets through a channel exactly four tracks wide; under any angle the
-    // gaps of exactly the clearance stay open (a wire there is written as routed), so all four route
+    // gaps of exactly the clearance stay open, so all four route, and the wires are tightened in
+    // the router's scaled plane (tighten.scale > 1), not only kept as routed
     const std::string pitch = std::string(TAUT_SOURCE_DIR) + "/designs/pitch.xml";
     const auto r = run_taut({"route", pitch, "-o", dir + "/pitch.xml", "--orientations", "any", "-q", "--stats", dir + "/pitch.json"});
     EXPECT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(run_taut({"check", dir + "/pitch.xml", "-q"}).status, 0);
     const auto j = nlohmann::json::parse(read_text(dir + "/pitch.json"));
     EXPECT_GT(j["net_router"]["exact_gaps"]["scale"].get<int>(), 1);
+    EXPECT_GT(j["tighten"]["scale"].get<int>(), 1) << j["tighten"].dump();
     EXPECT_EQ(j["net_router"]["proven_shortest"], 0);  // (octilinear claims, not the written wires')
+    EXPECT_EQ(j["net_router"]["shortest_withdrawn"], 0);
     for (const auto& [name, route] : j["routes"].items()) EXPECT_EQ(route.value("shortest", false), false) << name;
   }
   {
@@ -284,7 +302,7 @@ TEST(SetRoute, HandCases) {
     const auto r = run_taut({"route", kDemo, "-o", dir + "/x.xml", "--orientations", "c:0,60,120"});
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.err.find("[CLI-0021] --orientations c:0,60,120: rectilinear, octilinear, any and c: sets of "
-                         "directions at multiples of 45 degrees from 0 to 360, two orientations at least"),
+                         "directions at multiples of 45 degrees, two orientations at least"),
               std::string::npos)
         << r.err;
     const std::string in = layout_file("set_route_sixty", "  <rules orientations=\"c:0,60,120\"/>\n");
