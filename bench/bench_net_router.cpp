@@ -361,7 +361,7 @@ int main(int argc, char** argv) {
             sr.run([&](std::size_t i, const taut::router::NetPins& pins, const taut::geom::NormalizedObstacles& obs) {
               // c:45,135 keeps the parity of x + y: a net of point pins of both parities is not
               // routed (taut route fails it with ROUTE-0021 before routing, so it takes no room)
-              if (to.set->mask() == 0b1010)
+              if (to.set->keeps_parity())
                 for (const Polygon& p : pins.pins)
                   if ((p.outer[0].x + p.outer[0].y - pins.pins[0].outer[0].x - pins.pins[0].outer[0].y) % 2 != 0) {
                     taut::router::NetAttempt no;
@@ -384,7 +384,6 @@ int main(int argc, char** argv) {
           (void)nt.run(wires);
           nts = nt.stats();
         }, 1);
-        (void)nts;
         for (std::size_t i = 0; i < wires.size(); ++i) {
           if (wires[i].empty()) continue;
           bool in = true;

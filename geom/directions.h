@@ -64,6 +64,9 @@ class LatticeDirections {
   // SE), so a staircase in it leaves the box of its link's ends, by up to |dx| + |dy| (the
   // parallelogram of its steps). Not for rectilinear, octilinear, c:0,45,90 and the like.
   bool cones_leave_box() const;
+  // The set is the two diagonals alone (c:45,135): every step keeps the parity of x + y, so a
+  // wire of the set joins only lattice points of one parity.
+  bool keeps_parity() const { return mask_ == 0b1010; }
   // The open cone holding v's direction (v not zero), or -1 when v lies along a step.
   int cone(std::int64_t dx, std::int64_t dy) const;
   // The cone's two steps (counter-clockwise order).

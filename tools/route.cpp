@@ -409,7 +409,7 @@ router::NetAttempt sketch_attempt(const io::Layout& layout, const io::Net& net, 
 std::optional<std::string> parity_reason(const io::Net& net, const geom::LatticeDirections& set) {
   // (a shape pin is metal holding points of both parities, through which such pins may join)
   const bool points = std::all_of(net.pins.begin(), net.pins.end(), [](const io::Pin& p) { return p.point.has_value(); });
-  if (set.mask() == 0b1010 && points)
+  if (set.keeps_parity() && points)
     for (const io::Pin& p : net.pins)
       for (const io::Pin& q : net.pins)
         if (p.point && q.point && &p < &q &&
@@ -683,7 +683,7 @@ void add_route(CLI::App& app, int& status) {
         for (const io::Net& net : layout->nets)
           if (net.sketch) sketch_points.insert(sketch_points.end(), net.sketch->points.begin(), net.sketch->points.end());
       const geom::NormalizedObstacles norm = routing_obstacles(*layout, sketch_points);
-      const bool octilinear = reshaped || routing_orientations(args->routing, *layout) == "octilinear";
+      const bool octilinear = reshaped || target == "octilinear";
       std::optional<router::L1Router> l1;
       std::optional<router::OctRouter> oct;
       if (octilinear)
@@ -692,12 +692,23 @@ void add_route(CLI::App& app, int& status) {
         l1.emplace(norm.domain, norm.obstacles);
       t1 = Clock::now();
 
-      routes.metric = "l1";
-      routes.orientations = octilinear ? "octilinear" : "rectilinear";
-      if (reshaped) {  // written as taut tighten writes them
-        routes.metric = target_set ? "l1" : "euclidean";
-        routes.orientations = target_set ? target_set->name() : "any";
-      }
+      const std::string orient_word = octilinear ? "octilinear" : "rectilinear";
+      // the directions the wires are tightened into and written in: the routing's, or the target's
+      const std::string tighten_word = reshaped ? (target_set ? target_set->name() : "any") : orient_word;
+      routes.metric = target_set || !reshaped ? "l1" : "euclidean";  // (as taut tighten writes them)
+      routes.orientations = tighten_word;
+      // A net whose tightened wires still leave the lattice set (a piece kept as routed, in
+      // octilinear directions the set lacks) is written as failed, ROUTE-0021 (the caller counts it).
+      auto fail_off_set = [&](const io::Net& net, io::Route& route,
+                              std::optional<router::NetTightenOutcome::Status> status) {
+        route = io::Route{};
+        route.net = net.name;
+        route.status = "failed";
+        route.reason = off_set_reason(net, *target_set, status);
+        print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0021", layout->file, net.line, 0,
+                                      "net \"" + net.name + "\" not routed: " + *route.reason}},
+                          args->load.quiet);
+      };
       // With --tighten a two-pin net's sketch, or a loop sketch on any net, is what gets tightened.
       // (A two-pin net's open sketch that misses a pin is not followed: the net is routed without
       // it, ROUTE-0020, since its tightened sketch would join nothing.)
@@ -716,9 +727,6 @@ void add_route(CLI::App& app, int& status) {
       std::vector<NetResult> together;
       std::set<std::string> contractible_loop;  // --tighten: loop sketches that wind around no blockage
       geom::Box net_domain = norm.domain;  // the net router's (grown when there is no boundary)
-      const std::string orient_word = octilinear ? "octilinear" : "rectilinear";
-      // the directions the wires are tightened into: the routing's, or the target's
-      const std::string tighten_word = reshaped ? (target_set ? target_set->name() : "any") : orient_word;
       if (args->tighten && !args->independent) {
         // A sketch that leaves free space is an input error, found before routing (nothing written).
         std::optional<WireTightener> plain;
@@ -838,7 +846,8 @@ void add_route(CLI::App& app, int& status) {
           status = kInvalid;
           return;
         }
-      } else if (args->tighten && !(reshaped && !(layout->rules && (layout->rules->wire_width > 0 || layout->rules->spacing > 0)))) {
+      } else if (args->tighten && (!reshaped || (layout->rules && (layout->rules->wire_width > 0 || layout->rules->spacing > 0)))) {
+        // (under a set the tightening is implied: said only when there is a clearance to break)
         print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0013", layout->file, 0, 0,
                                       std::string(reshaped ? "--orientations " + target : "--tighten") +
                                           " with --independent pulls each wire taut among the blockages alone: "
@@ -975,17 +984,9 @@ void add_route(CLI::App& app, int& status) {
           if (wires[i].empty()) continue;
           if (reshaped && target_set &&
               !std::all_of(wires[i].begin(), wires[i].end(), [&](const auto& w) { return target_set->runs_along(w); })) {
-            // a piece kept as routed, in octilinear directions the target lacks: not written so
             if (was_routed) --routed;
             shortest_of[i].reset();
-            route = io::Route{};
-            route.net = net.name;
-            route.status = "failed";
-            route.reason = off_set_reason(net, *target_set,
-                                          i < tighten_outcomes.size() ? std::optional(tighten_outcomes[i].status) : std::nullopt);
-            print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0021", layout->file, net.line, 0,
-                                          "net \"" + net.name + "\" not routed: " + *route.reason}},
-                              args->load.quiet);
+            fail_off_set(net, route, i < tighten_outcomes.size() ? std::optional(tighten_outcomes[i].status) : std::nullopt);
             continue;
           }
           if (!was_routed) ++routed;
@@ -1060,14 +1061,7 @@ void add_route(CLI::App& app, int& status) {
               !std::all_of(wires.begin(), wires.end(), [&](const io::Wire& w) { return target_set->runs_along(w.points); })) {
             if (was_routed || follows_sketch(net)) --routed;  // (a sketch net was counted above)
             shortest_of[i].reset();
-            route = io::Route{};
-            route.net = net.name;
-            route.status = "failed";
-            route.reason = off_set_reason(net, *target_set,
-                                          no_staircase ? std::optional(router::NetTightenOutcome::Status::NoStaircase) : std::nullopt);
-            print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0021", layout->file, net.line, 0,
-                                          "net \"" + net.name + "\" not routed: " + *route.reason}},
-                              args->load.quiet);
+            fail_off_set(net, route, no_staircase ? std::optional(router::NetTightenOutcome::Status::NoStaircase) : std::nullopt);
             continue;
           }
           std::vector<std::vector<geom::Point>> lines;
