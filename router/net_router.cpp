@@ -107,7 +107,8 @@ bool is_pad(const Polygon& p, bool shapes) {
   if (is_point_pin(p) || !pin_shape_supported(p)) return false;
   return shapes || is_rectilinear_shape(p);
 }
-// A pin's edges that are not vertical, each left to right (edges at 0, 45 or 135 degrees).
+// A pin's edges that are not vertical, each left to right (for pad_pieces, edges at 0, 45 or 135
+// degrees; for pad_staircase, at any angle).
 std::vector<std::pair<Point, Point>> sloped_edges(const Polygon& p) {
   std::vector<std::pair<Point, Point>> edges;
   for_each_pin_edge(p, [&](Point a, Point b) {
@@ -136,6 +137,36 @@ void column_edges(const std::vector<std::pair<Point, Point>>& edges, std::int64_
     }
   // edges do not cross inside the column: ordered by their sum of ends
   std::sort(ys.begin(), ys.end(), [](const auto& u, const auto& v) { return u.first + u.second < v.first + v.second; });
+}
+
+// pad_staircase's column [x0, x1] (no vertex strictly inside it) on the lattice of `step`: per
+// trapezoid of the pin over it (between two consecutive edges of `edges`, sloped_edges, that span
+// the column, from the bottom, even-odd: holes and notches stay out), the y's on the lattice that
+// it holds at both of the column's sides: [lo, hi] with lo the least multiple of step on or above
+// the lower edge at x0 and at x1, hi the greatest on or below the upper edge at both (edges at any
+// angle: their y there are fractions, rounded inwards exactly). The rectangle [x0, x1] x [lo, hi]
+// lies in the trapezoid (convex) when lo <= hi. `out` is cleared first.
+void column_lattice_ys(const std::vector<std::pair<Point, Point>>& edges, std::int64_t x0, std::int64_t x1,
+                       std::int64_t step, std::vector<std::pair<std::int64_t, std::int64_t>>& out) {
+  struct At {
+    i128 n0, n1, d;  // y at x0 = n0 / d, at x1 = n1 / d, d > 0
+  };
+  std::vector<At> at;
+  for (const auto& [a, b] : edges)
+    if (a.x <= x0 && x1 <= b.x) {
+      const i128 d = i128{b.x} - a.x, dy = i128{b.y} - a.y;
+      at.push_back({i128{a.y} * d + dy * (x0 - a.x), i128{a.y} * d + dy * (x1 - a.x), d});
+    }
+  // edges do not cross inside the column: ordered by their y at its middle, (n0 + n1) / 2d
+  std::sort(at.begin(), at.end(), [](const At& u, const At& v) { return (u.n0 + u.n1) * v.d < (v.n0 + v.n1) * u.d; });
+  out.clear();
+  const i128 k = step;
+  for (std::size_t i = 0; i + 1 < at.size(); i += 2) {
+    const At& lo = at[i];
+    const At& hi = at[i + 1];
+    out.emplace_back(static_cast<std::int64_t>(std::max(geom::ceil_div(lo.n0, lo.d * k), geom::ceil_div(lo.n1, lo.d * k)) * k),
+                     static_cast<std::int64_t>(std::min(geom::floor_div(hi.n0, hi.d * k), geom::floor_div(hi.n1, hi.d * k)) * k));
+  }
 }
 
 // A pad as convex pieces whose union is the pad, each a counter-clockwise octilinear_convex_ring
@@ -335,7 +366,11 @@ Lines trim_at_pads(const Lines& wires, std::span<const Ring> pads) {
 
 std::optional<Polygon> pad_staircase(const Polygon& pin, std::int64_t step, const std::function<bool(const Polygon&)>& clear) {
   if (step < 1) throw std::invalid_argument("pad_staircase: a step below 1");
-  if (is_point_pin(pin) || !pin_shape_supported(pin) || is_rectilinear_shape(pin)) return std::nullopt;
+  if (is_point_pin(pin) || is_rectilinear_shape(pin)) return std::nullopt;
+  bool ring_ok = pin.outer.size() >= 3;  // (rings of three vertices at least, no edge of length 0)
+  for (const Ring& h : pin.holes) ring_ok = ring_ok && h.size() >= 3;
+  for_each_pin_edge(pin, [&](Point a, Point b) { ring_ok = ring_ok && a != b; });
+  if (!ring_ok) return std::nullopt;
   // the vertices' x range (on the lattice, so no vertex lies strictly inside a column)
   std::int64_t x0 = std::numeric_limits<std::int64_t>::max(), x1 = std::numeric_limits<std::int64_t>::min();
   bool on_lattice = true;
@@ -347,7 +382,7 @@ std::optional<Polygon> pad_staircase(const Polygon& pin, std::int64_t step, cons
   if (!on_lattice) return std::nullopt;
   const std::vector<std::pair<Point, Point>> edges = sloped_edges(pin);
   // The staircase of columns `width` wide (a multiple of step): [x, x + width] from x0 to x1,
-  // each also split at the pin's vertices (column_edges needs none strictly inside a column), so
+  // each also split at the pin's vertices (column_lattice_ys needs none strictly inside a column), so
   // every bound is on the lattice. Per column, each trapezoid of the pin over it gives the
   // rectangle of the y's it holds at both sides; their union (exact: horizontal and vertical
   // edges only) must be one valid polygon: a part too thin for a column splits it, or joins it at
@@ -364,10 +399,9 @@ std::optional<Polygon> pad_staircase(const Polygon& pin, std::int64_t step, cons
     std::vector<std::pair<std::int64_t, std::int64_t>> ys;
     for (std::size_t k = 0; k + 1 < xs.size(); ++k) {
       const std::int64_t x = xs[k], cw = xs[k + 1] - x;
-      column_edges(edges, x, x + cw, ys);
+      column_lattice_ys(edges, x, x + cw, step, ys);
       parts.emplace_back();
-      for (std::size_t i = 0; i + 1 < ys.size(); i += 2) {
-        const std::int64_t lo = std::max(ys[i].first, ys[i].second), hi = std::min(ys[i + 1].first, ys[i + 1].second);
+      for (const auto& [lo, hi] : ys) {
         if (lo >= hi) continue;  // a peak's column, or a part one column thin
         const auto c = [](std::int64_t v) { return static_cast<geom::Coord>(v); };
         rects.push_back(Polygon{{{c(x), c(lo)}, {c(x + cw), c(lo)}, {c(x + cw), c(hi)}, {c(x), c(hi)}}, {}});
@@ -530,29 +564,34 @@ NetSpace::NetSpace(const geom::Box& domain, std::span<const geom::Polygon> obsta
   index_components(ix.grown);
   ix.plain.polys.assign(obstacles.begin(), obstacles.end());
   index_components(ix.plain);
-  // reach(): without the cut of pins with 45-degree edges, such a pin that meets the grown
-  // blockages is reached as its staircase
-  if (!cut_shapes_ && a_ > 0)
-    for (std::size_t n = 0; n < nets_.size(); ++n)
-      for (std::size_t k = 0; k < nets_[n].pins.size(); ++k) {
-        const Polygon& pin = nets_[n].pins[k];
-        if (is_point_pin(pin) || !pin_shape_supported(pin) || is_pad(pin, false)) continue;
-        std::vector<Index::Entry> found;
-        ix.grown.tree.query(bgi::intersects(box_of(pin.outer)), std::back_inserter(found));
-        if (std::none_of(found.begin(), found.end(),
-                         [&](const Index::Entry& e) { return shape_meets_obstacle(pin, ix.grown.polys[e.second]); }))
-          continue;
-        // (a part of a pin too thin for one staircase: one clear of the grown blockages, when one is)
-        std::optional<Polygon> st = pad_staircase(pin, rules.scale, [&](const Polygon& part) {
-          std::vector<Index::Entry> near;
-          ix.grown.tree.query(bgi::intersects(box_of(part.outer)), std::back_inserter(near));
-          return std::none_of(near.begin(), near.end(),
-                              [&](const Index::Entry& e) { return shape_meets_obstacle(part, ix.grown.polys[e.second]); });
-        });
-        if (!st) continue;
-        NetPins& reached = reach_.try_emplace(n, nets_[n]).first->second;
-        reached.pins[k] = std::move(*st);
-      }
+  // reach(): a shape pin with an edge at another angle than 0, 45 or 90 degrees (which no router
+  // takes) is reached as its staircase; so, without the cut of pins with 45-degree edges, is such
+  // a pin that meets the grown blockages
+  auto clear_of_grown = [&](const Polygon& part) {
+    std::vector<Index::Entry> near;
+    ix.grown.tree.query(bgi::intersects(box_of(part.outer)), std::back_inserter(near));
+    return std::none_of(near.begin(), near.end(),
+                        [&](const Index::Entry& e) { return shape_meets_obstacle(part, ix.grown.polys[e.second]); });
+  };
+  auto meets_plain = [&](const Polygon& pin) {
+    std::vector<Index::Entry> near;
+    ix.plain.tree.query(bgi::intersects(box_of(pin.outer)), std::back_inserter(near));
+    return std::any_of(near.begin(), near.end(),
+                       [&](const Index::Entry& e) { return shape_meets_obstacle(pin, ix.plain.polys[e.second]); });
+  };
+  for (std::size_t n = 0; n < nets_.size(); ++n)
+    for (std::size_t k = 0; k < nets_[n].pins.size(); ++k) {
+      const Polygon& pin = nets_[n].pins[k];
+      if (is_point_pin(pin)) continue;
+      if (pin_shape_supported(pin) ? cut_shapes_ || a_ == 0 || is_pad(pin, false) || clear_of_grown(pin)
+                                   : meets_plain(pin))  // (refused, as every shape partly under a blockage)
+        continue;
+      // (a part of a pin too thin for one staircase: one clear of the grown blockages, when one is)
+      std::optional<Polygon> st = pad_staircase(pin, rules.scale, clear_of_grown);
+      if (!st) continue;
+      NetPins& reached = reach_.try_emplace(n, nets_[n]).first->second;
+      reached.pins[k] = std::move(*st);
+    }
 }
 
 std::vector<Polygon> NetSpace::wire_union(const Lines& wires) const {

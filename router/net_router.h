@@ -301,10 +301,11 @@ struct WireOverlay {
   }
 };
 
-// The staircase NetSpace::reach takes for a shape pin with a 45-degree edge (holes and concave
-// pins too), on the lattice of `step` (the scale; see there): nullopt where reach keeps the pin
-// as it is (a point, a pin with no 45-degree edge or another slope, a vertex off the lattice,
-// no cell of the lattice in it). A pin more than NetSpace::kMaxStaircaseColumns steps wide takes
+// The staircase NetSpace::reach takes for a shape pin with a 45-degree edge, or (since
+// 2026-12-06) an edge at any other angle, holes and concave pins too, on the lattice of `step`
+// (the scale; see there): nullopt where reach keeps the pin as it is (a point, a pin whose edges
+// are all horizontal and vertical, a vertex off the lattice, no cell of the lattice in it). A
+// sloped edge's y at a column's side is a fraction, rounded inwards to the lattice exactly. A pin more than NetSpace::kMaxStaircaseColumns steps wide takes
 // columns of several steps (see NetSpace::reach). When the cells do not make one valid polygon,
 // the largest part that is (see NetSpace::reach), among the parts `clear` accepts when it accepts
 // any (NetSpace: those whose interior meets no grown blockage, so a wire reaches them from
@@ -333,7 +334,10 @@ class NetSpace {
   // rectilinear obstacles only; shape pins with horizontal and vertical edges only are cut either
   // way).
   bool cuts_shape_pads() const { return cut_shapes_; }
-  // Net i's pins as its own wires are routed to them: its pins, except that without the cut of
+  // Net i's pins as its own wires are routed to them: its pins, except that a shape pin with an
+  // edge at an angle other than 0, 45 or 90 degrees, which no router takes, is taken as its
+  // staircase (since 2026-12-06; not one that meets a blockage's interior, which stays as it is
+  // and is refused, ROUTE-0005, as every such shape is), and that without the cut of
   // shape pins with 45-degree edges (cuts_shape_pads() false) such a pin whose interior meets the
   // grown blockages is taken as its staircase: the union of the rectangles over each column
   // [x, x + K] between its leftmost and rightmost vertex (K the scale, 1 without one), one per

@@ -57,6 +57,9 @@ struct Target {
   std::optional<geom::Point> point;  // set for a point
   std::string label;                 // "--to 5,5" or "pin "pad" of net "clk" (demo.xml:29)"
   std::string name;                  // "5,5" or "pin "pad" of net "clk""
+  // what the routers reach: the pin, or for a shape with an edge at another angle than 0, 45 or
+  // 90 degrees its staircase (routable_pin); nullopt when it has none (shape_refusal says so)
+  std::optional<geom::Polygon> reach;
   std::vector<geom::Point> vertices() const {
     std::vector<geom::Point> v(pin.outer.begin(), pin.outer.end());
     for (const geom::Ring& h : pin.holes) v.insert(v.end(), h.begin(), h.end());
@@ -81,6 +84,7 @@ std::optional<Target> pin_target(const io::Layout& layout, const std::string& ne
       Target t;
       if (p.point) t.pin.outer = {*p.point}, t.point = *p.point;
       else t.pin = io::pin_polygon(p);  // (a vertex written twice in a row taken once)
+      t.reach = routable_pin(t.pin);
       t.name = "pin \"" + pin + "\" of net \"" + net + "\"";
       t.label = t.name + " (" + layout.file + ":" + std::to_string(p.line) + ")";
       return t;
@@ -97,10 +101,8 @@ std::optional<Target> pin_target(const io::Layout& layout, const std::string& ne
 std::string shape_refusal(const Target& t, const std::function<bool(const geom::Polygon&)>& meets,
                           const std::function<std::string()>& why_under) {
   if (t.point) return "";
-  if (!router::pin_shape_supported(t.pin))
-    return t.label + " has a shape edge that is not horizontal, vertical or at 45 degrees; such shape pins are not "
-                     "routed yet";
   if (meets(t.pin)) return t.label + " " + why_under();
+  if (!t.reach) return t.label + " " + kNoStaircase;
   return "";
 }
 
@@ -130,7 +132,7 @@ int bend_path(const io::Layout& layout, const RoutingOptions& routing, geom::Poi
     return kIncomplete;
   }
   const router::BendPath p = target.point ? router.path(from, *target.point, metric, c)
-                                          : router.path(geom::Polygon{{from}, {}}, target.pin, metric, c);
+                                          : router.path(geom::Polygon{{from}, {}}, *target.reach, metric, c);
 
   nlohmann::ordered_json j;
   j["metric"] = routing.metric;
@@ -204,7 +206,7 @@ int bend_paths_to(const io::Layout& layout, const RoutingOptions& routing, const
     if (json) std::cout << j.dump() << '\n';
     return kIncomplete;
   }
-  const router::BendTargetMap map(router, target.pin, metric, c);
+  const router::BendTargetMap map(router, *target.reach, metric, c);
   auto paths = nlohmann::ordered_json::array();
   int status = kOk;
   auto why = [&](geom::Point q) { return obs.why_not_free(layout, q); };
@@ -304,7 +306,7 @@ void add_path(CLI::App& app, int& status) {
     if (by_pin) {
       target = pin_target(*layout, args->to_pin[0], args->to_pin[1]);
     } else {
-      target = Target{geom::Polygon{{*to}, {}}, *to, "--to " + point_text(*to), point_text(*to)};
+      target = Target{geom::Polygon{{*to}, {}}, *to, "--to " + point_text(*to), point_text(*to), geom::Polygon{{*to}, {}}};
     }
     if (!target) {
       status = kInvalid;
@@ -343,13 +345,13 @@ void add_path(CLI::App& app, int& status) {
       const std::string refused = shape_refusal(
           *target, [&](const geom::Polygon& g) { return r.pin_meets_obstacle(g).has_value(); }, [&] { return under; });
       if (!refused.empty()) return refuse(refused);
-      w = target->point ? r.shortest(*from, *target->point) : r.shortest(from_pin, target->pin);
+      w = target->point ? r.shortest(*from, *target->point) : r.shortest(from_pin, *target->reach);
     } else {
       router::L1Router r(norm.domain, norm.obstacles);
       const std::string refused = shape_refusal(
           *target, [&](const geom::Polygon& g) { return r.pin_meets_obstacle(g).has_value(); }, [&] { return under; });
       if (!refused.empty()) return refuse(refused);
-      router::L1Wire l = target->point ? r.shortest(*from, *target->point) : r.shortest(from_pin, target->pin);
+      router::L1Wire l = target->point ? r.shortest(*from, *target->point) : r.shortest(from_pin, *target->reach);
       w = {l.status, std::nullopt, std::move(l.polygonal), std::move(l.points)};
       if (l.length) w.length = geom::Root2{*l.length, 0};
     }

@@ -110,15 +110,14 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router
   for (const io::Pin& pin : net.pins) geometry.push_back(io::pin_polygon(pin));
   for (std::size_t i = 0; i < net.pins.size(); ++i) {
     const io::Pin* pin = &net.pins[i];
-    const geom::Polygon* g = &geometry[i];
-    if (!router::pin_shape_supported(*g))
-      return fail("ROUTE-0005", "pin \"" + pin->name +
-                                    "\" has a shape edge that is not horizontal, vertical or at 45 "
-                                    "degrees; such shape pins are not routed yet");
+    geom::Polygon* g = &geometry[i];
     if (router.pin_meets_obstacle(*g))
       return fail("ROUTE-0005", "pin \"" + pin->name +
                                     "\" lies partly under a blockage; shape pins that overlap "
                                     "blockages are not routed yet (ones that touch them are)");
+    std::optional<geom::Polygon> reached = routable_pin(*g);  // (another slope: its staircase)
+    if (!reached) return fail("ROUTE-0005", "pin \"" + pin->name + "\" " + kNoStaircase);
+    *g = std::move(*reached);
   }
   const io::Pin& a = net.pins[0];
   const io::Pin& b = net.pins[1];
@@ -314,12 +313,11 @@ NetResult route_net_bends(const io::Layout& layout, const io::Net& net, const Be
   if (auto few = too_few_pins(net)) return *few;
   std::vector<geom::Polygon> geometry;
   for (const io::Pin& pin : net.pins) {
-    geom::Polygon g = io::pin_polygon(pin);
-    if (!router::pin_shape_supported(g))
-      return fail("ROUTE-0005", "pin \"" + pin.name + "\" has a shape edge that is not horizontal, vertical or at 45 "
-                                                   "degrees; such shape pins are not routed yet");
+    const geom::Polygon g = io::pin_polygon(pin);
     if (router.pin_meets_obstacle(g)) return fail("ROUTE-0005", "pin \"" + pin.name + "\" " + obs.why_under(layout, g));
-    geometry.push_back(std::move(g));
+    std::optional<geom::Polygon> reached = routable_pin(g);  // (another slope: its staircase)
+    if (!reached) return fail("ROUTE-0005", "pin \"" + pin.name + "\" " + kNoStaircase);
+    geometry.push_back(std::move(*reached));
   }
   const router::BendTree t =
       router.tree(geometry[0], std::span<const geom::Polygon>(geometry).subspan(1), metric, bend_cost);
@@ -807,7 +805,7 @@ void add_route(CLI::App& app, int& status) {
                 return a;
               }
             NetResult r;
-            const io::Net sn = selected_pins(scaled_net(net, pins.scale), pins);
+            const io::Net sn = with_pins(scaled_net(net, pins.scale), pins);  // (a sloped pin: its staircase)
             if (octilinear) {
               router::OctRouter rt(obs.domain, obs.obstacles);
               rt.set_lattice(pins.scale);  // no vertex half way between the plane's multiples

@@ -8,6 +8,7 @@
 #include "geom/predicates.h"
 #include "io/layout_geometry.h"
 #include "router/bend_router.h"
+#include "router/net_router.h"
 #include "router/pin_shapes.h"
 #include "tools/cli.h"
 
@@ -85,6 +86,15 @@ std::string BendObstacles::why_under(const io::Layout& layout, const geom::Polyg
 }
 
 std::string point_text(geom::Point p) { return std::to_string(p.x) + "," + std::to_string(p.y); }
+
+std::optional<geom::Polygon> routable_pin(const geom::Polygon& pin) {
+  if (router::pin_shape_supported(pin)) return pin;
+  return router::pad_staircase(pin, 1);
+}
+
+const char* const kNoStaircase =
+    "has an edge at an angle other than 0, 45 or 90 degrees, and no cell of the unit lattice lies inside it: wire "
+    "vertices are integers, and such a pin is reached as the union of those cells (a thinner pin is not routed yet)";
 
 std::string length_text(const geom::Root2& length) {
   if (length.b == 0) return std::to_string(length.a);

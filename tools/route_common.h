@@ -52,6 +52,16 @@ std::string why_not_free(const io::Layout& layout, geom::Point p);
 // "x,y" of a point.
 std::string point_text(geom::Point p);
 
+// A shape pin with an edge at an angle other than 0, 45 or 90 degrees, which no router takes, as
+// the routers reach it: its staircase, the union of the unit lattice's cells that lie in it
+// (router::pad_staircase: the largest part that is one polygon when the cells are not), so a
+// wire, whose vertices are integers, ends on a lattice point of the pin. nullopt when no cell
+// lies in it (then ROUTE-0005 with kNoStaircase). `pin` is returned as it is when the routers
+// take it.
+std::optional<geom::Polygon> routable_pin(const geom::Polygon& pin);
+// Why routable_pin() has none, after "pin "p" ".
+extern const char* const kNoStaircase;
+
 // A length a + b*sqrt2 for people: "23000" when b = 0, else "15.8994949366 (6+7*sqrt2)" (the
 // value to 12 significant digits, then the exact form).
 std::string length_text(const geom::Root2& length);

@@ -543,8 +543,10 @@ TEST(BendRoute, BendsDesignPicturesAndRoutes) {
   }
   EXPECT_NE(d.err.find("[ROUTE-0008] blockage \"tri\""), std::string::npos) << d.err;
   // shape pins these metrics refuse, named with the blockage (exit 1, the net written as failed):
-  // one under a blockage, one under the rectilinear cover of a sloped blockage, one with a
-  // sloped edge that is not at 45 degrees; a shape on a blockage's edge is routed
+  // one under a blockage, one under the rectilinear cover of a sloped blockage, one with an edge
+  // at another angle than 0, 45 or 90 degrees too thin for a cell of the lattice; a shape on a
+  // blockage's edge is routed, and so is a pin at such an angle that holds cells (its staircase,
+  // since 2026-12-06: before, ROUTE-0005)
   const std::string bad = dir + "/pins.xml";
   test::write_text(bad, R"(<layout name="pins">
   <boundary x0="0" y0="0" x1="100" y1="100"/>
@@ -553,6 +555,7 @@ TEST(BendRoute, BendsDesignPicturesAndRoutes) {
   <net name="under"><pin name="a" x="10" y="10"/><pin name="b"><rect x0="45" y0="58" x1="55" y1="62"/></pin></net>
   <net name="cover"><pin name="a" x="10" y="10"/><pin name="b"><rect x0="75" y0="81" x1="76" y1="82"/></pin></net>
   <net name="slope"><pin name="a" x="10" y="10"/><pin name="b"><polygon points="20,20 30,20 30,25"/></pin></net>
+  <net name="sliver"><pin name="a" x="10" y="10"/><pin name="b"><polygon points="20,40 30,40 30,41"/></pin></net>
   <net name="touch"><pin name="a" x="10" y="10"/><pin name="b"><rect x0="50" y0="20" x1="60" y1="30"/></pin></net>
 </layout>
 )");
@@ -564,13 +567,24 @@ TEST(BendRoute, BendsDesignPicturesAndRoutes) {
   EXPECT_NE(p.err.find("[ROUTE-0005] net \"cover\" not routed: pin \"b\" lies partly under the rectilinear cover of sloped "
                        "blockage \"ramp\" (" + bad + ":4)"),
             std::string::npos) << p.err;
-  EXPECT_NE(p.err.find("[ROUTE-0005] net \"slope\" not routed: pin \"b\" has a shape edge that is not horizontal"),
+  EXPECT_NE(p.err.find("[ROUTE-0005] net \"sliver\" not routed: pin \"b\" has an edge at an angle other than 0, 45 or 90 "
+                       "degrees, and no cell of the unit lattice lies inside it"),
             std::string::npos) << p.err;
+  EXPECT_EQ(p.err.find("net \"slope\" not routed"), std::string::npos) << p.err;
   EXPECT_EQ(p.err.find("net \"touch\" not routed"), std::string::npos) << p.err;
   const io::ReadResult rp = io::read_layout(dir + "/pins.routed.xml");
   ASSERT_TRUE(rp.layout && rp.layout->routes);
   for (const io::Route& route : rp.layout->routes->routes) {
-    EXPECT_EQ(route.status, route.net == "touch" ? "routed" : "failed") << route.net;
+    EXPECT_EQ(route.status, route.net == "touch" || route.net == "slope" ? "routed" : "failed") << route.net;
+    if (route.net == "slope") {
+      // one bend to the triangle's staircase, whose columns start at x = 22 (the top edge, y = 20 +
+      // (x - 20) / 2, reaches 21 at both sides of a column from there): the wire ends on it, in the pin
+      ASSERT_EQ(route.wires.size(), 1u);
+      EXPECT_EQ(route.bends.value_or(-1), 1);
+      const Point end = route.wires[0].points.back();
+      EXPECT_EQ(route.wires[0].points.front(), (Point{10, 10}));
+      EXPECT_TRUE(end.x >= 22 && end.x <= 30 && end.y >= 20 && 2 * (end.y - 20) <= end.x - 20) << pt(end);
+    }
     if (route.net == "touch") {
       // from (10, 10) over the wall (top at y = 60) and down the wall's right side to the
       // rectangle's corner (50, 30): two bends, then the shortest such wire (length 120)

@@ -751,8 +751,10 @@ TEST(Route, GeneratedLayoutsMatchTheReference) {
   EXPECT_GT(routed, sanitized_share(80, 4));
 }
 
-// Shape pins: routed from anywhere on the shape (here a projection, not a vertex), and the two
-// kinds this version refuses, each named with its reason (ROUTE-0005).
+// Shape pins: routed from anywhere on the shape (here a projection, not a vertex); a pin with an
+// edge at another angle than 0, 45 or 90 degrees from its staircase (since 2026-12-06; before,
+// ROUTE-0005), and the two kinds this version refuses, each named with its reason (ROUTE-0005):
+// a pin partly under a blockage, and one at another angle too thin to hold a cell of the lattice.
 TEST(Route, ShapePins) {
   const std::string file = layout_file("route_shapes", R"(  <boundary x0="0" y0="0" x1="100" y1="60"/>
   <blockage id="wall"><rect x0="40" y0="0" x1="44" y1="40"/></blockage>
@@ -772,6 +774,10 @@ TEST(Route, ShapePins) {
     <pin name="a"><polygon points="10,30 15,25 20,30 15,35"/></pin>
     <pin name="b"><polygon points="70,30 75,25 80,30 75,35"/></pin>
   </net>
+  <net name="sliver">
+    <pin name="thin"><polygon points="60,20 70,20 70,21"/></pin>
+    <pin name="p" x="90" y="10"/>
+  </net>
 )");
   const std::string out = temp_dir("route_shapes_out") + "/r.xml";
   const auto r = run_taut({"route", file, "--independent", "-o", out});
@@ -779,16 +785,28 @@ TEST(Route, ShapePins) {
   EXPECT_NE(r.err.find("[ROUTE-0005] net \"over\" not routed: pin \"pad\" lies partly under a blockage"),
             std::string::npos)
       << r.err;
-  EXPECT_NE(r.err.find("[ROUTE-0005] net \"sloped\" not routed: pin \"tri\" has a shape edge"), std::string::npos)
+  EXPECT_NE(r.err.find("[ROUTE-0005] net \"sliver\" not routed: pin \"thin\" has an edge at an angle other than 0, 45 "
+                       "or 90 degrees, and no cell of the unit lattice lies inside it"),
+            std::string::npos)
       << r.err;
+  EXPECT_EQ(r.err.find("net \"sloped\" not routed"), std::string::npos) << r.err;
   io::ReadResult rr = io::read_layout(out);
   ASSERT_TRUE(rr.layout && rr.layout->routes);
   std::map<std::string, std::vector<Point>> wires;
   for (const io::Route& route : rr.layout->routes->routes)
     if (route.status == "routed") wires[route.net] = route.wires.at(0).points;
-  ASSERT_EQ(wires.size(), 2u);
+  ASSERT_EQ(wires.size(), 3u);
   // Straight down from the pad's bottom edge: (20, 50) -> (20, 10), 40.
   EXPECT_EQ(wires["pad_to_point"], (std::vector<Point>{{20, 50}, {20, 10}}));
+  // The triangle's staircase: the columns [x, x + 1] whose top edge (y = 55 - (x - 60) / 2) stays at
+  // or above 51 at both sides, so x + 1 <= 68; its nearest point to (80, 10) is (68, 50): 12 + 40.
+  // (The pin's vertex (70, 50), a peak, would give 50: the price of ending on lattice cells.)
+  const Reference sref = reference_for(file);
+  const auto& sw = wires["sloped"];
+  ASSERT_GE(sw.size(), 2u);
+  EXPECT_EQ(expect_wire(*sref.ref, sw, sw.front(), sw.back()), 52);
+  EXPECT_EQ(sw.front(), (Point{68, 50}));
+  EXPECT_EQ(sw.back(), (Point{80, 10}));
   // Diamond to diamond over the wall (top at y = 40): from s in a to t in b the length is
   // (t.x - s.x) + (40 - s.y) + (40 - t.y) = (t.x - t.y) - (s.x + s.y) + 80, where s.x + s.y is
   // at most 50 (a's upper-right edge) and t.x - t.y at least 40 (b's upper-left edge): 70.
@@ -1402,13 +1420,15 @@ TEST(Route, PadChainsAndOverlapsKeepTheClearance) {
   }
 }
 
-// A pin the routers cannot take (an edge at 30 degrees: ROUTE-0005) that meets another pin of its
-// net: since 2026-12-06 the net is routed between one pin of each group that meets (the other
-// pin and the pin apart), and the sloped pin joins by its own metal; the check passes. Without
-// the pin it meets, the net is still ROUTE-0005.
+// A pin the routers cannot take (an edge at another angle than 0, 45 or 90 degrees, too thin for a
+// cell of the lattice: ROUTE-0005) that meets another pin of its net: since 2026-12-06 the net is
+// routed between one pin of each group that meets (the other pin and the pin apart), and the
+// sloped pin joins by its own metal; the check passes. Without the pin it meets, the net is still
+// ROUTE-0005. (Until a pin at such an angle was reached as its staircase, the thicker 0,0 30,0
+// 30,17 served here.)
 TEST(Route, APinTheRoutersCannotTakeJoinsThroughAPinItMeets) {
   const std::string dir = temp_dir("route_group_sloped");
-  const std::string sloped = "    <pin name=\"a\"><polygon points=\"0,0 30,0 30,17\"/></pin>\n";
+  const std::string sloped = "    <pin name=\"a\"><polygon points=\"0,0 30,0 30,1\"/></pin>\n";
   const std::string far = "    <pin name=\"c\" x=\"100\" y=\"50\"/>\n";
   write_text(dir + "/met.xml", "<layout version=\"1\">\n  <net name=\"n\">\n" + sloped +
                                    "    <pin name=\"b\"><rect x0=\"30\" y0=\"0\" x1=\"40\" y1=\"10\"/></pin>\n" + far +

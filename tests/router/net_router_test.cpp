@@ -26,6 +26,7 @@
 #include "router/net_router.h"
 #include "router/oct_router.h"
 #include "support/net_layouts.h"
+#include "support/pin_cells.h"
 #include "support/wavefront_hand.h"
 #include "support/random_shapes.h"
 #include "support/run.h"
@@ -887,50 +888,11 @@ TEST(NetRouter, PadStaircasesAreTheCellsInThePin) {
       EXPECT_FALSE(st.has_value()) << at << ": a rectilinear pin needs no staircase";
       continue;
     }
-    // the cells expected: all of them when their union is one valid polygon; else (a part too
-    // thin for a cell: a diagonal bar, a neck) the largest part joined along cell edges whose
-    // union is (ties: the part with the lowest (x, y) cell), found here by a flood fill
     std::set<std::pair<int, int>> all;
     for (int x = x0; x < x1; ++x)
       for (int y = y0; y < y1; ++y)
         if (cell_in(pin, twice_pin, x, y)) all.insert({x, y});
-    auto union_of = [&](const std::set<std::pair<int, int>>& cs) {
-      const auto c = [&](int v) { return static_cast<geom::Coord>(v * step); };
-      std::vector<Polygon> ps;
-      for (const auto& [x, y] : cs) ps.push_back(Polygon{{{c(x), c(y)}, {c(x + 1), c(y)}, {c(x + 1), c(y + 1)}, {c(x), c(y + 1)}}, {}});
-      const geom::NormalizedObstacles u = geom::normalize_obstacles(ps, std::nullopt);
-      return u.obstacles.size() == 1 && geom::validate_polygon(u.obstacles[0]).empty();
-    };
-    std::set<std::pair<int, int>> expect;
-    const bool whole = !all.empty() && union_of(all);
-    if (whole) {
-      expect = all;
-    } else {
-      std::vector<std::set<std::pair<int, int>>> comps;
-      std::set<std::pair<int, int>> seen;
-      for (const auto& c0 : all) {
-        if (seen.count(c0)) continue;
-        std::set<std::pair<int, int>> comp;
-        std::vector<std::pair<int, int>> todo{c0};
-        seen.insert(c0);
-        while (!todo.empty()) {
-          const auto [x, y] = todo.back();
-          todo.pop_back();
-          comp.insert({x, y});
-          for (const auto& nb : {std::pair{x + 1, y}, std::pair{x - 1, y}, std::pair{x, y + 1}, std::pair{x, y - 1}})
-            if (all.count(nb) && !seen.count(nb)) seen.insert(nb), todo.push_back(nb);
-        }
-        comps.push_back(std::move(comp));
-      }
-      std::stable_sort(comps.begin(), comps.end(), [](const auto& a, const auto& b) {
-        return a.size() != b.size() ? a.size() > b.size() : *a.begin() < *b.begin();
-      });
-      for (const auto& comp : comps)
-        if (union_of(comp)) {
-          expect = comp;
-          break;
-        }
-    }
+    const auto [expect, whole] = expected_staircase_cells(all, step);
     if (expect.empty()) {  // no cell of the lattice in the pin: no staircase
       EXPECT_FALSE(st.has_value()) << at;
       ++refused;
@@ -1000,6 +962,76 @@ TEST(NetRouter, PadStaircasesAreTheCellsInThePin) {
   EXPECT_GT(notches, 0);
   EXPECT_GT(holes, 0);
   EXPECT_GT(parts, 0);
+}
+
+// router::pad_staircase on pins with edges at any angle (since 2026-12-06: route, path and the
+// net router reach such a pin as its staircase; before, ROUTE-0005 refused it), against brute
+// force on random pins with integer vertices: triangles, rotated rectangles and star-shaped
+// polygons in a 14 x 14 box, some with a triangular hole, on the integer lattice and on the
+// lattice of 8. The brute force: a cell lies in the pin when no pin edge meets the open cell
+// (separating axes: the cell's two axes and the edge's normal, exact) and its centre lies in the
+// pin; the corners alone do not tell (a sliver of outside between two edges of a slope can cross
+// a cell whose four corners are in the pin). The staircase is the union of those cells, or the
+// largest part that is one valid polygon (expected_staircase_cells), with horizontal and vertical
+// edges and vertices in the pin.
+TEST(NetRouter, StaircasesOfPinsAtAnyAngleAreTheCellsInThePin) {
+  std::mt19937 rng(7211);
+  int made = 0, none = 0, parts = 0, holes = 0, slivers = 0, tried = 0;
+  const int want = sanitized_share(3000, 5);
+  for (int n = 0; tried < want; ++n) {
+    const std::int64_t step = n % 3 == 2 ? 8 : 1;
+    Polygon pin = random_sloped_pin(rng, 5);
+    auto scale = [&](geom::Ring& rg) {
+      for (Point& p : rg) p = {static_cast<geom::Coord>(p.x * step), static_cast<geom::Coord>(p.y * step)};
+    };
+    scale(pin.outer);
+    for (geom::Ring& h : pin.holes) scale(h);
+    ++tried;
+    holes += !pin.holes.empty();
+    const std::string at = "case " + std::to_string(n);
+    auto at_lattice = [&](int x, int y) { return Point{static_cast<geom::Coord>(x * step), static_cast<geom::Coord>(y * step)}; };
+    const Polygon twice_pin = doubled(pin);
+    const std::set<Cell> all = cells_in_pin(pin, step, -1, -1, 16, 16);
+    for (int x = -1; x <= 15; ++x)
+      for (int y = -1; y <= 15; ++y) {
+        bool corners = true;
+        for (const Point c : {at_lattice(x, y), at_lattice(x + 1, y), at_lattice(x, y + 1), at_lattice(x + 1, y + 1)})
+          corners = corners && router::in_pin(c, pin);
+        if (all.count({x, y})) {
+          EXPECT_TRUE(corners) << at;
+        }
+        // (cells whose corners and centre are in the pin while a sliver of outside crosses them)
+        const Point centre{static_cast<geom::Coord>((2 * x + 1) * step), static_cast<geom::Coord>((2 * y + 1) * step)};
+        slivers += corners && router::in_pin(centre, twice_pin) && !all.count({x, y});
+      }
+    const auto [expect, whole] = expected_staircase_cells(all, step);
+    const std::optional<Polygon> st = router::pad_staircase(pin, step);
+    if (expect.empty()) {
+      EXPECT_FALSE(st.has_value()) << at << ": " << all.size() << " cells";
+      ++none;
+      continue;
+    }
+    ASSERT_TRUE(st.has_value()) << at << ": " << all.size() << " cells in the pin " << [&] {
+      std::string t;
+      router::for_each_pin_edge(pin, [&](Point a, Point) { t += std::to_string(a.x) + "," + std::to_string(a.y) + " "; });
+      return t;
+    }();
+    ++made;
+    parts += !whole;
+    ASSERT_TRUE(geom::validate_polygon(*st).empty()) << at;
+    router::for_each_pin_edge(*st, [&](Point a, Point b) {
+      EXPECT_TRUE(a.x == b.x || a.y == b.y) << at;
+      EXPECT_TRUE(router::in_pin(a, pin)) << at;
+    });
+    ASSERT_EQ(cells_in_pin(*st, step, -1, -1, 16, 16), expect) << at;
+  }
+  std::printf("%d pins at other angles: %d staircases (%d the largest part), %d without a cell; %d with a hole; %d cells "
+              "whose corners and centre lie in a pin but a sliver of outside crosses\n",
+              tried, made, parts, none, holes, slivers);
+  EXPECT_GT(made, want / 2);
+  EXPECT_GT(none, 0);
+  EXPECT_GT(parts, 0);
+  EXPECT_GT(holes, 0);
 }
 
 // Pins more than NetSpace::kMaxStaircaseColumns (256) steps wide (refused over 4,096 until
