@@ -146,8 +146,11 @@ void column_edges(const std::vector<std::pair<Point, Point>>& edges, std::int64_
 // the lower edge at x0 and at x1, hi the greatest on or below the upper edge at both (edges at any
 // angle: their y there are fractions, rounded inwards exactly). The rectangle [x0, x1] x [lo, hi]
 // lies in the trapezoid (convex) when lo <= hi. `out` is cleared first.
+// With `outward`, the other way: [lo, hi] with lo the greatest multiple on or below the lower edge
+// at both sides and hi the least on or above the upper edge at both (a blockage's extent over
+// the column: every cell outside it meets none of the trapezoid's interior).
 void column_lattice_ys(const std::vector<std::pair<Point, Point>>& edges, std::int64_t x0, std::int64_t x1,
-                       std::int64_t step, std::vector<std::pair<std::int64_t, std::int64_t>>& out) {
+                       std::int64_t step, std::vector<std::pair<std::int64_t, std::int64_t>>& out, bool outward = false) {
   struct At {
     i128 n0, n1, d;  // y at x0 = n0 / d, at x1 = n1 / d, d > 0
   };
@@ -164,6 +167,11 @@ void column_lattice_ys(const std::vector<std::pair<Point, Point>>& edges, std::i
   for (std::size_t i = 0; i + 1 < at.size(); i += 2) {
     const At& lo = at[i];
     const At& hi = at[i + 1];
+    if (outward) {
+      out.emplace_back(static_cast<std::int64_t>(std::min(geom::floor_div(lo.n0, lo.d * k), geom::floor_div(lo.n1, lo.d * k)) * k),
+                       static_cast<std::int64_t>(std::max(geom::ceil_div(hi.n0, hi.d * k), geom::ceil_div(hi.n1, hi.d * k)) * k));
+      continue;
+    }
     out.emplace_back(static_cast<std::int64_t>(std::max(geom::ceil_div(lo.n0, lo.d * k), geom::ceil_div(lo.n1, lo.d * k)) * k),
                      static_cast<std::int64_t>(std::min(geom::floor_div(hi.n0, hi.d * k), geom::floor_div(hi.n1, hi.d * k)) * k));
   }
@@ -364,9 +372,10 @@ Lines trim_at_pads(const Lines& wires, std::span<const Ring> pads) {
 
 }  // namespace
 
-std::optional<Polygon> pad_staircase(const Polygon& pin, std::int64_t step, const std::function<bool(const Polygon&)>& clear) {
+std::optional<Polygon> pad_staircase(const Polygon& pin, std::int64_t step, const std::function<bool(const Polygon&)>& clear,
+                                     std::span<const Polygon> cuts) {
   if (step < 1) throw std::invalid_argument("pad_staircase: a step below 1");
-  if (is_point_pin(pin) || is_rectilinear_shape(pin)) return std::nullopt;
+  if (is_point_pin(pin) || (is_rectilinear_shape(pin) && cuts.empty())) return std::nullopt;
   bool ring_ok = pin.outer.size() >= 3;  // (rings of three vertices at least, no edge of length 0)
   for (const Ring& h : pin.holes) ring_ok = ring_ok && h.size() >= 3;
   for_each_pin_edge(pin, [&](Point a, Point b) { ring_ok = ring_ok && a != b; });
@@ -379,6 +388,17 @@ std::optional<Polygon> pad_staircase(const Polygon& pin, std::int64_t step, cons
     x0 = std::min<std::int64_t>(x0, a.x);
     x1 = std::max<std::int64_t>(x1, a.x);
   });
+  // the cuts' vertices in the pin's x range too (then none lies strictly inside a column either)
+  std::vector<std::int64_t> cut_xs;
+  std::vector<std::vector<std::pair<Point, Point>>> cut_edges;
+  for (const Polygon& c : cuts) {
+    for_each_pin_edge(c, [&](Point a, Point) {
+      if (a.x <= x0 || a.x >= x1) return;
+      on_lattice = on_lattice && a.x % step == 0;
+      cut_xs.push_back(a.x);
+    });
+    cut_edges.push_back(sloped_edges(c));
+  }
   if (!on_lattice) return std::nullopt;
   const std::vector<std::pair<Point, Point>> edges = sloped_edges(pin);
   // The staircase of columns `width` wide (a multiple of step): [x, x + width] from x0 to x1,
@@ -394,18 +414,37 @@ std::optional<Polygon> pad_staircase(const Polygon& pin, std::int64_t step, cons
     std::vector<std::int64_t> xs;
     for (std::int64_t x = x0; x < x1; x += width) xs.push_back(x);
     xs.push_back(x1);
-    if (width > step) add_vertex_xs(pin, xs);
+    if (width > step) {
+      add_vertex_xs(pin, xs);
+      xs.insert(xs.end(), cut_xs.begin(), cut_xs.end());
+      std::sort(xs.begin(), xs.end());
+      xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+    }
     std::vector<Polygon> rects;
-    std::vector<std::pair<std::int64_t, std::int64_t>> ys;
+    std::vector<std::pair<std::int64_t, std::int64_t>> ys, blocked, more;
     for (std::size_t k = 0; k + 1 < xs.size(); ++k) {
       const std::int64_t x = xs[k], cw = xs[k + 1] - x;
       column_lattice_ys(edges, x, x + cw, step, ys);
+      blocked.clear();  // the cuts' extents over the column, sorted
+      for (const auto& ce : cut_edges) {
+        column_lattice_ys(ce, x, x + cw, step, more, true);
+        blocked.insert(blocked.end(), more.begin(), more.end());
+      }
+      std::sort(blocked.begin(), blocked.end());
       parts.emplace_back();
-      for (const auto& [lo, hi] : ys) {
-        if (lo >= hi) continue;  // a peak's column, or a part one column thin
-        const auto c = [](std::int64_t v) { return static_cast<geom::Coord>(v); };
+      const auto c = [](std::int64_t v) { return static_cast<geom::Coord>(v); };
+      auto emit = [&](std::int64_t lo, std::int64_t hi) {
+        if (lo >= hi) return;  // a peak's column, or a part one column thin
         rects.push_back(Polygon{{{c(x), c(lo)}, {c(x + cw), c(lo)}, {c(x + cw), c(hi)}, {c(x), c(hi)}}, {}});
         parts.back().push_back(rects.back());
+      };
+      for (auto [lo, hi] : ys) {  // the pin's interval less the cuts' (in order from the bottom)
+        for (const auto& [blo, bhi] : blocked) {
+          if (bhi <= lo || blo >= hi) continue;
+          emit(lo, blo);
+          lo = std::max(lo, bhi);
+        }
+        emit(lo, hi);
       }
     }
     if (rects.empty()) return std::nullopt;
@@ -564,30 +603,33 @@ NetSpace::NetSpace(const geom::Box& domain, std::span<const geom::Polygon> obsta
   index_components(ix.grown);
   ix.plain.polys.assign(obstacles.begin(), obstacles.end());
   index_components(ix.plain);
-  // reach(): a shape pin with an edge at another angle than 0, 45 or 90 degrees (which no router
-  // takes) is reached as its staircase; so, without the cut of pins with 45-degree edges, is such
-  // a pin that meets the grown blockages
+  // reach(): a shape pin partly under a blockage is reached as the staircase of its part outside
+  // the blockages, and one with an edge at another angle than 0, 45 or 90 degrees (which no router
+  // takes) as its staircase; so, without the cut of pins with 45-degree edges, is such a pin that
+  // meets the grown blockages
   auto clear_of_grown = [&](const Polygon& part) {
     std::vector<Index::Entry> near;
     ix.grown.tree.query(bgi::intersects(box_of(part.outer)), std::back_inserter(near));
     return std::none_of(near.begin(), near.end(),
                         [&](const Index::Entry& e) { return shape_meets_obstacle(part, ix.grown.polys[e.second]); });
   };
-  auto meets_plain = [&](const Polygon& pin) {
+  auto blockages_under = [&](const Polygon& pin) {
     std::vector<Index::Entry> near;
     ix.plain.tree.query(bgi::intersects(box_of(pin.outer)), std::back_inserter(near));
-    return std::any_of(near.begin(), near.end(),
-                       [&](const Index::Entry& e) { return shape_meets_obstacle(pin, ix.plain.polys[e.second]); });
+    std::vector<Polygon> out;
+    for (const Index::Entry& e : near)
+      if (shape_meets_obstacle(pin, ix.plain.polys[e.second])) out.push_back(ix.plain.polys[e.second]);
+    return out;
   };
   for (std::size_t n = 0; n < nets_.size(); ++n)
     for (std::size_t k = 0; k < nets_[n].pins.size(); ++k) {
       const Polygon& pin = nets_[n].pins[k];
       if (is_point_pin(pin)) continue;
-      if (pin_shape_supported(pin) ? cut_shapes_ || a_ == 0 || is_pad(pin, false) || clear_of_grown(pin)
-                                   : meets_plain(pin))  // (refused, as every shape partly under a blockage)
+      const std::vector<Polygon> under = blockages_under(pin);
+      if (under.empty() && pin_shape_supported(pin) && (cut_shapes_ || a_ == 0 || is_pad(pin, false) || clear_of_grown(pin)))
         continue;
       // (a part of a pin too thin for one staircase: one clear of the grown blockages, when one is)
-      std::optional<Polygon> st = pad_staircase(pin, rules.scale, clear_of_grown);
+      std::optional<Polygon> st = pad_staircase(pin, rules.scale, clear_of_grown, under);
       if (!st) continue;
       NetPins& reached = reach_.try_emplace(n, nets_[n]).first->second;
       reached.pins[k] = std::move(*st);

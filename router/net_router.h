@@ -310,8 +310,14 @@ struct WireOverlay {
 // the largest part that is (see NetSpace::reach), among the parts `clear` accepts when it accepts
 // any (NetSpace: those whose interior meets no grown blockage, so a wire reaches them from
 // outside the clearance; the part touching the blockage may lie wholly inside it).
+// `cuts` (since 2026-12-06): obstacles whose interiors meet the pin's (a pad partly under a
+// blockage); the staircase then holds the cells that meet none of their interiors either (their
+// extent over a column rounded outwards to the lattice), so the part of the pin outside them,
+// exactly when everything is rectilinear; their vertices must be on the lattice too (else
+// nullopt), and a rectilinear pin gets a staircase only with cuts.
 std::optional<geom::Polygon> pad_staircase(const geom::Polygon& pin, std::int64_t step,
-                                           const std::function<bool(const geom::Polygon&)>& clear = {});
+                                           const std::function<bool(const geom::Polygon&)>& clear = {},
+                                           std::span<const geom::Polygon> cuts = {});
 
 class NetSpace {
  public:
@@ -334,10 +340,12 @@ class NetSpace {
   // rectilinear obstacles only; shape pins with horizontal and vertical edges only are cut either
   // way).
   bool cuts_shape_pads() const { return cut_shapes_; }
-  // Net i's pins as its own wires are routed to them: its pins, except that a shape pin with an
-  // edge at an angle other than 0, 45 or 90 degrees, which no router takes, is taken as its
-  // staircase (since 2026-12-06; not one that meets a blockage's interior, which stays as it is
-  // and is refused, ROUTE-0005, as every such shape is), and that without the cut of
+  // Net i's pins as its own wires are routed to them: its pins, except that (since 2026-12-06) a
+  // shape pin partly under a blockage is taken as the staircase of its part outside the
+  // blockages (pad_staircase with the blockages it meets as cuts: that part exactly when all are
+  // rectilinear), and one with an edge at an angle other than 0, 45 or 90 degrees, which no
+  // router takes, as its staircase (either stays as it is, and is refused, ROUTE-0005, when no
+  // cell is left), and that without the cut of
   // shape pins with 45-degree edges (cuts_shape_pads() false) such a pin whose interior meets the
   // grown blockages is taken as its staircase: the union of the rectangles over each column
   // [x, x + K] between its leftmost and rightmost vertex (K the scale, 1 without one), one per

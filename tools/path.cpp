@@ -57,8 +57,9 @@ struct Target {
   std::optional<geom::Point> point;  // set for a point
   std::string label;                 // "--to 5,5" or "pin "pad" of net "clk" (demo.xml:29)"
   std::string name;                  // "5,5" or "pin "pad" of net "clk""
-  // what the routers reach: the pin, or for a shape with an edge at another angle than 0, 45 or
-  // 90 degrees its staircase (routable_pin); nullopt when it has none (shape_refusal says so)
+  // what the routers reach (set by shape_refusal for a shape): the pin, or routable_pin's
+  // staircase (of its part outside the blockages it lies partly under, or of a shape with an edge
+  // at another angle than 0, 45 or 90 degrees); nullopt when it has none
   std::optional<geom::Polygon> reach;
   std::vector<geom::Point> vertices() const {
     std::vector<geom::Point> v(pin.outer.begin(), pin.outer.end());
@@ -84,7 +85,6 @@ std::optional<Target> pin_target(const io::Layout& layout, const std::string& ne
       Target t;
       if (p.point) t.pin.outer = {*p.point}, t.point = *p.point;
       else t.pin = io::pin_polygon(p);  // (a vertex written twice in a row taken once)
-      t.reach = routable_pin(t.pin);
       t.name = "pin \"" + pin + "\" of net \"" + net + "\"";
       t.label = t.name + " (" + layout.file + ":" + std::to_string(p.line) + ")";
       return t;
@@ -97,17 +97,22 @@ std::optional<Target> pin_target(const io::Layout& layout, const std::string& ne
   return std::nullopt;
 }
 
-// A shape the routers do not take as a target: ROUTE-0005 with the reason, else "".
-std::string shape_refusal(const Target& t, const std::function<bool(const geom::Polygon&)>& meets,
-                          const std::function<std::string()>& why_under) {
-  if (t.point) return "";
-  if (meets(t.pin)) return t.label + " " + why_under();
-  if (!t.reach) return t.label + " " + kNoStaircase;
-  return "";
+// Sets what the routers reach of a shape target among `obstacles` (routable_pin: the part
+// outside the obstacles it lies partly under, or the staircase of one at another angle), or says
+// why nothing (ROUTE-0005 with the reason), else "".
+std::string shape_refusal(Target& t, std::span<const geom::Polygon> obstacles, const std::function<std::string()>& why_under) {
+  if (t.point) {
+    t.reach = t.pin;
+    return "";
+  }
+  const std::vector<geom::Polygon> under = obstacles_under(t.pin, obstacles);
+  t.reach = routable_pin(t.pin, under);
+  if (t.reach) return "";
+  return t.label + " " + (under.empty() ? std::string(kNoStaircase) : why_under());
 }
 
 // --metric combined / link: BendRouter among the rectilinear cover of the blockages.
-int bend_path(const io::Layout& layout, const RoutingOptions& routing, geom::Point from, const Target& target,
+int bend_path(const io::Layout& layout, const RoutingOptions& routing, geom::Point from, Target target,
               bool json, bool quiet) {
   const bool link = routing.metric == "link";
   const std::int64_t c = link ? 0 : routing_bend_cost(routing, layout);
@@ -117,9 +122,7 @@ int bend_path(const io::Layout& layout, const RoutingOptions& routing, geom::Poi
   const geom::NormalizedObstacles& norm = obs.norm;
   const router::BendRouter router(norm.domain, norm.obstacles);
   const router::BendMetric metric = link ? router::BendMetric::Link : router::BendMetric::Combined;
-  const std::string refused = shape_refusal(
-      target, [&](const geom::Polygon& g) { return router.pin_meets_obstacle(g).has_value(); },
-      [&] { return obs.why_under(layout, target.pin); });
+  const std::string refused = shape_refusal(target, obs.norm.obstacles, [&] { return obs.why_under(layout, target.pin); });
   if (!refused.empty()) {
     print_usage_error("ROUTE-0005", refused);
     if (json) {
@@ -175,7 +178,7 @@ int bend_path(const io::Layout& layout, const RoutingOptions& routing, geom::Poi
 // --from-file with --metric combined / link: one line (or one JSON record) per source point,
 // in the file's order; a source not free or walled in gets its reason, and the exit status 1.
 int bend_paths_to(const io::Layout& layout, const RoutingOptions& routing, const std::vector<geom::Point>& from,
-                  const Target& target, const std::vector<std::string>& to_pin, bool json, bool quiet) {
+                  Target target, const std::vector<std::string>& to_pin, bool json, bool quiet) {
   const bool link = routing.metric == "link";
   const std::int64_t c = link ? 0 : routing_bend_cost(routing, layout);
   std::vector<geom::Point> ends = from;
@@ -189,9 +192,7 @@ int bend_paths_to(const io::Layout& layout, const RoutingOptions& routing, const
   if (!link) j["bend_cost"] = c;
   if (to_pin.empty()) j["to"] = {target.point->x, target.point->y};
   else j["to_pin"] = {{"net", to_pin[0]}, {"pin", to_pin[1]}};
-  const std::string refused = shape_refusal(
-      target, [&](const geom::Polygon& g) { return router.pin_meets_obstacle(g).has_value(); },
-      [&] { return obs.why_under(layout, target.pin); });
+  const std::string refused = shape_refusal(target, obs.norm.obstacles, [&] { return obs.why_under(layout, target.pin); });
   if (!refused.empty()) {  // no structure: every record says why
     print_usage_error("ROUTE-0005", refused);
     auto paths = nlohmann::ordered_json::array();
@@ -338,18 +339,15 @@ void add_path(CLI::App& app, int& status) {
       }
       status = kIncomplete;
     };
-    const std::string under = "lies partly under a blockage; shape pins that overlap blockages are not routed yet (ones "
-                              "that touch them are)";
+    const std::string under = std::string("lies partly under a blockage") + kNothingOutside;
     if (oct) {
       router::OctRouter r(norm.domain, norm.obstacles);
-      const std::string refused = shape_refusal(
-          *target, [&](const geom::Polygon& g) { return r.pin_meets_obstacle(g).has_value(); }, [&] { return under; });
+      const std::string refused = shape_refusal(*target, norm.obstacles, [&] { return under; });
       if (!refused.empty()) return refuse(refused);
       w = target->point ? r.shortest(*from, *target->point) : r.shortest(from_pin, *target->reach);
     } else {
       router::L1Router r(norm.domain, norm.obstacles);
-      const std::string refused = shape_refusal(
-          *target, [&](const geom::Polygon& g) { return r.pin_meets_obstacle(g).has_value(); }, [&] { return under; });
+      const std::string refused = shape_refusal(*target, norm.obstacles, [&] { return under; });
       if (!refused.empty()) return refuse(refused);
       router::L1Wire l = target->point ? r.shortest(*from, *target->point) : r.shortest(from_pin, *target->reach);
       w = {l.status, std::nullopt, std::move(l.polygonal), std::move(l.points)};

@@ -100,7 +100,9 @@ void warn_no_steiner_tree(const io::Layout& layout, const io::Net& net, const st
 // a Steiner tree; otherwise a net of three or more pins gets the shortest-path tree from its
 // first pin.
 template <class Router>
-NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router, bool steiner) {
+// `obstacles`: the router's (a shape pin partly under them is reached as its part outside them).
+NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router, bool steiner,
+                    std::span<const geom::Polygon> obstacles) {
   constexpr bool oct = Router::kOctilinear;
   NetResult r;
   r.route.net = net.name;
@@ -108,15 +110,18 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router
   if (auto few = too_few_pins(net)) return *few;
   std::vector<geom::Polygon> geometry;
   for (const io::Pin& pin : net.pins) geometry.push_back(io::pin_polygon(pin));
+  // a pin cut by the obstacles (in the net router's windows, by other nets' grown wires and pins
+  // too): no claim of the shortest distance, as the cut of a sloped obstacle takes whole cells
+  bool cut = false;
   for (std::size_t i = 0; i < net.pins.size(); ++i) {
     const io::Pin* pin = &net.pins[i];
     geom::Polygon* g = &geometry[i];
-    if (router.pin_meets_obstacle(*g))
-      return fail("ROUTE-0005", "pin \"" + pin->name +
-                                    "\" lies partly under a blockage; shape pins that overlap "
-                                    "blockages are not routed yet (ones that touch them are)");
-    std::optional<geom::Polygon> reached = routable_pin(*g);  // (another slope: its staircase)
-    if (!reached) return fail("ROUTE-0005", "pin \"" + pin->name + "\" " + kNoStaircase);
+    const std::vector<geom::Polygon> under = router.pin_meets_obstacle(*g) ? obstacles_under(*g, obstacles) : std::vector<geom::Polygon>{};
+    cut = cut || !under.empty();
+    std::optional<geom::Polygon> reached = routable_pin(*g, under);  // (another slope, or under: a staircase)
+    if (!reached)
+      return fail("ROUTE-0005", "pin \"" + pin->name + "\" " +
+                                    (under.empty() ? std::string(kNoStaircase) : std::string("lies partly under a blockage") + kNothingOutside));
     *g = std::move(*reached);
   }
   const io::Pin& a = net.pins[0];
@@ -223,7 +228,7 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router
                                     "blockages pinch every lattice staircase)");
   }
   NetResult done = finish({io::Wire{w.points}});
-  if (done.route.status == "routed") done.distance = w.root2_length();
+  if (done.route.status == "routed" && !cut) done.distance = w.root2_length();
   return done;
 }
 
@@ -307,16 +312,19 @@ std::vector<router::CheckProblem> route_problems(const io::Layout& layout, const
 
 // --metric combined / link (router::BendRouter): nets of point and shape pins. Two pins: the
 // best wire; more: the tree of best paths from the first pin (router::BendTree).
+// `obstacles`: the router's (a shape pin partly under them is reached as its part outside them).
 NetResult route_net_bends(const io::Layout& layout, const io::Net& net, const BendObstacles& obs,
-                          const router::BendRouter& router, router::BendMetric metric, std::int64_t bend_cost) {
+                          const router::BendRouter& router, std::span<const geom::Polygon> obstacles,
+                          router::BendMetric metric, std::int64_t bend_cost) {
   auto fail = [&](const char* code, std::string reason) { return failed(net, code, std::move(reason)); };
   if (auto few = too_few_pins(net)) return *few;
   std::vector<geom::Polygon> geometry;
   for (const io::Pin& pin : net.pins) {
     const geom::Polygon g = io::pin_polygon(pin);
-    if (router.pin_meets_obstacle(g)) return fail("ROUTE-0005", "pin \"" + pin.name + "\" " + obs.why_under(layout, g));
-    std::optional<geom::Polygon> reached = routable_pin(g);  // (another slope: its staircase)
-    if (!reached) return fail("ROUTE-0005", "pin \"" + pin.name + "\" " + kNoStaircase);
+    const std::vector<geom::Polygon> under = router.pin_meets_obstacle(g) ? obstacles_under(g, obstacles) : std::vector<geom::Polygon>{};
+    std::optional<geom::Polygon> reached = routable_pin(g, under);  // (another slope, or under: a staircase)
+    if (!reached)
+      return fail("ROUTE-0005", "pin \"" + pin.name + "\" " + (under.empty() ? std::string(kNoStaircase) : obs.why_under(layout, g)));
     geometry.push_back(std::move(*reached));
   }
   const router::BendTree t =
@@ -596,7 +604,7 @@ void add_route(CLI::App& app, int& status) {
         t1 = Clock::now();
         for (std::size_t i = 0; i < layout->nets.size(); ++i) {
           if (stop()) throw router::NetRouterStopped();
-          results[i] = route_net_bends(*layout, layout->nets[i], obs, br, metric, c);
+          results[i] = route_net_bends(*layout, layout->nets[i], obs, br, norm.obstacles, metric, c);
         }
       } else {
         // Together (router::NetRouter, as for --metric l1): each net among the covers grown by
@@ -628,8 +636,8 @@ void add_route(CLI::App& app, int& status) {
             const std::int64_t k = nr.scale();
             nr.run([&](std::size_t i, const router::NetPins& pins, const geom::NormalizedObstacles& w) {
               const router::BendRouter br(w.domain, w.obstacles);
-              NetResult r = route_net_bends(*layout, with_pins(scaled_net(layout->nets[i], pins.scale), pins), obs, br, metric,
-                                            c * pins.scale);
+              NetResult r = route_net_bends(*layout, with_pins(scaled_net(layout->nets[i], pins.scale), pins), obs, br,
+                                            w.obstacles, metric, c * pins.scale);
               router::NetAttempt a;
               a.routed = r.route.status == "routed";
               for (const io::Wire& wire : r.route.wires) a.wires.push_back(wire.points);
@@ -644,7 +652,7 @@ void add_route(CLI::App& app, int& status) {
               results[i] = outcome_result(layout->nets[i], nr.outcomes()[i]);
               if (k > 1 && results[i].route.status != "routed" && plain_reason(results[i].code)) {
                 if (!plain) plain.emplace(norm.domain, norm.obstacles);
-                NetResult real = route_net_bends(*layout, layout->nets[i], obs, *plain, metric, c);
+                NetResult real = route_net_bends(*layout, layout->nets[i], obs, *plain, norm.obstacles, metric, c);
                 if (real.route.status != "routed") results[i] = std::move(real);
               }
             }
@@ -809,10 +817,10 @@ void add_route(CLI::App& app, int& status) {
             if (octilinear) {
               router::OctRouter rt(obs.domain, obs.obstacles);
               rt.set_lattice(pins.scale);  // no vertex half way between the plane's multiples
-              r = route_net(*layout, sn, rt, steiner_ok[i]);
+              r = route_net(*layout, sn, rt, steiner_ok[i], obs.obstacles);
             } else {
               router::L1Router rt(obs.domain, obs.obstacles);
-              r = route_net(*layout, sn, rt, steiner_ok[i]);
+              r = route_net(*layout, sn, rt, steiner_ok[i], obs.obstacles);
             }
             router::NetAttempt a;
             a.routed = r.route.status == "routed";
@@ -831,8 +839,8 @@ void add_route(CLI::App& app, int& status) {
           for (std::size_t i = 0; i < layout->nets.size(); ++i) {
             together.push_back(outcome_result(layout->nets[i], nr.outcomes()[i]));
             if (k > 1 && together[i].route.status != "routed" && plain_reason(together[i].code)) {
-              NetResult real = l1 ? route_net(*layout, layout->nets[i], *l1, steiner_ok[i])
-                                  : route_net(*layout, layout->nets[i], *oct, steiner_ok[i]);
+              NetResult real = l1 ? route_net(*layout, layout->nets[i], *l1, steiner_ok[i], norm.obstacles)
+                                  : route_net(*layout, layout->nets[i], *oct, steiner_ok[i], norm.obstacles);
               if (real.route.status != "routed") together[i] = std::move(real);
             }
           }
@@ -861,7 +869,7 @@ void add_route(CLI::App& app, int& status) {
           const std::optional<std::string> why = args->tree == "steiner" ? no_steiner_tree(net, "l1") : std::nullopt;
           if (why) warn_no_steiner_tree(*layout, net, *why, args->load.quiet);  // said, not dropped silently
           const bool steiner = args->tree == "steiner" && !why;
-          r = l1 ? route_net(*layout, net, *l1, steiner) : route_net(*layout, net, *oct, steiner);
+          r = l1 ? route_net(*layout, net, *l1, steiner, norm.obstacles) : route_net(*layout, net, *oct, steiner, norm.obstacles);
         } else {
           r = std::move(together[ni]);
           if (r.route.status == "routed") shortest_of[ni] = r.shortest;

@@ -69,7 +69,7 @@ std::string BendObstacles::why_under(const io::Layout& layout, const geom::Polyg
       if (geom::twice_area(h) > 0) std::reverse(h.begin(), h.end());
     return p;
   };
-  const std::string rest = "; shape pins that overlap blockages are not routed yet (ones that touch them are)";
+  const std::string rest = kNothingOutside;
   for (std::size_t i = 0; i < polygons.size(); ++i) {
     const geom::Polygon only[1] = {ccw(polygons[i])};
     if (router::PinShapes(only).meets_obstacle(pin)) return "lies partly under blockage " + at(i) + rest;
@@ -87,10 +87,27 @@ std::string BendObstacles::why_under(const io::Layout& layout, const geom::Polyg
 
 std::string point_text(geom::Point p) { return std::to_string(p.x) + "," + std::to_string(p.y); }
 
-std::optional<geom::Polygon> routable_pin(const geom::Polygon& pin) {
+std::vector<geom::Polygon> obstacles_under(const geom::Polygon& pin, std::span<const geom::Polygon> obstacles) {
+  std::vector<geom::Polygon> out;
+  if (router::is_point_pin(pin)) return out;
+  const geom::Box b = geom::bounding_box(pin.outer);
+  for (const geom::Polygon& o : obstacles) {
+    const geom::Box ob = geom::bounding_box(o.outer);
+    if (ob.hi.x <= b.lo.x || ob.lo.x >= b.hi.x || ob.hi.y <= b.lo.y || ob.lo.y >= b.hi.y) continue;
+    if (router::shape_meets_obstacle(pin, o)) out.push_back(o);
+  }
+  return out;
+}
+
+std::optional<geom::Polygon> routable_pin(const geom::Polygon& pin, std::span<const geom::Polygon> under) {
+  if (!under.empty()) return router::pad_staircase(pin, 1, {}, under);
   if (router::pin_shape_supported(pin)) return pin;
   return router::pad_staircase(pin, 1);
 }
+
+const char* const kNothingOutside =
+    ", and no cell of the unit lattice lies in its part outside the blockages (a pin partly under a blockage is "
+    "reached as that part)";
 
 const char* const kNoStaircase =
     "has an edge at an angle other than 0, 45 or 90 degrees, and no cell of the unit lattice lies inside it: wire "

@@ -1034,6 +1034,72 @@ TEST(NetRouter, StaircasesOfPinsAtAnyAngleAreTheCellsInThePin) {
   EXPECT_GT(holes, 0);
 }
 
+// router::pad_staircase with cuts (since 2026-12-06: a pad partly under a blockage is reached as
+// its part outside the blockages): random pins (rectangles, and pins with edges at other angles)
+// with one or two random cuts (rectangles and triangles, on the lattice), on the lattices of 1
+// and 8, against brute force: the cells in the pin that meet no cut's interior
+// (tests/support/pin_cells.h), or the largest part of them that is one valid polygon.
+TEST(NetRouter, StaircasesOfPinsUnderBlockagesAreTheCellsOutsideThem) {
+  std::mt19937 rng(7311);
+  auto uni = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+  int made = 0, none = 0, parts = 0, rectilinear = 0, exact = 0;
+  const int want = sanitized_share(1500, 5);
+  for (int n = 0; n < want; ++n) {
+    const std::int64_t step = n % 3 == 2 ? 8 : 1;
+    const auto c = [&](int v) { return static_cast<geom::Coord>(v * step); };
+    auto scaled = [&](Polygon q) {
+      for (Point& p : q.outer) p = {c(p.x), c(p.y)};
+      for (geom::Ring& h : q.holes)
+        for (Point& p : h) p = {c(p.x), c(p.y)};
+      return q;
+    };
+    auto rect = [&](int x0, int y0, int x1, int y1) { return Polygon{{{c(x0), c(y0)}, {c(x1), c(y0)}, {c(x1), c(y1)}, {c(x0), c(y1)}}, {}}; };
+    Polygon pin;
+    const bool rect_pin = n % 2 == 0;
+    if (rect_pin) {
+      const int x0 = uni(0, 8), y0 = uni(0, 8);
+      pin = rect(x0, y0, x0 + uni(2, 6), y0 + uni(2, 6));
+    } else {
+      pin = scaled(random_sloped_pin(rng, 6));
+    }
+    std::vector<Polygon> cuts;
+    for (int k = uni(1, 2); k > 0; --k) {
+      Polygon cut;
+      do {
+        if (uni(0, 1)) {
+          const int x0 = uni(-2, 12), y0 = uni(-2, 12);
+          cut = rect(x0, y0, x0 + uni(1, 6), y0 + uni(1, 6));
+        } else {
+          cut = Polygon{{{c(uni(-2, 16)), c(uni(-2, 16))}, {c(uni(-2, 16)), c(uni(-2, 16))}, {c(uni(-2, 16)), c(uni(-2, 16))}}, {}};
+        }
+      } while (!geom::validate_polygon(cut).empty());
+      cuts.push_back(cut);
+    }
+    const std::string at = "case " + std::to_string(n);
+    const auto [expect, whole] = expected_staircase_cells(cells_in_pin(pin, step, -3, -3, 18, 18, cuts), step);
+    const std::optional<Polygon> st = router::pad_staircase(pin, step, {}, cuts);
+    rectilinear += rect_pin;
+    if (expect.empty()) {
+      EXPECT_FALSE(st.has_value()) << at;
+      ++none;
+      continue;
+    }
+    ASSERT_TRUE(st.has_value()) << at << ": " << expect.size() << " cells";
+    ++made;
+    parts += !whole;
+    ASSERT_TRUE(geom::validate_polygon(*st).empty()) << at;
+    ASSERT_EQ(cells_in_pin(*st, step, -3, -3, 18, 18), expect) << at;
+    // a rectangle less rectangles: the staircase is the part outside them, exactly
+    exact += rect_pin && whole && std::all_of(cuts.begin(), cuts.end(), [](const Polygon& q) { return q.outer.size() == 4; });
+  }
+  std::printf("%d pins with cuts (%d rectangles): %d staircases (%d the largest part; %d rectangles less rectangles), %d "
+              "with no cell left\n",
+              want, rectilinear, made, parts, exact, none);
+  EXPECT_GT(made, want / 2);
+  EXPECT_GT(none, 0);
+  EXPECT_GT(parts, 0);
+}
+
 // Pins more than NetSpace::kMaxStaircaseColumns (256) steps wide (refused over 4,096 until
 // 2026-12-04: such a net was ROUTE-0010 under the bend-aware metrics when its pin met a
 // blockage's clearance; on the old code the staircases here are refused, and the last part's net

@@ -71,14 +71,33 @@ inline geom::Polygon doubled(geom::Polygon p) {
   return p;
 }
 
+// Does the open cell (x, y) of the lattice of `step` meet the interior of polygon o (`twice`: o
+// doubled)? When an edge of o meets it, else when its centre lies inside o (the open cell then
+// lies wholly inside or wholly outside).
+inline bool cell_meets_interior(const geom::Polygon& o, const geom::Polygon& twice, int x, int y, std::int64_t step) {
+  const auto c = [](std::int64_t v) { return static_cast<geom::Coord>(v); };
+  const geom::Point lo{c(x * step), c(y * step)}, hi{c((x + 1) * step), c((y + 1) * step)};
+  bool cut = false;
+  for_each_ring_edge(o, [&](geom::Point a, geom::Point b) { cut = cut || segment_meets_open_cell(a, b, lo, hi); });
+  return cut || geom::locate(geom::Point{c((2 * x + 1) * step), c((2 * y + 1) * step)}, twice) == geom::Location::Inside;
+}
+
 // Every cell of the lattice of `step` in the closed polygon whose lower-left corner (in steps)
-// lies in [x0, x1) x [y0, y1).
-inline std::set<Cell> cells_in_pin(const geom::Polygon& p, std::int64_t step, int x0, int y0, int x1, int y1) {
+// lies in [x0, x1) x [y0, y1), and that meets the interior of none of `cuts` (the blockages a
+// pin lies partly under).
+inline std::set<Cell> cells_in_pin(const geom::Polygon& p, std::int64_t step, int x0, int y0, int x1, int y1,
+                                   const std::vector<geom::Polygon>& cuts = {}) {
   const geom::Polygon twice = doubled(p);
+  std::vector<geom::Polygon> cuts_twice;
+  for (const geom::Polygon& c : cuts) cuts_twice.push_back(doubled(c));
   std::set<Cell> out;
   for (int x = x0; x < x1; ++x)
-    for (int y = y0; y < y1; ++y)
-      if (cell_in(p, twice, x, y, step)) out.insert({x, y});
+    for (int y = y0; y < y1; ++y) {
+      if (!cell_in(p, twice, x, y, step)) continue;
+      bool free = true;
+      for (std::size_t k = 0; k < cuts.size() && free; ++k) free = !cell_meets_interior(cuts[k], cuts_twice[k], x, y, step);
+      if (free) out.insert({x, y});
+    }
   return out;
 }
 
