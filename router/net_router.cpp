@@ -1574,12 +1574,13 @@ NetRouter::Tried NetRouter::try_net(const NetRouteFn& route, std::size_t net, Ne
     // the certificate (NetOutcome::shortest): the snapped length against the scaled plane's
     // exact distance
     const NetPins& own = space_.net(net);
-    if (certifies() && own.pins.size() == 2 && options_.cost == NetRouterOptions::Cost::Length && t.a.distance) {
+    const bool claimable = certifies() && own.pins.size() == 2 && t.a.claims && !space_.reached_otherwise(net);
+    if (claimable && options_.cost == NetRouterOptions::Cost::Length && t.a.distance) {
       const geom::Root2 s = *t.a.distance;
       t.a.shortest = options_.octilinear ? oct_length(t.a.wires) == s : s.b == 0 && l1_length(t.a.wires) < s.a + scale_;
       t.a.window = t.window;
-    } else if (certifies() && own.pins.size() == 2 && options_.cost != NetRouterOptions::Cost::Length &&
-               t.a.sink_costs.size() == 1 && t.a.wires.size() == 1) {
+    } else if (claimable && options_.cost != NetRouterOptions::Cost::Length && t.a.sink_costs.size() == 1 &&
+               t.a.wires.size() == 1) {
       // the bend-aware costs (since 2026-12-05): the optimal path's scaled length L and bends b
       // against the snapped wire's scaled length K R (the wires are still in the scaled plane,
       // on multiples of K) and bends b' (the scaled bend cost K C is options_.bend_cost):
@@ -2887,6 +2888,38 @@ NetRouter::Explained NetRouter::explain(const NetRouteFn& route, std::size_t net
 
 namespace {
 
+// A route function's pins as its router takes them: since 2026-12-06 a shape pin that meets the
+// window's obstacles (a pad partly under other nets' grown wires or pins) as the staircase of its
+// part outside them (pad_staircase with those obstacles as cuts), and then a.claims false;
+// nullopt, with a's code and reason, when such a pin keeps no cell, or a pin is one the routers do
+// not take.
+template <class Meets>
+std::optional<std::vector<Polygon>> reachable_pins(const NetPins& net, const geom::NormalizedObstacles& obs, Meets meets,
+                                                   NetAttempt& a) {
+  std::vector<Polygon> out;
+  auto refuse = [&] {
+    a.code = "ROUTE-0005";
+    a.reason = "a shape pin this router does not take here";
+    return std::nullopt;
+  };
+  for (const Polygon& pin : net.pins) {
+    if (!is_point_pin(pin) && meets(pin)) {
+      const Box b = box_of(pin.outer);
+      std::vector<Polygon> under;
+      for (const Polygon& o : obs.obstacles)
+        if (boxes_meet(box_of(o.outer), b) && shape_meets_obstacle(pin, o)) under.push_back(o);
+      std::optional<Polygon> st = pad_staircase(pin, 1, {}, under);
+      if (!st) return refuse();
+      out.push_back(std::move(*st));
+      a.claims = false;
+      continue;
+    }
+    if (!pin_shape_supported(pin)) return refuse();
+    out.push_back(pin);
+  }
+  return out;
+}
+
 // The route function of l1_router / oct_router: Router is L1Router or OctRouter; `lattice`:
 // BasicRouter::set_lattice.
 template <class Router>
@@ -2906,23 +2939,20 @@ NetAttempt route_with(const NetPins& net, const geom::NormalizedObstacles& obs, 
     a.reason = to_string(st);
     return a;
   };
-  for (const Polygon& pin : net.pins)
-    if (!pin_shape_supported(pin) || (!is_point_pin(pin) && r.pin_meets_obstacle(pin))) {
-      a.code = "ROUTE-0005";
-      a.reason = "a shape pin this router does not take here";
-      return a;
-    }
-  if (net.pins.size() == 2) {
-    const typename Router::Wire w = r.shortest(net.pins[0], net.pins[1]);
+  const std::optional<std::vector<Polygon>> pins =
+      reachable_pins(net, obs, [&](const Polygon& p) { return r.pin_meets_obstacle(p).has_value(); }, a);
+  if (!pins) return a;
+  if (pins->size() == 2) {
+    const typename Router::Wire w = r.shortest((*pins)[0], (*pins)[1]);
     if (w.status != WireStatus::Ok) return fail(w.status);
     a.wires = {w.points};
     a.distance = w.root2_length();
   } else if (steiner) {
-    const typename Router::Steiner t = r.steiner(std::span<const Polygon>(net.pins));
+    const typename Router::Steiner t = r.steiner(std::span<const Polygon>(*pins));
     if (t.status != WireStatus::Ok) return fail(t.status);
     a.wires = t.wires;
   } else {
-    const typename Router::Tree t = r.tree(net.pins[0], std::span<const Polygon>(net.pins).subspan(1));
+    const typename Router::Tree t = r.tree((*pins)[0], std::span<const Polygon>(*pins).subspan(1));
     if (t.status != WireStatus::Ok) return fail(t.status);
     a.wires = t.wires;
     if (auto d = tree_sink_distances(t)) {
@@ -2944,13 +2974,10 @@ NetAttempt route_bends(const NetPins& net, const geom::NormalizedObstacles& obs,
     return a;
   }
   const BendRouter r(obs.domain, obs.obstacles);
-  for (const Polygon& pin : net.pins)
-    if (!pin_shape_supported(pin) || r.pin_meets_obstacle(pin)) {
-      a.code = "ROUTE-0005";
-      a.reason = "a shape pin this router does not take here";
-      return a;
-    }
-  const BendTree t = r.tree(net.pins[0], std::span<const Polygon>(net.pins).subspan(1), metric, bend_cost);
+  const std::optional<std::vector<Polygon>> pins =
+      reachable_pins(net, obs, [&](const Polygon& p) { return r.pin_meets_obstacle(p).has_value(); }, a);
+  if (!pins) return a;
+  const BendTree t = r.tree((*pins)[0], std::span<const Polygon>(*pins).subspan(1), metric, bend_cost);
   if (t.status != WireStatus::Ok) {
     a.code = t.status == WireStatus::Unreachable ? "ROUTE-0002" : "ROUTE-0001";
     a.reason = to_string(t.status);

@@ -385,6 +385,10 @@ class NetSpace {
     const auto it = reach_.find(i);
     return it == reach_.end() ? nets_[i] : it->second;
   }
+  // Whether net i has a pin reached as a staircase (reach() is not its pins): then no claim of
+  // the shortest is made for it (NetOutcome::shortest), as a staircase may miss a pin's peaks,
+  // or hold only the largest part of what is free of a pad.
+  bool reached_otherwise(std::size_t i) const { return reach_.count(i) > 0; }
   static constexpr std::int64_t kMaxStaircaseColumns = 256;  // 4,096 (and then refused) until 2026-12-04
   static constexpr std::int64_t kMaxUnitStaircaseColumns = 4096;
 
@@ -510,6 +514,10 @@ struct NetAttempt {
   // shortest wires with it (NetOutcome::shortest). nullopt: no such claim (a route function of
   // one's own may leave it).
   std::optional<geom::Root2> distance;
+  // false: the route function reached a pin otherwise than as it is (a pad partly under the
+  // window's obstacles, reached from its part outside them: since 2026-12-06), so neither
+  // distance nor sink_costs may certify the shortest (they still prove the window).
+  bool claims = true;
   // Set by NetRouter (route functions leave them): see NetOutcome::shortest.
   bool shortest = false;
   geom::Box window{};

@@ -339,7 +339,7 @@ void add_path(CLI::App& app, int& status) {
       }
       status = kIncomplete;
     };
-    const std::string under = std::string("lies partly under a blockage") + kNothingOutside;
+    const std::string under = std::string("lies partly under a blockage") + kNothingOutside;  // (no other nets here)
     if (oct) {
       router::OctRouter r(norm.domain, norm.obstacles);
       const std::string refused = shape_refusal(*target, norm.obstacles, [&] { return under; });

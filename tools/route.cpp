@@ -61,6 +61,7 @@ struct NetResult {
   std::optional<geom::Root2> distance;  // two pins by a shortest path: router::NetAttempt::distance
   bool shortest = false;  // router::NetOutcome::shortest
   std::vector<std::pair<std::int64_t, std::int64_t>> sink_costs;  // bend metrics: router::NetAttempt::sink_costs
+  bool claims = true;  // router::NetAttempt::claims (false: a pin was cut by the obstacles)
 };
 
 // A net written as failed, with the code and reason that stderr names.
@@ -111,7 +112,8 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router
   std::vector<geom::Polygon> geometry;
   for (const io::Pin& pin : net.pins) geometry.push_back(io::pin_polygon(pin));
   // a pin cut by the obstacles (in the net router's windows, by other nets' grown wires and pins
-  // too): no claim of the shortest distance, as the cut of a sloped obstacle takes whole cells
+  // too): no claim of the shortest (NetResult::claims), as the cut of a sloped obstacle takes whole
+  // cells and a pin cut in pieces is reached at its largest
   bool cut = false;
   for (std::size_t i = 0; i < net.pins.size(); ++i) {
     const io::Pin* pin = &net.pins[i];
@@ -121,7 +123,7 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router
     std::optional<geom::Polygon> reached = routable_pin(*g, under);  // (another slope, or under: a staircase)
     if (!reached)
       return fail("ROUTE-0005", "pin \"" + pin->name + "\" " +
-                                    (under.empty() ? std::string(kNoStaircase) : std::string("lies partly under a blockage") + kNothingOutside));
+                                    (under.empty() ? std::string(kNoStaircase) : std::string(kPartlyUnder) + kNothingOutside));
     *g = std::move(*reached);
   }
   const io::Pin& a = net.pins[0];
@@ -148,6 +150,7 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router
     r.route.length = io::format_total_length(lines);
     r.route.bends = bends;
     r.route.wires = std::move(wires);
+    r.claims = !cut;
     return r;
   };
   {
@@ -319,9 +322,11 @@ NetResult route_net_bends(const io::Layout& layout, const io::Net& net, const Be
   auto fail = [&](const char* code, std::string reason) { return failed(net, code, std::move(reason)); };
   if (auto few = too_few_pins(net)) return *few;
   std::vector<geom::Polygon> geometry;
+  bool cut = false;  // (as in route_net)
   for (const io::Pin& pin : net.pins) {
     const geom::Polygon g = io::pin_polygon(pin);
     const std::vector<geom::Polygon> under = router.pin_meets_obstacle(g) ? obstacles_under(g, obstacles) : std::vector<geom::Polygon>{};
+    cut = cut || !under.empty();
     std::optional<geom::Polygon> reached = routable_pin(g, under);  // (another slope, or under: a staircase)
     if (!reached)
       return fail("ROUTE-0005", "pin \"" + pin.name + "\" " + (under.empty() ? std::string(kNoStaircase) : obs.why_under(layout, g)));
@@ -346,6 +351,7 @@ NetResult route_net_bends(const io::Layout& layout, const io::Net& net, const Be
   }
   NetResult r;
   r.route.net = net.name;
+  r.claims = !cut;
   std::vector<std::vector<geom::Point>> lines;
   long bends = 0;
   for (std::vector<geom::Point> w : t.wires) {
@@ -644,6 +650,7 @@ void add_route(CLI::App& app, int& status) {
               a.code = r.code;
               a.reason = r.route.reason.value_or("");
               a.sink_costs = std::move(r.sink_costs);
+              a.claims = r.claims;
               return a;
             });
             net_stats = nr.stats();
@@ -830,6 +837,7 @@ void add_route(CLI::App& app, int& status) {
             a.radius = r.radius;
             a.sink_distances = r.sink_distances;
             a.distance = r.distance;
+            a.claims = r.claims;
             // (a lattice set: the wires placed are already in it; router/tighten_nets.h)
             if (reshaped && target_set) router::tighten_attempt(a, pins, obs, tighten_orientations(tighten_word), stop);
             return a;

@@ -105,9 +105,10 @@ std::optional<geom::Polygon> routable_pin(const geom::Polygon& pin, std::span<co
   return router::pad_staircase(pin, 1);
 }
 
+const char* const kPartlyUnder =
+    "lies partly under a blockage (or, among the other nets, within the clearance of their wires and pins)";
 const char* const kNothingOutside =
-    ", and no cell of the unit lattice lies in its part outside the blockages (a pin partly under a blockage is "
-    "reached as that part)";
+    ", and no cell of the unit lattice lies in its part outside them (a pin partly covered so is reached as that part)";
 
 const char* const kNoStaircase =
     "has an edge at an angle other than 0, 45 or 90 degrees, and no cell of the unit lattice lies inside it: wire "

@@ -57,7 +57,7 @@ std::vector<geom::Polygon> obstacles_under(const geom::Polygon& pin, std::span<c
 // A shape pin as the routers reach it (since 2026-12-06). One partly under obstacles (`under`,
 // obstacles_under) as the part outside them: the union of the unit lattice's cells in the pin
 // that meet none of their interiors (router::pad_staircase with cuts; exactly that part when the
-// pin and those obstacles are rectilinear). One with an edge at an angle other than 0, 45 or 90
+// pin and those obstacles are rectilinear and it is one piece; else its largest piece). One with an edge at an angle other than 0, 45 or 90
 // degrees, which no router takes, as its staircase, the union of the unit lattice's cells that
 // lie in it, so a wire, whose vertices are integers, ends on a lattice point of the pin. (Either
 // way the largest part that is one polygon when the cells are not.) nullopt when no cell is left
@@ -65,7 +65,9 @@ std::vector<geom::Polygon> obstacles_under(const geom::Polygon& pin, std::span<c
 std::optional<geom::Polygon> routable_pin(const geom::Polygon& pin, std::span<const geom::Polygon> under = {});
 // Why routable_pin() has none, after "pin "p" ", for a pin under no obstacle.
 extern const char* const kNoStaircase;
-// The end of the words for a pin under an obstacle that routable_pin() leaves nothing of.
+// The words for a pin under obstacles that routable_pin() leaves nothing of: kPartlyUnder (or a
+// blockage named), then kNothingOutside.
+extern const char* const kPartlyUnder;
 extern const char* const kNothingOutside;
 
 // A length a + b*sqrt2 for people: "23000" when b = 0, else "15.8994949366 (6+7*sqrt2)" (the

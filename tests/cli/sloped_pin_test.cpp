@@ -281,8 +281,8 @@ TEST(SlopedPins, TogetherWithRulesPassTheChecker) {
 
 // By hand: a turned square pad sitting on a blockage's edge, with a clearance of 3 (w = 2, s = 2):
 // its staircase is cut out of the grown blockage as a pad is, so the wire reaches it and keeps the
-// clearance up to its end; `path --to-pin` reaches the same staircase; a sliver with no cell is
-// ROUTE-0005 from both.
+// clearance up to its end; `path --to-pin` reaches the same staircase; a sliver with no cell, and
+// a square under a ramp's slope with no cell outside it, are ROUTE-0005 from both.
 TEST(SlopedPins, APadOnABlockageAndPathToPin) {
   const std::string file = layout_file("sloped_hand", R"(  <boundary x0="0" y0="0" x1="100" y1="60"/>
   <rules wire-width="2" spacing="2"/>
@@ -295,6 +295,11 @@ TEST(SlopedPins, APadOnABlockageAndPathToPin) {
     <pin name="thin"><polygon points="10,10 30,14 30,15"/></pin>
     <pin name="p" x="10" y="50"/>
   </net>
+  <blockage id="ramp"><polygon points="60,40 90,40 90,55"/></blockage>
+  <net name="covered">
+    <pin name="sq"><rect x0="70" y0="45" x1="71" y1="46"/></pin>
+    <pin name="p" x="20" y="55"/>
+  </net>
 )");
   const std::string out = temp_dir("sloped_hand_out") + "/r.xml";
   const auto r = run_taut({"route", file, "-o", out});
@@ -303,6 +308,9 @@ TEST(SlopedPins, APadOnABlockageAndPathToPin) {
                        "degrees, and no cell of the unit lattice lies inside it"),
             std::string::npos)
       << r.err;
+  EXPECT_NE(r.err.find("[ROUTE-0005] net \"covered\" not routed: pin \"sq\" lies partly under a blockage"), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("no cell of the unit lattice lies in its part outside them"), std::string::npos) << r.err;
   const auto c = run_taut({"check", out, "-q"});
   EXPECT_EQ(c.status, 0) << c.err;
   std::map<std::string, io::Route> routes = routes_of(out);
@@ -323,14 +331,23 @@ TEST(SlopedPins, APadOnABlockageAndPathToPin) {
   EXPECT_EQ(q.status, 1) << q.err;
   EXPECT_NE(q.err.find("ROUTE-0005"), std::string::npos) << q.err;
   EXPECT_NE(q.err.find("no cell of the unit lattice lies inside it"), std::string::npos) << q.err;
+  for (const char* metric : {"l1", "link"}) {
+    const auto u = run_taut({"path", file, "--from", "20,55", "--to-pin", "covered", "sq", "--metric", metric});
+    EXPECT_EQ(u.status, 1) << u.err;
+    EXPECT_NE(u.err.find("[ROUTE-0005] pin \"sq\" of net \"covered\""), std::string::npos) << u.err;
+    EXPECT_NE(u.err.find("lies partly under"), std::string::npos) << u.err;
+    EXPECT_NE(u.err.find("no cell of the unit lattice lies in its part outside them"), std::string::npos) << u.err;
+  }
 }
 
 // A pad that another net's wire comes within the clearance of (w = 2, s = 2: net a's wire at y =
 // 33 keeps 3 = w/2 + s from the pad's top side, and grown by w + s = 4 it covers the pad's top
 // unit): since 2026-12-06 net b is reached from the part of its pad that wire leaves clear, in the
-// first pass, with no rip-up; before, its attempt was refused there (ROUTE-0005 inside the net
-// router), and it took a rip-up of a (the same refusal kept the RDL's BUMP_9_12 unrouted). The
-// checker passes.
+// first pass, with no rip-up, rectilinear, octilinear and under --metric combined; before, its
+// attempt was refused there (ROUTE-0005 inside the net router), and it took a rip-up of a (the
+// same refusal kept the RDL's BUMP_9_12 unrouted). The checker passes, and b's wire is not
+// claimed shortest (NetAttempt::claims) while a's is; nor is c's, whose pad lies partly under a
+// blockage (NetSpace::reached_otherwise).
 TEST(SlopedPins, APadAnotherNetsWireComesNearIsReachedFromItsClearPart) {
   const std::string file = layout_file("pad_clear_part", R"(  <boundary x0="0" y0="0" x1="100" y1="60"/>
   <rules wire-width="2" spacing="2"/>
@@ -342,17 +359,31 @@ TEST(SlopedPins, APadAnotherNetsWireComesNearIsReachedFromItsClearPart) {
     <pin name="pad"><rect x0="50" y0="20" x1="60" y1="30"/></pin>
     <pin name="p" x="5" y="5"/>
   </net>
+  <blockage id="wall"><rect x0="80" y0="0" x1="90" y1="10"/></blockage>
+  <net name="c">
+    <pin name="pad"><rect x0="85" y0="5" x1="95" y1="14"/></pin>
+    <pin name="p" x="95" y="50"/>
+  </net>
 )");
   const std::string dir = temp_dir("pad_clear_part_out");
-  for (const char* orientations : {"rectilinear", "octilinear"}) {
-    SCOPED_TRACE(orientations);
-    const auto r = run_taut({"route", file, "-o", dir + "/r.xml", "--stats", dir + "/s.json", "-q", "--orientations", orientations});
+  for (const std::vector<std::string>& how : std::vector<std::vector<std::string>>{
+           {"--orientations", "rectilinear"}, {"--orientations", "octilinear"}, {"--metric", "combined", "--bend-cost", "5"}}) {
+    SCOPED_TRACE(how[1]);
+    std::vector<std::string> cmd{"route", file, "-o", dir + "/r.xml", "--stats", dir + "/s.json", "-q"};
+    cmd.insert(cmd.end(), how.begin(), how.end());
+    const auto r = run_taut(cmd);
     EXPECT_EQ(r.status, 0) << r.err;
     const auto j = nlohmann::json::parse(read_text(dir + "/s.json"));
     EXPECT_EQ(j["net_router"]["rip_ups"], 0);
-    EXPECT_EQ(j["net_router"]["first_pass_routed"], 2);
+    EXPECT_EQ(j["net_router"]["first_pass_routed"], 3);
     const auto c = run_taut({"check", dir + "/r.xml", "-q"});
     EXPECT_EQ(c.status, 0) << c.err;
+    // no claim of the shortest for b, whose pad was cut (a's straight wire is claimed)
+    EXPECT_EQ(j["routes"]["b"]["shortest"], false);
+    EXPECT_EQ(j["routes"]["a"]["shortest"], true);
+    // c's pad, partly under the wall, reached as its part outside it (NetSpace::reach): routed, no claim
+    EXPECT_EQ(j["routes"]["c"]["status"], "routed");
+    EXPECT_EQ(j["routes"]["c"]["shortest"], false);
     std::map<std::string, io::Route> routes = routes_of(dir + "/r.xml");
     ASSERT_EQ(routes["b"].status, "routed");
     const Point end = routes["b"].wires.at(0).points.front();

@@ -534,7 +534,10 @@ TEST(ExactGaps, ManyNetsPassTheChecker) {
 // broken_claims (8 of 5,400 layouts did). Here every claim left passes, and each layout withdraws
 // at least one. (With the window limit they were found with, 2: with 1, the default since
 // 2026-12-06, the nets take other ways in two of them and no claim is withdrawn there;
-// ManyNetsPassTheChecker checks the claims with the default.)
+// ManyNetsPassTheChecker checks the claims with the default.) Seed 931616 withdraws none since the
+// later changes of 2026-12-06 (a pad partly under a blockage, or partly covered by other nets'
+// grown wires, is reached from its clear part with no claim made, where the attempt was refused
+// before): the claim it withdrew is no longer made there; the other seven still withdraw.
 TEST(ExactGaps, ClaimsAreWithdrawnWhenAWayOpens) {
   std::int64_t claims = 0;
   for (const int seed : {856, 1257, 1273, 1616, 2112, 2118, 3274, 5482}) {
@@ -548,7 +551,9 @@ TEST(ExactGaps, ClaimsAreWithdrawnWhenAWayOpens) {
     const std::string at = "seed " + std::to_string(930000 + seed);
     ASSERT_GT(nr.scale(), 1) << at;
     EXPECT_EQ(broken_claims(nr, opt.octilinear, at, claims), 0);
-    EXPECT_GT(nr.stats().shortest_withdrawn, 0) << at;
+    if (seed != 1616) {
+      EXPECT_GT(nr.stats().shortest_withdrawn, 0) << at;
+    }
   }
   EXPECT_GT(claims, 0);
 }

@@ -1092,12 +1092,34 @@ TEST(NetRouter, StaircasesOfPinsUnderBlockagesAreTheCellsOutsideThem) {
     // a rectangle less rectangles: the staircase is the part outside them, exactly
     exact += rect_pin && whole && std::all_of(cuts.begin(), cuts.end(), [](const Polygon& q) { return q.outer.size() == 4; });
   }
+  // Pins wider than NetSpace::kMaxStaircaseColumns steps take columns of several steps, split at
+  // the pin's vertices and the cuts' (else a cut's side inside a column leaves no edge spanning it,
+  // and the cells under the cut would be taken): a rectangle 600 wide under rectangles at any x,
+  // whose free part the staircase must be exactly, when it is one piece.
+  int wide = 0;
+  for (int n = 0; n < sanitized_share(40, 4); ++n) {
+    const Polygon pin{{{0, 0}, {600, 0}, {600, 12}, {0, 12}}, {}};
+    std::vector<Polygon> cuts;
+    for (int k = uni(1, 3); k > 0; --k) {
+      const int x0 = uni(1, 580), y0 = uni(-4, 8);
+      const int x1 = x0 + uni(1, 15), y1 = y0 + uni(1, 12);
+      cuts.push_back(Polygon{{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, {}});
+    }
+    const auto [expect, whole] = expected_staircase_cells(cells_in_pin(pin, 1, -1, -5, 601, 20, cuts), 1);
+    if (!whole) continue;
+    const std::optional<Polygon> st = router::pad_staircase(pin, 1, {}, cuts);
+    ASSERT_TRUE(st.has_value()) << "wide case " << n;
+    ASSERT_EQ(cells_in_pin(*st, 1, -1, -5, 601, 20), expect) << "wide case " << n;
+    ++wide;
+  }
   std::printf("%d pins with cuts (%d rectangles): %d staircases (%d the largest part; %d rectangles less rectangles), %d "
-              "with no cell left\n",
-              want, rectilinear, made, parts, exact, none);
+              "with no cell left; %d pins 600 wide under rectangles, each exactly its free part\n",
+              want, rectilinear, made, parts, exact, none, wide);
   EXPECT_GT(made, want / 2);
   EXPECT_GT(none, 0);
   EXPECT_GT(parts, 0);
+  EXPECT_GT(exact, 0);
+  EXPECT_GT(wide, 0);
 }
 
 // Pins more than NetSpace::kMaxStaircaseColumns (256) steps wide (refused over 4,096 until
