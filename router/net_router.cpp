@@ -2886,38 +2886,53 @@ NetRouter::Explained NetRouter::explain(const NetRouteFn& route, std::size_t net
   return e;
 }
 
+std::vector<Polygon> obstacles_under(const Polygon& pin, std::span<const Polygon> obstacles) {
+  std::vector<Polygon> out;
+  if (is_point_pin(pin)) return out;
+  const Box b = box_of(pin.outer);
+  for (const Polygon& o : obstacles)
+    if (boxes_meet(box_of(o.outer), b) && shape_meets_obstacle(pin, o)) out.push_back(o);
+  return out;
+}
+
+std::optional<Polygon> routable_pin(const Polygon& pin, std::span<const Polygon> under) {
+  if (!under.empty()) return pad_staircase(pin, 1, {}, under);
+  if (pin_shape_supported(pin)) return pin;
+  return pad_staircase(pin, 1);
+}
+
+ReachedPins reach_pins(std::span<const Polygon> pins, std::span<const Polygon> obstacles,
+                       const std::function<bool(const Polygon&)>& meets) {
+  ReachedPins r;
+  for (std::size_t i = 0; i < pins.size(); ++i) {
+    const std::vector<Polygon> under = meets(pins[i]) ? obstacles_under(pins[i], obstacles) : std::vector<Polygon>{};
+    r.cut = r.cut || !under.empty();
+    std::optional<Polygon> reached = routable_pin(pins[i], under);
+    if (!reached) {
+      r.failed = i;
+      r.failed_under = !under.empty();
+      return r;
+    }
+    r.pins.push_back(std::move(*reached));
+  }
+  return r;
+}
+
 namespace {
 
-// A route function's pins as its router takes them: since 2026-12-06 a shape pin that meets the
-// window's obstacles (a pad partly under other nets' grown wires or pins) as the staircase of its
-// part outside them (pad_staircase with those obstacles as cuts), and then a.claims false;
-// nullopt, with a's code and reason, when such a pin keeps no cell, or a pin is one the routers do
-// not take.
-template <class Meets>
-std::optional<std::vector<Polygon>> reachable_pins(const NetPins& net, const geom::NormalizedObstacles& obs, Meets meets,
-                                                   NetAttempt& a) {
-  std::vector<Polygon> out;
-  auto refuse = [&] {
+// A route function's pins as its router takes them (reach_pins): nullopt, with a's code and
+// reason, when a pin keeps no cell; a.claims false when a pin was cut (a pad partly under other
+// nets' grown wires or pins).
+std::optional<std::vector<Polygon>> reachable_pins(const NetPins& net, const geom::NormalizedObstacles& obs,
+                                                   const std::function<bool(const Polygon&)>& meets, NetAttempt& a) {
+  ReachedPins r = reach_pins(net.pins, obs.obstacles, meets);
+  if (r.failed) {
     a.code = "ROUTE-0005";
     a.reason = "a shape pin this router does not take here";
     return std::nullopt;
-  };
-  for (const Polygon& pin : net.pins) {
-    if (!is_point_pin(pin) && meets(pin)) {
-      const Box b = box_of(pin.outer);
-      std::vector<Polygon> under;
-      for (const Polygon& o : obs.obstacles)
-        if (boxes_meet(box_of(o.outer), b) && shape_meets_obstacle(pin, o)) under.push_back(o);
-      std::optional<Polygon> st = pad_staircase(pin, 1, {}, under);
-      if (!st) return refuse();
-      out.push_back(std::move(*st));
-      a.claims = false;
-      continue;
-    }
-    if (!pin_shape_supported(pin)) return refuse();
-    out.push_back(pin);
   }
-  return out;
+  if (r.cut) a.claims = false;
+  return std::move(r.pins);
 }
 
 // The route function of l1_router / oct_router: Router is L1Router or OctRouter; `lattice`:

@@ -319,6 +319,32 @@ std::optional<geom::Polygon> pad_staircase(const geom::Polygon& pin, std::int64_
                                            const std::function<bool(const geom::Polygon&)>& clear = {},
                                            std::span<const geom::Polygon> cuts = {});
 
+// The obstacles whose interior meets a shape pin's (none for a point pin): the cuts of
+// routable_pin.
+std::vector<geom::Polygon> obstacles_under(const geom::Polygon& pin, std::span<const geom::Polygon> obstacles);
+// A pin as the routers reach it (since 2026-12-06). One partly under obstacles (`under`,
+// obstacles_under) as the part outside them: the union of the unit lattice's cells in the pin
+// that meet none of their interiors (pad_staircase with cuts; exactly that part when the pin and
+// those obstacles are rectilinear and it is one piece; else its largest piece). One with an edge
+// at an angle other than 0, 45 or 90 degrees, which no router takes, as its staircase, the union
+// of the unit lattice's cells that lie in it, so a wire, whose vertices are integers, ends on a
+// lattice point of the pin. (Either way the largest part that is one polygon when the cells are
+// not.) nullopt when no cell is left (ROUTE-0005); `pin` itself when the routers take it.
+std::optional<geom::Polygon> routable_pin(const geom::Polygon& pin, std::span<const geom::Polygon> under = {});
+// A net's pins as a route function's router takes them (the CLI's route functions and the
+// library's route_with / route_bends): routable_pin of each, with the obstacles under it when
+// `meets` (the router's pin_meets_obstacle) says it meets them. `cut`: some pin was cut so (then
+// no shortest claim: a sloped cut takes whole cells, and a part in pieces is reached at its
+// largest). `failed`: the first pin with no cell left, `failed_under` whether obstacles met it.
+struct ReachedPins {
+  std::vector<geom::Polygon> pins;
+  bool cut = false;
+  std::optional<std::size_t> failed;
+  bool failed_under = false;
+};
+ReachedPins reach_pins(std::span<const geom::Polygon> pins, std::span<const geom::Polygon> obstacles,
+                       const std::function<bool(const geom::Polygon&)>& meets);
+
 class NetSpace {
  public:
   // obstacles: geom::normalize_obstacles() of the blockages in `domain`.

@@ -10,6 +10,7 @@
 // a shape, as taut route takes it).
 #include <functional>
 #include <iostream>
+#include <variant>
 
 #include <nlohmann/json.hpp>
 
@@ -17,6 +18,7 @@
 #include "io/layout_geometry.h"
 #include "router/bend_router.h"
 #include "router/l1_router.h"
+#include "router/net_router.h"
 #include "router/oct_router.h"
 #include "tools/cli.h"
 #include "tools/commands.h"
@@ -57,10 +59,6 @@ struct Target {
   std::optional<geom::Point> point;  // set for a point
   std::string label;                 // "--to 5,5" or "pin "pad" of net "clk" (demo.xml:29)"
   std::string name;                  // "5,5" or "pin "pad" of net "clk""
-  // what the routers reach (set by shape_refusal for a shape): the pin, or routable_pin's
-  // staircase (of its part outside the blockages it lies partly under, or of a shape with an edge
-  // at another angle than 0, 45 or 90 degrees); nullopt when it has none
-  std::optional<geom::Polygon> reach;
   std::vector<geom::Point> vertices() const {
     std::vector<geom::Point> v(pin.outer.begin(), pin.outer.end());
     for (const geom::Ring& h : pin.holes) v.insert(v.end(), h.begin(), h.end());
@@ -97,17 +95,14 @@ std::optional<Target> pin_target(const io::Layout& layout, const std::string& ne
   return std::nullopt;
 }
 
-// Sets what the routers reach of a shape target among `obstacles` (routable_pin: the part
-// outside the obstacles it lies partly under, or the staircase of one at another angle), or says
-// why nothing (ROUTE-0005 with the reason), else "".
-std::string shape_refusal(Target& t, std::span<const geom::Polygon> obstacles, const std::function<std::string()>& why_under) {
-  if (t.point) {
-    t.reach = t.pin;
-    return "";
-  }
-  const std::vector<geom::Polygon> under = obstacles_under(t.pin, obstacles);
-  t.reach = routable_pin(t.pin, under);
-  if (t.reach) return "";
+// What the routers reach of a target among `obstacles`: a point as it is, a shape as
+// router::routable_pin takes it (the part outside the obstacles it lies partly under, or the
+// staircase of one at another angle); or, when nothing is left, why (ROUTE-0005's words).
+std::variant<geom::Polygon, std::string> reach_of(const Target& t, std::span<const geom::Polygon> obstacles,
+                                                  const std::function<std::string()>& why_under) {
+  if (t.point) return t.pin;
+  const std::vector<geom::Polygon> under = router::obstacles_under(t.pin, obstacles);
+  if (std::optional<geom::Polygon> reach = router::routable_pin(t.pin, under)) return std::move(*reach);
   return t.label + " " + (under.empty() ? std::string(kNoStaircase) : why_under());
 }
 
@@ -122,20 +117,20 @@ int bend_path(const io::Layout& layout, const RoutingOptions& routing, geom::Poi
   const geom::NormalizedObstacles& norm = obs.norm;
   const router::BendRouter router(norm.domain, norm.obstacles);
   const router::BendMetric metric = link ? router::BendMetric::Link : router::BendMetric::Combined;
-  const std::string refused = shape_refusal(target, obs.norm.obstacles, [&] { return obs.why_under(layout, target.pin); });
-  if (!refused.empty()) {
-    print_usage_error("ROUTE-0005", refused);
+  const auto reach = reach_of(target, obs.norm.obstacles, [&] { return obs.why_under(layout, target.pin); });
+  if (const std::string* refused = std::get_if<std::string>(&reach)) {
+    print_usage_error("ROUTE-0005", *refused);
     if (json) {
       nlohmann::ordered_json j;
       j["metric"] = routing.metric;
       if (!link) j["bend_cost"] = c;
-      no_wire_json(j, refused);
+      no_wire_json(j, *refused);
       std::cout << j.dump() << '\n';
     }
     return kIncomplete;
   }
   const router::BendPath p = target.point ? router.path(from, *target.point, metric, c)
-                                          : router.path(geom::Polygon{{from}, {}}, *target.reach, metric, c);
+                                          : router.path(geom::Polygon{{from}, {}}, std::get<geom::Polygon>(reach), metric, c);
 
   nlohmann::ordered_json j;
   j["metric"] = routing.metric;
@@ -192,14 +187,14 @@ int bend_paths_to(const io::Layout& layout, const RoutingOptions& routing, const
   if (!link) j["bend_cost"] = c;
   if (to_pin.empty()) j["to"] = {target.point->x, target.point->y};
   else j["to_pin"] = {{"net", to_pin[0]}, {"pin", to_pin[1]}};
-  const std::string refused = shape_refusal(target, obs.norm.obstacles, [&] { return obs.why_under(layout, target.pin); });
-  if (!refused.empty()) {  // no structure: every record says why
-    print_usage_error("ROUTE-0005", refused);
+  const auto reach = reach_of(target, obs.norm.obstacles, [&] { return obs.why_under(layout, target.pin); });
+  if (const std::string* refused = std::get_if<std::string>(&reach)) {  // no structure: every record says why
+    print_usage_error("ROUTE-0005", *refused);
     auto paths = nlohmann::ordered_json::array();
     for (const geom::Point q : from) {
       nlohmann::ordered_json r;
       r["from"] = {q.x, q.y};
-      no_wire_json(r, refused);
+      no_wire_json(r, *refused);
       paths.push_back(std::move(r));
       if (!json) std::cout << point_text(q) << ": no wire (ROUTE-0005)\n";
     }
@@ -207,7 +202,7 @@ int bend_paths_to(const io::Layout& layout, const RoutingOptions& routing, const
     if (json) std::cout << j.dump() << '\n';
     return kIncomplete;
   }
-  const router::BendTargetMap map(router, *target.reach, metric, c);
+  const router::BendTargetMap map(router, std::get<geom::Polygon>(reach), metric, c);
   auto paths = nlohmann::ordered_json::array();
   int status = kOk;
   auto why = [&](geom::Point q) { return obs.why_not_free(layout, q); };
@@ -307,7 +302,7 @@ void add_path(CLI::App& app, int& status) {
     if (by_pin) {
       target = pin_target(*layout, args->to_pin[0], args->to_pin[1]);
     } else {
-      target = Target{geom::Polygon{{*to}, {}}, *to, "--to " + point_text(*to), point_text(*to), geom::Polygon{{*to}, {}}};
+      target = Target{geom::Polygon{{*to}, {}}, *to, "--to " + point_text(*to), point_text(*to)};
     }
     if (!target) {
       status = kInvalid;
@@ -342,14 +337,14 @@ void add_path(CLI::App& app, int& status) {
     const std::string under = std::string("lies partly under a blockage") + kNothingOutside;  // (no other nets here)
     if (oct) {
       router::OctRouter r(norm.domain, norm.obstacles);
-      const std::string refused = shape_refusal(*target, norm.obstacles, [&] { return under; });
-      if (!refused.empty()) return refuse(refused);
-      w = target->point ? r.shortest(*from, *target->point) : r.shortest(from_pin, *target->reach);
+      const auto reach = reach_of(*target, norm.obstacles, [&] { return under; });
+      if (const std::string* refused = std::get_if<std::string>(&reach)) return refuse(*refused);
+      w = target->point ? r.shortest(*from, *target->point) : r.shortest(from_pin, std::get<geom::Polygon>(reach));
     } else {
       router::L1Router r(norm.domain, norm.obstacles);
-      const std::string refused = shape_refusal(*target, norm.obstacles, [&] { return under; });
-      if (!refused.empty()) return refuse(refused);
-      router::L1Wire l = target->point ? r.shortest(*from, *target->point) : r.shortest(from_pin, *target->reach);
+      const auto reach = reach_of(*target, norm.obstacles, [&] { return under; });
+      if (const std::string* refused = std::get_if<std::string>(&reach)) return refuse(*refused);
+      router::L1Wire l = target->point ? r.shortest(*from, *target->point) : r.shortest(from_pin, std::get<geom::Polygon>(reach));
       w = {l.status, std::nullopt, std::move(l.polygonal), std::move(l.points)};
       if (l.length) w.length = geom::Root2{*l.length, 0};
     }

@@ -109,23 +109,18 @@ NetResult route_net(const io::Layout& layout, const io::Net& net, Router& router
   r.route.net = net.name;
   auto fail = [&](const char* code, std::string reason) { return failed(net, code, std::move(reason)); };
   if (auto few = too_few_pins(net)) return *few;
-  std::vector<geom::Polygon> geometry;
-  for (const io::Pin& pin : net.pins) geometry.push_back(io::pin_polygon(pin));
+  std::vector<geom::Polygon> shapes;
+  for (const io::Pin& pin : net.pins) shapes.push_back(io::pin_polygon(pin));
   // a pin cut by the obstacles (in the net router's windows, by other nets' grown wires and pins
   // too): no claim of the shortest (NetResult::claims), as the cut of a sloped obstacle takes whole
   // cells and a pin cut in pieces is reached at its largest
-  bool cut = false;
-  for (std::size_t i = 0; i < net.pins.size(); ++i) {
-    const io::Pin* pin = &net.pins[i];
-    geom::Polygon* g = &geometry[i];
-    const std::vector<geom::Polygon> under = router.pin_meets_obstacle(*g) ? obstacles_under(*g, obstacles) : std::vector<geom::Polygon>{};
-    cut = cut || !under.empty();
-    std::optional<geom::Polygon> reached = routable_pin(*g, under);  // (another slope, or under: a staircase)
-    if (!reached)
-      return fail("ROUTE-0005", "pin \"" + pin->name + "\" " +
-                                    (under.empty() ? std::string(kNoStaircase) : std::string(kPartlyUnder) + kNothingOutside));
-    *g = std::move(*reached);
-  }
+  router::ReachedPins reached =
+      router::reach_pins(shapes, obstacles, [&](const geom::Polygon& p) { return bool(router.pin_meets_obstacle(p)); });
+  if (reached.failed)
+    return fail("ROUTE-0005", "pin \"" + net.pins[*reached.failed].name + "\" " +
+                                  (reached.failed_under ? std::string(kPartlyUnder) + kNothingOutside : std::string(kNoStaircase)));
+  const bool cut = reached.cut;
+  const std::vector<geom::Polygon>& geometry = reached.pins;
   const io::Pin& a = net.pins[0];
   const io::Pin& b = net.pins[1];
   const geom::Polygon& ga = geometry[0];
@@ -321,17 +316,15 @@ NetResult route_net_bends(const io::Layout& layout, const io::Net& net, const Be
                           router::BendMetric metric, std::int64_t bend_cost) {
   auto fail = [&](const char* code, std::string reason) { return failed(net, code, std::move(reason)); };
   if (auto few = too_few_pins(net)) return *few;
-  std::vector<geom::Polygon> geometry;
-  bool cut = false;  // (as in route_net)
-  for (const io::Pin& pin : net.pins) {
-    const geom::Polygon g = io::pin_polygon(pin);
-    const std::vector<geom::Polygon> under = router.pin_meets_obstacle(g) ? obstacles_under(g, obstacles) : std::vector<geom::Polygon>{};
-    cut = cut || !under.empty();
-    std::optional<geom::Polygon> reached = routable_pin(g, under);  // (another slope, or under: a staircase)
-    if (!reached)
-      return fail("ROUTE-0005", "pin \"" + pin.name + "\" " + (under.empty() ? std::string(kNoStaircase) : obs.why_under(layout, g)));
-    geometry.push_back(std::move(*reached));
-  }
+  std::vector<geom::Polygon> shapes;
+  for (const io::Pin& pin : net.pins) shapes.push_back(io::pin_polygon(pin));
+  router::ReachedPins reached =  // (as in route_net)
+      router::reach_pins(shapes, obstacles, [&](const geom::Polygon& p) { return bool(router.pin_meets_obstacle(p)); });
+  if (reached.failed)
+    return fail("ROUTE-0005", "pin \"" + net.pins[*reached.failed].name + "\" " +
+                                  (reached.failed_under ? obs.why_under(layout, shapes[*reached.failed]) : std::string(kNoStaircase)));
+  const bool cut = reached.cut;
+  const std::vector<geom::Polygon>& geometry = reached.pins;
   const router::BendTree t =
       router.tree(geometry[0], std::span<const geom::Polygon>(geometry).subspan(1), metric, bend_cost);
   const io::Pin& a = net.pins[0];

@@ -87,24 +87,6 @@ std::string BendObstacles::why_under(const io::Layout& layout, const geom::Polyg
 
 std::string point_text(geom::Point p) { return std::to_string(p.x) + "," + std::to_string(p.y); }
 
-std::vector<geom::Polygon> obstacles_under(const geom::Polygon& pin, std::span<const geom::Polygon> obstacles) {
-  std::vector<geom::Polygon> out;
-  if (router::is_point_pin(pin)) return out;
-  const geom::Box b = geom::bounding_box(pin.outer);
-  for (const geom::Polygon& o : obstacles) {
-    const geom::Box ob = geom::bounding_box(o.outer);
-    if (ob.hi.x <= b.lo.x || ob.lo.x >= b.hi.x || ob.hi.y <= b.lo.y || ob.lo.y >= b.hi.y) continue;
-    if (router::shape_meets_obstacle(pin, o)) out.push_back(o);
-  }
-  return out;
-}
-
-std::optional<geom::Polygon> routable_pin(const geom::Polygon& pin, std::span<const geom::Polygon> under) {
-  if (!under.empty()) return router::pad_staircase(pin, 1, {}, under);
-  if (router::pin_shape_supported(pin)) return pin;
-  return router::pad_staircase(pin, 1);
-}
-
 const char* const kPartlyUnder =
     "lies partly under a blockage (or, among the other nets, within the clearance of their wires and pins)";
 const char* const kNothingOutside =

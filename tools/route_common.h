@@ -52,18 +52,7 @@ std::string why_not_free(const io::Layout& layout, geom::Point p);
 // "x,y" of a point.
 std::string point_text(geom::Point p);
 
-// The obstacles (normalized) whose interiors meet a shape pin's interior; none for a point.
-std::vector<geom::Polygon> obstacles_under(const geom::Polygon& pin, std::span<const geom::Polygon> obstacles);
-// A shape pin as the routers reach it (since 2026-12-06). One partly under obstacles (`under`,
-// obstacles_under) as the part outside them: the union of the unit lattice's cells in the pin
-// that meet none of their interiors (router::pad_staircase with cuts; exactly that part when the
-// pin and those obstacles are rectilinear and it is one piece; else its largest piece). One with an edge at an angle other than 0, 45 or 90
-// degrees, which no router takes, as its staircase, the union of the unit lattice's cells that
-// lie in it, so a wire, whose vertices are integers, ends on a lattice point of the pin. (Either
-// way the largest part that is one polygon when the cells are not.) nullopt when no cell is left
-// (then ROUTE-0005: kNoStaircase, or why it is under); `pin` itself when the routers take it.
-std::optional<geom::Polygon> routable_pin(const geom::Polygon& pin, std::span<const geom::Polygon> under = {});
-// Why routable_pin() has none, after "pin "p" ", for a pin under no obstacle.
+// Why router::routable_pin() (router::reach_pins) has none, after "pin "p" ", for a pin under no obstacle.
 extern const char* const kNoStaircase;
 // The words for a pin under obstacles that routable_pin() leaves nothing of: kPartlyUnder (or a
 // blockage named), then kNothingOutside.
