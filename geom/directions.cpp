@@ -29,18 +29,16 @@ std::optional<LatticeDirections> LatticeDirections::from_mask(unsigned mask) {
   return LatticeDirections(mask);
 }
 
-std::optional<LatticeDirections> LatticeDirections::parse(std::string_view text) {
-  if (text == "rectilinear") return rectilinear();
-  if (text == "octilinear") return octilinear();
+std::optional<std::vector<int>> whole_degrees(std::string_view text) {
   if (text.substr(0, 2) != "c:") return std::nullopt;
   std::string_view rest = text.substr(2);
-  unsigned mask = 0;
+  std::vector<int> out;
   while (true) {
     const std::size_t comma = rest.find(',');
     const std::string_view tok = rest.substr(0, comma);
     // digits with at most one '.' (as the CLI's other commands read them: "90", "090", "90.",
-    // ".5"), exactly a multiple of 45: the fraction all zeros, the integer part taken modulo 180
-    // digit by digit (any length, no overflow)
+    // ".5"), a whole number: the fraction all zeros, the integer part taken modulo 180 digit by
+    // digit (any length, no overflow)
     const std::size_t dot = tok.find('.');
     const std::string_view ip = tok.substr(0, dot);
     const std::string_view fp = dot == std::string_view::npos ? std::string_view{} : tok.substr(dot + 1);
@@ -52,10 +50,22 @@ std::optional<LatticeDirections> LatticeDirections::parse(std::string_view text)
     }
     for (const char c : fp)
       if (c != '0') return std::nullopt;  // a '.' or sign here, or a fraction that is not zero
-    if (deg % 45 != 0) return std::nullopt;
-    mask |= 1u << (deg / 45);
+    out.push_back(deg);
     if (comma == std::string_view::npos) break;
     rest = rest.substr(comma + 1);
+  }
+  return out;
+}
+
+std::optional<LatticeDirections> LatticeDirections::parse(std::string_view text) {
+  if (text == "rectilinear") return rectilinear();
+  if (text == "octilinear") return octilinear();
+  const std::optional<std::vector<int>> degrees = whole_degrees(text);
+  if (!degrees) return std::nullopt;
+  unsigned mask = 0;
+  for (const int deg : *degrees) {
+    if (deg % 45 != 0) return std::nullopt;
+    mask |= 1u << (deg / 45);
   }
   return from_mask(mask);
 }

@@ -34,6 +34,12 @@
 
 namespace taut::geom {
 
+// The directions of a "c:<deg>,<deg>,..." set when each is a whole number of degrees written
+// exactly (digits with at most one '.', any fraction all zeros: "45", "045", "45.0", "90.",
+// ".0"), each taken modulo 180, in the order written; nullopt for anything else ("c:0,22.5",
+// "c:-45,45", "any").
+std::optional<std::vector<int>> whole_degrees(std::string_view orientations);
+
 class LatticeDirections {
  public:
   static LatticeDirections rectilinear() { return LatticeDirections(0b0101); }

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "geom/directions.h"
+#include "geom/root3_directions.h"
 #include "geom/normalize.h"
 #include "geom/triangulation.h"
 #include "io/layout_geometry.h"
@@ -185,23 +186,30 @@ void add_check(CLI::App& app, int& status) {
       if (layout->routes) {
         // The length and bends written for each routed net equal those recomputed from its
         // wires, and with <routes orientations="rectilinear">, "octilinear" or another lattice c:
-        // set (geom/directions.h) every wire segment runs in those directions (CHECK-0002, the first offending segment of each route); then
+        // set (geom/directions.h) every wire segment runs in those directions, and with a c: set
+        // at multiples of 30 degrees such as c:0,60,120 (geom/root3_directions.h, since
+        // 2026-12-07) in them within the rounding of its ends (CHECK-0002, the first offending
+        // segment of each route); then
         // the independent checker (router/check.h): free space, connectivity, shorts and the
         // clearance of <rules>.
         int mismatches = 0, off_orientation = 0, failed_with_wires = 0;
         const std::string& orientations = layout->routes->orientations;
         // rectilinear, octilinear and the other lattice c: sets (multiples of 45 degrees)
         const std::optional<geom::LatticeDirections> set = geom::LatticeDirections::parse(orientations);
-        const bool check_directions = set.has_value();
+        // c:0,60,120 and the other sets at multiples of 30 degrees: integer vertices cannot follow
+        // them exactly, so within the rounding of each end (half a unit in x and y)
+        const std::optional<geom::Root3Directions> set30 = set ? std::nullopt : geom::Root3Directions::parse(orientations);
+        const bool check_directions = set || set30;
         std::string set_words;  // "horizontal or vertical", "at 0, 45, 90 or 135 degrees", ...
         if (set && set->is_rectilinear()) {
           set_words = "horizontal or vertical";
-        } else if (set) {
-          const std::vector<int> deg = set->degrees();
+        } else if (check_directions) {
+          const std::vector<int> deg = set ? set->degrees() : set30->degrees();
           set_words = "at ";
           for (std::size_t k = 0; k < deg.size(); ++k)
             set_words += (k == 0 ? "" : k + 1 == deg.size() ? " or " : ", ") + std::to_string(deg[k]);
           set_words += " degrees";
+          if (set30) set_words += " within the rounding of its ends (half a unit in x and in y each)";
         }
         for (const io::Route& r : layout->routes->routes) {
           if (r.status != "routed") {
@@ -245,7 +253,7 @@ void add_check(CLI::App& app, int& status) {
               const geom::Point a = w.points[i - 1], b = w.points[i];
               const std::int64_t dx = std::int64_t{b.x} - a.x, dy = std::int64_t{b.y} - a.y;
               if (dx == 0 && dy == 0) continue;
-              if (set->along(dx, dy)) continue;
+              if (set ? set->along(dx, dy) : set30->fits(dx, dy)) continue;
               reported = true;
               ++off_orientation;
               Diagnostic d{Severity::Error, "CHECK-0002", args->file, r.line, 0,

@@ -178,5 +178,43 @@ TEST(Cli, CheckRoutesOrientations) {
   EXPECT_EQ(nlohmann::json::parse(r.out)["routes_check"]["orientations"], "not checked");
 }
 
+// With a set at multiples of 30 degrees (since 2026-12-07) integer vertices cannot follow 60
+// degrees exactly: a segment passes when moving each end by at most half a unit in x and y puts
+// it on a direction of the set (geom::Root3Directions::fits), and the first that does not is
+// named (CHECK-0002). 0,0 -> 10,17 -> 30,17 is 60 then 0 degrees after rounding (10 sqrt3 =
+// 17.32); 0,0 -> 10,22 is not (11 sqrt3 = 19.05 < 21); c:0,90,45 is a lattice set, checked
+// exactly; c:0,10,100 is not checked.
+TEST(Cli, CheckRoutesInASetAtMultiplesOf30Degrees) {
+  const std::string dir = temp_dir("routes_orientations30");
+  auto layout = [](const std::string& orientations, const std::string& points, const std::string& length) {
+    return "<layout name=\"r\" version=\"1\">\n"
+           "  <net name=\"a\"><pin name=\"p\" x=\"0\" y=\"0\"/><pin name=\"q\" x=\"30\" y=\"17\"/></net>\n"
+           "  <routes tool=\"test\" orientations=\"" + orientations + "\">\n"
+           "    <route net=\"a\" status=\"routed\" length=\"" + length + "\" bends=\"1\"><wire points=\"" + points +
+           "\"/></route>\n  </routes>\n</layout>\n";
+  };
+  write_text(dir + "/hex.xml", layout("c:0,60,120", "0,0 10,17 30,17", "39.723"));
+  auto r = run_taut({"check", dir + "/hex.xml"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("c:0,60,120 orientations ok"), std::string::npos) << r.out;
+  write_text(dir + "/off.xml", layout("c:120,0,60", "0,0 10,22 30,17", "44.782"));
+  r = run_taut({"check", dir + "/off.xml", "--json"});
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find(dir + "/off.xml:4: error: [CHECK-0002] route \"a\": the wire segment 0,0 10,22 is not at 0, "
+                             "60 or 120 degrees within the rounding of its ends"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("10,22 30,17"), std::string::npos) << r.err;  // the first offending segment only
+  EXPECT_EQ(nlohmann::json::parse(r.out)["routes_check"]["orientations"], "failed");
+  write_text(dir + "/lattice.xml", layout("c:0,90,45", "0,0 10,17 30,17", "39.723"));
+  r = run_taut({"check", dir + "/lattice.xml"});
+  EXPECT_EQ(r.status, 1) << r.err;  // 10,17 is not at 45 degrees, exactly
+  EXPECT_NE(r.err.find("the wire segment 0,0 10,17 is not at 0, 45 or 90 degrees (<routes"), std::string::npos) << r.err;
+  write_text(dir + "/ten.xml", layout("c:0,10,100", "0,0 10,22 30,17", "44.782"));
+  r = run_taut({"check", dir + "/ten.xml", "--json"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["routes_check"]["orientations"], "not checked");
+}
+
 }  // namespace cli_test
 }  // namespace taut::test
