@@ -26,6 +26,7 @@
 #include <nlohmann/json.hpp>
 
 #include "geom/directions.h"
+#include "geom/root3_directions.h"
 #include "geom/triangulation.h"
 #include "io/layout_geometry.h"
 #include "io/layout_writer.h"
@@ -174,7 +175,13 @@ void add_tighten(CLI::App& app, int& status) {
         print_usage_error("CLI-0027", "tighten: --orientations " + o +
                                           ": expected rectilinear, octilinear, any, or a c: set of directions at "
                                           "multiples of 45 degrees, two orientations at least (a direction at "
-                                          "another angle has no integer step, and wire vertices are integers)");
+                                          "another angle has no integer step, and wire vertices are integers" +
+                                          (geom::Root3Directions::parse(o)
+                                               ? std::string("; a set at multiples of 30 degrees such as this one is "
+                                                             "checked by taut check, with vertices rounded, but not "
+                                                             "written yet")
+                                               : std::string()) +
+                                          ")");
         status = kInvalid;
         return;
       }

@@ -1354,10 +1354,17 @@ TEST(Tighten, BadInputExit2AndWritesNothing) {
   run = run_taut({"tighten", layout_file("tighten_bad_pinch", pinch), "-o", dir + "/t.xml"});
   EXPECT_EQ(run.status, 2) << run.err;
   EXPECT_NE(run.err.find("passes through a point where blockages touch at or after 60,60"), std::string::npos) << run.err;
-  // c: sets other than the rectilinear and octilinear directions are not available
+  // c: sets with directions that are not multiples of 45 degrees are not written (a set at
+  // multiples of 30 is checked by taut check, and the message says so; c:0,10 is not)
   run = run_taut({"tighten", file, "-o", dir + "/t.xml", "--orientations", "c:0,60,120"});
   EXPECT_EQ(run.status, 2) << run.err;
   EXPECT_NE(run.err.find("[CLI-0027]"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("checked by taut check, with vertices rounded, but not written yet"), std::string::npos) << run.err;
+  EXPECT_EQ(read_text(dir + "/t.xml"), "old");
+  run = run_taut({"tighten", file, "-o", dir + "/t.xml", "--orientations", "c:0,10"});
+  EXPECT_EQ(run.status, 2) << run.err;
+  EXPECT_NE(run.err.find("[CLI-0027]"), std::string::npos) << run.err;
+  EXPECT_EQ(run.err.find("checked by taut check"), std::string::npos) << run.err;
   EXPECT_EQ(read_text(dir + "/t.xml"), "old");
 }
 
