@@ -123,7 +123,7 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "--orientations: any or a c: set of directions at multiples of 45 degrees\n");
       return 2;
     }
-    if (!bends) set_orient = taut::router::TightenOrientations{lattice};
+    if (!bends) set_orient = taut::router::TightenOrientations{lattice, std::nullopt};
   }
   const taut::router::BendMetric bm = metric == "link" ? taut::router::BendMetric::Link : taut::router::BendMetric::Combined;
   if (metric == "link") bend_cost = 0;

@@ -16,7 +16,9 @@
 // router::OnlineTightener with the current path read after every point (a path per point, so
 // it is expected to cost more than one tightening at the end). Then the time to write every taut
 // wire in rectilinear, octilinear, c:0,45 and c:45,135 directions (router::c_oriented: the fewest-link
-// staircases of the class, best of R, as a ratio to tightening them), and the minimum-link paths
+// staircases of the class, best of R, as a ratio to tightening them), the same in c:0,60,120
+// (router::Root3StaircaseBuilder: exact in Q(sqrt3), rounded, each tightened back as the CLI
+// checks it; one run, as a ratio to tightening and to the rectilinear output), and the minimum-link paths
 // of the first 1,000 (router::MinLinker: time, links against the shortest wire's, and
 // the longest exact coordinate written out), minimum-link octilinear and c:0,45,90 paths of the
 // same wires (router::CMinLinker, section 6.3: time, links against the shortest wire's in that
@@ -38,7 +40,9 @@
 
 #include "bench/bench_util.h"
 #include "bench/free_points.h"
+#include "geom/root3_directions.h"
 #include "geom/triangulation.h"
+#include "router/root3_staircase.h"
 #include "router/spm.h"
 #include "router/c_minlink.h"
 #include "router/minlink.h"
@@ -183,6 +187,28 @@ int main(int argc, char** argv) {
             }
           },
           reps);
+    // a set at multiples of 30 degrees (router/root3_staircase.h: exact in Q(sqrt3), rounded, each
+    // rounded wire tightened back to check it, as the CLI does)
+    const taut::geom::Root3Directions hex = *taut::geom::Root3Directions::parse("c:0,60,120");
+    const taut::router::Root3StaircaseBuilder sb30(D, b.norm.obstacles);
+    int hex_missing = 0, hex_pinched = 0, hex_unrounded = 0;
+    long long hex_links = 0, hex_moved = 0;
+    const double t_hex = seconds_of(
+        [&] {
+          hex_missing = hex_pinched = hex_unrounded = 0;
+          hex_links = hex_moved = 0;
+          for (const auto& t : taut_paths) {
+            const auto w = sb30.staircase(t, hex, [&](Point p, Point q) {
+              return tight.tighten(std::vector<Point>{p, q}).status == taut::router::TightenStatus::Ok;
+            });
+            const bool ok = w.ok() && tight.tighten(w.points).points == t;
+            hex_missing += !ok;
+            hex_pinched += !w.ok() && w.why.rfind("no staircase", 0) == 0;
+            hex_unrounded += !w.ok() && w.why.rfind("rounded", 0) == 0;
+            if (ok) hex_links += static_cast<long long>(w.points.size()) - 1, hex_moved += w.moved;
+          }
+        },
+        1);
     taut_paths.resize(std::min<std::size_t>(taut_paths.size(), 1000));  // min-link: the first 1,000
     // minimum-link paths of the same taut wires (router::MinLinker, exact rationals)
     const taut::router::MinLinker ml(tri);
@@ -321,6 +347,13 @@ int main(int argc, char** argv) {
                   "", c_sets[o].name().c_str(), sketches.size(), t_c[o],
                   t_c[o] / static_cast<double>(sketches.size()) * 1e3, t_c[o] / t_tighten, c_missing[o],
                   static_cast<double>(c_links[o]) / static_cast<double>(sketches.size() - static_cast<std::size_t>(c_missing[o])));
+    std::printf("%9s %s output of the %zu taut wires: %.3f s (%.3f ms per wire, %.1f x tightening one, %.1f x "
+                "rectilinear output), %d without a wire in the set (%d pinched, %d no free rounding, the rest not "
+                "tightened back), %.2f links per wire, %lld vertices off their nearest integer point\n",
+                "", hex.name().c_str(), sketches.size(), t_hex, t_hex / static_cast<double>(sketches.size()) * 1e3,
+                t_hex / t_tighten, t_hex / t_c[0], hex_missing, hex_pinched, hex_unrounded,
+                static_cast<double>(hex_links) / static_cast<double>(sketches.size() - static_cast<std::size_t>(hex_missing)),
+                hex_moved);
     std::printf("%9s minimum-link paths of the first 1,000 wires: %.3f s (%.2f ms per wire, %.1f x tightening one), "
                 "%.2f links per wire against %.2f for the shortest, longest coordinate %zu characters\n",
                 "", t_minlink, t_minlink / static_cast<double>(taut_paths.size()) * 1e3,

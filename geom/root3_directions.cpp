@@ -69,6 +69,15 @@ bool Root3Directions::along(i64 dx, i64 dy) const {
   return false;
 }
 
+bool Root3Directions::cones_leave_box() const {
+  for (std::size_t i = 0; i < steps_.size(); ++i) {
+    const Step& a = steps_[i];
+    const Step& b = steps_[(i + 1) % steps_.size()];
+    if (a.x.sign() * b.x.sign() < 0 || a.y.sign() * b.y.sign() < 0) return true;
+  }
+  return false;
+}
+
 int Root3Directions::cone(i64 dx, i64 dy) const {
   const std::size_t n = steps_.size();
   for (std::size_t i = 0; i < n; ++i)

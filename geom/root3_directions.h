@@ -56,6 +56,9 @@ class Root3Directions {
   const std::vector<Step>& steps() const { return steps_; }
   // v (not zero, |dx|, |dy| < 2^40) lies exactly along one of the steps (only the axes can).
   bool along(std::int64_t dx, std::int64_t dy) const;
+  // Some cone is wider than 90 degrees (its two steps do not lie in one closed quadrant, as 60
+  // and 120 degrees in c:0,60,120), so a staircase in it leaves the box of its link's ends.
+  bool cones_leave_box() const;
   // The open cone holding v's direction (v not zero), or -1 when v lies along a step.
   int cone(std::int64_t dx, std::int64_t dy) const;
   // Twelve times the length of the shortest path in the set from 0 to (dx, dy) (|dx|, |dy| <

@@ -1627,23 +1627,6 @@ Rational twice_signed_area(const std::vector<RPoint>& ring) {
   return a2;
 }
 
-int RationalRoot2::sign() const {
-  const int sa = a.sign(), sb = b.sign();
-  if (sa >= 0 && sb >= 0) return (sa > 0 || sb > 0) ? 1 : 0;
-  if (sa <= 0 && sb <= 0) return (sa < 0 || sb < 0) ? -1 : 0;
-  // opposite signs: a + b sqrt2 has a's sign when a^2 > 2 b^2 (never equal: sqrt2 is irrational)
-  const Rational d = a * a - 2 * b * b;
-  return sa > 0 ? d.sign() : -d.sign();
-}
-double RationalRoot2::to_double() const {
-  return a.convert_to<double>() + b.convert_to<double>() * 1.4142135623730951;
-}
-std::int64_t RationalRoot2::floor() const {
-  std::int64_t f = static_cast<std::int64_t>(std::floor(to_double()));
-  while ((*this - RationalRoot2(Rational(f))).sign() < 0) --f;
-  while ((*this - RationalRoot2(Rational(f + 1))).sign() >= 0) ++f;
-  return f;
-}
 RationalRoot2 twice_signed_area(const std::vector<R2Point>& ring) {
   RationalRoot2 a2;
   for (std::size_t i = 0, n = ring.size(); i < n; ++i) {

@@ -79,18 +79,12 @@
 #include <string>
 #include <vector>
 
-#include <boost/multiprecision/gmp.hpp>
-
 #include "geom/root2.h"
 #include "geom/types.h"
+#include "router/rational_root.h"
 
 namespace taut::router {
 
-// Exact rationals for the map's cell vertices: bisectors sit at half-integers and meet sloped
-// blockage edges at rationals whose numerators pass 2^64, so no fixed-width integer pair holds
-// them. Boost.Multiprecision over GMP's mpq (always reduced) keeps them exact; its header-only
-// cpp_rational was 4x slower here.
-using Rational = boost::multiprecision::mpq_rational;
 struct RPoint {
   Rational x, y;
   friend bool operator==(const RPoint&, const RPoint&) = default;
@@ -99,34 +93,6 @@ struct RPoint {
 // Twice the signed area of a ring (positive: counter-clockwise).
 Rational twice_signed_area(const std::vector<RPoint>& ring);
 
-// Exact numbers a + b sqrt2 with rational a and b (the field Q(sqrt2)): the octilinear map's
-// cell vertices, where bisectors whose slopes lie in Q(sqrt2) meet. Signs are exact: a + b sqrt2
-// with a and b of opposite signs compares a^2 with 2 b^2.
-struct RationalRoot2 {
-  Rational a, b;
-  RationalRoot2() = default;
-  RationalRoot2(Rational a_, Rational b_ = 0) : a(std::move(a_)), b(std::move(b_)) {}
-  explicit RationalRoot2(const geom::Root2& r) : a(r.a), b(r.b) {}
-  int sign() const;
-  friend RationalRoot2 operator+(const RationalRoot2& x, const RationalRoot2& y) { return {x.a + y.a, x.b + y.b}; }
-  friend RationalRoot2 operator-(const RationalRoot2& x, const RationalRoot2& y) { return {x.a - y.a, x.b - y.b}; }
-  friend RationalRoot2 operator-(const RationalRoot2& x) { return {-x.a, -x.b}; }
-  friend RationalRoot2 operator*(const RationalRoot2& x, const RationalRoot2& y) {
-    return {x.a * y.a + 2 * x.b * y.b, x.a * y.b + x.b * y.a};
-  }
-  // y != 0
-  friend RationalRoot2 operator/(const RationalRoot2& x, const RationalRoot2& y) {
-    const Rational n = y.a * y.a - 2 * y.b * y.b;  // nonzero: sqrt2 is irrational
-    return {(x.a * y.a - 2 * x.b * y.b) / n, (x.b * y.a - x.a * y.b) / n};
-  }
-  friend bool operator==(const RationalRoot2&, const RationalRoot2&) = default;
-  friend bool operator<(const RationalRoot2& x, const RationalRoot2& y) { return (x - y).sign() < 0; }
-  friend bool operator<=(const RationalRoot2& x, const RationalRoot2& y) { return (x - y).sign() <= 0; }
-  friend bool operator>(const RationalRoot2& x, const RationalRoot2& y) { return (x - y).sign() > 0; }
-  // The largest integer not above it (exact; a floating estimate corrected by exact signs).
-  std::int64_t floor() const;
-  double to_double() const;  // for pictures and messages only
-};
 struct R2Point {
   RationalRoot2 x, y;
   friend bool operator==(const R2Point&, const R2Point&) = default;

@@ -32,6 +32,7 @@ SpaceTightener::SpaceTightener(const geom::NormalizedObstacles& norm, TightenOri
     so.snap_scale = snap_scale;
     sb_ = std::make_unique<StaircaseBuilder>(norm.domain, norm.obstacles, so);
   }
+  if (orientations_.set30) sb30_ = std::make_unique<Root3StaircaseBuilder>(norm.domain, norm.obstacles);
 }
 
 bool SpaceTightener::is_loop(std::span<const Point> line) {
@@ -73,6 +74,26 @@ SpaceTightener::Result SpaceTightener::run(std::span<const Point> line) const {
       return r;
     }
     r.points = std::move(c.points);
+  }
+  if (sb30_) {
+    // The exact wire rounded; tightening it back to the taut wire checks that it is free and in
+    // the class (as c_oriented does for the lattice sets).
+    Root3Wire w = sb30_->staircase(r.taut.points, *orientations_.set30, [&](Point p, Point q) {
+      return tight_->tighten(std::vector<Point>{p, q}).status == TightenStatus::Ok;
+    });
+    if (w.ok()) {
+      const Tightened back = tight_->tighten(w.points);
+      if (back.status != TightenStatus::Ok || back.points != r.taut.points)
+        w.why = "rounded to integer vertices, its wire in " + orientations_.set30->name() +
+                (back.status != TightenStatus::Ok ? " leaves free space" : " changes its class");
+    }
+    if (!w.ok()) {
+      r.no_staircase = true;
+      r.why = std::move(w.why);
+      r.points.clear();
+      return r;
+    }
+    r.points = std::move(w.points);
   }
   if (r.points.size() == 1) r.points.push_back(r.points[0]);
   return r;

@@ -53,21 +53,25 @@
 #include "geom/triangulation.h"
 #include "geom/types.h"
 #include "router/net_router.h"
+#include "router/root3_staircase.h"
 #include "router/staircase.h"
 #include "router/tighten.h"
 
 namespace taut::router {
 
-// The output's directions: any angle (no set: the Euclidean taut wire) or a lattice direction
-// set (geom/directions.h: rectilinear, octilinear, c:0,45, c:45,135, ...).
+// The output's directions: any angle (no set: the Euclidean taut wire), a lattice direction
+// set (geom/directions.h: rectilinear, octilinear, c:0,45, c:45,135, ...), or (since 2026-12-07,
+// SpaceTightener only: not NetsTightener) a set at multiples of 30 degrees
+// (geom/root3_directions.h: c:0,60,120, ...), written rounded (router/root3_staircase.h).
 struct TightenOrientations {
   std::optional<geom::LatticeDirections> set;
+  std::optional<geom::Root3Directions> set30;
   static const TightenOrientations Any, Rectilinear, Octilinear;
   friend bool operator==(const TightenOrientations&, const TightenOrientations&) = default;
 };
 inline const TightenOrientations TightenOrientations::Any{};
-inline const TightenOrientations TightenOrientations::Rectilinear{geom::LatticeDirections::rectilinear()};
-inline const TightenOrientations TightenOrientations::Octilinear{geom::LatticeDirections::octilinear()};
+inline const TightenOrientations TightenOrientations::Rectilinear{geom::LatticeDirections::rectilinear(), std::nullopt};
+inline const TightenOrientations TightenOrientations::Octilinear{geom::LatticeDirections::octilinear(), std::nullopt};
 
 // Tightening in one space: the free-space triangulation of normalized obstacles, the tightener,
 // and for output in a lattice direction set the staircase builder.
@@ -81,7 +85,9 @@ class SpaceTightener {
     Tightened taut;                   // the lift and the Euclidean shortest path of the class
     std::vector<geom::Point> points;  // in the orientations (a repeated point for a one-point wire)
     bool no_staircase = false;        // c-oriented: no lattice staircase in the class, or (snap_scale
-                                      // > 1) one too fine to snap back
+                                      // > 1) one too fine to snap back; a set at multiples of 30
+                                      // degrees: no wire (why)
+    std::string why;                  // a set at multiples of 30 degrees: why there is no wire
     bool loop = false;                // the line was closed: `points` is the shortest closed loop
     bool contractible = false;        // a loop that winds around nothing
   };
@@ -97,6 +103,7 @@ class SpaceTightener {
   geom::FreeSpaceTriangulation tri_;
   std::unique_ptr<Tightener> tight_;
   std::unique_ptr<StaircaseBuilder> sb_;
+  std::unique_ptr<Root3StaircaseBuilder> sb30_;
 };
 
 using NetLines = std::vector<std::vector<geom::Point>>;

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "geom/directions.h"
+#include "geom/root3_directions.h"
 #include "geom/predicates.h"
 #include "io/layout_geometry.h"
 #include "router/bend_router.h"
@@ -127,7 +128,7 @@ nlohmann::ordered_json together_stats_json(const router::NetsTightenStats& s) {
 }
 
 router::TightenOrientations tighten_orientations(const std::string& orientations) {
-  return {geom::LatticeDirections::parse(orientations)};
+  return {geom::LatticeDirections::parse(orientations), geom::Root3Directions::parse(orientations)};
 }
 
 WireTightener::WireTightener(const geom::NormalizedObstacles& norm, const std::string& orientations)

@@ -167,25 +167,29 @@ void add_tighten(CLI::App& app, int& status) {
   sub->callback([args, &status] {
     using Clock = std::chrono::steady_clock;
     const auto t0 = Clock::now();
-    // The output's directions: any, or a lattice direction set by its name (c:0,90 is rectilinear).
+    // The output's directions: any, a lattice direction set by its name (c:0,90 is rectilinear),
+    // or (since 2026-12-07) a set at multiples of 30 degrees such as c:0,60,120, written with its
+    // exact vertices rounded (router/root3_staircase.h), not yet with --clearance or --min-link.
+    const std::string not_with30 = args->clearance ? "--clearance" : args->min_link ? "--min-link" : "";
     std::string o = args->orientations;
     if (!o.empty() && o != "any") {
       const auto set = geom::LatticeDirections::parse(o);
-      if (!set) {
+      const auto set30 = geom::Root3Directions::parse(o);
+      if (set) {
+        o = set->name();
+      } else if (set30 && not_with30.empty()) {
+        o = set30->name();
+      } else {
         print_usage_error("CLI-0027", "tighten: --orientations " + o +
-                                          ": expected rectilinear, octilinear, any, or a c: set of directions at "
-                                          "multiples of 45 degrees, two orientations at least (a direction at "
-                                          "another angle has no integer step, and wire vertices are integers" +
-                                          (geom::Root3Directions::parse(o)
-                                               ? std::string("; a set at multiples of 30 degrees such as this one is "
-                                                             "checked by taut check, with vertices rounded, but not "
-                                                             "written yet")
-                                               : std::string()) +
-                                          ")");
+                                          (set30 ? ": a set at multiples of 30 degrees is written (vertices rounded) "
+                                                   "without " + not_with30 + " only, not with it yet"
+                                                 : ": expected rectilinear, octilinear, any, a c: set of directions at "
+                                                   "multiples of 45 degrees, two orientations at least, or one at "
+                                                   "multiples of 30 degrees such as c:0,60,120 (a direction at "
+                                                   "another angle is not available)"));
         status = kInvalid;
         return;
       }
-      o = set->name();
     }
     const auto layout = load_layout(args->file, args->load);
     if (!layout) {
@@ -196,14 +200,19 @@ void add_tighten(CLI::App& app, int& status) {
     if (orientations.empty()) {
       orientations = layout->rules ? layout->rules->orientations : "rectilinear";
       if (orientations != "any") {
+        const auto set30 = geom::Root3Directions::parse(orientations);
         if (const auto set = geom::LatticeDirections::parse(orientations)) {
           orientations = set->name();
+        } else if (set30 && not_with30.empty()) {
+          orientations = set30->name();
         } else {
           print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0003", layout->file, layout->rules->line, 0,
-                                        "<rules orientations=\"" + orientations +
-                                            "\">: a direction at an angle other than a multiple of 45 degrees has "
-                                            "no integer step, and wire vertices are integers; tightened wires are "
-                                            "written at any angle"}},
+                                        "<rules orientations=\"" + orientations + "\">: " +
+                                            (set30 ? "a set at multiples of 30 degrees is not written with " + not_with30 +
+                                                         " yet"
+                                                   : std::string("a direction at an angle other than a multiple of 30 "
+                                                                 "or 45 degrees is not available")) +
+                                            "; tightened wires are written at any angle"}},
                             args->load.quiet);
           orientations = "any";
         }
@@ -260,6 +269,13 @@ void add_tighten(CLI::App& app, int& status) {
     // are longer (TIGHTEN-0014, since 2026-12-05).
     // (per input: routed wires with a segment outside the output's directions; `any` has none)
     const std::optional<geom::LatticeDirections> out_set = tighten_orientations(orientations).set;
+    const std::optional<geom::Root3Directions> out_set30 = tighten_orientations(orientations).set30;
+    // every segment of a line within the rounding of a direction of out_set30
+    auto fits30 = [&](const std::vector<geom::Point>& l) {
+      for (std::size_t j = 1; j < l.size(); ++j)
+        if (!out_set30->fits(std::int64_t{l[j].x} - l[j - 1].x, std::int64_t{l[j].y} - l[j - 1].y)) return false;
+      return true;
+    };
     // A staircase in a cone of two steps that do not bracket the link's box, as in c:0,45 (NE and
     // W round north) or c:45,135 (NE and SE round east), leaves the box of its ends: (0,0) to
     // (0,1000) in c:0,45 is (0,0) (1000,1000) (0,1000). Without a <boundary> the plane is
@@ -270,7 +286,7 @@ void add_tighten(CLI::App& app, int& status) {
     // domain lowers the scale --clearance can tighten in, router::exact_gaps_scale: on a layout
     // over about 10^7 DBU across, such a set tightens in the layout's units, gaps of exactly the
     // clearance closed.)
-    if (!layout->boundary && out_set && out_set->cones_leave_box()) {
+    if (!layout->boundary && ((out_set && out_set->cones_leave_box()) || (out_set30 && out_set30->cones_leave_box()))) {
       const geom::Box b = io::routing_domain(*layout, extra);
       const geom::Box grown = geom::grown_box(b, (std::int64_t{b.hi.x} - b.lo.x) + (std::int64_t{b.hi.y} - b.lo.y));
       extra.push_back(grown.lo);
@@ -278,8 +294,10 @@ void add_tighten(CLI::App& app, int& status) {
     }
     std::vector<char> off_directions(inputs.size(), 0);
     for (std::size_t i = 0; i < inputs.size(); ++i)
-      off_directions[i] = out_set && inputs[i].source == "wires" &&
-                          !std::all_of(inputs[i].lines.begin(), inputs[i].lines.end(), [&](const auto& l) { return out_set->runs_along(l); });
+      off_directions[i] = inputs[i].source == "wires" &&
+                          ((out_set && !std::all_of(inputs[i].lines.begin(), inputs[i].lines.end(),
+                                                    [&](const auto& l) { return out_set->runs_along(l); })) ||
+                           (out_set30 && !std::all_of(inputs[i].lines.begin(), inputs[i].lines.end(), fits30)));
     if (o.empty() && layout->routes) {
       std::size_t off = 0, first = 0;
       for (std::size_t i = 0; i < inputs.size(); ++i)
@@ -539,6 +557,7 @@ void add_tighten(CLI::App& app, int& status) {
       };
       std::vector<std::vector<geom::Point>> out_lines;
       bool ok = true, no_staircase = false, contractible = false;
+      std::string no_staircase_why;  // a set at multiples of 30 degrees: why it has no wire
       if (args->clearance) {
         using St = router::NetTightenOutcome::Status;
         const router::NetTightenOutcome& oc = together_out[i];
@@ -719,6 +738,7 @@ void add_tighten(CLI::App& app, int& status) {
         }
         if (res.no_staircase) {
           no_staircase = true;
+          if (no_staircase_why.empty()) no_staircase_why = res.why;  // (a set at multiples of 30 degrees)
           continue;
         }
         std::vector<geom::Point> pts = std::move(res.points);
@@ -763,7 +783,7 @@ void add_tighten(CLI::App& app, int& status) {
       }
       if (no_staircase) {
         route.status = "failed";
-        route.reason = no_staircase_reason(orientations);
+        route.reason = no_staircase_why.empty() ? no_staircase_reason(orientations) : no_staircase_why;
         print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0004", layout->file, in.line_numbers[0], 0,
                                       "net \"" + net.name + "\": " + *route.reason}},
                           args->load.quiet);

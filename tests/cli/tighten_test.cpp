@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "geom/directions.h"
+#include "geom/root3_directions.h"
 #include "geom/predicates.h"
 #include "io/layout_geometry.h"
 #include "io/layout_reader.h"
@@ -1300,17 +1301,79 @@ TEST(Tighten, GuardRingWithAPinPassesTheCheck) {
   EXPECT_NE(strayed.err.find("CHECK-0005"), std::string::npos) << strayed.err;
 }
 
-TEST(Tighten, CSetInTheRulesIsWrittenAtAnyAngle) {
+// The wind design's sketches (a slalom, a spiral wound twice round a block, a loop round a
+// triangle, a guard ring round a hexagon, a pinch) tightened into every kind of set at multiples
+// of 30 degrees: every net is written, taut check finds every segment within the rounding of the
+// set's directions, in free space, joined (its own computation: geom::Root3Directions::fits is
+// also recomputed here), and each wire is at least as long as the class's taut wire.
+TEST(Tighten, SetsAtMultiplesOf30DegreesOnTheWindDesign) {
+  const std::string dir = temp_dir("tighten_thirty");
+  for (const std::string set : {"c:0,60,120", "c:30,90,150", "c:0,30,60,90,120,150", "c:0,60", "c:0,90,150"}) {
+    SCOPED_TRACE(set);
+    const std::string out = dir + "/w.xml";
+    const auto run = run_taut({"tighten", kDesigns + "wind.xml", "-o", out, "--orientations", set, "--stats", dir + "/s.json"});
+    ASSERT_EQ(run.status, 0) << run.err;
+    EXPECT_NE(read_text(out).find("orientations=\"" + set + "\""), std::string::npos);
+    const auto checked = run_taut({"check", out, "--json"});
+    const auto j = nlohmann::json::parse(checked.out);
+    EXPECT_EQ(j["routes_check"]["orientations"], "ok") << checked.err;
+    EXPECT_EQ(j["routes_check"]["free_space"], "ok") << checked.err;
+    EXPECT_EQ(j["routes_check"]["connectivity"], "ok") << checked.err;
+    const auto fits = geom::Root3Directions::parse(set);
+    const auto layout = io::read_layout(out);
+    ASSERT_TRUE(layout.layout && layout.layout->routes);
+    int routed = 0;
+    for (const io::Route& r : layout.layout->routes->routes) {
+      EXPECT_EQ(r.status, "routed") << r.net << ": " << r.reason.value_or("");
+      routed += r.status == "routed";
+      for (const io::Wire& w : r.wires)
+        for (std::size_t i = 1; i < w.points.size(); ++i)
+          EXPECT_TRUE(fits->fits(std::int64_t{w.points[i].x} - w.points[i - 1].x, std::int64_t{w.points[i].y} - w.points[i - 1].y))
+              << r.net << " segment " << i;
+    }
+    EXPECT_EQ(routed, 6);
+    const auto stats = nlohmann::json::parse(read_text(dir + "/s.json"));
+    ASSERT_EQ(stats["tighten"]["nets"].size(), 6u);
+    for (const auto& n : stats["tighten"]["nets"]) EXPECT_GE(n["length_after"].get<double>(), n["length_taut"].get<double>()) << n;
+  }
+}
+
+// A c: set in <rules> is the default output: one at multiples of 30 degrees is written in it
+// (since 2026-12-07; before, at any angle with TIGHTEN-0003, which a set at another angle still
+// gets, and this one with --clearance, which does not write such sets yet).
+TEST(Tighten, CSetInTheRulesIsTheOutputsDirections) {
   const std::string dir = temp_dir("tighten_cset");
-  const std::string file = layout_file("tighten_cset_in",
-                                       "  <rules orientations=\"c:0,60,120\"/>\n"
-                                       "  <blockage id=\"a\"><rect x0=\"40\" y0=\"40\" x1=\"60\" y1=\"60\"/></blockage>\n"
-                                       "  <net name=\"n\"><pin name=\"p\" x=\"10\" y=\"50\"/><pin name=\"q\" x=\"90\" y=\"50\"/>\n"
-                                       "    <sketch points=\"10,50 50,90 90,50\"/></net>\n");
+  const std::string body = "  <rules orientations=\"c:0,60,120\"/>\n"
+                           "  <blockage id=\"a\"><rect x0=\"40\" y0=\"40\" x1=\"60\" y1=\"60\"/></blockage>\n"
+                           "  <net name=\"n\"><pin name=\"p\" x=\"10\" y=\"50\"/><pin name=\"q\" x=\"90\" y=\"50\"/>\n"
+                           "    <sketch points=\"10,50 50,90 90,50\"/></net>\n";
+  const std::string file = layout_file("tighten_cset_in", body);
   const auto run = run_taut({"tighten", file, "-o", dir + "/t.xml"});
   EXPECT_EQ(run.status, 0) << run.err;
-  EXPECT_NE(run.err.find("warning: [TIGHTEN-0003]"), std::string::npos) << run.err;
-  EXPECT_EQ(wires_of(dir + "/t.xml", "n"), (std::vector<Path>{{{10, 50}, {40, 60}, {60, 60}, {90, 50}}}));
+  EXPECT_EQ(run.err.find("TIGHTEN-0003"), std::string::npos) << run.err;
+  EXPECT_NE(read_text(dir + "/t.xml").find("orientations=\"c:0,60,120\""), std::string::npos);
+  const auto checked = run_taut({"check", dir + "/t.xml", "--json"});
+  EXPECT_EQ(checked.status, 0) << checked.err;
+  const auto j = nlohmann::json::parse(checked.out);
+  EXPECT_EQ(j["routes_check"]["orientations"], "ok");
+  EXPECT_EQ(j["routes_check"]["free_space"], "ok");
+  EXPECT_EQ(j["routes_check"]["connectivity"], "ok");
+  // another angle: at any angle, said
+  std::string ten = body;
+  ten.replace(ten.find("c:0,60,120"), 10, "c:0,10,100");
+  const auto t10 = run_taut({"tighten", layout_file("tighten_cset_ten", ten), "-o", dir + "/t10.xml"});
+  EXPECT_EQ(t10.status, 0) << t10.err;
+  EXPECT_NE(t10.err.find("warning: [TIGHTEN-0003]"), std::string::npos) << t10.err;
+  EXPECT_NE(t10.err.find("an angle other than a multiple of 30 or 45 degrees is not available"), std::string::npos) << t10.err;
+  EXPECT_EQ(wires_of(dir + "/t10.xml", "n"), (std::vector<Path>{{{10, 50}, {40, 60}, {60, 60}, {90, 50}}}));
+  // with --clearance: at any angle, said
+  const auto tc = run_taut({"tighten", file, "-o", dir + "/tc.xml", "--clearance"});
+  EXPECT_EQ(tc.status, 0) << tc.err;
+  EXPECT_NE(tc.err.find("a set at multiples of 30 degrees is not written with --clearance yet; tightened wires are "
+                        "written at any angle"),
+            std::string::npos)
+      << tc.err;
+  EXPECT_EQ(wires_of(dir + "/tc.xml", "n"), (std::vector<Path>{{{10, 50}, {40, 60}, {60, 60}, {90, 50}}}));
   // c:0,90 is another name of the rectilinear directions: the same as --orientations rectilinear
   std::string rect_rules = read_text(file);
   rect_rules.replace(rect_rules.find("c:0,60,120"), 10, "c:90,0");
@@ -1354,18 +1417,23 @@ TEST(Tighten, BadInputExit2AndWritesNothing) {
   run = run_taut({"tighten", layout_file("tighten_bad_pinch", pinch), "-o", dir + "/t.xml"});
   EXPECT_EQ(run.status, 2) << run.err;
   EXPECT_NE(run.err.find("passes through a point where blockages touch at or after 60,60"), std::string::npos) << run.err;
-  // c: sets with directions that are not multiples of 45 degrees are not written (a set at
-  // multiples of 30 is checked by taut check, and the message says so; c:0,10 is not)
-  run = run_taut({"tighten", file, "-o", dir + "/t.xml", "--orientations", "c:0,60,120"});
-  EXPECT_EQ(run.status, 2) << run.err;
-  EXPECT_NE(run.err.find("[CLI-0027]"), std::string::npos) << run.err;
-  EXPECT_NE(run.err.find("checked by taut check, with vertices rounded, but not written yet"), std::string::npos) << run.err;
-  EXPECT_EQ(read_text(dir + "/t.xml"), "old");
-  run = run_taut({"tighten", file, "-o", dir + "/t.xml", "--orientations", "c:0,10"});
-  EXPECT_EQ(run.status, 2) << run.err;
-  EXPECT_NE(run.err.find("[CLI-0027]"), std::string::npos) << run.err;
-  EXPECT_EQ(run.err.find("checked by taut check"), std::string::npos) << run.err;
-  EXPECT_EQ(read_text(dir + "/t.xml"), "old");
+  // c: sets with a direction at neither a multiple of 45 nor of 30 degrees are not available, and
+  // a set at multiples of 30 not with --clearance or --min-link yet
+  for (const auto& extra : std::vector<std::vector<std::string>>{
+           {"--orientations", "c:0,10"}, {"--orientations", "c:0,60,120", "--clearance"},
+           {"--orientations", "c:0,60,120", "--min-link"}}) {
+    std::vector<std::string> cmd{"tighten", file, "-o", dir + "/t.xml"};
+    cmd.insert(cmd.end(), extra.begin(), extra.end());
+    run = run_taut(cmd);
+    EXPECT_EQ(run.status, 2) << run.err;
+    EXPECT_NE(run.err.find("[CLI-0027]"), std::string::npos) << run.err;
+    const bool thirty = extra[1] == "c:0,60,120";
+    EXPECT_NE(run.err.find(thirty ? "is written (vertices rounded) without " + extra[2] + " only, not with it yet"
+                                  : "or one at multiples of 30 degrees such as c:0,60,120"),
+              std::string::npos)
+        << run.err;
+    EXPECT_EQ(read_text(dir + "/t.xml"), "old");
+  }
 }
 
 // A layout with nothing drawn (no blockage, no pin): nothing to tighten, not an internal error

@@ -1,0 +1,67 @@
+// Exact numbers a + b sqrt(N) with rational a and b (the field Q(sqrt N), N = 2 or 3, not a
+// square): the octilinear map's cell vertices (N = 2: bisectors whose slopes lie in Q(sqrt2)
+// meet there; router/spm.h) and the staircases of direction sets at multiples of 30 degrees
+// (N = 3; router/root3_staircase.h). Signs are exact: a + b sqrt N with a and b of opposite signs
+// has a's sign iff a^2 > N b^2 (never equal: sqrt N is irrational).
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <utility>
+
+#include <boost/multiprecision/gmp.hpp>
+
+#include "geom/root2.h"
+
+namespace taut::router {
+
+// Exact rationals: bisectors sit at half-integers and meet sloped blockage edges at rationals
+// whose numerators pass 2^64, so no fixed-width integer pair holds them. Boost.Multiprecision over
+// GMP's mpq (always reduced) keeps them exact; its header-only cpp_rational was 4x slower here.
+using Rational = boost::multiprecision::mpq_rational;
+
+template <int N>
+struct RationalRoot {
+  Rational a, b;
+  RationalRoot() = default;
+  RationalRoot(Rational a_, Rational b_ = 0) : a(std::move(a_)), b(std::move(b_)) {}
+  explicit RationalRoot(const geom::Root2& r)
+    requires(N == 2)
+      : a(r.a), b(r.b) {}
+  int sign() const {
+    const int sa = a.sign(), sb = b.sign();
+    if (sa >= 0 && sb >= 0) return (sa > 0 || sb > 0) ? 1 : 0;
+    if (sa <= 0 && sb <= 0) return (sa < 0 || sb < 0) ? -1 : 0;
+    const Rational d = a * a - N * b * b;
+    return sa > 0 ? d.sign() : -d.sign();
+  }
+  friend RationalRoot operator+(const RationalRoot& x, const RationalRoot& y) { return {x.a + y.a, x.b + y.b}; }
+  friend RationalRoot operator-(const RationalRoot& x, const RationalRoot& y) { return {x.a - y.a, x.b - y.b}; }
+  friend RationalRoot operator-(const RationalRoot& x) { return {-x.a, -x.b}; }
+  friend RationalRoot operator*(const RationalRoot& x, const RationalRoot& y) {
+    return {x.a * y.a + N * x.b * y.b, x.a * y.b + x.b * y.a};
+  }
+  // y != 0
+  friend RationalRoot operator/(const RationalRoot& x, const RationalRoot& y) {
+    const Rational n = y.a * y.a - N * y.b * y.b;  // nonzero: sqrt N is irrational
+    return {(x.a * y.a - N * x.b * y.b) / n, (x.b * y.a - x.a * y.b) / n};
+  }
+  friend bool operator==(const RationalRoot&, const RationalRoot&) = default;
+  friend bool operator<(const RationalRoot& x, const RationalRoot& y) { return (x - y).sign() < 0; }
+  friend bool operator<=(const RationalRoot& x, const RationalRoot& y) { return (x - y).sign() <= 0; }
+  friend bool operator>(const RationalRoot& x, const RationalRoot& y) { return (x - y).sign() > 0; }
+  friend bool operator>=(const RationalRoot& x, const RationalRoot& y) { return (x - y).sign() >= 0; }
+  // For pictures and messages, and as the estimate floor() corrects.
+  double to_double() const { return a.template convert_to<double>() + b.template convert_to<double>() * std::sqrt(double(N)); }
+  // The largest integer not above it (exact; a floating estimate corrected by exact signs).
+  std::int64_t floor() const {
+    std::int64_t f = static_cast<std::int64_t>(std::floor(to_double()));
+    while ((*this - RationalRoot(Rational(f))).sign() < 0) --f;
+    while ((*this - RationalRoot(Rational(f + 1))).sign() >= 0) ++f;
+    return f;
+  }
+};
+using RationalRoot2 = RationalRoot<2>;
+using RationalRoot3 = RationalRoot<3>;
+
+}  // namespace taut::router
