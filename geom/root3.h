@@ -8,8 +8,10 @@
 //
 // Exact sign. When a and b have the same sign (or one is 0) the sign is immediate. Otherwise
 // a + b*sqrt(3) has the sign of a iff |a| > |b|*sqrt(3), i.e. iff a*a > 3*b*b (never equal, as
-// sqrt(3) is irrational). Needs |a|, |b| < 2^62 (the squares in __int128); products (operator*)
-// need |a|, |b| < 2^30 in each factor to stay below 2^62.
+// sqrt(3) is irrational). sign_of needs |a|, |b| < 2^62 (3 b^2 in __int128), so comparisons
+// (which take differences) need |a|, |b| < 2^61; operator* needs its result's coefficients below
+// 2^63. Every value formed here stays below 2^47: coordinates are below 2^30, a step's
+// coefficients at most 2, and length12 multiplies a cross product (below 2^34) by at most 12.
 #pragma once
 
 #include <cmath>

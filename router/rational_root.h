@@ -53,12 +53,22 @@ struct RationalRoot {
   friend bool operator>=(const RationalRoot& x, const RationalRoot& y) { return (x - y).sign() >= 0; }
   // For pictures and messages, and as the estimate floor() corrects.
   double to_double() const { return a.template convert_to<double>() + b.template convert_to<double>() * std::sqrt(double(N)); }
-  // The largest integer not above it (exact; a floating estimate corrected by exact signs).
+  // The largest integer not above it (exact: a floating estimate, then exact signs with steps
+  // that double, then halve, so an estimate far off, as when a and b nearly cancel, costs a
+  // logarithm of the error; the value must lie within the int64 range).
   std::int64_t floor() const {
-    std::int64_t f = static_cast<std::int64_t>(std::floor(to_double()));
-    while ((*this - RationalRoot(Rational(f))).sign() < 0) --f;
-    while ((*this - RationalRoot(Rational(f + 1))).sign() >= 0) ++f;
-    return f;
+    const double d = std::floor(to_double());
+    std::int64_t f = std::isfinite(d) && std::fabs(d) < 4e18 ? static_cast<std::int64_t>(d) : 0;
+    auto below = [&](std::int64_t g) { return (*this - RationalRoot(Rational(g))).sign() < 0; };  // value < g
+    // an interval [lo, hi) holding the floor, found by doubling steps from f
+    std::int64_t lo = f, hi = f + 1;
+    for (std::int64_t step = 1; below(lo); step *= 2) hi = lo, lo -= step;
+    for (std::int64_t step = 1; !below(hi); step *= 2) lo = hi, hi += step;
+    while (hi - lo > 1) {
+      const std::int64_t mid = lo + (hi - lo) / 2;
+      (below(mid) ? hi : lo) = mid;
+    }
+    return lo;
   }
 };
 using RationalRoot2 = RationalRoot<2>;

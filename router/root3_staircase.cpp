@@ -88,7 +88,8 @@ class PieceSolver {
 
   // The greedy staircase leaving 0 along s[first]: its frame points, or nullopt (stuck, or more
   // than cap runs).
-  std::optional<std::vector<FPoint>> greedy(int first, std::size_t cap) const {
+  // `over`: set when it stopped at the cap.
+  std::optional<std::vector<FPoint>> greedy(int first, std::size_t cap, bool& over) const {
     std::vector<FPoint> pts{{R3(), R3()}};
     FPoint pos{R3(), R3()};
     for (int k = first;; k = 1 - k) {
@@ -96,7 +97,10 @@ class PieceSolver {
       if (r <= pos[k]) return std::nullopt;
       pos[k] = std::move(r);
       pts.push_back(pos);
-      if (pts.size() > cap + 1) return std::nullopt;
+      if (pts.size() > cap + 1) {
+        over = true;
+        return std::nullopt;
+      }
       if (pos[0] == lim_[0] && pos[1] == lim_[1]) return pts;
     }
   }
@@ -234,16 +238,19 @@ Root3Wire Root3StaircaseBuilder::staircase(std::span<const Point> taut, const ge
     fr.d = exact(steps[i1].x * steps[i2].y - steps[i1].y * steps[i2].x);
     const FPoint lim = fr.of(b);
     PieceSolver solver(fr, alpha, lim);
-    // the walls: every edge whose box meets the box of the piece's parallelogram
-    geom::Box box{b, b};
+    // the walls: every edge whose box meets the box of the piece's parallelogram, within the
+    // domain (a wide cone's parallelogram reaches out of it, past the int32 range near the
+    // coordinate limit: clamped, as the lattice sets' frame_box does; every indexed edge lies in
+    // the domain)
+    i64 x0 = b.x, y0 = b.y, x1 = b.x, y1 = b.y;
     for (const FPoint& f : {FPoint{R3(), R3()}, FPoint{lim[0], R3()}, FPoint{R3(), lim[1]}, lim}) {
       const R3Point p = fr.at(f);
-      const i64 x0 = p.x.floor(), y0 = p.y.floor();
-      box.lo.x = static_cast<geom::Coord>(std::min<i64>(box.lo.x, x0));
-      box.lo.y = static_cast<geom::Coord>(std::min<i64>(box.lo.y, y0));
-      box.hi.x = static_cast<geom::Coord>(std::max<i64>(box.hi.x, x0 + 1));
-      box.hi.y = static_cast<geom::Coord>(std::max<i64>(box.hi.y, y0 + 1));
+      const i64 fx = p.x.floor(), fy = p.y.floor();
+      x0 = std::min(x0, fx), y0 = std::min(y0, fy), x1 = std::max(x1, fx + 1), y1 = std::max(y1, fy + 1);
     }
+    auto into = [](i64 v, i64 lo, i64 hi) { return static_cast<geom::Coord>(std::clamp(v, lo, hi)); };
+    const geom::Box box{{into(x0, domain_.lo.x, domain_.hi.x), into(y0, domain_.lo.y, domain_.hi.y)},
+                        {into(x1, domain_.lo.x, domain_.hi.x), into(y1, domain_.lo.y, domain_.hi.y)}};
     // (an edge with both ends beyond one side of the frame's box misses it: decided in Z[sqrt3]
     // before the rationals)
     const std::array<Root3, 2> lim_int = fr.of_int(b);
@@ -256,8 +263,11 @@ Root3Wire Root3StaircaseBuilder::staircase(std::span<const Point> taut, const ge
     for (const std::uint32_t id : index_.edges_in_box(box)) add(index_.edge(id));
     for (const geom::Segment& e : sides_) add(e);
     const std::size_t cap = max_runs_per_piece;
+    bool capped = false;
     for (int f = 0; f < 2; ++f) {
-      const std::optional<std::vector<FPoint>> g = solver.greedy(f, cap);
+      bool over = false;
+      const std::optional<std::vector<FPoint>> g = solver.greedy(f, cap, over);
+      capped = capped || over;
       if (!g) continue;
       Candidate cand;
       for (const FPoint& p : *g) cand.pts.push_back(fr.at(p));
@@ -271,9 +281,11 @@ Root3Wire Root3StaircaseBuilder::staircase(std::span<const Point> taut, const ge
     if (cands.empty()) {
       out.why = "no staircase in the set's directions " + set.name() + " between " + std::to_string(a.x) + "," +
                 std::to_string(a.y) + " and " + std::to_string(b.x) + "," + std::to_string(b.y) +
-                " with fewer than " + std::to_string(cap + 1) +
-                " links: a blockage edge at an angle outside the set pinches the wire there (H&S 6: a shortest "
-                "wire in the set may then need infinitely many links)";
+                (capped ? " with fewer than " + std::to_string(cap + 1) +
+                              " links: a blockage edge at an angle outside the set pinches the wire there (H&S 6: a "
+                              "shortest wire in the set may then need infinitely many links)"
+                        : " from either first direction (the greedy got stuck; not expected of a taut wire: please "
+                          "report the layout)");
       return out;
     }
     pieces.push_back(std::move(cands));
@@ -307,24 +319,39 @@ Root3Wire Root3StaircaseBuilder::staircase(std::span<const Point> taut, const ge
   std::vector<std::size_t> pick(m);
   pick[m - 1] = static_cast<std::size_t>(std::min_element(best[m - 1].begin(), best[m - 1].end()) - best[m - 1].begin());
   for (std::size_t i = m - 1; i > 0; --i) pick[i - 1] = static_cast<std::size_t>(from[i][pick[i]]);
+  // The exact wire, and the same with the cut points inside a link kept (`split`): those are
+  // integer points (blockage corners the taut wire wraps), which a rounded link through them
+  // could cut; the split form is rounded when the merged one has no free rounding.
+  std::vector<R3Point> split;
   for (std::size_t i = 0; i < m; ++i) {
     const Candidate& c = pieces[i][pick[i]];
     if (i == 0) {
-      out.exact = c.pts;
+      out.exact = split = c.pts;
       continue;
     }
     if (pieces[i - 1][pick[i - 1]].last == c.first) out.exact.pop_back();  // the joint is inside one link
     out.exact.insert(out.exact.end(), c.pts.begin() + 1, c.pts.end());
+    split.insert(split.end(), c.pts.begin() + 1, c.pts.end());
   }
+  if (!round_wire(out.exact, set, free, out) && (split.size() == out.exact.size() || !round_wire(split, set, free, out)))
+    out.why = "rounded to integer vertices, every wire near the exact one in " + set.name() +
+              " leaves free space (the four integer points round each of its vertices tried)";
+  if (out.ok() && out.points.size() == 1) out.points.push_back(out.points[0]);
+  return out;
+}
+
+bool Root3StaircaseBuilder::round_wire(const std::vector<R3Point>& exact, const geom::Root3Directions& set,
+                                       const std::function<bool(Point, Point)>& free, Root3Wire& out) {
   // Rounding: the nearest integer points, else the DP over the floor/ceiling points (above).
-  const std::size_t n = out.exact.size();
+  out.moved = 0;
+  const std::size_t n = exact.size();
   std::vector<std::vector<Point>> cand(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const Point near{static_cast<geom::Coord>(nearest(out.exact[i].x)), static_cast<geom::Coord>(nearest(out.exact[i].y))};
+    const Point near{static_cast<geom::Coord>(nearest(exact[i].x)), static_cast<geom::Coord>(nearest(exact[i].y))};
     cand[i].push_back(near);
     if (i == 0 || i + 1 == n) continue;  // the ends are integer points
-    const i64 fx = out.exact[i].x.floor(), fy = out.exact[i].y.floor();
-    const bool ix = out.exact[i].x == R3(Rational(fx)), iy = out.exact[i].y == R3(Rational(fy));
+    const i64 fx = exact[i].x.floor(), fy = exact[i].y.floor();
+    const bool ix = exact[i].x == R3(Rational(fx)), iy = exact[i].y == R3(Rational(fy));
     for (const i64 x : {fx, fx + 1})
       for (const i64 y : {fy, fy + 1}) {
         const Point q{static_cast<geom::Coord>(x), static_cast<geom::Coord>(y)};
@@ -356,20 +383,16 @@ Root3Wire Root3StaircaseBuilder::staircase(std::span<const Point> taut, const ge
           }
         }
     }
-    if (cost[n - 1][0] == kNone) {
-      out.why = "rounded to integer vertices, every wire near the exact one in " + set.name() +
-                " leaves free space (the four integer points round each of its vertices tried)";
-      return out;
-    }
+    if (cost[n - 1][0] == kNone) return false;
     for (std::size_t i = n - 1; i > 0; --i) choice[i - 1] = static_cast<std::size_t>(prev[i][choice[i]]);
     out.moved = cost[n - 1][0];
   }
+  out.points.clear();
   for (std::size_t i = 0; i < n; ++i) {
     const Point q = cand[i][choice[i]];
     if (out.points.empty() || out.points.back() != q) out.points.push_back(q);
   }
-  if (out.points.size() == 1) out.points.push_back(out.points[0]);
-  return out;
+  return true;
 }
 
 }  // namespace taut::router

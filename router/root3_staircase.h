@@ -25,7 +25,9 @@
 // blockage's corner may cut it once its ends move by half a unit): then a DP over the four
 // integer points round each vertex (floor or ceiling of each coordinate) takes, with the fewest
 // vertices off their nearest, a wire whose every segment fits the set and is free (`free`, the
-// caller's test; nothing when there is none). The whole rounded wire is not checked here: the
+// caller's test; nothing when there is none), and failing that the same for the exact wire with
+// the taut wire's cut points that lie inside a link kept as vertices (integer points, the corners
+// it wraps, which a rounded link could cut). The whole rounded wire is not checked here: the
 // caller tightens it back to the taut wire (free space and class) as for the lattice sets.
 //
 // When there is none. H&S §6 assume blockage edges in the set's directions; with others (a
@@ -76,6 +78,9 @@ class Root3StaircaseBuilder {
   std::size_t max_runs_per_piece = 256;
 
  private:
+  // Rounds `exact` into out.points (and out.moved); false when no rounding is free.
+  static bool round_wire(const std::vector<R3Point>& exact, const geom::Root3Directions& set,
+                         const std::function<bool(geom::Point, geom::Point)>& free, Root3Wire& out);
   geom::Box domain_;
   geom::ObstacleIndex index_;          // the obstacles' edges, each with the obstacle on its left
   std::vector<geom::Segment> sides_;   // the domain's, the outside on their left

@@ -324,7 +324,11 @@ NetLines prepare(const NetLines& wires, std::span<const Polygon> pins, std::vect
 
 }  // namespace
 
-NetsTightener::NetsTightener(NetSpace& space, NetsTightenOptions options) : space_(&space), options_(std::move(options)) {}
+NetsTightener::NetsTightener(NetSpace& space, NetsTightenOptions options) : space_(&space), options_(std::move(options)) {
+  // (its length rule and its checks of the output's directions know the lattice sets only)
+  if (options_.orientations.set30)
+    throw std::invalid_argument("NetsTightener: a set at multiples of 30 degrees is not supported (SpaceTightener only)");
+}
 
 std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, std::span<const Input> kind) {
   NetSpace& space = *space_;

@@ -152,6 +152,37 @@ void check_seed(std::uint64_t seed, Totals& tot) {
   }
 }
 
+// A cone of 150 degrees (c:0,30: between 30 and 180) near the coordinate limit: the piece's
+// parallelogram reaches past the int32 range, where its box once wrapped round, so no blockage
+// edge was a wall and the wire ran through the block below (review, 2026-12-07; the lattice sets'
+// Staircase.WideConeAtTheCoordinateLimit is the same case).
+TEST(Root3Staircase, WideConeAtTheCoordinateLimit) {
+  const geom::Coord L = (1 << 30) - 1;
+  const geom::Box domain{{-L, -L}, {L, L}};
+  const std::vector<geom::Polygon> obstacles{
+      geom::Polygon{{{-600000000, -1010000000}, {-400000000, -1010000000}, {-400000000, -990000000}, {-600000000, -990000000}}, {}}};
+  const Point a{1000000000, -1000000000}, b{799038106, -250000000};
+  const Scenery st = setup(domain, obstacles);
+  ASSERT_TRUE(st.t.ok());
+  const router::Tightened r = st.tight->tighten(Path{a, b});
+  ASSERT_EQ(r.status, router::TightenStatus::Ok);
+  ASSERT_EQ(r.points, (Path{a, b}));
+  const auto set = geom::Root3Directions::parse("c:0,30");
+  ASSERT_EQ(set->cone(std::int64_t{b.x} - a.x, std::int64_t{b.y} - a.y), 1);  // between 30 and 180 degrees
+  const router::Root3StaircaseBuilder builder(domain, obstacles);
+  const router::Root3Wire w = builder.staircase(r.points, *set, [&](Point p, Point q) {
+    return st.tight->tighten(Path{p, q}).status == router::TightenStatus::Ok;
+  });
+  ASSERT_TRUE(w.ok()) << w.why;
+  const oracle::L1Reference ref(domain, obstacles);
+  const oracle::HomotopyWords h(domain, obstacles);
+  EXPECT_TRUE(ref.check_path(w.points).has_value()) << str(w.points);
+  EXPECT_EQ(h.word(w.points), h.word(Path{a, b})) << str(w.points);
+  for (std::size_t i = 1; i < w.points.size(); ++i)
+    EXPECT_TRUE(set->fits(std::int64_t{w.points[i].x} - w.points[i - 1].x, std::int64_t{w.points[i].y} - w.points[i - 1].y));
+  EXPECT_GT(w.points.size(), 3u);  // the block stops the two-link staircase through (-5e8, -1e9)
+}
+
 TEST(Root3Staircase, RandomSketchesShortestInTheSetAndLegalRounded) {
   Totals tot;
   const std::uint64_t n = static_cast<std::uint64_t>(sanitized_share(120, 10));
