@@ -8,8 +8,11 @@
 // (router::c_oriented). The ends stay where they are and every vertex is an integer. A sketch or wire that leaves free space is an input
 // error (TIGHTEN-0001, file:line, nothing written); a net with nothing to tighten (TIGHTEN-0002)
 // or with no integer staircase in its class (TIGHTEN-0004) is written as failed (exit status 1).
-// `c:0,90` and `c:0,45,90,135` name rectilinear and octilinear; `c:` sets with a direction at
-// another angle are refused (CLI-0027) or, from <rules>, replaced by `any` (TIGHTEN-0003).
+// `c:0,90` and `c:0,45,90,135` name rectilinear and octilinear. A set at multiples of 30 degrees
+// (c:0,60,120, ...; since 2026-12-07) writes the shortest wire of the class in it built exactly in
+// Q(sqrt3) with its vertices rounded to integers (router/root3_staircase.h; not with --clearance
+// or --min-link yet). `c:` sets with a direction at another angle, and those with either option,
+// are refused (CLI-0027) or, from <rules>, replaced by `any` (TIGHTEN-0003).
 // --min-link adds each wire's minimum-link path of its class (router/minlink.h, any angle, exact
 // rational bends; for a loop its minimum-link loop, section 5.2, proven minimal unless its
 // shortest loop is convex and the loop found is above the winding bound) to --stats and --svg,
@@ -153,7 +156,9 @@ void add_tighten(CLI::App& app, int& status) {
   sub->add_option("--orientations", args->orientations,
                   "directions of the output: rectilinear, octilinear, a c: set of multiples of 45 degrees "
                   "such as c:0,45 or c:45,135 (the shortest wire of the class in those directions, fewest "
-                  "links) or any (the Euclidean shortest); default: <rules>");
+                  "links), a c: set of multiples of 30 degrees such as c:0,60,120 (the same, its vertices "
+                  "rounded to integers; not with --clearance or --min-link yet) or any (the Euclidean "
+                  "shortest); default: <rules>");
   sub->add_flag("--clearance", args->clearance,
                 "keep half the wire width plus the spacing of <rules> from every blockage (tighten against "
                 "blockages grown by that much)");
