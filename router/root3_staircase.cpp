@@ -335,7 +335,7 @@ Root3Wire Root3StaircaseBuilder::staircase(std::span<const Point> taut, const ge
   }
   if (!round_wire(out.exact, set, free, out) && (split.size() == out.exact.size() || !round_wire(split, set, free, out)))
     out.why = "rounded to integer vertices, every wire near the exact one in " + set.name() +
-              " leaves free space (the four integer points round each of its vertices tried)";
+              " leaves free space (the sixteen integer points round each of its vertices tried)";
   if (out.ok() && out.points.size() == 1) out.points.push_back(out.points[0]);
   return out;
 }
@@ -351,11 +351,10 @@ bool Root3StaircaseBuilder::round_wire(const std::vector<R3Point>& exact, const 
     cand[i].push_back(near);
     if (i == 0 || i + 1 == n) continue;  // the ends are integer points
     const i64 fx = exact[i].x.floor(), fy = exact[i].y.floor();
-    const bool ix = exact[i].x == R3(Rational(fx)), iy = exact[i].y == R3(Rational(fy));
-    for (const i64 x : {fx, fx + 1})
-      for (const i64 y : {fy, fy + 1}) {
+    for (const i64 x : {fx - 1, fx, fx + 1, fx + 2})
+      for (const i64 y : {fy - 1, fy, fy + 1, fy + 2}) {
         const Point q{static_cast<geom::Coord>(x), static_cast<geom::Coord>(y)};
-        if ((ix && x != fx) || (iy && y != fy) || q == near) continue;
+        if (q == near) continue;
         cand[i].push_back(q);
       }
   }

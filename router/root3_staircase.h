@@ -22,9 +22,11 @@
 // (router/rational_root.h), exact. The exact wire's vertices are then rounded to integers: to the
 // nearest (ties upwards), which keeps every segment within the rounding of a direction of the set
 // (Root3Directions::fits), unless that makes a segment leave free space (a run that grazes a
-// blockage's corner may cut it once its ends move by half a unit): then a DP over the four
-// integer points round each vertex (floor or ceiling of each coordinate) takes, with the fewest
-// vertices off their nearest, a wire whose every segment fits the set and is free (`free`, the
+// blockage's corner may cut it once its ends move by half a unit): then a DP over the sixteen
+// integer points round each vertex (floor - 1 to floor + 2 in each coordinate; every segment's
+// rule is checked, so a vertex moved farther than its rounding still leaves each segment within
+// half a unit at each end of a direction) takes, with the fewest vertices off their nearest, a
+// wire whose every segment fits the set and is free (`free`, the
 // caller's test; nothing when there is none), and failing that the same for the exact wire with
 // the taut wire's cut points that lie inside a link kept as vertices (integer points, the corners
 // it wraps, which a rounded link could cut). The whole rounded wire is not checked here: the

@@ -201,7 +201,7 @@ TEST(Root3Staircase, RandomSketchesShortestInTheSetAndLegalRounded) {
   EXPECT_GE(tot.wires, sanitized_share(3000, 10));
   EXPECT_GT(tot.moved, 0);  // the repair was needed and made
   // Wires with none: a pinch that asks for more runs than the cap (H&S 6), or no free rounding.
-  // 21 of 3,215 here (16 and 5); a wrong reach (a wall's crossing of the run's line ignored) makes
+  // 16 of 3,215 here (16 and 0); a wrong reach (a wall's crossing of the run's line ignored) makes
   // 119, so more than 1 % fails the test.
   EXPECT_LE(tot.missing * 100, tot.wires + tot.missing);
 }
