@@ -63,10 +63,10 @@ std::vector<int> Root3Directions::degrees() const {
   return out;
 }
 
-bool Root3Directions::along(i64 dx, i64 dy) const {
-  for (const Step& s : steps_)
-    if (cross(s, dx, dy) == Root3{} && dot(s, dx, dy).sign() > 0) return true;
-  return false;
+int Root3Directions::step_along(i64 dx, i64 dy) const {
+  for (std::size_t i = 0; i < steps_.size(); ++i)
+    if (cross(steps_[i], dx, dy) == Root3{} && dot(steps_[i], dx, dy).sign() > 0) return static_cast<int>(i);
+  return -1;
 }
 
 bool Root3Directions::cones_leave_box() const {
@@ -102,8 +102,9 @@ Root3 Root3Directions::length12(i64 dx, i64 dy) const {
 bool Root3Directions::fits(i64 dx, i64 dy) const {
   // The set holds each step's opposite, so a ray meets the square iff the line through 0 along
   // it does: iff the square's corners are not all strictly on one side of that line (never when
-  // the square holds 0).
-  for (const Step& s : steps_) {
+  // the square holds 0). One line per orientation: the first half of the steps (0 to 150 degrees).
+  for (std::size_t i = 0; i < steps_.size() / 2; ++i) {
+    const Step& s = steps_[i];
     int pos = 0, neg = 0;
     for (const i64 ex : {-1, 1})
       for (const i64 ey : {-1, 1}) {

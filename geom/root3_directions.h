@@ -55,7 +55,9 @@ class Root3Directions {
   // The steps, counter-clockwise from +x (4 to 12 of them).
   const std::vector<Step>& steps() const { return steps_; }
   // v (not zero, |dx|, |dy| < 2^40) lies exactly along one of the steps (only the axes can).
-  bool along(std::int64_t dx, std::int64_t dy) const;
+  bool along(std::int64_t dx, std::int64_t dy) const { return step_along(dx, dy) >= 0; }
+  // Which step v lies exactly along (an index into steps()), or -1.
+  int step_along(std::int64_t dx, std::int64_t dy) const;
   // Some cone is wider than 90 degrees (its two steps do not lie in one closed quadrant, as 60
   // and 120 degrees in c:0,60,120), so a staircase in it leaves the box of its link's ends.
   bool cones_leave_box() const;

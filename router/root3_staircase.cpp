@@ -6,6 +6,8 @@
 #include <optional>
 #include <utility>
 
+#include "router/tighten.h"
+
 namespace taut::router {
 
 namespace {
@@ -187,17 +189,6 @@ std::int64_t nearest(const R3& v) { return (v + R3(Rational(1) / 2)).floor(); }
 
 }  // namespace
 
-std::vector<std::size_t> root3_cuts(std::span<const Point> taut, const geom::Root3Directions& set) {
-  std::vector<std::size_t> cuts{0};
-  for (std::size_t j = 1; j + 1 < taut.size(); ++j) {
-    const int c0 = set.cone(i64{taut[j].x} - taut[j - 1].x, i64{taut[j].y} - taut[j - 1].y);
-    const int c1 = set.cone(i64{taut[j + 1].x} - taut[j].x, i64{taut[j + 1].y} - taut[j].y);
-    if (c0 < 0 || c1 < 0 || c0 != c1) cuts.push_back(j);
-  }
-  if (taut.size() > 1) cuts.push_back(taut.size() - 1);
-  return cuts;
-}
-
 Root3StaircaseBuilder::Root3StaircaseBuilder(const geom::Box& domain, std::span<const geom::Polygon> obstacles)
     : domain_(domain), index_(obstacles) {
   // the domain's sides, the outside on their left (clockwise round the domain)
@@ -214,20 +205,15 @@ Root3Wire Root3StaircaseBuilder::staircase(std::span<const Point> taut, const ge
     return out;
   }
   const std::vector<Step>& steps = set.steps();
-  auto step_of = [&](i64 dx, i64 dy) {  // the step a vector lies along
-    for (std::size_t i = 0; i < steps.size(); ++i)
-      if (cross_sv(steps[i], dx, dy) == Root3{} && (dx * steps[i].x + dy * steps[i].y).sign() > 0) return i;
-    return steps.size();
-  };
-  const std::vector<std::size_t> cuts = root3_cuts(taut, set);
+  const std::vector<std::size_t> cuts = tangent_cuts(taut, set);
   std::vector<std::vector<Candidate>> pieces;
   for (std::size_t c = 0; c + 1 < cuts.size(); ++c) {
     const std::span<const Point> alpha = taut.subspan(cuts[c], cuts[c + 1] - cuts[c] + 1);
     const Point a = alpha.front(), b = alpha.back();
     const i64 dx = i64{b.x} - a.x, dy = i64{b.y} - a.y;
     std::vector<Candidate> cands;
-    if (alpha.size() == 2 && set.along(dx, dy)) {  // a segment along a direction of the set
-      const std::size_t s = step_of(dx, dy);
+    if (alpha.size() == 2 && set.step_along(dx, dy) >= 0) {  // a segment along a direction of the set
+      const auto s = static_cast<std::size_t>(set.step_along(dx, dy));
       cands.push_back({{R3Point{R3(Rational(a.x)), R3(Rational(a.y))}, R3Point{R3(Rational(b.x)), R3(Rational(b.y))}}, s, s});
       pieces.push_back(std::move(cands));
       continue;

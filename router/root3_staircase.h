@@ -88,8 +88,4 @@ class Root3StaircaseBuilder {
   std::vector<geom::Segment> sides_;   // the domain's, the outside on their left
 };
 
-// The pieces of a taut wire (indices of its vertices where it is cut: the first, the last, and
-// every vertex whose two segments are not strictly inside one cone of the set).
-std::vector<std::size_t> root3_cuts(std::span<const geom::Point> taut, const geom::Root3Directions& set);
-
 }  // namespace taut::router

@@ -678,20 +678,12 @@ COriented c_oriented(const Tightener& tight, const StaircaseBuilder& sb, std::sp
 
 COriented c_oriented(const Tightener& tight, const StaircaseBuilder& sb, std::span<const Point> taut,
                      const geom::LatticeDirections& set) {
-  // The open cone between neighbouring basis directions that holds a link, or -1 when the link
-  // lies along a basis direction.
-  auto cone_of = [&](Point a, Point b) { return set.cone(i64{b.x} - a.x, i64{b.y} - a.y); };
   COriented r;
   if (taut.size() <= 1) {
     r.points.assign(taut.begin(), taut.end());
     return r;
   }
-  std::vector<std::size_t> cut_at{0};  // indices of the cuts in taut
-  for (std::size_t i = 1; i + 1 < taut.size(); ++i) {
-    const int c0 = cone_of(taut[i - 1], taut[i]), c1 = cone_of(taut[i], taut[i + 1]);
-    if (c0 < 0 || c1 < 0 || c0 != c1) cut_at.push_back(i);
-  }
-  cut_at.push_back(taut.size() - 1);
+  const std::vector<std::size_t> cut_at = tangent_cuts(taut, set);  // indices of the cuts in taut
   // Each piece is built in its class (StaircaseBuilder::staircase_in_class); tightening the
   // result back to `taut` checks that (a class's shortest path is unique), so a bug there shows
   // as a missing wire, never as a wire in another class.

@@ -193,6 +193,24 @@ COriented c_oriented(const Tightener& tight, const StaircaseBuilder& sb, std::sp
 COriented c_oriented(const Tightener& tight, const StaircaseBuilder& sb, std::span<const geom::Point> taut,
                      const geom::LatticeDirections& set);
 
+// Where a taut wire must be cut for output in a direction set (Lemma 6.3: every shortest wire in
+// the set passes through its points whose tangent is a direction of the set): the indices of
+// its first and last vertices and of every vertex whose two segments are not strictly inside one
+// cone of the set. Set: geom::LatticeDirections or geom::Root3Directions (their cone()).
+template <class Set>
+std::vector<std::size_t> tangent_cuts(std::span<const geom::Point> taut, const Set& set) {
+  auto cone_of = [&](geom::Point a, geom::Point b) {
+    return set.cone(std::int64_t{b.x} - a.x, std::int64_t{b.y} - a.y);
+  };
+  std::vector<std::size_t> cuts{0};
+  for (std::size_t i = 1; i + 1 < taut.size(); ++i) {
+    const int c0 = cone_of(taut[i - 1], taut[i]), c1 = cone_of(taut[i], taut[i + 1]);
+    if (c0 < 0 || c1 < 0 || c0 != c1) cuts.push_back(i);
+  }
+  if (taut.size() > 1) cuts.push_back(taut.size() - 1);
+  return cuts;
+}
+
 // Euclidean length of a polyline (double sum of exact-input square roots).
 double euclidean_length(std::span<const geom::Point> path);
 

@@ -273,8 +273,9 @@ void add_tighten(CLI::App& app, int& status) {
     // routed in (route --orientations octilinear over rectilinear rules), and their staircases
     // are longer (TIGHTEN-0014, since 2026-12-05).
     // (per input: routed wires with a segment outside the output's directions; `any` has none)
-    const std::optional<geom::LatticeDirections> out_set = tighten_orientations(orientations).set;
-    const std::optional<geom::Root3Directions> out_set30 = tighten_orientations(orientations).set30;
+    const router::TightenOrientations out_orientations = tighten_orientations(orientations);
+    const std::optional<geom::LatticeDirections>& out_set = out_orientations.set;
+    const std::optional<geom::Root3Directions>& out_set30 = out_orientations.set30;
     // every segment of a line within the rounding of a direction of out_set30
     auto fits30 = [&](const std::vector<geom::Point>& l) {
       for (std::size_t j = 1; j < l.size(); ++j)

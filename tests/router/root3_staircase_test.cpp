@@ -104,7 +104,7 @@ void check_seed(std::uint64_t seed, Totals& tot) {
         continue;
       }
       ++tot.wires;
-      tot.pieces += static_cast<long long>(router::root3_cuts(taut, *set).size()) - 1;
+      tot.pieces += static_cast<long long>(router::tangent_cuts(taut, *set).size()) - 1;
       // the exact wire: from the taut wire's start to its end, every link along a step, as long
       // as the taut wire in the set's convex distance
       ASSERT_GE(w.exact.size(), 1u) << where;
