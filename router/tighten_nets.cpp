@@ -8,8 +8,11 @@
 #include <stdexcept>
 #include <utility>
 
+#include <boost/multiprecision/gmp.hpp>
+
 #include "geom/predicates.h"
 #include "geom/root2.h"
+#include "geom/root3.h"
 #include "router/l1_router.h"
 
 namespace taut::router {
@@ -33,6 +36,14 @@ SpaceTightener::SpaceTightener(const geom::NormalizedObstacles& norm, TightenOri
     sb_ = std::make_unique<StaircaseBuilder>(norm.domain, norm.obstacles, so);
   }
   if (orientations_.set30) sb30_ = std::make_unique<Root3StaircaseBuilder>(norm.domain, norm.obstacles);
+}
+
+bool TightenOrientations::runs_in(std::span<const Point> line) const {
+  if (set) return set->runs_along(line);
+  if (set30)
+    for (std::size_t j = 1; j < line.size(); ++j)
+      if (!set30->fits(std::int64_t{line[j].x} - line[j - 1].x, std::int64_t{line[j].y} - line[j - 1].y)) return false;
+  return true;
 }
 
 bool SpaceTightener::is_loop(std::span<const Point> line) {
@@ -111,6 +122,38 @@ struct Cut {
 };
 
 using geom::boxes_meet;
+
+// Twelve times a polyline's length in the convex distance of a set at multiples of 30 degrees,
+// a + b sqrt3, summed in __int128 (each segment's is below 2^47) and compared exactly (GMP once
+// a sum passes 2^61, past Root3::sign_of's range).
+struct Length30 {
+  __int128 a = 0, b = 0;
+  Length30(const geom::Root3Directions& set, std::span<const Point> line) {
+    for (std::size_t j = 1; j < line.size(); ++j) {
+      const geom::Root3 l = set.length12(std::int64_t{line[j].x} - line[j - 1].x, std::int64_t{line[j].y} - line[j - 1].y);
+      a += l.a, b += l.b;
+    }
+  }
+  friend bool operator<(const Length30& x, const Length30& y) { return sign(x.a - y.a, x.b - y.b) < 0; }
+  friend bool operator<=(const Length30& x, const Length30& y) { return sign(x.a - y.a, x.b - y.b) <= 0; }
+  friend bool operator==(const Length30& x, const Length30& y) { return x.a == y.a && x.b == y.b; }
+  static int sign(__int128 a, __int128 b) {
+    constexpr __int128 kSmall = __int128{1} << 61;
+    if (a > -kSmall && a < kSmall && b > -kSmall && b < kSmall) return geom::Root3::sign_of(a, b);
+    auto big = [](__int128 v) {  // (two 64-bit halves: mpz has no __int128 constructor)
+      const bool neg = v < 0;
+      const unsigned __int128 u = neg ? -static_cast<unsigned __int128>(v) : static_cast<unsigned __int128>(v);
+      boost::multiprecision::mpz_int z = static_cast<std::uint64_t>(u >> 64);
+      z <<= 64;
+      z += static_cast<std::uint64_t>(u);
+      return neg ? boost::multiprecision::mpz_int(-z) : z;
+    };
+    const boost::multiprecision::mpz_int A = big(a), B = big(b);
+    if (A >= 0 && B >= 0) return A > 0 || B > 0 ? 1 : 0;
+    if (A <= 0 && B <= 0) return A < 0 || B < 0 ? -1 : 0;
+    return (A > 0) == (A * A > 3 * B * B) ? 1 : -1;
+  }
+};
 
 }  // namespace
 
@@ -324,11 +367,7 @@ NetLines prepare(const NetLines& wires, std::span<const Polygon> pins, std::vect
 
 }  // namespace
 
-NetsTightener::NetsTightener(NetSpace& space, NetsTightenOptions options) : space_(&space), options_(std::move(options)) {
-  // (its length rule and its checks of the output's directions know the lattice sets only)
-  if (options_.orientations.set30)
-    throw std::invalid_argument("NetsTightener: a set at multiples of 30 degrees is not supported (SpaceTightener only)");
-}
+NetsTightener::NetsTightener(NetSpace& space, NetsTightenOptions options) : space_(&space), options_(std::move(options)) {}
 
 std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, std::span<const Input> kind) {
   NetSpace& space = *space_;
@@ -392,7 +431,8 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
   // above with --clearance, 35 generated layouts (rects, polygons, maze, degenerate) likewise, and
   // every tightening test; each link's staircase lies in its parallelogram, which the first margin
   // holds when the taut path stays in the line's box.
-  const bool wide_set = options_.orientations.set && options_.orientations.set->cones_leave_box();
+  const bool wide_set = (options_.orientations.set && options_.orientations.set->cones_leave_box()) ||
+                        (options_.orientations.set30 && options_.orientations.set30->cones_leave_box());
   auto tighten_one = [&](std::size_t i, const std::vector<Point>& line) {
     std::int64_t margin = margin0;
     if (wide_set) {
@@ -425,9 +465,14 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
     auto rule = [&](const auto& la, const auto& lb) {
       return sketch_net ? (la < lb || (la == lb && ba < bb)) : (la <= lb && ba <= bb && (la < lb || ba < bb));
     };
-    if (!options_.orientations.set) return true;  // the class's shortest, and another path: strictly shorter
     // lengths in the set's convex distance (twice them: exact also with half steps)
-    return rule(options_.orientations.set->length2(a), options_.orientations.set->length2(b));
+    if (options_.orientations.set) return rule(options_.orientations.set->length2(a), options_.orientations.set->length2(b));
+    // a set at multiples of 30 degrees: the rounded wires' lengths in its convex distance (twelve
+    // times them, in Z[sqrt3]; a rounded segment is not exactly along the set, so this is the
+    // length of the shortest path in the set between its ends, summed)
+    if (options_.orientations.set30)
+      return rule(Length30(*options_.orientations.set30, a), Length30(*options_.orientations.set30, b));
+    return true;  // any angle: the class's shortest, and another path: strictly shorter
   };
 
   // Round 0: the sketches (inputs that are not wires of a router) must lie in their net's space as
@@ -453,9 +498,7 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
   // left at the end is untightened (a wire kept as it was would be written in directions the
   // output does not have).
   std::vector<std::vector<char>> fresh(n);
-  auto off_set = [&](const std::vector<Point>& line) {
-    return options_.orientations.set && !options_.orientations.set->runs_along(line);
-  };
+  auto off_set = [&](const std::vector<Point>& line) { return !options_.orientations.runs_in(line); };
   auto mark_off_set = [&](std::size_t i) {  // a net of wires: its pieces outside the set, if any
     fresh[i].clear();
     for (std::size_t k = 0; k < wires[i].size(); ++k)
@@ -504,6 +547,19 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
       }
   }
 
+  // Net i's wires cut anew (prepare: `recut`, frozen flags `fz`) replace its pieces, tried in the
+  // next round (fresh[i]: pieces outside the set, if any, marked again).
+  auto adopt = [&](std::size_t i, NetLines recut, std::vector<char> fz) {
+    wires[i] = std::move(recut);
+    mark_off_set(i);
+    frozen[i] = std::move(fz);
+    for (std::size_t k = 0; k < wires[i].size(); ++k) frozen[i][k] = frozen[i][k] || SpaceTightener::is_loop(wires[i][k]);
+    out[i].kept.assign(frozen[i].begin(), frozen[i].end());
+    taut_len[i].clear();
+    for (const auto& w : wires[i]) taut_len[i].push_back(euclidean_length(w));
+    retry[i] = 1;
+  };
+  bool recut_tried = false;  // the last round ended the rounds' moves, and the pieces were cut again (below)
   for (int round = 1;; ++round) {
     bool moved = false;
     for (std::size_t i = 0; i < n; ++i) {
@@ -552,6 +608,7 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
             o.round = round;
             o.wire = k;
             o.lift = r.taut;
+            o.why = r.why;
             if (!r.no_staircase) {
               o.wire_blockers = space.wire_blockers(i, wires[i][k]);
               o.pin_blockers = space.pin_blockers(i, wires[i][k]);
@@ -592,22 +649,37 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
       if (!is_sketch(i)) {  // a piece pulled through a joint of its net (another wire's end, a pin) is cut there
         std::vector<char> fz;
         NetLines recut = prepare(wires[i], space.net(i).pins, fz);
-        if (recut != wires[i]) {  // (fresh[i]: pieces outside the set, if any, marked again)
-          wires[i] = std::move(recut);
-          mark_off_set(i);
-          frozen[i] = std::move(fz);
-          for (std::size_t k = 0; k < wires[i].size(); ++k) frozen[i][k] = frozen[i][k] || SpaceTightener::is_loop(wires[i][k]);
-          o.kept.assign(frozen[i].begin(), frozen[i].end());
-          taut_len[i].clear();
-          for (const auto& w : wires[i]) taut_len[i].push_back(euclidean_length(w));
-          retry[i] = 1;  // the new pieces are tried in the next round
-        }
+        if (recut != wires[i]) adopt(i, std::move(recut), std::move(fz));
       }
       space.set_wires(i, wires[i]);
       for (const Box& b : space.wire_boxes(i)) changed.push_back({b, i});
     }
     stats_.rounds = round;
-    if (!moved) break;
+    if (!moved) {
+      // The rounds tighten the pieces cut at the start (and again after a move through a joint),
+      // but the wires are written joined where two end, on pins too (below), and such a line cut
+      // anew may give other pieces that tighten further as one: a piece that ended at a shape
+      // pin's corner and another that ran on along the pin to the wire's end, joined, go
+      // straight to that end (found by the 30-degree sets' test, 2026-12-08: a second run
+      // shortened wires in 5 of 150 layouts). So the rounds repeat "until no wire shortens" in
+      // the pieces a second run would see: each net's wires as they would be written, cut again;
+      // a net whose pieces differ is tried again with them. Once a re-cut moves nothing, done.
+      if (recut_tried) break;
+      recut_tried = true;
+      bool recut_any = false;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (wires[i].empty() || failed[i] || is_sketch(i)) continue;
+        std::vector<char> fz;
+        NetLines recut = prepare(join_at_twos(once(metal(wires[i]))), space.net(i).pins, fz);
+        if (recut == wires[i]) continue;
+        recut_any = true;
+        adopt(i, std::move(recut), std::move(fz));
+        space.set_wires(i, wires[i]);  // (the same metal)
+      }
+      if (!recut_any) break;
+    } else {
+      recut_tried = false;
+    }
     if (round >= options_.max_rounds) {
       stats_.capped = true;
       break;
@@ -690,11 +762,12 @@ std::optional<std::vector<NetLines>> tighten_scaled(const geom::Box& domain, std
     *outcomes = std::move(out);
   }
   if (far) return std::nullopt;
-  // (a wire in the set's directions scaled must be so snapped: links shorter than k collapse or turn)
-  if (const auto& set = options.orientations.set)
-    for (std::size_t i = 0; i < kw.size(); ++i)
-      for (std::size_t j = 0; j < kw[i].size(); ++j)
-        if (set->runs_along(kw[i][j]) && !set->runs_along(back[i][j])) return std::nullopt;
+  // (a wire in the set's directions scaled must be so snapped: links shorter than k collapse or
+  // turn; in a set at multiples of 30 degrees a rounded vertex snapped again may leave a segment
+  // out of its rounding rule)
+  for (std::size_t i = 0; i < kw.size(); ++i)
+    for (std::size_t j = 0; j < kw[i].size(); ++j)
+      if (options.orientations.runs_in(kw[i][j]) && !options.orientations.runs_in(back[i][j])) return std::nullopt;
   for (std::size_t i = 0; i < wires.size(); ++i)
     if (!wires[i].empty() && !(i < kind.size() && kind[i] == NetsTightener::Input::Sketch) &&
         (back[i].empty() || oct_length(wires[i]) < oct_length(back[i])))
@@ -713,9 +786,7 @@ void tighten_attempt(NetAttempt& attempt, const NetPins& pins, const geom::Norma
   std::vector<NetLines> w{attempt.wires};
   (void)nt.run(w);  // (a piece it could not move stays as routed, which the test below finds)
   if (w[0].empty()) return;
-  if (orientations.set &&
-      !std::all_of(w[0].begin(), w[0].end(), [&](const auto& line) { return orientations.set->runs_along(line); }))
-    return;
+  if (!std::all_of(w[0].begin(), w[0].end(), [&](const auto& line) { return orientations.runs_in(line); })) return;
   attempt.wires = std::move(w[0]);
   attempt.distance.reset();
 }

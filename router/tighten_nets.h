@@ -60,12 +60,18 @@
 namespace taut::router {
 
 // The output's directions: any angle (no set: the Euclidean taut wire), a lattice direction
-// set (geom/directions.h: rectilinear, octilinear, c:0,45, c:45,135, ...), or (since 2026-12-07,
-// SpaceTightener only: not NetsTightener) a set at multiples of 30 degrees
-// (geom/root3_directions.h: c:0,60,120, ...), written rounded (router/root3_staircase.h).
+// set (geom/directions.h: rectilinear, octilinear, c:0,45, c:45,135, ...), or (since 2026-12-07;
+// NetsTightener since 2026-12-08) a set at multiples of 30 degrees (geom/root3_directions.h:
+// c:0,60,120, ...), written rounded (router/root3_staircase.h).
 struct TightenOrientations {
   std::optional<geom::LatticeDirections> set;
   std::optional<geom::Root3Directions> set30;
+  // A direction set (either kind), not any angle.
+  bool c_oriented() const { return set || set30; }
+  // The line is written in these directions: any angle; every segment along a direction of the
+  // lattice set (LatticeDirections::runs_along); every segment within the rounding of one of the
+  // set at multiples of 30 degrees (Root3Directions::fits, what taut check verifies).
+  bool runs_in(std::span<const geom::Point> line) const;
   static const TightenOrientations Any, Rectilinear, Octilinear;
   friend bool operator==(const TightenOrientations&, const TightenOrientations&) = default;
 };
@@ -147,6 +153,7 @@ struct NetTightenOutcome {
   bool untightened = false;
   std::size_t wire = 0;          // which wire (an index into the net's wires after the cuts)
   Tightened lift;                // NotFree: the failed lift (its segment and point)
+  std::string why;               // NoStaircase in a set at multiples of 30 degrees: why (SpaceTightener::Result::why)
   std::vector<std::size_t> wire_blockers, pin_blockers;  // NotFree: nets whose grown wires / pins it enters
   double length_before = 0, length_taut = 0, length_after = 0;  // Euclidean
   std::int64_t bends_before = 0, bends_after = 0;

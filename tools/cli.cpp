@@ -12,6 +12,7 @@
 #include <iostream>
 
 #include "geom/directions.h"
+#include "geom/root3_directions.h"
 #include "io/atomic_file.h"
 #include "io/layout_reader.h"
 #include "io/validate_layout.h"
@@ -130,14 +131,14 @@ bool check_routing_options(const RoutingOptions& options, const io::Layout& layo
   auto available = [&](const std::string& text) {
     const std::string o = io::canonical_orientations(text);
     return o == "rectilinear" || o == "octilinear" || ((options.allow_any || options.allow_sets) && o == "any") ||
-           (options.allow_sets && geom::LatticeDirections::parse(o));
+           (options.allow_sets && (geom::LatticeDirections::parse(o) || geom::Root3Directions::parse(o)));
   };
   // what is available, said in the refusal
   const std::string offered = options.allow_sets
-                                  ? "rectilinear, octilinear, any and c: sets of directions at multiples of 45 "
-                                    "degrees, two orientations at least (e.g. c:45,135), are "
-                                    "available; a direction at another angle has no integer step, so no wire with "
-                                    "integer vertices runs along it"
+                                  ? "rectilinear, octilinear, any and c: sets of two orientations at least, every "
+                                    "one at a multiple of 45 degrees (e.g. c:45,135) or every one at a multiple of "
+                                    "30 degrees (e.g. c:0,60,120, written with vertices rounded to integers), are "
+                                    "available; a direction at another angle is not"
                                   : "only rectilinear and octilinear wires are available in this version";
   if (!options.orientations.empty() && !available(options.orientations)) {
     print_usage_error("CLI-0021", "--orientations " + options.orientations + ": " + offered);

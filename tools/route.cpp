@@ -399,7 +399,7 @@ router::NetAttempt sketch_attempt(const io::Layout& layout, const io::Net& net, 
   }
   if (r.no_staircase) {
     a.code = "TIGHTEN-0004";
-    a.reason = no_staircase_reason(orientations) + " (the net's <sketch>)";
+    a.reason = (r.why.empty() ? no_staircase_reason(orientations) : r.why) + " (the net's <sketch>)";
     return a;
   }
   a.routed = true;
@@ -427,12 +427,15 @@ std::optional<std::string> parity_reason(const io::Net& net, const geom::Lattice
 }
 
 // `status`: the tightening's outcome for the net (NoStaircase, NotFree), when known.
-std::string off_set_reason(const io::Net& net, const geom::LatticeDirections& set,
-                           std::optional<router::NetTightenOutcome::Status> status) {
-  if (auto why = parity_reason(net, set)) return *why;
-  const std::string head = "its octilinear route could not be tightened into " + set.name() + ": ";
+// (a set at multiples of 30 degrees since 2026-12-08: `why`, its builder's reason for no wire)
+std::string off_set_reason(const io::Net& net, const router::TightenOrientations& set,
+                           std::optional<router::NetTightenOutcome::Status> status, const std::string& why = "") {
+  if (set.set)
+    if (auto p = parity_reason(net, *set.set)) return *p;
+  const std::string name = set.set ? set.set->name() : set.set30->name();
+  const std::string head = "its octilinear route could not be tightened into " + name + ": ";
   using S = router::NetTightenOutcome::Status;
-  if (status == S::NoStaircase) return head + no_staircase_reason(set.name());
+  if (status == S::NoStaircase) return head + (why.empty() ? no_staircase_reason(name) : why);
   if (status == S::NotFree)
     return head + "a piece of it lies where the other nets' wires leave no room to move it (at exactly the "
                   "clearance on both sides), so it stays in octilinear directions the set lacks; route it octilinear";
@@ -532,14 +535,17 @@ void add_route(CLI::App& app, int& status) {
     }
     const bool bends = args->routing.metric != "l1";
     // --orientations any, or a lattice c: set other than rectilinear and octilinear (since
-    // 2026-12-06): the nets are routed octilinear with the gaps of exactly the clearance closed,
-    // then tightened together into those directions (--tighten is implied), and a net whose wires
-    // cannot be written in them is failed (ROUTE-0021). `target` is what the wires are written in.
+    // 2026-12-06), or a set at multiples of 30 degrees (since 2026-12-08: c:0,60,120, written
+    // with its exact vertices rounded, router/root3_staircase.h): the nets are routed octilinear
+    // with the gaps of exactly the clearance closed, then tightened together into those
+    // directions (--tighten is implied), and a net whose wires cannot be written in them is failed
+    // (ROUTE-0021). `target` is what the wires are written in.
     const std::string target = routing_orientations(args->routing, *layout);
     const bool reshaped = !bends && target != "rectilinear" && target != "octilinear";
-    // the lattice set the wires are written in when reshaped (nullopt: any, or not reshaped)
-    const std::optional<geom::LatticeDirections> target_set =
-        reshaped ? geom::LatticeDirections::parse(target) : std::nullopt;
+    // the set the wires are written in when reshaped (neither kind: any, or not reshaped)
+    const router::TightenOrientations target_orient =
+        reshaped ? tighten_orientations(target) : router::TightenOrientations::Any;
+    const bool target_set = target_orient.c_oriented();
     if (reshaped) args->tighten = true;
     if (bends && args->tighten) {
       print_usage_error("CLI-0020", "--tighten makes every wire shortest in L1 in its class; it does not apply "
@@ -700,17 +706,19 @@ void add_route(CLI::App& app, int& status) {
 
       const std::string orient_word = octilinear ? "octilinear" : "rectilinear";
       // the directions the wires are tightened into and written in: the routing's, or the target's
-      const std::string tighten_word = reshaped ? (target_set ? target_set->name() : "any") : orient_word;
+      const std::string tighten_word =
+          reshaped ? (target_orient.set ? target_orient.set->name() : target_orient.set30 ? target_orient.set30->name() : "any")
+                   : orient_word;
       routes.metric = target_set || !reshaped ? "l1" : "euclidean";  // (as taut tighten writes them)
       routes.orientations = tighten_word;
       // A net whose tightened wires still leave the lattice set (a piece kept as routed, in
       // octilinear directions the set lacks) is written as failed, ROUTE-0021 (the caller counts it).
       auto fail_off_set = [&](const io::Net& net, io::Route& route,
-                              std::optional<router::NetTightenOutcome::Status> status) {
+                              std::optional<router::NetTightenOutcome::Status> status, const std::string& why = "") {
         route = io::Route{};
         route.net = net.name;
         route.status = "failed";
-        route.reason = off_set_reason(net, *target_set, status);
+        route.reason = off_set_reason(net, target_orient, status, why);
         print_diagnostics({Diagnostic{Severity::Warning, "ROUTE-0021", layout->file, net.line, 0,
                                       "net \"" + net.name + "\" not routed: " + *route.reason}},
                           args->load.quiet);
@@ -805,8 +813,8 @@ void add_route(CLI::App& app, int& status) {
               return sketch_attempt(*layout, scaled_net(net, pins.scale), obs, reshaped ? tighten_word : orient_word,
                                     nr.space().domain(), pins.scale);
             }
-            if (reshaped && target_set)
-              if (auto why = parity_reason(net, *target_set)) {  // never routed, so it takes no room
+            if (reshaped && target_orient.set)
+              if (auto why = parity_reason(net, *target_orient.set)) {  // never routed, so it takes no room
                 router::NetAttempt a;
                 a.code = "ROUTE-0021";
                 a.reason = *why;
@@ -990,10 +998,11 @@ void add_route(CLI::App& app, int& status) {
           }
           if (wires[i].empty()) continue;
           if (reshaped && target_set &&
-              !std::all_of(wires[i].begin(), wires[i].end(), [&](const auto& w) { return target_set->runs_along(w); })) {
+              !std::all_of(wires[i].begin(), wires[i].end(), [&](const auto& w) { return target_orient.runs_in(w); })) {
             if (was_routed) --routed;
             shortest_of[i].reset();
-            fail_off_set(net, route, i < tighten_outcomes.size() ? std::optional(tighten_outcomes[i].status) : std::nullopt);
+            fail_off_set(net, route, i < tighten_outcomes.size() ? std::optional(tighten_outcomes[i].status) : std::nullopt,
+                         i < tighten_outcomes.size() ? tighten_outcomes[i].why : std::string());
             continue;
           }
           if (!was_routed) ++routed;
@@ -1065,7 +1074,7 @@ void add_route(CLI::App& app, int& status) {
             continue;
           }
           if (reshaped && target_set &&
-              !std::all_of(wires.begin(), wires.end(), [&](const io::Wire& w) { return target_set->runs_along(w.points); })) {
+              !std::all_of(wires.begin(), wires.end(), [&](const io::Wire& w) { return target_orient.runs_in(w.points); })) {
             if (was_routed || follows_sketch(net)) --routed;  // (a sketch net was counted above)
             shortest_of[i].reset();
             fail_off_set(net, route, no_staircase ? std::optional(router::NetTightenOutcome::Status::NoStaircase) : std::nullopt);

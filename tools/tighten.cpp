@@ -10,9 +10,9 @@
 // or with no integer staircase in its class (TIGHTEN-0004) is written as failed (exit status 1).
 // `c:0,90` and `c:0,45,90,135` name rectilinear and octilinear. A set at multiples of 30 degrees
 // (c:0,60,120, ...; since 2026-12-07) writes the shortest wire of the class in it built exactly in
-// Q(sqrt3) with its vertices rounded to integers (router/root3_staircase.h; not with --clearance
-// or --min-link yet). `c:` sets with a direction at another angle, and those with either option,
-// are refused (CLI-0027) or, from <rules>, replaced by `any` (TIGHTEN-0003).
+// Q(sqrt3) with its vertices rounded to integers (router/root3_staircase.h; with --clearance
+// since 2026-12-08, not with --min-link yet). `c:` sets with a direction at another angle, and
+// those with --min-link, are refused (CLI-0027) or, from <rules>, replaced by `any` (TIGHTEN-0003).
 // --min-link adds each wire's minimum-link path of its class (router/minlink.h, any angle, exact
 // rational bends; for a loop its minimum-link loop, section 5.2, proven minimal unless its
 // shortest loop is convex and the loop found is above the winding bound) to --stats and --svg,
@@ -157,7 +157,7 @@ void add_tighten(CLI::App& app, int& status) {
                   "directions of the output: rectilinear, octilinear, a c: set of multiples of 45 degrees "
                   "such as c:0,45 or c:45,135 (the shortest wire of the class in those directions, fewest "
                   "links), a c: set of multiples of 30 degrees such as c:0,60,120 (the same, its vertices "
-                  "rounded to integers; not with --clearance or --min-link yet) or any (the Euclidean "
+                  "rounded to integers; not with --min-link yet) or any (the Euclidean "
                   "shortest); default: <rules>");
   sub->add_flag("--clearance", args->clearance,
                 "keep half the wire width plus the spacing of <rules> from every blockage (tighten against "
@@ -174,8 +174,9 @@ void add_tighten(CLI::App& app, int& status) {
     const auto t0 = Clock::now();
     // The output's directions: any, a lattice direction set by its name (c:0,90 is rectilinear),
     // or (since 2026-12-07) a set at multiples of 30 degrees such as c:0,60,120, written with its
-    // exact vertices rounded (router/root3_staircase.h), not yet with --clearance or --min-link.
-    const std::string not_with30 = args->clearance ? "--clearance" : args->min_link ? "--min-link" : "";
+    // exact vertices rounded (router/root3_staircase.h; with --clearance since 2026-12-08), not
+    // yet with --min-link.
+    const std::string not_with30 = args->min_link ? "--min-link" : "";
     std::string o = args->orientations;
     if (!o.empty() && o != "any") {
       const auto set = geom::LatticeDirections::parse(o);
@@ -276,12 +277,6 @@ void add_tighten(CLI::App& app, int& status) {
     const router::TightenOrientations out_orientations = tighten_orientations(orientations);
     const std::optional<geom::LatticeDirections>& out_set = out_orientations.set;
     const std::optional<geom::Root3Directions>& out_set30 = out_orientations.set30;
-    // every segment of a line within the rounding of a direction of out_set30
-    auto fits30 = [&](const std::vector<geom::Point>& l) {
-      for (std::size_t j = 1; j < l.size(); ++j)
-        if (!out_set30->fits(std::int64_t{l[j].x} - l[j - 1].x, std::int64_t{l[j].y} - l[j - 1].y)) return false;
-      return true;
-    };
     // A staircase in a cone of two steps that do not bracket the link's box, as in c:0,45 (NE and
     // W round north) or c:45,135 (NE and SE round east), leaves the box of its ends: (0,0) to
     // (0,1000) in c:0,45 is (0,0) (1000,1000) (0,1000). Without a <boundary> the plane is
@@ -301,9 +296,8 @@ void add_tighten(CLI::App& app, int& status) {
     std::vector<char> off_directions(inputs.size(), 0);
     for (std::size_t i = 0; i < inputs.size(); ++i)
       off_directions[i] = inputs[i].source == "wires" &&
-                          ((out_set && !std::all_of(inputs[i].lines.begin(), inputs[i].lines.end(),
-                                                    [&](const auto& l) { return out_set->runs_along(l); })) ||
-                           (out_set30 && !std::all_of(inputs[i].lines.begin(), inputs[i].lines.end(), fits30)));
+                          !std::all_of(inputs[i].lines.begin(), inputs[i].lines.end(),
+                                       [&](const auto& l) { return out_orientations.runs_in(l); });
     if (o.empty() && layout->routes) {
       std::size_t off = 0, first = 0;
       for (std::size_t i = 0; i < inputs.size(); ++i)
@@ -624,6 +618,7 @@ void add_tighten(CLI::App& app, int& status) {
         }
         contractible = oc.status == St::Contractible;
         no_staircase = oc.untightened && oc.wire < oc.kept.size() && oc.kept[oc.wire] == 2;
+        if (no_staircase) no_staircase_why = oc.why;  // (a set at multiples of 30 degrees)
         if (oc.untightened && !no_staircase) {
           route.status = "failed";
           route.reason = in.source == "wires"

@@ -189,6 +189,11 @@ TEST(Path, RequestsThisVersionCannotServeExit2AndPrintNothing) {
              "<layout name=\"o\" version=\"1\">\n"
              "  <rules orientations=\"c:0,60,120\"/>\n"
              "</layout>\n");
+  const std::string ten = dir + "/ten.xml";  // (route writes c:0,60,120 since 2026-12-08, not this)
+  write_text(ten,
+             "<layout name=\"o\" version=\"1\">\n"
+             "  <rules orientations=\"c:0,10\"/>\n"
+             "</layout>\n");
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
       {{"path", kDemo, "--from", "1.5,3", "--to", "1,1"}, "CLI-0022"},
       {{"path", kDemo, "--from", "1,1", "--to", "1073741824,0"}, "CLI-0022"},
@@ -208,7 +213,7 @@ TEST(Path, RequestsThisVersionCannotServeExit2AndPrintNothing) {
       {{"path", kDemo, "--from", "1,1"}, "CLI-0001"},
       {{"route", kDemo, "-o", dir + "/x.xml", "--metric", "combined", "--tighten"}, "CLI-0020"},
       {{"route", kDemo, "-o", dir + "/x.xml", "--metric", "link", "--orientations", "octilinear"}, "CLI-0021"},
-      {{"route", oct, "-o", dir + "/x.xml"}, "CLI-0021"},
+      {{"route", ten, "-o", dir + "/x.xml"}, "CLI-0021"},
   };
   for (const auto& [args, code] : cases) {
     const auto r = run_taut(args);

@@ -1308,10 +1308,15 @@ TEST(Tighten, GuardRingWithAPinPassesTheCheck) {
 // also recomputed here).
 TEST(Tighten, SetsAtMultiplesOf30DegreesOnTheWindDesign) {
   const std::string dir = temp_dir("tighten_thirty");
+  // with --clearance (since 2026-12-08) every net together, the clearance of wind.xml's <rules>
+  // kept (the whole check passes: clearance from blockages and between nets, no shorts)
+  for (const bool clearance : {false, true})
   for (const std::string set : {"c:0,60,120", "c:30,90,150", "c:0,30,60,90,120,150", "c:0,60", "c:0,90,150"}) {
-    SCOPED_TRACE(set);
+    SCOPED_TRACE(set + (clearance ? " --clearance" : ""));
     const std::string out = dir + "/w.xml";
-    const auto run = run_taut({"tighten", kDesigns + "wind.xml", "-o", out, "--orientations", set, "--stats", dir + "/s.json"});
+    std::vector<std::string> cmd{"tighten", kDesigns + "wind.xml", "-o", out, "--orientations", set, "--stats", dir + "/s.json"};
+    if (clearance) cmd.push_back("--clearance");
+    const auto run = run_taut(cmd);
     ASSERT_EQ(run.status, 0) << run.err;
     EXPECT_NE(read_text(out).find("orientations=\"" + set + "\""), std::string::npos);
     const auto checked = run_taut({"check", out, "--json"});
@@ -1319,6 +1324,12 @@ TEST(Tighten, SetsAtMultiplesOf30DegreesOnTheWindDesign) {
     EXPECT_EQ(j["routes_check"]["orientations"], "ok") << checked.err;
     EXPECT_EQ(j["routes_check"]["free_space"], "ok") << checked.err;
     EXPECT_EQ(j["routes_check"]["connectivity"], "ok") << checked.err;
+    if (clearance) {
+      EXPECT_EQ(checked.status, 0) << checked.out;
+      EXPECT_EQ(j["routes_check"]["clearance"], "ok") << checked.out;
+      EXPECT_EQ(j["routes_check"]["shorts"], "ok") << checked.out;
+      EXPECT_TRUE(nlohmann::json::parse(read_text(dir + "/s.json"))["tighten"].contains("together"));
+    }
     const auto fits = geom::Root3Directions::parse(set);
     const auto layout = io::read_layout(out);
     ASSERT_TRUE(layout.layout && layout.layout->routes);
@@ -1337,8 +1348,9 @@ TEST(Tighten, SetsAtMultiplesOf30DegreesOnTheWindDesign) {
 }
 
 // A c: set in <rules> is the default output: one at multiples of 30 degrees is written in it
-// (since 2026-12-07; before, at any angle with TIGHTEN-0003, which a set at another angle still
-// gets, and this one with --clearance, which does not write such sets yet).
+// (since 2026-12-07, and with --clearance since 2026-12-08; before, at any angle with
+// TIGHTEN-0003, which a set at another angle still gets, and this one with --min-link, which
+// does not write such sets yet).
 TEST(Tighten, CSetInTheRulesIsTheOutputsDirections) {
   const std::string dir = temp_dir("tighten_cset");
   const std::string body = "  <rules orientations=\"c:0,60,120\"/>\n"
@@ -1364,14 +1376,19 @@ TEST(Tighten, CSetInTheRulesIsTheOutputsDirections) {
   EXPECT_NE(t10.err.find("warning: [TIGHTEN-0003]"), std::string::npos) << t10.err;
   EXPECT_NE(t10.err.find("an angle other than a multiple of 30 or 45 degrees is not available"), std::string::npos) << t10.err;
   EXPECT_EQ(wires_of(dir + "/t10.xml", "n"), (std::vector<Path>{{{10, 50}, {40, 60}, {60, 60}, {90, 50}}}));
-  // with --clearance: at any angle, said
+  // with --clearance: in the set too (no clearance in these rules: the same wire)
   const auto tc = run_taut({"tighten", file, "-o", dir + "/tc.xml", "--clearance"});
   EXPECT_EQ(tc.status, 0) << tc.err;
-  EXPECT_NE(tc.err.find("a set at multiples of 30 degrees is not written with --clearance yet; tightened wires are "
+  EXPECT_EQ(tc.err.find("TIGHTEN-0003"), std::string::npos) << tc.err;
+  EXPECT_EQ(wires_of(dir + "/tc.xml", "n"), wires_of(dir + "/t.xml", "n"));
+  // with --min-link: at any angle, said
+  const auto tm = run_taut({"tighten", file, "-o", dir + "/tm.xml", "--min-link"});
+  EXPECT_EQ(tm.status, 0) << tm.err;
+  EXPECT_NE(tm.err.find("a set at multiples of 30 degrees is not written with --min-link yet; tightened wires are "
                         "written at any angle"),
             std::string::npos)
-      << tc.err;
-  EXPECT_EQ(wires_of(dir + "/tc.xml", "n"), (std::vector<Path>{{{10, 50}, {40, 60}, {60, 60}, {90, 50}}}));
+      << tm.err;
+  EXPECT_EQ(wires_of(dir + "/tm.xml", "n"), (std::vector<Path>{{{10, 50}, {40, 60}, {60, 60}, {90, 50}}}));
   // c:0,90 is another name of the rectilinear directions: the same as --orientations rectilinear
   std::string rect_rules = read_text(file);
   rect_rules.replace(rect_rules.find("c:0,60,120"), 10, "c:90,0");
@@ -1416,17 +1433,17 @@ TEST(Tighten, BadInputExit2AndWritesNothing) {
   EXPECT_EQ(run.status, 2) << run.err;
   EXPECT_NE(run.err.find("passes through a point where blockages touch at or after 60,60"), std::string::npos) << run.err;
   // c: sets with a direction at neither a multiple of 45 nor of 30 degrees are not available, and
-  // a set at multiples of 30 not with --clearance or --min-link yet
+  // a set at multiples of 30 not with --min-link yet
   for (const auto& extra : std::vector<std::vector<std::string>>{
-           {"--orientations", "c:0,10"}, {"--orientations", "c:0,60,120", "--clearance"},
-           {"--orientations", "c:0,60,120", "--min-link"}}) {
+           {"--orientations", "c:0,10"}, {"--orientations", "c:0,60,120", "--min-link"},
+           {"--orientations", "c:30,90,150", "--clearance", "--min-link"}}) {
     std::vector<std::string> cmd{"tighten", file, "-o", dir + "/t.xml"};
     cmd.insert(cmd.end(), extra.begin(), extra.end());
     run = run_taut(cmd);
     EXPECT_EQ(run.status, 2) << run.err;
     EXPECT_NE(run.err.find("[CLI-0027]"), std::string::npos) << run.err;
-    const bool thirty = extra[1] == "c:0,60,120";
-    EXPECT_NE(run.err.find(thirty ? "is written (vertices rounded) without " + extra[2] + " only, not with it yet"
+    const bool thirty = extra[1] != "c:0,10";
+    EXPECT_NE(run.err.find(thirty ? "is written (vertices rounded) without --min-link only, not with it yet"
                                   : "or one at multiples of 30 degrees such as c:0,60,120"),
               std::string::npos)
         << run.err;

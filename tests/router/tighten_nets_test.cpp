@@ -23,6 +23,7 @@
 #include "geom/normalize.h"
 #include "geom/predicates.h"
 #include "geom/root2.h"
+#include "geom/root3_directions.h"
 #include "oracle/homotopy.h"
 #include "router/check.h"
 #include "router/net_router.h"
@@ -122,6 +123,34 @@ std::int64_t same_ways(const std::vector<Polygon>& pins, const NetLines& before,
   return compared;
 }
 
+// The net router's wires on a random layout (net i's, empty when not routed).
+std::vector<NetLines> routed_wires(const RandomLayout& L, int seed, bool octilinear) {
+  router::NetRouterOptions opt;
+  opt.octilinear = octilinear;
+  router::NetRouter nr(L.norm.domain, L.norm.obstacles, L.nets, L.rules, opt);
+  nr.run(octilinear ? router::NetRouter::oct_router(seed % 3 == 0) : router::NetRouter::l1_router(seed % 3 == 0));
+  std::vector<NetLines> wires;
+  for (const auto& o : nr.outcomes()) wires.push_back(o.routed ? o.wires : NetLines{});
+  return wires;
+}
+
+// Free, connected and clear: the checker's problems, each a failure.
+void check_clear(const RandomLayout& L, const std::vector<NetLines>& wires, const std::function<void(const std::string&)>& fail) {
+  router::CheckRules rules;
+  rules.wire_width = L.rules.wire_width;
+  rules.spacing = L.rules.spacing;
+  for (const auto& p : router::check_routes(L.norm, check_nets(L.nets, wires), rules).problems) fail(p.message);
+}
+
+// Every net of L tightened together (wires: in, then out).
+std::pair<std::vector<router::NetTightenOutcome>, router::NetsTightenStats> tighten_layout(
+    const RandomLayout& L, const router::NetsTightenOptions& to, std::vector<NetLines>& wires) {
+  router::NetSpace space(L.norm.domain, L.norm.obstacles, L.nets, L.rules);
+  router::NetsTightener nt(space, to);
+  auto outcomes = nt.run(wires);
+  return {std::move(outcomes), nt.stats()};
+}
+
 struct Totals {
   int layouts = 0, failed = 0, later_rounds = 0;
   std::int64_t nets = 0, pieces = 0, moved = 0, kept = 0, kept_not_free = 0, kept_shape = 0, shorter = 0, windows = 0, whole = 0, words = 0;
@@ -130,12 +159,7 @@ struct Totals {
 void check_layout(int seed, router::TightenOrientations orient, Totals& t) {
   const RandomLayout L = random_layout(seed);
   const bool octilinear = orient == router::TightenOrientations::Octilinear;
-  router::NetRouterOptions opt;
-  opt.octilinear = octilinear;
-  router::NetRouter nr(L.norm.domain, L.norm.obstacles, L.nets, L.rules, opt);
-  nr.run(octilinear ? router::NetRouter::oct_router(seed % 3 == 0) : router::NetRouter::l1_router(seed % 3 == 0));
-  std::vector<NetLines> before;
-  for (const auto& o : nr.outcomes()) before.push_back(o.routed ? o.wires : NetLines{});
+  const std::vector<NetLines> before = routed_wires(L, seed, octilinear);
   const std::string at = "seed " + std::to_string(seed) + " (" +
                          (orient == router::TightenOrientations::Any ? "any" : octilinear ? "octilinear" : "rectilinear") +
                          ", w " + std::to_string(L.rules.wire_width) + ", s " + std::to_string(L.rules.spacing) + ")";
@@ -144,7 +168,7 @@ void check_layout(int seed, router::TightenOrientations orient, Totals& t) {
   };
 
   std::vector<NetLines> after = before;
-  router::NetSpace space(L.norm.domain, L.norm.obstacles, L.nets, L.rules);
+  router::NetSpace space(L.norm.domain, L.norm.obstacles, L.nets, L.rules);  // (asked for each net's obstacles below)
   router::NetsTightenOptions to;
   to.orientations = orient;
   router::NetsTightener nt(space, to);
@@ -162,11 +186,7 @@ void check_layout(int seed, router::TightenOrientations orient, Totals& t) {
     if (outcomes[i].status == router::NetTightenOutcome::Status::Contractible)
       fail("net " + std::to_string(i) + " was called a contractible loop");
 
-  // free, connected and clear
-  router::CheckRules rules;
-  rules.wire_width = L.rules.wire_width;
-  rules.spacing = L.rules.spacing;
-  for (const auto& p : router::check_routes(L.norm, check_nets(L.nets, after), rules).problems) fail(p.message);
+  check_clear(L, after, fail);
 
   const oracle::HomotopyWords words(L.norm.domain, L.norm.obstacles);
   for (std::size_t i = 0; i < L.nets.size(); ++i) {
@@ -337,6 +357,98 @@ TEST(NetsTightener, ScaledPlaneTakesLegalSketchesInExactGaps) {
   if (n >= 100) {
     EXPECT_GT(t.units_refused, 0);  // the layout's units refuse some legal wires, the scaled plane none
   }
+}
+
+// Sets at multiples of 30 degrees (since 2026-12-08): the net router's octilinear wires tightened
+// together into c:0,60,120 and the other such sets, their exact wires rounded
+// (router/root3_staircase.h). Judged as above, by references that share nothing with the
+// builder: the checker (free, connected, clear), the homotopy words (every pin-to-pin way keeps
+// its class), every wire written within the rounding rule of the set (Root3Directions::fits,
+// itself tested against angles in tests/geom/root3_test.cpp), and tightening the result again
+// moves nothing. A net may keep a piece as routed (no wire in the set: a pinch, H&S §6; or a
+// gap of exactly the clearance): such nets are counted, and must be few.
+struct Totals30 {
+  int layouts = 0, failed = 0;
+  std::int64_t nets = 0, in_set = 0, kept_nets = 0, moved = 0, words = 0;
+};
+
+void check_layout30(int seed, const geom::Root3Directions& set, Totals30& t) {
+  const RandomLayout L = random_layout(seed);
+  const std::vector<NetLines> before = routed_wires(L, seed, true);
+  const std::string at = "seed " + std::to_string(seed) + " (" + set.name() + ", w " + std::to_string(L.rules.wire_width) +
+                         ", s " + std::to_string(L.rules.spacing) + ")";
+  auto fail = [&](const std::string& what) {
+    if (t.failed++ < 10) ADD_FAILURE() << at << ": " << what;
+  };
+  router::NetsTightenOptions to;
+  to.orientations = router::TightenOrientations::Any;  // (the default is rectilinear)
+  to.orientations.set30 = set;
+  const router::TightenOrientations& orient = to.orientations;
+  std::vector<NetLines> after = before;
+  const auto [outcomes, stats] = tighten_layout(L, to, after);
+  ++t.layouts;
+  t.moved += stats.moved;
+  if (stats.capped) fail("the rounds were capped");
+  check_clear(L, after, fail);
+
+  const oracle::HomotopyWords words(L.norm.domain, L.norm.obstacles);
+  for (std::size_t i = 0; i < L.nets.size(); ++i) {
+    if (before[i].empty()) continue;
+    ++t.nets;
+    t.words += same_ways(L.nets[i].pins, before[i], after[i], words, [&](const std::string& w) { fail("net " + std::to_string(i) + ": " + w); });
+    const bool kept = std::any_of(outcomes[i].kept.begin(), outcomes[i].kept.end(), [](char c) { return c != 0; });
+    bool fits = true;
+    for (const auto& w : after[i])
+      for (std::size_t j = 1; j < w.size(); ++j)
+        fits = fits && set.fits(std::int64_t{w[j].x} - w[j - 1].x, std::int64_t{w[j].y} - w[j - 1].y);
+    if (fits) {
+      ++t.in_set;
+    } else if (!kept) {
+      fail("net " + std::to_string(i) + " has a segment outside " + set.name() + " and no piece kept");
+    } else {
+      ++t.kept_nets;
+    }
+    if (fits != orient.runs_in(after[i].empty() ? std::vector<Point>{} : after[i][0]) && after[i].size() == 1)
+      fail("net " + std::to_string(i) + ": TightenOrientations::runs_in disagrees with fits");
+  }
+  // tightening the result again moves nothing
+  std::vector<NetLines> again = after;
+  const std::int64_t moved_again = tighten_layout(L, to, again).second.moved;
+  if (moved_again != 0 || as_sets(again) != as_sets(after)) {
+    std::string d;
+    const auto A = as_sets(again), B = as_sets(after);
+    for (std::size_t i = 0; i < A.size(); ++i)
+      if (A[i] != B[i]) {
+        d += " net " + std::to_string(i) + ":";
+        for (const auto& w : B[i]) { d += " was"; for (Point p : w) d += " " + std::to_string(p.x) + "," + std::to_string(p.y); }
+        for (const auto& w : A[i]) { d += " now"; for (Point p : w) d += " " + std::to_string(p.x) + "," + std::to_string(p.y); }
+      }
+    fail("tightening the result again moved " + std::to_string(moved_again) + " wires" + d);
+  }
+}
+
+TEST(NetsTightener, SetsAtMultiplesOf30DegreesKeepClearanceAndClasses) {
+  Totals30 t;
+  const char* names[] = {"c:0,60,120", "c:30,90,150", "c:0,30,60,90,120,150", "c:0,60", "c:0,90,150"};
+  const int n = sanitized_share(150, 6);
+  for (int seed = 1; seed <= n; ++seed) {
+    const auto set = geom::Root3Directions::parse(names[seed % 5]);
+    ASSERT_TRUE(set);
+    try {
+      check_layout30(930000 + seed, *set, t);
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << "seed " << 930000 + seed << " (" << names[seed % 5] << "): " << e.what();
+      ++t.failed;
+    }
+  }
+  std::printf("%d layouts, %lld routed nets (%lld pin-to-pin ways' words compared): %lld written in the set, %lld with a "
+              "piece kept as routed; %lld wires moved\n",
+              t.layouts, static_cast<long long>(t.nets), static_cast<long long>(t.words), static_cast<long long>(t.in_set),
+              static_cast<long long>(t.kept_nets), static_cast<long long>(t.moved));
+  EXPECT_EQ(t.failed, 0);
+  EXPECT_GT(t.nets, n);
+  EXPECT_GT(t.moved, t.nets / 2);
+  EXPECT_LT(t.kept_nets * 10, t.nets);  // nearly every net is written in the set
 }
 
 }  // namespace tighten_nets_test
