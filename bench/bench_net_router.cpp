@@ -33,7 +33,8 @@
 // passed by the independent checker), so a legal routing of every net is known to exist: the
 // completion target's instance. Their planted length is printed beside the routed length.
 //
-// --orientations SET (any, or a lattice c: set such as c:45,135; l1 only): each row is then also
+// --orientations SET (any, a lattice c: set such as c:45,135, or since 2026-12-08 a set at
+// multiples of 30 degrees such as c:0,60,120, its wires rounded; l1 only): each row is then also
 // routed as `taut route --orientations SET` does it (since 2026-12-06): octilinear, the gaps of
 // exactly the clearance closed, each attempt tightened into a lattice set where it was routed
 // (router::tighten_attempt), then every net tightened together into the set (NetsTightener);
@@ -65,6 +66,7 @@
 #include "bench/free_points.h"
 #include "bench/planted_nets.h"
 #include "geom/directions.h"
+#include "geom/root3_directions.h"
 #include "router/bend_router.h"
 #include "router/l1_router.h"
 #include "router/net_router.h"
@@ -119,11 +121,12 @@ int main(int argc, char** argv) {
   std::optional<taut::router::TightenOrientations> set_orient;
   if (!set_word.empty()) {
     const auto lattice = taut::geom::LatticeDirections::parse(set_word);
-    if (set_word != "any" && !lattice) {
-      std::fprintf(stderr, "--orientations: any or a c: set of directions at multiples of 45 degrees\n");
+    const auto thirty = lattice ? std::nullopt : taut::geom::Root3Directions::parse(set_word);  // (since 2026-12-08)
+    if (set_word != "any" && !lattice && !thirty) {
+      std::fprintf(stderr, "--orientations: any or a c: set of directions at multiples of 45 degrees or of 30 degrees\n");
       return 2;
     }
-    if (!bends) set_orient = taut::router::TightenOrientations{lattice, std::nullopt};
+    if (!bends) set_orient = taut::router::TightenOrientations{lattice, thirty};
   }
   const taut::router::BendMetric bm = metric == "link" ? taut::router::BendMetric::Link : taut::router::BendMetric::Combined;
   if (metric == "link") bend_cost = 0;
@@ -357,11 +360,11 @@ int main(int argc, char** argv) {
         taut::router::NetsTightenStats nts;
         const double set_s = taut::bench::seconds_of([&] {
           const taut::router::NetRouteFn base = taut::router::NetRouter::oct_router();
-          if (to.set)
+          if (to.c_oriented())
             sr.run([&](std::size_t i, const taut::router::NetPins& pins, const taut::geom::NormalizedObstacles& obs) {
               // c:45,135 keeps the parity of x + y: a net of point pins of both parities is not
               // routed (taut route fails it with ROUTE-0021 before routing, so it takes no room)
-              if (to.set->keeps_parity())
+              if (to.set && to.set->keeps_parity())
                 for (const Polygon& p : pins.pins)
                   if ((p.outer[0].x + p.outer[0].y - pins.pins[0].outer[0].x - pins.pins[0].outer[0].y) % 2 != 0) {
                     taut::router::NetAttempt no;
@@ -387,7 +390,7 @@ int main(int argc, char** argv) {
         for (std::size_t i = 0; i < wires.size(); ++i) {
           if (wires[i].empty()) continue;
           bool in = true;
-          for (const auto& w : wires[i]) in = in && (!to.set || to.set->runs_along(w));
+          for (const auto& w : wires[i]) in = in && to.runs_in(w);
           set_routed += in;
           outside += !in;
         }

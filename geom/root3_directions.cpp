@@ -99,6 +99,12 @@ Root3 Root3Directions::length12(i64 dx, i64 dy) const {
   return 2 * ((cross(s1, dx, dy) - cross(s2, dx, dy)) * twelve_over_d);
 }
 
+bool Root3Directions::runs_within(std::span<const Point> line) const {
+  for (std::size_t j = 1; j < line.size(); ++j)
+    if (!fits(i64{line[j].x} - line[j - 1].x, i64{line[j].y} - line[j - 1].y)) return false;
+  return true;
+}
+
 bool Root3Directions::fits(i64 dx, i64 dy) const {
   // The set holds each step's opposite, so a ray meets the square iff the line through 0 along
   // it does: iff the square's corners are not all strictly on one side of that line (never when

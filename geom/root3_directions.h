@@ -24,11 +24,13 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "geom/root3.h"
+#include "geom/types.h"
 
 namespace taut::geom {
 
@@ -70,6 +72,8 @@ class Root3Directions {
   // ends: some direction's ray from 0 meets the square [dx - 1, dx + 1] x [dy - 1, dy + 1]. True
   // when that square holds 0 (|dx|, |dy| <= 1).
   bool fits(std::int64_t dx, std::int64_t dy) const;
+  // Every segment of the polyline fits (as LatticeDirections::runs_along for the lattice sets).
+  bool runs_within(std::span<const Point> line) const;
 
   friend bool operator==(const Root3Directions& x, const Root3Directions& y) { return x.mask_ == y.mask_; }
 

@@ -74,4 +74,25 @@ struct RationalRoot {
 using RationalRoot2 = RationalRoot<2>;
 using RationalRoot3 = RationalRoot<3>;
 
+// An __int128 as a GMP integer (two 64-bit halves: mpz has no __int128 constructor).
+inline boost::multiprecision::mpz_int to_mpz(__int128 v) {
+  const bool neg = v < 0;
+  const unsigned __int128 u = neg ? -static_cast<unsigned __int128>(v) : static_cast<unsigned __int128>(v);
+  boost::multiprecision::mpz_int z = static_cast<std::uint64_t>(u >> 64);
+  z <<= 64;
+  z += static_cast<std::uint64_t>(u);
+  return neg ? boost::multiprecision::mpz_int(-z) : z;
+}
+
+// Sign (-1, 0, 1) of a + b sqrt N for any __int128 a and b (sums of many lengths in Z[sqrt N], as
+// NetsTightener compares wires in a set at multiples of 30 degrees): a^2 against N b^2 in GMP
+// integers, which hold them at any size.
+template <int N>
+int sign_wide(__int128 a, __int128 b) {
+  if (a >= 0 && b >= 0) return (a > 0 || b > 0) ? 1 : 0;
+  if (a <= 0 && b <= 0) return (a < 0 || b < 0) ? -1 : 0;
+  const boost::multiprecision::mpz_int A = to_mpz(a), B = to_mpz(b);
+  return (a > 0) == (A * A > N * B * B) ? 1 : -1;
+}
+
 }  // namespace taut::router

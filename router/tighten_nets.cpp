@@ -8,11 +8,10 @@
 #include <stdexcept>
 #include <utility>
 
-#include <boost/multiprecision/gmp.hpp>
-
 #include "geom/predicates.h"
 #include "geom/root2.h"
 #include "geom/root3.h"
+#include "router/rational_root.h"
 #include "router/l1_router.h"
 
 namespace taut::router {
@@ -39,12 +38,10 @@ SpaceTightener::SpaceTightener(const geom::NormalizedObstacles& norm, TightenOri
 }
 
 bool TightenOrientations::runs_in(std::span<const Point> line) const {
-  if (set) return set->runs_along(line);
-  if (set30)
-    for (std::size_t j = 1; j < line.size(); ++j)
-      if (!set30->fits(std::int64_t{line[j].x} - line[j - 1].x, std::int64_t{line[j].y} - line[j - 1].y)) return false;
-  return true;
+  return set ? set->runs_along(line) : set30 ? set30->runs_within(line) : true;
 }
+
+std::string TightenOrientations::name() const { return set ? set->name() : set30 ? set30->name() : "any"; }
 
 bool SpaceTightener::is_loop(std::span<const Point> line) {
   if (line.size() < 3 || line.front() != line.back()) return false;
@@ -124,8 +121,8 @@ struct Cut {
 using geom::boxes_meet;
 
 // Twelve times a polyline's length in the convex distance of a set at multiples of 30 degrees,
-// a + b sqrt3, summed in __int128 (each segment's is below 2^47) and compared exactly (GMP once
-// a sum passes 2^61, past Root3::sign_of's range).
+// a + b sqrt3, summed in __int128 (each segment's is below 2^47) and compared exactly
+// (Root3::sign_of below 2^61, router::sign_wide in GMP past it).
 struct Length30 {
   __int128 a = 0, b = 0;
   Length30(const geom::Root3Directions& set, std::span<const Point> line) {
@@ -140,18 +137,7 @@ struct Length30 {
   static int sign(__int128 a, __int128 b) {
     constexpr __int128 kSmall = __int128{1} << 61;
     if (a > -kSmall && a < kSmall && b > -kSmall && b < kSmall) return geom::Root3::sign_of(a, b);
-    auto big = [](__int128 v) {  // (two 64-bit halves: mpz has no __int128 constructor)
-      const bool neg = v < 0;
-      const unsigned __int128 u = neg ? -static_cast<unsigned __int128>(v) : static_cast<unsigned __int128>(v);
-      boost::multiprecision::mpz_int z = static_cast<std::uint64_t>(u >> 64);
-      z <<= 64;
-      z += static_cast<std::uint64_t>(u);
-      return neg ? boost::multiprecision::mpz_int(-z) : z;
-    };
-    const boost::multiprecision::mpz_int A = big(a), B = big(b);
-    if (A >= 0 && B >= 0) return A > 0 || B > 0 ? 1 : 0;
-    if (A <= 0 && B <= 0) return A < 0 || B < 0 ? -1 : 0;
-    return (A > 0) == (A * A > 3 * B * B) ? 1 : -1;
+    return sign_wide<3>(a, b);
   }
 };
 
@@ -381,6 +367,10 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
   stats_ = {};
   std::vector<NetTightenOutcome> out(n);
   std::vector<std::vector<char>> frozen(n);
+  // a closed piece of a router's wires (a tree with a cycle) is no loop sketch: kept as it is
+  auto freeze_loops = [&](std::size_t i) {
+    for (std::size_t k = 0; k < wires[i].size(); ++k) frozen[i][k] = frozen[i][k] || SpaceTightener::is_loop(wires[i][k]);
+  };
   std::vector<std::vector<double>> taut_len(n);
   for (std::size_t i = 0; i < n; ++i) {
     for (const auto& w : wires[i]) {
@@ -393,8 +383,7 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
       frozen[i].assign(wires[i].size(), 0);
     } else {
       wires[i] = prepare(wires[i], space.net(i).pins, frozen[i]);
-      // a closed piece of a router's wires (a tree with a cycle) is no loop sketch: kept
-      for (std::size_t k = 0; k < wires[i].size(); ++k) frozen[i][k] = frozen[i][k] || SpaceTightener::is_loop(wires[i][k]);
+      freeze_loops(i);
     }
     stats_.split += wires[i].size() > before ? wires[i].size() - before : 0;
     taut_len[i].resize(wires[i].size());
@@ -553,7 +542,7 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
     wires[i] = std::move(recut);
     mark_off_set(i);
     frozen[i] = std::move(fz);
-    for (std::size_t k = 0; k < wires[i].size(); ++k) frozen[i][k] = frozen[i][k] || SpaceTightener::is_loop(wires[i][k]);
+    freeze_loops(i);
     out[i].kept.assign(frozen[i].begin(), frozen[i].end());
     taut_len[i].clear();
     for (const auto& w : wires[i]) taut_len[i].push_back(euclidean_length(w));
@@ -603,12 +592,12 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
           // exactly the clearance, which the triangulated space closes), or no lattice staircase.
           // Tried again when a change meets its window.
           o.kept[k] = r.no_staircase ? 2 : 1;
+          if (r.no_staircase) o.why = r.why;  // (the last piece's: the one the tools name)
           if (o.status == NetTightenOutcome::Status::Ok) {
             o.status = r.no_staircase ? NetTightenOutcome::Status::NoStaircase : NetTightenOutcome::Status::NotFree;
             o.round = round;
             o.wire = k;
             o.lift = r.taut;
-            o.why = r.why;
             if (!r.no_staircase) {
               o.wire_blockers = space.wire_blockers(i, wires[i][k]);
               o.pin_blockers = space.pin_blockers(i, wires[i][k]);
@@ -664,13 +653,16 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
       // shortened wires in 5 of 150 layouts). So the rounds repeat "until no wire shortens" in
       // the pieces a second run would see: each net's wires as they would be written, cut again;
       // a net whose pieces differ is tried again with them. Once a re-cut moves nothing, done.
-      if (recut_tried) break;
+      if (recut_tried || round >= options_.max_rounds) break;  // (at the cap: left as they are, the rounds having ended)
       recut_tried = true;
       bool recut_any = false;
       for (std::size_t i = 0; i < n; ++i) {
         if (wires[i].empty() || failed[i] || is_sketch(i)) continue;
         std::vector<char> fz;
         NetLines recut = prepare(join_at_twos(once(metal(wires[i]))), space.net(i).pins, fz);
+        // (compared as they are: a piece reversed, or tried in another order, may get another
+        // wire of the same length, and the test above found a second run taking one with fewer
+        // bends that way: pieces equal only as a set are tried again too)
         if (recut == wires[i]) continue;
         recut_any = true;
         adopt(i, std::move(recut), std::move(fz));

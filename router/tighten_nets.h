@@ -16,7 +16,11 @@
 // squares keeps at least that Euclidean distance), and the other nets' later moves avoid its new
 // position the same way. Every move is an improvement in (length in the output's metric, bends),
 // never worse in either: a finite set of values, so the rounds end (NetsTightenOptions::max_rounds
-// is a guard, reported when hit).
+// is a guard, reported when hit). When they end, each net's wires are joined and cut again as a
+// second run would cut them (since 2026-12-08; a joined line may tighten further as one), and the
+// rounds go on with the nets whose pieces differ; a re-cut keeps the metal (its length) but may
+// count a bend at a joint, so it is not a move: once a re-cut round moves nothing, or at
+// max_rounds, the rounds stop.
 //
 // Trees. A net's wires may end on each other (branch points, Steiner points) and pass through its
 // pins. Tightening a wire with its ends fixed would pull it off a branch point or a pin it passes,
@@ -72,6 +76,8 @@ struct TightenOrientations {
   // lattice set (LatticeDirections::runs_along); every segment within the rounding of one of the
   // set at multiples of 30 degrees (Root3Directions::fits, what taut check verifies).
   bool runs_in(std::span<const geom::Point> line) const;
+  // The set's name (LatticeDirections::name, Root3Directions::name), or "any".
+  std::string name() const;
   static const TightenOrientations Any, Rectilinear, Octilinear;
   friend bool operator==(const TightenOrientations&, const TightenOrientations&) = default;
 };

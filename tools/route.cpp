@@ -407,7 +407,7 @@ router::NetAttempt sketch_attempt(const io::Layout& layout, const io::Net& net, 
   return a;
 }
 
-// Why a net routed octilinear could not be written in a lattice c: set (route --orientations
+// Why a net routed octilinear could not be written in a c: set, lattice or at multiples of 30 degrees (route --orientations
 // c:…, ROUTE-0021): a piece of its wires was kept as routed by the tightening. Two point pins
 // whose x + y differ in parity are named first when the set has only the two diagonals, whose
 // steps keep that parity, and the net has no shape pin: no wire of the set joins them at all.
@@ -432,7 +432,7 @@ std::string off_set_reason(const io::Net& net, const router::TightenOrientations
                            std::optional<router::NetTightenOutcome::Status> status, const std::string& why = "") {
   if (set.set)
     if (auto p = parity_reason(net, *set.set)) return *p;
-  const std::string name = set.set ? set.set->name() : set.set30->name();
+  const std::string name = set.name();
   const std::string head = "its octilinear route could not be tightened into " + name + ": ";
   using S = router::NetTightenOutcome::Status;
   if (status == S::NoStaircase) return head + (why.empty() ? no_staircase_reason(name) : why);
@@ -706,12 +706,10 @@ void add_route(CLI::App& app, int& status) {
 
       const std::string orient_word = octilinear ? "octilinear" : "rectilinear";
       // the directions the wires are tightened into and written in: the routing's, or the target's
-      const std::string tighten_word =
-          reshaped ? (target_orient.set ? target_orient.set->name() : target_orient.set30 ? target_orient.set30->name() : "any")
-                   : orient_word;
+      const std::string tighten_word = reshaped ? target_orient.name() : orient_word;
       routes.metric = target_set || !reshaped ? "l1" : "euclidean";  // (as taut tighten writes them)
       routes.orientations = tighten_word;
-      // A net whose tightened wires still leave the lattice set (a piece kept as routed, in
+      // A net whose tightened wires still leave the set, lattice or 30-degree (a piece kept as routed, in
       // octilinear directions the set lacks) is written as failed, ROUTE-0021 (the caller counts it).
       auto fail_off_set = [&](const io::Net& net, io::Route& route,
                               std::optional<router::NetTightenOutcome::Status> status, const std::string& why = "") {
@@ -783,7 +781,7 @@ void add_route(CLI::App& app, int& status) {
           // triangulated space closes it; a net that follows its sketch has it tightened in the
           // router's scaled plane, and snapped back as every wire is).
           for (const bool exact : {true, false}) {
-          // (under a lattice set a wire in such a gap would stay as routed, outside its directions;
+          // (under a set, lattice or 30-degree, a wire in such a gap would stay as routed, outside its directions;
           // under any it is written as it is)
           if (exact && target_set) continue;
           router::NetRouterOptions nro;
@@ -792,7 +790,7 @@ void add_route(CLI::App& app, int& status) {
           nro.progress = progress;
           // the nets routed by L1Router or OctRouter alone take framed windows (a sketch's
           // tightening reads the obstacles itself)
-          // (and with the wires tightened into a lattice set, which reads them: router::tighten_attempt)
+          // (and with the wires tightened into a set, lattice or 30-degree, which reads them: router::tighten_attempt)
           nro.framed = [&](std::size_t i) { return !(reshaped && target_set) && !follows_sketch(layout->nets[i]); };
           nro.threads = static_cast<int>(args->threads ? args->threads : std::max(1u, std::thread::hardware_concurrency()));
           nro.max_rips = args->max_rips;
@@ -839,7 +837,7 @@ void add_route(CLI::App& app, int& status) {
             a.sink_distances = r.sink_distances;
             a.distance = r.distance;
             a.claims = r.claims;
-            // (a lattice set: the wires placed are already in it; router/tighten_nets.h)
+            // (a set, lattice or 30-degree: the wires placed are already in it; router/tighten_nets.h)
             if (reshaped && target_set) router::tighten_attempt(a, pins, obs, tighten_orientations(tighten_word), stop);
             return a;
           });
@@ -1029,6 +1027,7 @@ void add_route(CLI::App& app, int& status) {
           const bool was_routed = route.status == "routed";
           std::vector<io::Wire> wires;
           bool no_staircase = false;  // a piece has no staircase in the set
+          std::string no_staircase_why;  // (a set at multiples of 30 degrees: the builder's reason)
           if (follows_sketch(net)) {
             const auto res = wt.run(net.sketch->points);
             if (res.taut.status != router::TightenStatus::Ok) {
@@ -1044,7 +1043,7 @@ void add_route(CLI::App& app, int& status) {
               route.status = "failed";
               route.reason = res.contractible
                                  ? std::string("the loop sketch winds around no blockage: it can be pulled to a point")
-                                 : no_staircase_reason(tighten_word) + " (the net's <sketch>)";
+                                 : (res.why.empty() ? no_staircase_reason(tighten_word) : res.why) + " (the net's <sketch>)";
               print_diagnostics({Diagnostic{Severity::Warning, res.contractible ? "TIGHTEN-0005" : "TIGHTEN-0004",
                                             layout->file, net.sketch->line, 0, "net \"" + net.name + "\": " + *route.reason}},
                                 args->load.quiet);
@@ -1063,6 +1062,7 @@ void add_route(CLI::App& app, int& status) {
             for (std::size_t k = 0; k < lines.size(); ++k) {
               const auto res = frozen[k] ? WireTightener::Result{} : wt.run(lines[k]);
               no_staircase = no_staircase || res.no_staircase;
+              if (res.no_staircase && no_staircase_why.empty()) no_staircase_why = res.why;
               // a routed wire is in free space; when no staircase is found, or the one found has
               // more bends (its fewest links not proven), the routed one stays (not when the wires
               // are written in other directions than routed: then any result is taken)
@@ -1077,7 +1077,8 @@ void add_route(CLI::App& app, int& status) {
               !std::all_of(wires.begin(), wires.end(), [&](const io::Wire& w) { return target_orient.runs_in(w.points); })) {
             if (was_routed || follows_sketch(net)) --routed;  // (a sketch net was counted above)
             shortest_of[i].reset();
-            fail_off_set(net, route, no_staircase ? std::optional(router::NetTightenOutcome::Status::NoStaircase) : std::nullopt);
+            fail_off_set(net, route, no_staircase ? std::optional(router::NetTightenOutcome::Status::NoStaircase) : std::nullopt,
+                         no_staircase_why);
             continue;
           }
           std::vector<std::vector<geom::Point>> lines;

@@ -182,6 +182,10 @@ std::vector<router::NetPins> net_pins(const io::Layout& layout) {
 }
 
 std::string no_staircase_reason(const std::string& orientations) {
+  if (geom::Root3Directions::parse(orientations))  // (the builder's own reason is said where there is one)
+    return "no " + orientations + " wire with integer vertices follows the taut wire's class at its length (a blockage "
+           "edge at an angle outside the set pinches it past 256 runs, or no rounding of its vertices to integers "
+           "stays free); --orientations any writes it";
   const auto set = geom::LatticeDirections::parse(orientations);
   // both diagonals, and not both axes: a cone between the diagonals, whose steps keep x + y's parity
   const bool parity = set && (set->mask() & 0b1010) == 0b1010 && (set->mask() & 0b0101) != 0b0101;

@@ -67,7 +67,8 @@ std::string length_text(const geom::Root2& length);
 // orientations named as on the command line, and the words of TIGHTEN-0001.
 class WireTightener {
  public:
-  // orientations: "any", "rectilinear", "octilinear" or a lattice c: set (tighten_orientations).
+  // orientations: "any", "rectilinear", "octilinear", a lattice c: set or a set at multiples of 30
+  // degrees (tighten_orientations).
   WireTightener(const geom::NormalizedObstacles& norm, const std::string& orientations);
   using Result = router::SpaceTightener::Result;
   Result run(std::span<const geom::Point> line) const { return st_.run(line); }
@@ -86,8 +87,9 @@ class WireTightener {
 // The statistics of tightening the nets together, as --stats writes them.
 nlohmann::ordered_json together_stats_json(const router::NetsTightenStats& s);
 
-// "any", "rectilinear", "octilinear" or a lattice c: set (geom::LatticeDirections::parse) as
-// router::TightenOrientations; anything else is taken as any.
+// "any", "rectilinear", "octilinear", a lattice c: set (geom::LatticeDirections::parse) or a set
+// at multiples of 30 degrees (geom::Root3Directions::parse) as router::TightenOrientations;
+// anything else is taken as any.
 router::TightenOrientations tighten_orientations(const std::string& orientations);
 
 // Every net's pins as the net router takes them.

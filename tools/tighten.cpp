@@ -401,7 +401,9 @@ void add_tighten(CLI::App& app, int& status) {
       // times as many steps in the scaled plane: degenerate seed 11 of Tighten.OctilinearRoutesTightened
       // grew past 1.5 GB there.)
       const bool off_set = std::find(off_directions.begin(), off_directions.end(), 1) != off_directions.end();
-      const std::int64_t k = off_set ? 1 : router::exact_gaps_scale(domain, plain.obstacles, all_pins, rules, true);
+      // (Nor in a set at multiples of 30 degrees: its wires are rounded to the scaled plane's
+      // integers, which snapping back moves again, off the rounding rule and from afar.)
+      const std::int64_t k = off_set || out_set30 ? 1 : router::exact_gaps_scale(domain, plain.obstacles, all_pins, rules, true);
       const bool exact_plane = router::exact_gaps_scale(domain, plain.obstacles, all_pins, rules) > 1;
       if (k > 1) {
         router::NetsTightenStats kst;

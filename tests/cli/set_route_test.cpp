@@ -149,10 +149,7 @@ TEST(SetRoute, TogetherEverySetPassesTheChecker) {
               if (lattice) {
                 EXPECT_TRUE(lattice->runs_along(w.points)) << route.net << ": " << str(w.points);
               } else if (thirty) {  // within the rounding of a direction (as taut check's CHECK-0002)
-                for (std::size_t j = 1; j < w.points.size(); ++j)
-                  EXPECT_TRUE(thirty->fits(std::int64_t{w.points[j].x} - w.points[j - 1].x,
-                                           std::int64_t{w.points[j].y} - w.points[j - 1].y))
-                      << route.net << ": " << str(w.points);
+                EXPECT_TRUE(thirty->runs_within(w.points)) << route.net << ": " << str(w.points);
               }
           } else {
             any_failed = true;
@@ -196,7 +193,7 @@ TEST(SetRoute, TogetherEverySetPassesTheChecker) {
   const int lost30 = failed_set["c:0,60,120"] + failed_set["c:30,90,150"];
   failed_set.erase("c:0,60,120");
   failed_set.erase("c:30,90,150");
-  EXPECT_LT(lost30 * 10, nets * 2);  // (of 2 x nets routed)
+  EXPECT_LE(lost30 * 30, nets);  // (none on 2 x 90 nets, 2026-12-08)
   // A net whose octilinear wire another net's later wire left in a gap of exactly the clearance
   // cannot be moved into a set that lacks its direction: with each attempt tightened into the set
   // before the next net is routed (router::tighten_attempt) that is rare; with the

@@ -10,9 +10,12 @@
 // Layouts: the wavefront tests' seeded families (every `taut gen` kind and the degenerate ones:
 // shared coordinates, collinear edges, touching blockages, pinches), scaled by 64 so rounding
 // moves a vertex little against the layout; sketches wind round blockages as in the tightening
-// tests. A written wire that leaves free space or its class fails the test. Not checked here: that the links are the fewest (the lattice sets' greedy is
-// compared with an exhaustive search, tests/router/tighten_test.cpp; this one has no reference
-// yet).
+// tests. A written wire that leaves free space or its class fails the test.
+// The fewest links (since 2026-12-08), a necessary condition only: the exact wire built from the
+// taut wire's other end has as many links (the greedy runs and the DP join pieces from the start;
+// taking one first direction only, dropping the DP's credit for a link across a cut, or halving
+// the first run each make hundreds differ). Not an exhaustive search (the lattice sets' greedy is
+// compared with one, tests/router/tighten_test.cpp; none here yet).
 #include "router/root3_staircase.h"
 
 #include <gtest/gtest.h>
@@ -20,6 +23,7 @@
 #include <cstdio>
 #include <random>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "geom/root3_directions.h"
@@ -45,7 +49,7 @@ const char* const kSets[] = {"c:0,60,120", "c:30,90,150", "c:0,30,60,90,120,150"
 
 struct Totals {
   long long wires = 0, links = 0, pieces = 0, missing = 0, not_free = 0, other_class = 0, sketches = 0, moved = 0,
-            missing_rounding = 0;
+            missing_rounding = 0, reversed = 0, reversed_differ = 0;
 };
 
 geom::Polygon scaled(const geom::Polygon& p, int k) {
@@ -130,6 +134,20 @@ void check_seed(std::uint64_t seed, Totals& tot) {
       ASSERT_TRUE(len == want) << where << ": the exact wire is " << len.to_double() << " long, the taut wire "
                                << want.to_double() << " in the set";
       tot.links += static_cast<long long>(w.exact.size()) - 1;
+      // the fewest links do not depend on the end it is built from: the reversed taut wire's
+      // exact wire has as many (a necessary condition; the greedy and the DP run from the start)
+      {
+        const Path rev(taut.rbegin(), taut.rend());
+        const router::Root3Wire wr = b.staircase(rev, *set, [&](Point p, Point q) {
+          return st.tight->tighten(Path{p, q}).status == router::TightenStatus::Ok;
+        });
+        ++tot.reversed;
+        if (!wr.ok() || wr.exact.size() != w.exact.size()) {
+          ++tot.reversed_differ;
+          ADD_FAILURE() << where << ": " << w.exact.size() - 1 << " links built forward, "
+                        << (wr.ok() ? std::to_string(wr.exact.size() - 1) : "none (" + wr.why + ")") << " backward";
+        }
+      }
       tot.moved += w.moved;
       // the written wire
       const Path& p = w.points;
@@ -183,6 +201,48 @@ TEST(Root3Staircase, WideConeAtTheCoordinateLimit) {
   EXPECT_GT(w.points.size(), 3u);  // the block stops the two-link staircase through (-5e8, -1e9)
 }
 
+// router::sign_wide (NetsTightener's comparison of summed lengths past 2^61) against the sign of
+// the same number built from decimal strings in GMP rationals (RationalRoot3::sign): random
+// values up to 2^120, and Pell near-ties x - y sqrt3 (x^2 - 3 y^2 = 1, just above 0) scaled up to
+// that size, with both signs.
+std::string decimal(__int128 v) {
+  if (v == 0) return "0";
+  const bool neg = v < 0;
+  unsigned __int128 u = neg ? -static_cast<unsigned __int128>(v) : static_cast<unsigned __int128>(v);
+  std::string s;
+  for (; u > 0; u /= 10) s.insert(s.begin(), static_cast<char>('0' + static_cast<int>(u % 10)));
+  return neg ? "-" + s : s;
+}
+int reference_sign(__int128 a, __int128 b) {
+  return R3(router::Rational(boost::multiprecision::mpz_int(decimal(a))), router::Rational(boost::multiprecision::mpz_int(decimal(b)))).sign();
+}
+TEST(Root3Staircase, WideSignAgainstRationals) {
+  std::mt19937_64 rng(2026120801);
+  int checked = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const int shift = static_cast<int>(rng() % 57);  // magnitudes 2^63 .. 2^120
+    const __int128 a = static_cast<__int128>(static_cast<std::int64_t>(rng())) << shift;
+    const __int128 b = static_cast<__int128>(static_cast<std::int64_t>(rng())) << shift;
+    ASSERT_EQ(router::sign_wide<3>(a, b), reference_sign(a, b)) << decimal(a) << " + " << decimal(b) << " sqrt3";
+    ++checked;
+  }
+  __int128 x = 2, y = 1;  // x^2 - 3 y^2 = 1
+  for (int k = 0; k < 28 && x < (__int128{1} << 60); ++k) {
+    for (int shift = 0; shift <= 60; shift += 12) {
+      const __int128 sx = x << shift, sy = y << shift;
+      for (const auto& [a, b, want] : {std::tuple{sx, -sy, 1}, std::tuple{-sx, sy, -1}}) {
+        EXPECT_EQ(router::sign_wide<3>(a, b), want) << decimal(a) << " + " << decimal(b) << " sqrt3";
+        EXPECT_EQ(reference_sign(a, b), want);
+        ++checked;
+      }
+    }
+    const __int128 nx = 2 * x + 3 * y, ny = x + 2 * y;  // the next solution: (x + y sqrt3)(2 + sqrt3)
+    x = nx, y = ny;
+  }
+  EXPECT_EQ(router::sign_wide<3>(0, 0), 0);
+  EXPECT_GT(checked, 20100);
+}
+
 TEST(Root3Staircase, RandomSketchesShortestInTheSetAndLegalRounded) {
   Totals tot;
   const std::uint64_t n = static_cast<std::uint64_t>(sanitized_share(120, 10));
@@ -198,6 +258,8 @@ TEST(Root3Staircase, RandomSketchesShortestInTheSetAndLegalRounded) {
               "change class\n",
               tot.sketches, tot.wires, tot.pieces, tot.links, tot.missing, tot.missing_rounding, tot.moved, tot.not_free,
               tot.other_class);
+  std::printf("%lld wires also built from their other end: %lld with another number of links\n", tot.reversed,
+              tot.reversed_differ);
   EXPECT_GE(tot.wires, sanitized_share(3000, 10));
   EXPECT_GT(tot.moved, 0);  // the repair was needed and made
   // Wires with none: a pinch that asks for more runs than the cap (H&S 6), or no free rounding.
