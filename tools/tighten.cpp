@@ -11,8 +11,9 @@
 // `c:0,90` and `c:0,45,90,135` name rectilinear and octilinear. A set at multiples of 30 degrees
 // (c:0,60,120, ...; since 2026-12-07) writes the shortest wire of the class in it built exactly in
 // Q(sqrt3) with its vertices rounded to integers (router/root3_staircase.h; with --clearance
-// since 2026-12-08, not with --min-link yet). `c:` sets with a direction at another angle, and
-// those with --min-link, are refused (CLI-0027) or, from <rules>, replaced by `any` (TIGHTEN-0003).
+// and --min-link since 2026-12-08, its minimum-link path in the set not computed yet:
+// TIGHTEN-0015). `c:` sets with a direction at another angle are refused (CLI-0027) or, from
+// <rules>, replaced by `any` (TIGHTEN-0003).
 // --min-link adds each wire's minimum-link path of its class (router/minlink.h, any angle, exact
 // rational bends; for a loop its minimum-link loop, section 5.2, proven minimal unless its
 // shortest loop is convex and the loop found is above the winding bound) to --stats and --svg,
@@ -157,14 +158,15 @@ void add_tighten(CLI::App& app, int& status) {
                   "directions of the output: rectilinear, octilinear, a c: set of multiples of 45 degrees "
                   "such as c:0,45 or c:45,135 (the shortest wire of the class in those directions, fewest "
                   "links), a c: set of multiples of 30 degrees such as c:0,60,120 (the same, its vertices "
-                  "rounded to integers; not with --min-link yet) or any (the Euclidean "
+                  "rounded to integers) or any (the Euclidean "
                   "shortest); default: <rules>");
   sub->add_flag("--clearance", args->clearance,
                 "keep half the wire width plus the spacing of <rules> from every blockage (tighten against "
                 "blockages grown by that much)");
   sub->add_flag("--min-link", args->min_link,
                 "also find each wire's minimum-link path of its class (any angle, exact rational bends) "
-                "and, with rectilinear, octilinear or a c: set, its minimum-link path in those directions "
+                "and, with rectilinear, octilinear or a c: set at multiples of 45 degrees, its minimum-link path "
+                "in those directions (not yet at multiples of 30 degrees: TIGHTEN-0015) "
                 "(for a loop, a closed loop with few links, proven minimal or given as a range): "
                 "their link counts and bends go to --stats, their drawings to --svg; the written wires "
                 "are still the shortest ones");
@@ -174,25 +176,22 @@ void add_tighten(CLI::App& app, int& status) {
     const auto t0 = Clock::now();
     // The output's directions: any, a lattice direction set by its name (c:0,90 is rectilinear),
     // or (since 2026-12-07) a set at multiples of 30 degrees such as c:0,60,120, written with its
-    // exact vertices rounded (router/root3_staircase.h; with --clearance since 2026-12-08), not
-    // yet with --min-link.
-    const std::string not_with30 = args->min_link ? "--min-link" : "";
+    // exact vertices rounded (router/root3_staircase.h; with --clearance since 2026-12-08, and
+    // with --min-link, whose minimum-link path in the set is not computed yet: TIGHTEN-0015).
     std::string o = args->orientations;
     if (!o.empty() && o != "any") {
       const auto set = geom::LatticeDirections::parse(o);
       const auto set30 = geom::Root3Directions::parse(o);
       if (set) {
         o = set->name();
-      } else if (set30 && not_with30.empty()) {
+      } else if (set30) {
         o = set30->name();
       } else {
         print_usage_error("CLI-0027", "tighten: --orientations " + o +
-                                          (set30 ? ": a set at multiples of 30 degrees is written (vertices rounded) "
-                                                   "without " + not_with30 + " only, not with it yet"
-                                                 : ": expected rectilinear, octilinear, any, a c: set of directions at "
-                                                   "multiples of 45 degrees, two orientations at least, or one at "
-                                                   "multiples of 30 degrees such as c:0,60,120 (a direction at "
-                                                   "another angle is not available)"));
+                                          ": expected rectilinear, octilinear, any, a c: set of directions at "
+                                          "multiples of 45 degrees, two orientations at least, or one at "
+                                          "multiples of 30 degrees such as c:0,60,120 (a direction at "
+                                          "another angle is not available)");
         status = kInvalid;
         return;
       }
@@ -209,16 +208,13 @@ void add_tighten(CLI::App& app, int& status) {
         const auto set30 = geom::Root3Directions::parse(orientations);
         if (const auto set = geom::LatticeDirections::parse(orientations)) {
           orientations = set->name();
-        } else if (set30 && not_with30.empty()) {
+        } else if (set30) {
           orientations = set30->name();
         } else {
           print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0003", layout->file, layout->rules->line, 0,
                                         "<rules orientations=\"" + orientations + "\">: " +
-                                            (set30 ? "a set at multiples of 30 degrees is not written with " + not_with30 +
-                                                         " yet"
-                                                   : std::string("a direction at an angle other than a multiple of 30 "
-                                                                 "or 45 degrees is not available")) +
-                                            "; tightened wires are written at any angle"}},
+                                            "a direction at an angle other than a multiple of 30 or 45 degrees is not "
+                                            "available; tightened wires are written at any angle"}},
                             args->load.quiet);
           orientations = "any";
         }
@@ -228,6 +224,17 @@ void add_tighten(CLI::App& app, int& status) {
     // --min-link in a lattice direction set also finds the minimum-link paths in it
     std::optional<geom::LatticeDirections> min_link_set;
     if (args->min_link && c_oriented) min_link_set = geom::LatticeDirections::parse(orientations);
+    // ... but not in a set at multiples of 30 degrees yet (router::CMinLinker works in lattice
+    // steps): said once, and null in the statistics with the reason (since 2026-12-08; before,
+    // refused with CLI-0027)
+    const bool min_link_30 = args->min_link && geom::Root3Directions::parse(orientations).has_value();
+    const std::string min_link_30_why = "the minimum-link path in a set at multiples of 30 degrees (H&S 6.3) is not "
+                                        "computed yet: only the one at any angle is";
+    if (min_link_30)
+      print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0015", layout->file, 0, 0,
+                                    "--min-link in " + orientations + ": " + min_link_30_why +
+                                        " (min_links, min_link_wires); oriented_min_links is null"}},
+                        args->load.quiet);
 
     // What each net tightens: its sketch, else its routed wires.
     struct Input {
@@ -905,6 +912,10 @@ void add_tighten(CLI::App& app, int& status) {
             }
             if (!s.oriented_none.empty()) nets.back()["oriented_min_links_none"] = s.oriented_none;
             nets.back()["oriented_min_link_wires"] = opaths;
+          } else if (min_link_30) {
+            nets.back()["oriented_min_links"] = nlohmann::ordered_json();
+            nets.back()["oriented_min_links_none"] = min_link_30_why;
+            nets.back()["oriented_min_link_wires"] = nlohmann::ordered_json::array();
           }
         }
       }
