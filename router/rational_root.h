@@ -91,6 +91,8 @@ template <int N>
 int sign_wide(__int128 a, __int128 b) {
   if (a >= 0 && b >= 0) return (a > 0 || b > 0) ? 1 : 0;
   if (a <= 0 && b <= 0) return (a < 0 || b < 0) ? -1 : 0;
+  constexpr __int128 kSmall = __int128{1} << 61;  // a^2 and N b^2 fit in __int128
+  if (a > -kSmall && a < kSmall && b > -kSmall && b < kSmall) return (a > 0) == (a * a > N * (b * b)) ? 1 : -1;
   const boost::multiprecision::mpz_int A = to_mpz(a), B = to_mpz(b);
   return (a > 0) == (A * A > N * B * B) ? 1 : -1;
 }

@@ -43,6 +43,10 @@ bool TightenOrientations::runs_in(std::span<const Point> line) const {
 
 std::string TightenOrientations::name() const { return set ? set->name() : set30 ? set30->name() : "any"; }
 
+bool TightenOrientations::cones_leave_box() const {
+  return (set && set->cones_leave_box()) || (set30 && set30->cones_leave_box());
+}
+
 bool SpaceTightener::is_loop(std::span<const Point> line) {
   if (line.size() < 3 || line.front() != line.back()) return false;
   for (Point p : line)
@@ -135,8 +139,6 @@ struct Length30 {
   friend bool operator<=(const Length30& x, const Length30& y) { return sign(x.a - y.a, x.b - y.b) <= 0; }
   friend bool operator==(const Length30& x, const Length30& y) { return x.a == y.a && x.b == y.b; }
   static int sign(__int128 a, __int128 b) {
-    constexpr __int128 kSmall = __int128{1} << 61;
-    if (a > -kSmall && a < kSmall && b > -kSmall && b < kSmall) return geom::Root3::sign_of(a, b);
     return sign_wide<3>(a, b);
   }
 };
@@ -367,6 +369,7 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
   stats_ = {};
   std::vector<NetTightenOutcome> out(n);
   std::vector<std::vector<char>> frozen(n);
+  std::vector<std::vector<std::string>> piece_why(n);  // per piece: why it has no wire in a 30-degree set
   // a closed piece of a router's wires (a tree with a cycle) is no loop sketch: kept as it is
   auto freeze_loops = [&](std::size_t i) {
     for (std::size_t k = 0; k < wires[i].size(); ++k) frozen[i][k] = frozen[i][k] || SpaceTightener::is_loop(wires[i][k]);
@@ -420,8 +423,7 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
   // above with --clearance, 35 generated layouts (rects, polygons, maze, degenerate) likewise, and
   // every tightening test; each link's staircase lies in its parallelogram, which the first margin
   // holds when the taut path stays in the line's box.
-  const bool wide_set = (options_.orientations.set && options_.orientations.set->cones_leave_box()) ||
-                        (options_.orientations.set30 && options_.orientations.set30->cones_leave_box());
+  const bool wide_set = options_.orientations.cones_leave_box();
   auto tighten_one = [&](std::size_t i, const std::vector<Point>& line) {
     std::int64_t margin = margin0;
     if (wide_set) {
@@ -544,6 +546,7 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
     frozen[i] = std::move(fz);
     freeze_loops(i);
     out[i].kept.assign(frozen[i].begin(), frozen[i].end());
+    piece_why[i].clear();
     taut_len[i].clear();
     for (const auto& w : wires[i]) taut_len[i].push_back(euclidean_length(w));
     retry[i] = 1;
@@ -592,7 +595,10 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
           // exactly the clearance, which the triangulated space closes), or no lattice staircase.
           // Tried again when a change meets its window.
           o.kept[k] = r.no_staircase ? 2 : 1;
-          if (r.no_staircase) o.why = r.why;  // (the last piece's: the one the tools name)
+          if (r.no_staircase) {
+            piece_why[i].resize(wires[i].size());
+            piece_why[i][k] = r.why;
+          }
           if (o.status == NetTightenOutcome::Status::Ok) {
             o.status = r.no_staircase ? NetTightenOutcome::Status::NoStaircase : NetTightenOutcome::Status::NotFree;
             o.round = round;
@@ -666,6 +672,11 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
         if (recut == wires[i]) continue;
         recut_any = true;
         adopt(i, std::move(recut), std::move(fz));
+        // (a problem of the old pieces is not the new ones': found again, if it is, in the next round)
+        // (not failed, so not contractible)
+        out[i].status = NetTightenOutcome::Status::Ok;
+        out[i].wire_blockers.clear();
+        out[i].pin_blockers.clear();
         space.set_wires(i, wires[i]);  // (the same metal)
       }
       if (!recut_any) break;
@@ -688,6 +699,7 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
       if (fresh[i][k]) {
         o.untightened = true;  // a sketch piece with no staircase, or the others left it no room
         o.wire = k;
+        o.why = k < piece_why[i].size() ? piece_why[i][k] : std::string();
       }
     o.pieces = wires[i];
     for (std::size_t k = 0; k < wires[i].size(); ++k) {

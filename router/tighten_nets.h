@@ -78,6 +78,9 @@ struct TightenOrientations {
   bool runs_in(std::span<const geom::Point> line) const;
   // The set's name (LatticeDirections::name, Root3Directions::name), or "any".
   std::string name() const;
+  // A staircase in some cone of the set leaves the box of its link's ends (either kind's
+  // cones_leave_box; false for any angle).
+  bool cones_leave_box() const;
   static const TightenOrientations Any, Rectilinear, Octilinear;
   friend bool operator==(const TightenOrientations&, const TightenOrientations&) = default;
 };
@@ -159,7 +162,8 @@ struct NetTightenOutcome {
   bool untightened = false;
   std::size_t wire = 0;          // which wire (an index into the net's wires after the cuts)
   Tightened lift;                // NotFree: the failed lift (its segment and point)
-  std::string why;               // NoStaircase in a set at multiples of 30 degrees: why (SpaceTightener::Result::why)
+  std::string why;               // untightened with no staircase (piece `wire`), in a set at multiples of 30
+                                 // degrees: why (SpaceTightener::Result::why)
   std::vector<std::size_t> wire_blockers, pin_blockers;  // NotFree: nets whose grown wires / pins it enters
   double length_before = 0, length_taut = 0, length_after = 0;  // Euclidean
   std::int64_t bends_before = 0, bends_after = 0;

@@ -67,8 +67,9 @@ struct RoutingOptions {
   // `path` and `route`: --metric combined and link (rectilinear wires).
   bool allow_bends = false;
   // `route` only: orientations "any" and the lattice c: sets (geom/directions.h: directions at
-  // multiples of 45 degrees, such as c:45,135) are accepted; the nets are routed octilinear and
-  // then tightened together into them (since 2026-12-06).
+  // multiples of 45 degrees, such as c:45,135; since 2026-12-06) and the sets at multiples of 30
+  // degrees (geom/root3_directions.h, such as c:0,60,120; since 2026-12-08) are accepted; the
+  // nets are routed octilinear and then tightened together into them.
   bool allow_sets = false;
 };
 // The combined metric's C: --bend-cost, else <rules> bend-cost, else 0.
@@ -83,7 +84,7 @@ bool check_routing_options(const RoutingOptions& options, const io::Layout& layo
 
 // The orientations to route in after check_routing_options() accepted them: --orientations,
 // else <rules>, else "rectilinear"; "rectilinear" or "octilinear" (or "any" with allow_any, or
-// "any" and a lattice c: set as written with allow_sets).
+// "any" and a lattice or 30-degree c: set as written with allow_sets).
 std::string routing_orientations(const RoutingOptions& options, const io::Layout& layout);
 
 // load_layout(), then check_routing_options(): the layout when routing may start, otherwise

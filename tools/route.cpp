@@ -399,7 +399,7 @@ router::NetAttempt sketch_attempt(const io::Layout& layout, const io::Net& net, 
   }
   if (r.no_staircase) {
     a.code = "TIGHTEN-0004";
-    a.reason = (r.why.empty() ? no_staircase_reason(orientations) : r.why) + " (the net's <sketch>)";
+    a.reason = no_staircase_reason(orientations, r.why) + " (the net's <sketch>)";
     return a;
   }
   a.routed = true;
@@ -435,7 +435,7 @@ std::string off_set_reason(const io::Net& net, const router::TightenOrientations
   const std::string name = set.name();
   const std::string head = "its octilinear route could not be tightened into " + name + ": ";
   using S = router::NetTightenOutcome::Status;
-  if (status == S::NoStaircase) return head + (why.empty() ? no_staircase_reason(name) : why);
+  if (status == S::NoStaircase) return head + no_staircase_reason(name, why);
   if (status == S::NotFree)
     return head + "a piece of it lies where the other nets' wires leave no room to move it (at exactly the "
                   "clearance on both sides), so it stays in octilinear directions the set lacks; route it octilinear";
@@ -838,7 +838,7 @@ void add_route(CLI::App& app, int& status) {
             a.distance = r.distance;
             a.claims = r.claims;
             // (a set, lattice or 30-degree: the wires placed are already in it; router/tighten_nets.h)
-            if (reshaped && target_set) router::tighten_attempt(a, pins, obs, tighten_orientations(tighten_word), stop);
+            if (reshaped && target_set) router::tighten_attempt(a, pins, obs, target_orient, stop);
             return a;
           });
           net_stats = nr.stats();
@@ -1043,7 +1043,7 @@ void add_route(CLI::App& app, int& status) {
               route.status = "failed";
               route.reason = res.contractible
                                  ? std::string("the loop sketch winds around no blockage: it can be pulled to a point")
-                                 : (res.why.empty() ? no_staircase_reason(tighten_word) : res.why) + " (the net's <sketch>)";
+                                 : no_staircase_reason(tighten_word, res.why) + " (the net's <sketch>)";
               print_diagnostics({Diagnostic{Severity::Warning, res.contractible ? "TIGHTEN-0005" : "TIGHTEN-0004",
                                             layout->file, net.sketch->line, 0, "net \"" + net.name + "\": " + *route.reason}},
                                 args->load.quiet);

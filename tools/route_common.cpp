@@ -181,7 +181,8 @@ std::vector<router::NetPins> net_pins(const io::Layout& layout) {
   return pins;
 }
 
-std::string no_staircase_reason(const std::string& orientations) {
+std::string no_staircase_reason(const std::string& orientations, const std::string& why) {
+  if (!why.empty()) return why;
   if (geom::Root3Directions::parse(orientations))  // (the builder's own reason is said where there is one)
     return "no " + orientations + " wire with integer vertices follows the taut wire's class at its length (a blockage "
            "edge at an angle outside the set pinches it past 256 runs, or no rounding of its vertices to integers "

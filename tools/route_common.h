@@ -79,6 +79,7 @@ class WireTightener {
                                   std::span<const geom::Point> line, const router::Tightened& r,
                                   std::int64_t clearance = 0);
   const geom::FreeSpaceTriangulation& triangulation() const { return st_.triangulation(); }
+  const router::Tightener& tightener() const { return st_.tightener(); }
 
  private:
   router::SpaceTightener st_;
@@ -106,6 +107,8 @@ std::vector<router::CheckProblem> wire_problems(const io::Layout& layout, const 
                                                 const std::vector<router::NetLines>& wires);
 
 // The reason written for a net with no lattice staircase in its class (TIGHTEN-0004).
-std::string no_staircase_reason(const std::string& orientations);
+// why: the builder's own reason (a set at multiples of 30 degrees, SpaceTightener::Result::why),
+// said instead when there is one.
+std::string no_staircase_reason(const std::string& orientations, const std::string& why = "");
 
 }  // namespace taut::cli

@@ -49,6 +49,22 @@
 namespace taut::cli {
 namespace {
 
+// The taut wire (or shortest loop) of a written wire's class, for --min-link; throws with where
+// its lift fails, or when a loop winds around nothing.
+std::vector<geom::Point> taut_of(const router::Tightener& t, const std::vector<geom::Point>& w) {
+  if (WireTightener::is_loop(w)) {
+    router::Tightener::Loop l = t.tighten_loop(w);
+    if (l.status != router::TightenStatus::Ok)
+      throw std::runtime_error(std::string(router::tighten_status_text(l.status)) + " at or after " + point_text(l.where));
+    if (l.contractible) throw std::runtime_error("the loop winds around no blockage");
+    return std::move(l.points);
+  }
+  router::Tightened r = t.tighten(w);
+  if (r.status != router::TightenStatus::Ok)
+    throw std::runtime_error(std::string(router::tighten_status_text(r.status)) + " at or after " + point_text(r.where));
+  return std::move(r.points);
+}
+
 struct NetTightening {
   std::string source;  // "sketch" or "wires"
   double before = 0, taut = 0, after = 0;
@@ -180,12 +196,8 @@ void add_tighten(CLI::App& app, int& status) {
     // with --min-link, whose minimum-link path in the set is not computed yet: TIGHTEN-0015).
     std::string o = args->orientations;
     if (!o.empty() && o != "any") {
-      const auto set = geom::LatticeDirections::parse(o);
-      const auto set30 = geom::Root3Directions::parse(o);
-      if (set) {
-        o = set->name();
-      } else if (set30) {
-        o = set30->name();
+      if (const router::TightenOrientations to = tighten_orientations(o); to.c_oriented()) {
+        o = to.name();
       } else {
         print_usage_error("CLI-0027", "tighten: --orientations " + o +
                                           ": expected rectilinear, octilinear, any, a c: set of directions at "
@@ -205,11 +217,8 @@ void add_tighten(CLI::App& app, int& status) {
     if (orientations.empty()) {
       orientations = layout->rules ? layout->rules->orientations : "rectilinear";
       if (orientations != "any") {
-        const auto set30 = geom::Root3Directions::parse(orientations);
-        if (const auto set = geom::LatticeDirections::parse(orientations)) {
-          orientations = set->name();
-        } else if (set30) {
-          orientations = set30->name();
+        if (const router::TightenOrientations to = tighten_orientations(orientations); to.c_oriented()) {
+          orientations = to.name();
         } else {
           print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0003", layout->file, layout->rules->line, 0,
                                         "<rules orientations=\"" + orientations + "\">: " +
@@ -282,7 +291,6 @@ void add_tighten(CLI::App& app, int& status) {
     // are longer (TIGHTEN-0014, since 2026-12-05).
     // (per input: routed wires with a segment outside the output's directions; `any` has none)
     const router::TightenOrientations out_orientations = tighten_orientations(orientations);
-    const std::optional<geom::LatticeDirections>& out_set = out_orientations.set;
     const std::optional<geom::Root3Directions>& out_set30 = out_orientations.set30;
     // A staircase in a cone of two steps that do not bracket the link's box, as in c:0,45 (NE and
     // W round north) or c:45,135 (NE and SE round east), leaves the box of its ends: (0,0) to
@@ -294,7 +302,7 @@ void add_tighten(CLI::App& app, int& status) {
     // domain lowers the scale --clearance can tighten in, router::exact_gaps_scale: on a layout
     // over about 10^7 DBU across, such a set tightens in the layout's units, gaps of exactly the
     // clearance closed.)
-    if (!layout->boundary && ((out_set && out_set->cones_leave_box()) || (out_set30 && out_set30->cones_leave_box()))) {
+    if (!layout->boundary && out_orientations.cones_leave_box()) {
       const geom::Box b = io::routing_domain(*layout, extra);
       const geom::Box grown = geom::grown_box(b, (std::int64_t{b.hi.x} - b.lo.x) + (std::int64_t{b.hi.y} - b.lo.y));
       extra.push_back(grown.lo);
@@ -659,25 +667,8 @@ void add_tighten(CLI::App& app, int& status) {
             const router::MinLinker ml(sp.triangulation());
             // (A wire that another net's wire has come to exactly the clearance of runs in a gap
             // of width zero in this space: its lift fails, and TIGHTEN-0008 says where.)
-            for (const auto& w : out_lines) {
-              const bool is_loop = WireTightener::is_loop(w);
-              std::vector<geom::Point> taut;
-              if (is_loop) {
-                router::Tightener::Loop l = sp.tightener().tighten_loop(w);
-                if (l.status != router::TightenStatus::Ok)
-                  throw std::runtime_error(std::string(router::tighten_status_text(l.status)) + " at or after " +
-                                           point_text(l.where));
-                if (l.contractible) throw std::runtime_error("the loop winds around no blockage");
-                taut = std::move(l.points);
-              } else {
-                router::Tightened r = sp.tightener().tighten(w);
-                if (r.status != router::TightenStatus::Ok)
-                  throw std::runtime_error(std::string(router::tighten_status_text(r.status)) + " at or after " +
-                                           point_text(r.where));
-                taut = std::move(r.points);
-              }
-              st.add_min_link(ml, taut, is_loop, sp.triangulation(), min_link_set);
-            }
+            for (const auto& w : out_lines)
+              st.add_min_link(ml, taut_of(sp.tightener(), w), WireTightener::is_loop(w), sp.triangulation(), min_link_set);
           } catch (const std::exception& e) {
             no_min_link(in.line_numbers[0], e);
           }
@@ -770,12 +761,11 @@ void add_tighten(CLI::App& app, int& status) {
           const auto& w = out_lines[k];
           if (router::one_point(w)) continue;
           try {
-            const WireTightener::Result again = wt.run(w);
-            if (again.taut.status != router::TightenStatus::Ok)
-              throw std::runtime_error(std::string(router::tighten_status_text(again.taut.status)) + " at or after " +
-                                       point_text(again.taut.where));
+            // (the taut wire only: not written in the set again, which in a set at multiples of 30
+            // degrees costs its exact staircase)
+            const std::vector<geom::Point> taut = taut_of(wt.tightener(), w);
             if (!min_linker) min_linker = std::make_unique<router::MinLinker>(wt.triangulation());
-            st.add_min_link(*min_linker, again.taut.points, again.loop, wt.triangulation(), min_link_set);
+            st.add_min_link(*min_linker, taut, WireTightener::is_loop(w), wt.triangulation(), min_link_set);
           } catch (const std::exception& e) {
             no_min_link(in.line_numbers[0], e);
           }
@@ -793,7 +783,7 @@ void add_tighten(CLI::App& app, int& status) {
       }
       if (no_staircase) {
         route.status = "failed";
-        route.reason = no_staircase_why.empty() ? no_staircase_reason(orientations) : no_staircase_why;
+        route.reason = no_staircase_reason(orientations, no_staircase_why);
         print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0004", layout->file, in.line_numbers[0], 0,
                                       "net \"" + net.name + "\": " + *route.reason}},
                           args->load.quiet);
@@ -957,6 +947,7 @@ void add_tighten(CLI::App& app, int& status) {
             if (!s.oriented_proven) std::cerr << s.oriented_at_least << " to ";
             std::cerr << s.oriented_min_links << ")";
           }
+          if (min_link_30) std::cerr << " at any angle (" << orientations << ": not computed)";
         }
         std::cerr << '\n';
       }

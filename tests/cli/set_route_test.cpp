@@ -1,4 +1,5 @@
-// `taut route --orientations any` and lattice c: sets (since 2026-12-06): the nets are routed
+// `taut route --orientations any` and lattice c: sets (since 2026-12-06), and sets at multiples of
+// 30 degrees such as c:0,60,120 (since 2026-12-08, wires rounded; handled as a lattice set): the nets are routed
 // octilinear (the gaps of exactly the clearance open under any, closed under a lattice set, whose
 // attempts are tightened into it as they are placed: router::tighten_attempt), then tightened
 // together into the set (router::NetsTightener), and a net whose wires cannot be written in it
@@ -11,7 +12,7 @@
 //   - together with rules: the whole `taut check` passes (free space, connectivity, the
 //     clearance, and for a lattice set every segment in its directions, CHECK-0002);
 //   - by hand: a wire round a square, the parity of x + y under c:45,135, a net left without room,
-//     and the sets no integer vertex can follow (CLI-0021).
+//     <rules> at multiples of 30 degrees, and a set at another angle (CLI-0021).
 #include <gtest/gtest.h>
 
 #include <cmath>
