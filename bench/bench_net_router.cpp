@@ -33,7 +33,7 @@
 // passed by the independent checker), so a legal routing of every net is known to exist: the
 // completion target's instance. Their planted length is printed beside the routed length.
 //
-// --orientations SET (any, a lattice c: set such as c:45,135, or since 2026-12-08 a set at
+// --orientations SET (any, a lattice c: set such as c:45,135, or since 2026-12-07 a set at
 // multiples of 30 degrees such as c:0,60,120, its wires rounded; l1 only): each row is then also
 // routed as `taut route --orientations SET` does it (since 2026-12-06): octilinear, the gaps of
 // exactly the clearance closed, each attempt tightened into a lattice set where it was routed
@@ -121,7 +121,7 @@ int main(int argc, char** argv) {
   std::optional<taut::router::TightenOrientations> set_orient;
   if (!set_word.empty()) {
     const auto lattice = taut::geom::LatticeDirections::parse(set_word);
-    const auto thirty = lattice ? std::nullopt : taut::geom::Root3Directions::parse(set_word);  // (since 2026-12-08)
+    const auto thirty = lattice ? std::nullopt : taut::geom::Root3Directions::parse(set_word);  // (since 2026-12-07)
     if (set_word != "any" && !lattice && !thirty) {
       std::fprintf(stderr, "--orientations: any or a c: set of directions at multiples of 45 degrees or of 30 degrees\n");
       return 2;

@@ -655,7 +655,7 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
       // but the wires are written joined where two end, on pins too (below), and such a line cut
       // anew may give other pieces that tighten further as one: a piece that ended at a shape
       // pin's corner and another that ran on along the pin to the wire's end, joined, go
-      // straight to that end (found by the 30-degree sets' test, 2026-12-08: a second run
+      // straight to that end (found by the 30-degree sets' test, 2026-12-07: a second run
       // shortened wires in 5 of 150 layouts). So the rounds repeat "until no wire shortens" in
       // the pieces a second run would see: each net's wires as they would be written, cut again;
       // a net whose pieces differ is tried again with them. Once a re-cut moves nothing, done.

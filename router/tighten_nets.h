@@ -17,7 +17,7 @@
 // position the same way. Every move is an improvement in (length in the output's metric, bends),
 // never worse in either: a finite set of values, so the rounds end (NetsTightenOptions::max_rounds
 // is a guard, reported when hit). When they end, each net's wires are joined and cut again as a
-// second run would cut them (since 2026-12-08; a joined line may tighten further as one), and the
+// second run would cut them (since 2026-12-07; a joined line may tighten further as one), and the
 // rounds go on with the nets whose pieces differ; a re-cut keeps the metal (its length) but may
 // count a bend at a joint, so it is not a move: once a re-cut round moves nothing, or at
 // max_rounds, the rounds stop.
@@ -65,7 +65,7 @@ namespace taut::router {
 
 // The output's directions: any angle (no set: the Euclidean taut wire), a lattice direction
 // set (geom/directions.h: rectilinear, octilinear, c:0,45, c:45,135, ...), or (since 2026-12-07;
-// NetsTightener since 2026-12-08) a set at multiples of 30 degrees (geom/root3_directions.h:
+// NetsTightener since 2026-12-07) a set at multiples of 30 degrees (geom/root3_directions.h:
 // c:0,60,120, ...), written rounded (router/root3_staircase.h).
 struct TightenOrientations {
   std::optional<geom::LatticeDirections> set;

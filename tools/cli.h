@@ -68,7 +68,7 @@ struct RoutingOptions {
   bool allow_bends = false;
   // `route` only: orientations "any" and the lattice c: sets (geom/directions.h: directions at
   // multiples of 45 degrees, such as c:45,135; since 2026-12-06) and the sets at multiples of 30
-  // degrees (geom/root3_directions.h, such as c:0,60,120; since 2026-12-08) are accepted; the
+  // degrees (geom/root3_directions.h, such as c:0,60,120; since 2026-12-07) are accepted; the
   // nets are routed octilinear and then tightened together into them.
   bool allow_sets = false;
 };

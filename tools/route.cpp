@@ -427,7 +427,7 @@ std::optional<std::string> parity_reason(const io::Net& net, const geom::Lattice
 }
 
 // `status`: the tightening's outcome for the net (NoStaircase, NotFree), when known.
-// (a set at multiples of 30 degrees since 2026-12-08: `why`, its builder's reason for no wire)
+// (a set at multiples of 30 degrees since 2026-12-07: `why`, its builder's reason for no wire)
 std::string off_set_reason(const io::Net& net, const router::TightenOrientations& set,
                            std::optional<router::NetTightenOutcome::Status> status, const std::string& why = "") {
   if (set.set)
@@ -535,7 +535,7 @@ void add_route(CLI::App& app, int& status) {
     }
     const bool bends = args->routing.metric != "l1";
     // --orientations any, or a lattice c: set other than rectilinear and octilinear (since
-    // 2026-12-06), or a set at multiples of 30 degrees (since 2026-12-08: c:0,60,120, written
+    // 2026-12-06), or a set at multiples of 30 degrees (since 2026-12-07: c:0,60,120, written
     // with its exact vertices rounded, router/root3_staircase.h): the nets are routed octilinear
     // with the gaps of exactly the clearance closed, then tightened together into those
     // directions (--tighten is implied), and a net whose wires cannot be written in them is failed

@@ -11,7 +11,7 @@
 // `c:0,90` and `c:0,45,90,135` name rectilinear and octilinear. A set at multiples of 30 degrees
 // (c:0,60,120, ...; since 2026-12-07) writes the shortest wire of the class in it built exactly in
 // Q(sqrt3) with its vertices rounded to integers (router/root3_staircase.h; with --clearance
-// and --min-link since 2026-12-08, its minimum-link path in the set not computed yet:
+// and --min-link since 2026-12-07, its minimum-link path in the set not computed yet:
 // TIGHTEN-0015). `c:` sets with a direction at another angle are refused (CLI-0027) or, from
 // <rules>, replaced by `any` (TIGHTEN-0003).
 // --min-link adds each wire's minimum-link path of its class (router/minlink.h, any angle, exact
@@ -192,7 +192,7 @@ void add_tighten(CLI::App& app, int& status) {
     const auto t0 = Clock::now();
     // The output's directions: any, a lattice direction set by its name (c:0,90 is rectilinear),
     // or (since 2026-12-07) a set at multiples of 30 degrees such as c:0,60,120, written with its
-    // exact vertices rounded (router/root3_staircase.h; with --clearance since 2026-12-08, and
+    // exact vertices rounded (router/root3_staircase.h; with --clearance since 2026-12-07, and
     // with --min-link, whose minimum-link path in the set is not computed yet: TIGHTEN-0015).
     std::string o = args->orientations;
     if (!o.empty() && o != "any") {
@@ -234,7 +234,7 @@ void add_tighten(CLI::App& app, int& status) {
     std::optional<geom::LatticeDirections> min_link_set;
     if (args->min_link && c_oriented) min_link_set = geom::LatticeDirections::parse(orientations);
     // ... but not in a set at multiples of 30 degrees yet (router::CMinLinker works in lattice
-    // steps): said once, and null in the statistics with the reason (since 2026-12-08; before,
+    // steps): said once, and null in the statistics with the reason (since 2026-12-07; before,
     // refused with CLI-0027)
     const bool min_link_30 = args->min_link && geom::Root3Directions::parse(orientations).has_value();
     const std::string min_link_30_why = "the minimum-link path in a set at multiples of 30 degrees (H&S 6.3) is not "

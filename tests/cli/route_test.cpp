@@ -189,7 +189,7 @@ TEST(Path, RequestsThisVersionCannotServeExit2AndPrintNothing) {
              "<layout name=\"o\" version=\"1\">\n"
              "  <rules orientations=\"c:0,60,120\"/>\n"
              "</layout>\n");
-  const std::string ten = dir + "/ten.xml";  // (route writes c:0,60,120 since 2026-12-08, not this)
+  const std::string ten = dir + "/ten.xml";  // (route writes c:0,60,120 since 2026-12-07, not this)
   write_text(ten,
              "<layout name=\"o\" version=\"1\">\n"
              "  <rules orientations=\"c:0,10\"/>\n"

@@ -1,5 +1,5 @@
 // `taut route --orientations any` and lattice c: sets (since 2026-12-06), and sets at multiples of
-// 30 degrees such as c:0,60,120 (since 2026-12-08, wires rounded; handled as a lattice set): the nets are routed
+// 30 degrees such as c:0,60,120 (since 2026-12-07, wires rounded; handled as a lattice set): the nets are routed
 // octilinear (the gaps of exactly the clearance open under any, closed under a lattice set, whose
 // attempts are tightened into it as they are placed: router::tighten_attempt), then tightened
 // together into the set (router::NetsTightener), and a net whose wires cannot be written in it
@@ -136,7 +136,7 @@ TEST(SetRoute, TogetherEverySetPassesTheChecker) {
         io::ReadResult rr = io::read_layout(out);
         ASSERT_TRUE(rr.layout && rr.layout->routes);
         const auto lattice = geom::LatticeDirections::parse(set);
-        const auto thirty = geom::Root3Directions::parse(set);  // (since 2026-12-08)
+        const auto thirty = geom::Root3Directions::parse(set);  // (since 2026-12-07)
         EXPECT_EQ(rr.layout->routes->orientations, lattice ? lattice->name() : thirty ? thirty->name() : "any");
         bool any_failed = false;
         int in_set = 0;  // failed by the set (ROUTE-0021's reasons), parity apart
@@ -194,7 +194,7 @@ TEST(SetRoute, TogetherEverySetPassesTheChecker) {
   const int lost30 = failed_set["c:0,60,120"] + failed_set["c:30,90,150"];
   failed_set.erase("c:0,60,120");
   failed_set.erase("c:30,90,150");
-  EXPECT_LE(lost30 * 30, nets);  // (none on 2 x 90 nets, 2026-12-08)
+  EXPECT_LE(lost30 * 30, nets);  // (none on 2 x 90 nets, 2026-12-07)
   // A net whose octilinear wire another net's later wire left in a gap of exactly the clearance
   // cannot be moved into a set that lacks its direction: with each attempt tightened into the set
   // before the next net is routed (router::tighten_attempt) that is rare; with the
@@ -305,7 +305,7 @@ TEST(SetRoute, HandCases) {
     EXPECT_EQ(rr.layout->routes->routes[0].wires[0].points, (std::vector<Point>{{0, 0}, {0, 15}}));
   }
   // the demo: whatever is routed passes the check (sets at multiples of 30 degrees since
-  // 2026-12-08: c:0,60,120, FORMAT.md's example, and the twelve directions route every net; a
+  // 2026-12-07: c:0,60,120, FORMAT.md's example, and the twelve directions route every net; a
   // horizontal blockage edge pinches some under c:30,90,150, which lacks 0 degrees)
   for (const std::string set : {"c:45,135", "c:0,45", "any", "c:0,60,120", "c:0,30,60,90,120,150", "c:30,90,150"}) {
     const auto r = run_taut({"route", kDemo, "-o", dir + "/demo.xml", "--orientations", set, "--stats", dir + "/demo.json"});
@@ -328,7 +328,7 @@ TEST(SetRoute, HandCases) {
     }
   }
   {
-    // <rules orientations="c:0,60,120"> is what route writes (since 2026-12-08; refused before)
+    // <rules orientations="c:0,60,120"> is what route writes (since 2026-12-07; refused before)
     const std::string in = layout_file("set_route_sixty", R"(  <rules orientations="c:0,60,120" wire-width="2" spacing="2"/>
   <blockage id="b"><rect x0="20" y0="0" x1="30" y1="40"/></blockage>
   <net name="n"><pin name="p" x="0" y="10"/><pin name="q" x="50" y="12"/></net>

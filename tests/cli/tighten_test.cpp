@@ -1308,7 +1308,7 @@ TEST(Tighten, GuardRingWithAPinPassesTheCheck) {
 // also recomputed here).
 TEST(Tighten, SetsAtMultiplesOf30DegreesOnTheWindDesign) {
   const std::string dir = temp_dir("tighten_thirty");
-  // with --clearance (since 2026-12-08) every net together, the clearance of wind.xml's <rules>
+  // with --clearance (since 2026-12-07) every net together, the clearance of wind.xml's <rules>
   // kept (the whole check passes: clearance from blockages and between nets, no shorts)
   for (const bool clearance : {false, true})
   for (const std::string set : {"c:0,60,120", "c:30,90,150", "c:0,30,60,90,120,150", "c:0,60", "c:0,90,150"}) {
@@ -1348,7 +1348,7 @@ TEST(Tighten, SetsAtMultiplesOf30DegreesOnTheWindDesign) {
 }
 
 // A c: set in <rules> is the default output: one at multiples of 30 degrees is written in it
-// (since 2026-12-07, and with --clearance since 2026-12-08; before, at any angle with
+// (since 2026-12-07, and, later that day, with --clearance; before, at any angle with
 // TIGHTEN-0003, which a set at another angle still gets, and this one with --min-link, which
 // does not write such sets yet).
 TEST(Tighten, CSetInTheRulesIsTheOutputsDirections) {
@@ -1381,7 +1381,7 @@ TEST(Tighten, CSetInTheRulesIsTheOutputsDirections) {
   EXPECT_EQ(tc.status, 0) << tc.err;
   EXPECT_EQ(tc.err.find("TIGHTEN-0003"), std::string::npos) << tc.err;
   EXPECT_EQ(wires_of(dir + "/tc.xml", "n"), wires_of(dir + "/t.xml", "n"));
-  // with --min-link: in the set too (since 2026-12-08), its minimum-link path in the set not
+  // with --min-link: in the set too (since 2026-12-07), its minimum-link path in the set not
   // computed (TIGHTEN-0015, null in the statistics with the reason), the one at any angle is
   const auto tm = run_taut({"tighten", file, "-o", dir + "/tm.xml", "--min-link", "--stats", dir + "/tm.json"});
   EXPECT_EQ(tm.status, 0) << tm.err;

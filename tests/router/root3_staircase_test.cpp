@@ -11,7 +11,7 @@
 // shared coordinates, collinear edges, touching blockages, pinches), scaled by 64 so rounding
 // moves a vertex little against the layout; sketches wind round blockages as in the tightening
 // tests. A written wire that leaves free space or its class fails the test.
-// The fewest links (since 2026-12-08), a necessary condition only: the exact wire built from the
+// The fewest links (since 2026-12-07), a necessary condition only: the exact wire built from the
 // taut wire's other end has as many links (the greedy runs and the DP join pieces from the start;
 // taking one first direction only, dropping the DP's credit for a link across a cut, or halving
 // the first run each make hundreds differ). Not an exhaustive search (the lattice sets' greedy is

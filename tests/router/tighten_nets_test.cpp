@@ -359,7 +359,7 @@ TEST(NetsTightener, ScaledPlaneTakesLegalSketchesInExactGaps) {
   }
 }
 
-// Sets at multiples of 30 degrees (since 2026-12-08): the net router's octilinear wires tightened
+// Sets at multiples of 30 degrees (since 2026-12-07): the net router's octilinear wires tightened
 // together into c:0,60,120 and the other such sets, their exact wires rounded
 // (router/root3_staircase.h). Judged as above, by references that share nothing with the
 // builder: the checker (free, connected, clear), the homotopy words (every pin-to-pin way keeps
