@@ -12,6 +12,7 @@
 #include <boost/multiprecision/gmp.hpp>
 
 #include "geom/root2.h"
+#include "geom/root3.h"
 
 namespace taut::router {
 
@@ -27,6 +28,9 @@ struct RationalRoot {
   RationalRoot(Rational a_, Rational b_ = 0) : a(std::move(a_)), b(std::move(b_)) {}
   explicit RationalRoot(const geom::Root2& r)
     requires(N == 2)
+      : a(r.a), b(r.b) {}
+  explicit RationalRoot(const geom::Root3& r)
+    requires(N == 3)
       : a(r.a), b(r.b) {}
   int sign() const {
     const int sa = a.sign(), sb = b.sign();

@@ -19,7 +19,7 @@ using R3 = RationalRoot3;
 using Step = geom::Root3Directions::Step;
 using FPoint = std::array<R3, 2>;  // frame coordinates (U, V)
 
-R3 exact(const Root3& r) { return R3(Rational(r.a), Rational(r.b)); }
+R3Point exact_point(Point p) { return {R3(Rational(p.x)), R3(Rational(p.y))}; }
 // cross((dx, dy), s) and cross(s, (dx, dy)) for an integer vector
 Root3 cross_vs(i64 dx, i64 dy, const Step& s) { return dx * s.y - dy * s.x; }
 Root3 cross_sv(const Step& s, i64 dx, i64 dy) { return dy * s.x - dx * s.y; }
@@ -37,11 +37,11 @@ struct Frame {
   }
   FPoint of(Point p) const {
     const std::array<Root3, 2> f = of_int(p);
-    return {exact(f[0]), exact(f[1])};
+    return {R3(f[0]), R3(f[1])};
   }
   R3Point at(const FPoint& f) const {
-    const R3 x = R3(Rational(a.x)) + (f[0] * exact(s1.x) + f[1] * exact(s2.x)) / d;
-    const R3 y = R3(Rational(a.y)) + (f[0] * exact(s1.y) + f[1] * exact(s2.y)) / d;
+    const R3 x = R3(Rational(a.x)) + (f[0] * R3(s1.x) + f[1] * R3(s2.x)) / d;
+    const R3 y = R3(Rational(a.y)) + (f[0] * R3(s1.y) + f[1] * R3(s2.y)) / d;
     return {x, y};
   }
 };
@@ -55,7 +55,7 @@ struct Wall {
 
 class PieceSolver {
  public:
-  PieceSolver(const Frame& fr, std::span<const Point> alpha, const FPoint& lim) : fr_(fr), lim_(lim) {
+  PieceSolver(const Frame& fr, std::span<const Point> alpha, const FPoint& lim) : lim_(lim) {
     for (const Point p : alpha) {
       const FPoint f = fr.of(p);
       a_[0].push_back(f[0]);
@@ -106,7 +106,6 @@ class PieceSolver {
       if (pos[0] == lim_[0] && pos[1] == lim_[1]) return pts;
     }
   }
-  std::size_t walls() const { return walls_.size(); }
 
  private:
   // Sign of (point - alpha) in V at the point's U (0 <= X <= U(b)).
@@ -171,7 +170,6 @@ class PieceSolver {
     return best;
   }
 
-  const Frame& fr_;
   FPoint lim_;
   std::array<std::vector<R3>, 2> a_;  // alpha's vertices: U and V (both strictly increasing)
   std::vector<Wall> walls_;
@@ -212,16 +210,16 @@ Root3Wire Root3StaircaseBuilder::staircase(std::span<const Point> taut, const ge
     const Point a = alpha.front(), b = alpha.back();
     const i64 dx = i64{b.x} - a.x, dy = i64{b.y} - a.y;
     std::vector<Candidate> cands;
-    if (alpha.size() == 2 && set.step_along(dx, dy) >= 0) {  // a segment along a direction of the set
-      const auto s = static_cast<std::size_t>(set.step_along(dx, dy));
-      cands.push_back({{R3Point{R3(Rational(a.x)), R3(Rational(a.y))}, R3Point{R3(Rational(b.x)), R3(Rational(b.y))}}, s, s});
+    if (const int along = alpha.size() == 2 ? set.step_along(dx, dy) : -1; along >= 0) {  // a segment along a direction of the set
+      const auto s = static_cast<std::size_t>(along);
+      cands.push_back({{exact_point(a), exact_point(b)}, s, s});
       pieces.push_back(std::move(cands));
       continue;
     }
     const int cone = set.cone(i64{alpha[1].x} - a.x, i64{alpha[1].y} - a.y);
     const std::size_t i1 = static_cast<std::size_t>(cone), i2 = (i1 + 1) % steps.size();
     Frame fr{a, steps[i1], steps[i2], R3()};
-    fr.d = exact(steps[i1].x * steps[i2].y - steps[i1].y * steps[i2].x);
+    fr.d = R3(steps[i1].x * steps[i2].y - steps[i1].y * steps[i2].x);
     const FPoint lim = fr.of(b);
     PieceSolver solver(fr, alpha, lim);
     // the walls: every edge whose box meets the box of the piece's parallelogram, within the
@@ -244,7 +242,7 @@ Root3Wire Root3StaircaseBuilder::staircase(std::span<const Point> taut, const ge
       const std::array<Root3, 2> p = fr.of_int(e.a), q = fr.of_int(e.b);
       for (int k = 0; k < 2; ++k)
         if ((p[k].sign() < 0 && q[k].sign() < 0) || (p[k] > lim_int[k] && q[k] > lim_int[k])) return;
-      solver.add({exact(p[0]), exact(p[1])}, {exact(q[0]), exact(q[1])});
+      solver.add({R3(p[0]), R3(p[1])}, {R3(q[0]), R3(q[1])});
     };
     for (const std::uint32_t id : index_.edges_in_box(box)) add(index_.edge(id));
     for (const geom::Segment& e : sides_) add(e);
@@ -257,8 +255,8 @@ Root3Wire Root3StaircaseBuilder::staircase(std::span<const Point> taut, const ge
       if (!g) continue;
       Candidate cand;
       for (const FPoint& p : *g) cand.pts.push_back(fr.at(p));
-      cand.pts.front() = R3Point{R3(Rational(a.x)), R3(Rational(a.y))};  // (equal already; exactly the ends)
-      cand.pts.back() = R3Point{R3(Rational(b.x)), R3(Rational(b.y))};
+      cand.pts.front() = exact_point(a);  // (equal already; exactly the ends)
+      cand.pts.back() = exact_point(b);
       const int runs = static_cast<int>(g->size()) - 1;
       cand.first = f == 0 ? i1 : i2;
       cand.last = ((runs % 2 == 1) == (f == 0)) ? i1 : i2;
@@ -278,7 +276,7 @@ Root3Wire Root3StaircaseBuilder::staircase(std::span<const Point> taut, const ge
   }
   if (pieces.empty()) {  // one point
     out.points = {taut.front(), taut.front()};
-    out.exact = {R3Point{R3(Rational(taut[0].x)), R3(Rational(taut[0].y))}};
+    out.exact = {exact_point(taut[0])};
     return out;
   }
   // DP over the pieces: the fewest links, a link continuing across a cut (the same step on both

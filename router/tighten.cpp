@@ -427,6 +427,12 @@ std::vector<Point> Tightener::funnel(Point p, Point q, const Sleeve& sleeve) con
   return simplified(out);
 }
 
+bool Tightener::free(Point p, Point q) const {
+  Sleeve s;
+  const std::array<Point, 2> seg{p, q};
+  return lift(seg, s) == TightenStatus::Ok;
+}
+
 Tightened Tightener::tighten(std::span<const Point> path) const {
   Tightened r;
   Sleeve s;

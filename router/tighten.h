@@ -96,6 +96,9 @@ class Tightener {
   // Both: the shortest path homotopic to `path` with the same ends.
   Tightened tighten(std::span<const geom::Point> path) const;
 
+  // The segment pq lies in free space (its lift succeeds; tighten()'s status without the funnel).
+  bool free(geom::Point p, geom::Point q) const;
+
   // Loops (H&S section 5.1, orientable bands: free space in the plane). `loop` is a closed
   // polyline (its last point equals its first). Its lift from the first point back to it is
   // closed up at that point (turning inside the fan when it is a vertex) and reduced cyclically

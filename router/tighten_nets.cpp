@@ -90,9 +90,7 @@ SpaceTightener::Result SpaceTightener::run(std::span<const Point> line) const {
   if (sb30_) {
     // The exact wire rounded; tightening it back to the taut wire checks that it is free and in
     // the class (as c_oriented does for the lattice sets).
-    Root3Wire w = sb30_->staircase(r.taut.points, *orientations_.set30, [&](Point p, Point q) {
-      return tight_->tighten(std::vector<Point>{p, q}).status == TightenStatus::Ok;
-    });
+    Root3Wire w = sb30_->staircase(r.taut.points, *orientations_.set30, [&](Point p, Point q) { return tight_->free(p, q); });
     if (w.ok()) {
       const Tightened back = tight_->tighten(w.points);
       if (back.status != TightenStatus::Ok || back.points != r.taut.points)
@@ -126,7 +124,7 @@ using geom::boxes_meet;
 
 // Twelve times a polyline's length in the convex distance of a set at multiples of 30 degrees,
 // a + b sqrt3, summed in __int128 (each segment's is below 2^47) and compared exactly
-// (Root3::sign_of below 2^61, router::sign_wide in GMP past it).
+// (router::sign_wide: in __int128 below 2^61, in GMP past it).
 struct Length30 {
   __int128 a = 0, b = 0;
   Length30(const geom::Root3Directions& set, std::span<const Point> line) {
@@ -135,12 +133,8 @@ struct Length30 {
       a += l.a, b += l.b;
     }
   }
-  friend bool operator<(const Length30& x, const Length30& y) { return sign(x.a - y.a, x.b - y.b) < 0; }
-  friend bool operator<=(const Length30& x, const Length30& y) { return sign(x.a - y.a, x.b - y.b) <= 0; }
+  friend auto operator<=>(const Length30& x, const Length30& y) { return sign_wide<3>(x.a - y.a, x.b - y.b) <=> 0; }
   friend bool operator==(const Length30& x, const Length30& y) { return x.a == y.a && x.b == y.b; }
-  static int sign(__int128 a, __int128 b) {
-    return sign_wide<3>(a, b);
-  }
 };
 
 }  // namespace
@@ -329,6 +323,9 @@ NetLines metal(const NetLines& wires) {
   if (m.empty() && !wires.empty()) m.push_back(wires.front());
   return m;
 }
+
+// A net's wires as they are written: without overlaps, joined where exactly two end.
+NetLines written(const NetLines& wires) { return join_at_twos(once(metal(wires))); }
 
 // A net's wires as they are tightened: without overlaps (where two were pulled along one path),
 // cut at the joints, once, joined where two end off the pins
@@ -665,7 +662,7 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
       for (std::size_t i = 0; i < n; ++i) {
         if (wires[i].empty() || failed[i] || is_sketch(i)) continue;
         std::vector<char> fz;
-        NetLines recut = prepare(join_at_twos(once(metal(wires[i]))), space.net(i).pins, fz);
+        NetLines recut = prepare(written(wires[i]), space.net(i).pins, fz);
         // (compared as they are: a piece reversed, or tried in another order, may get another
         // wire of the same length, and the test above found a second run taking one with fewer
         // bends that way: pieces equal only as a set are tried again too)
@@ -708,7 +705,7 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
       stats_.kept_not_free += o.kept[k] == 1 && !frozen[i][k];
       o.length_taut += taut_len[i][k];
     }
-    if (!is_sketch(i)) wires[i] = join_at_twos(once(metal(wires[i])));
+    if (!is_sketch(i)) wires[i] = written(wires[i]);
     for (const auto& w : wires[i]) o.length_after += euclidean_length(w), o.bends_after += geom::count_bends(w);
   }
   return out;

@@ -393,7 +393,7 @@ void add_tighten(CLI::App& app, int& status) {
       }
       for (std::size_t i = 0; i < layout->nets.size(); ++i) together[i] = inputs[i].lines;
       router::NetsTightenOptions o;
-      o.orientations = tighten_orientations(orientations);
+      o.orientations = out_orientations;
       // (routed wires read from the file are wires: cut at their joints, so a tree stays joined,
       // and checked as given, as sketches are; since 2026-12-05, before which they were taken as
       // sketches, whose lines are tightened one by one, and a branch could be left behind)

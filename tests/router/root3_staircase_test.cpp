@@ -29,6 +29,7 @@
 #include "geom/root3_directions.h"
 #include "oracle/homotopy.h"
 #include "oracle/l1_oracle.h"
+#include "oracle/union_oracle.h"
 #include "router/tighten.h"
 #include "support/reach.h"
 #include "support/sanitized.h"
@@ -52,14 +53,6 @@ struct Totals {
             missing_rounding = 0, reversed = 0, reversed_differ = 0;
 };
 
-geom::Polygon scaled(const geom::Polygon& p, int k) {
-  geom::Polygon q = p;
-  for (Point& v : q.outer) v = {v.x * k, v.y * k};
-  for (geom::Ring& h : q.holes)
-    for (Point& v : h) v = {v.x * k, v.y * k};
-  return q;
-}
-
 void check_seed(std::uint64_t seed, Totals& tot) {
   WavefrontCase c;
   try {
@@ -71,7 +64,7 @@ void check_seed(std::uint64_t seed, Totals& tot) {
   constexpr int K = 64;
   geom::Box domain{{c.domain.lo.x * K, c.domain.lo.y * K}, {c.domain.hi.x * K, c.domain.hi.y * K}};
   std::vector<geom::Polygon> obstacles;
-  for (const geom::Polygon& p : c.obstacles) obstacles.push_back(scaled(p, K));
+  for (const geom::Polygon& p : c.obstacles) obstacles.push_back(oracle::scaled(p, K));
   const oracle::L1Reference ref(domain, obstacles);
   if (!ref.problems().empty()) return;
   const Scenery st = setup(domain, obstacles);
@@ -218,13 +211,11 @@ int reference_sign(__int128 a, __int128 b) {
 }
 TEST(Root3Staircase, WideSignAgainstRationals) {
   std::mt19937_64 rng(2026120801);
-  int checked = 0;
   for (int i = 0; i < 20000; ++i) {
     const int shift = static_cast<int>(rng() % 57);  // magnitudes 2^63 .. 2^120
     const __int128 a = static_cast<__int128>(static_cast<std::int64_t>(rng())) << shift;
     const __int128 b = static_cast<__int128>(static_cast<std::int64_t>(rng())) << shift;
     ASSERT_EQ(router::sign_wide<3>(a, b), reference_sign(a, b)) << decimal(a) << " + " << decimal(b) << " sqrt3";
-    ++checked;
   }
   __int128 x = 2, y = 1;  // x^2 - 3 y^2 = 1
   for (int k = 0; k < 28 && x < (__int128{1} << 60); ++k) {
@@ -233,14 +224,12 @@ TEST(Root3Staircase, WideSignAgainstRationals) {
       for (const auto& [a, b, want] : {std::tuple{sx, -sy, 1}, std::tuple{-sx, sy, -1}}) {
         EXPECT_EQ(router::sign_wide<3>(a, b), want) << decimal(a) << " + " << decimal(b) << " sqrt3";
         EXPECT_EQ(reference_sign(a, b), want);
-        ++checked;
       }
     }
     const __int128 nx = 2 * x + 3 * y, ny = x + 2 * y;  // the next solution: (x + y sqrt3)(2 + sqrt3)
     x = nx, y = ny;
   }
   EXPECT_EQ(router::sign_wide<3>(0, 0), 0);
-  EXPECT_GT(checked, 20100);
 }
 
 TEST(Root3Staircase, RandomSketchesShortestInTheSetAndLegalRounded) {
