@@ -257,6 +257,31 @@ int main(int argc, char** argv) {
         }
       }
     }
+    // the same in c:0,60,120 (CMinLinker over Q(sqrt3), since 2026-12-07): per wire the time
+    // (growth as above), links against the exact staircase's of the same wire
+    MStats m3;
+    long long m3_staircase_links = 0, m3_staircases = 0;
+    for (const auto& t : taut_paths) {
+      taut::router::CMinLinkPath3 m;
+      const double tw = seconds_of([&] { m = cml.path(t, hex); }, 1);
+      m3.seconds += tw;
+      auto& bk = m3.by_vertices[static_cast<int>(std::log2(static_cast<double>(t.size())))];
+      bk.first += tw;
+      ++bk.second;
+      if (!m.ok()) {
+        ++m3.none;
+        continue;
+      }
+      m3.links += static_cast<long long>(m.links());
+      m3.sweeps += static_cast<long long>(m.sweeps);
+      const auto w = sb30.staircase(t, hex, [&](Point p, Point q) { return tight.free(p, q); });
+      if (w.ok()) {
+        ++m3_staircases;
+        m3_staircase_links += static_cast<long long>(w.exact.size()) - 1;
+        m3.fewer += m.links() + 1 < w.exact.size();
+        m3.shortest_links += static_cast<long long>(m.links());  // (the same wires' own links)
+      }
+    }
     // minimum-link loops (MinLinker::loop): closed walks of six free segments between random free
     // points near each other, tightened to their shortest loops (the contractible ones dropped)
     std::vector<std::vector<Point>> loops;
@@ -372,6 +397,21 @@ int main(int argc, char** argv) {
                   static_cast<double>(ms[o].pieces) / (n - static_cast<double>(ms[o].none)));
       std::printf("%9s   growth: taut vertices", "");
       for (const auto& [k, v] : ms[o].by_vertices) std::printf(" | %d..%d: %.2f ms", 1 << k, (2 << k) - 1, v.first / static_cast<double>(v.second) * 1e3);
+      std::printf("\n");
+    }
+    {
+      const double n = static_cast<double>(taut_paths.size()), found = n - static_cast<double>(m3.none);
+      std::printf("%9s minimum-link %s paths of the first 1,000 wires: %.3f s (%.2f ms per wire, %.1f x tightening one, "
+                  "%.2f x the %s ones), %.2f links per wire, %.2f against %.2f for the exact shortest wire where "
+                  "there is one (%lld wires, fewer on %lld), %lld with none, %.1f sweeps per wire\n",
+                  "", hex.name().c_str(), m3.seconds, m3.seconds / n * 1e3,
+                  m3.seconds / n / (t_tighten / static_cast<double>(sketches.size())), m3.seconds / ms[0].seconds,
+                  m_sets[0].name().c_str(), static_cast<double>(m3.links) / found,
+                  static_cast<double>(m3.shortest_links) / static_cast<double>(std::max(1LL, m3_staircases)),
+                  static_cast<double>(m3_staircase_links) / static_cast<double>(std::max(1LL, m3_staircases)),
+                  m3_staircases, m3.fewer, m3.none, static_cast<double>(m3.sweeps) / found);
+      std::printf("%9s   growth: taut vertices", "");
+      for (const auto& [k, v] : m3.by_vertices) std::printf(" | %d..%d: %.2f ms", 1 << k, (2 << k) - 1, v.first / static_cast<double>(v.second) * 1e3);
       std::printf("\n");
     }
     if (!loops.empty())

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "router/minlink.h"
+#include "router/root3_staircase.h"  // R3Point
 #include "router/tighten.h"
 
 namespace taut::router {
@@ -17,7 +18,6 @@ namespace taut::router {
 namespace {
 
 using geom::Point;
-using Q = Rational;
 using i64 = std::int64_t;
 using i128 = __int128;
 
@@ -26,41 +26,97 @@ struct V {
   i64 x, y;
 };
 V vec(Point from, Point to) { return {i64{to.x} - from.x, i64{to.y} - from.y}; }
-V vec(Point d) { return {d.x, d.y}; }
 i128 cross(V a, V b) { return i128{a.x} * b.y - i128{a.y} * b.x; }
 i128 dot(V a, V b) { return i128{a.x} * b.x + i128{a.y} * b.y; }
 int sgn(i128 v) { return (v > 0) - (v < 0); }
-int sgn(const Q& v) { return v.sign(); }
 
-RPoint rp(Point p) { return {Q(p.x), Q(p.y)}; }
-RPoint add(const RPoint& a, const Q& t, Point d) { return {a.x + t * d.x, a.y + t * d.y}; }
-// cross(d, x): the offset of the line through x in direction d (larger: further left of d)
-Q off(Point d, const RPoint& x) { return Q(d.x) * x.y - Q(d.y) * x.x; }
-i64 off(Point d, Point v) { return i64{d.x} * v.y - i64{d.y} * v.x; }
-Q qcross(const Q& ax, const Q& ay, const Q& bx, const Q& by) { return ax * by - ay * bx; }
-bool equal(const RPoint& a, Point b) { return a.x == b.x && a.y == b.y; }
-Point neg(Point d) { return {-d.x, -d.y}; }
+// The two kinds of direction set, as the algorithm below sees them. A step d of the set, an
+// integer vector and their cross and dot products are exact values of `Ex`; points, ray
+// parameters and offsets are numbers of the field `Num` (rationals for the lattice sets, Q(sqrt3)
+// for the sets at multiples of 30 degrees, whose steps have coordinates in Z[sqrt3]).
+struct LatticeKind {
+  using Num = Rational;
+  using P = RPoint;
+  using Dir = Point;
+  using Set = geom::LatticeDirections;
+  using EV = V;
+  using Ex = i128;
+  static EV ev(Dir d) { return {d.x, d.y}; }
+  static EV ev(V v) { return v; }
+  static Ex cross(EV a, EV b) { return router::cross(a, b); }
+  static Ex dot(EV a, EV b) { return router::dot(a, b); }
+  static int sgn(Ex v) { return router::sgn(v); }
+  // Every Ex below is a step (coordinates at most 1) against an integer vector: it fits in 64 bits.
+  static Num num(Ex v) { return Num(static_cast<i64>(v)); }
+  static Num num(i64 v) { return Num(v); }
+  static Num nx(Dir d) { return Num(d.x); }
+  static Num ny(Dir d) { return Num(d.y); }
+  static Dir neg(Dir d) { return {-d.x, -d.y}; }
+  static std::array<Dir, 2> cone_steps(const Set& s, int c) { return s.cone_steps(c); }
+  // The step is an integer vector (so p + d is a point): always here.
+  static std::optional<Point> integer(Dir d) { return d; }
+};
 
-// Angles measured counter-clockwise from `from`, in [0, 2 pi): is angle(u) <= angle(v)?
-int half(V from, V u) {
-  const int c = sgn(cross(from, u));
-  return (c > 0 || (c == 0 && dot(from, u) > 0)) ? 0 : 1;
+struct Root3Kind {
+  using Num = RationalRoot3;
+  using P = R3Point;
+  using Dir = geom::Root3Directions::Step;
+  using Set = geom::Root3Directions;
+  struct EV {
+    geom::Root3 x, y;
+  };
+  struct Ex {
+    i128 a = 0, b = 0;  // a + b sqrt3
+  };
+  static EV ev(Dir d) { return {d.x, d.y}; }
+  static EV ev(V v) { return {{v.x, 0}, {v.y, 0}}; }
+  static Ex mul(geom::Root3 u, geom::Root3 w) {
+    return {i128{u.a} * w.a + 3 * (i128{u.b} * w.b), i128{u.a} * w.b + i128{u.b} * w.a};
+  }
+  static Ex cross(EV p, EV q) {
+    const Ex s = mul(p.x, q.y), t = mul(p.y, q.x);
+    return {s.a - t.a, s.b - t.b};
+  }
+  static Ex dot(EV p, EV q) {
+    const Ex s = mul(p.x, q.x), t = mul(p.y, q.y);
+    return {s.a + t.a, s.b + t.b};
+  }
+  static int sgn(Ex v) { return sign_wide<3>(v.a, v.b); }
+  static Num num(Ex v) { return Num(Rational(to_mpz(v.a)), Rational(to_mpz(v.b))); }
+  static Num num(i64 v) { return Num(Rational(v)); }
+  static Num nx(Dir d) { return Num(d.x); }
+  static Num ny(Dir d) { return Num(d.y); }
+  static Dir neg(Dir d) { return {-d.x, -d.y}; }
+  static std::array<Dir, 2> cone_steps(const Set& s, int c) {
+    const auto& st = s.steps();
+    return {st[static_cast<std::size_t>(c)], st[(static_cast<std::size_t>(c) + 1) % st.size()]};
+  }
+  // Only the axis steps ((+-2, 0), (0, +-2)) are integer vectors.
+  static std::optional<Point> integer(Dir d) {
+    if (d.x.b != 0 || d.y.b != 0) return std::nullopt;
+    return Point{static_cast<std::int32_t>(d.x.a), static_cast<std::int32_t>(d.y.a)};
+  }
+};
+
+// The largest integer not above v (v >= 0, below 2^63).
+i64 floor_of(const Rational& v) {
+  using boost::multiprecision::denominator;
+  using boost::multiprecision::numerator;
+  const auto fl = numerator(v) / denominator(v);
+  return static_cast<i64>(fl.convert_to<long long>());
 }
-bool angle_le(V from, V u, V v) {
-  const int hu = half(from, u), hv = half(from, v);
-  if (hu != hv) return hu < hv;
-  return cross(u, v) >= 0;
-}
+i64 floor_of(const RationalRoot3& v) { return v.floor(); }
 
 // The closed interval of lambda in [lo, hi] where c0 + c1 lambda >= 0 for every constraint.
+template <class Q>
 struct Interval {
   Q lo, hi;
   bool empty = false;
   void at_least_zero(const Q& c0, const Q& c1) {  // c0 + c1 lambda >= 0
     if (empty) return;
-    const int s = sgn(c1);
+    const int s = c1.sign();
     if (s == 0) {
-      if (sgn(c0) < 0) empty = true;
+      if (c0.sign() < 0) empty = true;
       return;
     }
     const Q t = -c0 / c1;
@@ -130,367 +186,415 @@ class Cover {
   std::unordered_map<std::uint64_t, std::int32_t> intern_;
 };
 
-// A ray's passage through one lifted triangle: its parameters there (point = start + lambda d).
-struct Step {
-  std::int32_t node;
-  Q in, out;
-};
-// A vertex a ray reaches (passing it or stopping there), from the lifted triangle `node`.
-struct Pass {
-  std::int32_t vertex, node;
-  Q lam;
-};
-struct Ray {
-  std::vector<Step> steps;
-  std::vector<Pass> passes;
-  Q end;  // where it stops
-};
+// The algorithm for one kind of set (LatticeKind or Root3Kind).
+template <class G>
+struct Impl {
+  using Q = typename G::Num;
+  using RP = typename G::P;
+  using Dir = typename G::Dir;
+  using EV = typename G::EV;
+  using Ex = typename G::Ex;
 
-// A frontier segment: the part of a maximal ray beyond the frontier's corner.
-struct Seg {
-  RPoint start;  // the corner
-  std::int32_t node = 0;  // a lifted triangle holding start
-  Point dir;
-  Q len;  // it ends at start + len * dir (len may be 0)
-  std::vector<Step> chain;  // the lifted triangles from start to the end
-  int qside = 0;  // +1: the component holding q lies left of dir, -1: right
-  RPoint origin;  // where the link along this segment's line starts
-  std::int32_t parent = -1;  // the segment origin lies on (-1: origin is p)
-};
-
-// A sweep's piece: rays in direction d with offsets [lo, hi] through a lifted triangle (chain:
-// the rays start on the segment inside this triangle, so only its d side is swept).
-struct Piece {
-  std::int32_t node;
-  Q lo, hi;
-  bool chain;
-  std::int32_t from = -1;  // the lifted triangle it was reached from
-};
-struct Sweep {
-  std::size_t seg;
-  Point d;
-  std::vector<Piece> pieces;
-  std::unordered_multimap<std::int32_t, std::size_t> by_node;
-};
-
-// A piece of alpha inside a lifted triangle (params: segment index + fraction).
-struct ASeg {
-  RPoint a, b;
-  Q pa, pb;
-};
-
-struct Work {
-  const geom::FreeSpaceTriangulation& t;
-  Cover& cover;
-  std::size_t pieces = 0;
-  std::size_t piece_limit;
-
-  Point P(std::int32_t v) const { return t.vertices()[static_cast<std::size_t>(v)]; }
-  const geom::FreeTriangle& T(std::int32_t node) const {
-    return t.triangles()[static_cast<std::size_t>(cover.tri(node))];
+  static Q num(i64 v) { return G::num(v); }
+  static RP rp(Point p) { return {num(p.x), num(p.y)}; }
+  static RP add(const RP& a, const Q& t, Dir d) { return {a.x + t * G::nx(d), a.y + t * G::ny(d)}; }
+  // cross(d, x): the offset of the line through x in direction d (larger: further left of d)
+  static Q off(Dir d, const RP& x) { return G::nx(d) * x.y - G::ny(d) * x.x; }
+  static Ex off(Dir d, Point v) { return G::cross(G::ev(d), G::ev(V{v.x, v.y})); }
+  static Q qcross(const Q& ax, const Q& ay, const Q& bx, const Q& by) { return ax * by - ay * bx; }
+  static bool equal(const RP& a, Point b) { return a.x == num(b.x) && a.y == num(b.y); }
+  // cross and dot of steps and integer vectors, as signs or exact values
+  template <class A, class B>
+  static Ex cr(A a, B b) {
+    return G::cross(G::ev(a), G::ev(b));
   }
-  static int corner(const geom::FreeTriangle& tr, std::int32_t w) {
-    for (int i = 0; i < 3; ++i)
-      if (tr.v[static_cast<std::size_t>(i)] == w) return i;
-    return -1;
+  template <class A, class B>
+  static int scr(A a, B b) {
+    return G::sgn(cr(a, b));
   }
-  // The closed corner of node's triangle at w holds direction d.
-  bool corner_holds(std::int32_t node, std::int32_t w, V d) const {
-    const auto& tr = T(node);
-    const int c = corner(tr, w);
-    const Point pw = P(w), b = P(tr.v[static_cast<std::size_t>((c + 1) % 3)]),
-                cc = P(tr.v[static_cast<std::size_t>((c + 2) % 3)]);
-    return cross(vec(pw, b), d) >= 0 && cross(d, vec(pw, cc)) >= 0;
+  template <class A, class B>
+  static int sdot(A a, B b) {
+    return G::sgn(G::dot(G::ev(a), G::ev(b)));
   }
-  // The lifted triangles of w's free fan that holds `node` (a triangle with corner w).
-  std::vector<std::int32_t> fan(std::int32_t node, std::int32_t w) {
-    std::vector<std::int32_t> out{node};
-    for (int way = 0; way < 2; ++way) {
-      std::int32_t cur = node;
-      for (std::size_t guard = 0; guard <= t.triangles().size(); ++guard) {
-        const int c = corner(T(cur), w);
-        // way 0: clockwise, across edge w -> next; way 1: counter-clockwise, across prev -> w
-        const int e = way == 0 ? c : (c + 2) % 3;
-        const std::int32_t nb = cover.move(cur, e);
-        if (nb < 0) break;
-        cur = nb;
-        out.push_back(cur);
-      }
+  static Q norm(Dir d) { return G::num(G::dot(G::ev(d), G::ev(d))); }
+
+  // Angles measured counter-clockwise from `from` (an integer vector), in [0, 2 pi): is
+  // angle(u) <= angle(v), for a step u and an integer vector v?
+  static int half(V from, Dir u) {
+    const int c = scr(from, u);
+    return (c > 0 || (c == 0 && sdot(from, u) > 0)) ? 0 : 1;
+  }
+  static int half(V from, V u) {
+    const int c = sgn(cross(from, u));
+    return (c > 0 || (c == 0 && dot(from, u) > 0)) ? 0 : 1;
+  }
+  static bool angle_le(V from, Dir u, V v) {
+    const int hu = half(from, u), hv = half(from, v);
+    if (hu != hv) return hu < hv;
+    return scr(u, v) >= 0;
+  }
+
+  // A ray's passage through one lifted triangle: its parameters there (point = start + lambda d).
+  struct Step {
+    std::int32_t node;
+    Q in, out;
+  };
+  // A vertex a ray reaches (passing it or stopping there), from the lifted triangle `node`.
+  struct Pass {
+    std::int32_t vertex, node;
+    Q lam;
+  };
+  struct Ray {
+    std::vector<Step> steps;
+    std::vector<Pass> passes;
+    Q end;  // where it stops
+  };
+
+  // A frontier segment: the part of a maximal ray beyond the frontier's corner.
+  struct Seg {
+    RP start;  // the corner
+    std::int32_t node = 0;  // a lifted triangle holding start
+    Dir dir;
+    Q len;  // it ends at start + len * dir (len may be 0)
+    std::vector<Step> chain;  // the lifted triangles from start to the end
+    int qside = 0;  // +1: the component holding q lies left of dir, -1: right
+    RP origin;  // where the link along this segment's line starts
+    std::int32_t parent = -1;  // the segment origin lies on (-1: origin is p)
+  };
+
+  // A sweep's piece: rays in direction d with offsets [lo, hi] through a lifted triangle (chain:
+  // the rays start on the segment inside this triangle, so only its d side is swept).
+  struct Piece {
+    std::int32_t node;
+    Q lo, hi;
+    bool chain;
+    std::int32_t from = -1;  // the lifted triangle it was reached from
+  };
+  struct Sweep {
+    std::size_t seg;
+    Dir d;
+    std::vector<Piece> pieces;
+    std::unordered_multimap<std::int32_t, std::size_t> by_node;
+  };
+
+  // A piece of alpha inside a lifted triangle (params: segment index + fraction).
+  struct ASeg {
+    RP a, b;
+    Q pa, pb;
+  };
+
+  struct Work {
+    const geom::FreeSpaceTriangulation& t;
+    Cover& cover;
+    std::size_t pieces = 0;
+    std::size_t piece_limit;
+
+    Point P(std::int32_t v) const { return t.vertices()[static_cast<std::size_t>(v)]; }
+    const geom::FreeTriangle& T(std::int32_t node) const {
+      return t.triangles()[static_cast<std::size_t>(cover.tri(node))];
     }
-    return out;
-  }
-  // The fan's sector: counter-clockwise from `start` to `end`, both directions of its constrained
-  // boundary edges.
-  std::pair<V, V> sector(std::int32_t node, std::int32_t w) {
-    V start{}, end{};
-    for (int way = 0; way < 2; ++way) {
-      std::int32_t cur = node;
-      for (std::size_t guard = 0; guard <= t.triangles().size(); ++guard) {
-        const auto& tr = T(cur);
-        const int c = corner(tr, w);
-        const int e = way == 0 ? c : (c + 2) % 3;
-        const std::int32_t nb = cover.move(cur, e);
-        if (nb < 0) {
-          const Point pw = P(w);
-          if (way == 0) start = vec(pw, P(tr.v[static_cast<std::size_t>((c + 1) % 3)]));
-          else end = vec(pw, P(tr.v[static_cast<std::size_t>((c + 2) % 3)]));
-          break;
-        }
-        cur = nb;
-      }
-    }
-    return {start, end};
-  }
-  // Walking back along a ray in direction d through w, with q's side `side` (+1: left of d):
-  // blockage material lies just behind w on that side, i.e. -d turned a little towards that side
-  // is not in the free fan of w that holds `node`.
-  bool material_behind(std::int32_t node, std::int32_t w, Point d, int side) {
-    const auto [s, e] = sector(node, w);
-    const V b = vec(neg(d));
-    if (!angle_le(s, b, e)) return true;
-    // left of d is right of -d: turning -d clockwise (side +1) must not leave past the start
-    auto same = [](V x, V y) { return cross(x, y) == 0 && dot(x, y) > 0; };
-    return side > 0 ? same(b, s) : same(b, e);
-  }
-  // A lifted triangle of w's fan (the one holding `node`) whose closed corner holds d; -1 if none.
-  std::int32_t fan_toward(std::int32_t node, std::int32_t w, Point d) {
-    for (std::int32_t n : fan(node, w))
-      if (corner_holds(n, w, vec(d))) return n;
-    return -1;
-  }
-
-  // The ray from a (in the closed triangle of `node`) in direction d, until it would leave free
-  // space or pass between blockages that touch, or until lambda = *limit.
-  Ray walk(const RPoint& a, std::int32_t node, Point d, const Q* limit) {
-    Ray out;
-    std::int32_t cur = node;
-    Q lam = 0;
-    const V vd = vec(d);
-    for (std::size_t guard = 0;; ++guard) {
-      if (guard > 8 * t.triangles().size() + 64) throw std::logic_error("CMinLinker: a ray walk did not end");
-      const auto& tr = T(cur);
-      std::optional<Q> best;
-      std::array<std::optional<Q>, 3> li;
-      for (int i = 0; i < 3; ++i) {
-        const Point u = P(tr.v[static_cast<std::size_t>(i)]), w = P(tr.v[static_cast<std::size_t>((i + 1) % 3)]);
-        const V e = vec(u, w);
-        const i128 c = cross(vd, e);
-        if (c <= 0) continue;  // d does not leave through this edge
-        // a + lambda d on the edge's line: lambda = cross(u - a, e) / cross(d, e)
-        li[static_cast<std::size_t>(i)] =
-            qcross(Q(u.x) - a.x, Q(u.y) - a.y, Q(e.x), Q(e.y)) / Q(static_cast<i64>(c));
-        if (!best || *li[static_cast<std::size_t>(i)] < *best) best = li[static_cast<std::size_t>(i)];
-      }
-      Q x = *best;
-      if (x < lam) x = lam;  // (only on the triangle's boundary, where both are equal)
-      if (limit && x >= *limit) {
-        out.steps.push_back({cur, lam, *limit});
-        out.end = *limit;
-        if (x == *limit) {  // a vertex just at the limit is reached too
-          const RPoint X = add(a, x, d);
-          for (std::int32_t v : tr.v)
-            if (equal(X, P(v))) out.passes.push_back({v, cur, x});
-        }
-        return out;
-      }
-      out.steps.push_back({cur, lam, x});
-      const RPoint X = add(a, x, d);
-      int vi = -1;
+    static int corner(const geom::FreeTriangle& tr, std::int32_t w) {
       for (int i = 0; i < 3; ++i)
-        if (equal(X, P(tr.v[static_cast<std::size_t>(i)]))) vi = i;
-      if (vi < 0) {
-        int e = -1;
+        if (tr.v[static_cast<std::size_t>(i)] == w) return i;
+      return -1;
+    }
+    // The closed corner of node's triangle at w holds direction d.
+    bool corner_holds(std::int32_t node, std::int32_t w, Dir d) const {
+      const auto& tr = T(node);
+      const int c = corner(tr, w);
+      const Point pw = P(w), b = P(tr.v[static_cast<std::size_t>((c + 1) % 3)]),
+                  cc = P(tr.v[static_cast<std::size_t>((c + 2) % 3)]);
+      return scr(vec(pw, b), d) >= 0 && scr(d, vec(pw, cc)) >= 0;
+    }
+    // The lifted triangles of w's free fan that holds `node` (a triangle with corner w).
+    std::vector<std::int32_t> fan(std::int32_t node, std::int32_t w) {
+      std::vector<std::int32_t> out{node};
+      for (int way = 0; way < 2; ++way) {
+        std::int32_t cur = node;
+        for (std::size_t guard = 0; guard <= t.triangles().size(); ++guard) {
+          const int c = corner(T(cur), w);
+          // way 0: clockwise, across edge w -> next; way 1: counter-clockwise, across prev -> w
+          const int e = way == 0 ? c : (c + 2) % 3;
+          const std::int32_t nb = cover.move(cur, e);
+          if (nb < 0) break;
+          cur = nb;
+          out.push_back(cur);
+        }
+      }
+      return out;
+    }
+    // The fan's sector: counter-clockwise from `start` to `end`, both directions of its constrained
+    // boundary edges.
+    std::pair<V, V> sector(std::int32_t node, std::int32_t w) {
+      V start{}, end{};
+      for (int way = 0; way < 2; ++way) {
+        std::int32_t cur = node;
+        for (std::size_t guard = 0; guard <= t.triangles().size(); ++guard) {
+          const auto& tr = T(cur);
+          const int c = corner(tr, w);
+          const int e = way == 0 ? c : (c + 2) % 3;
+          const std::int32_t nb = cover.move(cur, e);
+          if (nb < 0) {
+            const Point pw = P(w);
+            if (way == 0) start = vec(pw, P(tr.v[static_cast<std::size_t>((c + 1) % 3)]));
+            else end = vec(pw, P(tr.v[static_cast<std::size_t>((c + 2) % 3)]));
+            break;
+          }
+          cur = nb;
+        }
+      }
+      return {start, end};
+    }
+    // Walking back along a ray in direction d through w, with q's side `side` (+1: left of d):
+    // blockage material lies just behind w on that side, i.e. -d turned a little towards that side
+    // is not in the free fan of w that holds `node`.
+    bool material_behind(std::int32_t node, std::int32_t w, Dir d, int side) {
+      const auto [s, e] = sector(node, w);
+      const Dir b = G::neg(d);
+      if (!angle_le(s, b, e)) return true;
+      // left of d is right of -d: turning -d clockwise (side +1) must not leave past the start
+      auto same = [](Dir x, V y) { return scr(x, y) == 0 && sdot(x, y) > 0; };
+      return side > 0 ? same(b, s) : same(b, e);
+    }
+    // A lifted triangle of w's fan (the one holding `node`) whose closed corner holds d; -1 if none.
+    std::int32_t fan_toward(std::int32_t node, std::int32_t w, Dir d) {
+      for (std::int32_t n : fan(node, w))
+        if (corner_holds(n, w, d)) return n;
+      return -1;
+    }
+
+    // The ray from a (in the closed triangle of `node`) in direction d, until it would leave free
+    // space or pass between blockages that touch, or until lambda = *limit.
+    Ray walk(const RP& a, std::int32_t node, Dir d, const Q* limit) {
+      Ray out;
+      std::int32_t cur = node;
+      Q lam = num(0);
+      for (std::size_t guard = 0;; ++guard) {
+        if (guard > 8 * t.triangles().size() + 64) throw std::logic_error("CMinLinker: a ray walk did not end");
+        const auto& tr = T(cur);
+        std::optional<Q> best;
+        std::array<std::optional<Q>, 3> li;
+        for (int i = 0; i < 3; ++i) {
+          const Point u = P(tr.v[static_cast<std::size_t>(i)]), w = P(tr.v[static_cast<std::size_t>((i + 1) % 3)]);
+          const V e = vec(u, w);
+          const Ex c = cr(d, e);
+          if (G::sgn(c) <= 0) continue;  // d does not leave through this edge
+          // a + lambda d on the edge's line: lambda = cross(u - a, e) / cross(d, e)
+          li[static_cast<std::size_t>(i)] =
+              qcross(num(u.x) - a.x, num(u.y) - a.y, num(e.x), num(e.y)) / G::num(c);
+          if (!best || *li[static_cast<std::size_t>(i)] < *best) best = li[static_cast<std::size_t>(i)];
+        }
+        Q x = *best;
+        if (x < lam) x = lam;  // (only on the triangle's boundary, where both are equal)
+        if (limit && x >= *limit) {
+          out.steps.push_back({cur, lam, *limit});
+          out.end = *limit;
+          if (x == *limit) {  // a vertex just at the limit is reached too
+            const RP X = add(a, x, d);
+            for (std::int32_t v : tr.v)
+              if (equal(X, P(v))) out.passes.push_back({v, cur, x});
+          }
+          return out;
+        }
+        out.steps.push_back({cur, lam, x});
+        const RP X = add(a, x, d);
+        int vi = -1;
         for (int i = 0; i < 3; ++i)
-          if (li[static_cast<std::size_t>(i)] && *li[static_cast<std::size_t>(i)] == x) e = i;
-        const std::int32_t nb = e < 0 ? -1 : cover.move(cur, e);
-        if (nb < 0) {
+          if (equal(X, P(tr.v[static_cast<std::size_t>(i)]))) vi = i;
+        if (vi < 0) {
+          int e = -1;
+          for (int i = 0; i < 3; ++i)
+            if (li[static_cast<std::size_t>(i)] && *li[static_cast<std::size_t>(i)] == x) e = i;
+          const std::int32_t nb = e < 0 ? -1 : cover.move(cur, e);
+          if (nb < 0) {
+            out.end = x;
+            return out;
+          }
+          cur = nb;
+          lam = x;
+          continue;
+        }
+        const std::int32_t w = tr.v[static_cast<std::size_t>(vi)];
+        out.passes.push_back({w, cur, x});
+        const std::int32_t f = fan_toward(cur, w, d);
+        if (f < 0) {
           out.end = x;
           return out;
         }
-        cur = nb;
+        cur = f;
         lam = x;
-        continue;
       }
-      const std::int32_t w = tr.v[static_cast<std::size_t>(vi)];
-      out.passes.push_back({w, cur, x});
-      const std::int32_t f = fan_toward(cur, w, d);
-      if (f < 0) {
-        out.end = x;
-        return out;
-      }
-      cur = f;
-      lam = x;
     }
+
+    // Adds every other lifted triangle that holds a piece: the one across an edge the piece runs
+    // along, and the fans of its ends that are vertices (the end alone).
+    void spread(std::vector<std::pair<std::int32_t, ASeg>>& held) {
+      const std::size_t n = held.size();
+      for (std::size_t k = 0; k < n; ++k) {
+        const std::int32_t node = held[k].first;
+        const ASeg sg = held[k].second;
+        const auto& tr = T(node);
+        auto on_line = [&](const RP& x, Point u, Point w) {
+          return qcross(num(w.x - u.x), num(w.y - u.y), x.x - num(u.x), x.y - num(u.y)).sign() == 0;
+        };
+        for (int i = 0; i < 3; ++i) {
+          const Point u = P(tr.v[static_cast<std::size_t>(i)]), w = P(tr.v[static_cast<std::size_t>((i + 1) % 3)]);
+          if (!on_line(sg.a, u, w) || !on_line(sg.b, u, w)) continue;
+          const std::int32_t nb = cover.move(node, i);
+          if (nb >= 0) held.push_back({nb, sg});
+        }
+        for (int end = 0; end < 2; ++end) {
+          const RP& x = end == 0 ? sg.a : sg.b;
+          const Q& px = end == 0 ? sg.pa : sg.pb;
+          for (std::int32_t v : tr.v)
+            if (equal(x, P(v)))
+              for (std::int32_t f : fan(node, v))
+                if (f != node) held.push_back({f, {x, x, px, px}});
+        }
+      }
+    }
+    // The pieces of a ray from `start` in direction d (as walk() returned it) in every lifted
+    // triangle that holds them (parameters: lambda along the ray).
+    std::vector<std::pair<std::int32_t, ASeg>> held(const Ray& r, const RP& start, Dir d) {
+      std::vector<std::pair<std::int32_t, ASeg>> out;
+      for (const Step& st : r.steps) out.push_back({st.node, {add(start, st.in, d), add(start, st.out, d), st.in, st.out}});
+      spread(out);
+      return out;
+    }
+
+    Seg make_seg(const RP& start, std::int32_t node, Dir dir, int qside, const RP& origin,
+                 std::int32_t parent) {
+      Seg s;
+      s.start = start;
+      s.node = node;
+      s.dir = dir;
+      Ray r = walk(start, node, dir, nullptr);
+      s.len = r.end;
+      s.chain = std::move(r.steps);
+      s.qside = qside;
+      s.origin = origin;
+      s.parent = parent;
+      return s;
+    }
+
+    // The rays in direction d from the points of s (the d side of s): a breadth-first search of
+    // pieces across the edges the rays leave through.
+    Sweep sweep(const Seg& s, std::size_t seg_index, Dir d) {
+      Sweep sw;
+      sw.seg = seg_index;
+      sw.d = d;
+      const Q o0 = off(d, s.start);
+      const Q cdu = G::num(cr(d, s.dir));
+      for (const Step& st : s.chain) {
+        Q a = o0 + st.in * cdu, b = o0 + st.out * cdu;
+        if (b < a) std::swap(a, b);
+        sw.pieces.push_back({st.node, std::move(a), std::move(b), true});
+      }
+      for (std::size_t k = 0; k < sw.pieces.size(); ++k) {
+        if (++pieces > piece_limit) throw std::logic_error("CMinLinker: a sweep passed its piece limit");
+        const std::int32_t node = sw.pieces[k].node;
+        const auto& tr = T(node);
+        for (int i = 0; i < 3; ++i) {
+          const Point u = P(tr.v[static_cast<std::size_t>(i)]), w = P(tr.v[static_cast<std::size_t>((i + 1) % 3)]);
+          const int c = scr(d, vec(u, w));
+          if (c < 0) continue;
+          Q ou = G::num(off(d, u)), ow = G::num(off(d, w));
+          if (ow < ou) std::swap(ou, ow);
+          const Piece& pc = sw.pieces[k];
+          if (pc.hi < ou || pc.lo > ow) continue;
+          // A ray along the edge (c == 0) lies in the triangle across it as well: it floods round
+          // the edge's far vertex from both sides (one of them may be the way on).
+          const std::int32_t nb = cover.move(node, i);
+          if (nb < 0 || (c == 0 && nb == pc.from)) continue;
+          Q lo = pc.lo < ou ? ou : pc.lo, hi = pc.hi > ow ? ow : pc.hi;
+          sw.pieces.push_back({nb, std::move(lo), std::move(hi), false, node});
+        }
+      }
+      for (std::size_t k = 0; k < sw.pieces.size(); ++k) sw.by_node.emplace(sw.pieces[k].node, k);
+      return sw;
+    }
+
+    // Constraints of a piece on a point a + lambda (b - a) (lambda's interval is narrowed).
+    static void clip(const Piece& pc, const Seg& s, Dir d, const RP& a, const RP& b, Interval<Q>& iv) {
+      const Q oa = off(d, a), ob = off(d, b);
+      iv.at_least_zero(oa - pc.lo, ob - oa);
+      iv.at_least_zero(pc.hi - oa, oa - ob);
+      if (!pc.chain) return;
+      // the swept side of the segment's line (or, for a point, ahead of it along d)
+      if (s.len.sign() == 0) {
+        const Q f0 = (a.x - s.start.x) * G::nx(d) + (a.y - s.start.y) * G::ny(d);
+        const Q f1 = (b.x - a.x) * G::nx(d) + (b.y - a.y) * G::ny(d);
+        iv.at_least_zero(f0, f1);
+      } else {
+        const int sg = scr(s.dir, d);
+        const Q f0 = qcross(G::nx(s.dir), G::ny(s.dir), a.x - s.start.x, a.y - s.start.y);
+        const Q f1 = qcross(G::nx(s.dir), G::ny(s.dir), b.x - a.x, b.y - a.y);
+        if (sg > 0) iv.at_least_zero(f0, f1);
+        else iv.at_least_zero(-f0, -f1);
+      }
+    }
+  };
+
+  // The point of segment s whose ray in direction d has offset o.
+  static RP point_at_offset(const Seg& s, Dir d, const Q& o) {
+    if (s.len.sign() == 0) return s.start;
+    const Q lam = (o - off(d, s.start)) / G::num(cr(d, s.dir));
+    return add(s.start, lam, s.dir);
   }
 
-  // Adds every other lifted triangle that holds a piece: the one across an edge the piece runs
-  // along, and the fans of its ends that are vertices (the end alone).
-  void spread(std::vector<std::pair<std::int32_t, ASeg>>& held) {
-    const std::size_t n = held.size();
-    for (std::size_t k = 0; k < n; ++k) {
-      const std::int32_t node = held[k].first;
-      const ASeg sg = held[k].second;
-      const auto& tr = T(node);
-      auto on_line = [&](const RPoint& x, Point u, Point w) {
-        return sgn(qcross(Q(w.x) - u.x, Q(w.y) - u.y, x.x - u.x, x.y - u.y)) == 0;
-      };
-      for (int i = 0; i < 3; ++i) {
-        const Point u = P(tr.v[static_cast<std::size_t>(i)]), w = P(tr.v[static_cast<std::size_t>((i + 1) % 3)]);
-        if (!on_line(sg.a, u, w) || !on_line(sg.b, u, w)) continue;
-        const std::int32_t nb = cover.move(node, i);
-        if (nb >= 0) held.push_back({nb, sg});
-      }
-      for (int end = 0; end < 2; ++end) {
-        const RPoint& x = end == 0 ? sg.a : sg.b;
-        const Q& px = end == 0 ? sg.pa : sg.pb;
-        for (std::int32_t v : tr.v)
-          if (equal(x, P(v)))
-            for (std::int32_t f : fan(node, v))
-              if (f != node) held.push_back({f, {x, x, px, px}});
-      }
-    }
-  }
-  // The pieces of a ray from `start` in direction d (as walk() returned it) in every lifted
-  // triangle that holds them (parameters: lambda along the ray).
-  std::vector<std::pair<std::int32_t, ASeg>> held(const Ray& r, const RPoint& start, Point d) {
-    std::vector<std::pair<std::int32_t, ASeg>> out;
-    for (const Step& st : r.steps) out.push_back({st.node, {add(start, st.in, d), add(start, st.out, d), st.in, st.out}});
-    spread(out);
-    return out;
+  // The segment of alpha (0 .. m - 1) that leaves the point at `param` (segment index + fraction).
+  static std::size_t alpha_segment(const Q& param, std::size_t m) {
+    const auto j = static_cast<std::size_t>(floor_of(param));
+    return j >= m ? m - 1 : j;
   }
 
-  Seg make_seg(const RPoint& start, std::int32_t node, Point dir, int qside, const RPoint& origin,
-               std::int32_t parent) {
-    Seg s;
-    s.start = start;
-    s.node = node;
-    s.dir = dir;
-    Ray r = walk(start, node, dir, nullptr);
-    s.len = r.end;
-    s.chain = std::move(r.steps);
-    s.qside = qside;
-    s.origin = origin;
-    s.parent = parent;
-    return s;
-  }
-
-  // The rays in direction d from the points of s (the d side of s): a breadth-first search of
-  // pieces across the edges the rays leave through.
-  Sweep sweep(const Seg& s, std::size_t seg_index, Point d) {
-    Sweep sw;
-    sw.seg = seg_index;
-    sw.d = d;
-    const Q o0 = off(d, s.start);
-    const i64 cdu = off(d, s.dir);  // cross(d, dir)
-    for (const Step& st : s.chain) {
-      Q a = o0 + st.in * cdu, b = o0 + st.out * cdu;
-      if (b < a) std::swap(a, b);
-      sw.pieces.push_back({st.node, std::move(a), std::move(b), true});
+  // The first point of segment [c, e] on the closed segment [l, r]; its parameter along [c, e].
+  static std::optional<Q> first_on(const RP& c, Point e, Point l, Point r) {
+    const Q dx = num(e.x) - c.x, dy = num(e.y) - c.y;
+    const Q ex = num(i64{r.x} - l.x), ey = num(i64{r.y} - l.y);
+    const Q lx = num(l.x) - c.x, ly = num(l.y) - c.y;
+    const Q den = qcross(dx, dy, ex, ey);
+    const Q zero = num(0), one = num(1);
+    if (den.sign() != 0) {
+      const Q t = qcross(lx, ly, ex, ey) / den, s = qcross(lx, ly, dx, dy) / den;
+      if (t < zero || t > one || s < zero || s > one) return std::nullopt;
+      return t;
     }
-    const V vd = vec(d);
-    for (std::size_t k = 0; k < sw.pieces.size(); ++k) {
-      if (++pieces > piece_limit) throw std::logic_error("CMinLinker: a sweep passed its piece limit");
-      const std::int32_t node = sw.pieces[k].node;
-      const auto& tr = T(node);
-      for (int i = 0; i < 3; ++i) {
-        const Point u = P(tr.v[static_cast<std::size_t>(i)]), w = P(tr.v[static_cast<std::size_t>((i + 1) % 3)]);
-        const i128 c = cross(vd, vec(u, w));
-        if (c < 0) continue;
-        i64 ou = off(d, u), ow = off(d, w);
-        if (ow < ou) std::swap(ou, ow);
-        const Piece& pc = sw.pieces[k];
-        if (pc.hi < ou || pc.lo > ow) continue;
-        // A ray along the edge (c == 0) lies in the triangle across it as well: it floods round
-        // the edge's far vertex from both sides (one of them may be the way on).
-        const std::int32_t nb = cover.move(node, i);
-        if (nb < 0 || (c == 0 && nb == pc.from)) continue;
-        Q lo = pc.lo < ou ? Q(ou) : pc.lo, hi = pc.hi > ow ? Q(ow) : pc.hi;
-        sw.pieces.push_back({nb, std::move(lo), std::move(hi), false, node});
+    if (qcross(lx, ly, dx, dy).sign() != 0 || qcross(lx, ly, ex, ey).sign() != 0) {
+      // parallel lines apart, or c off the portal's line
+      if (dx.sign() == 0 && dy.sign() == 0) {
+        // c alone: on the portal?
+        if (qcross(lx, ly, ex, ey).sign() != 0) return std::nullopt;
+      } else {
+        return std::nullopt;
       }
     }
-    for (std::size_t k = 0; k < sw.pieces.size(); ++k) sw.by_node.emplace(sw.pieces[k].node, k);
-    return sw;
+    // collinear (or c a point on the portal's line): the smallest t in [0, 1] on [l, r]
+    const Q dd = dx * dx + dy * dy;
+    auto within = [&](const Q& px, const Q& py) {  // point on the portal's segment
+      const Q t = (px - num(l.x)) * ex + (py - num(l.y)) * ey, len = ex * ex + ey * ey;
+      return t.sign() >= 0 && t <= len;
+    };
+    if (within(c.x, c.y)) return zero;
+    if (dd.sign() == 0) return std::nullopt;
+    std::optional<Q> best;
+    for (Point x : {l, r}) {
+      const Q t = ((num(x.x) - c.x) * dx + (num(x.y) - c.y) * dy) / dd;
+      if (t >= zero && t <= one && (!best || t < *best)) best = t;
+    }
+    return best;
   }
 
-  // Constraints of a piece on a point a + lambda (b - a) (lambda's interval is narrowed).
-  static void clip(const Piece& pc, const Seg& s, Point d, const RPoint& a, const RPoint& b, Interval& iv) {
-    const Q oa = off(d, a), ob = off(d, b);
-    iv.at_least_zero(oa - pc.lo, ob - oa);
-    iv.at_least_zero(pc.hi - oa, oa - ob);
-    if (!pc.chain) return;
-    // the swept side of the segment's line (or, for a point, ahead of it along d)
-    if (sgn(s.len) == 0) {
-      const Q f0 = (a.x - s.start.x) * d.x + (a.y - s.start.y) * d.y;
-      const Q f1 = (b.x - a.x) * d.x + (b.y - a.y) * d.y;
-      iv.at_least_zero(f0, f1);
-    } else {
-      const int sg = sgn(cross(vec(s.dir), vec(d)));
-      const Q f0 = qcross(Q(s.dir.x), Q(s.dir.y), a.x - s.start.x, a.y - s.start.y) * sg;
-      const Q f1 = qcross(Q(s.dir.x), Q(s.dir.y), b.x - a.x, b.y - a.y) * sg;
-      iv.at_least_zero(f0, f1);
-    }
-  }
+  static CMinLinkPathOf<RP> path(const geom::FreeSpaceTriangulation& tri, std::span<const Point> taut,
+                                 const typename G::Set& set, std::size_t max_links);
+  static CMinLinkLoopOf<RP> loop(const geom::FreeSpaceTriangulation& tri, std::span<const Point> taut_loop,
+                                 const typename G::Set& set, const MinLinkLoop* any_angle, std::size_t max_starts);
 };
 
-// The point of segment s whose ray in direction d has offset o.
-RPoint point_at_offset(const Seg& s, Point d, const Q& o) {
-  if (sgn(s.len) == 0) return s.start;
-  const Q lam = (o - off(d, s.start)) / Q(off(d, s.dir));
-  return add(s.start, lam, s.dir);
-}
-
-// The segment of alpha (0 .. m - 1) that leaves the point at `param` (segment index + fraction).
-std::size_t alpha_segment(const Q& param, std::size_t m) {
-  using boost::multiprecision::denominator;
-  using boost::multiprecision::numerator;
-  const auto fl = numerator(param) / denominator(param);
-  const auto j = static_cast<std::size_t>(fl.convert_to<long long>());
-  return j >= m ? m - 1 : j;
-}
-
-// The first point of segment [c, e] on the closed segment [l, r]; its parameter along [c, e].
-std::optional<Q> first_on(const RPoint& c, Point e, Point l, Point r) {
-  const Q dx = Q(e.x) - c.x, dy = Q(e.y) - c.y;
-  const Q ex = Q(r.x) - l.x, ey = Q(r.y) - l.y;
-  const Q lx = Q(l.x) - c.x, ly = Q(l.y) - c.y;
-  const Q den = qcross(dx, dy, ex, ey);
-  if (sgn(den) != 0) {
-    const Q t = qcross(lx, ly, ex, ey) / den, s = qcross(lx, ly, dx, dy) / den;
-    if (t < 0 || t > 1 || s < 0 || s > 1) return std::nullopt;
-    return t;
-  }
-  if (sgn(qcross(lx, ly, dx, dy)) != 0 || sgn(qcross(lx, ly, ex, ey)) != 0) {
-    // parallel lines apart, or c off the portal's line
-    if (sgn(dx) == 0 && sgn(dy) == 0) {
-      // c alone: on the portal?
-      if (sgn(qcross(lx, ly, ex, ey)) != 0) return std::nullopt;
-    } else {
-      return std::nullopt;
-    }
-  }
-  // collinear (or c a point on the portal's line): the smallest t in [0, 1] on [l, r]
-  const Q dd = dx * dx + dy * dy;
-  auto within = [&](const Q& px, const Q& py) {  // point on the portal's segment
-    const Q t = (px - Q(l.x)) * ex + (py - Q(l.y)) * ey, len = ex * ex + ey * ey;
-    return t >= 0 && t <= len;
-  };
-  if (within(c.x, c.y)) return Q(0);
-  if (sgn(dd) == 0) return std::nullopt;
-  std::optional<Q> best;
-  for (Point x : {l, r}) {
-    const Q t = ((Q(x.x) - c.x) * dx + (Q(x.y) - c.y) * dy) / dd;
-    if (t >= 0 && t <= 1 && (!best || t < *best)) best = t;
-  }
-  return best;
-}
-
-}  // namespace
-
-CMinLinker::CMinLinker(const geom::FreeSpaceTriangulation& t) : t_(&t) {}
-
-CMinLinkPath CMinLinker::path(std::span<const Point> taut, const geom::LatticeDirections& set,
-                              std::size_t max_links) const {
-  CMinLinkPath result;
+template <class G>
+CMinLinkPathOf<typename G::P> Impl<G>::path(const geom::FreeSpaceTriangulation& tri, std::span<const Point> taut,
+                                          const typename G::Set& set, std::size_t max_links) {
+  CMinLinkPathOf<RP> result;
   if (taut.empty()) throw std::invalid_argument("CMinLinker: an empty path");
   std::vector<Point> alpha;  // without repeated points
   for (Point x : taut)
@@ -501,20 +605,20 @@ CMinLinkPath CMinLinker::path(std::span<const Point> taut, const geom::LatticeDi
     return result;
   }
   const std::size_t m = alpha.size() - 1;  // alpha's segments; params run from 0 to m
-  const Tightener tight(*t_);
+  const Tightener tight(tri);
   Sleeve sleeve;
   if (tight.lift(alpha, sleeve) != TightenStatus::Ok) throw std::invalid_argument("CMinLinker: the path does not lift");
-  Cover cover(*t_, sleeve.triangles);
+  Cover cover(tri, sleeve.triangles);
   const std::int32_t K = cover.size();
-  Work wk{*t_, cover, 0, 64 * t_->triangles().size() + 4096};
+  Work wk{tri, cover, 0, 64 * tri.triangles().size() + 4096};
 
   // Ends: some direction must leave p's free wedge and reach q's.
   {
-    const Q one(1);
+    const Q one = num(1);
     bool leaves = false, enters = false;
-    for (Point d : set.steps()) {
-      leaves = leaves || sgn(wk.walk(rp(p), 0, d, &one).end) > 0;
-      enters = enters || sgn(wk.walk(rp(q), K - 1, neg(d), &one).end) > 0;
+    for (const Dir& d : set.steps()) {
+      leaves = leaves || wk.walk(rp(p), 0, d, &one).end.sign() > 0;
+      enters = enters || wk.walk(rp(q), K - 1, G::neg(d), &one).end.sign() > 0;
     }
     if (!leaves || !enters) {
       result.why = !leaves ? "no direction of " + set.name() + " leaves the free wedge at the first end"
@@ -530,24 +634,25 @@ CMinLinkPath CMinLinker::path(std::span<const Point> taut, const geom::LatticeDi
   // Alpha's pieces in the lifted triangles that hold them.
   std::unordered_map<std::int32_t, std::vector<ASeg>> bearing;
   {
-    std::vector<RPoint> cp(static_cast<std::size_t>(K) + 1);
+    std::vector<RP> cp(static_cast<std::size_t>(K) + 1);
     std::vector<Q> cpar(static_cast<std::size_t>(K) + 1);
     cp[0] = rp(p);
-    cpar[0] = 0;
+    cpar[0] = num(0);
     cp[static_cast<std::size_t>(K)] = rp(q);
-    cpar[static_cast<std::size_t>(K)] = Q(static_cast<i64>(m));
+    cpar[static_cast<std::size_t>(K)] = num(static_cast<i64>(m));
     std::size_t j = 0;
-    RPoint cur = rp(p);
-    auto param = [&](const RPoint& x, std::size_t seg) {
+    RP cur = rp(p);
+    auto param = [&](const RP& x, std::size_t seg) {
       const V e = vec(alpha[seg], alpha[seg + 1]);
-      const Q t = ((x.x - alpha[seg].x) * e.x + (x.y - alpha[seg].y) * e.y) / Q(static_cast<i64>(dot(e, e)));
-      return Q(static_cast<i64>(seg)) + t;
+      const Q t = ((x.x - num(alpha[seg].x)) * num(e.x) + (x.y - num(alpha[seg].y)) * num(e.y)) /
+                  num(static_cast<i64>(dot(e, e)));
+      return num(static_cast<i64>(seg)) + t;
     };
     for (std::int32_t k = 0; k + 1 < K; ++k) {
       const Portal& pt = sleeve.portals[static_cast<std::size_t>(k)];
       for (;;) {
         if (auto t = first_on(cur, alpha[j + 1], pt.left, pt.right)) {
-          cur = {cur.x + *t * (Q(alpha[j + 1].x) - cur.x), cur.y + *t * (Q(alpha[j + 1].y) - cur.y)};
+          cur = {cur.x + *t * (num(alpha[j + 1].x) - cur.x), cur.y + *t * (num(alpha[j + 1].y) - cur.y)};
           break;
         }
         if (equal(cur, alpha[j + 1]) && j + 1 < m) {
@@ -574,27 +679,27 @@ CMinLinkPath CMinLinker::path(std::span<const Point> taut, const geom::LatticeDi
   {
     const V d0 = vec(alpha[0], alpha[1]);
     if (set.along(d0.x, d0.y)) {
-      Point d{};
-      for (Point s : set.steps())
-        if (cross(vec(s), d0) == 0 && dot(vec(s), d0) > 0) d = s;
+      Dir d{};
+      for (const Dir& s : set.steps())
+        if (scr(s, d0) == 0 && sdot(s, d0) > 0) d = s;
       // the ray along alpha's first edge, beyond its first bend (the blockage there bounds it)
       const Ray r = wk.walk(rp(p), 0, d, nullptr);
-      const Q l1 = Q(static_cast<i64>(dot(d0, vec(d)) / dot(vec(d), vec(d))));
+      const Q l1 = G::num(G::dot(G::ev(d0), G::ev(d))) / norm(d);
       // the lifted triangle holding alpha[1] on that ray
       std::int32_t node = -1;
       for (const Step& st : r.steps)
         if (st.in <= l1 && l1 <= st.out) node = st.node;
       if (node < 0) throw std::logic_error("CMinLinker: the first edge is not on its ray");
-      const int side = sgn(cross(vec(d), vec(alpha[1], alpha[2])));
+      const int side = scr(d, vec(alpha[1], alpha[2]));
       segs.push_back(wk.make_seg(rp(alpha[1]), node, d, side, rp(p), -1));
       frontier = {0};
-      progress = 1;
+      progress = num(1);
     } else {
-      const auto [u, v] = set.cone_steps(set.cone(d0.x, d0.y));
+      const auto [u, v] = G::cone_steps(set, set.cone(d0.x, d0.y));
       segs.push_back(wk.make_seg(rp(p), 0, u, +1, rp(p), -1));
       segs.push_back(wk.make_seg(rp(p), 0, v, -1, rp(p), -1));
       frontier = {0, 1};
-      progress = 0;
+      progress = num(0);
     }
   }
 
@@ -603,15 +708,15 @@ CMinLinkPath CMinLinker::path(std::span<const Point> taut, const geom::LatticeDi
     // every sweep of the frontier into the component holding q
     std::vector<Sweep> sweeps;
     for (std::size_t f : frontier)
-      for (Point d : set.steps())
-        if (sgn(cross(vec(segs[f].dir), vec(d))) == segs[f].qside) sweeps.push_back(wk.sweep(segs[f], f, d));
+      for (const Dir& d : set.steps())
+        if (scr(segs[f].dir, d) == segs[f].qside) sweeps.push_back(wk.sweep(segs[f], f, d));
     result.sweeps += sweeps.size();
     // alpha's last point in their union
     struct Exit {
       Q param;
       std::size_t sweep = 0;
       std::int32_t node = -1;
-      RPoint at;
+      RP at;
     };
     std::optional<Exit> best;
     std::vector<Exit> tied;  // every sweep's exit at best's param
@@ -621,7 +726,7 @@ CMinLinkPath CMinLinker::path(std::span<const Point> taut, const geom::LatticeDi
         const auto it = bearing.find(pc.node);
         if (it == bearing.end()) continue;
         for (const ASeg& as : it->second) {
-          Interval iv{Q(0), Q(1)};
+          Interval<Q> iv{num(0), num(1)};
           Work::clip(pc, segs[sw.seg], sw.d, as.a, as.b, iv);
           if (iv.empty) continue;
           const Q par = as.pa + iv.hi * (as.pb - as.pa);
@@ -639,35 +744,37 @@ CMinLinkPath CMinLinker::path(std::span<const Point> taut, const geom::LatticeDi
       throw std::logic_error("CMinLinker: a link made no progress along the path");
     if (best->param > progress) stalls = 0;
     progress = best->param;
-    if (best->param != Q(static_cast<i64>(m))) {
+    const Q qm = num(static_cast<i64>(m));
+    if (best->param != qm) {
       // Several sweeps leave alpha at the same point: the ray nearest alpha's way on (on the side
       // alpha takes) bounds what is not yet reached there.
       const std::size_t ja = alpha_segment(best->param, m);
       const V a = vec(alpha[ja], alpha[ja + 1]);
       for (const Exit& ex : tied) {
-        const V dk = vec(sweeps[ex.sweep].d), db = vec(sweeps[best->sweep].d);
-        const int sk = sgn(cross(dk, a)), sb = sgn(cross(db, a));
-        if (sk == sb && sgn(cross(db, dk)) == sb) best = ex;
+        const Dir dk = sweeps[ex.sweep].d, db = sweeps[best->sweep].d;
+        const int sk = scr(dk, a), sb = scr(db, a);
+        if (sk == sb && scr(db, dk) == sb) best = ex;
       }
     }
     const Sweep& sw = sweeps[best->sweep];
-    const Point ds = sw.d;
+    const Dir ds = sw.d;
     const Seg& s0 = segs[sw.seg];
-    if (best->param == Q(static_cast<i64>(m))) {
+    if (best->param == qm) {
       // q is on a ray of this sweep: the last link; the others along the segments' lines
-      std::vector<RPoint> pts{rp(q), point_at_offset(s0, ds, off(ds, rp(q)))};
+      std::vector<RP> pts{rp(q), point_at_offset(s0, ds, off(ds, rp(q)))};
       for (std::int32_t i = static_cast<std::int32_t>(sw.seg); i >= 0; i = segs[static_cast<std::size_t>(i)].parent)
         pts.push_back(segs[static_cast<std::size_t>(i)].origin);
       std::reverse(pts.begin(), pts.end());
-      std::vector<RPoint> clean;
-      for (RPoint& x : pts)
+      std::vector<RP> clean;
+      for (RP& x : pts)
         if (clean.empty() || !(clean.back() == x)) clean.push_back(std::move(x));
       if (clean.size() != links + 2)
         throw std::logic_error("CMinLinker: the links read back are not " + std::to_string(links + 1));
       for (std::size_t i = 0; i + 1 < clean.size(); ++i) {
         const Q dx = clean[i + 1].x - clean[i].x, dy = clean[i + 1].y - clean[i].y;
         bool in_set = false;
-        for (Point d : set.steps()) in_set = in_set || (sgn(qcross(Q(d.x), Q(d.y), dx, dy)) == 0 && sgn(dx * d.x + dy * d.y) > 0);
+        for (const Dir& d : set.steps())
+          in_set = in_set || (qcross(G::nx(d), G::ny(d), dx, dy).sign() == 0 && (dx * G::nx(d) + dy * G::ny(d)).sign() > 0);
         if (!in_set) throw std::logic_error("CMinLinker: a link outside the direction set");
       }
       result.points = std::move(clean);
@@ -675,13 +782,13 @@ CMinLinkPath CMinLinker::path(std::span<const Point> taut, const geom::LatticeDi
       return result;
     }
     // alpha leaves the union at E on the ray s of sweep (ds, s0), into the side `side` of s
-    const RPoint E = best->at;
+    const RP E = best->at;
     const std::size_t j = alpha_segment(best->param, m);
-    const int side = sgn(cross(vec(ds), vec(alpha[j], alpha[j + 1])));
+    const int side = scr(ds, vec(alpha[j], alpha[j + 1]));
     if (side == 0) throw std::logic_error("CMinLinker: the path leaves a sweep along its ray");
-    const RPoint X = point_at_offset(s0, ds, off(ds, E));
-    const Q muX = ((E.x - X.x) * ds.x + (E.y - X.y) * ds.y) / Q(static_cast<i64>(dot(vec(ds), vec(ds))));
-    const Ray back = wk.walk(E, best->node, neg(ds), &muX);
+    const RP X = point_at_offset(s0, ds, off(ds, E));
+    const Q muX = ((E.x - X.x) * G::nx(ds) + (E.y - X.y) * G::ny(ds)) / norm(ds);
+    const Ray back = wk.walk(E, best->node, G::neg(ds), &muX);
     if (back.end < muX) throw std::logic_error("CMinLinker: a sweep's ray is blocked before its start");
     // Walking back along s from E, the frontier follows s as long as the points just off s on
     // q's side are free and not reached; the first place where that ends (mu: distance from E in
@@ -708,28 +815,28 @@ CMinLinkPath CMinLinker::path(std::span<const Point> taut, const geom::LatticeDi
         break;
       }
     for (std::int32_t v : wk.T(best->node).v)
-      if (equal(E, wk.P(v)) && wk.material_behind(best->node, v, ds, side)) nearer(Q(0), best->node);
-    const auto back_held = wk.held(back, E, neg(ds));
+      if (equal(E, wk.P(v)) && wk.material_behind(best->node, v, ds, side)) nearer(num(0), best->node);
+    const auto back_held = wk.held(back, E, G::neg(ds));
     std::optional<Q> mub;
     std::vector<std::size_t> at_mub;
     std::int32_t node_b = -1;
     for (std::size_t k = 0; k < sweeps.size(); ++k) {
       const Sweep& o = sweeps[k];
-      const i128 c = cross(vec(o.d), vec(ds));
+      const int c = scr(o.d, ds);
       // parallel rays: q's side in o's offsets (larger offsets lie left of o.d)
-      const int qs = c == 0 ? side * sgn(dot(vec(o.d), vec(ds))) : 0;
-      const Q oo = c == 0 ? off(o.d, E) : Q(0);
+      const int qs = c == 0 ? side * sdot(o.d, ds) : 0;
+      const Q oo = c == 0 ? off(o.d, E) : num(0);
       for (const auto& [node, sp] : back_held) {
         // y(mu) = E - mu ds: sp runs from y(sp.pa) to y(sp.pb)
         const auto range = o.by_node.equal_range(node);
         for (auto it = range.first; it != range.second; ++it) {
           const Piece& pc = o.pieces[it->second];
           if (c == 0 && !(pc.lo <= oo && oo <= pc.hi && (qs > 0 ? pc.hi > oo : pc.lo < oo))) continue;
-          Interval iv{Q(0), Q(1)};
+          Interval<Q> iv{num(0), num(1)};
           Work::clip(pc, segs[o.seg], o.d, sp.a, sp.b, iv);
           if (iv.empty) continue;
           const Q mu = sp.pa + iv.lo * (sp.pb - sp.pa);
-          if (c == 0 || sgn(cross(vec(ds), vec(o.d))) != side) {
+          if (c == 0 || scr(ds, o.d) != side) {
             nearer(mu, node);  // parallel rays, or rays coming from q's side: they cover it
           } else if (!mub || mu < *mub) {
             mub = mu;
@@ -744,15 +851,15 @@ CMinLinkPath CMinLinker::path(std::span<const Point> taut, const geom::LatticeDi
     // the ray t of the sweeps at mub (all going into q's side) that turns least from s
     std::optional<std::size_t> tk;
     for (std::size_t k : at_mub)
-      if (!tk || sgn(cross(vec(sweeps[*tk].d), vec(sweeps[k].d))) * side < 0) tk = k;
+      if (!tk || scr(sweeps[*tk].d, sweeps[k].d) * side < 0) tk = k;
     std::vector<std::size_t> next;
     if (mub && *mub <= *single) {
       {
-        const RPoint r = add(E, -*mub, ds);
+        const RP r = add(E, -*mub, ds);
         const Sweep& o = sweeps[*tk];
-        Seg t = wk.make_seg(r, node_b, o.d, sgn(cross(vec(o.d), vec(ds))),
+        Seg t = wk.make_seg(r, node_b, o.d, scr(o.d, ds),
                             point_at_offset(segs[o.seg], o.d, off(o.d, r)), static_cast<std::int32_t>(o.seg));
-        if (*mub < *single || sgn(t.len) > 0) {  // at a tie, only a ray going on cuts q's side
+        if (*mub < *single || t.len.sign() > 0) {  // at a tie, only a ray going on cuts q's side
           segs.push_back(wk.make_seg(r, node_b, ds, side, X, static_cast<std::int32_t>(sw.seg)));
           segs.push_back(std::move(t));
           next = {segs.size() - 2, segs.size() - 1};
@@ -760,7 +867,7 @@ CMinLinkPath CMinLinker::path(std::span<const Point> taut, const geom::LatticeDi
       }
     }
     if (next.empty()) {
-      const RPoint r = add(E, -*single, ds);
+      const RP r = add(E, -*single, ds);
       segs.push_back(wk.make_seg(r, node_single, ds, side, X, static_cast<std::int32_t>(sw.seg)));
       next = {segs.size() - 1};
     }
@@ -768,22 +875,24 @@ CMinLinkPath CMinLinker::path(std::span<const Point> taut, const geom::LatticeDi
   }
 }
 
-CMinLinkLoop CMinLinker::loop(std::span<const Point> taut_loop, const geom::LatticeDirections& set,
-                              const MinLinkLoop* any_angle, std::size_t max_starts) const {
+template <class G>
+CMinLinkLoopOf<typename G::P> Impl<G>::loop(const geom::FreeSpaceTriangulation& tri, std::span<const Point> taut_loop,
+                                          const typename G::Set& set, const MinLinkLoop* any_angle,
+                                          std::size_t max_starts) {
   const std::vector<Point> v = loop_vertices(taut_loop, "CMinLinker::loop");
   const std::size_t n = v.size();
-  CMinLinkLoop best;
+  CMinLinkLoopOf<RP> best;
   {
-    const MinLinkLoop any = any_angle ? *any_angle : MinLinker(*t_).loop(taut_loop);
+    const MinLinkLoop any = any_angle ? *any_angle : MinLinker(tri).loop(taut_loop);
     std::size_t lb = std::max<std::size_t>(3, any.minimal ? any.links() : any.at_least);
     if (set.steps().size() == 4) lb = std::max<std::size_t>(4, lb + lb % 2);
     best.at_least = lb;
   }
   // the direction (a step of the set) of the link from a to b
-  auto step_of = [&](const RPoint& a, const RPoint& b) {
+  auto step_of = [&](const RP& a, const RP& b) {
     const Q dx = b.x - a.x, dy = b.y - a.y;
-    for (const Point d : set.steps())
-      if (Q(dx * d.y - dy * d.x).sign() == 0 && Q(dx * d.x + dy * d.y).sign() > 0) return d;
+    for (const Dir& d : set.steps())
+      if ((dx * G::ny(d) - dy * G::nx(d)).sign() == 0 && (dx * G::nx(d) + dy * G::ny(d)).sign() > 0) return d;
     throw std::logic_error("CMinLinker::loop: a link not along the set");
   };
   // The starts, each a path in the cover whose ends close into a loop of the class:
@@ -799,7 +908,7 @@ CMinLinkLoop CMinLinker::loop(std::span<const Point> taut_loop, const geom::Latt
   struct Start {
     std::size_t a;
     int kind;    // 0 an edge from v[a], 1 vertex v[a] with direction d, 2 vertex v[a]
-    Point d{0, 0};
+    Point d{0, 0};  // an integer step
   };
   std::vector<Start> starts;
   {
@@ -813,8 +922,12 @@ CMinLinkLoop CMinLinker::loop(std::span<const Point> taut_loop, const geom::Latt
       const Point x = v[a];
       const V u = vec(v[(a + n - 1) % n], x), w = vec(x, v[(a + 1) % n]);
       const int turn = sgn(cross(u, w));
-      for (const Point d : set.steps()) {
-        const V dv = vec(d);
+      for (const Dir& step : set.steps()) {
+        // only a step that is an integer vector (v - d and v + d are points to lift)
+        const std::optional<Point> id = G::integer(step);
+        if (!id) continue;
+        const Point d = *id;
+        const V dv{d.x, d.y};
         const int cu = sgn(cross(u, dv)), cw = sgn(cross(dv, w));
         // strictly inside (along u or w the path would not turn at v; the edge starts cover those)
         const bool in_cone = turn * cu > 0 && turn * cw > 0;
@@ -837,9 +950,9 @@ CMinLinkLoop CMinLinker::loop(std::span<const Point> taut_loop, const geom::Latt
     if (st.kind == 1) {
       // v - d and v + d may lie in a blockage or past a pinch: such a start is left out
       Sleeve probe;
-      if (Tightener(*t_).lift(round, probe) != TightenStatus::Ok) continue;
+      if (Tightener(tri).lift(round, probe) != TightenStatus::Ok) continue;
     }
-    CMinLinkPath c = path(round, set);
+    CMinLinkPathOf<RP> c = path(tri, round, set, 4096);
     ++best.starts;
     if (!c.ok()) {
       why = c.why;
@@ -850,7 +963,7 @@ CMinLinkLoop CMinLinker::loop(std::span<const Point> taut_loop, const geom::Latt
     // v. Links along one line (the closing one and its neighbours, or any two that meet there,
     // the same way or back) join into one: the segment between their far ends lies on them, so
     // the loop stays free and in its class.
-    std::vector<RPoint> l(c.points.begin(), c.points.end() - 1);
+    std::vector<RP> l(c.points.begin(), c.points.end() - 1);
     if (st.kind != 2) l.push_back(c.points.back());
     for (bool again = true; again && l.size() >= 3;) {
       again = false;
@@ -876,6 +989,27 @@ CMinLinkLoop CMinLinker::loop(std::span<const Point> taut_loop, const geom::Latt
   if (best.links() < best.at_least) throw std::logic_error("CMinLinker::loop: fewer links than the lower bound");
   best.minimal = best.links() == best.at_least;
   return best;
+}
+
+}  // namespace
+
+CMinLinker::CMinLinker(const geom::FreeSpaceTriangulation& t) : t_(&t) {}
+
+CMinLinkPath CMinLinker::path(std::span<const Point> taut, const geom::LatticeDirections& set,
+                              std::size_t max_links) const {
+  return Impl<LatticeKind>::path(*t_, taut, set, max_links);
+}
+CMinLinkPath3 CMinLinker::path(std::span<const Point> taut, const geom::Root3Directions& set,
+                               std::size_t max_links) const {
+  return Impl<Root3Kind>::path(*t_, taut, set, max_links);
+}
+CMinLinkLoop CMinLinker::loop(std::span<const Point> taut_loop, const geom::LatticeDirections& set,
+                              const MinLinkLoop* any_angle, std::size_t max_starts) const {
+  return Impl<LatticeKind>::loop(*t_, taut_loop, set, any_angle, max_starts);
+}
+CMinLinkLoop3 CMinLinker::loop(std::span<const Point> taut_loop, const geom::Root3Directions& set,
+                               const MinLinkLoop* any_angle, std::size_t max_starts) const {
+  return Impl<Root3Kind>::loop(*t_, taut_loop, set, any_angle, max_starts);
 }
 
 }  // namespace taut::router

@@ -1,9 +1,10 @@
 // Minimum-link c-oriented paths of a given homotopy class (Hershberger & Snoeyink, seeds/001,
 // section 6.3): the path with the fewest links among all paths homotopic to a given one, with the
 // same ends, whose every link runs in one of the directions of a set (the lattice sets of
-// geom/directions.h: rectilinear, octilinear, c:0,45,90, ...), of any length. CMinLinker::loop
-// does the same for a loop (its free homotopy class), from starts on the shortest loop, with a
-// lower bound that proves most of them minimal.
+// geom/directions.h: rectilinear, octilinear, c:0,45,90, ...; and, since 2026-12-07, the sets
+// at multiples of 30 degrees of geom/root3_directions.h: c:0,60,120, ...), of any length.
+// CMinLinker::loop does the same for a loop (its free homotopy class), from starts on the
+// shortest loop, with a lower bound that proves most of them minimal.
 //
 //   const router::Tightener tight(t);
 //   const router::Tightened r = tight.tighten(sketch);   // the shortest path of the class
@@ -49,6 +50,10 @@
 // predicate is decided in floating point. The bends of the result are rationals: intersections
 // of lines of the set through rational points (through a blockage vertex or the end of another
 // ray); they need not be integers (two diagonals through integer points meet at half-integers).
+// In a set at multiples of 30 degrees the steps have coordinates in Z[sqrt3], so the same
+// algorithm (one template over the kind of set) runs with points and parameters in Q(sqrt3)
+// (RationalRoot3: rational pairs, exact signs) and offsets of vertices in Z[sqrt3]; its bends
+// are numbers a + b sqrt3.
 //
 // Cost. Each step computes up to 2 x (c - 1) sweeps of the two frontier segments, each over the
 // part of the cover its rays reach: O(k c n) for k links in the worst case (the paper's bound),
@@ -61,15 +66,18 @@
 #include <vector>
 
 #include "geom/directions.h"
+#include "geom/root3_directions.h"
 #include "geom/triangulation.h"
 #include "geom/types.h"
 #include "router/minlink.h"  // MinLinkLoop
+#include "router/root3_staircase.h"  // R3Point
 #include "router/spm.h"  // Rational, RPoint
 
 namespace taut::router {
 
-struct CMinLinkPath {
-  std::vector<RPoint> points;  // the ends and the bends; empty when there is no such path
+template <class P>
+struct CMinLinkPathOf {
+  std::vector<P> points;  // the ends and the bends; empty when there is no such path
   std::string why;             // when points is empty: why there is no c-oriented path
   bool ok() const { return !points.empty(); }
   std::size_t links() const { return points.empty() ? 0 : points.size() - 1; }
@@ -80,8 +88,9 @@ struct CMinLinkPath {
 // A closed path (front == back) in the directions of a set, freely homotopic to a given loop,
 // with few links (the loop version of section 6.3, which the paper leaves open; see
 // CMinLinker::loop for what is proven).
-struct CMinLinkLoop {
-  std::vector<RPoint> points;  // the bends, closed: points.front() == points.back(); empty when none found
+template <class P>
+struct CMinLinkLoopOf {
+  std::vector<P> points;  // the bends, closed: points.front() == points.back(); empty when none found
   std::string why;             // when points is empty: why
   bool ok() const { return !points.empty(); }
   std::size_t links() const { return points.empty() ? 0 : points.size() - 1; }
@@ -91,6 +100,12 @@ struct CMinLinkLoop {
   bool minimal = false;
   std::size_t starts = 0;  // paths computed (from vertices of the shortest loop)
 };
+
+// Lattice sets: rational points. Sets at multiples of 30 degrees: points in Q(sqrt3).
+using CMinLinkPath = CMinLinkPathOf<RPoint>;
+using CMinLinkPath3 = CMinLinkPathOf<R3Point>;
+using CMinLinkLoop = CMinLinkLoopOf<RPoint>;
+using CMinLinkLoop3 = CMinLinkLoopOf<R3Point>;
 
 class CMinLinker {
  public:
@@ -104,6 +119,10 @@ class CMinLinker {
   // std::logic_error when a step makes no progress (a bug) or the links pass `max_links`.
   CMinLinkPath path(std::span<const geom::Point> taut, const geom::LatticeDirections& set,
                     std::size_t max_links = 4096) const;
+  // The same in a set at multiples of 30 degrees (geom/root3_directions.h): exact bends in
+  // Q(sqrt3), links exactly along the set's directions (not rounded to integers).
+  CMinLinkPath3 path(std::span<const geom::Point> taut, const geom::Root3Directions& set,
+                     std::size_t max_links = 4096) const;
 
   // A loop in the directions of `set` freely homotopic to `taut_loop`, which must be a shortest
   // loop of its class as Tightener::tighten_loop returns it (closed, every vertex a strict turn at
@@ -128,6 +147,10 @@ class CMinLinker {
   // `any_angle`: MinLinker::loop of the same loop when the caller has it (else it is computed).
   CMinLinkLoop loop(std::span<const geom::Point> taut_loop, const geom::LatticeDirections& set,
                     const MinLinkLoop* any_angle = nullptr, std::size_t max_starts = 64) const;
+  // The same in a set at multiples of 30 degrees (the vertex starts with a direction use only
+  // the set's axis steps, the integer ones).
+  CMinLinkLoop3 loop(std::span<const geom::Point> taut_loop, const geom::Root3Directions& set,
+                     const MinLinkLoop* any_angle = nullptr, std::size_t max_starts = 64) const;
 
  private:
   const geom::FreeSpaceTriangulation* t_;

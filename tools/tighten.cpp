@@ -11,15 +11,15 @@
 // `c:0,90` and `c:0,45,90,135` name rectilinear and octilinear. A set at multiples of 30 degrees
 // (c:0,60,120, ...; since 2026-12-07) writes the shortest wire of the class in it built exactly in
 // Q(sqrt3) with its vertices rounded to integers (router/root3_staircase.h; with --clearance
-// and --min-link since 2026-12-07, its minimum-link path in the set not computed yet:
-// TIGHTEN-0015). `c:` sets with a direction at another angle are refused (CLI-0027) or, from
-// <rules>, replaced by `any` (TIGHTEN-0003).
+// and --min-link since 2026-12-07). `c:` sets with a direction at another angle are refused
+// (CLI-0027) or, from <rules>, replaced by `any` (TIGHTEN-0003).
 // --min-link adds each wire's minimum-link path of its class (router/minlink.h, any angle, exact
 // rational bends; for a loop its minimum-link loop, section 5.2, proven minimal unless its
 // shortest loop is convex and the loop found is above the winding bound) to --stats and --svg,
-// and in a lattice direction set also its minimum-link path in those directions (router/c_minlink.h,
-// section 6.3, open wires only); they are not written as wires (FORMAT.md coordinates are
-// integers, and these bends are rationals).
+// and in a direction set also its minimum-link path in those directions (router/c_minlink.h,
+// section 6.3: exact rational bends in a lattice set, bends in Q(sqrt3) in a set at multiples of
+// 30 degrees, since 2026-12-07; for a loop, a loop with few links); they are not written as
+// wires (FORMAT.md coordinates are integers, and these bends are not).
 #include <algorithm>
 #include <chrono>
 #include <optional>
@@ -65,6 +65,23 @@ std::vector<geom::Point> taut_of(const router::Tightener& t, const std::vector<g
   return std::move(r.points);
 }
 
+// The direction set --min-link also finds minimum-link paths in (none, or one of the two kinds).
+struct MinLinkSet {
+  std::optional<geom::LatticeDirections> lattice;
+  std::optional<geom::Root3Directions> root3;
+  explicit operator bool() const { return lattice || root3; }
+};
+
+// Exact coordinates as text: "p/q" (or "p"), and a + b sqrt3 as "A+B*sqrt3" or "A-B*sqrt3" with A
+// and B so written (A always there, "0" too).
+std::string exact_text(const router::Rational& v) { return v.str(); }
+std::string exact_text(const router::RationalRoot3& v) {
+  if (v.b.sign() == 0) return v.a.str();
+  return v.a.str() + (v.b.sign() < 0 ? "-" : "+") + router::Rational(abs(v.b)).str() + "*sqrt3";
+}
+double to_double(const router::Rational& v) { return v.convert_to<double>(); }
+double to_double(const router::RationalRoot3& v) { return v.to_double(); }
+
 struct NetTightening {
   std::string source;  // "sketch" or "wires"
   double before = 0, taut = 0, after = 0;
@@ -78,37 +95,25 @@ struct NetTightening {
   // winding bound (router::MinLinkLoop::minimal), so min_links is only an upper bound
   bool min_links_proven = true;
   bool min_link_failed = false;  // TIGHTEN-0008
-  // --min-link in a lattice direction set: the minimum-link path of each open wire's class in
-  // those directions (section 6.3; exact rational bends)
+  // --min-link in a direction set: the minimum-link path of each wire's class in those
+  // directions (section 6.3), a loop's closed; exact bends as text, and as doubles to draw
   std::size_t oriented_min_links = 0;
   std::size_t oriented_at_least = 0;  // a lower bound (= oriented_min_links when proven)
   bool oriented_proven = true;        // false when some loop's count is only an upper bound
-  std::vector<router::CMinLinkPath> oriented_min_link;  // a loop's closed
+  struct OrientedPath {
+    std::vector<std::array<std::string, 2>> exact;
+    std::vector<std::array<double, 2>> drawn;
+  };
+  std::vector<OrientedPath> oriented_min_link;
   std::string oriented_none;  // a wire or loop with no path in the set (why)
   // adds the minimum-link path of a taut line, or the minimum-link loop when is_loop; and with a
   // direction set, the minimum-link path in it
   void add_min_link(const router::MinLinker& ml, std::span<const geom::Point> taut, bool is_loop,
-                    const geom::FreeSpaceTriangulation& t, const std::optional<geom::LatticeDirections>& set) {
+                    const geom::FreeSpaceTriangulation& t, const MinLinkSet& set) {
     std::optional<router::MinLinkLoop> any_loop;  // the any-angle loop: also the bound of the set's
     if (is_loop) any_loop = ml.loop(taut);
-    if (set) {
-      if (is_loop) {
-        router::CMinLinkLoop c = router::CMinLinker(t).loop(taut, *set, &*any_loop);
-        if (!c.ok()) oriented_none = c.why;
-        oriented_min_links += c.links();
-        oriented_at_least += c.minimal ? c.links() : c.at_least;
-        oriented_proven = oriented_proven && c.minimal;
-        router::CMinLinkPath closed;
-        closed.points = std::move(c.points);
-        oriented_min_link.push_back(std::move(closed));
-      } else {
-        router::CMinLinkPath c = router::CMinLinker(t).path(taut, *set);
-        if (!c.ok()) oriented_none = c.why;
-        oriented_min_links += c.links();
-        oriented_at_least += c.links();
-        oriented_min_link.push_back(std::move(c));
-      }
-    }
+    if (set.lattice) add_oriented(t, taut, is_loop, *set.lattice, any_loop ? &*any_loop : nullptr);
+    if (set.root3) add_oriented(t, taut, is_loop, *set.root3, any_loop ? &*any_loop : nullptr);
     if (is_loop) {
       router::MinLinkLoop& l = *any_loop;
       min_links_proven = min_links_proven && l.minimal;
@@ -120,7 +125,37 @@ struct NetTightening {
     }
     min_links += min_link.back().links();
   }
+  template <class Set>
+  void add_oriented(const geom::FreeSpaceTriangulation& t, std::span<const geom::Point> taut, bool is_loop,
+                    const Set& set, const router::MinLinkLoop* any_loop);
 };
+
+template <class Set>
+void NetTightening::add_oriented(const geom::FreeSpaceTriangulation& t, std::span<const geom::Point> taut, bool is_loop,
+                                 const Set& set, const router::MinLinkLoop* any_loop) {
+  auto keep = [&](const auto& points) {
+    OrientedPath o;
+    for (const auto& p : points) {
+      o.exact.push_back({exact_text(p.x), exact_text(p.y)});
+      o.drawn.push_back({to_double(p.x), to_double(p.y)});
+    }
+    oriented_min_link.push_back(std::move(o));
+  };
+  if (is_loop) {
+    const auto c = router::CMinLinker(t).loop(taut, set, any_loop);
+    if (!c.ok()) oriented_none = c.why;
+    oriented_min_links += c.links();
+    oriented_at_least += c.minimal ? c.links() : c.at_least;
+    oriented_proven = oriented_proven && c.minimal;
+    keep(c.points);
+  } else {
+    const auto c = router::CMinLinker(t).path(taut, set);
+    if (!c.ok()) oriented_none = c.why;
+    oriented_min_links += c.links();
+    oriented_at_least += c.links();
+    keep(c.points);
+  }
+}
 
 std::string fixed3(double v) {
   char buf[64];
@@ -181,8 +216,8 @@ void add_tighten(CLI::App& app, int& status) {
                 "blockages grown by that much)");
   sub->add_flag("--min-link", args->min_link,
                 "also find each wire's minimum-link path of its class (any angle, exact rational bends) "
-                "and, with rectilinear, octilinear or a c: set at multiples of 45 degrees, its minimum-link path "
-                "in those directions (not yet at multiples of 30 degrees: TIGHTEN-0015) "
+                "and, with rectilinear, octilinear or a c: set, its minimum-link path in those directions "
+                "(exact bends: rationals, or numbers a+b*sqrt3 at multiples of 30 degrees) "
                 "(for a loop, a closed loop with few links, proven minimal or given as a range): "
                 "their link counts and bends go to --stats, their drawings to --svg; the written wires "
                 "are still the shortest ones");
@@ -192,8 +227,8 @@ void add_tighten(CLI::App& app, int& status) {
     const auto t0 = Clock::now();
     // The output's directions: any, a lattice direction set by its name (c:0,90 is rectilinear),
     // or (since 2026-12-07) a set at multiples of 30 degrees such as c:0,60,120, written with its
-    // exact vertices rounded (router/root3_staircase.h; with --clearance since 2026-12-07, and
-    // with --min-link, whose minimum-link path in the set is not computed yet: TIGHTEN-0015).
+    // exact vertices rounded (router/root3_staircase.h; with --clearance and --min-link since
+    // 2026-12-07).
     std::string o = args->orientations;
     if (!o.empty() && o != "any") {
       if (const router::TightenOrientations to = tighten_orientations(o); to.c_oriented()) {
@@ -230,20 +265,13 @@ void add_tighten(CLI::App& app, int& status) {
       }
     }
     const bool c_oriented = orientations != "any";
-    // --min-link in a lattice direction set also finds the minimum-link paths in it
-    std::optional<geom::LatticeDirections> min_link_set;
-    if (args->min_link && c_oriented) min_link_set = geom::LatticeDirections::parse(orientations);
-    // ... but not in a set at multiples of 30 degrees yet (router::CMinLinker works in lattice
-    // steps): said once, and null in the statistics with the reason (since 2026-12-07; before,
-    // refused with CLI-0027)
-    const bool min_link_30 = args->min_link && geom::Root3Directions::parse(orientations).has_value();
-    const std::string min_link_30_why = "the minimum-link path in a set at multiples of 30 degrees (H&S 6.3) is not "
-                                        "computed yet: only the one at any angle is";
-    if (min_link_30)
-      print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0015", layout->file, 0, 0,
-                                    "--min-link in " + orientations + ": " + min_link_30_why +
-                                        " (min_links, min_link_wires); oriented_min_links is null"}},
-                        args->load.quiet);
+    // --min-link in a direction set also finds the minimum-link paths in it (in a set at
+    // multiples of 30 degrees since 2026-12-07: before, the one at any angle alone, TIGHTEN-0015)
+    MinLinkSet min_link_set;
+    if (args->min_link && c_oriented) {
+      min_link_set.lattice = geom::LatticeDirections::parse(orientations);
+      if (!min_link_set.lattice) min_link_set.root3 = geom::Root3Directions::parse(orientations);
+    }
 
     // What each net tightens: its sketch, else its routed wires.
     struct Input {
@@ -828,10 +856,9 @@ void add_tighten(CLI::App& app, int& status) {
                         "\" fill=\"none\" stroke=\"#c0392b\" stroke-width=\"@1.5\" stroke-dasharray=\"@2 @3\"/>\n";
         }
       for (const NetTightening& st : stats)
-        for (const router::CMinLinkPath& m : st.oriented_min_link) {
+        for (const NetTightening::OrientedPath& m : st.oriented_min_link) {
           std::string pts;
-          for (const router::RPoint& p : m.points)
-            pts += (pts.empty() ? "" : " ") + fixed3(p.x.convert_to<double>()) + "," + fixed3(p.y.convert_to<double>());
+          for (const auto& [x, y] : m.drawn) pts += (pts.empty() ? "" : " ") + fixed3(x) + "," + fixed3(y);
           if (!pts.empty())
             so.overlay += "<polyline class=\"oriented-min-link\" points=\"" + pts +
                           "\" fill=\"none\" stroke=\"#111111\" stroke-width=\"@1.5\" stroke-dasharray=\"@5 @2 @1 @2\"/>\n";
@@ -888,9 +915,9 @@ void add_tighten(CLI::App& app, int& status) {
           if (min_link_set) {
             // the same in the output's directions (section 6.3); null when some wire has none
             nlohmann::ordered_json opaths = nlohmann::ordered_json::array();
-            for (const router::CMinLinkPath& m : s.oriented_min_link) {
+            for (const NetTightening::OrientedPath& m : s.oriented_min_link) {
               nlohmann::ordered_json pts = nlohmann::ordered_json::array();
-              for (const router::RPoint& p : m.points) pts.push_back({p.x.str(), p.y.str()});
+              for (const auto& [x, y] : m.exact) pts.push_back({x, y});
               opaths.push_back(pts);
             }
             const bool ocounted = counted && s.oriented_none.empty();
@@ -902,10 +929,6 @@ void add_tighten(CLI::App& app, int& status) {
             }
             if (!s.oriented_none.empty()) nets.back()["oriented_min_links_none"] = s.oriented_none;
             nets.back()["oriented_min_link_wires"] = opaths;
-          } else if (min_link_30) {
-            nets.back()["oriented_min_links"] = nlohmann::ordered_json();
-            nets.back()["oriented_min_links_none"] = min_link_30_why;
-            nets.back()["oriented_min_link_wires"] = nlohmann::ordered_json::array();
           }
         }
       }
@@ -947,7 +970,6 @@ void add_tighten(CLI::App& app, int& status) {
             if (!s.oriented_proven) std::cerr << s.oriented_at_least << " to ";
             std::cerr << s.oriented_min_links << ")";
           }
-          if (min_link_30) std::cerr << " at any angle (" << orientations << ": not computed)";
         }
         std::cerr << '\n';
       }

@@ -1348,9 +1348,8 @@ TEST(Tighten, SetsAtMultiplesOf30DegreesOnTheWindDesign) {
 }
 
 // A c: set in <rules> is the default output: one at multiples of 30 degrees is written in it
-// (since 2026-12-07, and, later that day, with --clearance; before, at any angle with
-// TIGHTEN-0003, which a set at another angle still gets, and this one with --min-link, which
-// does not write such sets yet).
+// (since 2026-12-07, and, later that day, with --clearance and --min-link; before, at any angle
+// with TIGHTEN-0003, which a set at another angle still gets).
 TEST(Tighten, CSetInTheRulesIsTheOutputsDirections) {
   const std::string dir = temp_dir("tighten_cset");
   const std::string body = "  <rules orientations=\"c:0,60,120\"/>\n"
@@ -1381,21 +1380,25 @@ TEST(Tighten, CSetInTheRulesIsTheOutputsDirections) {
   EXPECT_EQ(tc.status, 0) << tc.err;
   EXPECT_EQ(tc.err.find("TIGHTEN-0003"), std::string::npos) << tc.err;
   EXPECT_EQ(wires_of(dir + "/tc.xml", "n"), wires_of(dir + "/t.xml", "n"));
-  // with --min-link: in the set too (since 2026-12-07), its minimum-link path in the set not
-  // computed (TIGHTEN-0015, null in the statistics with the reason), the one at any angle is
+  // with --min-link: in the set too, and (since 2026-12-07, the same day; before, TIGHTEN-0015
+  // and null) its minimum-link path in the set, exact in Q(sqrt3)
   const auto tm = run_taut({"tighten", file, "-o", dir + "/tm.xml", "--min-link", "--stats", dir + "/tm.json"});
   EXPECT_EQ(tm.status, 0) << tm.err;
   EXPECT_EQ(tm.err.find("TIGHTEN-0003"), std::string::npos) << tm.err;
-  EXPECT_NE(tm.err.find("warning: [TIGHTEN-0015] --min-link in c:0,60,120: the minimum-link path in a set at multiples "
-                        "of 30 degrees (H&S 6.3) is not computed yet"),
-            std::string::npos)
-      << tm.err;
+  EXPECT_EQ(tm.err.find("TIGHTEN-0015"), std::string::npos) << tm.err;
+  EXPECT_NE(tm.err.find("minimum links 2 (c:0,60,120: 2)"), std::string::npos) << tm.err;
   EXPECT_EQ(wires_of(dir + "/tm.xml", "n"), wires_of(dir + "/t.xml", "n"));
   {
     const auto j = nlohmann::json::parse(read_text(dir + "/tm.json"))["tighten"]["nets"][0];
     EXPECT_EQ(j["min_links"], 2) << j.dump();  // at any angle: to (50, 190/3) above the square, then down
-    EXPECT_TRUE(j["oriented_min_links"].is_null()) << j.dump();
-    EXPECT_NE(j["oriented_min_links_none"].get<std::string>().find("not computed yet"), std::string::npos);
+    // in the set: up at 60 degrees from (10, 50) and down at 120 degrees into (90, 50); the two
+    // lines meet at x = 50, 40 sqrt3 above the pins, clear of the square's top corners (at
+    // x = 40 the first is 30 sqrt3 > 10 above them)
+    EXPECT_EQ(j["oriented_min_links"], 2) << j.dump();
+    EXPECT_FALSE(j.contains("oriented_min_links_none")) << j.dump();
+    EXPECT_EQ(j["oriented_min_link_wires"],
+              nlohmann::json::parse(R"([[["10", "50"], ["50", "50+40*sqrt3"], ["90", "50"]]])"))
+        << j.dump();
   }
   // c:0,90 is another name of the rectilinear directions: the same as --orientations rectilinear
   std::string rect_rules = read_text(file);

@@ -15,10 +15,15 @@ using i64 = std::int64_t;
 namespace {
 
 // The height of a segment at x = X + sigma e: y0 + s e (s already times sigma).
-struct Height {
-  mpq_class y0, s;
+template <class N>
+struct HeightOf {
+  N y0, s;
 };
-bool less(const Height& a, const Height& b) { return a.y0 != b.y0 ? a.y0 < b.y0 : a.s < b.s; }
+using Height = HeightOf<mpq_class>;
+template <class A, class B>
+bool less(const HeightOf<A>& a, const HeightOf<B>& b) {
+  return a.y0 != b.y0 ? a.y0 < b.y0 : a.s < b.s;
+}
 
 std::optional<Height> crossing(Point a, Point b, i64 X, int sigma) {
   const i64 lo = sigma > 0 ? X : X - 1;  // the line lies strictly between lo and lo + 1
@@ -38,6 +43,16 @@ std::optional<Height> crossing(const QPoint& a, const QPoint& b, i64 X, int sigm
   if (!crosses) return std::nullopt;
   const mpq_class s = (b.y - a.y) / (b.x - a.x);
   return Height{a.y + (x - a.x) * s, sigma > 0 ? s : mpq_class(-s)};
+}
+
+// The same for ends in Q(sqrt3).
+std::optional<HeightOf<Q3>> crossing(const Q3Point& a, const Q3Point& b, i64 X, int sigma) {
+  const Q3 x(static_cast<long>(X));
+  const bool crosses = sigma > 0 ? ((a.x <= x && b.x > x) || (b.x <= x && a.x > x))
+                                 : ((a.x < x && b.x >= x) || (b.x < x && a.x >= x));
+  if (!crosses) return std::nullopt;
+  const Q3 s = (b.y - a.y) / (b.x - a.x);
+  return HeightOf<Q3>{a.y + (x - a.x) * s, sigma > 0 ? s : -s};
 }
 
 std::vector<const geom::Ring*> rings_of(const geom::Polygon& p) {
@@ -141,5 +156,6 @@ std::vector<int> HomotopyWords::word_of(std::span<const P> path) const {
 
 std::vector<int> HomotopyWords::word(std::span<const Point> path) const { return word_of(path); }
 std::vector<int> HomotopyWords::word(std::span<const QPoint> path) const { return word_of(path); }
+std::vector<int> HomotopyWords::word(std::span<const Q3Point> path) const { return word_of(path); }
 
 }  // namespace taut::oracle

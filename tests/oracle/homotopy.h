@@ -38,6 +38,7 @@
 #include <vector>
 
 #include "geom/types.h"
+#include "oracle/qroot3.h"
 
 namespace taut::oracle {
 
@@ -62,6 +63,8 @@ class HomotopyWords {
   // The same for a polyline with rational vertices (the line x = X + sigma e is crossed iff the
   // ends lie on both sides of it: x <= X < x' for sigma = +1, x < X <= x' for sigma = -1).
   std::vector<int> word(std::span<const QPoint> path) const;
+  // The same with vertices in Q(sqrt3) (paths in a set at multiples of 30 degrees).
+  std::vector<int> word(std::span<const Q3Point> path) const;
 
   std::size_t cut_count() const;
 

@@ -5,6 +5,7 @@
 #include <numeric>
 #include <optional>
 #include <tuple>
+#include <type_traits>
 
 namespace taut::oracle {
 
@@ -13,33 +14,51 @@ using geom::Point;
 namespace {
 
 QPoint q(Point p) { return {mpq_class(static_cast<long>(p.x)), mpq_class(static_cast<long>(p.y))}; }
+template <class Pt>
+Pt lift(Point p) {
+  if constexpr (std::is_same_v<Pt, QPoint>) return q(p);
+  else return q3(p);
+}
+int sgn(const Q3& v) { return v.sign(); }
 mpq_class cross(const mpq_class& ax, const mpq_class& ay, const mpq_class& bx, const mpq_class& by) {
   return ax * by - ay * bx;
 }
+Q3 cross(const Q3& ax, const Q3& ay, const Q3& bx, const Q3& by) { return ax * by - ay * bx; }
+
+std::optional<QPoint> meet(const QPoint& a, const QPoint& b, const QPoint& c, const QPoint& d) {
+  const mpq_class den = cross(b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y);
+  if (den == 0) return std::nullopt;
+  const mpq_class t = cross(c.x - a.x, c.y - a.y, d.x - c.x, d.y - c.y) / den;
+  return QPoint{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+}
 
 // p on the closed segment cd
-bool on_edge(const QPoint& p, const QPoint& c, const QPoint& d) {
+template <class Pt>
+bool on_edge(const Pt& p, const Pt& c, const Pt& d) {
   if (cross(d.x - c.x, d.y - c.y, p.x - c.x, p.y - c.y) != 0) return false;
   return std::min(c.x, d.x) <= p.x && p.x <= std::max(c.x, d.x) && std::min(c.y, d.y) <= p.y &&
          p.y <= std::max(c.y, d.y);
 }
 
 // -1 outside, 0 on the boundary, 1 strictly inside the region of a simple ring
-int locate(const QPoint& p, const geom::Ring& r) {
+template <class Pt>
+int locate(const Pt& p, const geom::Ring& r) {
+  using N = decltype(Pt::x);
   bool in = false;
   for (std::size_t i = 0; i < r.size(); ++i) {
-    const QPoint c = q(r[i]), d = q(r[(i + 1) % r.size()]);
+    const Pt c = lift<Pt>(r[i]), d = lift<Pt>(r[(i + 1) % r.size()]);
     if (on_edge(p, c, d)) return 0;
     // crossing number: edges straddling the horizontal through p, crossed to the right of p
     if ((c.y > p.y) != (d.y > p.y)) {
-      const mpq_class x = c.x + (p.y - c.y) * (d.x - c.x) / (d.y - c.y);
+      const N x = c.x + (p.y - c.y) * (d.x - c.x) / (d.y - c.y);
       if (x > p.x) in = !in;
     }
   }
   return in ? 1 : -1;
 }
 
-bool in_material(const QPoint& p, std::span<const geom::Polygon> obstacles) {
+template <class Pt>
+bool in_material(const Pt& p, std::span<const geom::Polygon> obstacles) {
   for (const auto& o : obstacles) {
     if (locate(p, o.outer) != 1) continue;
     bool in_hole = false;
@@ -49,32 +68,25 @@ bool in_material(const QPoint& p, std::span<const geom::Polygon> obstacles) {
   return false;
 }
 
-std::optional<QPoint> meet(const QPoint& a, const QPoint& b, const QPoint& c, const QPoint& d) {
-  const mpq_class den = cross(b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y);
-  if (den == 0) return std::nullopt;
-  const mpq_class t = cross(c.x - a.x, c.y - a.y, d.x - c.x, d.y - c.y) / den;
-  return QPoint{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
-}
-
-}  // namespace
-
-bool segment_free(const QPoint& a, const QPoint& b, const geom::Box& D, std::span<const geom::Polygon> obstacles) {
-  for (const QPoint* p : {&a, &b})
+template <class Pt>
+bool segment_free_of(const Pt& a, const Pt& b, const geom::Box& D, std::span<const geom::Polygon> obstacles) {
+  using N = decltype(Pt::x);
+  for (const Pt* p : {&a, &b})
     if (p->x < D.lo.x || p->x > D.hi.x || p->y < D.lo.y || p->y > D.hi.y) return false;
-  const mpq_class rx = b.x - a.x, ry = b.y - a.y;
+  const N rx = b.x - a.x, ry = b.y - a.y;
   if (rx == 0 && ry == 0) return !in_material(a, obstacles);
-  std::vector<mpq_class> ts{0, 1};
+  std::vector<N> ts{N(0), N(1)};
   auto edge = [&](Point c0, Point d0) {
-    const QPoint c = q(c0), d = q(d0);
-    const mpq_class sx = d.x - c.x, sy = d.y - c.y;
-    const mpq_class den = cross(rx, ry, sx, sy);
-    const mpq_class cax = c.x - a.x, cay = c.y - a.y;
+    const Pt c = lift<Pt>(c0), d = lift<Pt>(d0);
+    const N sx = d.x - c.x, sy = d.y - c.y;
+    const N den = cross(rx, ry, sx, sy);
+    const N cax = c.x - a.x, cay = c.y - a.y;
     if (den != 0) {
-      const mpq_class t = cross(cax, cay, sx, sy) / den, u = cross(cax, cay, rx, ry) / den;
+      const N t = cross(cax, cay, sx, sy) / den, u = cross(cax, cay, rx, ry) / den;
       if (t >= 0 && t <= 1 && u >= 0 && u <= 1) ts.push_back(t);
     } else if (cross(cax, cay, rx, ry) == 0) {
-      for (const QPoint* e : {&c, &d}) {
-        const mpq_class t = ((e->x - a.x) * rx + (e->y - a.y) * ry) / (rx * rx + ry * ry);
+      for (const Pt* e : {&c, &d}) {
+        const N t = ((e->x - a.x) * rx + (e->y - a.y) * ry) / (rx * rx + ry * ry);
         if (t >= 0 && t <= 1) ts.push_back(t);
       }
     }
@@ -96,7 +108,7 @@ bool segment_free(const QPoint& a, const QPoint& b, const geom::Box& D, std::spa
     for (const auto& h : o.holes) rs.push_back(&h);
     for (const geom::Ring* r : rs)
       for (std::size_t i = 0; i < r->size(); ++i) {
-        const QPoint v = q((*r)[i]);
+        const Pt v = lift<Pt>((*r)[i]);
         if (!on_edge(v, a, b) || (v.x == a.x && v.y == a.y) || (v.x == b.x && v.y == b.y)) continue;
         bool left = false, right = false;
         for (const auto& o2 : obstacles) {
@@ -108,13 +120,13 @@ bool segment_free(const QPoint& a, const QPoint& b, const geom::Box& D, std::spa
               // material lies left of each directed ring edge: prev -> v and v -> next
               const Point prev = (*r2)[(k + r2->size() - 1) % r2->size()], next = (*r2)[(k + 1) % r2->size()];
               for (int e = 0; e < 2; ++e) {
-                const QPoint w = q(e == 0 ? prev : next);
+                const Pt w = lift<Pt>(e == 0 ? prev : next);
                 const int sg = sgn(cross(rx, ry, w.x - v.x, w.y - v.y));
                 left = left || sg > 0;
                 right = right || sg < 0;
                 if (sg == 0) {
                   // an edge along the segment: its material side, seen along the segment
-                  const mpq_class ux = e == 0 ? v.x - w.x : w.x - v.x, uy = e == 0 ? v.y - w.y : w.y - v.y;
+                  const N ux = e == 0 ? N(v.x - w.x) : N(w.x - v.x), uy = e == 0 ? N(v.y - w.y) : N(w.y - v.y);
                   const bool along = ux * rx + uy * ry > 0;  // the edge runs the segment's way
                   left = left || along;
                   right = right || !along;
@@ -126,10 +138,19 @@ bool segment_free(const QPoint& a, const QPoint& b, const geom::Box& D, std::spa
       }
   }
   for (std::size_t i = 0; i + 1 < ts.size(); ++i) {
-    const mpq_class m = (ts[i] + ts[i + 1]) / 2;
-    if (in_material(QPoint{a.x + m * rx, a.y + m * ry}, obstacles)) return false;
+    const N m = (ts[i] + ts[i + 1]) / N(2);
+    if (in_material(Pt{a.x + m * rx, a.y + m * ry}, obstacles)) return false;
   }
   return true;
+}
+
+}  // namespace
+
+bool segment_free(const QPoint& a, const QPoint& b, const geom::Box& D, std::span<const geom::Polygon> obstacles) {
+  return segment_free_of(a, b, D, obstacles);
+}
+bool segment_free(const Q3Point& a, const Q3Point& b, const geom::Box& D, std::span<const geom::Polygon> obstacles) {
+  return segment_free_of(a, b, D, obstacles);
 }
 
 LinkSearch::LinkSearch(const geom::Box& domain, std::span<const geom::Polygon> obstacles, const HomotopyWords& words)

@@ -28,10 +28,14 @@
 
 #include "geom/types.h"
 #include "oracle/homotopy.h"
+#include "oracle/qroot3.h"
 
 namespace taut::oracle {
 
 bool segment_free(const QPoint& a, const QPoint& b, const geom::Box& domain,
+                  std::span<const geom::Polygon> obstacles);
+// The same with ends in Q(sqrt3) (paths in a set at multiples of 30 degrees).
+bool segment_free(const Q3Point& a, const Q3Point& b, const geom::Box& domain,
                   std::span<const geom::Polygon> obstacles);
 
 class LinkSearch {

@@ -259,35 +259,6 @@ TEST(CMinLink, RegressionCases) {
   EXPECT_EQ(checked, static_cast<int>(cases.size()));
 }
 
-// The small scenes of seeds 1..n, each of the six kinds (small_scene on an mt19937 seeded
-// seed * mul + kind), that the references take: fn(seed, kind, judged scene, its single-wedge
-// lattice points, a 64-bit generator for its sketches). Stops at the first scene with a failure.
-template <class F>
-long long for_each_small_scene(int n, int N, unsigned mul, std::uint64_t sketch_mul, F&& fn) {
-  long long scenes = 0;
-  for (int seed = 1; seed <= n; ++seed) {
-    for (int kind = 0; kind < 6; ++kind) {
-      std::mt19937 rng(static_cast<unsigned>(seed) * mul + static_cast<unsigned>(kind));
-      const std::optional<Scene> scene = small_scene(rng, kind, N);
-      if (!scene) continue;
-      const auto j = judge(*scene);
-      if (!j) continue;
-      EXPECT_TRUE(j->st.t.ok());
-      if (!j->st.t.ok()) return scenes;
-      ++scenes;
-      const Path pts = single_wedge_points(j->ref, N);
-      if (pts.size() < 3) continue;
-      std::mt19937_64 rng64(static_cast<std::uint64_t>(seed) * sketch_mul + static_cast<std::uint64_t>(kind));
-      fn(seed, kind, *j, pts, rng64);
-      if (::testing::Test::HasFailure()) {
-        ADD_FAILURE() << "stopping at the first failing layout (seed " << seed << " kind " << kind << ")";
-        return scenes;
-      }
-    }
-  }
-  return scenes;
-}
-
 TEST(CMinLink, RandomSketchesAgainstTheReferences) {
   Totals tot;
   long long sketches = 0;
@@ -383,14 +354,11 @@ router::CMinLinkLoop judge_loop(const Judged& j, const Path& taut, const std::ve
 }
 
 TEST(CMinLinkLoop, HandCases) {
-  const Scene sc = normalized({{0, 0}, {100, 100}}, {rect(40, 40, 60, 60)});
-  const auto j = judge(sc);
-  ASSERT_TRUE(j && j->st.t.ok());
+  const SquareLoop sq = square_loop();
+  ASSERT_TRUE(sq.j && sq.j->st.t.ok());
+  ASSERT_EQ(sq.taut.status, router::TightenStatus::Ok);
+  const auto& [j, once, l, cyc] = sq;
   LoopTotals tot;
-  const Path once{{20, 50}, {50, 10}, {90, 50}, {50, 90}, {20, 50}};
-  const router::Tightener::Loop l = j->st.tight->tighten_loop(once);
-  ASSERT_EQ(l.status, router::TightenStatus::Ok);
-  const std::vector<int> cyc = cyclic_word(j->h.word(once));
   struct Want {
     const char* set;
     std::size_t links;
@@ -439,14 +407,10 @@ TEST(CMinLinkLoop, RandomLoopsAgainstTheReferences) {
       [&](int seed, int kind, const Judged& j, const Path& pts, std::mt19937_64& rng64) {
         Sketcher sk{j.ref, j.h, pts, rng64};
         for (int t = 0; t < (kSanitized ? 4 : 6); ++t) {
-          Path loop = sk.walk(3 + static_cast<int>(rng64() % 4));
-          if (loop.size() < 2) continue;
-          if (t % 2 == 1) sk.add_loops(loop);
-          if (!j.ref.visible(loop.back(), loop.front())) continue;
-          loop.push_back(loop.front());
-          if (loop.size() < 4) continue;
-          const router::Tightener::Loop l = j.st.tight->tighten_loop(loop);
-          if (l.status != router::TightenStatus::Ok || l.contractible) continue;
+          const std::optional<TautLoop> tl = taut_loop(sk, *j.st.tight, t % 2 == 1);
+          if (!tl) continue;
+          const Path& loop = tl->loop;
+          const router::Tightener::Loop& l = tl->taut;
           ++taut_loops;
           const std::vector<int> cyc = cyclic_word(j.h.word(loop));
           const std::string where = "seed " + std::to_string(seed) + " kind " + std::to_string(kind) + " (" +

@@ -6,6 +6,7 @@
 
 #include "geom/predicates.h"
 #include "support/random_shapes.h"
+#include "support/taut_check.h"
 
 namespace taut::test {
 
@@ -88,6 +89,29 @@ std::optional<TautSketch> taut_sketch(Sketcher& sk, const router::Tightener& tig
   if (r.sketch.size() < 2 || r.sketch.front() == r.sketch.back()) return std::nullopt;
   r.taut = tight.tighten(r.sketch);
   if (r.taut.status != router::TightenStatus::Ok) return std::nullopt;
+  return r;
+}
+
+std::optional<TautLoop> taut_loop(Sketcher& sk, const router::Tightener& tight, bool loops) {
+  TautLoop r{sk.walk(3 + static_cast<int>(sk.rng() % 4)), {}};
+  if (r.loop.size() < 2) return std::nullopt;
+  if (loops) sk.add_loops(r.loop);
+  if (!sk.ref.visible(r.loop.back(), r.loop.front())) return std::nullopt;
+  r.loop.push_back(r.loop.front());
+  if (r.loop.size() < 4) return std::nullopt;
+  r.taut = tight.tighten_loop(r.loop);
+  if (r.taut.status != router::TightenStatus::Ok || r.taut.contractible) return std::nullopt;
+  return r;
+}
+
+SquareLoop square_loop() {
+  SquareLoop r{judge(normalized({{0, 0}, {100, 100}}, {rect(40, 40, 60, 60)})),
+               {{20, 50}, {50, 10}, {90, 50}, {50, 90}, {20, 50}},
+               {},
+               {}};
+  if (!r.j || !r.j->st.t.ok()) return r;
+  r.taut = r.j->st.tight->tighten_loop(r.once);
+  r.cyclic = cyclic_word(r.j->h.word(r.once));
   return r;
 }
 

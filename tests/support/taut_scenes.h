@@ -3,6 +3,8 @@
 // the code under test (oracle::HomotopyWords for classes, oracle::L1Reference for free space).
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <map>
 #include <memory>
 #include <optional>
@@ -94,6 +96,13 @@ struct TautSketch {
   router::Tightened taut;
 };
 std::optional<TautSketch> taut_sketch(Sketcher& sk, const router::Tightener& tight, int legs, bool loops);
+// A random closed walk of 3 to 6 points (loops appended when asked) and its shortest loop; nullopt
+// when the walk does not close by a free segment, or its loop is contractible or does not tighten.
+struct TautLoop {
+  Path loop;
+  router::Tightener::Loop taut;
+};
+std::optional<TautLoop> taut_loop(Sketcher& sk, const router::Tightener& tight, bool loops);
 
 // Lattice points of [0, N]^2 that are free with one wedge (where the sketches start, end and bend).
 Path single_wedge_points(const oracle::L1Reference& ref, int N);
@@ -118,6 +127,16 @@ struct Judged {
 // The judged scene, or nullptr when the L1 reference finds problems in it (skipped).
 std::unique_ptr<Judged> judge(const Scene& sc);
 
+// The loops' hand case: the square [40, 60]^2 in [0, 100]^2 judged, a loop once round it, its
+// shortest loop and its cyclic word (j null when the scene is not judged; check taut.status).
+struct SquareLoop {
+  std::unique_ptr<Judged> j;
+  Path once;
+  router::Tightener::Loop taut;
+  std::vector<int> cyclic;
+};
+SquareLoop square_loop();
+
 // A polygon from its vertices in either orientation (counter-clockwise as normalization wants).
 geom::Polygon poly(std::vector<geom::Point> r);
 
@@ -130,5 +149,34 @@ std::vector<geom::Polygon> degenerate_scene(std::mt19937& rng, int kind, int N);
 // A normalized small scene in [0, N]^2: kinds 0 to 4 of degenerate_scene, or kind 5, one to three
 // rectangles that may touch (corners in 1..6, sides 1..3). nullopt when normalization refuses it.
 std::optional<Scene> small_scene(std::mt19937& rng, int kind, int N);
+
+// The small scenes of seeds 1..n, each of the six kinds (small_scene on an mt19937 seeded
+// seed * mul + kind), that the references take: fn(seed, kind, judged scene, its single-wedge
+// lattice points, a 64-bit generator for its sketches). Stops at the first scene with a failure.
+template <class F>
+long long for_each_small_scene(int n, int N, unsigned mul, std::uint64_t sketch_mul, F&& fn) {
+  long long scenes = 0;
+  for (int seed = 1; seed <= n; ++seed) {
+    for (int kind = 0; kind < 6; ++kind) {
+      std::mt19937 rng(static_cast<unsigned>(seed) * mul + static_cast<unsigned>(kind));
+      const std::optional<Scene> scene = small_scene(rng, kind, N);
+      if (!scene) continue;
+      const auto j = judge(*scene);
+      if (!j) continue;
+      EXPECT_TRUE(j->st.t.ok());
+      if (!j->st.t.ok()) return scenes;
+      ++scenes;
+      const Path pts = single_wedge_points(j->ref, N);
+      if (pts.size() < 3) continue;
+      std::mt19937_64 rng64(static_cast<std::uint64_t>(seed) * sketch_mul + static_cast<std::uint64_t>(kind));
+      fn(seed, kind, *j, pts, rng64);
+      if (::testing::Test::HasFailure()) {
+        ADD_FAILURE() << "stopping at the first failing layout (seed " << seed << " kind " << kind << ")";
+        return scenes;
+      }
+    }
+  }
+  return scenes;
+}
 
 }  // namespace taut::test
