@@ -377,18 +377,18 @@ int main(int argc, char** argv) {
                 t_hex / t_tighten, t_hex / t_c[0], hex_missing, hex_pinched, hex_unrounded,
                 static_cast<double>(hex_links) / static_cast<double>(sketches.size() - static_cast<std::size_t>(hex_missing)),
                 hex_moved);
-    std::printf("%9s minimum-link paths of the first 1,000 wires: %.3f s (%.2f ms per wire, %.1f x tightening one), "
+    std::printf("%9s minimum-link paths of the first %zu wires: %.3f s (%.2f ms per wire, %.1f x tightening one), "
                 "%.2f links per wire against %.2f for the shortest, longest coordinate %zu characters\n",
-                "", t_minlink, t_minlink / static_cast<double>(taut_paths.size()) * 1e3,
+                "", taut_paths.size(), t_minlink, t_minlink / static_cast<double>(taut_paths.size()) * 1e3,
                 t_minlink / static_cast<double>(taut_paths.size()) / (t_tighten / static_cast<double>(sketches.size())),
                 static_cast<double>(ml_links) / static_cast<double>(taut_paths.size()),
                 static_cast<double>(taut_links) / static_cast<double>(taut_paths.size()), ml_digits);
     for (int o = 0; o < 2; ++o) {
       const double n = static_cast<double>(taut_paths.size());
-      std::printf("%9s minimum-link %s paths of the first 1,000 wires: %.3f s (%.2f ms per wire, %.1f x tightening one), "
+      std::printf("%9s minimum-link %s paths of the first %zu wires: %.3f s (%.2f ms per wire, %.1f x tightening one), "
                   "%.2f links per wire against %.2f for the shortest %s wire (fewer on %lld), %lld with none, %.1f "
                   "sweeps and %.0f pieces per wire\n",
-                  "", m_sets[o].name().c_str(), ms[o].seconds, ms[o].seconds / n * 1e3,
+                  "", m_sets[o].name().c_str(), taut_paths.size(), ms[o].seconds, ms[o].seconds / n * 1e3,
                   ms[o].seconds / n / (t_tighten / static_cast<double>(sketches.size())),
                   static_cast<double>(ms[o].links) / (n - static_cast<double>(ms[o].none)),
                   static_cast<double>(ms[o].shortest_links) / (n - static_cast<double>(ms[o].none)),
@@ -401,10 +401,10 @@ int main(int argc, char** argv) {
     }
     {
       const double n = static_cast<double>(taut_paths.size()), found = n - static_cast<double>(m3.none);
-      std::printf("%9s minimum-link %s paths of the first 1,000 wires: %.3f s (%.2f ms per wire, %.1f x tightening one, "
+      std::printf("%9s minimum-link %s paths of the first %zu wires: %.3f s (%.2f ms per wire, %.1f x tightening one, "
                   "%.2f x the %s ones), %.2f links per wire, %.2f against %.2f for the exact shortest wire where "
                   "there is one (%lld wires, fewer on %lld), %lld with none, %.1f sweeps per wire\n",
-                  "", hex.name().c_str(), m3.seconds, m3.seconds / n * 1e3,
+                  "", hex.name().c_str(), taut_paths.size(), m3.seconds, m3.seconds / n * 1e3,
                   m3.seconds / n / (t_tighten / static_cast<double>(sketches.size())), m3.seconds / ms[0].seconds,
                   m_sets[0].name().c_str(), static_cast<double>(m3.links) / found,
                   static_cast<double>(m3.shortest_links) / static_cast<double>(std::max(1LL, m3_staircases)),

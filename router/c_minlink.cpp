@@ -53,7 +53,7 @@ struct LatticeKind {
   static Num ny(Dir d) { return Num(d.y); }
   static Dir neg(Dir d) { return {-d.x, -d.y}; }
   static std::array<Dir, 2> cone_steps(const Set& s, int c) { return s.cone_steps(c); }
-  // The step is an integer vector (so p + d is a point): always here.
+  // An integer vector along the step (so p + d is a point): the step itself here.
   static std::optional<Point> integer(Dir d) { return d; }
 };
 
@@ -91,10 +91,10 @@ struct Root3Kind {
     const auto& st = s.steps();
     return {st[static_cast<std::size_t>(c)], st[(static_cast<std::size_t>(c) + 1) % st.size()]};
   }
-  // Only the axis steps ((+-2, 0), (0, +-2)) are integer vectors.
+  // Only the axis steps ((+-2, 0), (0, +-2)) lie along integer vectors: their unit vectors.
   static std::optional<Point> integer(Dir d) {
     if (d.x.b != 0 || d.y.b != 0) return std::nullopt;
-    return Point{static_cast<std::int32_t>(d.x.a), static_cast<std::int32_t>(d.y.a)};
+    return Point{static_cast<std::int32_t>(d.x.a / 2), static_cast<std::int32_t>(d.y.a / 2)};
   }
 };
 

@@ -9,15 +9,22 @@
 //   - it has no more links than the shortest wire of the set with the fewest links
 //     (router::Root3StaircaseBuilder, section 6.4) when that wire's exact links are free and in
 //     the class (checked here the same way; it is a path of the class then);
-//   - an exhaustive search (ThreeLinks below) finds no path with fewer links, and finds one with
-//     as many. It searches the paths whose every link lies on a line of an orientation of the set
-//     through p, q, a blockage vertex or a corner of the domain. Some minimum-link path is such a
-//     path: slide any middle link of a minimum-link path parallel to itself; its neighbours
-//     stretch or shrink along their own lines, the swept region is free until the link meets a
-//     vertex (the first vertex inside that region is met by the link itself), and a neighbour
-//     shrinking to nothing would leave a path with fewer links. So every middle link can be
-//     slid onto a vertex, and the first and last links pass through p and q. The search is
-//     therefore exact: its count is the minimum.
+//   - an exhaustive search (ThreeLinks below) over the paths of up to three links finds exactly
+//     as many links as the path has when it has up to three, and none of three or fewer when it
+//     has more. Its first link leaves p along a ray of the set, its last enters q along one, and
+//     the middle link lies on a line of a third orientation through a candidate point: p, q, a
+//     blockage vertex, a corner of the domain, or a point where a line through p or q meets a
+//     blockage edge or a side of the domain. Why that is every minimum-link path up to three
+//     links, up to sliding: a two-link path's bend is fixed by its two directions. In a three-link
+//     path p X Y q, slide the middle link XY parallel to itself; X moves along p's line, Y along
+//     q's, and the path stays free and in its class until the first of: a vertex touches XY
+//     (also a pinch, where both blockages lie ahead, so the limit path only touches it); X or Y
+//     reaches a blockage edge or a side of the domain on its line (a sloped edge crossing p's
+//     line is met by the bend X first, not by the link); X or Y reaches a vertex on its line; X
+//     reaches p or Y reaches q (then the path has fewer links). Sliding either way ends at one of
+//     these (the domain is bounded), and each leaves XY on a line through a candidate point. The
+//     limit path is in the closed free space and its bends, where at a vertex, are judged by the
+//     same wedge test as the router's. So the search's count is the minimum up to three links.
 // Scenes: the degenerate 9x9 families of the lattice sets' test (sloped triangles, rectangles
 // touching at corners and edges, octilinear shapes, T-pinches, slivers) and rectangles that may
 // touch; sketches are random walks with loops appended (winding one to three times).
@@ -386,6 +393,9 @@ TEST(CMinLink30, RandomSketchesAgainstTheReferences) {
   EXPECT_GE(tot.paths, kSanitized ? 50 : 1000);  // 1,073 here, 88 under the sanitizers
   EXPECT_GE(tot.searched, kSanitized ? 40 : 850);  // 904 here, 81 under the sanitizers
   EXPECT_GE(tot.searched_more, kSanitized ? 1 : 100);  // 169 here
+  // the shortest wire's exact links are a path of the class every time (so the bound above is
+  // never skipped)
+  EXPECT_EQ(tot.staircase_free, tot.staircases);
 }
 
 // Loops in these sets (CMinLinker::loop), judged as the lattice sets' are (c_minlink_test.cpp):
