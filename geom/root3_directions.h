@@ -60,8 +60,8 @@ class Root3Directions {
   bool along(std::int64_t dx, std::int64_t dy) const { return step_along(dx, dy) >= 0; }
   // Which step v lies exactly along (an index into steps()), or -1.
   int step_along(std::int64_t dx, std::int64_t dy) const;
-  // Some cone is wider than 90 degrees (its two steps do not lie in one closed quadrant, as 60
-  // and 120 degrees in c:0,60,120), so a staircase in it leaves the box of its link's ends.
+  // Some cone's two steps do not lie in one closed quadrant (it straddles an axis, as 60 and 120
+  // degrees in c:0,60,120), so a staircase in it leaves the box of its link's ends.
   bool cones_leave_box() const;
   // The open cone holding v's direction (v not zero), or -1 when v lies along a step.
   int cone(std::int64_t dx, std::int64_t dy) const;

@@ -90,6 +90,45 @@ ld angle_of(ld x, ld y) {
 const char* const kSets[] = {"c:0,60,120", "c:30,90,150", "c:0,30,60,90,120,150", "c:0,60", "c:30,90", "c:0,30",
                              "c:0,90,120", "c:60,150"};
 
+// step_along's index and cones_leave_box against the set's degrees (since 2026-12-07; before,
+// exercised only through the staircase builder): an axis vector lies along the step at its angle
+// among the steps sorted counter-clockwise from 0 degrees, if the set has that angle; a cone
+// leaves the box of its ends when its two steps' angles lie in no one closed quadrant.
+TEST(Root3Directions, StepAlongAndConesLeavingTheBox) {
+  int leave = 0, keep = 0, along = 0;
+  for (unsigned mask = 0; mask < 64; ++mask) {
+    const auto set = Root3Directions::from_mask(mask);
+    if (!set) continue;
+    SCOPED_TRACE(set->name());
+    std::vector<int> deg;  // the steps' angles, counter-clockwise from 0
+    for (const int d : set->degrees()) deg.push_back(d), deg.push_back(d + 180);
+    std::sort(deg.begin(), deg.end());
+    ASSERT_EQ(deg.size(), set->steps().size());
+    bool wide = false;
+    for (std::size_t k = 0; k < deg.size(); ++k) {
+      const int lo = deg[k], hi = k + 1 < deg.size() ? deg[k + 1] : deg[0] + 360;
+      wide = wide || hi > lo / 90 * 90 + 90;
+    }
+    EXPECT_EQ(set->cones_leave_box(), wide);
+    (wide ? leave : keep) += 1;
+    const struct {
+      i64 dx, dy;
+      int angle;
+    } axes[] = {{1, 0, 0}, {0, 7, 90}, {-(i64{1} << 39), 0, 180}, {0, -3, 270}};
+    for (const auto& a : axes) {
+      const auto it = std::find(deg.begin(), deg.end(), a.angle);
+      const int want = it == deg.end() ? -1 : static_cast<int>(it - deg.begin());
+      EXPECT_EQ(set->step_along(a.dx, a.dy), want) << a.dx << "," << a.dy;
+      along += want >= 0;
+    }
+    for (const auto& [dx, dy] : {std::pair<i64, i64>{1, 1}, {3, 5}, {-7, 4}, {1000, 1732}, {-1, -1}})
+      EXPECT_EQ(set->step_along(dx, dy), -1) << dx << "," << dy;  // off the axes: irrational tangents
+  }
+  EXPECT_GT(leave, 0);
+  EXPECT_GT(keep, 0);
+  EXPECT_GT(along, 0);
+}
+
 TEST(Root3Directions, ConesAndLengthsAgainstFloatingReferences) {
   std::mt19937_64 rng(3302);
   int cones = 0, alongs = 0;
