@@ -908,7 +908,7 @@ CMinLinkLoopOf<typename G::P> Impl<G>::loop(const geom::FreeSpaceTriangulation& 
   struct Start {
     std::size_t a;
     int kind;    // 0 an edge from v[a], 1 vertex v[a] with direction d, 2 vertex v[a]
-    Point d{0, 0};  // an integer step
+    Point d{0, 0};  // an integer vector along a step (a unit vector: the lattice steps, a 30-degree set's axes)
   };
   std::vector<Start> starts;
   {
@@ -923,7 +923,7 @@ CMinLinkLoopOf<typename G::P> Impl<G>::loop(const geom::FreeSpaceTriangulation& 
       const V u = vec(v[(a + n - 1) % n], x), w = vec(x, v[(a + 1) % n]);
       const int turn = sgn(cross(u, w));
       for (const Dir& step : set.steps()) {
-        // only a step that is an integer vector (v - d and v + d are points to lift)
+        // only a step along an integer vector, taken as its unit vector (v - d and v + d are points to lift)
         const std::optional<Point> id = G::integer(step);
         if (!id) continue;
         const Point d = *id;

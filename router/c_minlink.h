@@ -148,7 +148,7 @@ class CMinLinker {
   CMinLinkLoop loop(std::span<const geom::Point> taut_loop, const geom::LatticeDirections& set,
                     const MinLinkLoop* any_angle = nullptr, std::size_t max_starts = 64) const;
   // The same in a set at multiples of 30 degrees (the vertex starts with a direction use only
-  // the set's axis steps, the integer ones).
+  // the set's axis steps, by their unit vectors: v +- d must be points).
   CMinLinkLoop3 loop(std::span<const geom::Point> taut_loop, const geom::Root3Directions& set,
                      const MinLinkLoop* any_angle = nullptr, std::size_t max_starts = 64) const;
 

@@ -800,7 +800,7 @@ class PieceSolver {
     }
     lim_ = fr.lim;
     // The domain's sides as walls, the outside on their left (clockwise round the domain): the
-    // box [0, U] x [0, V] of a cone wider than 90 degrees (c:0,45's between NE and W, say) reaches
+    // box [0, U] x [0, V] of a cone across an axis (c:0,45's between NE and W, say) reaches
     // out of the box of a and b, and the staircase must not leave the domain there.
     const Box& D = ws.im().domain;
     const std::array<Point, 4> c{Point{D.lo.x, D.lo.y}, Point{D.lo.x, D.hi.y}, Point{D.hi.x, D.hi.y},

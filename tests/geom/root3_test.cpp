@@ -124,6 +124,7 @@ TEST(Root3Directions, StepAlongAndConesLeavingTheBox) {
     for (const auto& [dx, dy] : {std::pair<i64, i64>{1, 1}, {3, 5}, {-7, 4}, {1000, 1732}, {-1, -1}})
       EXPECT_EQ(set->step_along(dx, dy), -1) << dx << "," << dy;  // off the axes: irrational tangents
   }
+  EXPECT_EQ(leave + keep, 56);  // every set: 64 masks, less 7 of fewer than two bits and 0/90 alone
   EXPECT_GT(leave, 0);
   EXPECT_GT(keep, 0);
   EXPECT_GT(along, 0);
