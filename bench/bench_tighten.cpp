@@ -198,11 +198,11 @@ int main(int argc, char** argv) {
           hex_missing = hex_pinched = hex_unrounded = 0;
           hex_links = hex_moved = 0;
           for (const auto& t : taut_paths) {
-            const auto w = sb30.staircase(t, hex, [&](Point p, Point q) { return tight.free(p, q); });
-            const bool ok = w.ok() && tight.tighten(w.points).points == t;
+            const auto w = taut::router::c_oriented(tight, sb30, t, hex);
+            const bool ok = w.ok();
             hex_missing += !ok;
             hex_pinched += !w.ok() && w.why.rfind("no staircase", 0) == 0;
-            hex_unrounded += !w.ok() && w.why.rfind("rounded", 0) == 0;
+            hex_unrounded += !w.ok() && w.why.rfind("rounded to integer vertices, every wire", 0) == 0;
             if (ok) hex_links += static_cast<long long>(w.points.size()) - 1, hex_moved += w.moved;
           }
         },

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "geom/predicates.h"
+#include "router/root3_staircase.h"
 
 namespace taut::router {
 
@@ -673,10 +674,6 @@ std::vector<Point> OnlineTightener::path() const {
   return simplified(out);
 }
 
-namespace {
-
-}  // namespace
-
 COriented c_oriented(const Tightener& tight, const StaircaseBuilder& sb, std::span<const Point> taut,
                      StaircaseStyle style) {
   return c_oriented(tight, sb, taut, lattice_set(style));
@@ -700,6 +697,17 @@ COriented c_oriented(const Tightener& tight, const StaircaseBuilder& sb, std::sp
     return r;
   r.points = std::move(*s);
   return r;
+}
+
+Root3Wire c_oriented(const Tightener& tight, const Root3StaircaseBuilder& sb, std::span<const Point> taut,
+                     const geom::Root3Directions& set) {
+  Root3Wire w = sb.staircase(taut, set, [&](Point p, Point q) { return tight.free(p, q); });
+  if (!w.ok()) return w;
+  const Tightened back = tight.tighten(w.points);
+  if (back.status != TightenStatus::Ok || !std::equal(back.points.begin(), back.points.end(), taut.begin(), taut.end()))
+    w.why = "rounded to integer vertices, its wire in " + set.name() +
+            (back.status != TightenStatus::Ok ? " leaves free space" : " changes its class");
+  return w;
 }
 
 double euclidean_length(std::span<const Point> path) {

@@ -48,7 +48,14 @@
 #include "geom/types.h"
 #include "router/staircase.h"
 
+namespace taut::geom {
+class Root3Directions;
+}  // namespace taut::geom
+
 namespace taut::router {
+
+class Root3StaircaseBuilder;  // router/root3_staircase.h
+struct Root3Wire;
 
 enum class TightenStatus {
   Ok,
@@ -195,6 +202,11 @@ COriented c_oriented(const Tightener& tight, const StaircaseBuilder& sb, std::sp
 // Either throws StaircaseTooFine when sb was built with StaircaseOptions::snap_scale > 1 (staircase.h).
 COriented c_oriented(const Tightener& tight, const StaircaseBuilder& sb, std::span<const geom::Point> taut,
                      const geom::LatticeDirections& set);
+// The same for a set at multiples of 30 degrees (router/root3_staircase.h): the builder's exact
+// wire rounded to integer vertices, its free test the Tightener's lift, and the rounded wire
+// tightened back to `taut` (free and in the class, as above); `why` says what failed.
+Root3Wire c_oriented(const Tightener& tight, const Root3StaircaseBuilder& sb, std::span<const geom::Point> taut,
+                     const geom::Root3Directions& set);
 
 // Where a taut wire must be cut for output in a direction set (Lemma 6.3: every shortest wire in
 // the set passes through its points whose tangent is a direction of the set): the indices of

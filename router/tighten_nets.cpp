@@ -88,15 +88,8 @@ SpaceTightener::Result SpaceTightener::run(std::span<const Point> line) const {
     r.points = std::move(c.points);
   }
   if (sb30_) {
-    // The exact wire rounded; tightening it back to the taut wire checks that it is free and in
-    // the class (as c_oriented does for the lattice sets).
-    Root3Wire w = sb30_->staircase(r.taut.points, *orientations_.set30, [&](Point p, Point q) { return tight_->free(p, q); });
-    if (w.ok()) {
-      const Tightened back = tight_->tighten(w.points);
-      if (back.status != TightenStatus::Ok || back.points != r.taut.points)
-        w.why = "rounded to integer vertices, its wire in " + orientations_.set30->name() +
-                (back.status != TightenStatus::Ok ? " leaves free space" : " changes its class");
-    }
+    // The exact wire rounded, checked by tightening it back to the taut wire
+    Root3Wire w = c_oriented(*tight_, *sb30_, r.taut.points, *orientations_.set30);
     if (!w.ok()) {
       r.no_staircase = true;
       r.why = std::move(w.why);

@@ -443,8 +443,7 @@ router::CMinLinkLoop3 judge_loop(const Judged& j, const Path& taut, const std::v
 // fewer wind round anything), a parallelogram in c:0,60 (two orientations: an even count).
 TEST(CMinLink30Loop, HandCases) {
   const SquareLoop sq = square_loop();
-  ASSERT_TRUE(sq.j && sq.j->st.t.ok());
-  ASSERT_EQ(sq.taut.status, router::TightenStatus::Ok);
+  ASSERT_TRUE(sq.ok());
   const auto& [j, once, l, cyc] = sq;
   LoopTotals tot;
   for (const auto& [name, links] : std::vector<std::pair<const char*, std::size_t>>{
@@ -459,20 +458,11 @@ TEST(CMinLink30Loop, HandCases) {
 TEST(CMinLink30Loop, RandomLoopsAgainstTheReferences) {
   LoopTotals tot;
   long long taut_loops = 0;
-  const long long scenes = for_each_small_scene(
-      static_cast<int>(sanitized_share(12, 12)), 9, 137, 6007,
-      [&](int seed, int kind, const Judged& j, const Path& pts, std::mt19937_64& rng64) {
-        Sketcher sk{j.ref, j.h, pts, rng64};
-        for (int t = 0; t < 4; ++t) {
-          const std::optional<TautLoop> tl = taut_loop(sk, *j.st.tight, t % 2 == 1);
-          if (!tl) continue;
-          const Path& loop = tl->loop;
-          const router::Tightener::Loop& l = tl->taut;
-          ++taut_loops;
-          const std::vector<int> cyc = cyclic_word(j.h.word(loop));
-          const std::string where = "seed " + std::to_string(seed) + " kind " + std::to_string(kind) + " loop " + str(loop);
-          for (const char* name : kSets) judge_loop(j, l.points, cyc, name, where, tot);
-        }
+  const long long scenes = for_each_random_loop(
+      static_cast<int>(sanitized_share(12, 12)), 4,
+      [&](const Judged& j, const Path&, int, const TautLoop& tl, const std::vector<int>& cyc, const std::string& where) {
+        ++taut_loops;
+        for (const char* name : kSets) judge_loop(j, tl.taut.points, cyc, name, where, tot);
       });
   std::printf("%lld scenes, %lld loops not contractible: %lld loops in sets at multiples of 30 degrees (%lld minimal; "
               "%lld starts), %lld with none\n",

@@ -355,8 +355,7 @@ router::CMinLinkLoop judge_loop(const Judged& j, const Path& taut, const std::ve
 
 TEST(CMinLinkLoop, HandCases) {
   const SquareLoop sq = square_loop();
-  ASSERT_TRUE(sq.j && sq.j->st.t.ok());
-  ASSERT_EQ(sq.taut.status, router::TightenStatus::Ok);
+  ASSERT_TRUE(sq.ok());
   const auto& [j, once, l, cyc] = sq;
   LoopTotals tot;
   struct Want {
@@ -400,28 +399,20 @@ TEST(CMinLinkLoop, RandomLoopsAgainstTheReferences) {
   LoopTotals tot;
   long long taut_loops = 0;
   const bool all_sets = std::getenv("TAUT_LOOP_SEARCH_ALL") != nullptr;
-  const long long scenes = for_each_small_scene(
+  const long long scenes = for_each_random_loop(
       // 20 seeds until 2026-12-06 (make test's time on CI: the slowest test of both trees); four
       // loops of each scene of one seed under the sanitizers, where its six took 33 s (9 s now)
-      static_cast<int>(sanitized_share(14, 14)), 9, 137, 6007,
-      [&](int seed, int kind, const Judged& j, const Path& pts, std::mt19937_64& rng64) {
-        Sketcher sk{j.ref, j.h, pts, rng64};
-        for (int t = 0; t < (kSanitized ? 4 : 6); ++t) {
-          const std::optional<TautLoop> tl = taut_loop(sk, *j.st.tight, t % 2 == 1);
-          if (!tl) continue;
-          const Path& loop = tl->loop;
-          const router::Tightener::Loop& l = tl->taut;
-          ++taut_loops;
-          const std::vector<int> cyc = cyclic_word(j.h.word(loop));
-          const std::string where = "seed " + std::to_string(seed) + " kind " + std::to_string(kind) + " (" +
-                                    scene_str(j.sc) + ") loop " + str(loop);
-          for (unsigned mask = 1; mask < 16; ++mask) {
-            const auto set = geom::LatticeDirections::from_mask(mask);
-            if (!set) continue;
-            // the search in rectilinear, and in octilinear on the first loop of each scene
-            const bool search = all_sets || set->name() == "rectilinear" || (t == 0 && set->name() == "octilinear");
-            judge_loop(j, l.points, cyc, *set, where, tot, search ? &pts : nullptr);
-          }
+      static_cast<int>(sanitized_share(14, 14)), kSanitized ? 4 : 6,
+      [&](const Judged& j, const Path& pts, int t, const TautLoop& tl, const std::vector<int>& cyc,
+          const std::string& where0) {
+        ++taut_loops;
+        const std::string where = where0 + " (" + scene_str(j.sc) + ")";
+        for (unsigned mask = 1; mask < 16; ++mask) {
+          const auto set = geom::LatticeDirections::from_mask(mask);
+          if (!set) continue;
+          // the search in rectilinear, and in octilinear on the first loop of each scene
+          const bool search = all_sets || set->name() == "rectilinear" || (t == 0 && set->name() == "octilinear");
+          judge_loop(j, tl.taut.points, cyc, *set, where, tot, search ? &pts : nullptr);
         }
       });
   std::printf("%lld scenes, %lld loops not contractible: %lld loops in lattice sets (%lld minimal, %lld above the lower "

@@ -20,6 +20,7 @@
 #include "router/staircase.h"
 #include "router/tighten.h"
 #include "support/sketcher.h"
+#include "support/taut_check.h"
 #include "support/wavefront_hand.h"
 
 namespace taut::test {
@@ -134,6 +135,7 @@ struct SquareLoop {
   Path once;
   router::Tightener::Loop taut;
   std::vector<int> cyclic;
+  bool ok() const { return j && j->st.t.ok() && taut.status == router::TightenStatus::Ok; }
 };
 SquareLoop square_loop();
 
@@ -177,6 +179,26 @@ long long for_each_small_scene(int n, int N, unsigned mul, std::uint64_t sketch_
     }
   }
   return scenes;
+}
+
+// The loop tests' random loops: on the small scenes of seeds 1..n (for_each_small_scene with
+// mul 137 and sketch_mul 6007), `per_scene` closed walks each, loops appended to every second;
+// fn(judged scene, its single-wedge points, the walk's index t, the walk and its shortest loop,
+// the walk's cyclic word, "seed S kind K loop ...") for each walk that closes and is not
+// contractible. Returns the scenes.
+template <class F>
+long long for_each_random_loop(int n, int per_scene, F&& fn) {
+  return for_each_small_scene(n, 9, 137, 6007,
+                              [&](int seed, int kind, const Judged& j, const Path& pts, std::mt19937_64& rng64) {
+                                Sketcher sk{j.ref, j.h, pts, rng64};
+                                for (int t = 0; t < per_scene; ++t) {
+                                  const std::optional<TautLoop> tl = taut_loop(sk, *j.st.tight, t % 2 == 1);
+                                  if (!tl) continue;
+                                  fn(j, pts, t, *tl, cyclic_word(j.h.word(tl->loop)),
+                                     "seed " + std::to_string(seed) + " kind " + std::to_string(kind) + " loop " +
+                                         str(tl->loop));
+                                }
+                              });
 }
 
 }  // namespace taut::test
