@@ -47,6 +47,7 @@
 #include "router/root3_staircase.h"
 #include "router/tighten.h"
 #include "support/sanitized.h"
+#include "support/q3_of.h"
 #include "support/sketcher.h"
 #include "support/taut_check.h"
 #include "support/taut_scenes.h"
@@ -79,13 +80,6 @@ Q3 cross(const Q3Point& a, const Q3Point& b) { return a.x * b.y - a.y * b.x; }
 Q3 dot(const Q3Point& a, const Q3Point& b) { return a.x * b.x + a.y * b.y; }
 Q3Point minus(const Q3Point& a, const Q3Point& b) { return {a.x - b.x, a.y - b.y}; }
 
-Q3 q3of(const router::RationalRoot3& v) {
-  mpq_class a(v.a.str()), b(v.b.str());
-  a.canonicalize();
-  b.canonicalize();
-  return {a, b};
-}
-Q3Point q3of(const router::R3Point& p) { return {q3of(p.x), q3of(p.y)}; }
 
 std::string str3(const std::vector<Q3Point>& path) {
   std::string s;

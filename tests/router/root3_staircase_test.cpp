@@ -31,6 +31,7 @@
 #include "oracle/l1_oracle.h"
 #include "oracle/union_oracle.h"
 #include "router/tighten.h"
+#include "support/q3_of.h"
 #include "support/reach.h"
 #include "support/sanitized.h"
 #include "support/sketcher.h"
@@ -42,9 +43,7 @@ namespace taut::test {
 namespace root3_staircase_test {
 
 using geom::Point;
-using R3 = router::RationalRoot3;
-
-R3 exact(const geom::Root3& r) { return R3(router::Rational(r.a), router::Rational(r.b)); }
+using oracle::Q3;
 
 const char* const kSets[] = {"c:0,60,120", "c:30,90,150", "c:0,30,60,90,120,150", "c:0,60", "c:0,90,150"};
 
@@ -105,27 +104,25 @@ void check_seed(std::uint64_t seed, Totals& tot) {
       // the exact wire: from the taut wire's start to its end, every link along a step, as long
       // as the taut wire in the set's convex distance
       ASSERT_GE(w.exact.size(), 1u) << where;
-      EXPECT_TRUE(w.exact.front().x == R3(router::Rational(taut.front().x)) &&
-                  w.exact.front().y == R3(router::Rational(taut.front().y)) &&
-                  w.exact.back().x == R3(router::Rational(taut.back().x)) &&
-                  w.exact.back().y == R3(router::Rational(taut.back().y)))
+      EXPECT_TRUE(q3of(w.exact.front()) == oracle::q3(taut.front()) && q3of(w.exact.back()) == oracle::q3(taut.back()))
           << where;
-      R3 len, want;
+      Q3 len, want;
       for (std::size_t i = 1; i < w.exact.size(); ++i) {
-        const R3 dx = w.exact[i].x - w.exact[i - 1].x, dy = w.exact[i].y - w.exact[i - 1].y;
+        const oracle::Q3Point a = q3of(w.exact[i - 1]), b = q3of(w.exact[i]);
+        const Q3 dx = b.x - a.x, dy = b.y - a.y;
         bool along = false;
         for (const auto& s : set->steps())
-          if ((dy * exact(s.x) - dx * exact(s.y)).sign() == 0 && (dx * exact(s.x) + dy * exact(s.y)).sign() > 0) {
+          if ((dy * q3of(s.x) - dx * q3of(s.y)).sign() == 0 && (dx * q3of(s.x) + dy * q3of(s.y)).sign() > 0) {
             along = true;
-            len = len + (dx * exact(s.x) + dy * exact(s.y)) / R3(router::Rational(2));
+            len = len + (dx * q3of(s.x) + dy * q3of(s.y)) / Q3(2);
           }
         ASSERT_TRUE(along) << where << ": link " << i << " is not along a direction of the set";
       }
       for (std::size_t i = 1; i < taut.size(); ++i)
-        want = want + exact(set->length12(std::int64_t{taut[i].x} - taut[i - 1].x, std::int64_t{taut[i].y} - taut[i - 1].y)) /
-                          R3(router::Rational(12));
-      ASSERT_TRUE(len == want) << where << ": the exact wire is " << len.to_double() << " long, the taut wire "
-                               << want.to_double() << " in the set";
+        want = want + q3of(set->length12(std::int64_t{taut[i].x} - taut[i - 1].x, std::int64_t{taut[i].y} - taut[i - 1].y)) /
+                          Q3(12);
+      ASSERT_TRUE(len == want) << where << ": the exact wire is " << len.str() << " long, the taut wire " << want.str()
+                               << " in the set";
       tot.links += static_cast<long long>(w.exact.size()) - 1;
       // the fewest links do not depend on the end it is built from: the reversed taut wire's
       // exact wire has as many (a necessary condition; the greedy and the DP run from the start)
@@ -195,7 +192,8 @@ TEST(Root3Staircase, WideConeAtTheCoordinateLimit) {
 }
 
 // router::sign_wide (NetsTightener's comparison of summed lengths past 2^61) against the sign of
-// the same number built from decimal strings in GMP rationals (RationalRoot3::sign): random
+// the same number built from decimal strings in the references' own GMP rationals (oracle::Q3,
+// since 2026-12-07; before, the router's RationalRoot3::sign, the rule it checks): random
 // values up to 2^120, and Pell near-ties x - y sqrt3 (x^2 - 3 y^2 = 1, just above 0) scaled up to
 // that size, with both signs.
 std::string decimal(__int128 v) {
@@ -207,7 +205,7 @@ std::string decimal(__int128 v) {
   return neg ? "-" + s : s;
 }
 int reference_sign(__int128 a, __int128 b) {
-  return R3(router::Rational(boost::multiprecision::mpz_int(decimal(a))), router::Rational(boost::multiprecision::mpz_int(decimal(b)))).sign();
+  return Q3(mpq_class(decimal(a)), mpq_class(decimal(b))).sign();
 }
 TEST(Root3Staircase, WideSignAgainstRationals) {
   std::mt19937_64 rng(2026120801);
