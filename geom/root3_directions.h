@@ -23,6 +23,7 @@
 // which lies in Z[sqrt3] (the cross product of two steps is 2, 2 sqrt3 or 4).
 #pragma once
 
+#include <array>
 #include <optional>
 #include <span>
 #include <string>
@@ -65,6 +66,10 @@ class Root3Directions {
   bool cones_leave_box() const;
   // The open cone holding v's direction (v not zero), or -1 when v lies along a step.
   int cone(std::int64_t dx, std::int64_t dy) const;
+  // The cone's two steps (counter-clockwise order), as LatticeDirections::cone_steps.
+  std::array<Step, 2> cone_steps(int cone) const {
+    return {steps_[static_cast<std::size_t>(cone)], steps_[(static_cast<std::size_t>(cone) + 1) % steps_.size()]};
+  }
   // Twelve times the length of the shortest path in the set from 0 to (dx, dy) (|dx|, |dy| <
   // 2^40).
   Root3 length12(std::int64_t dx, std::int64_t dy) const;

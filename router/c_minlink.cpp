@@ -10,7 +10,6 @@
 #include <utility>
 
 #include "router/minlink.h"
-#include "router/root3_staircase.h"  // R3Point
 #include "router/tighten.h"
 
 namespace taut::router {
@@ -52,7 +51,7 @@ struct LatticeKind {
   static Num nx(Dir d) { return Num(d.x); }
   static Num ny(Dir d) { return Num(d.y); }
   static Dir neg(Dir d) { return {-d.x, -d.y}; }
-  static std::array<Dir, 2> cone_steps(const Set& s, int c) { return s.cone_steps(c); }
+  static bool is(const Num& x, std::int32_t v) { return x == v; }
   // An integer vector along the step (so p + d is a point): the step itself here.
   static std::optional<Point> integer(Dir d) { return d; }
 };
@@ -82,15 +81,15 @@ struct Root3Kind {
     return {s.a + t.a, s.b + t.b};
   }
   static int sgn(Ex v) { return sign_wide<3>(v.a, v.b); }
-  static Num num(Ex v) { return Num(Rational(to_mpz(v.a)), Rational(to_mpz(v.b))); }
+  // Every Ex below is a step (coordinates at most 2 in Z[sqrt3]) against an integer vector (or
+  // two steps): both parts fit in 64 bits.
+  static Num num(Ex v) { return Num(Rational(static_cast<i64>(v.a)), Rational(static_cast<i64>(v.b))); }
+  // The number is the integer v (its sqrt3 part zero).
+  static bool is(const Num& x, std::int32_t v) { return x.b.sign() == 0 && x.a == v; }
   static Num num(i64 v) { return Num(Rational(v)); }
   static Num nx(Dir d) { return Num(d.x); }
   static Num ny(Dir d) { return Num(d.y); }
   static Dir neg(Dir d) { return {-d.x, -d.y}; }
-  static std::array<Dir, 2> cone_steps(const Set& s, int c) {
-    const auto& st = s.steps();
-    return {st[static_cast<std::size_t>(c)], st[(static_cast<std::size_t>(c) + 1) % st.size()]};
-  }
   // Only the axis steps ((+-2, 0), (0, +-2)) lie along integer vectors: their unit vectors.
   static std::optional<Point> integer(Dir d) {
     if (d.x.b != 0 || d.y.b != 0) return std::nullopt;
@@ -202,7 +201,7 @@ struct Impl {
   static Q off(Dir d, const RP& x) { return G::nx(d) * x.y - G::ny(d) * x.x; }
   static Ex off(Dir d, Point v) { return G::cross(G::ev(d), G::ev(V{v.x, v.y})); }
   static Q qcross(const Q& ax, const Q& ay, const Q& bx, const Q& by) { return ax * by - ay * bx; }
-  static bool equal(const RP& a, Point b) { return a.x == num(b.x) && a.y == num(b.y); }
+  static bool equal(const RP& a, Point b) { return G::is(a.x, b.x) && G::is(a.y, b.y); }
   // cross and dot of steps and integer vectors, as signs or exact values
   template <class A, class B>
   static Ex cr(A a, B b) {
@@ -695,7 +694,7 @@ CMinLinkPathOf<typename G::P> Impl<G>::path(const geom::FreeSpaceTriangulation& 
       frontier = {0};
       progress = num(1);
     } else {
-      const auto [u, v] = G::cone_steps(set, set.cone(d0.x, d0.y));
+      const auto [u, v] = set.cone_steps(set.cone(d0.x, d0.y));
       segs.push_back(wk.make_seg(rp(p), 0, u, +1, rp(p), -1));
       segs.push_back(wk.make_seg(rp(p), 0, v, -1, rp(p), -1));
       frontier = {0, 1};

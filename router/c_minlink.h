@@ -70,7 +70,7 @@
 #include "geom/triangulation.h"
 #include "geom/types.h"
 #include "router/minlink.h"  // MinLinkLoop
-#include "router/root3_staircase.h"  // R3Point
+#include "router/rational_root.h"  // R3Point
 #include "router/spm.h"  // Rational, RPoint
 
 namespace taut::router {

@@ -51,7 +51,7 @@ struct RationalRoot {
   // Rational operands (b = 0: most points and parameters are) skip the products with b: the same
   // exact values with fewer GMP operations (since 2026-12-07).
   friend RationalRoot operator*(const RationalRoot& x, const RationalRoot& y) {
-    if (y.b.sign() == 0) return {x.a * y.a, x.b * y.a};
+    if (y.b.sign() == 0) return x.b.sign() == 0 ? RationalRoot(x.a * y.a) : RationalRoot(x.a * y.a, x.b * y.a);
     if (x.b.sign() == 0) return {x.a * y.a, x.a * y.b};
     return {x.a * y.a + N * x.b * y.b, x.a * y.b + x.b * y.a};
   }
@@ -93,6 +93,12 @@ struct RationalRoot {
 };
 using RationalRoot2 = RationalRoot<2>;
 using RationalRoot3 = RationalRoot<3>;
+
+// A point in Q(sqrt3)^2: the exact vertices of wires in a set at multiples of 30 degrees.
+struct R3Point {
+  RationalRoot3 x, y;
+  friend bool operator==(const R3Point&, const R3Point&) = default;
+};
 
 // An __int128 as a GMP integer (two 64-bit halves: mpz has no __int128 constructor).
 inline boost::multiprecision::mpz_int to_mpz(__int128 v) {

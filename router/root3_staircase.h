@@ -53,10 +53,6 @@
 
 namespace taut::router {
 
-struct R3Point {
-  RationalRoot3 x, y;
-  friend bool operator==(const R3Point&, const R3Point&) = default;
-};
 
 struct Root3Wire {
   std::vector<geom::Point> points;  // the exact wire rounded (repeated points dropped)

@@ -65,13 +65,6 @@ std::vector<geom::Point> taut_of(const router::Tightener& t, const std::vector<g
   return std::move(r.points);
 }
 
-// The direction set --min-link also finds minimum-link paths in (none, or one of the two kinds).
-struct MinLinkSet {
-  std::optional<geom::LatticeDirections> lattice;
-  std::optional<geom::Root3Directions> root3;
-  explicit operator bool() const { return lattice || root3; }
-};
-
 // Exact coordinates as text: "p/q" (or "p"), and a + b sqrt3 as "A+B*sqrt3" or "A-B*sqrt3" with A
 // and B so written (A always there, "0" too).
 std::string exact_text(const router::Rational& v) { return v.str(); }
@@ -109,11 +102,11 @@ struct NetTightening {
   // adds the minimum-link path of a taut line, or the minimum-link loop when is_loop; and with a
   // direction set, the minimum-link path in it
   void add_min_link(const router::MinLinker& ml, std::span<const geom::Point> taut, bool is_loop,
-                    const geom::FreeSpaceTriangulation& t, const MinLinkSet& set) {
+                    const geom::FreeSpaceTriangulation& t, const router::TightenOrientations& set) {
     std::optional<router::MinLinkLoop> any_loop;  // the any-angle loop: also the bound of the set's
     if (is_loop) any_loop = ml.loop(taut);
-    if (set.lattice) add_oriented(t, taut, is_loop, *set.lattice, any_loop ? &*any_loop : nullptr);
-    if (set.root3) add_oriented(t, taut, is_loop, *set.root3, any_loop ? &*any_loop : nullptr);
+    if (set.set) add_oriented(t, taut, is_loop, *set.set, any_loop ? &*any_loop : nullptr);
+    if (set.set30) add_oriented(t, taut, is_loop, *set.set30, any_loop ? &*any_loop : nullptr);
     if (is_loop) {
       router::MinLinkLoop& l = *any_loop;
       min_links_proven = min_links_proven && l.minimal;
@@ -265,13 +258,6 @@ void add_tighten(CLI::App& app, int& status) {
       }
     }
     const bool c_oriented = orientations != "any";
-    // --min-link in a direction set also finds the minimum-link paths in it (in a set at
-    // multiples of 30 degrees since 2026-12-07: before, the one at any angle alone, TIGHTEN-0015)
-    MinLinkSet min_link_set;
-    if (args->min_link && c_oriented) {
-      min_link_set.lattice = geom::LatticeDirections::parse(orientations);
-      if (!min_link_set.lattice) min_link_set.root3 = geom::Root3Directions::parse(orientations);
-    }
 
     // What each net tightens: its sketch, else its routed wires.
     struct Input {
@@ -319,6 +305,9 @@ void add_tighten(CLI::App& app, int& status) {
     // are longer (TIGHTEN-0014, since 2026-12-05).
     // (per input: routed wires with a segment outside the output's directions; `any` has none)
     const router::TightenOrientations out_orientations = tighten_orientations(orientations);
+    // --min-link in a direction set also finds the minimum-link paths in it (in a set at
+    // multiples of 30 degrees since 2026-12-07: before, the one at any angle alone, TIGHTEN-0015)
+    const router::TightenOrientations min_link_set = args->min_link ? out_orientations : router::TightenOrientations{};
     const std::optional<geom::Root3Directions>& out_set30 = out_orientations.set30;
     // A staircase in a cone of two steps that do not bracket the link's box, as in c:0,45 (NE and
     // W round north) or c:45,135 (NE and SE round east), leaves the box of its ends: (0,0) to
@@ -864,7 +853,7 @@ void add_tighten(CLI::App& app, int& status) {
                           "\" fill=\"none\" stroke=\"#111111\" stroke-width=\"@1.5\" stroke-dasharray=\"@5 @2 @1 @2\"/>\n";
         }
       so.caption = !args->min_link ? "tightened (input dashed)"
-                   : min_link_set ? "tightened (input dashed, minimum-link dotted red, minimum-link in " + orientations +
+                   : min_link_set.c_oriented() ? "tightened (input dashed, minimum-link dotted red, minimum-link in " + orientations +
                                         " dash-dotted black)"
                                   : "tightened (input dashed, minimum-link dotted red)";
       svg = io::layout_to_svg(out, so);
@@ -912,7 +901,7 @@ void add_tighten(CLI::App& app, int& status) {
             nets.back()["min_links_at_most"] = s.min_links;
           }
           nets.back()["min_link_wires"] = paths;
-          if (min_link_set) {
+          if (min_link_set.c_oriented()) {
             // the same in the output's directions (section 6.3); null when some wire has none
             nlohmann::ordered_json opaths = nlohmann::ordered_json::array();
             for (const NetTightening::OrientedPath& m : s.oriented_min_link) {
@@ -965,7 +954,7 @@ void add_tighten(CLI::App& app, int& status) {
           else
             std::cerr << ", minimum links " << s.min_links_at_least << " to " << s.min_links
                       << " (a convex loop's minimum is not proven)";
-          if (min_link_set && s.oriented_none.empty()) {
+          if (min_link_set.c_oriented() && s.oriented_none.empty()) {
             std::cerr << " (" << orientations << ": ";
             if (!s.oriented_proven) std::cerr << s.oriented_at_least << " to ";
             std::cerr << s.oriented_min_links << ")";

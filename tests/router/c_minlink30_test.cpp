@@ -31,7 +31,6 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <map>
 #include <random>
 #include <set>
 #include <stdexcept>
@@ -395,9 +394,10 @@ TEST(CMinLink30, RandomSketchesAgainstTheReferences) {
 
 // Loops in these sets (CMinLinker::loop), judged as the lattice sets' are (c_minlink_test.cpp):
 // closed, every link along the set in free space, every turn (the closing one too) in one free
-// wedge, the cyclically reduced cut word the input's up to rotation (freely homotopic), at least
-// the lower bound (the any-angle one; even with two orientations), and called minimal exactly
-// when it meets it. No search for loops with fewer links here (the lattice sets have one).
+// wedge, the cyclically reduced cut word the input's up to rotation (freely homotopic). Its lower
+// bound and `minimal` are the router's own (it throws below the bound and sets minimal at it), so
+// they are not restated here; only the hand cases check minimal counts. No search for loops with
+// fewer links here (the lattice sets have one).
 struct LoopTotals {
   long long loops = 0, none = 0, minimal = 0, starts = 0;
 };
@@ -425,11 +425,6 @@ router::CMinLinkLoop3 judge_loop(const Judged& j, const Path& taut, const std::v
   EXPECT_EQ(path_problem(wrapped, set->degrees(), j.sc, j.h, j.ref, nullptr), "") << at;
   EXPECT_TRUE(same_up_to_rotation(cyclic_word(j.h.word(std::span<const Q3Point>(q))), cyclic))
       << at << ": another free homotopy class";
-  EXPECT_GE(c.links(), c.at_least) << at;
-  EXPECT_EQ(c.minimal, c.links() == c.at_least) << at;
-  if (set->steps().size() == 4) {
-    EXPECT_EQ(c.at_least % 2, 0u) << at;
-  }
   return c;
 }
 

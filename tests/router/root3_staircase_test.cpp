@@ -92,7 +92,7 @@ void check_seed(std::uint64_t seed, Totals& tot) {
       const auto set = geom::Root3Directions::parse(name);
       const std::string where = "seed " + std::to_string(seed) + " (" + c.family + ") " + name + " taut " + str(taut);
       const router::Root3Wire w = b.staircase(taut, *set, [&](Point p, Point q) {
-        return st.tight->tighten(Path{p, q}).status == router::TightenStatus::Ok;
+        return st.tight->free(p, q);
       });
       if (!w.ok()) {
         ++tot.missing;
@@ -129,7 +129,7 @@ void check_seed(std::uint64_t seed, Totals& tot) {
       {
         const Path rev(taut.rbegin(), taut.rend());
         const router::Root3Wire wr = b.staircase(rev, *set, [&](Point p, Point q) {
-          return st.tight->tighten(Path{p, q}).status == router::TightenStatus::Ok;
+          return st.tight->free(p, q);
         });
         ++tot.reversed;
         if (!wr.ok() || wr.exact.size() != w.exact.size()) {
@@ -179,7 +179,7 @@ TEST(Root3Staircase, WideConeAtTheCoordinateLimit) {
   ASSERT_EQ(set->cone(std::int64_t{b.x} - a.x, std::int64_t{b.y} - a.y), 1);  // between 30 and 180 degrees
   const router::Root3StaircaseBuilder builder(domain, obstacles);
   const router::Root3Wire w = builder.staircase(r.points, *set, [&](Point p, Point q) {
-    return st.tight->tighten(Path{p, q}).status == router::TightenStatus::Ok;
+    return st.tight->free(p, q);
   });
   ASSERT_TRUE(w.ok()) << w.why;
   const oracle::L1Reference ref(domain, obstacles);

@@ -6,7 +6,6 @@
 
 #include "geom/predicates.h"
 #include "support/random_shapes.h"
-#include "support/taut_check.h"
 
 namespace taut::test {
 

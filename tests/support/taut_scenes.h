@@ -129,7 +129,7 @@ struct Judged {
 std::unique_ptr<Judged> judge(const Scene& sc);
 
 // The loops' hand case: the square [40, 60]^2 in [0, 100]^2 judged, a loop once round it, its
-// shortest loop and its cyclic word (j null when the scene is not judged; check taut.status).
+// shortest loop and its cyclic word (ok(): the scene judged and the loop tightened).
 struct SquareLoop {
   std::unique_ptr<Judged> j;
   Path once;
