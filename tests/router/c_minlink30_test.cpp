@@ -25,6 +25,15 @@
 //     these (the domain is bounded), and each leaves XY on a line through a candidate point. The
 //     limit path is in the closed free space and its bends, where at a vertex, are judged by the
 //     same wedge test as the router's. So the search's count is the minimum up to three links.
+//   - the shortest wire of the set (its exact links; section 6.4 claims it has the fewest links
+//     among the shortest wires of the class) against the same search restricted to the paths as
+//     long as it (the sum of the links' lengths, exact in Q(sqrt3)): up to three links the counts
+//     are equal, above it finds none of three or fewer, and it never finds a shorter path. A
+//     shortest path slid as above keeps its length (the length is linear in the slide: constant,
+//     or the path is already pinned on the side that would shorten it), so the same candidates
+//     hold a shortest one with the fewest links. (Mutations: the builder's greedy from one first
+//     direction only, or its DP without the credit for a link continuing across a cut, each fail
+//     this at once.)
 // Scenes: the degenerate 9x9 families of the lattice sets' test (sloped triangles, rectangles
 // touching at corners and edges, octilinear shapes, T-pinches, slivers) and rectangles that may
 // touch; sketches are random walks with loops appended (winding one to three times).
@@ -201,11 +210,35 @@ class ThreeLinks {
       }
   }
 
-  // The fewest links (1 to 3) of such a path from p to q with cut word `word`; -1 when none.
-  int fewest(const std::vector<int>& word) const {
-    auto ok = [&](const std::vector<Q3Point>& path) { return j_.h.word(std::span<const Q3Point>(path)) == word; };
+  struct Found {
+    int fewest = -1;     // the fewest links of a path of the class, -1 when none up to three
+    int fewest_at = -1;  // the fewest of one whose length is `shortest`, -1 when none
+    bool shorter = false;  // a path of the class shorter than `shortest` was seen
+  };
+  // The paths from p to q with cut word `word` of 1 to 3 links, in increasing count: the fewest
+  // links; given a `shortest` length (the sum of the links' lengths, each exactly along the set),
+  // also the fewest links at that length. The slide of the top of the file keeps a shortest
+  // path's length (its length is linear in the slide, so it is constant along the slide or the
+  // path is already pinned on the side that would shorten it), so the candidates hold a shortest
+  // path with the fewest links up to three too. Stops after the count where both are found.
+  Found search(const std::vector<int>& word, const std::optional<Q3>& shortest) const {
+    Found f;
+    auto done = [&] { return f.fewest > 0 && (!shortest || f.fewest_at > 0); };
+    // A candidate of `links` links already known to be a path of the set with its turns in free
+    // wedges: judged only when it could change the answer.
+    auto take = [&](int links, const std::vector<Q3Point>& path, auto&& free_links) {
+      std::optional<Q3> len;
+      if (shortest) len = length(path);
+      const bool at = len && *len == *shortest && f.fewest_at < 0, below = len && *len < *shortest && !f.shorter;
+      if (f.fewest > 0 && !at && !below) return;
+      if (!free_links() || j_.h.word(std::span<const Q3Point>(path)) != word) return;
+      if (f.fewest < 0) f.fewest = links;
+      if (at) f.fewest_at = links;
+      if (below) f.shorter = true;
+    };
     for (const Q3Point& u : units_)
-      if (cross(u, minus(q_, p_)).sign() == 0 && free(p_, q_) && ok({p_, q_})) return 1;
+      if (cross(u, minus(q_, p_)).sign() == 0) take(1, {p_, q_}, [&] { return free(p_, q_); });
+    if (done()) return f;
     // X = p + a u1 = q + b u2 with a, b > 0, within both reaches
     for (const Ray& r1 : rays_p_)
       for (const Ray& r2 : rays_q_) {
@@ -213,8 +246,9 @@ class ThreeLinks {
         const auto x = meet(p_, r1.u, q_, r2.u);
         if (!x || x->first.sign() <= 0 || x->second.sign() <= 0 || x->first > r1.reach || x->second > r2.reach) continue;
         const Q3Point X = at(p_, r1.u, x->first);
-        if (turn_ok(j_.ref, X, r1.u, neg(r2.u)) && ok({p_, X, q_})) return 2;
+        if (turn_ok(j_.ref, X, r1.u, neg(r2.u))) take(2, {p_, X, q_}, [] { return true; });
       }
+    if (done()) return f;
     for (const Ray& r1 : rays_p_)
       for (const Ray& r2 : rays_q_)
         for (const auto& [o, c] : middle_) {
@@ -225,9 +259,23 @@ class ThreeLinks {
           if (X == Y) continue;
           const Q3Point m = minus(Y, X);
           if (!turn_ok(j_.ref, X, r1.u, m) || !turn_ok(j_.ref, Y, m, neg(r2.u))) continue;
-          if (free(X, Y) && ok({p_, X, Y, q_})) return 3;
+          take(3, {p_, X, Y, q_}, [&] { return free(X, Y); });
         }
-    return -1;
+    return f;
+  }
+  // A path's length: each link's, |dot(link, 2 u)| / 2 for the orientation u it runs along.
+  Q3 length(const std::vector<Q3Point>& path) const {
+    Q3 sum(0);
+    for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+      const Q3Point d = minus(path[i + 1], path[i]);
+      for (const Q3Point& u : units_)
+        if (cross(u, d).sign() == 0) {
+          const Q3 t = dot(u, d) / Q3(2);
+          sum = sum + (t.sign() < 0 ? -t : t);
+          break;
+        }
+    }
+    return sum;
   }
   std::size_t middle_lines() const { return middle_.size(); }
 
@@ -296,7 +344,7 @@ class ThreeLinks {
 
 struct Totals {
   long long paths = 0, none = 0, links = 0, irrational_bends = 0, sweeps = 0, staircases = 0, staircase_free = 0,
-            fewer_than_staircase = 0, searched = 0, searched_more = 0;
+            fewer_than_staircase = 0, searched = 0, searched_more = 0, shortest_searched = 0, shortest_searched_more = 0;
 };
 
 // One sketch's taut path in every set, judged as at the top of the file.
@@ -320,7 +368,7 @@ void judge_sketch(const Judged& j, const Path& sketch, const Path& taut, const s
     if (!c.ok()) {
       ++tot.none;
       if (search) {
-        EXPECT_EQ(ThreeLinks(j, degrees, sketch.front(), sketch.back()).fewest(word), -1)
+        EXPECT_EQ(ThreeLinks(j, degrees, sketch.front(), sketch.back()).search(word, std::nullopt).fewest, -1)
             << at << ": no path (" << c.why << "), but the search finds one";
       }
       continue;
@@ -337,26 +385,43 @@ void judge_sketch(const Judged& j, const Path& sketch, const Path& taut, const s
     // the shortest wire of the set with the fewest links, when its exact links are a path of the class
     const router::Root3Wire sw =
         builder.staircase(taut, *set, [&](Point a, Point b) { return j.st.tight->free(a, b); });
+    std::vector<Q3Point> ex;  // the shortest wire's exact links, when they are a path of the class
     if (sw.ok()) {
       ++tot.staircases;
-      std::vector<Q3Point> ex;
       for (const router::R3Point& x : sw.exact) ex.push_back(q3of(x));
       if (ex.size() >= 2 && path_problem(ex, degrees, j.sc, j.h, j.ref, &word).empty()) {
         ++tot.staircase_free;
         const int sl = static_cast<int>(ex.size()) - 1;
         EXPECT_LE(links, sl) << at << " path " << str3(path) << " staircase " << str3(ex);
         tot.fewer_than_staircase += links < sl;
+      } else {
+        ex.clear();
       }
     }
     if (search) {
+      const ThreeLinks three(j, degrees, sketch.front(), sketch.back());
+      const auto f = three.search(word, ex.empty() ? std::nullopt : std::optional<Q3>(three.length(ex)));
       // up to three links the search's count is the minimum; above, it must find none
-      const int f = ThreeLinks(j, degrees, sketch.front(), sketch.back()).fewest(word);
       if (links <= 3) {
         ++tot.searched;
-        EXPECT_EQ(f, links) << at << ": the search's fewest (-1: none) against the path " << str3(path);
+        EXPECT_EQ(f.fewest, links) << at << ": the search's fewest (-1: none) against the path " << str3(path);
       } else {
         ++tot.searched_more;
-        EXPECT_EQ(f, -1) << at << ": the search finds " << f << " links against the path " << str3(path);
+        EXPECT_EQ(f.fewest, -1) << at << ": the search finds " << f.fewest << " links against the path " << str3(path);
+      }
+      // the same for the shortest wire among the paths as long as it; none is shorter
+      if (!ex.empty()) {
+        const int sl = static_cast<int>(ex.size()) - 1;
+        if (sl <= 3) {
+          ++tot.shortest_searched;
+          EXPECT_EQ(f.fewest_at, sl) << at << ": the search's fewest at the shortest wire's length (-1: none) "
+                                     << "against the shortest wire " << str3(ex);
+        } else {
+          ++tot.shortest_searched_more;
+          EXPECT_EQ(f.fewest_at, -1) << at << ": the search finds " << f.fewest_at
+                                     << " links at the shortest wire's length against " << str3(ex);
+        }
+        EXPECT_FALSE(f.shorter) << at << ": the search finds a path shorter than the shortest wire " << str3(ex);
       }
     }
   }
@@ -380,12 +445,16 @@ TEST(CMinLink30, RandomSketchesAgainstTheReferences) {
       });
   std::printf("%lld scenes, %lld sketches: %lld minimum-link paths in sets at multiples of 30 degrees (%lld links, "
               "%lld bends off Q, %lld sweeps), %lld with no path; shortest wires %lld, free and in the class %lld, "
-              "with more links %lld; exhaustive search on %lld with up to three links, none fewer on %lld with more\n",
+              "with more links %lld; exhaustive search on %lld with up to three links, none fewer on %lld with more; on the "
+              "shortest wires, %lld with up to three links, none fewer on %lld with more\n",
               scenes, sketches, tot.paths, tot.links, tot.irrational_bends, tot.sweeps, tot.none, tot.staircases,
-              tot.staircase_free, tot.fewer_than_staircase, tot.searched, tot.searched_more);
+              tot.staircase_free, tot.fewer_than_staircase, tot.searched, tot.searched_more, tot.shortest_searched,
+              tot.shortest_searched_more);
   EXPECT_GE(tot.paths, kSanitized ? 50 : 1000);  // 1,073 here, 88 under the sanitizers
   EXPECT_GE(tot.searched, kSanitized ? 40 : 850);  // 904 here, 81 under the sanitizers
   EXPECT_GE(tot.searched_more, kSanitized ? 1 : 100);  // 169 here
+  EXPECT_GE(tot.shortest_searched, kSanitized ? 40 : 850);  // 889 here, 81 under the sanitizers
+  EXPECT_GE(tot.shortest_searched_more, kSanitized ? 1 : 150);  // 184 here, 7 under the sanitizers
   // the shortest wire's exact links are a path of the class every time (so the bound above is
   // never skipped)
   EXPECT_EQ(tot.staircase_free, tot.staircases);

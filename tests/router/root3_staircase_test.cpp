@@ -14,8 +14,9 @@
 // The fewest links (since 2026-12-07), a necessary condition only: the exact wire built from the
 // taut wire's other end has as many links (the greedy runs and the DP join pieces from the start;
 // taking one first direction only, dropping the DP's credit for a link across a cut, or halving
-// the first run each make hundreds differ). Not an exhaustive search (the lattice sets' greedy is
-// compared with one, tests/router/tighten_test.cpp; none here yet).
+// the first run each make hundreds differ). The exhaustive search is in
+// tests/router/c_minlink30_test.cpp (up to three links: the fewest among the paths of the class
+// as long as the wire).
 #include "router/root3_staircase.h"
 
 #include <gtest/gtest.h>
