@@ -64,7 +64,14 @@ class PieceSolver {
   }
 
   // Clips the frame segment p q to the box and classifies it; false when nothing of it is inside.
-  bool add(const FPoint& p, const FPoint& q) {
+  // `inside`: both ends are in the box (nothing to clip).
+  bool add(const FPoint& p, const FPoint& q, bool inside) {
+    if (inside) {
+      Wall w{p, q, 0};
+      w.side = side_of(w, q[0] - p[0], q[1] - p[1]);
+      walls_.push_back(std::move(w));
+      return true;
+    }
     R3 t0(Rational(0)), t1(Rational(1));
     for (int k = 0; k < 2; ++k) {
       const R3 dq = q[k] - p[k];
@@ -240,9 +247,14 @@ Root3Wire Root3StaircaseBuilder::staircase(std::span<const Point> taut, const ge
     const std::array<Root3, 2> lim_int = fr.of_int(b);
     auto add = [&](const geom::Segment& e) {
       const std::array<Root3, 2> p = fr.of_int(e.a), q = fr.of_int(e.b);
-      for (int k = 0; k < 2; ++k)
-        if ((p[k].sign() < 0 && q[k].sign() < 0) || (p[k] > lim_int[k] && q[k] > lim_int[k])) return;
-      solver.add({R3(p[0]), R3(p[1])}, {R3(q[0]), R3(q[1])});
+      bool inside = true;
+      for (int k = 0; k < 2; ++k) {
+        const int p0 = p[k].sign(), q0 = q[k].sign();
+        const bool p1 = p[k] > lim_int[k], q1 = q[k] > lim_int[k];
+        if ((p0 < 0 && q0 < 0) || (p1 && q1)) return;
+        inside = inside && p0 >= 0 && q0 >= 0 && !p1 && !q1;
+      }
+      solver.add({R3(p[0]), R3(p[1])}, {R3(q[0]), R3(q[1])}, inside);
     };
     for (const std::uint32_t id : index_.edges_in_box(box)) add(index_.edge(id));
     for (const geom::Segment& e : sides_) add(e);
