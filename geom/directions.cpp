@@ -29,30 +29,41 @@ std::optional<LatticeDirections> LatticeDirections::from_mask(unsigned mask) {
   return LatticeDirections(mask);
 }
 
-std::optional<std::vector<int>> whole_degrees(std::string_view text) {
+std::optional<std::vector<WrittenDegrees>> written_degrees(std::string_view text) {
   if (text.substr(0, 2) != "c:") return std::nullopt;
   std::string_view rest = text.substr(2);
-  std::vector<int> out;
+  std::vector<WrittenDegrees> out;
   while (true) {
     const std::size_t comma = rest.find(',');
     const std::string_view tok = rest.substr(0, comma);
     // digits with at most one '.' (as the CLI's other commands read them: "90", "090", "90.",
-    // ".5"), a whole number: the fraction all zeros, the integer part taken modulo 180 digit by
-    // digit (any length, no overflow)
+    // ".5"), the integer part taken modulo 180 digit by digit (any length, no overflow)
     const std::size_t dot = tok.find('.');
     const std::string_view ip = tok.substr(0, dot);
     const std::string_view fp = dot == std::string_view::npos ? std::string_view{} : tok.substr(dot + 1);
     if (ip.empty() && fp.empty()) return std::nullopt;
-    int deg = 0;  // modulo 180
+    WrittenDegrees w;
     for (const char c : ip) {
       if (c < '0' || c > '9') return std::nullopt;
-      deg = (deg * 10 + (c - '0')) % 180;
+      w.whole = (w.whole * 10 + (c - '0')) % 180;
     }
     for (const char c : fp)
-      if (c != '0') return std::nullopt;  // a '.' or sign here, or a fraction that is not zero
-    out.push_back(deg);
+      if (c < '0' || c > '9') return std::nullopt;  // a second '.', or a sign
+    w.fraction = std::string(fp.substr(0, fp.find_last_not_of('0') + 1));  // (npos + 1 == 0: all zeros)
+    out.push_back(std::move(w));
     if (comma == std::string_view::npos) break;
     rest = rest.substr(comma + 1);
+  }
+  return out;
+}
+
+std::optional<std::vector<int>> whole_degrees(std::string_view text) {
+  const std::optional<std::vector<WrittenDegrees>> w = written_degrees(text);
+  if (!w) return std::nullopt;
+  std::vector<int> out;
+  for (const WrittenDegrees& d : *w) {
+    if (!d.fraction.empty()) return std::nullopt;  // a fraction that is not zero
+    out.push_back(d.whole);
   }
   return out;
 }

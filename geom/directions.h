@@ -40,6 +40,23 @@ namespace taut::geom {
 // "c:-45,45", "any").
 std::optional<std::vector<int>> whole_degrees(std::string_view orientations);
 
+// One direction of a "c:" set as written, modulo 180 degrees: the whole part (taken modulo 180
+// digit by digit) and the fraction's digits without trailing zeros ("22.50" -> 22, "5").
+struct WrittenDegrees {
+  int whole = 0;
+  std::string fraction;
+  // "22.5", "10"
+  std::string text() const { return fraction.empty() ? std::to_string(whole) : std::to_string(whole) + "." + fraction; }
+  friend bool operator==(const WrittenDegrees&, const WrittenDegrees&) = default;
+  // numeric order ("5" < "51" < "6" as fractions: no trailing zeros)
+  friend bool operator<(const WrittenDegrees& a, const WrittenDegrees& b) {
+    return a.whole != b.whole ? a.whole < b.whole : a.fraction < b.fraction;
+  }
+};
+// The directions of a "c:<deg>,<deg>,..." set, each digits with at most one '.' (whole_degrees'
+// grammar, any fraction), in the order written; nullopt for anything else ("c:-45,45", "any").
+std::optional<std::vector<WrittenDegrees>> written_degrees(std::string_view orientations);
+
 class LatticeDirections {
  public:
   static LatticeDirections rectilinear() { return LatticeDirections(0b0101); }

@@ -1,7 +1,12 @@
 #include "geom/root3_directions.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <numbers>
+#include <stdexcept>
+#include <utility>
 
 #include "geom/directions.h"
 
@@ -24,11 +29,118 @@ Root3 cross(const Step& s, i64 dx, i64 dy) { return dy * s.x - dx * s.y; }
 Root3 dot(const Step& s, i64 dx, i64 dy) { return dx * s.x + dy * s.y; }
 Root3 cross(const Step& s, const Step& t) { return s.x * t.y - s.y * t.x; }
 
+// 0 for the directions from +x (included) to -x (excluded), counter-clockwise; 1 for the rest.
+int half(const Step& s) { return (s.y.sign() > 0 || (s.y.sign() == 0 && s.x.sign() > 0)) ? 0 : 1; }
+// s before t counter-clockwise from +x (exact; not parallel and alike)
+bool ccw_before(const Step& s, const Step& t) {
+  const int hs = half(s), ht = half(t);
+  return hs != ht ? hs < ht : cross(s, t).sign() > 0;
+}
+
+constexpr std::int64_t kStepMax = std::int64_t{1} << 24;
+constexpr long double kMaxError = 1.0L / (std::int64_t{1} << 36);  // radians
+
+struct Realized {
+  Step step;
+  std::int64_t norm2 = 0;
+  bool exact = true;
+};
+
+// A direction of parse_any's sets as its step (the top of the header); nullopt when the step
+// would be off it by more than kMaxError.
+std::optional<Realized> realize(const WrittenDegrees& w) {
+  if (w.fraction.empty() && w.whole % 30 == 0) return Realized{kSteps[static_cast<std::size_t>(w.whole / 30)], 4, true};
+  if (w.fraction.empty() && w.whole % 45 == 0)
+    return Realized{{{w.whole == 45 ? 1 : -1, 0}, {1, 0}}, 2, true};  // 45 or 135
+  // the slope in long double: it chooses the step, nothing more (every later decision is exact
+  // for the step)
+  using ld = long double;
+  const ld r = std::stold(w.text()) * std::numbers::pi_v<ld> / 180;
+  const ld c = std::cos(r), s = std::sin(r);  // s > 0: 0 < r < pi
+  const bool steep = std::fabs(s) > std::fabs(c);
+  const ld t = steep ? std::fabs(c) / s : s / std::fabs(c);  // in [0, 1]
+  // the last convergent of t's continued fraction with numerator and denominator at most
+  // kStepMax, and the semiconvergent past it with the largest allowed multiple: whichever is
+  // nearer (a best approximation is one of them)
+  std::int64_t p0 = 0, q0 = 1, p1 = 1, q1 = 0, next_a = 0;
+  ld x = t;
+  for (int i = 0; i < 200; ++i) {
+    const ld a = std::floor(x);
+    if (a > static_cast<ld>(kStepMax)) {
+      next_a = kStepMax + 1;
+      break;
+    }
+    const auto ai = static_cast<std::int64_t>(a);
+    const std::int64_t p2 = ai * p1 + p0, q2 = ai * q1 + q0;
+    if (p2 > kStepMax || q2 > kStepMax) {
+      next_a = ai;
+      break;
+    }
+    p0 = p1, q0 = q1, p1 = p2, q1 = q2;
+    const ld f = x - a;
+    if (!(f > 0)) break;
+    x = 1 / f;
+  }
+  std::vector<std::pair<std::int64_t, std::int64_t>> tries{{p1, q1}};
+  if (next_a > 0 && q1 > 0) {
+    const std::int64_t j = std::min((kStepMax - q0) / q1, p1 > 0 ? (kStepMax - p0) / p1 : kStepMax);
+    if (j >= 1) tries.push_back({p0 + j * p1, q0 + j * q1});
+  }
+  std::optional<Realized> best;
+  ld best_error = 0;
+  for (const auto& [p, q] : tries) {
+    if (q == 0) continue;
+    std::int64_t A = steep ? p : q, B = steep ? q : p;  // the step's |x| and y
+    if (c < 0) A = -A;
+    if (B == 0) continue;  // along the x axis: not this direction
+    const ld error = std::fabs(std::atan2(static_cast<ld>(B), static_cast<ld>(A)) - r);
+    if (!best || error < best_error) {
+      best = Realized{{{A, 0}, {B, 0}}, A * A + B * B, false};
+      best_error = error;
+    }
+  }
+  if (!best || best_error > kMaxError) return std::nullopt;
+  return best;
+}
+
 }  // namespace
 
 Root3Directions::Root3Directions(unsigned mask) : mask_(mask) {
   for (unsigned k = 0; k < 12; ++k)
-    if (mask_ & (1u << (k % 6))) steps_.push_back(kSteps[k]);
+    if (mask_ & (1u << (k % 6))) {
+      steps_.push_back(kSteps[k]);
+      norm2_.push_back(4);
+    }
+  for (const int d : degrees()) texts_.push_back(std::to_string(d));
+}
+
+std::optional<Root3Directions> Root3Directions::parse_any(std::string_view text) {
+  if (auto exact = parse(text)) return exact;
+  if (LatticeDirections::parse(text)) return std::nullopt;
+  std::optional<std::vector<WrittenDegrees>> written = written_degrees(text);
+  if (!written) return std::nullopt;
+  std::sort(written->begin(), written->end());
+  written->erase(std::unique(written->begin(), written->end()), written->end());
+  if (written->size() < 2) return std::nullopt;
+  Root3Directions set;
+  set.mask_ = 0;
+  std::vector<Realized> half_steps;  // in the written directions' increasing order, from 0 to below 180
+  for (const WrittenDegrees& w : *written) {
+    const std::optional<Realized> r = realize(w);
+    if (!r) return std::nullopt;
+    // strictly counter-clockwise of the previous one (the written order): no two parallel, none
+    // out of order
+    if (!half_steps.empty() && !ccw_before(half_steps.back().step, r->step)) return std::nullopt;
+    half_steps.push_back(*r);
+    set.exact_ = set.exact_ && r->exact;
+    set.texts_.push_back(w.text());
+  }
+  for (int side = 0; side < 2; ++side)
+    for (const Realized& r : half_steps) {
+      set.steps_.push_back(side == 0 ? r.step : Step{-r.step.x, -r.step.y});
+      set.norm2_.push_back(r.norm2);
+    }
+  return set;
 }
 
 std::optional<Root3Directions> Root3Directions::from_mask(unsigned mask) {
@@ -52,11 +164,12 @@ std::optional<Root3Directions> Root3Directions::parse(std::string_view text) {
 
 std::string Root3Directions::name() const {
   std::string s = "c:";
-  for (const int d : degrees()) s += (s.size() > 2 ? "," : "") + std::to_string(d);
+  for (const std::string& d : texts_) s += (s.size() > 2 ? "," : "") + d;
   return s;
 }
 
 std::vector<int> Root3Directions::degrees() const {
+  if (mask_ == 0) throw std::logic_error("Root3Directions::degrees: a set of parse_any at other angles");
   std::vector<int> out;
   for (int k = 0; k < 6; ++k)
     if (mask_ & (1u << k)) out.push_back(30 * k);
@@ -87,6 +200,7 @@ int Root3Directions::cone(i64 dx, i64 dy) const {
 }
 
 Root3 Root3Directions::length12(i64 dx, i64 dy) const {
+  if (mask_ == 0) throw std::logic_error("Root3Directions::length12: a set of parse_any at other angles");
   if (dx == 0 && dy == 0) return {};
   const int c = cone(dx, dy);
   if (c < 0) return {12 * (dx != 0 ? (dx < 0 ? -dx : dx) : (dy < 0 ? -dy : dy)), 0};  // along an axis

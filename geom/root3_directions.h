@@ -21,6 +21,28 @@
 // cone (s1, s2) is a s1 + b s2 with a, b >= 0, and the shortest path in the set from 0 to v has
 // length 2(a + b), the convex distance function of the set; length12 returns twelve times it,
 // which lies in Z[sqrt3] (the cross product of two steps is 2, 2 sqrt3 or 4).
+//
+// Sets at other angles (parse_any, since 2026-12-07; not yet taken by the commands). A set such
+// as c:0,10 or c:0,45,60 holds the same kind of steps, vectors in Z[sqrt3]^2, of different
+// lengths:
+//   - a multiple of 30 degrees: twice its unit vector, as above (exact, length 2);
+//   - a multiple of 45 degrees that is not one of 90: (1, 1) or (-1, 1) (exact, length sqrt 2);
+//   - any other direction: the integer step (A, B), gcd 1, |A|, |B| <= 2^24, nearest it among
+//     the last convergent of the continued fraction of its slope (or of the inverse slope,
+//     whichever is at most 1 in magnitude) within that bound and the semiconvergent past it (a
+//     best approximation is one of them). Its angle is off the direction's by less than
+//     1 / (q 2^24), q the denominator: over the random sets of tests/geom/root3_test.cpp,
+//     2^-48.6 radians the median and 2^-40.7 the largest. A set is refused past 2^-36, which a
+//     direction about 10^-6 degrees off a slope p/q of small q can be (c:0,0.000001 and
+//     c:0,45.000001 are refused; c:0,0.00001 is (5729578, 1)).
+//   The slope is computed in long double from the written degrees: that chooses the step, and
+//   from then on every decision (cones, fits, the router's predicates) is exact for that step. A
+//   written wire is rounded to integers anyway, so a segment is off its exact direction by up to
+//   a unit over its length; the step's own error is below 2^-36 of that length. fits() judges
+//   against the step.
+// Steps no longer share a length, so length12 is for the sets of parse() only; norm2(i) gives
+// each step's squared length (4, 2 or A^2 + B^2), which a length in such a set needs: the
+// coefficients over the cone's two steps times their lengths, a sum of square roots.
 #pragma once
 
 #include <array>
@@ -49,15 +71,32 @@ class Root3Directions {
   // orientations, one of them at 30, 60, 120 or 150. nullopt for anything else (the lattice sets,
   // "any", c:0,45,60, c:0,22.5).
   static std::optional<Root3Directions> parse(std::string_view orientations);
+  // Any "c:" set of at least two orientations modulo 180 degrees that is not a lattice set
+  // (LatticeDirections::parse): what parse() takes, the same; otherwise each direction (digits
+  // with at most one '.', in degrees, as whole_degrees reads them, but any fraction) as the top
+  // of the file says. Directions written alike modulo 180 ("10", "190", "10.0") are one; nullopt
+  // for two others whose steps are parallel, or a step off its direction by more than 2^-36
+  // radians (see the top of the file).
+  static std::optional<Root3Directions> parse_any(std::string_view orientations);
 
+  // The set's orientations as a mask (bit k = 30k degrees); 0 for a set of parse_any that
+  // parse() would not give.
   unsigned mask() const { return mask_; }
-  // "c:" with the orientations in increasing order ("c:0,60,120").
+  // Every step lies exactly along its direction (parse()'s sets, and those of parse_any whose
+  // directions are multiples of 30 or 45 degrees).
+  bool exact() const { return exact_; }
+  // "c:" with the orientations in increasing order ("c:0,60,120", "c:0,10", "c:0,22.5").
   std::string name() const;
-  // The orientations in degrees, increasing.
+  // The orientations in degrees, increasing: for a set with mask() only (throws otherwise).
   std::vector<int> degrees() const;
+  // The orientations as written in name(), increasing ("0", "22.5").
+  const std::vector<std::string>& orientation_texts() const { return texts_; }
+  // The squared length of step i: 4 (a multiple of 30 degrees), 2 (of 45) or A^2 + B^2.
+  std::int64_t norm2(std::size_t i) const { return norm2_[i]; }
   // The steps, counter-clockwise from +x (4 to 12 of them).
   const std::vector<Step>& steps() const { return steps_; }
-  // v (not zero, |dx|, |dy| < 2^40) lies exactly along one of the steps (only the axes can).
+  // v (not zero, |dx|, |dy| < 2^40; < 2^36 in a set of parse_any with integer steps) lies exactly
+  // along one of the steps (in parse()'s sets only the axes can).
   bool along(std::int64_t dx, std::int64_t dy) const { return step_along(dx, dy) >= 0; }
   // Which step v lies exactly along (an index into steps()), or -1.
   int step_along(std::int64_t dx, std::int64_t dy) const;
@@ -71,21 +110,27 @@ class Root3Directions {
     return {steps_[static_cast<std::size_t>(cone)], steps_[(static_cast<std::size_t>(cone) + 1) % steps_.size()]};
   }
   // Twelve times the length of the shortest path in the set from 0 to (dx, dy) (|dx|, |dy| <
-  // 2^40).
+  // 2^40); for a set with mask() only (throws otherwise: steps of other lengths).
   Root3 length12(std::int64_t dx, std::int64_t dy) const;
-  // The written segment (dx, dy) (|dx|, |dy| < 2^40) runs in the set within the rounding of its
+  // The written segment (dx, dy) (|dx|, |dy| < 2^40; 2^36 with integer steps) runs in the set within the rounding of its
   // ends: some direction's ray from 0 meets the square [dx - 1, dx + 1] x [dy - 1, dy + 1]. True
   // when that square holds 0 (|dx|, |dy| <= 1).
   bool fits(std::int64_t dx, std::int64_t dy) const;
   // Every segment of the polyline fits (as LatticeDirections::runs_along for the lattice sets).
   bool runs_within(std::span<const Point> line) const;
 
-  friend bool operator==(const Root3Directions& x, const Root3Directions& y) { return x.mask_ == y.mask_; }
+  friend bool operator==(const Root3Directions& x, const Root3Directions& y) {
+    return x.mask_ == y.mask_ && x.texts_ == y.texts_;
+  }
 
  private:
   explicit Root3Directions(unsigned mask);
+  Root3Directions() = default;
   unsigned mask_ = 0;
+  bool exact_ = true;
   std::vector<Step> steps_;
+  std::vector<std::int64_t> norm2_;
+  std::vector<std::string> texts_;
 };
 
 }  // namespace taut::geom

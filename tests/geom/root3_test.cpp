@@ -1,5 +1,8 @@
 // geom/root3.h and geom/root3_directions.h: exact a + b*sqrt(3) and the direction sets at
 // multiples of 30 degrees.
+// - parse_any's sets at other angles (since 2026-12-07): steps counter-clockwise and within 2^-36
+//   radians of the written angles, cones and fits against long double references at the steps'
+//   own angles, rounded segments along a step.
 // - The sign against GMP's integer square root (floor(|b| sqrt 3) = isqrt(3 b^2)), not squares
 //   in __int128; near-ties from the Pell pairs p^2 - 3q^2 = 1 and -2 up to 2^61.
 // - Cones against atan2 in long double, lengths against a brute force over every pair of the
@@ -15,12 +18,15 @@
 #include <cstdint>
 #include <cstdio>
 #include <numbers>
+#include <numeric>
 #include <optional>
+#include <stdexcept>
 #include <random>
 #include <string>
 #include <tuple>
 #include <vector>
 
+#include "geom/directions.h"
 #include "geom/root3_directions.h"
 
 namespace taut::geom {
@@ -268,6 +274,188 @@ TEST(Root3Directions, RoundingTestAgainstCornerAnglesAndRoundedSegments) {
   EXPECT_TRUE(hex->fits(50, 1));
   EXPECT_FALSE(hex->fits(50, 2));
   EXPECT_TRUE(hex->fits(-50, -1));
+}
+
+}  // namespace root3_test
+}  // namespace taut::geom
+
+namespace taut::geom {
+namespace root3_test {
+
+// The angle of a step in degrees, counter-clockwise in [0, 360) (long double: a reference).
+ld step_degrees(const Root3Directions::Step& s) {
+  return angle_of(s.x.to_double() + 0.0L, s.y.to_double() + 0.0L) * 180 / std::numbers::pi_v<ld>;
+}
+
+// parse_any (since 2026-12-07): the sets at other angles, each direction an exact step (multiples
+// of 30 and 45 degrees) or the integer step of at most 2^20 nearest it.
+TEST(Root3Directions, ParseAnyRealizesOtherAngles) {
+  // parse()'s sets, the same
+  for (unsigned mask = 0; mask < 64; ++mask) {
+    const auto set = Root3Directions::from_mask(mask);
+    if (!set) continue;
+    const auto any = Root3Directions::parse_any(set->name());
+    ASSERT_TRUE(any) << set->name();
+    EXPECT_TRUE(*any == *set) << set->name();
+    EXPECT_TRUE(any->exact());
+    EXPECT_EQ(any->mask(), mask);
+  }
+  // refused: lattice sets, one orientation, bad text, directions that realize to one step or
+  // within 2^-36 radians of none
+  for (const char* no : {"rectilinear", "octilinear", "c:0,45", "c:0,90", "any", "c:10", "c:10,190", "c:10,10.0", "c:-10,10",
+                         "c:0,10,", "c:0,1..5", "c:0,0.0000000001", "c:0,0.000001", "c:0,45.000001", "", "c:"})
+    EXPECT_FALSE(Root3Directions::parse_any(no)) << no;
+  // mixed multiples of 30 and 45: exact, steps of lengths 2 and sqrt 2
+  const auto mixed = Root3Directions::parse_any("c:60,45,0");
+  ASSERT_TRUE(mixed);
+  EXPECT_EQ(mixed->name(), "c:0,45,60");
+  EXPECT_TRUE(mixed->exact());
+  EXPECT_EQ(mixed->mask(), 0u);
+  ASSERT_EQ(mixed->steps().size(), 6u);
+  EXPECT_EQ(mixed->steps()[1].x, (Root3{1, 0}));
+  EXPECT_EQ(mixed->steps()[1].y, (Root3{1, 0}));
+  EXPECT_EQ(mixed->norm2(1), 2);
+  EXPECT_EQ(mixed->norm2(2), 4);
+  EXPECT_EQ(mixed->step_along(5, 5), 1);
+  EXPECT_EQ(mixed->step_along(-5, -5), 4);
+  EXPECT_THROW(mixed->degrees(), std::logic_error);
+  EXPECT_THROW(mixed->length12(3, 1), std::logic_error);
+  // c:0,10: 10 degrees as an integer step; two directions 10^-11 degrees apart are two steps
+  EXPECT_EQ(Root3Directions::parse_any("c:10,10.00000000001")->steps().size(), 4u);
+  const auto ten = Root3Directions::parse_any("c:10.000,190,0");
+  ASSERT_TRUE(ten);
+  EXPECT_EQ(ten->name(), "c:0,10");
+  EXPECT_FALSE(ten->exact());
+  ASSERT_EQ(ten->steps().size(), 4u);
+  const Root3Directions::Step s = ten->steps()[1];
+  EXPECT_EQ(s.x.b, 0);
+  EXPECT_EQ(s.y.b, 0);
+  EXPECT_TRUE(s.x.a > 0 && s.y.a > 0 && s.x.a <= (1 << 24) && s.y.a <= (1 << 24)) << s.x.a << "," << s.y.a;
+  EXPECT_EQ(std::gcd(s.x.a, s.y.a), 1);
+  EXPECT_EQ(ten->norm2(1), s.x.a * s.x.a + s.y.a * s.y.a);
+  EXPECT_LT(std::fabs(step_degrees(s) - 10) * std::numbers::pi_v<ld> / 180, 1.0L / (1LL << 36));
+  EXPECT_EQ(ten->steps()[3].x, -s.x);
+  EXPECT_TRUE(ten == *Root3Directions::parse_any("c:0,10"));
+  EXPECT_FALSE(ten == *Root3Directions::parse_any("c:0,10.5"));
+  EXPECT_EQ(Root3Directions::parse_any("c:22.50,0")->name(), "c:0,22.5");
+  // near a slope of small numbers: that slope when within 2^-36 radians (atan(1/2) is
+  // 26.56505117707799 degrees), else a step of the largest size
+  const auto half = Root3Directions::parse_any("c:0,26.5650511771");
+  ASSERT_TRUE(half);
+  EXPECT_EQ(half->steps()[1].x, (Root3{2, 0}));
+  EXPECT_EQ(half->steps()[1].y, (Root3{1, 0}));
+  EXPECT_FALSE(half->exact());  // (the slope's step, but the written angle is not its)
+  const auto tiny = Root3Directions::parse_any("c:0,0.00001");
+  ASSERT_TRUE(tiny);
+  EXPECT_EQ(tiny->steps()[1].x, (Root3{5729578, 0}));
+  EXPECT_EQ(tiny->steps()[1].y, (Root3{1, 0}));
+  EXPECT_EQ(Root3Directions::parse_any("c:100,10,0")->steps().size(), 6u);
+}
+
+// Random sets at other angles (whole degrees and up to three decimals, two to five
+// orientations): the steps counter-clockwise, each within 2^-36 radians of its written angle,
+// cones and along() against atan2, fits() against the corner angles of the square taken at the
+// steps' own angles, and segments made by rounding the ends of exact ones along a step always fit.
+TEST(Root3Directions, ParseAnyRandomSetsAgainstFloatingReferences) {
+  std::mt19937_64 rng(3304);
+  int sets = 0, inexact = 0, cones = 0, alongs = 0, fit = 0, misfit = 0, rounded = 0;
+  std::vector<ld> errors;  // of the integer steps, radians
+  for (int round = 0; round < 300; ++round) {
+    const int n = 2 + static_cast<int>(rng() % 4);
+    std::string text = "c:";
+    for (int k = 0; k < n; ++k) {
+      const int places = static_cast<int>(rng() % 4);
+      std::string d = std::to_string(rng() % 360);
+      if (places > 0) {
+        d += ".";
+        for (int p = 0; p < places; ++p) d += static_cast<char>('0' + rng() % 10);
+      }
+      text += (k ? "," : "") + d;
+    }
+    SCOPED_TRACE(text);
+    const auto set = Root3Directions::parse_any(text);
+    if (!set) {
+      // only a lattice set, or one orientation, may be refused here
+      const auto w = written_degrees(text);
+      ASSERT_TRUE(w);
+      std::vector<WrittenDegrees> u = *w;
+      std::sort(u.begin(), u.end());
+      u.erase(std::unique(u.begin(), u.end()), u.end());
+      EXPECT_TRUE(u.size() < 2 || LatticeDirections::parse(text));
+      continue;
+    }
+    ++sets;
+    inexact += !set->exact();
+    const auto& steps = set->steps();
+    ASSERT_EQ(steps.size(), 2 * set->orientation_texts().size());
+    std::vector<ld> deg;
+    for (const auto& st : steps) deg.push_back(step_degrees(st));
+    for (std::size_t k = 0; k < deg.size(); ++k) {
+      if (k > 0) {
+        ASSERT_LT(deg[k - 1], deg[k]);
+      }
+      if (k < deg.size() / 2) {
+        const ld want = std::stold(set->orientation_texts()[k]);
+        const ld error = std::fabs(deg[k] - want) * std::numbers::pi_v<ld> / 180;
+        ASSERT_LT(error, 1.0L / (1LL << 36)) << k;
+        if (!steps[k].x.b && !steps[k].y.b && std::fmod(want, 45) != 0) errors.push_back(error);
+        ASSERT_LE(std::max(std::fabs(steps[k].x.to_double()), std::fabs(steps[k].y.to_double())), 1 << 24);
+      }
+    }
+    for (int i = 0; i < 300; ++i) {
+      const i64 m = i % 3 == 0 ? 8 : i % 3 == 1 ? 1000 : i64{1} << 30;
+      i64 dx = static_cast<i64>(rng() % static_cast<std::uint64_t>(2 * m + 1)) - m;
+      i64 dy = static_cast<i64>(rng() % static_cast<std::uint64_t>(2 * m + 1)) - m;
+      if (dx == 0 && dy == 0) dx = 1;
+      const ld a = angle_of(static_cast<ld>(dx), static_cast<ld>(dy)) * 180 / std::numbers::pi_v<ld>;
+      int want = -1;
+      bool on_step = false, near = false;
+      for (std::size_t k = 0; k < deg.size(); ++k) {
+        const ld lo = deg[k], hi = k + 1 < deg.size() ? deg[k + 1] : deg[0] + 360;
+        if (std::fabs(a - lo) < 1e-13L) on_step = true;
+        else if (std::fabs(a - lo) < 1e-9L) near = true;
+        if ((a > lo && a < hi) || (a + 360 > lo && a + 360 < hi)) want = static_cast<int>(k);
+      }
+      if (near) continue;  // the exact test decides; long double cannot
+      if (on_step) want = -1;
+      ASSERT_EQ(set->cone(dx, dy), want) << dx << "," << dy;
+      ASSERT_EQ(set->along(dx, dy), on_step) << dx << "," << dy;
+      (on_step ? alongs : cones) += 1;
+      bool fits = false, known = true;
+      for (const ld t : deg) {
+        const std::optional<bool> r = reference_fits(dx, dy, t);
+        if (!r) known = false;
+        else fits = fits || *r;
+      }
+      if (!known && !fits) continue;
+      ASSERT_EQ(set->fits(dx, dy), fits) << dx << "," << dy;
+      (fits ? fit : misfit) += 1;
+    }
+    // exact segments p + t s (p integer, t = j / 8), both ends rounded half up, exactly in integers
+    for (int i = 0; i < 100; ++i) {
+      const auto& st = steps[rng() % steps.size()];
+      if (st.x.b != 0 || st.y.b != 0) continue;  // a Z[sqrt3] step: the test above has those
+      const i64 px = static_cast<i64>(rng() % 2001) - 1000, py = static_cast<i64>(rng() % 2001) - 1000;
+      const i64 j = 1 + static_cast<i64>(rng() % 4000);
+      auto round8 = [](i64 v8) { return (v8 + 4) >= 0 ? (v8 + 4) / 8 : -((-(v8 + 4) + 7) / 8); };  // floor((v8 + 4) / 8)
+      const i64 qx = round8(8 * px + j * st.x.a), qy = round8(8 * py + j * st.y.a);
+      ASSERT_TRUE(set->fits(qx - px, qy - py)) << px << "," << py << " + " << j << "/8 step";
+      ++rounded;
+    }
+  }
+  std::sort(errors.begin(), errors.end());
+  std::printf("%d sets (%d not exact): %d cones, %d along, %d fit, %d do not, %d rounded segments; integer steps off "
+              "their angle by 2^%.1f (median), 2^%.1f (largest) radians\n",
+              sets, inexact, cones, alongs, fit, misfit, rounded,
+              errors.empty() ? 0.0 : static_cast<double>(std::log2(errors[errors.size() / 2])),
+              errors.empty() ? 0.0 : static_cast<double>(std::log2(errors.back())));
+  EXPECT_GT(sets, 250);
+  EXPECT_GT(inexact, 200);
+  EXPECT_GT(cones, 50000);
+  EXPECT_GT(alongs, 0);
+  EXPECT_GT(fit, 1000);
+  EXPECT_GT(misfit, 20000);
+  EXPECT_GT(rounded, 10000);
 }
 
 }  // namespace root3_test
