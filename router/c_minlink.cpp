@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <numeric>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -81,8 +82,9 @@ struct Root3Kind {
     return {s.a + t.a, s.b + t.b};
   }
   static int sgn(Ex v) { return sign_wide<3>(v.a, v.b); }
-  // Every Ex below is a step (coordinates at most 2 in Z[sqrt3]) against an integer vector (or
-  // two steps): both parts fit in 64 bits.
+  // Every Ex below is a step (coordinates at most 2 in Z[sqrt3]; integers up to 2^24 in a set of
+  // Root3Directions::parse_any) against an integer vector (below 2^32), or two steps: both parts
+  // below 2^57, so they fit in 64 bits.
   static Num num(Ex v) { return Num(Rational(static_cast<i64>(v.a)), Rational(static_cast<i64>(v.b))); }
   // The number is the integer v (its sqrt3 part zero).
   static bool is(const Num& x, std::int32_t v) { return x.b.sign() == 0 && x.a == v; }
@@ -90,10 +92,15 @@ struct Root3Kind {
   static Num nx(Dir d) { return Num(d.x); }
   static Num ny(Dir d) { return Num(d.y); }
   static Dir neg(Dir d) { return {-d.x, -d.y}; }
-  // Only the axis steps ((+-2, 0), (0, +-2)) lie along integer vectors: their unit vectors.
+  // The least integer vector along the step when it is a unit of the lattice or a diagonal one
+  // (the axis steps (+-2, 0), (0, +-2); (+-1, +-1) in a set of parse_any); nullopt for the
+  // others (a step with a sqrt3 part, or a long integer step such as 10 degrees' in c:0,10).
   static std::optional<Point> integer(Dir d) {
     if (d.x.b != 0 || d.y.b != 0) return std::nullopt;
-    return Point{static_cast<std::int32_t>(d.x.a / 2), static_cast<std::int32_t>(d.y.a / 2)};
+    const i64 g = std::gcd(d.x.a < 0 ? -d.x.a : d.x.a, d.y.a < 0 ? -d.y.a : d.y.a);
+    const i64 x = d.x.a / g, y = d.y.a / g;
+    if (x < -1 || x > 1 || y < -1 || y > 1) return std::nullopt;
+    return Point{static_cast<std::int32_t>(x), static_cast<std::int32_t>(y)};
   }
 };
 

@@ -11,6 +11,7 @@
 #include "geom/predicates.h"
 #include "geom/root2.h"
 #include "geom/root3.h"
+#include "router/radical_sum.h"
 #include "router/rational_root.h"
 #include "router/l1_router.h"
 
@@ -451,8 +452,12 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
     // a set at multiples of 30 degrees: the rounded wires' lengths in its convex distance (twelve
     // times them, in Z[sqrt3]; a rounded segment is not exactly along the set, so this is the
     // length of the shortest path in the set between its ends, summed)
-    if (options_.orientations.set30)
+    if (options_.orientations.set30 && options_.orientations.set30->mask() != 0)
       return rule(Length30(*options_.orientations.set30, a), Length30(*options_.orientations.set30, b));
+    // a set at other angles (steps of different lengths): sums of square roots, exact
+    // (router/radical_sum.h)
+    if (options_.orientations.set30)
+      return rule(set_length(*options_.orientations.set30, a), set_length(*options_.orientations.set30, b));
     return true;  // any angle: the class's shortest, and another path: strictly shorter
   };
 

@@ -27,6 +27,7 @@
 #include "oracle/homotopy.h"
 #include "router/check.h"
 #include "router/net_router.h"
+#include "router/radical_sum.h"
 #include "router/tighten_nets.h"
 #include "support/net_layouts.h"
 #include "support/sanitized.h"
@@ -414,14 +415,15 @@ void check_layout30(int seed, const geom::Root3Directions& set, Totals30& t) {
   // Wires already in the set (rectilinear ones, under a set with 0 and 90 degrees) are a router's
   // wires: a result replaces one only when it is no longer in the set's convex distance (summed
   // over its rounded segments, exact in Z[sqrt3]) and has no more bends, so no net gets longer.
-  if ((set.mask() & 0b1001) == 0b1001) {
+  if (set.step_along(1, 0) >= 0 && set.step_along(0, 1) >= 0) {
     const std::vector<NetLines> rect = routed_wires(L, seed, false);
     std::vector<NetLines> r2 = rect;
     const auto outcomes2 = tighten_layout(L, to, r2).first;
+    // (router::set_length, tested against a brute force in radical_sum_test.cpp: exact in Z[sqrt3]
+    // for the sets at multiples of 30 degrees, sums of square roots for the others)
     auto length12 = [&](const NetLines& ws) {
-      geom::Root3 s{0, 0};
-      for (const auto& w : ws)
-        for (std::size_t j = 1; j < w.size(); ++j) s += set.length12(std::int64_t{w[j].x} - w[j - 1].x, std::int64_t{w[j].y} - w[j - 1].y);
+      router::RadicalSum s = router::set_length(set, std::vector<Point>{});
+      for (const auto& w : ws) s = s + router::set_length(set, w);
       return s;
     };
     using Ends = std::pair<Point, Point>;
@@ -429,8 +431,8 @@ void check_layout30(int seed, const geom::Root3Directions& set, Totals30& t) {
     for (std::size_t i = 0; i < rect.size(); ++i) {
       if (rect[i].empty()) continue;
       ++t.rect_nets;
-      const geom::Root3 l0 = length12(rect[i]), l1 = length12(r2[i]);
-      if (l1 > l0) fail("net " + std::to_string(i) + "'s rectilinear wires got longer in " + set.name());
+      const router::RadicalSum l0 = length12(rect[i]), l1 = length12(r2[i]);
+      if (l0 < l1) fail("net " + std::to_string(i) + "'s rectilinear wires got longer in " + set.name());
       t.rect_shorter += l1 < l0;
       // per piece, where the tightener's pieces are the input cut at its joints (as
       // NetsTightener cuts them; no re-cut changed them): none gained a bend or got longer
@@ -446,7 +448,7 @@ void check_layout30(int seed, const geom::Root3Directions& set, Totals30& t) {
         ++t.rect_pieces;
         if (geom::count_bends(w) > geom::count_bends(was))
           fail("net " + std::to_string(i) + ": a rectilinear piece gained bends in " + set.name());
-        if (length12({w}) > length12({was})) fail("net " + std::to_string(i) + ": a rectilinear piece got longer in " + set.name());
+        if (length12({was}) < length12({w})) fail("net " + std::to_string(i) + ": a rectilinear piece got longer in " + set.name());
       }
     }
   }
@@ -466,17 +468,16 @@ void check_layout30(int seed, const geom::Root3Directions& set, Totals30& t) {
   }
 }
 
-TEST(NetsTightener, SetsAtMultiplesOf30DegreesKeepClearanceAndClasses) {
+void run_sets30(const std::vector<const char*>& names, int n, int first_seed) {
   Totals30 t;
-  const char* names[] = {"c:0,60,120", "c:30,90,150", "c:0,30,60,90,120,150", "c:0,60", "c:0,90,150"};
-  const int n = sanitized_share(150, 6);
-  for (int seed = 1; seed <= n; ++seed) {
-    const auto set = geom::Root3Directions::parse(names[seed % 5]);
+  for (int seed = first_seed; seed < first_seed + n; ++seed) {
+    const char* name = names[static_cast<std::size_t>(seed) % names.size()];
+    const auto set = geom::Root3Directions::parse_any(name);
     ASSERT_TRUE(set);
     try {
       check_layout30(930000 + seed, *set, t);
     } catch (const std::exception& e) {
-      ADD_FAILURE() << "seed " << 930000 + seed << " (" << names[seed % 5] << "): " << e.what();
+      ADD_FAILURE() << "seed " << 930000 + seed << " (" << name << "): " << e.what();
       ++t.failed;
     }
   }
@@ -493,6 +494,16 @@ TEST(NetsTightener, SetsAtMultiplesOf30DegreesKeepClearanceAndClasses) {
     EXPECT_GT(t.rect_shorter * 4, t.rect_nets);  // (the rule does take results: a quarter of the nets at least)
     EXPECT_GT(t.rect_pieces, t.rect_nets);
   }
+}
+
+TEST(NetsTightener, SetsAtMultiplesOf30DegreesKeepClearanceAndClasses) {
+  run_sets30({"c:0,60,120", "c:30,90,150", "c:0,30,60,90,120,150", "c:0,60", "c:0,90,150"}, sanitized_share(150, 6), 1);
+}
+
+// Sets at other angles (Root3Directions::parse_any, since 2026-12-07): the same, their lengths
+// sums of square roots (router::RadicalSum).
+TEST(NetsTightener, SetsAtOtherAnglesKeepClearanceAndClasses) {
+  run_sets30({"c:0,10,90", "c:0,45,60,90", "c:22.5,90,157.5", "c:0,72,144"}, sanitized_share(80, 4), 1001);
 }
 
 }  // namespace tighten_nets_test
