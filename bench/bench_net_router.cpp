@@ -121,7 +121,7 @@ int main(int argc, char** argv) {
   std::optional<taut::router::TightenOrientations> set_orient;
   if (!set_word.empty()) {
     const auto lattice = taut::geom::LatticeDirections::parse(set_word);
-    const auto thirty = lattice ? std::nullopt : taut::geom::Root3Directions::parse(set_word);  // (since 2026-12-07)
+    const auto thirty = lattice ? std::nullopt : taut::geom::Root3Directions::parse_any(set_word);  // (since 2026-12-07)
     if (set_word != "any" && !lattice && !thirty) {
       std::fprintf(stderr, "--orientations: any or a c: set of directions at multiples of 45 degrees or of 30 degrees\n");
       return 2;

@@ -44,14 +44,15 @@ struct Realized {
   Step step;
   std::int64_t norm2 = 0;
   bool exact = true;
+  long double off = 0;  // radians (long double: a report)
 };
 
 // A direction of parse_any's sets as its step (the top of the header); nullopt when the step
 // would be off it by more than kMaxError.
 std::optional<Realized> realize(const WrittenDegrees& w) {
-  if (w.fraction.empty() && w.whole % 30 == 0) return Realized{kSteps[static_cast<std::size_t>(w.whole / 30)], 4, true};
+  if (w.fraction.empty() && w.whole % 30 == 0) return Realized{kSteps[static_cast<std::size_t>(w.whole / 30)], 4, true, 0};
   if (w.fraction.empty() && w.whole % 45 == 0)
-    return Realized{{{w.whole == 45 ? 1 : -1, 0}, {1, 0}}, 2, true};  // 45 or 135
+    return Realized{{{w.whole == 45 ? 1 : -1, 0}, {1, 0}}, 2, true, 0};  // 45 or 135
   // the slope in long double: it chooses the step, nothing more (every later decision is exact
   // for the step)
   using ld = long double;
@@ -95,7 +96,7 @@ std::optional<Realized> realize(const WrittenDegrees& w) {
     if (B == 0) continue;  // along the x axis: not this direction
     const ld error = std::fabs(std::atan2(static_cast<ld>(B), static_cast<ld>(A)) - r);
     if (!best || error < best_error) {
-      best = Realized{{{A, 0}, {B, 0}}, A * A + B * B, false};
+      best = Realized{{{A, 0}, {B, 0}}, A * A + B * B, false, error};
       best_error = error;
     }
   }
@@ -112,6 +113,8 @@ Root3Directions::Root3Directions(unsigned mask) : mask_(mask) {
       norm2_.push_back(4);
     }
   for (const int d : degrees()) texts_.push_back(std::to_string(d));
+  off_.assign(texts_.size(), 0);
+  exacts_.assign(texts_.size(), 1);
 }
 
 std::optional<Root3Directions> Root3Directions::parse_any(std::string_view text) {
@@ -134,6 +137,8 @@ std::optional<Root3Directions> Root3Directions::parse_any(std::string_view text)
     half_steps.push_back(*r);
     set.exact_ = set.exact_ && r->exact;
     set.texts_.push_back(w.text());
+    set.off_.push_back(r->off);
+    set.exacts_.push_back(r->exact ? 1 : 0);
   }
   for (int side = 0; side < 2; ++side)
     for (const Realized& r : half_steps) {

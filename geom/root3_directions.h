@@ -22,7 +22,7 @@
 // length 2(a + b), the convex distance function of the set; length12 returns twelve times it,
 // which lies in Z[sqrt3] (the cross product of two steps is 2, 2 sqrt3 or 4).
 //
-// Sets at other angles (parse_any, since 2026-12-07; not yet taken by the commands). A set such
+// Sets at other angles (parse_any, since 2026-12-07; taken by tighten, route and check). A set such
 // as c:0,10 or c:0,45,60 holds the same kind of steps, vectors in Z[sqrt3]^2, of different
 // lengths:
 //   - a multiple of 30 degrees: twice its unit vector, as above (exact, length 2);
@@ -91,6 +91,11 @@ class Root3Directions {
   std::vector<int> degrees() const;
   // The orientations as written in name(), increasing ("0", "22.5").
   const std::vector<std::string>& orientation_texts() const { return texts_; }
+  // How far orientation k's step is off its written angle, in radians: 0 for an exact one, else
+  // the long double estimate made at parse (below 2^-36; a report, no decision uses it).
+  long double off_radians(std::size_t k) const { return off_[k]; }
+  // Orientation k's step lies exactly along its written angle (a multiple of 30 or 45 degrees).
+  bool orientation_exact(std::size_t k) const { return exacts_[k] != 0; }
   // The squared length of step i: 4 (a multiple of 30 degrees), 2 (of 45) or A^2 + B^2.
   std::int64_t norm2(std::size_t i) const { return norm2_[i]; }
   // The steps, counter-clockwise from +x (4 to 12 of them).
@@ -131,6 +136,8 @@ class Root3Directions {
   std::vector<Step> steps_;
   std::vector<std::int64_t> norm2_;
   std::vector<std::string> texts_;
+  std::vector<long double> off_;
+  std::vector<char> exacts_;
 };
 
 }  // namespace taut::geom

@@ -198,18 +198,29 @@ void add_check(CLI::App& app, int& status) {
         const std::optional<geom::LatticeDirections> set = geom::LatticeDirections::parse(orientations);
         // c:0,60,120 and the other sets at multiples of 30 degrees: integer vertices cannot follow
         // them exactly, so within the rounding of each end (half a unit in x and y)
-        const std::optional<geom::Root3Directions> set30 = set ? std::nullopt : geom::Root3Directions::parse(orientations);
+        // (and since the twenty-first session, the same day, any other c: set, each direction at
+        // its step: Root3Directions::parse_any)
+        const std::optional<geom::Root3Directions> set30 = set ? std::nullopt : geom::Root3Directions::parse_any(orientations);
         const bool check_directions = set || set30;
         std::string set_words;  // "horizontal or vertical", "at 0, 45, 90 or 135 degrees", ...
         if (set && set->is_rectilinear()) {
           set_words = "horizontal or vertical";
         } else if (check_directions) {
-          const std::vector<int> deg = set ? set->degrees() : set30->degrees();
+          std::vector<std::string> deg;
+          if (set)
+            for (const int d : set->degrees()) deg.push_back(std::to_string(d));
+          else
+            deg = set30->orientation_texts();
           set_words = "at ";
           for (std::size_t k = 0; k < deg.size(); ++k)
-            set_words += (k == 0 ? "" : k + 1 == deg.size() ? " or " : ", ") + std::to_string(deg[k]);
+            set_words += (k == 0 ? "" : k + 1 == deg.size() ? " or " : ", ") + deg[k];
           set_words += " degrees";
           if (set30) set_words += " within the rounding of its ends (half a unit in x and in y each)";
+          if (set30)
+            for (std::size_t k = 0; k < deg.size(); ++k)
+              if (!set30->orientation_exact(k))  // judged against its step (geom/root3_directions.h)
+                set_words += ", " + deg[k] + " degrees as the step (" + std::to_string(set30->steps()[k].x.a) + "," +
+                             std::to_string(set30->steps()[k].y.a) + ")";
         }
         for (const io::Route& r : layout->routes->routes) {
           if (r.status != "routed") {

@@ -131,14 +131,15 @@ bool check_routing_options(const RoutingOptions& options, const io::Layout& layo
   auto available = [&](const std::string& text) {
     const std::string o = io::canonical_orientations(text);
     return o == "rectilinear" || o == "octilinear" || ((options.allow_any || options.allow_sets) && o == "any") ||
-           (options.allow_sets && (geom::LatticeDirections::parse(o) || geom::Root3Directions::parse(o)));
+           (options.allow_sets && (geom::LatticeDirections::parse(o) || geom::Root3Directions::parse_any(o)));
   };
   // what is available, said in the refusal
   const std::string offered = options.allow_sets
-                                  ? "rectilinear, octilinear, any and c: sets of two orientations at least, every "
-                                    "one at a multiple of 45 degrees (e.g. c:45,135) or every one at a multiple of "
-                                    "30 degrees (e.g. c:0,60,120, written with vertices rounded to integers), are "
-                                    "available; a direction at another angle is not"
+                                  ? "rectilinear, octilinear, any and c: sets of two orientations at least modulo "
+                                    "180 degrees are available (e.g. c:45,135, c:0,60,120, c:0,10; a direction at a "
+                                    "multiple of neither 45 nor 30 degrees is taken as the integer step of at most "
+                                    "2^24 nearest it, which must lie within 2^-36 radians of it: one about 10^-6 "
+                                    "degrees off a slope of small integers, such as 0.000001 or 45.000001, does not)"
                                   : "only rectilinear and octilinear wires are available in this version";
   if (!options.orientations.empty() && !available(options.orientations)) {
     print_usage_error("CLI-0021", "--orientations " + options.orientations + ": " + offered);

@@ -536,7 +536,9 @@ void add_route(CLI::App& app, int& status) {
     const bool bends = args->routing.metric != "l1";
     // --orientations any, or a lattice c: set other than rectilinear and octilinear (since
     // 2026-12-06), or a set at multiples of 30 degrees (since 2026-12-07: c:0,60,120, written
-    // with its exact vertices rounded, router/root3_staircase.h): the nets are routed octilinear
+    // with its exact vertices rounded, router/root3_staircase.h), or any other c: set (since the
+    // twenty-first session, the same day: c:0,10, each direction at its step,
+    // geom::Root3Directions::parse_any, the steps in --stats): the nets are routed octilinear
     // with the gaps of exactly the clearance closed, then tightened together into those
     // directions (--tighten is implied), and a net whose wires cannot be written in them is failed
     // (ROUTE-0021). `target` is what the wires are written in.
@@ -1164,6 +1166,8 @@ void add_route(CLI::App& app, int& status) {
       j["tighten"] = together_stats_json(*tighten_stats);
       j["tighten"]["scale"] = tighten_scale;  // (since 2026-12-05)
     }
+    // a set at other angles: the integer steps its directions were taken as (since 2026-12-07)
+    if (const auto steps = realized_steps_json(target_orient); !steps.is_null()) j["orientation_steps"] = steps;
     if (!args->stats.empty()) stats = j.dump(2) + "\n";
     if (!write_output(args->out, xml) || (!args->svg.empty() && !write_output(args->svg, svg)) ||
         (!args->stats.empty() && !write_output(args->stats, stats))) {
@@ -1191,6 +1195,8 @@ void add_route(CLI::App& app, int& status) {
       std::cerr << args->file << ": routed " << routed << " of " << layout->nets.size() << " nets"
                 << (failed ? " (" + std::to_string(failed) + " not routed, see above)" : std::string())
                 << "; wrote " << args->out << '\n';
+      if (const std::string steps = realized_steps_text(target_orient); !steps.empty())
+        std::cerr << "  " << target_orient.name() << ": " << steps << " (every wire exact for these steps, then rounded)\n";
     }
     status = failed ? kIncomplete : kOk;
     }();

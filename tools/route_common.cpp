@@ -128,7 +128,36 @@ nlohmann::ordered_json together_stats_json(const router::NetsTightenStats& s) {
 }
 
 router::TightenOrientations tighten_orientations(const std::string& orientations) {
-  return {geom::LatticeDirections::parse(orientations), geom::Root3Directions::parse(orientations)};
+  const auto lattice = geom::LatticeDirections::parse(orientations);
+  return {lattice, lattice ? std::nullopt : geom::Root3Directions::parse_any(orientations)};
+}
+
+nlohmann::ordered_json realized_steps_json(const router::TightenOrientations& o) {
+  if (!o.set30 || o.set30->exact()) return nullptr;
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  const auto& texts = o.set30->orientation_texts();
+  for (std::size_t k = 0; k < texts.size(); ++k) {
+    if (o.set30->orientation_exact(k)) continue;  // a multiple of 30 or 45 degrees
+    const auto& st = o.set30->steps()[k];  // an integer step
+    out.push_back({{"degrees", texts[k]},
+                   {"step", {st.x.a, st.y.a}},
+                   {"off_radians", static_cast<double>(o.set30->off_radians(k))}});
+  }
+  return out;
+}
+
+std::string realized_steps_text(const router::TightenOrientations& o) {
+  const nlohmann::ordered_json j = realized_steps_json(o);
+  if (j.is_null()) return "";
+  std::string s;
+  for (const auto& e : j) {
+    char off[32];
+    std::snprintf(off, sizeof off, "%.2g", e["off_radians"].get<double>());
+    s += std::string(s.empty() ? "" : "; ") + e["degrees"].get<std::string>() + " degrees as the step (" +
+         std::to_string(e["step"][0].get<long long>()) + "," + std::to_string(e["step"][1].get<long long>()) + "), " +
+         off + " radians off";
+  }
+  return s;
 }
 
 WireTightener::WireTightener(const geom::NormalizedObstacles& norm, const std::string& orientations)
@@ -183,7 +212,7 @@ std::vector<router::NetPins> net_pins(const io::Layout& layout) {
 
 std::string no_staircase_reason(const std::string& orientations, const std::string& why) {
   if (!why.empty()) return why;
-  if (geom::Root3Directions::parse(orientations))  // (the builder's own reason is said where there is one)
+  if (geom::Root3Directions::parse_any(orientations))  // (the builder's own reason is said where there is one)
     return "no " + orientations + " wire with integer vertices follows the taut wire's class at its length (a blockage "
            "edge at an angle outside the set pinches it past 256 runs, or no rounding of its vertices to integers "
            "stays free); --orientations any writes it";

@@ -88,10 +88,20 @@ class WireTightener {
 // The statistics of tightening the nets together, as --stats writes them.
 nlohmann::ordered_json together_stats_json(const router::NetsTightenStats& s);
 
-// "any", "rectilinear", "octilinear", a lattice c: set (geom::LatticeDirections::parse) or a set
-// at multiples of 30 degrees (geom::Root3Directions::parse) as router::TightenOrientations;
-// anything else is taken as any.
+// "any", "rectilinear", "octilinear", a lattice c: set (geom::LatticeDirections::parse) or any
+// other c: set (geom::Root3Directions::parse_any: at multiples of 30 degrees since 2026-12-07, at
+// other angles since the twenty-first session, the same day) as router::TightenOrientations;
+// anything else (such as a direction parse_any cannot realize) is taken as any.
 router::TightenOrientations tighten_orientations(const std::string& orientations);
+
+// A set whose steps are not all exactly along their written angles (Root3Directions::parse_any):
+// each such orientation's step and how far it is off, for --stats, as
+// [{"degrees": "10", "step": [966687, 170453], "off_radians": 1.3e-14}]; null for any other
+// orientations.
+nlohmann::ordered_json realized_steps_json(const router::TightenOrientations& o);
+// The same in words for stderr ("10 degrees as the step (966687,170453), 1.3e-14 radians off"),
+// "" for any other orientations.
+std::string realized_steps_text(const router::TightenOrientations& o);
 
 // Every net's pins as the net router takes them.
 std::vector<router::NetPins> net_pins(const io::Layout& layout);

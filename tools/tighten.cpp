@@ -11,7 +11,11 @@
 // `c:0,90` and `c:0,45,90,135` name rectilinear and octilinear. A set at multiples of 30 degrees
 // (c:0,60,120, ...; since 2026-12-07) writes the shortest wire of the class in it built exactly in
 // Q(sqrt3) with its vertices rounded to integers (router/root3_staircase.h; with --clearance
-// and --min-link since 2026-12-07). `c:` sets with a direction at another angle are refused
+// and --min-link since 2026-12-07). Since the twenty-first session (the same day) any other c: set
+// too, such as c:0,10 or c:0,45,60: each direction at a multiple of 30 or 45 degrees is an exact
+// step, any other the integer step of at most 2^24 nearest it (geom::Root3Directions::parse_any;
+// within 2^-36 radians, the steps reported in --stats and on stderr), and the wire is built exactly
+// for those steps and rounded the same way. A direction no such step comes near enough is refused
 // (CLI-0027) or, from <rules>, replaced by `any` (TIGHTEN-0003).
 // --min-link adds each wire's minimum-link path of its class (router/minlink.h, any angle, exact
 // rational bends; for a loop its minimum-link loop, section 5.2, proven minimal unless its
@@ -228,10 +232,12 @@ void add_tighten(CLI::App& app, int& status) {
         o = to.name();
       } else {
         print_usage_error("CLI-0027", "tighten: --orientations " + o +
-                                          ": expected rectilinear, octilinear, any, a c: set of directions at "
-                                          "multiples of 45 degrees, two orientations at least, or one at "
-                                          "multiples of 30 degrees such as c:0,60,120 (a direction at "
-                                          "another angle is not available)");
+                                          ": expected rectilinear, octilinear, any, or a c: set of two orientations "
+                                          "at least modulo 180 degrees such as c:0,60,120 or c:0,10 (a direction "
+                                          "at a multiple of neither 45 nor 30 degrees is taken as the integer step "
+                                          "of at most 2^24 nearest it, which must lie within 2^-36 radians of it: "
+                                          "one about 10^-6 degrees off a slope of small integers, such as 0.000001 "
+                                          "or 45.000001, does not)");
         status = kInvalid;
         return;
       }
@@ -250,8 +256,10 @@ void add_tighten(CLI::App& app, int& status) {
         } else {
           print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0003", layout->file, layout->rules->line, 0,
                                         "<rules orientations=\"" + orientations + "\">: " +
-                                            "a direction at an angle other than a multiple of 30 or 45 degrees is not "
-                                            "available; tightened wires are written at any angle"}},
+                                            "no integer step of at most 2^24 lies within 2^-36 radians of a direction "
+                                            "(one about 10^-6 degrees off a slope of small integers, such as 0.000001 "
+                                            "or 45.000001), or the set is not one of two orientations at least; "
+                                            "tightened wires are written at any angle"}},
                             args->load.quiet);
           orientations = "any";
         }
@@ -928,6 +936,8 @@ void add_tighten(CLI::App& app, int& status) {
                       {"triangles", wt.triangulation().triangles().size()},
                       {"seconds", {{"prepare", std::chrono::duration<double>(t1 - t0).count()},
                                    {"tighten", std::chrono::duration<double>(t2 - t1).count()}}}};
+      // a set at other angles: the integer steps its directions were taken as (since 2026-12-07)
+      if (const auto steps = realized_steps_json(out_orientations); !steps.is_null()) j["tighten"]["orientation_steps"] = steps;
       if (together_stats) {
         j["tighten"]["together"] = together_stats_json(*together_stats);
         j["tighten"]["together"]["scale"] = together_scale;  // (since 2026-12-05)
@@ -964,6 +974,8 @@ void add_tighten(CLI::App& app, int& status) {
       }
       std::cerr << args->file << ": tightened " << done << " of " << layout->nets.size() << " nets, length "
                 << fixed3(before) << " -> " << fixed3(after) << "; wrote " << args->out << '\n';
+      if (const std::string steps = realized_steps_text(out_orientations); !steps.empty())
+        std::cerr << "  " << orientations << ": " << steps << " (every wire exact for these steps, then rounded)\n";
     }
     status = done == layout->nets.size() ? kOk : kIncomplete;
   });

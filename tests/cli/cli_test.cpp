@@ -183,12 +183,17 @@ TEST(Cli, CheckRoutesOrientations) {
 // it on a direction of the set (geom::Root3Directions::fits), and the first that does not is
 // named (CHECK-0002). 0,0 -> 10,17 -> 30,17 is 60 then 0 degrees after rounding (10 sqrt3 =
 // 17.32); 0,0 -> 10,22 is not (11 sqrt3 = 19.05 < 21); c:0,90,45 is a lattice set, checked
-// exactly; c:0,10,100 is not checked.
+// exactly. A set at other angles (since the twenty-first session, the same day) is checked
+// against its steps (geom::Root3Directions::parse_any): 0,0 -> 57,10 -> 87,10 is 10 then 0
+// degrees in c:0,10,100 (57 tan 10 = 10.05); 10,22 is not; the steps are named. A set with a
+// direction no step realizes (c:0,0.000001) is not checked.
 TEST(Cli, CheckRoutesInASetAtMultiplesOf30Degrees) {
   const std::string dir = temp_dir("routes_orientations30");
-  auto layout = [](const std::string& orientations, const std::string& points, const std::string& length) {
+  // (the second pin at 30,17, or at `q`)
+  auto layout = [](const std::string& orientations, const std::string& points, const std::string& length,
+                   const std::string& q = "x=\"30\" y=\"17\"") {
     return "<layout name=\"r\" version=\"1\">\n"
-           "  <net name=\"a\"><pin name=\"p\" x=\"0\" y=\"0\"/><pin name=\"q\" x=\"30\" y=\"17\"/></net>\n"
+           "  <net name=\"a\"><pin name=\"p\" x=\"0\" y=\"0\"/><pin name=\"q\" " + q + "/></net>\n"
            "  <routes tool=\"test\" orientations=\"" + orientations + "\">\n"
            "    <route net=\"a\" status=\"routed\" length=\"" + length + "\" bends=\"1\"><wire points=\"" + points +
            "\"/></route>\n  </routes>\n</layout>\n";
@@ -210,8 +215,22 @@ TEST(Cli, CheckRoutesInASetAtMultiplesOf30Degrees) {
   r = run_taut({"check", dir + "/lattice.xml"});
   EXPECT_EQ(r.status, 1) << r.err;  // 10,17 is not at 45 degrees, exactly
   EXPECT_NE(r.err.find("the wire segment 0,0 10,17 is not at 0, 45 or 90 degrees (<routes"), std::string::npos) << r.err;
-  write_text(dir + "/ten.xml", layout("c:0,10,100", "0,0 10,22 30,17", "44.782"));
+  auto layout10 = [&](const std::string& orientations, const std::string& points, const std::string& length) {
+    return layout(orientations, points, length, "x=\"87\" y=\"10\"");
+  };
+  write_text(dir + "/ten.xml", layout10("c:0,10,100", "0,0 57,10 87,10", "87.871"));
   r = run_taut({"check", dir + "/ten.xml", "--json"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["routes_check"]["orientations"], "ok");
+  write_text(dir + "/ten_off.xml", layout10("c:0,10,100", "0,0 10,22 87,10", "102.096"));
+  r = run_taut({"check", dir + "/ten_off.xml"});
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("[CHECK-0002] route \"a\": the wire segment 0,0 10,22 is not at 0, 10 or 100 degrees within the "
+                       "rounding of its ends (half a unit in x and in y each), 10 degrees as the step ("),
+            std::string::npos)
+      << r.err;
+  write_text(dir + "/tiny.xml", layout10("c:0,0.000001", "0,0 57,10 87,10", "87.871"));
+  r = run_taut({"check", dir + "/tiny.xml", "--json"});
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(nlohmann::json::parse(r.out)["routes_check"]["orientations"], "not checked");
 }

@@ -1349,7 +1349,9 @@ TEST(Tighten, SetsAtMultiplesOf30DegreesOnTheWindDesign) {
 
 // A c: set in <rules> is the default output: one at multiples of 30 degrees is written in it
 // (since 2026-12-07, and, later that day, with --clearance and --min-link; before, at any angle
-// with TIGHTEN-0003, which a set at another angle still gets).
+// with TIGHTEN-0003), and since the twenty-first session (the same day) one at other angles, each
+// direction at its integer step (geom::Root3Directions::parse_any); a direction no step realizes
+// still gets TIGHTEN-0003.
 TEST(Tighten, CSetInTheRulesIsTheOutputsDirections) {
   const std::string dir = temp_dir("tighten_cset");
   const std::string body = "  <rules orientations=\"c:0,60,120\"/>\n"
@@ -1367,14 +1369,40 @@ TEST(Tighten, CSetInTheRulesIsTheOutputsDirections) {
   EXPECT_EQ(j["routes_check"]["orientations"], "ok");
   EXPECT_EQ(j["routes_check"]["free_space"], "ok");
   EXPECT_EQ(j["routes_check"]["connectivity"], "ok");
-  // another angle: at any angle, said
+  // other angles: in the set, every segment at its steps within the rounding (taut check), the
+  // minimum-link path's bends rational (integer steps)
   std::string ten = body;
   ten.replace(ten.find("c:0,60,120"), 10, "c:0,10,100");
-  const auto t10 = run_taut({"tighten", layout_file("tighten_cset_ten", ten), "-o", dir + "/t10.xml"});
+  const auto t10 = run_taut({"tighten", layout_file("tighten_cset_ten", ten), "-o", dir + "/t10.xml", "--min-link",
+                             "--stats", dir + "/t10.json"});
   EXPECT_EQ(t10.status, 0) << t10.err;
-  EXPECT_NE(t10.err.find("warning: [TIGHTEN-0003]"), std::string::npos) << t10.err;
-  EXPECT_NE(t10.err.find("an angle other than a multiple of 30 or 45 degrees is not available"), std::string::npos) << t10.err;
-  EXPECT_EQ(wires_of(dir + "/t10.xml", "n"), (std::vector<Path>{{{10, 50}, {40, 60}, {60, 60}, {90, 50}}}));
+  EXPECT_EQ(t10.err.find("TIGHTEN-0003"), std::string::npos) << t10.err;
+  EXPECT_NE(t10.err.find("c:0,10,100: 10 degrees as the step ("), std::string::npos) << t10.err;
+  EXPECT_NE(read_text(dir + "/t10.xml").find("orientations=\"c:0,10,100\""), std::string::npos);
+  {
+    const auto c10 = run_taut({"check", dir + "/t10.xml", "--json"});
+    EXPECT_EQ(c10.status, 0) << c10.err;
+    const auto cj = nlohmann::json::parse(c10.out);
+    EXPECT_EQ(cj["routes_check"]["orientations"], "ok");
+    EXPECT_EQ(cj["routes_check"]["free_space"], "ok");
+    const auto w10 = wires_of(dir + "/t10.xml", "n");
+    ASSERT_EQ(w10.size(), 1u);
+    EXPECT_GT(w10[0].size(), 4u);  // not the taut wire: 10,50 40,60 is at 18.4 degrees, a staircase of 10 and 100
+    const auto j = nlohmann::json::parse(read_text(dir + "/t10.json"))["tighten"];
+    EXPECT_EQ(j["orientation_steps"].size(), 2u) << j.dump();  // 10 and 100 degrees
+    ASSERT_TRUE(j["nets"][0].contains("oriented_min_link_wires")) << j.dump();
+    for (const auto& pt : j["nets"][0]["oriented_min_link_wires"][0])
+      for (const auto& c : pt) EXPECT_EQ(c.get<std::string>().find("sqrt3"), std::string::npos) << j.dump();
+  }
+  // a direction no integer step of at most 2^24 realizes within 2^-36 radians: at any angle, said
+  std::string near = body;
+  near.replace(near.find("c:0,60,120"), 10, "c:0,45.000001");
+  const auto tn = run_taut({"tighten", layout_file("tighten_cset_near", near), "-o", dir + "/tn.xml"});
+  EXPECT_EQ(tn.status, 0) << tn.err;
+  EXPECT_NE(tn.err.find("warning: [TIGHTEN-0003]"), std::string::npos) << tn.err;
+  EXPECT_NE(tn.err.find("no integer step of at most 2^24 lies within 2^-36 radians of a direction"), std::string::npos)
+      << tn.err;
+  EXPECT_EQ(wires_of(dir + "/tn.xml", "n"), (std::vector<Path>{{{10, 50}, {40, 60}, {60, 60}, {90, 50}}}));
   // with --clearance: in the set too (no clearance in these rules: the same wire)
   const auto tc = run_taut({"tighten", file, "-o", dir + "/tc.xml", "--clearance"});
   EXPECT_EQ(tc.status, 0) << tc.err;
@@ -1443,16 +1471,18 @@ TEST(Tighten, BadInputExit2AndWritesNothing) {
   run = run_taut({"tighten", layout_file("tighten_bad_pinch", pinch), "-o", dir + "/t.xml"});
   EXPECT_EQ(run.status, 2) << run.err;
   EXPECT_NE(run.err.find("passes through a point where blockages touch at or after 60,60"), std::string::npos) << run.err;
-  // c: sets with a direction at neither a multiple of 45 nor of 30 degrees are not available
+  // c: sets with a direction no integer step of at most 2^24 realizes within 2^-36 radians (since
+  // the twenty-first session, 2026-12-07; before, any direction at neither a multiple of 45 nor of
+  // 30 degrees, such as c:0,10) are not available
   for (const auto& extra : std::vector<std::vector<std::string>>{
-           {"--orientations", "c:0,10"}, {"--orientations", "c:0,45,60", "--min-link"},
-           {"--orientations", "c:0,22.5", "--clearance", "--min-link"}}) {
+           {"--orientations", "c:0,0.000001"}, {"--orientations", "c:0,45.000001,60", "--min-link"},
+           {"--orientations", "c:0,89.999999", "--clearance", "--min-link"}}) {
     std::vector<std::string> cmd{"tighten", file, "-o", dir + "/t.xml"};
     cmd.insert(cmd.end(), extra.begin(), extra.end());
     run = run_taut(cmd);
     EXPECT_EQ(run.status, 2) << run.err;
     EXPECT_NE(run.err.find("[CLI-0027]"), std::string::npos) << run.err;
-    EXPECT_NE(run.err.find("or one at multiples of 30 degrees such as c:0,60,120"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("such as 0.000001 or 45.000001, does not"), std::string::npos) << run.err;
     EXPECT_EQ(read_text(dir + "/t.xml"), "old");
   }
 }
