@@ -189,24 +189,32 @@ int main(int argc, char** argv) {
           reps);
     // a set at multiples of 30 degrees (router/root3_staircase.h: exact in Q(sqrt3), rounded, each
     // rounded wire tightened back to check it, as the CLI does)
+    // and (since 2026-12-07) a set at other angles, c:0,10,90 (Root3Directions::parse_any: 10
+    // degrees as an integer step of about 2^24, points rational)
     const taut::geom::Root3Directions hex = *taut::geom::Root3Directions::parse("c:0,60,120");
     const taut::router::Root3StaircaseBuilder sb30(D, b.norm.obstacles);
-    int hex_missing = 0, hex_pinched = 0, hex_unrounded = 0;
-    long long hex_links = 0, hex_moved = 0;
-    const double t_hex = seconds_of(
-        [&] {
-          hex_missing = hex_pinched = hex_unrounded = 0;
-          hex_links = hex_moved = 0;
-          for (const auto& t : taut_paths) {
-            const auto w = taut::router::c_oriented(tight, sb30, t, hex);
-            const bool ok = w.ok();
-            hex_missing += !ok;
-            hex_pinched += !w.ok() && w.why.rfind("no staircase", 0) == 0;
-            hex_unrounded += !w.ok() && w.why.rfind("rounded to integer vertices, every wire", 0) == 0;
-            if (ok) hex_links += static_cast<long long>(w.points.size()) - 1, hex_moved += w.moved;
-          }
-        },
-        1);
+    struct SetOutput {
+      taut::geom::Root3Directions set;
+      double seconds = 0;
+      int missing = 0, pinched = 0, unrounded = 0;
+      long long links = 0, moved = 0;
+    };
+    std::vector<SetOutput> outs{{hex}, {*taut::geom::Root3Directions::parse_any("c:0,10,90")}};
+    for (SetOutput& so : outs)
+      so.seconds = seconds_of(
+          [&] {
+            so.missing = so.pinched = so.unrounded = 0;
+            so.links = so.moved = 0;
+            for (const auto& t : taut_paths) {
+              const auto w = taut::router::c_oriented(tight, sb30, t, so.set);
+              const bool ok = w.ok();
+              so.missing += !ok;
+              so.pinched += !w.ok() && w.why.rfind("no staircase", 0) == 0;
+              so.unrounded += !w.ok() && w.why.rfind("rounded to integer vertices, every wire", 0) == 0;
+              if (ok) so.links += static_cast<long long>(w.points.size()) - 1, so.moved += w.moved;
+            }
+          },
+          1);
     taut_paths.resize(std::min<std::size_t>(taut_paths.size(), 1000));  // min-link: the first 1,000
     // minimum-link paths of the same taut wires (router::MinLinker, exact rationals)
     const taut::router::MinLinker ml(tri);
@@ -370,13 +378,15 @@ int main(int argc, char** argv) {
                   "", c_sets[o].name().c_str(), sketches.size(), t_c[o],
                   t_c[o] / static_cast<double>(sketches.size()) * 1e3, t_c[o] / t_tighten, c_missing[o],
                   static_cast<double>(c_links[o]) / static_cast<double>(sketches.size() - static_cast<std::size_t>(c_missing[o])));
-    std::printf("%9s %s output of the %zu taut wires: %.3f s (%.3f ms per wire, %.1f x tightening one, %.1f x "
-                "rectilinear output), %d without a wire in the set (%d pinched, %d no free rounding, the rest not "
-                "tightened back), %.2f links per wire, %lld vertices off their nearest integer point\n",
-                "", hex.name().c_str(), sketches.size(), t_hex, t_hex / static_cast<double>(sketches.size()) * 1e3,
-                t_hex / t_tighten, t_hex / t_c[0], hex_missing, hex_pinched, hex_unrounded,
-                static_cast<double>(hex_links) / static_cast<double>(sketches.size() - static_cast<std::size_t>(hex_missing)),
-                hex_moved);
+    for (const SetOutput& so : outs)
+      std::printf("%9s %s output of the %zu taut wires: %.3f s (%.3f ms per wire, %.1f x tightening one, %.1f x "
+                  "rectilinear output), %d without a wire in the set (%d pinched, %d no free rounding, the rest not "
+                  "tightened back), %.2f links per wire, %lld vertices off their nearest integer point\n",
+                  "", so.set.name().c_str(), sketches.size(), so.seconds,
+                  so.seconds / static_cast<double>(sketches.size()) * 1e3, so.seconds / t_tighten, so.seconds / t_c[0],
+                  so.missing, so.pinched, so.unrounded,
+                  static_cast<double>(so.links) / static_cast<double>(sketches.size() - static_cast<std::size_t>(so.missing)),
+                  so.moved);
     std::printf("%9s minimum-link paths of the first %zu wires: %.3f s (%.2f ms per wire, %.1f x tightening one), "
                 "%.2f links per wire against %.2f for the shortest, longest coordinate %zu characters\n",
                 "", taut_paths.size(), t_minlink, t_minlink / static_cast<double>(taut_paths.size()) * 1e3,
