@@ -123,7 +123,7 @@ int main(int argc, char** argv) {
     const auto lattice = taut::geom::LatticeDirections::parse(set_word);
     const auto thirty = lattice ? std::nullopt : taut::geom::Root3Directions::parse_any(set_word);  // (since 2026-12-07)
     if (set_word != "any" && !lattice && !thirty) {
-      std::fprintf(stderr, "--orientations: any or a c: set of directions at multiples of 45 degrees or of 30 degrees\n");
+      std::fprintf(stderr, "--orientations: any or a c: set (Root3Directions::parse_any realizes directions at other angles)\n");
       return 2;
     }
     if (!bends) set_orient = taut::router::TightenOrientations{lattice, thirty};

@@ -10,8 +10,10 @@
 // a + b*sqrt(3) has the sign of a iff |a| > |b|*sqrt(3), i.e. iff a*a > 3*b*b (never equal, as
 // sqrt(3) is irrational). sign_of needs |a|, |b| < 2^62 (3 b^2 in __int128), so comparisons
 // (which take differences) need |a|, |b| < 2^61; operator* needs its result's coefficients below
-// 2^63. Every value formed here stays below 2^47: coordinates are below 2^30, a step's
-// coefficients at most 2, and length12 multiplies a cross product (below 2^34) by at most 12.
+// 2^63. Every value formed here stays below 2^57: coordinates are below 2^30 (vectors below
+// 2^32), a step's coefficients at most 2 (multiples of 30 degrees) or 2^24 (the integer steps of
+// Root3Directions::parse_any), and length12 multiplies a cross product (below 2^34, its sets'
+// steps being of the first kind) by at most 12.
 #pragma once
 
 #include <cmath>

@@ -8,6 +8,9 @@
 #include <stdexcept>
 #include <utility>
 
+#include <boost/math/constants/constants.hpp>
+#include <boost/multiprecision/cpp_bin_float.hpp>
+
 #include "geom/directions.h"
 
 namespace taut::geom {
@@ -39,6 +42,7 @@ bool ccw_before(const Step& s, const Step& t) {
 
 constexpr std::int64_t kStepMax = std::int64_t{1} << 24;
 constexpr long double kMaxError = 1.0L / (std::int64_t{1} << 36);  // radians
+constexpr std::size_t kMaxInexact = 8;  // orientations at other angles (RadicalSum's radicals)
 
 struct Realized {
   Step step;
@@ -53,32 +57,38 @@ std::optional<Realized> realize(const WrittenDegrees& w) {
   if (w.fraction.empty() && w.whole % 30 == 0) return Realized{kSteps[static_cast<std::size_t>(w.whole / 30)], 4, true, 0};
   if (w.fraction.empty() && w.whole % 45 == 0)
     return Realized{{{w.whole == 45 ? 1 : -1, 0}, {1, 0}}, 2, true, 0};  // 45 or 135
-  // the slope in long double: it chooses the step, nothing more (every later decision is exact
-  // for the step)
-  using ld = long double;
-  const ld r = std::stold(w.text()) * std::numbers::pi_v<ld> / 180;
-  const ld c = std::cos(r), s = std::sin(r);  // s > 0: 0 < r < pi
-  const bool steep = std::fabs(s) > std::fabs(c);
-  const ld t = steep ? std::fabs(c) / s : s / std::fabs(c);  // in [0, 1]
+  // The slope in 50-digit binary floating point (Boost.Multiprecision's cpp_bin_float, the same on
+  // every machine, unlike long double): it chooses the step, nothing more (every later decision
+  // is exact for the step).
+  using F = boost::multiprecision::cpp_bin_float_50;
+  F r;
+  try {
+    r = F(w.text()) * boost::math::constants::pi<F>() / 180;
+  } catch (const std::exception&) {
+    return std::nullopt;  // (not expected of digits and one '.')
+  }
+  const F c = cos(r), s = sin(r);  // s > 0: 0 < r < pi
+  const bool steep = abs(s) > abs(c);
+  const F t = steep ? F(abs(c) / s) : F(s / abs(c));  // in [0, 1]
   // the last convergent of t's continued fraction with numerator and denominator at most
   // kStepMax, and the semiconvergent past it with the largest allowed multiple: whichever is
-  // nearer (a best approximation is one of them)
+  // nearer (the two best approximations round t within the bound)
   std::int64_t p0 = 0, q0 = 1, p1 = 1, q1 = 0, next_a = 0;
-  ld x = t;
+  F x = t;
   for (int i = 0; i < 200; ++i) {
-    const ld a = std::floor(x);
-    if (a > static_cast<ld>(kStepMax)) {
+    const F a = floor(x);
+    if (a > kStepMax) {
       next_a = kStepMax + 1;
       break;
     }
-    const auto ai = static_cast<std::int64_t>(a);
+    const auto ai = a.convert_to<std::int64_t>();
     const std::int64_t p2 = ai * p1 + p0, q2 = ai * q1 + q0;
     if (p2 > kStepMax || q2 > kStepMax) {
       next_a = ai;
       break;
     }
     p0 = p1, q0 = q1, p1 = p2, q1 = q2;
-    const ld f = x - a;
+    const F f = x - a;
     if (!(f > 0)) break;
     x = 1 / f;
   }
@@ -88,19 +98,22 @@ std::optional<Realized> realize(const WrittenDegrees& w) {
     if (j >= 1) tries.push_back({p0 + j * p1, q0 + j * q1});
   }
   std::optional<Realized> best;
-  ld best_error = 0;
+  F best_error = 0;
   for (const auto& [p, q] : tries) {
     if (q == 0) continue;
     std::int64_t A = steep ? p : q, B = steep ? q : p;  // the step's |x| and y
     if (c < 0) A = -A;
-    if (B == 0) continue;  // along the x axis: not this direction
-    const ld error = std::fabs(std::atan2(static_cast<ld>(B), static_cast<ld>(A)) - r);
+    // along the x axis: +x is 0 degrees' step (a direction just above 0 may be taken as it, when
+    // the set lacks 0); -x would be 180 degrees, out of the half turn the set is written in
+    if (B == 0 && A < 0) continue;
+    const F error = abs(atan2(F(B), F(A)) - r);
     if (!best || error < best_error) {
-      best = Realized{{{A, 0}, {B, 0}}, A * A + B * B, false, error};
+      best = Realized{{{A, 0}, {B, 0}}, A * A + B * B, false, error.convert_to<long double>()};
       best_error = error;
     }
   }
   if (!best || best_error > kMaxError) return std::nullopt;
+  if (best->step.y.a == 0) best->step.x.a = 1, best->norm2 = 1;  // (1, 0)
   return best;
 }
 
@@ -118,27 +131,56 @@ Root3Directions::Root3Directions(unsigned mask) : mask_(mask) {
 }
 
 std::optional<Root3Directions> Root3Directions::parse_any(std::string_view text) {
+  std::string why;
+  return parse_any(text, why);
+}
+
+std::optional<Root3Directions> Root3Directions::parse_any(std::string_view text, std::string& why) {
+  why.clear();
   if (auto exact = parse(text)) return exact;
-  if (LatticeDirections::parse(text)) return std::nullopt;
+  if (LatticeDirections::parse(text)) {
+    why = "a lattice set (geom::LatticeDirections)";
+    return std::nullopt;
+  }
   std::optional<std::vector<WrittenDegrees>> written = written_degrees(text);
-  if (!written) return std::nullopt;
+  if (!written) {
+    why = "not c: followed by directions in degrees (digits with at most one '.')";
+    return std::nullopt;
+  }
   std::sort(written->begin(), written->end());
   written->erase(std::unique(written->begin(), written->end()), written->end());
-  if (written->size() < 2) return std::nullopt;
+  if (written->size() < 2) {
+    why = "fewer than two orientations modulo 180 degrees";
+    return std::nullopt;
+  }
   Root3Directions set;
   set.mask_ = 0;
   std::vector<Realized> half_steps;  // in the written directions' increasing order, from 0 to below 180
+  std::size_t inexact = 0;
   for (const WrittenDegrees& w : *written) {
     const std::optional<Realized> r = realize(w);
-    if (!r) return std::nullopt;
+    if (!r) {
+      why = "no integer step of at most 2^24 lies within 2^-36 radians of " + w.text() +
+            " degrees (it is about 10^-6 degrees off a slope of small integers, or a step of 180 degrees would be needed)";
+      return std::nullopt;
+    }
     // strictly counter-clockwise of the previous one (the written order): no two parallel, none
     // out of order
-    if (!half_steps.empty() && !ccw_before(half_steps.back().step, r->step)) return std::nullopt;
+    if (!half_steps.empty() && !ccw_before(half_steps.back().step, r->step)) {
+      why = set.texts_.back() + " and " + w.text() + " degrees are too close to tell apart by integer steps of at most 2^24";
+      return std::nullopt;
+    }
     half_steps.push_back(*r);
     set.exact_ = set.exact_ && r->exact;
+    inexact += r->exact ? 0 : 1;
     set.texts_.push_back(w.text());
     set.off_.push_back(r->off);
     set.exacts_.push_back(r->exact ? 1 : 0);
+  }
+  if (inexact > kMaxInexact) {  // (each one more square root in a length)
+    why = std::to_string(inexact) + " directions at multiples of neither 30 nor 45 degrees (at most " +
+          std::to_string(kMaxInexact) + ")";
+    return std::nullopt;
   }
   for (int side = 0; side < 2; ++side)
     for (const Realized& r : half_steps) {
@@ -194,6 +236,20 @@ bool Root3Directions::cones_leave_box() const {
     if (a.x.sign() * b.x.sign() < 0 || a.y.sign() * b.y.sign() < 0) return true;
   }
   return false;
+}
+
+int Root3Directions::box_growth() const {
+  int g = 1;
+  for (std::size_t i = 0; i < steps_.size(); ++i) {
+    const Step& a = steps_[i];
+    const Step& b = steps_[(i + 1) % steps_.size()];
+    const Root3 c = cross(a, b), d = a.x * b.x + a.y * b.y;  // c > 0: a cone is below 180 degrees
+    if (!(d.sign() < 0 && (c + d).sign() < 0)) continue;    // at most 135 degrees
+    const long double inv_sin = std::sqrt(static_cast<long double>(norm2_[i]) * static_cast<long double>(norm2_[(i + 1) % steps_.size()])) /
+                                static_cast<long double>(c.to_double());
+    g = std::max(g, static_cast<int>(std::ceil(inv_sin)));
+  }
+  return g;
 }
 
 int Root3Directions::cone(i64 dx, i64 dy) const {

@@ -75,9 +75,12 @@ class Root3Directions {
   // (LatticeDirections::parse): what parse() takes, the same; otherwise each direction (digits
   // with at most one '.', in degrees, as whole_degrees reads them, but any fraction) as the top
   // of the file says. Directions written alike modulo 180 ("10", "190", "10.0") are one; nullopt
-  // for two others whose steps are parallel, or a step off its direction by more than 2^-36
-  // radians (see the top of the file).
+  // for two others whose steps are parallel or out of order, a step off its direction by more
+  // than 2^-36 radians (see the top of the file), or more than eight directions at multiples of
+  // neither 30 nor 45 degrees (each one more square root in a length, router/radical_sum.h).
   static std::optional<Root3Directions> parse_any(std::string_view orientations);
+  // The same; `why` says what is refused when nullopt ("" otherwise), for messages.
+  static std::optional<Root3Directions> parse_any(std::string_view orientations, std::string& why);
 
   // The set's orientations as a mask (bit k = 30k degrees); 0 for a set of parse_any that
   // parse() would not give.
@@ -98,7 +101,8 @@ class Root3Directions {
   bool orientation_exact(std::size_t k) const { return exacts_[k] != 0; }
   // The squared length of step i: 4 (a multiple of 30 degrees), 2 (of 45) or A^2 + B^2.
   std::int64_t norm2(std::size_t i) const { return norm2_[i]; }
-  // The steps, counter-clockwise from +x (4 to 12 of them).
+  // The steps, counter-clockwise from +x (4 to 12 of them in parse()'s sets; any even count from 4
+  // in parse_any's).
   const std::vector<Step>& steps() const { return steps_; }
   // v (not zero, |dx|, |dy| < 2^40; < 2^36 in a set of parse_any with integer steps) lies exactly
   // along one of the steps (in parse()'s sets only the axes can).
@@ -108,7 +112,14 @@ class Root3Directions {
   // Some cone's two steps do not lie in one closed quadrant (it straddles an axis, as 60 and 120
   // degrees in c:0,60,120), so a staircase in it leaves the box of its link's ends.
   bool cones_leave_box() const;
-  // The open cone holding v's direction (v not zero), or -1 when v lies along a step.
+  // How far a staircase in a cone of the set can reach out of its link's box, in units of the
+  // link's |dx| + |dy|: 1 when every cone is at most 135 degrees (the lattice sets' bound, which
+  // callers grow by), else the ceiling of 1 / sin of the widest cone (its parallelogram's corners
+  // lie within |v| / sin of the link's start): c:0,30 2, c:0,10 6. A sizing (long double), not a
+  // geometric decision.
+  int box_growth() const;
+  // The open cone holding v's direction (v not zero; |dx|, |dy| < 2^40, < 2^36 with integer
+  // steps), or -1 when v lies along a step.
   int cone(std::int64_t dx, std::int64_t dy) const;
   // The cone's two steps (counter-clockwise order), as LatticeDirections::cone_steps.
   std::array<Step, 2> cone_steps(int cone) const {

@@ -914,7 +914,8 @@ CMinLinkLoopOf<typename G::P> Impl<G>::loop(const geom::FreeSpaceTriangulation& 
   struct Start {
     std::size_t a;
     int kind;    // 0 an edge from v[a], 1 vertex v[a] with direction d, 2 vertex v[a]
-    Point d{0, 0};  // an integer vector along a step (a unit vector: the lattice steps, a 30-degree set's axes)
+    Point d{0, 0};  // an integer vector along a step (a unit vector: the lattice steps, a 30-degree set's axes,
+                    // the diagonals of a set of Root3Directions::parse_any)
   };
   std::vector<Start> starts;
   {

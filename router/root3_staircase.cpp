@@ -30,7 +30,8 @@ struct Frame {
   Point a;
   Step s1, s2;
   R3 d;
-  // (U, V) of an integer point, in Z[sqrt3] (|coefficients| < 2^34)
+  // (U, V) of an integer point, in Z[sqrt3] (|coefficients| < 2^34; < 2^57 with the integer
+  // steps of Root3Directions::parse_any, up to 2^24)
   std::array<Root3, 2> of_int(Point p) const {
     const i64 dx = i64{p.x} - a.x, dy = i64{p.y} - a.y;
     return {cross_vs(dx, dy, s2), cross_sv(s1, dx, dy)};

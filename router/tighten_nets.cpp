@@ -419,7 +419,8 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
     std::int64_t margin = margin0;
     if (wide_set) {
       const Box bb = geom::bounding_box(line);
-      margin = std::min<std::int64_t>(margin0 + (std::int64_t{bb.hi.x} - bb.lo.x) + (std::int64_t{bb.hi.y} - bb.lo.y),
+      margin = std::min<std::int64_t>(margin0 + options_.orientations.box_growth() *
+                                                    ((std::int64_t{bb.hi.x} - bb.lo.x) + (std::int64_t{bb.hi.y} - bb.lo.y)),
                                       4 * std::int64_t{geom::kMaxCoord});
     }
     while (true) {

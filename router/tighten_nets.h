@@ -81,6 +81,9 @@ struct TightenOrientations {
   // A staircase in some cone of the set leaves the box of its link's ends (either kind's
   // cones_leave_box; false for any angle).
   bool cones_leave_box() const;
+  // How many times its link's |dx| + |dy| a staircase may reach out of the link's box
+  // (Root3Directions::box_growth; 1 for the lattice sets and any angle).
+  int box_growth() const { return set30 ? set30->box_growth() : 1; }
   static const TightenOrientations Any, Rectilinear, Octilinear;
   friend bool operator==(const TightenOrientations&, const TightenOrientations&) = default;
 };

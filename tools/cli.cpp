@@ -141,13 +141,22 @@ bool check_routing_options(const RoutingOptions& options, const io::Layout& layo
                                     "2^24 nearest it, which must lie within 2^-36 radians of it: one about 10^-6 "
                                     "degrees off a slope of small integers, such as 0.000001 or 45.000001, does not)"
                                   : "only rectilinear and octilinear wires are available in this version";
+  // what is wrong with a c: set that parse_any refuses, said first
+  auto why_not = [&](const std::string& text) {
+    std::string why;
+    if (options.allow_sets && text.rfind("c:", 0) == 0 && !geom::Root3Directions::parse_any(io::canonical_orientations(text), why) &&
+        !why.empty())
+      return why + "; ";
+    return std::string();
+  };
   if (!options.orientations.empty() && !available(options.orientations)) {
-    print_usage_error("CLI-0021", "--orientations " + options.orientations + ": " + offered);
+    print_usage_error("CLI-0021", "--orientations " + options.orientations + ": " + why_not(options.orientations) + offered);
     return false;
   }
   if (options.orientations.empty() && layout.rules && !available(layout.rules->orientations)) {
     print_diagnostics({Diagnostic{Severity::Error, "CLI-0021", layout.file, layout.rules->line, 0,
-                                  "<rules> orientations=\"" + layout.rules->orientations + "\": " + offered +
+                                  "<rules> orientations=\"" + layout.rules->orientations + "\": " +
+                                      why_not(layout.rules->orientations) + offered +
                                       "; pass --orientations rectilinear or --orientations octilinear to route "
                                       "anyway"}});
     return false;

@@ -68,8 +68,9 @@ struct RoutingOptions {
   bool allow_bends = false;
   // `route` only: orientations "any" and the lattice c: sets (geom/directions.h: directions at
   // multiples of 45 degrees, such as c:45,135; since 2026-12-06) and the sets at multiples of 30
-  // degrees (geom/root3_directions.h, such as c:0,60,120; since 2026-12-07) are accepted; the
-  // nets are routed octilinear and then tightened together into them.
+  // degrees (geom/root3_directions.h, such as c:0,60,120; since 2026-12-07) and every other c:
+  // set Root3Directions::parse_any realizes (c:0,10; since the twenty-first session, the same day)
+  // are accepted; the nets are routed octilinear and then tightened together into them.
   bool allow_sets = false;
 };
 // The combined metric's C: --bend-cost, else <rules> bend-cost, else 0.
@@ -84,7 +85,7 @@ bool check_routing_options(const RoutingOptions& options, const io::Layout& layo
 
 // The orientations to route in after check_routing_options() accepted them: --orientations,
 // else <rules>, else "rectilinear"; "rectilinear" or "octilinear" (or "any" with allow_any, or
-// "any" and a lattice or 30-degree c: set as written with allow_sets).
+// "any" and a c: set as written with allow_sets).
 std::string routing_orientations(const RoutingOptions& options, const io::Layout& layout);
 
 // load_layout(), then check_routing_options(): the layout when routing may start, otherwise

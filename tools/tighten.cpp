@@ -205,16 +205,16 @@ void add_tighten(CLI::App& app, int& status) {
   sub->add_option("--orientations", args->orientations,
                   "directions of the output: rectilinear, octilinear, a c: set of multiples of 45 degrees "
                   "such as c:0,45 or c:45,135 (the shortest wire of the class in those directions, fewest "
-                  "links), a c: set of multiples of 30 degrees such as c:0,60,120 (the same, its vertices "
-                  "rounded to integers) or any (the Euclidean "
-                  "shortest); default: <rules>");
+                  "links), any other c: set such as c:0,60,120 or c:0,10 (the same, its vertices rounded "
+                  "to integers; a direction at a multiple of neither 30 nor 45 degrees taken as the integer "
+                  "step of at most 2^24 nearest it) or any (the Euclidean shortest); default: <rules>");
   sub->add_flag("--clearance", args->clearance,
                 "keep half the wire width plus the spacing of <rules> from every blockage (tighten against "
                 "blockages grown by that much)");
   sub->add_flag("--min-link", args->min_link,
                 "also find each wire's minimum-link path of its class (any angle, exact rational bends) "
                 "and, with rectilinear, octilinear or a c: set, its minimum-link path in those directions "
-                "(exact bends: rationals, or numbers a+b*sqrt3 at multiples of 30 degrees) "
+                "(exact bends: rationals, or numbers a+b*sqrt3 with directions at multiples of 30 degrees) "
                 "(for a loop, a closed loop with few links, proven minimal or given as a range): "
                 "their link counts and bends go to --stats, their drawings to --svg; the written wires "
                 "are still the shortest ones");
@@ -223,16 +223,17 @@ void add_tighten(CLI::App& app, int& status) {
     using Clock = std::chrono::steady_clock;
     const auto t0 = Clock::now();
     // The output's directions: any, a lattice direction set by its name (c:0,90 is rectilinear),
-    // or (since 2026-12-07) a set at multiples of 30 degrees such as c:0,60,120, written with its
-    // exact vertices rounded (router/root3_staircase.h; with --clearance and --min-link since
-    // 2026-12-07).
+    // or (since 2026-12-07) any other c: set such as c:0,60,120 or c:0,10, written with its exact
+    // vertices rounded (router/root3_staircase.h, geom::Root3Directions::parse_any).
     std::string o = args->orientations;
     if (!o.empty() && o != "any") {
       if (const router::TightenOrientations to = tighten_orientations(o); to.c_oriented()) {
         o = to.name();
       } else {
-        print_usage_error("CLI-0027", "tighten: --orientations " + o +
-                                          ": expected rectilinear, octilinear, any, or a c: set of two orientations "
+        std::string why;
+        if (o.rfind("c:", 0) == 0) geom::Root3Directions::parse_any(o, why);
+        print_usage_error("CLI-0027", "tighten: --orientations " + o + ": " + (why.empty() ? "" : why + "; ") +
+                                          "expected rectilinear, octilinear, any, or a c: set of two orientations "
                                           "at least modulo 180 degrees such as c:0,60,120 or c:0,10 (a direction "
                                           "at a multiple of neither 45 nor 30 degrees is taken as the integer step "
                                           "of at most 2^24 nearest it, which must lie within 2^-36 radians of it: "
@@ -254,8 +255,10 @@ void add_tighten(CLI::App& app, int& status) {
         if (const router::TightenOrientations to = tighten_orientations(orientations); to.c_oriented()) {
           orientations = to.name();
         } else {
+          std::string why;
+          geom::Root3Directions::parse_any(orientations, why);
           print_diagnostics({Diagnostic{Severity::Warning, "TIGHTEN-0003", layout->file, layout->rules->line, 0,
-                                        "<rules orientations=\"" + orientations + "\">: " +
+                                        "<rules orientations=\"" + orientations + "\">: " + (why.empty() ? "" : why + "; ") +
                                             "no integer step of at most 2^24 lies within 2^-36 radians of a direction "
                                             "(one about 10^-6 degrees off a slope of small integers, such as 0.000001 "
                                             "or 45.000001), or the set is not one of two orientations at least; "
@@ -323,13 +326,16 @@ void add_tighten(CLI::App& app, int& status) {
     // unbounded, so the domain must hold those staircases, or the fewest links are lost to its
     // walls (a zigzag of one bend per 128 DBU there, millions on a long wire; found by fuzzing,
     // 2026-12-06). Each lies in the parallelogram of its link, within |dx| + |dy| of the link's
-    // box; the box is grown by its width plus its height on each side (clamped). (A larger
+    // box; the box is grown by its width plus its height on each side (clamped), times
+    // TightenOrientations::box_growth in a set with a cone over 135 degrees (c:0,30, c:0,10;
+    // since 2026-12-07: a cone of angle phi reaches |v| / sin phi). (A larger
     // domain lowers the scale --clearance can tighten in, router::exact_gaps_scale: on a layout
     // over about 10^7 DBU across, such a set tightens in the layout's units, gaps of exactly the
     // clearance closed.)
     if (!layout->boundary && out_orientations.cones_leave_box()) {
       const geom::Box b = io::routing_domain(*layout, extra);
-      const geom::Box grown = geom::grown_box(b, (std::int64_t{b.hi.x} - b.lo.x) + (std::int64_t{b.hi.y} - b.lo.y));
+      const geom::Box grown = geom::grown_box(
+          b, out_orientations.box_growth() * ((std::int64_t{b.hi.x} - b.lo.x) + (std::int64_t{b.hi.y} - b.lo.y)));
       extra.push_back(grown.lo);
       extra.push_back(grown.hi);
     }

@@ -202,8 +202,8 @@ TEST(SetRoute, TogetherEverySetPassesTheChecker) {
   EXPECT_LE(lost30 * 30, nets);  // (none on 2 x 90 nets, 2026-12-07)
   // Sets at other angles (the same pinches: an edge outside the set, such as a sloped one under
   // c:0,10,90)
-  EXPECT_GT(routed["c:0,10,90"], nets * 6 / 10);
-  EXPECT_GT(routed["c:0,45,60"], nets * 6 / 10);
+  EXPECT_GT(routed["c:0,10,90"], nets * 8 / 10);  // 87 of 90 here
+  EXPECT_GT(routed["c:0,45,60"], nets * 8 / 10);  // 80
   const int lost_other = failed_set["c:0,10,90"] + failed_set["c:0,45,60"];
   failed_set.erase("c:0,10,90");
   failed_set.erase("c:0,45,60");
@@ -386,8 +386,12 @@ TEST(SetRoute, HandCases) {
     // degrees off the x axis): refused, nothing written
     const auto r = run_taut({"route", kDemo, "-o", dir + "/x.xml", "--orientations", "c:0,0.000001"});
     EXPECT_EQ(r.status, 2);
-    EXPECT_NE(r.err.find("[CLI-0021] --orientations c:0,0.000001: rectilinear, octilinear, any and c: sets of two "
-                         "orientations at least modulo 180 degrees are available"),
+    EXPECT_NE(r.err.find("[CLI-0021] --orientations c:0,0.000001: no integer step of at most 2^24 lies within 2^-36 "
+                         "radians of 0.000001 degrees"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("rectilinear, octilinear, any and c: sets of two orientations at least modulo 180 degrees are "
+                         "available"),
               std::string::npos)
         << r.err;
     EXPECT_FALSE(file_exists(dir + "/x.xml"));

@@ -1485,6 +1485,18 @@ TEST(Tighten, BadInputExit2AndWritesNothing) {
     EXPECT_NE(run.err.find("such as 0.000001 or 45.000001, does not"), std::string::npos) << run.err;
     EXPECT_EQ(read_text(dir + "/t.xml"), "old");
   }
+  // the message says which direction, or what else (Root3Directions::parse_any's reason)
+  run = run_taut({"tighten", file, "-o", dir + "/t.xml", "--orientations", "c:0,0.000001"});
+  EXPECT_NE(run.err.find("c:0,0.000001: no integer step of at most 2^24 lies within 2^-36 radians of 0.000001 degrees"),
+            std::string::npos)
+      << run.err;
+  run = run_taut({"tighten", file, "-o", dir + "/t.xml", "--orientations", "c:1,2,3,4,5,6,7,8,9"});
+  EXPECT_EQ(run.status, 2) << run.err;
+  EXPECT_NE(run.err.find("9 directions at multiples of neither 30 nor 45 degrees (at most 8)"), std::string::npos) << run.err;
+  run = run_taut({"tighten", file, "-o", dir + "/t.xml", "--orientations", "c:10,10.00000000000001"});
+  EXPECT_EQ(run.status, 2) << run.err;
+  EXPECT_NE(run.err.find("10 and 10.00000000000001 degrees are too close to tell apart"), std::string::npos) << run.err;
+  EXPECT_EQ(read_text(dir + "/t.xml"), "old");
 }
 
 // A layout with nothing drawn (no blockage, no pin): nothing to tighten, not an internal error

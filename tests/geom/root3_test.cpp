@@ -288,7 +288,7 @@ ld step_degrees(const Root3Directions::Step& s) {
 }
 
 // parse_any (since 2026-12-07): the sets at other angles, each direction an exact step (multiples
-// of 30 and 45 degrees) or the integer step of at most 2^20 nearest it.
+// of 30 and 45 degrees) or the integer step of at most 2^24 nearest it.
 TEST(Root3Directions, ParseAnyRealizesOtherAngles) {
   // parse()'s sets, the same
   for (unsigned mask = 0; mask < 64; ++mask) {
@@ -320,8 +320,9 @@ TEST(Root3Directions, ParseAnyRealizesOtherAngles) {
   EXPECT_EQ(mixed->step_along(-5, -5), 4);
   EXPECT_THROW(mixed->degrees(), std::logic_error);
   EXPECT_THROW(mixed->length12(3, 1), std::logic_error);
-  // c:0,10: 10 degrees as an integer step; two directions 10^-11 degrees apart are two steps
-  EXPECT_EQ(Root3Directions::parse_any("c:10,10.00000000001")->steps().size(), 4u);
+  // c:0,10: 10 degrees as an integer step; two directions 10^-6 degrees apart are two steps
+  ASSERT_TRUE(Root3Directions::parse_any("c:10,10.000001"));
+  EXPECT_EQ(Root3Directions::parse_any("c:10,10.000001")->steps().size(), 4u);
   const auto ten = Root3Directions::parse_any("c:10.000,190,0");
   ASSERT_TRUE(ten);
   EXPECT_EQ(ten->name(), "c:0,10");
@@ -337,6 +338,7 @@ TEST(Root3Directions, ParseAnyRealizesOtherAngles) {
   EXPECT_EQ(ten->steps()[3].x, -s.x);
   EXPECT_TRUE(ten == *Root3Directions::parse_any("c:0,10"));
   EXPECT_FALSE(ten == *Root3Directions::parse_any("c:0,10.5"));
+  ASSERT_TRUE(Root3Directions::parse_any("c:22.50,0"));
   EXPECT_EQ(Root3Directions::parse_any("c:22.50,0")->name(), "c:0,22.5");
   // near a slope of small numbers: that slope when within 2^-36 radians (atan(1/2) is
   // 26.56505117707799 degrees), else a step of the largest size
@@ -349,7 +351,31 @@ TEST(Root3Directions, ParseAnyRealizesOtherAngles) {
   ASSERT_TRUE(tiny);
   EXPECT_EQ(tiny->steps()[1].x, (Root3{5729578, 0}));
   EXPECT_EQ(tiny->steps()[1].y, (Root3{1, 0}));
+  ASSERT_TRUE(Root3Directions::parse_any("c:100,10,0"));
   EXPECT_EQ(Root3Directions::parse_any("c:100,10,0")->steps().size(), 6u);
+  // the semiconvergent: slope 8388609/16777217 = [0; 1, 1, 2^23] (its denominator past 2^24), whose
+  // convergent 1/2 is 1.5e-8 radians off, is (16777215, 8388608), 3.6e-15 off
+  const auto semi = Root3Directions::parse_any("c:0,26.565052543115726");
+  ASSERT_TRUE(semi);
+  EXPECT_EQ(semi->steps()[1].x, (Root3{16777215, 0}));
+  EXPECT_EQ(semi->steps()[1].y, (Root3{8388608, 0}));
+  EXPECT_LT(semi->off_radians(1), 1e-13L);
+  // just above 0 degrees, a set without 0: the x axis's step (1, 0); just below 180: refused
+  // (-x would be 180 degrees, outside the half turn the set is written in)
+  const auto above = Root3Directions::parse_any("c:0.0000000001,90");
+  ASSERT_TRUE(above);
+  EXPECT_EQ(above->steps()[0].x, (Root3{1, 0}));
+  EXPECT_EQ(above->steps()[0].y, (Root3{0, 0}));
+  EXPECT_FALSE(Root3Directions::parse_any("c:90,179.9999999999"));
+  // at most eight directions at other angles (each a square root more in a length)
+  EXPECT_TRUE(Root3Directions::parse_any("c:1,2,3,4,5,6,7,8"));
+  EXPECT_FALSE(Root3Directions::parse_any("c:1,2,3,4,5,6,7,8,9"));
+  EXPECT_TRUE(Root3Directions::parse_any("c:0,1,2,3,4,5,6,7,8,30,45"));
+  // how far a staircase reaches out of its link's box: 1 up to 135-degree cones, else 1 / sin
+  EXPECT_EQ(Root3Directions::parse("c:0,60,120")->box_growth(), 1);
+  EXPECT_EQ(Root3Directions::parse("c:0,30")->box_growth(), 2);     // 150 degrees: 1 / sin = 2
+  EXPECT_EQ(Root3Directions::parse_any("c:0,10")->box_growth(), 6);  // 170 degrees: 5.76
+  EXPECT_EQ(Root3Directions::parse_any("c:0,45,60")->box_growth(), 1);  // 120 degrees at most
 }
 
 // Random sets at other angles (whole degrees and up to three decimals, two to five
