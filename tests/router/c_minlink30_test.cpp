@@ -38,15 +38,15 @@
 // Sets at other angles (Root3Directions::parse_any, since 2026-12-07: c:0,10, c:0,45,60,
 // c:22.5,90,157.5) are judged the same, except that their orientations are the set's own steps
 // (tests/geom/root3_test.cpp checks them against the written angles) and, their steps differing
-// in length (sqrt2, sqrt(A^2 + B^2)), the search compares lengths in long double within a relative
-// 10^-12 there (exactly in Q(sqrt3) in the 30-degree sets).
+// in length (sqrt2, sqrt(A^2 + B^2)), the search compares lengths as sums of square roots, exactly,
+// by its own squaring (ThreeLinks::sign_of; exactly in Q(sqrt3) alone in the 30-degree sets).
 // Scenes: the degenerate 9x9 families of the lattice sets' test (sloped triangles, rectangles
 // touching at corners and edges, octilinear shapes, T-pinches, slivers) and rectangles that may
 // touch; sketches are random walks with loops appended (winding one to three times).
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <cstdio>
+#include <map>
 #include <random>
 #include <set>
 #include <stdexcept>
@@ -184,10 +184,16 @@ void append(std::vector<int>& w, const std::vector<int>& tail) {
 // over the candidate bends sorted along the ray.
 class ThreeLinks {
  public:
-  // unit_lengths: every unit is twice a unit vector (lengths exact in Q(sqrt3)).
-  ThreeLinks(const Judged& j, const std::vector<Q3Point>& units, bool unit_lengths, Point p, Point q)
-      : j_(j), p_(oracle::q3(p)), q_(oracle::q3(q)), unit_lengths_(unit_lengths) {
+  ThreeLinks(const Judged& j, const std::vector<Q3Point>& units, Point p, Point q)
+      : j_(j), p_(oracle::q3(p)), q_(oracle::q3(q)) {
     units_ = units;
+    for (const Q3Point& u : units_) {  // squared lengths: integers (steps in Z[sqrt3]^2 of the set)
+      const Q3 n2 = dot(u, u);
+      if (sgn(n2.b) != 0 || n2.a.get_den() != 1) throw std::logic_error("ThreeLinks: a unit's squared length is not an integer");
+      const long n = n2.a.get_num().get_si();
+      const long r = mpz_class(sqrt(n2.a.get_num())).get_si();
+      norms_.push_back(r * r == n ? Norm{n, 1, r} : Norm{n, n, 1});
+    }
     for (const geom::Polygon& o : j.sc.obstacles) boxes_.push_back(box_of(o.outer));
     std::vector<Q3Point> through{p_, q_};
     auto add_points = [&](const geom::Ring& r) {
@@ -248,19 +254,38 @@ class ThreeLinks {
   // unless `every_count` (a shorter path may have more links than the shortest wire: `shorter`
   // then covers every path up to three links; it costs the test twice its time, so it runs on one
   // sketch in four).
-  // A path's length: exact in Q(sqrt3) when every unit is twice a unit vector (the 30-degree
-  // sets); else in long double (steps of lengths sqrt2, sqrt(A^2 + B^2)), compared within a
-  // relative 10^-12 (the tolerance for references of length).
-  struct Len {
-    Q3 exact;
-    long double approx = 0;
-  };
-  bool same(const Len& a, const Len& b) const {
-    return unit_lengths_ ? a.exact == b.exact : std::fabs(a.approx - b.approx) <= 1e-12L * b.approx;
+  // A path's length, exactly: sum over the orientations' squared lengths n of c_n sqrt n, c_n in
+  // Q(sqrt3) (a link along u is |dot(link, u)| / n_u times sqrt n_u); a square n is folded into
+  // n = 1. Two lengths are compared by the sign of their difference, decided here by squaring
+  // (written apart from router/radical_sum.h, for at most two radicals other than 1: the sets of
+  // this test have one or two).
+  using Len = std::map<long, Q3>;
+  static int sign_root(const Q3& x, const Q3& y, long m) {  // x + y sqrt m, m not a square
+    const int sx = x.sign(), sy = y.sign();
+    if (sx == 0) return sy;
+    if (sy == 0 || sx == sy) return sx;
+    return sx * (x * x - Q3(m) * y * y).sign();
   }
-  bool less(const Len& a, const Len& b) const {
-    return unit_lengths_ ? a.exact < b.exact : a.approx < b.approx * (1 - 1e-12L);
+  static int sign_of(const Len& a, const Len& b) {  // sign of a - b
+    Len d = a;
+    for (const auto& [n, c] : b) d[n] = d[n] - c;
+    std::vector<std::pair<long, Q3>> roots;
+    for (const auto& [n, c] : d)
+      if (n != 1 && c.sign() != 0) roots.push_back({n, c});
+    const Q3 r = d.count(1) ? d[1] : Q3(0);
+    if (roots.empty()) return r.sign();
+    if (roots.size() == 1) return sign_root(r, roots[0].second, roots[0].first);
+    if (roots.size() > 2) throw std::logic_error("ThreeLinks: lengths over more than two radicals");
+    // r + y sqrt m + z sqrt n: (r + y sqrt m) against - z sqrt n, by squares when of opposite signs
+    const auto& [m, y] = roots[0];
+    const auto& [n, z] = roots[1];
+    const int s1 = sign_root(r, y, m), sz = z.sign();
+    if (s1 == 0) return sz;
+    if (sz == 0 || s1 == sz) return s1;
+    return s1 * sign_root(r * r + Q3(m) * y * y - Q3(n) * z * z, Q3(2) * r * y, m);
   }
+  bool same(const Len& a, const Len& b) const { return sign_of(a, b) == 0; }
+  bool less(const Len& a, const Len& b) const { return sign_of(a, b) < 0; }
   Found search(const std::vector<int>& word, const std::optional<Len>& shortest, bool every_count = false) const {
     Found f;
     // (with `every_count`, every count up to three is searched for a shorter path)
@@ -304,28 +329,21 @@ class ThreeLinks {
         }
     return f;
   }
-  // A path's length: each link's, |dot(link, u)| / |u| for the orientation u it runs along (|u| = 2
-  // in the 30-degree sets).
+  // A path's length (Len above).
   Len length(const std::vector<Q3Point>& path) const {
     Len sum;
-    auto ld = [](const Q3& v) { return static_cast<long double>(v.a.get_d()) + static_cast<long double>(v.b.get_d()) * std::sqrt(3.0L); };
     for (std::size_t i = 0; i + 1 < path.size(); ++i) {
       const Q3Point d = minus(path[i + 1], path[i]);
-      for (const Q3Point& u : units_)
-        if (cross(u, d).sign() == 0) {
-          const Q3 t = dot(u, d);
-          if (unit_lengths_) {
-            sum.exact = sum.exact + (t.sign() < 0 ? -t : t) / Q3(2);
-          } else {
-            const long double ux = ld(u.x), uy = ld(u.y);
-            sum.approx += std::fabs(ld(t)) / std::sqrt(ux * ux + uy * uy);
-          }
+      for (std::size_t k = 0; k < units_.size(); ++k)
+        if (cross(units_[k], d).sign() == 0) {
+          const Norm& nk = norms_[k];
+          const Q3 t = dot(units_[k], d) / Q3(nk.n);
+          sum[nk.key] = sum[nk.key] + (t.sign() < 0 ? -t : t) * Q3(nk.scale);
           break;
         }
     }
     return sum;
   }
-  std::size_t middle_lines() const { return middle_.size(); }
 
  private:
   struct Ray {
@@ -384,7 +402,10 @@ class ThreeLinks {
 
   const Judged& j_;
   Q3Point p_, q_;
-  bool unit_lengths_ = true;
+  struct Norm {
+    long n, key, scale;  // a unit's squared length; sqrt n = scale sqrt key (key 1 for a square)
+  };
+  std::vector<Norm> norms_;
   std::vector<Q3Point> units_;
   std::vector<IBox> boxes_;
   std::vector<std::pair<std::size_t, Q3Point>> middle_;
@@ -418,7 +439,7 @@ void judge_sketch(const Judged& j, const Path& sketch, const Path& taut, const s
     if (!c.ok()) {
       ++tot.none;
       if (search) {
-        EXPECT_EQ(ThreeLinks(j, degrees, set->mask() != 0, sketch.front(), sketch.back()).search(word, std::nullopt).fewest, -1)
+        EXPECT_EQ(ThreeLinks(j, degrees, sketch.front(), sketch.back()).search(word, std::nullopt).fewest, -1)
             << at << ": no path (" << c.why << "), but the search finds one";
       }
       continue;
@@ -449,7 +470,7 @@ void judge_sketch(const Judged& j, const Path& sketch, const Path& taut, const s
       }
     }
     if (search) {
-      const ThreeLinks three(j, degrees, set->mask() != 0, sketch.front(), sketch.back());
+      const ThreeLinks three(j, degrees, sketch.front(), sketch.back());
       const bool lengths = !ex.empty();
       const bool every_count = tot.searched % 4 == 0;  // (one in four: see ThreeLinks::search)
       tot.every_count += every_count && lengths;
