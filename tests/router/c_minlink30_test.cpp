@@ -102,15 +102,14 @@ std::vector<Q3Point> units_of(const geom::Root3Directions& set) {
   if (set.mask() != 0) {
     for (const int deg : set.degrees()) u.push_back(unit2(deg));
   } else {
-    for (std::size_t k = 0; k < set.steps().size() / 2; ++k) u.push_back({q3of(set.steps()[k].x), q3of(set.steps()[k].y)});
+    for (std::size_t k = 0; k < set.steps().size() / 2; ++k) u.push_back(q3of(set.steps()[k]));
   }
   return u;
 }
 
-Q3 cross(const Q3Point& a, const Q3Point& b) { return a.x * b.y - a.y * b.x; }
-Q3 dot(const Q3Point& a, const Q3Point& b) { return a.x * b.x + a.y * b.y; }
-Q3Point minus(const Q3Point& a, const Q3Point& b) { return {a.x - b.x, a.y - b.y}; }
-
+using oracle::cross;
+using oracle::dot;
+using oracle::minus;
 
 std::string str3(const std::vector<Q3Point>& path) {
   std::string s;
@@ -185,15 +184,8 @@ void append(std::vector<int>& w, const std::vector<int>& tail) {
 class ThreeLinks {
  public:
   ThreeLinks(const Judged& j, const std::vector<Q3Point>& units, Point p, Point q)
-      : j_(j), p_(oracle::q3(p)), q_(oracle::q3(q)) {
+      : j_(j), p_(oracle::q3(p)), q_(oracle::q3(q)), lengths_(steps_of(units)) {
     units_ = units;
-    for (const Q3Point& u : units_) {  // squared lengths: integers (steps in Z[sqrt3]^2 of the set)
-      const Q3 n2 = dot(u, u);
-      if (sgn(n2.b) != 0 || n2.a.get_den() != 1) throw std::logic_error("ThreeLinks: a unit's squared length is not an integer");
-      const long n = n2.a.get_num().get_si();
-      const long r = mpz_class(sqrt(n2.a.get_num())).get_si();
-      norms_.push_back(r * r == n ? Norm{n, 1, r} : Norm{n, n, 1});
-    }
     for (const geom::Polygon& o : j.sc.obstacles) boxes_.push_back(box_of(o.outer));
     std::vector<Q3Point> through{p_, q_};
     auto add_points = [&](const geom::Ring& r) {
@@ -254,38 +246,10 @@ class ThreeLinks {
   // unless `every_count` (a shorter path may have more links than the shortest wire: `shorter`
   // then covers every path up to three links; it costs the test twice its time, so it runs on one
   // sketch in four).
-  // A path's length, exactly: sum over the orientations' squared lengths n of c_n sqrt n, c_n in
-  // Q(sqrt3) (a link along u is |dot(link, u)| / n_u times sqrt n_u); a square n is folded into
-  // n = 1. Two lengths are compared by the sign of their difference, decided here by squaring
-  // (written apart from router/radical_sum.h, for at most two radicals other than 1: the sets of
-  // this test have one or two).
-  using Len = std::map<long, Q3>;
-  static int sign_root(const Q3& x, const Q3& y, long m) {  // x + y sqrt m, m not a square
-    const int sx = x.sign(), sy = y.sign();
-    if (sx == 0) return sy;
-    if (sy == 0 || sx == sy) return sx;
-    return sx * (x * x - Q3(m) * y * y).sign();
-  }
-  static int sign_of(const Len& a, const Len& b) {  // sign of a - b
-    Len d = a;
-    for (const auto& [n, c] : b) d[n] = d[n] - c;
-    std::vector<std::pair<long, Q3>> roots;
-    for (const auto& [n, c] : d)
-      if (n != 1 && c.sign() != 0) roots.push_back({n, c});
-    const Q3 r = d.count(1) ? d[1] : Q3(0);
-    if (roots.empty()) return r.sign();
-    if (roots.size() == 1) return sign_root(r, roots[0].second, roots[0].first);
-    if (roots.size() > 2) throw std::logic_error("ThreeLinks: lengths over more than two radicals");
-    // r + y sqrt m + z sqrt n: (r + y sqrt m) against - z sqrt n, by squares when of opposite signs
-    const auto& [m, y] = roots[0];
-    const auto& [n, z] = roots[1];
-    const int s1 = sign_root(r, y, m), sz = z.sign();
-    if (s1 == 0) return sz;
-    if (sz == 0 || s1 == sz) return s1;
-    return s1 * sign_root(r * r + Q3(m) * y * y - Q3(n) * z * z, Q3(2) * r * y, m);
-  }
-  bool same(const Len& a, const Len& b) const { return sign_of(a, b) == 0; }
-  bool less(const Len& a, const Len& b) const { return sign_of(a, b) < 0; }
+  // A path's length, exactly (oracle::SetLengths: a sum of square roots, compared by squaring).
+  using Len = oracle::SetLengths::Len;
+  bool same(const Len& a, const Len& b) const { return oracle::SetLengths::compare(a, b) == 0; }
+  bool less(const Len& a, const Len& b) const { return oracle::SetLengths::compare(a, b) < 0; }
   Found search(const std::vector<int>& word, const std::optional<Len>& shortest, bool every_count = false) const {
     Found f;
     // (with `every_count`, every count up to three is searched for a shorter path)
@@ -329,21 +293,7 @@ class ThreeLinks {
         }
     return f;
   }
-  // A path's length (Len above).
-  Len length(const std::vector<Q3Point>& path) const {
-    Len sum;
-    for (std::size_t i = 0; i + 1 < path.size(); ++i) {
-      const Q3Point d = minus(path[i + 1], path[i]);
-      for (std::size_t k = 0; k < units_.size(); ++k)
-        if (cross(units_[k], d).sign() == 0) {
-          const Norm& nk = norms_[k];
-          const Q3 t = dot(units_[k], d) / Q3(nk.n);
-          sum[nk.key] = sum[nk.key] + (t.sign() < 0 ? -t : t) * Q3(nk.scale);
-          break;
-        }
-    }
-    return sum;
-  }
+  Len length(const std::vector<Q3Point>& path) const { return lengths_.length(std::span<const Q3Point>(path)); }
 
  private:
   struct Ray {
@@ -387,7 +337,7 @@ class ThreeLinks {
       if (o2 != o)
         if (const auto x = meet(c, u, c2, units_[o2]); x && x->first.sign() > 0) ts.push_back(x->first);
     for (const Q3Point& e : {p_, q_})
-      if (cross(u, minus(e, c)).sign() == 0 && dot(u, minus(e, c)).sign() > 0) ts.push_back(dot(u, minus(e, c)) / Q3(4));
+      if (cross(u, minus(e, c)).sign() == 0 && dot(u, minus(e, c)).sign() > 0) ts.push_back(dot(u, minus(e, c)) / dot(u, u));
     std::sort(ts.begin(), ts.end());
     ts.erase(std::unique(ts.begin(), ts.end()), ts.end());
     // the last index whose point is reached freely
@@ -402,10 +352,13 @@ class ThreeLinks {
 
   const Judged& j_;
   Q3Point p_, q_;
-  struct Norm {
-    long n, key, scale;  // a unit's squared length; sqrt n = scale sqrt key (key 1 for a square)
-  };
-  std::vector<Norm> norms_;
+  oracle::SetLengths lengths_;
+  // the units and their opposites, counter-clockwise (the units run from 0 to below 180 degrees)
+  static std::vector<Q3Point> steps_of(const std::vector<Q3Point>& units) {
+    std::vector<Q3Point> all = units;
+    for (const Q3Point& u : units) all.push_back({-u.x, -u.y});
+    return all;
+  }
   std::vector<Q3Point> units_;
   std::vector<IBox> boxes_;
   std::vector<std::pair<std::size_t, Q3Point>> middle_;

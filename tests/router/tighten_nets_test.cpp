@@ -25,11 +25,12 @@
 #include "geom/root2.h"
 #include "geom/root3_directions.h"
 #include "oracle/homotopy.h"
+#include "oracle/qroot3.h"
 #include "router/check.h"
 #include "router/net_router.h"
-#include "router/radical_sum.h"
 #include "router/tighten_nets.h"
 #include "support/net_layouts.h"
+#include "support/q3_of.h"
 #include "support/sanitized.h"
 #include "support/taut_check.h"
 
@@ -419,21 +420,27 @@ void check_layout30(int seed, const geom::Root3Directions& set, Totals30& t) {
     const std::vector<NetLines> rect = routed_wires(L, seed, false);
     std::vector<NetLines> r2 = rect;
     const auto outcomes2 = tighten_layout(L, to, r2).first;
-    // (router::set_length, tested against a brute force in radical_sum_test.cpp: exact in Z[sqrt3]
-    // for the sets at multiples of 30 degrees, sums of square roots for the others)
-    auto length12 = [&](const NetLines& ws) {
-      router::RadicalSum s = router::set_length(set, std::vector<Point>{});
-      for (const auto& w : ws) s = s + router::set_length(set, w);
+    // (the references' own lengths in the set, oracle::SetLengths: sums of square roots in
+    // Q(sqrt3), compared exactly; not the router's set_length, which NetsTightener decides with)
+    std::vector<oracle::Q3Point> steps;
+    for (const auto& st : set.steps()) steps.push_back(q3of(st));
+    const oracle::SetLengths lengths(steps);
+    auto length_of = [&](const NetLines& ws) {
+      oracle::SetLengths::Len s;
+      for (const auto& w : ws) s = oracle::SetLengths::plus(s, lengths.length(std::span<const Point>(w)));
       return s;
+    };
+    auto longer = [](const oracle::SetLengths::Len& a, const oracle::SetLengths::Len& b) {
+      return oracle::SetLengths::compare(a, b) > 0;
     };
     using Ends = std::pair<Point, Point>;
     auto ends = [](const std::vector<Point>& l) { return l.front() < l.back() ? Ends{l.front(), l.back()} : Ends{l.back(), l.front()}; };
     for (std::size_t i = 0; i < rect.size(); ++i) {
       if (rect[i].empty()) continue;
       ++t.rect_nets;
-      const router::RadicalSum l0 = length12(rect[i]), l1 = length12(r2[i]);
-      if (l0 < l1) fail("net " + std::to_string(i) + "'s rectilinear wires got longer in " + set.name());
-      t.rect_shorter += l1 < l0;
+      const oracle::SetLengths::Len l0 = length_of(rect[i]), l1 = length_of(r2[i]);
+      if (longer(l1, l0)) fail("net " + std::to_string(i) + "'s rectilinear wires got longer in " + set.name());
+      t.rect_shorter += longer(l0, l1);
       // per piece, where the tightener's pieces are the input cut at its joints (as
       // NetsTightener cuts them; no re-cut changed them): none gained a bend or got longer
       const NetLines in_pieces = router::join_at_twos(router::cut_at_joints(rect[i], L.nets[i].pins), L.nets[i].pins);
@@ -448,7 +455,7 @@ void check_layout30(int seed, const geom::Root3Directions& set, Totals30& t) {
         ++t.rect_pieces;
         if (geom::count_bends(w) > geom::count_bends(was))
           fail("net " + std::to_string(i) + ": a rectilinear piece gained bends in " + set.name());
-        if (length12({was}) < length12({w})) fail("net " + std::to_string(i) + ": a rectilinear piece got longer in " + set.name());
+        if (longer(length_of({w}), length_of({was}))) fail("net " + std::to_string(i) + ": a rectilinear piece got longer in " + set.name());
       }
     }
   }

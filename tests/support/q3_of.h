@@ -9,7 +9,9 @@
 #include <vector>
 
 #include "oracle/qroot3.h"
-#include "router/root3_staircase.h"
+#include "geom/root3.h"
+#include "geom/root3_directions.h"
+#include "router/rational_root.h"
 
 namespace taut::test {
 
@@ -21,5 +23,6 @@ inline oracle::Q3 q3of(const router::RationalRoot3& v) {
 }
 inline oracle::Q3Point q3of(const router::R3Point& p) { return {q3of(p.x), q3of(p.y)}; }
 inline oracle::Q3 q3of(const geom::Root3& r) { return {mpq_class(r.a), mpq_class(r.b)}; }
+inline oracle::Q3Point q3of(const geom::Root3Directions::Step& s) { return {q3of(s.x), q3of(s.y)}; }
 
 }  // namespace taut::test
