@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <numbers>
 #include <stdexcept>
 #include <utility>
 
@@ -27,10 +26,7 @@ constexpr std::array<Step, 12> kSteps = {{
     {{-1, 0}, {0, -1}},  {{0, 0}, {-2, 0}},  {{1, 0}, {0, -1}},  {{0, 1}, {-1, 0}},
 }};
 
-// cross(s, v) = s.x v.y - s.y v.x and dot(s, v) for an integer v.
-Root3 cross(const Step& s, i64 dx, i64 dy) { return dy * s.x - dx * s.y; }
-Root3 dot(const Step& s, i64 dx, i64 dy) { return dx * s.x + dy * s.y; }
-Root3 cross(const Step& s, const Step& t) { return s.x * t.y - s.y * t.x; }
+Root3 cross(const Step& s, const Step& t) { return Root3Directions::cross(s, t); }
 
 // 0 for the directions from +x (included) to -x (excluded), counter-clockwise; 1 for the rest.
 int half(const Step& s) { return (s.y.sign() > 0 || (s.y.sign() == 0 && s.x.sign() > 0)) ? 0 : 1; }
@@ -125,9 +121,7 @@ Root3Directions::Root3Directions(unsigned mask) : mask_(mask) {
       steps_.push_back(kSteps[k]);
       norm2_.push_back(4);
     }
-  for (const int d : degrees()) texts_.push_back(std::to_string(d));
-  off_.assign(texts_.size(), 0);
-  exacts_.assign(texts_.size(), 1);
+  for (const int d : degrees()) orient_.push_back({std::to_string(d), true, 0});
 }
 
 std::optional<Root3Directions> Root3Directions::parse_any(std::string_view text) {
@@ -167,15 +161,12 @@ std::optional<Root3Directions> Root3Directions::parse_any(std::string_view text,
     // strictly counter-clockwise of the previous one (the written order): no two parallel, none
     // out of order
     if (!half_steps.empty() && !ccw_before(half_steps.back().step, r->step)) {
-      why = set.texts_.back() + " and " + w.text() + " degrees are too close to tell apart by integer steps of at most 2^24";
+      why = set.orient_.back().text + " and " + w.text() + " degrees are too close to tell apart by integer steps of at most 2^24";
       return std::nullopt;
     }
     half_steps.push_back(*r);
-    set.exact_ = set.exact_ && r->exact;
     inexact += r->exact ? 0 : 1;
-    set.texts_.push_back(w.text());
-    set.off_.push_back(r->off);
-    set.exacts_.push_back(r->exact ? 1 : 0);
+    set.orient_.push_back({w.text(), r->exact, r->off});
   }
   if (inexact > kMaxInexact) {  // (each one more square root in a length)
     why = std::to_string(inexact) + " directions at multiples of neither 30 nor 45 degrees (at most " +
@@ -211,7 +202,7 @@ std::optional<Root3Directions> Root3Directions::parse(std::string_view text) {
 
 std::string Root3Directions::name() const {
   std::string s = "c:";
-  for (const std::string& d : texts_) s += (s.size() > 2 ? "," : "") + d;
+  for (const Orientation& o : orient_) s += (s.size() > 2 ? "," : "") + o.text;
   return s;
 }
 

@@ -35,7 +35,8 @@
 //     2^-48.6 radians the median and 2^-40.7 the largest. A set is refused past 2^-36, which a
 //     direction about 10^-6 degrees off a slope p/q of small q can be (c:0,0.000001 and
 //     c:0,45.000001 are refused; c:0,0.00001 is (5729578, 1)).
-//   The slope is computed in long double from the written degrees: that chooses the step, and
+//   The slope is computed in 50-digit binary floating point (Boost's cpp_bin_float, the same on
+//   every machine) from the written degrees: that chooses the step, and
 //   from then on every decision (cones, fits, the router's predicates) is exact for that step. A
 //   written wire is rounded to integers anyway, so a segment is off its exact direction by up to
 //   a unit over its length; the step's own error is below 2^-36 of that length. fits() judges
@@ -63,6 +64,12 @@ class Root3Directions {
   struct Step {
     Root3 x, y;
   };
+  // cross(s, v), cross(v, s) and dot(s, v) for an integer vector v, cross(s, t) of two steps, in
+  // Z[sqrt3] (below 2^57 for |dx|, |dy| < 2^32 and steps below 2^24).
+  static Root3 cross(const Step& s, std::int64_t dx, std::int64_t dy) { return dy * s.x - dx * s.y; }
+  static Root3 cross(std::int64_t dx, std::int64_t dy, const Step& s) { return dx * s.y - dy * s.x; }
+  static Root3 dot(const Step& s, std::int64_t dx, std::int64_t dy) { return dx * s.x + dy * s.y; }
+  static Root3 cross(const Step& s, const Step& t) { return s.x * t.y - s.y * t.x; }
   // Orientations as a mask: bit k = 30k degrees (k = 0..5). nullopt when fewer than two bits are
   // set, or only 0 and 90 (rectilinear: a lattice set).
   static std::optional<Root3Directions> from_mask(unsigned mask);
@@ -87,18 +94,26 @@ class Root3Directions {
   unsigned mask() const { return mask_; }
   // Every step lies exactly along its direction (parse()'s sets, and those of parse_any whose
   // directions are multiples of 30 or 45 degrees).
-  bool exact() const { return exact_; }
+  bool exact() const {
+    for (const Orientation& o : orient_)
+      if (!o.exact) return false;
+    return true;
+  }
   // "c:" with the orientations in increasing order ("c:0,60,120", "c:0,10", "c:0,22.5").
   std::string name() const;
   // The orientations in degrees, increasing: for a set with mask() only (throws otherwise).
   std::vector<int> degrees() const;
   // The orientations as written in name(), increasing ("0", "22.5").
-  const std::vector<std::string>& orientation_texts() const { return texts_; }
+  std::vector<std::string> orientation_texts() const {
+    std::vector<std::string> t;
+    for (const Orientation& o : orient_) t.push_back(o.text);
+    return t;
+  }
   // How far orientation k's step is off its written angle, in radians: 0 for an exact one, else
   // the long double estimate made at parse (below 2^-36; a report, no decision uses it).
-  long double off_radians(std::size_t k) const { return off_[k]; }
+  long double off_radians(std::size_t k) const { return orient_[k].off; }
   // Orientation k's step lies exactly along its written angle (a multiple of 30 or 45 degrees).
-  bool orientation_exact(std::size_t k) const { return exacts_[k] != 0; }
+  bool orientation_exact(std::size_t k) const { return orient_[k].exact; }
   // The squared length of step i: 4 (a multiple of 30 degrees), 2 (of 45) or A^2 + B^2.
   std::int64_t norm2(std::size_t i) const { return norm2_[i]; }
   // The steps, counter-clockwise from +x (4 to 12 of them in parse()'s sets; any even count from 4
@@ -136,19 +151,22 @@ class Root3Directions {
   bool runs_within(std::span<const Point> line) const;
 
   friend bool operator==(const Root3Directions& x, const Root3Directions& y) {
-    return x.mask_ == y.mask_ && x.texts_ == y.texts_;
+    return x.orientation_texts() == y.orientation_texts();  // (canonical: they decide the steps)
   }
 
  private:
   explicit Root3Directions(unsigned mask);
   Root3Directions() = default;
   unsigned mask_ = 0;
-  bool exact_ = true;
   std::vector<Step> steps_;
   std::vector<std::int64_t> norm2_;
-  std::vector<std::string> texts_;
-  std::vector<long double> off_;
-  std::vector<char> exacts_;
+  // per orientation, increasing: as written in name(), along its step exactly, how far off
+  struct Orientation {
+    std::string text;
+    bool exact = true;
+    long double off = 0;
+  };
+  std::vector<Orientation> orient_;
 };
 
 }  // namespace taut::geom

@@ -72,11 +72,10 @@ class RadicalSum {
 
  private:
   // The sign of the value with coefficients c over the first k radicals (c.size() == 2^k).
-  int sign_of(const std::vector<R3>& c, std::size_t k) const {
+  int sign_of(std::span<const R3> c, std::size_t k) const {
     if (k == 0) return c[0].sign();
     const std::size_t h = std::size_t{1} << (k - 1);
-    const std::vector<R3> alpha(c.begin(), c.begin() + static_cast<std::ptrdiff_t>(h));
-    const std::vector<R3> beta(c.begin() + static_cast<std::ptrdiff_t>(h), c.end());
+    const std::span<const R3> alpha = c.first(h), beta = c.subspan(h);
     const int sa = sign_of(alpha, k - 1), sb = sign_of(beta, k - 1);
     if (sa == 0) return sb;
     if (sb == 0 || sa == sb) return sa;
@@ -89,7 +88,7 @@ class RadicalSum {
   }
   // x^2 for x with coefficients over the first k radicals: sqrt(P_S) sqrt(P_T) = P_{S and T}
   // sqrt(P_{S xor T}).
-  std::vector<R3> square(const std::vector<R3>& x, std::size_t k) const {
+  std::vector<R3> square(std::span<const R3> x, std::size_t k) const {
     std::vector<R3> out(x.size(), R3());
     for (std::size_t s = 0; s < x.size(); ++s) {
       if (x[s].sign() == 0) continue;
@@ -111,52 +110,57 @@ class RadicalSum {
 // A polyline's length in the convex distance of a direction set (H&S Lemma 6.1: each segment's,
 // the length of the shortest path in the set between its ends; the sets of
 // Root3Directions::parse_any, whose steps differ in length), over the set's radicals: the
-// squared step lengths that are not squares, each once. A segment along step s is t s with t =
-// dot(v, s) / |s|^2, of length t |s|; one in the cone of steps s1, s2 is a s1 + b s2 with a =
-// cross(v, s2) / D, b = cross(s1, v) / D, D = cross(s1, s2), of length a |s1| + b |s2|.
+// squared step lengths that are not squares, each once (the table made once per set). A segment
+// along step s is t s with t = dot(v, s) / |s|^2, of length t |s|; one in the cone of steps s1, s2
+// is a s1 + b s2 with a = cross(v, s2) / D, b = cross(s1, v) / D, D = cross(s1, s2), of length
+// a |s1| + b |s2|.
+class SetLength {
+ public:
+  explicit SetLength(const geom::Root3Directions& set) : set_(set), mask_(set.steps().size()), root_(set.steps().size(), 1) {
+    for (std::size_t i = 0; i < set.steps().size(); ++i) {
+      const std::int64_t n = set.norm2(i);
+      auto r = static_cast<std::int64_t>(std::sqrt(static_cast<double>(n)));  // (then exact)
+      while (r > 0 && r * r > n) --r;
+      while ((r + 1) * (r + 1) <= n) ++r;
+      if (r * r == n) {
+        root_[i] = r;
+        continue;
+      }
+      std::size_t k = 0;
+      while (k < radicals_.size() && radicals_[k] != n) ++k;
+      if (k == radicals_.size()) radicals_.push_back(n);
+      mask_[i] = std::size_t{1} << k;
+    }
+  }
+  RadicalSum operator()(std::span<const geom::Point> line) const {
+    using R3 = RationalRoot3;
+    const auto& steps = set_.steps();
+    RadicalSum sum(radicals_);
+    auto put = [&](std::size_t i, const R3& t) { sum.add(mask_[i], t * R3(Rational(root_[i]))); };
+    for (std::size_t j = 1; j < line.size(); ++j) {
+      const std::int64_t dx = std::int64_t{line[j].x} - line[j - 1].x, dy = std::int64_t{line[j].y} - line[j - 1].y;
+      if (dx == 0 && dy == 0) continue;
+      if (const int s = set_.step_along(dx, dy); s >= 0) {
+        const auto i = static_cast<std::size_t>(s);
+        put(i, R3(geom::Root3Directions::dot(steps[i], dx, dy)) / R3(Rational(set_.norm2(i))));
+        continue;
+      }
+      const auto c = static_cast<std::size_t>(set_.cone(dx, dy)), c2 = (c + 1) % steps.size();
+      const R3 d(geom::Root3Directions::cross(steps[c], steps[c2]));
+      put(c, R3(geom::Root3Directions::cross(dx, dy, steps[c2])) / d);
+      put(c2, R3(geom::Root3Directions::cross(steps[c], dx, dy)) / d);
+    }
+    return sum;
+  }
+
+ private:
+  geom::Root3Directions set_;
+  std::vector<std::int64_t> radicals_;
+  std::vector<std::size_t> mask_;   // each step's radical (a bit), 0 for a square
+  std::vector<std::int64_t> root_;  // the square's root, 1 for a radical
+};
 inline RadicalSum set_length(const geom::Root3Directions& set, std::span<const geom::Point> line) {
-  using R3 = RationalRoot3;
-  const auto& steps = set.steps();
-  std::vector<std::int64_t> radicals;
-  std::vector<std::size_t> mask(steps.size());  // each step's radical (a bit), 0 for a square
-  std::vector<std::int64_t> root(steps.size(), 1);  // the square's root, 1 for a radical
-  for (std::size_t i = 0; i < steps.size(); ++i) {
-    const std::int64_t n = set.norm2(i);
-    auto r = static_cast<std::int64_t>(std::sqrt(static_cast<double>(n)));  // (then exact)
-    while (r > 0 && r * r > n) --r;
-    while ((r + 1) * (r + 1) <= n) ++r;
-    if (r * r == n) {
-      mask[i] = 0;
-      root[i] = r;
-      continue;
-    }
-    std::size_t k = 0;
-    while (k < radicals.size() && radicals[k] != n) ++k;
-    if (k == radicals.size()) radicals.push_back(n);
-    mask[i] = std::size_t{1} << k;
-  }
-  RadicalSum sum(radicals);
-  auto put = [&](std::size_t i, const R3& t) { sum.add(mask[i], t * R3(Rational(root[i]))); };
-  auto cross = [](const geom::Root3& ax, const geom::Root3& ay, const geom::Root3& bx, const geom::Root3& by) {
-    return R3(ax) * R3(by) - R3(ay) * R3(bx);
-  };
-  for (std::size_t j = 1; j < line.size(); ++j) {
-    const std::int64_t dx = std::int64_t{line[j].x} - line[j - 1].x, dy = std::int64_t{line[j].y} - line[j - 1].y;
-    if (dx == 0 && dy == 0) continue;
-    const geom::Root3 vx{dx, 0}, vy{dy, 0};
-    if (const int s = set.step_along(dx, dy); s >= 0) {
-      const auto& st = steps[static_cast<std::size_t>(s)];
-      put(static_cast<std::size_t>(s), (R3(vx) * R3(st.x) + R3(vy) * R3(st.y)) / R3(Rational(set.norm2(static_cast<std::size_t>(s)))));
-      continue;
-    }
-    const auto c = static_cast<std::size_t>(set.cone(dx, dy)), c2 = (c + 1) % steps.size();
-    const auto& s1 = steps[c];
-    const auto& s2 = steps[c2];
-    const R3 d = cross(s1.x, s1.y, s2.x, s2.y);
-    put(c, cross(vx, vy, s2.x, s2.y) / d);
-    put(c2, cross(s1.x, s1.y, vx, vy) / d);
-  }
-  return sum;
+  return SetLength(set)(line);
 }
 
 }  // namespace taut::router

@@ -20,9 +20,6 @@ using Step = geom::Root3Directions::Step;
 using FPoint = std::array<R3, 2>;  // frame coordinates (U, V)
 
 R3Point exact_point(Point p) { return {R3(Rational(p.x)), R3(Rational(p.y))}; }
-// cross((dx, dy), s) and cross(s, (dx, dy)) for an integer vector
-Root3 cross_vs(i64 dx, i64 dy, const Step& s) { return dx * s.y - dy * s.x; }
-Root3 cross_sv(const Step& s, i64 dx, i64 dy) { return dy * s.x - dx * s.y; }
 
 // The frame of a piece from a to b in the cone (s1, s2): (U, V) = (cross(p - a, s2), cross(s1,
 // p - a)), D = cross(s1, s2) > 0, so p = a + (U s1 + V s2) / D.
@@ -34,7 +31,7 @@ struct Frame {
   // steps of Root3Directions::parse_any, up to 2^24)
   std::array<Root3, 2> of_int(Point p) const {
     const i64 dx = i64{p.x} - a.x, dy = i64{p.y} - a.y;
-    return {cross_vs(dx, dy, s2), cross_sv(s1, dx, dy)};
+    return {geom::Root3Directions::cross(dx, dy, s2), geom::Root3Directions::cross(s1, dx, dy)};
   }
   FPoint of(Point p) const {
     const std::array<Root3, 2> f = of_int(p);

@@ -53,7 +53,6 @@
 
 namespace taut::router {
 
-
 struct Root3Wire {
   std::vector<geom::Point> points;  // the exact wire rounded (repeated points dropped)
   int moved = 0;                    // vertices not at their nearest integer point (see above)

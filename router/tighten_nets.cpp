@@ -438,6 +438,9 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
       margin = std::min<std::int64_t>(4 * margin, 4 * std::int64_t{geom::kMaxCoord});
     }
   };
+  // the lengths in a set at other angles (Root3Directions without a mask)
+  std::optional<SetLength> other_angles;
+  if (options_.orientations.set30 && options_.orientations.set30->mask() == 0) other_angles.emplace(*options_.orientations.set30);
   // Is the new wire taken in place of the old one?
   // A router's wire: no longer, no more bends, better in one. A sketch's wire (no bends promised):
   // shorter, or as long with fewer bends.
@@ -445,20 +448,21 @@ std::vector<NetTightenOutcome> NetsTightener::run(std::vector<NetLines>& wires, 
     const std::vector<Point> a = canonical(now), b = canonical(was);
     if (a == b) return false;
     const std::int64_t ba = geom::count_bends(a), bb = geom::count_bends(b);
-    auto rule = [&](const auto& la, const auto& lb) {
-      return sketch_net ? (la < lb || (la == lb && ba < bb)) : (la <= lb && ba <= bb && (la < lb || ba < bb));
+    // c: the sign of the new length less the old, each decided once
+    auto rule = [&](int c) {
+      return sketch_net ? (c < 0 || (c == 0 && ba < bb)) : (c <= 0 && ba <= bb && (c < 0 || ba < bb));
     };
+    auto sign = [](const auto& la, const auto& lb) { return la < lb ? -1 : lb < la ? 1 : 0; };
     // lengths in the set's convex distance (twice them: exact also with half steps)
-    if (options_.orientations.set) return rule(options_.orientations.set->length2(a), options_.orientations.set->length2(b));
+    if (options_.orientations.set) return rule(sign(options_.orientations.set->length2(a), options_.orientations.set->length2(b)));
     // a set at multiples of 30 degrees: the rounded wires' lengths in its convex distance (twelve
     // times them, in Z[sqrt3]; a rounded segment is not exactly along the set, so this is the
     // length of the shortest path in the set between its ends, summed)
     if (options_.orientations.set30 && options_.orientations.set30->mask() != 0)
-      return rule(Length30(*options_.orientations.set30, a), Length30(*options_.orientations.set30, b));
+      return rule(sign(Length30(*options_.orientations.set30, a), Length30(*options_.orientations.set30, b)));
     // a set at other angles (steps of different lengths): sums of square roots, exact
-    // (router/radical_sum.h)
-    if (options_.orientations.set30)
-      return rule(set_length(*options_.orientations.set30, a), set_length(*options_.orientations.set30, b));
+    // (router/radical_sum.h; its table made once, above)
+    if (other_angles) return rule(((*other_angles)(a) - (*other_angles)(b)).sign());
     return true;  // any angle: the class's shortest, and another path: strictly shorter
   };
 
