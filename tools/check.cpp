@@ -215,12 +215,10 @@ void add_check(CLI::App& app, int& status) {
           for (std::size_t k = 0; k < deg.size(); ++k)
             set_words += (k == 0 ? "" : k + 1 == deg.size() ? " or " : ", ") + deg[k];
           set_words += " degrees";
-          if (set30) set_words += " within the rounding of its ends (half a unit in x and in y each)";
-          if (set30)
-            for (std::size_t k = 0; k < deg.size(); ++k)
-              if (!set30->orientation_exact(k))  // judged against its step (geom/root3_directions.h)
-                set_words += ", " + deg[k] + " degrees as the step (" + std::to_string(set30->steps()[k].x.a) + "," +
-                             std::to_string(set30->steps()[k].y.a) + ")";
+          if (set30) {
+            set_words += " within the rounding of its ends (half a unit in x and in y each)";
+            for (const RealizedStep& r : realized_steps(*set30)) set_words += ", " + r.phrase();  // judged against its step
+          }
         }
         for (const io::Route& r : layout->routes->routes) {
           if (r.status != "routed") {

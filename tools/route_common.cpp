@@ -132,30 +132,34 @@ router::TightenOrientations tighten_orientations(const std::string& orientations
   return {lattice, lattice ? std::nullopt : geom::Root3Directions::parse_any(orientations)};
 }
 
+std::vector<RealizedStep> realized_steps(const geom::Root3Directions& set) {
+  std::vector<RealizedStep> out;
+  const std::vector<std::string> texts = set.orientation_texts();
+  for (std::size_t k = 0; k < texts.size(); ++k)
+    if (!set.orientation_exact(k))  // (else a multiple of 30 or 45 degrees)
+      out.push_back({texts[k], set.steps()[k].x.a, set.steps()[k].y.a, static_cast<double>(set.off_radians(k))});
+  return out;
+}
+
+std::string RealizedStep::phrase() const {
+  return degrees + " degrees as the step (" + std::to_string(x) + "," + std::to_string(y) + ")";
+}
+
 nlohmann::ordered_json realized_steps_json(const router::TightenOrientations& o) {
   if (!o.set30 || o.set30->exact()) return nullptr;
   nlohmann::ordered_json out = nlohmann::ordered_json::array();
-  const auto& texts = o.set30->orientation_texts();
-  for (std::size_t k = 0; k < texts.size(); ++k) {
-    if (o.set30->orientation_exact(k)) continue;  // a multiple of 30 or 45 degrees
-    const auto& st = o.set30->steps()[k];  // an integer step
-    out.push_back({{"degrees", texts[k]},
-                   {"step", {st.x.a, st.y.a}},
-                   {"off_radians", static_cast<double>(o.set30->off_radians(k))}});
-  }
+  for (const RealizedStep& r : realized_steps(*o.set30))
+    out.push_back({{"degrees", r.degrees}, {"step", {r.x, r.y}}, {"off_radians", r.off}});
   return out;
 }
 
 std::string realized_steps_text(const router::TightenOrientations& o) {
-  const nlohmann::ordered_json j = realized_steps_json(o);
-  if (j.is_null()) return "";
+  if (!o.set30) return "";
   std::string s;
-  for (const auto& e : j) {
+  for (const RealizedStep& r : realized_steps(*o.set30)) {
     char off[32];
-    std::snprintf(off, sizeof off, "%.2g", e["off_radians"].get<double>());
-    s += std::string(s.empty() ? "" : "; ") + e["degrees"].get<std::string>() + " degrees as the step (" +
-         std::to_string(e["step"][0].get<long long>()) + "," + std::to_string(e["step"][1].get<long long>()) + "), " +
-         off + " radians off";
+    std::snprintf(off, sizeof off, "%.2g", r.off);
+    s += (s.empty() ? "" : "; ") + r.phrase() + ", " + off + " radians off";
   }
   return s;
 }

@@ -99,6 +99,14 @@ router::TightenOrientations tighten_orientations(const std::string& orientations
 // [{"degrees": "10", "step": [966687, 170453], "off_radians": 1.3e-14}]; null for any other
 // orientations.
 nlohmann::ordered_json realized_steps_json(const router::TightenOrientations& o);
+// One such orientation: as written, its integer step, how far off (radians).
+struct RealizedStep {
+  std::string degrees;
+  std::int64_t x = 0, y = 0;
+  double off = 0;
+  std::string phrase() const;  // "10 degrees as the step (966687,170453)"
+};
+std::vector<RealizedStep> realized_steps(const geom::Root3Directions& set);
 // The same in words for stderr ("10 degrees as the step (966687,170453), 1.3e-14 radians off"),
 // "" for any other orientations.
 std::string realized_steps_text(const router::TightenOrientations& o);

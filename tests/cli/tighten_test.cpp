@@ -1363,12 +1363,7 @@ TEST(Tighten, CSetInTheRulesIsTheOutputsDirections) {
   EXPECT_EQ(run.status, 0) << run.err;
   EXPECT_EQ(run.err.find("TIGHTEN-0003"), std::string::npos) << run.err;
   EXPECT_NE(read_text(dir + "/t.xml").find("orientations=\"c:0,60,120\""), std::string::npos);
-  const auto checked = run_taut({"check", dir + "/t.xml", "--json"});
-  EXPECT_EQ(checked.status, 0) << checked.err;
-  const auto j = nlohmann::json::parse(checked.out);
-  EXPECT_EQ(j["routes_check"]["orientations"], "ok");
-  EXPECT_EQ(j["routes_check"]["free_space"], "ok");
-  EXPECT_EQ(j["routes_check"]["connectivity"], "ok");
+  expect_routes_check_ok(dir + "/t.xml");
   // other angles: in the set, every segment at its steps within the rounding (taut check), the
   // minimum-link path's bends rational (integer steps)
   std::string ten = body;
@@ -1380,11 +1375,7 @@ TEST(Tighten, CSetInTheRulesIsTheOutputsDirections) {
   EXPECT_NE(t10.err.find("c:0,10,100: 10 degrees as the step ("), std::string::npos) << t10.err;
   EXPECT_NE(read_text(dir + "/t10.xml").find("orientations=\"c:0,10,100\""), std::string::npos);
   {
-    const auto c10 = run_taut({"check", dir + "/t10.xml", "--json"});
-    EXPECT_EQ(c10.status, 0) << c10.err;
-    const auto cj = nlohmann::json::parse(c10.out);
-    EXPECT_EQ(cj["routes_check"]["orientations"], "ok");
-    EXPECT_EQ(cj["routes_check"]["free_space"], "ok");
+    expect_routes_check_ok(dir + "/t10.xml");
     const auto w10 = wires_of(dir + "/t10.xml", "n");
     ASSERT_EQ(w10.size(), 1u);
     EXPECT_GT(w10[0].size(), 4u);  // not the taut wire: 10,50 40,60 is at 18.4 degrees, a staircase of 10 and 100

@@ -110,6 +110,17 @@ std::string shared_data_dir() {
   return fs::is_directory(fs::path(TAUT_SHARED_DATA) / "movingai") ? std::string(TAUT_SHARED_DATA) : "";
 }
 
+void expect_routes_check_ok(const std::string& file) {
+  const RunResult r = run_taut({"check", file, "--json"});
+  EXPECT_EQ(r.status, 0) << file << ": " << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(j.contains("routes_check")) << file;
+  const nlohmann::json& c = j["routes_check"];
+  EXPECT_EQ(c["orientations"], "ok") << file;
+  EXPECT_EQ(c["free_space"], "ok") << file;
+  EXPECT_EQ(c["connectivity"], "ok") << file;
+}
+
 void expect_routes_check_except_clearance(const std::string& file) {
   const RunResult r = run_taut({"check", file, "--json"});
   ASSERT_TRUE(r.status == 0 || r.status == 1) << file << ": " << r.err;

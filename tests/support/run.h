@@ -39,6 +39,9 @@ std::vector<geom::Point> points_of(const nlohmann::json& pts);
 // tightening keep neither: the exit status is 0, or 1 with every error one of those. Records a
 // test failure otherwise.
 void expect_routes_check_except_clearance(const std::string& file);
+// `taut check --json` on a routed file passes outright (status 0) with its wires in the
+// orientations (checked, not skipped), in free space and connected.
+void expect_routes_check_ok(const std::string& file);
 
 // The public benchmark data folder (../shared/data beside the checkout, or -DTAUT_SHARED_DATA=),
 // or "" when it is absent. Tests that need it skip with a message when it is absent, except
